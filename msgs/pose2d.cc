@@ -1,0 +1,25 @@
+#include "msgs/pose2d.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace plywood::msgs {
+
+double WrapAngle(double angle_rad) {
+  double wrapped = std::remainder(angle_rad, 2.0 * std::numbers::pi);
+  if (wrapped <= -std::numbers::pi) wrapped += 2.0 * std::numbers::pi;
+  return wrapped;
+}
+
+Pose2D Pose2D::operator*(const Pose2D& X_BC) const {
+  const double c = std::cos(theta_rad), s = std::sin(theta_rad);
+  return {x_m + c * X_BC.x_m - s * X_BC.y_m, y_m + s * X_BC.x_m + c * X_BC.y_m,
+          WrapAngle(theta_rad + X_BC.theta_rad)};
+}
+
+Pose2D Pose2D::Inverse() const {
+  const double c = std::cos(theta_rad), s = std::sin(theta_rad);
+  return {-c * x_m - s * y_m, s * x_m - c * y_m, WrapAngle(-theta_rad)};
+}
+
+}  // namespace plywood::msgs

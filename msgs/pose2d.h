@@ -1,0 +1,23 @@
+#pragma once
+
+namespace plywood::msgs {
+
+// Wraps an angle to (-pi, pi].
+double WrapAngle(double angle_rad);
+
+// A planar rigid transform. Frame notation follows Drake: X_AB is the pose of frame B expressed in
+// frame A; W is the world, R the robot (centre of rotation), S a sensor.
+struct Pose2D {
+  double x_m = 0.0;
+  double y_m = 0.0;
+  double theta_rad = 0.0;
+
+  // X_AC = X_AB * X_BC.
+  Pose2D operator*(const Pose2D& X_BC) const;
+
+  Pose2D Inverse() const;
+
+  bool operator==(const Pose2D&) const = default;
+};
+
+}  // namespace plywood::msgs

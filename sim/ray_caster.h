@@ -1,0 +1,28 @@
+#pragma once
+
+#include <Eigen/Core>
+
+namespace plywood::sim {
+
+// What a ray hit: distance along the (unit) direction, the MuJoCo geom, and the outward surface
+// normal at the hit point in the world frame (sonar needs the incidence angle).
+struct RayHit {
+  double distance_m = 0.0;
+  int geom_id = -1;
+  Eigen::Vector3d normal_W = Eigen::Vector3d::Zero();
+};
+
+// Casts rays against the world's geometry, never against the robot itself.
+// Implementations: MujocoRayCaster (mj_ray, exact for anything) and GridRayCaster2D (a uniform
+// grid over upright static geoms, exact for horizontal rays; falls back to mj_ray otherwise).
+class RayCaster {
+ public:
+  virtual ~RayCaster() = default;
+
+  // Casts from origin_W along unit direction dir_W. Returns false when nothing is hit within
+  // max_range_m; otherwise fills `hit`.
+  virtual bool Cast(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W,
+                    double max_range_m, RayHit* hit) const = 0;
+};
+
+}  // namespace plywood::sim
