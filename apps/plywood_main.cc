@@ -1,1 +1,56 @@
-int main() { return 0; }
+// plywood: the command line of the Plywood testbed.
+//   plywood run EXPERIMENT.yaml [--out DIR] [--seed N] [--set key.path=value]...
+//   plywood bench [--seconds S] [--world PATH]
+// Exit codes: 0 success, 1 a failure during the run, 2 bad input (config, files, usage).
+
+#include <cstdio>
+#include <exception>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "apps/bench_command.h"
+#include "apps/command_line.h"
+#include "apps/run_command.h"
+#include "sim/config_error.h"
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: plywood <command> [options]\n"
+    "  run EXPERIMENT.yaml [--out DIR] [--seed N] [--set key.path=value]... [--quiet]\n"
+    "      run one experiment and write its results to DIR (default runs/NAME-seedN)\n"
+    "  bench [--seconds S] [--world PATH]\n"
+    "      print the real-time factor and ray throughput of a P3-DX with LMS 200 + 16 sonars\n";
+
+int Dispatch(const std::vector<std::string>& args) {
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    std::fputs(kUsage, args.empty() ? stderr : stdout);
+    return args.empty() ? 2 : 0;
+  }
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  if (args[0] == "run") return plywood::apps::RunCommand(rest);
+  if (args[0] == "bench") return plywood::apps::BenchCommand(rest);
+  throw plywood::apps::UsageError{"unknown command '" + args[0] + "' (try plywood --help)"};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  try {
+    return Dispatch(args);
+  } catch (const plywood::apps::UsageError& e) {
+    std::fprintf(stderr, "plywood: %s\n", e.message.c_str());
+    return 2;
+  } catch (const plywood::sim::ConfigError& e) {
+    std::fprintf(stderr, "plywood: %s\n", e.what());
+    return 2;
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "plywood: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "plywood: error: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,7 +1,7 @@
 # Helpers shared by every folder. Sources are found by name, Cartographer-style:
 #   foo.cc          -> part of the folder's library
 #   foo_test.cc     -> its own GoogleTest executable, registered with CTest
-#   foo_bench.cc    -> not built here (apps/ owns benchmarks)
+#   foo_main.cc     -> not built here (apps/ owns executables)
 
 # Hardware-side folders (msgs/, robot/, perception/) run on real robots: they may include only the
 # standard library, Eigen and each other. The check runs at build time, before the library compiles,
@@ -23,7 +23,7 @@ endfunction()
 # Adds a library named `target` from every non-test .cc in the current folder.
 function(plywood_add_folder_library target)
   file(GLOB sources CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/*.cc")
-  list(FILTER sources EXCLUDE REGEX "_(test|main|bench)\\.cc$")
+  list(FILTER sources EXCLUDE REGEX "_(test|main)\\.cc$")
   add_library(${target} STATIC ${sources})
   target_include_directories(${target} PUBLIC "${CMAKE_SOURCE_DIR}")
 endfunction()

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "sim/config_error.h"
+#include "sim/contact_filter.h"
 
 namespace plywood::sim {
 namespace {
@@ -83,6 +84,7 @@ Scene::Scene(const SceneOptions& options) : options_(options) {
   qpos0[4] = 0.0;
   qpos0[5] = 0.0;
   qpos0[6] = std::sin(options.spawn.theta_rad / 2.0);
+  InstallTightContactFilter();
   data_.reset(mj_makeData(model_.get()));
   mj_resetData(model_.get(), data_.get());
   mj_forward(model_.get(), data_.get());
@@ -97,8 +99,14 @@ msgs::Pose2D Scene::TruePose() const {
 }
 
 double Scene::TrueYawRateRadS() const {
-  // cvel holds [angular; linear] in the world-aligned frame at the subtree centre of mass.
-  return data_->cvel[6 * base_body_ + 2];
+  // From qvel, not cvel: after mj_step, cvel (like xmat) still describes the state before the
+  // integration, one step behind qpos and TruePose(). A free joint's angular velocity is in the
+  // body frame; its world z component is the third row of the body's rotation matrix times it.
+  const mjtNum* q = data_->qpos + base_qpos_;
+  const mjtNum* omega_B = data_->qvel + model_->jnt_dofadr[model_->body_jntadr[base_body_]] + 3;
+  const double w = q[3], x = q[4], y = q[5], z = q[6];
+  return 2.0 * (x * z - w * y) * omega_B[0] + 2.0 * (y * z + w * x) * omega_B[1] +
+         (1.0 - 2.0 * (x * x + y * y)) * omega_B[2];
 }
 
 void Scene::SetWheelSpeeds(const msgs::WheelSpeedCommand& command) {

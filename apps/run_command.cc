@@ -1,0 +1,84 @@
+#include "apps/run_command.h"
+
+#include <cstdio>
+#include <iostream>
+
+#include "apps/command_line.h"
+#include "render/overlay.h"
+#include "render/snapshot.h"
+#include "sim/experiment_config.h"
+#include "sim/experiment_runner.h"
+#include "sim/run_writer.h"
+
+namespace plywood::apps {
+namespace {
+
+std::vector<render::PathOverlay> TrajectoryOverlays(const sim::RunRecord& record) {
+  std::vector<render::PathOverlay> paths(1 + record.estimator_names.size());
+  paths[0].label = "ground truth";
+  paths[0].colour = render::colours::kBlack;
+  paths[0].width_px = 3.0;
+  for (std::size_t e = 0; e < record.estimator_names.size(); ++e) {
+    paths[e + 1].label = record.estimator_names[e];
+    paths[e + 1].colour = render::colours::kPalette[e % std::size(render::colours::kPalette)];
+  }
+  for (const auto& sample : record.trajectory) {
+    paths[0].points_W.emplace_back(sample.truth.x_m, sample.truth.y_m);
+    for (std::size_t e = 0; e < sample.estimates.size(); ++e) {
+      paths[e + 1].points_W.emplace_back(sample.estimates[e].x_m, sample.estimates[e].y_m);
+    }
+  }
+  return paths;
+}
+
+void PrintSummary(const sim::ExperimentRunner& runner, const std::string& out_dir) {
+  const sim::RunCost& cost = runner.cost();
+  const sim::Metrics& m = runner.record().metrics;
+  std::printf("\n%-34s %s\n", "experiment", runner.config().name.c_str());
+  std::printf("%-34s %.2f s in %.2f s wall (%.0fx real time), %ld rays\n", "simulated",
+              cost.simulated_s, cost.wall_s, cost.RealTimeFactor(), cost.rays);
+  std::printf("%-34s %.3f m\n", "distance travelled (truth)", m.Number("truth.distance_m"));
+  for (const auto& name : runner.record().estimator_names) {
+    const std::string key = "odometry." + name + ".";
+    std::printf("%-34s final %.3f m, heading %.2f deg, drift %.2f %%, ATE %.3f m\n", name.c_str(),
+                m.Number(key + "final_error_m"), m.Number(key + "heading_error_deg"),
+                m.Number(key + "drift_percent"), m.Number(key + "ate_rms_m"));
+  }
+  std::printf("%-34s %s\n", "results", out_dir.c_str());
+}
+
+}  // namespace
+
+int RunCommand(const std::vector<std::string>& args) {
+  const CommandLine line(args, {"--out", "--seed", "--set"}, {"--quiet", "--no-snapshot"});
+  if (line.positional().size() != 1) {
+    throw UsageError{
+        "usage: plywood run EXPERIMENT.yaml [--out DIR] [--seed N] [--set key=value]..."};
+  }
+  std::vector<std::string> overrides = line.Values("--set");
+  if (const auto seed = line.Value("--seed")) overrides.push_back("seed=" + *seed);
+  const sim::ExperimentConfig config = sim::LoadExperimentConfig(line.positional()[0], overrides);
+  const std::string out_dir =
+      line.Value("--out").value_or("runs/" + config.name + "-seed" + std::to_string(config.seed));
+
+  sim::ExperimentRunner runner(config);
+  const bool quiet = line.Switch("--quiet");
+  runner.Run([&](double fraction, double simulated_s) {
+    if (quiet) return;
+    std::fprintf(stderr, "\r[%-30s] %5.1f%%  t = %.0f s ", std::string(30 * fraction, '#').c_str(),
+                 100.0 * fraction, simulated_s);
+  });
+  if (!quiet) std::fprintf(stderr, "\r%60s\r", "");
+
+  sim::WriteRunOutputs(config, runner.record(), out_dir);
+  if (config.output.snapshot && !line.Switch("--no-snapshot")) {
+    render::SnapshotOptions options;
+    options.view.longer_side_px = config.output.snapshot_size_px;
+    render::WriteSnapshot(runner.scene().model(), runner.mutable_scene().mutable_data(),
+                          TrajectoryOverlays(runner.record()), out_dir + "/snapshot.png", options);
+  }
+  if (!quiet) PrintSummary(runner, out_dir);
+  return 0;
+}
+
+}  // namespace plywood::apps

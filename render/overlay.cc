@@ -1,0 +1,239 @@
+#include "render/overlay.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/bitmap_font.h"
+
+namespace plywood::render {
+namespace {
+
+// Fraction of a pixel painted when its centre is `distance_px` from a shape's centre line of
+// half-width `half_width_px`: a one-pixel linear ramp centred on the edge.
+double Coverage(double distance_px, double half_width_px) {
+  return std::clamp(half_width_px + 0.5 - distance_px, 0.0, 1.0);
+}
+
+double DistanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
+                         const Eigen::Vector2d& b) {
+  const Eigen::Vector2d ab = b - a;
+  const double length_sq = ab.squaredNorm();
+  const double t = length_sq > 0.0 ? std::clamp((p - a).dot(ab) / length_sq, 0.0, 1.0) : 0.0;
+  return (p - (a + t * ab)).norm();
+}
+
+// Per-pixel coverage of one shape, so overlapping pieces of it blend once.
+class CoverageMask {
+ public:
+  explicit CoverageMask(const RgbImage& image)
+      : width_(image.width),
+        height_(image.height),
+        coverage_(static_cast<std::size_t>(image.width) * image.height, 0.0f) {}
+
+  // Visits the pixels whose centres lie within `reach_px` of the box [lo, hi].
+  template <typename F>
+  void ForPixelsNear(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, double reach_px, F f) {
+    const int x0 = std::max(0, static_cast<int>(std::floor(lo.x() - reach_px)));
+    const int y0 = std::max(0, static_cast<int>(std::floor(lo.y() - reach_px)));
+    const int x1 = std::min(width_ - 1, static_cast<int>(std::ceil(hi.x() + reach_px)));
+    const int y1 = std::min(height_ - 1, static_cast<int>(std::ceil(hi.y() + reach_px)));
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x) {
+        const double c = f(Eigen::Vector2d(x + 0.5, y + 0.5));
+        if (c <= 0.0) continue;
+        float& cell = coverage_[static_cast<std::size_t>(y) * width_ + x];
+        cell = std::max(cell, static_cast<float>(c));
+        touched_x0_ = std::min(touched_x0_, x);
+        touched_y0_ = std::min(touched_y0_, y);
+        touched_x1_ = std::max(touched_x1_, x);
+        touched_y1_ = std::max(touched_y1_, y);
+      }
+    }
+  }
+
+  void BlendInto(RgbImage& image, Rgb colour) const {
+    for (int y = touched_y0_; y <= touched_y1_; ++y) {
+      for (int x = touched_x0_; x <= touched_x1_; ++x) {
+        const float c = coverage_[static_cast<std::size_t>(y) * width_ + x];
+        if (c > 0.0f) BlendPixel(image, x, y, colour, c);
+      }
+    }
+  }
+
+ private:
+  int width_, height_;
+  std::vector<float> coverage_;
+  int touched_x0_ = 1 << 30, touched_y0_ = 1 << 30, touched_x1_ = -1, touched_y1_ = -1;
+};
+
+std::vector<Eigen::Vector2d> ToPixels(const WorldToPixel& map,
+                                      std::span<const Eigen::Vector2d> points_W) {
+  std::vector<Eigen::Vector2d> points_px;
+  points_px.reserve(points_W.size());
+  for (const Eigen::Vector2d& p : points_W) points_px.push_back(map.ToPixel(p));
+  return points_px;
+}
+
+}  // namespace
+
+void DrawPolylinePx(RgbImage& image, std::span<const Eigen::Vector2d> points_px, Rgb colour,
+                    double width_px) {
+  if (points_px.empty() || image.width <= 0 || !(width_px > 0.0)) return;
+  const double half = 0.5 * width_px;
+  CoverageMask mask(image);
+  const std::size_t n_segments = points_px.size() == 1 ? 1 : points_px.size() - 1;
+  for (std::size_t i = 0; i < n_segments; ++i) {
+    const Eigen::Vector2d& a = points_px[i];
+    const Eigen::Vector2d& b = points_px[std::min(i + 1, points_px.size() - 1)];
+    if (!a.allFinite() || !b.allFinite()) continue;
+    mask.ForPixelsNear(a.cwiseMin(b), a.cwiseMax(b), half + 1.0, [&](const Eigen::Vector2d& p) {
+      return Coverage(DistanceToSegment(p, a, b), half);
+    });
+  }
+  mask.BlendInto(image, colour);
+}
+
+void FillCirclePx(RgbImage& image, const Eigen::Vector2d& centre_px, double radius_px, Rgb colour) {
+  if (image.width <= 0 || !(radius_px > 0.0) || !centre_px.allFinite()) return;
+  CoverageMask mask(image);
+  mask.ForPixelsNear(centre_px, centre_px, radius_px + 1.0, [&](const Eigen::Vector2d& p) {
+    return Coverage((p - centre_px).norm(), radius_px);
+  });
+  mask.BlendInto(image, colour);
+}
+
+void DrawCirclePx(RgbImage& image, const Eigen::Vector2d& centre_px, double radius_px, Rgb colour,
+                  double width_px) {
+  if (image.width <= 0 || !(radius_px > 0.0) || !(width_px > 0.0) || !centre_px.allFinite()) {
+    return;
+  }
+  const double half = 0.5 * width_px;
+  CoverageMask mask(image);
+  mask.ForPixelsNear(centre_px, centre_px, radius_px + half + 1.0, [&](const Eigen::Vector2d& p) {
+    return Coverage(std::abs((p - centre_px).norm() - radius_px), half);
+  });
+  mask.BlendInto(image, colour);
+}
+
+void FillPolygonPx(RgbImage& image, std::span<const Eigen::Vector2d> vertices_px, Rgb colour) {
+  if (vertices_px.size() < 3) return;
+  double y_lo = vertices_px[0].y(), y_hi = y_lo;
+  for (const Eigen::Vector2d& v : vertices_px) {
+    y_lo = std::min(y_lo, v.y());
+    y_hi = std::max(y_hi, v.y());
+  }
+  const int row0 = std::max(0, static_cast<int>(std::floor(y_lo)));
+  const int row1 = std::min(image.height - 1, static_cast<int>(std::ceil(y_hi)));
+  std::vector<double> crossings;
+  for (int row = row0; row <= row1; ++row) {
+    const double y = row + 0.5;
+    crossings.clear();
+    for (std::size_t i = 0; i < vertices_px.size(); ++i) {
+      const Eigen::Vector2d& a = vertices_px[i];
+      const Eigen::Vector2d& b = vertices_px[(i + 1) % vertices_px.size()];
+      // Half-open in y so a vertex on the scan line counts once.
+      if ((a.y() <= y) != (b.y() <= y)) {
+        crossings.push_back(a.x() + (y - a.y()) / (b.y() - a.y()) * (b.x() - a.x()));
+      }
+    }
+    std::sort(crossings.begin(), crossings.end());
+    for (std::size_t k = 0; k + 1 < crossings.size(); k += 2) {
+      // Pixels whose centre x + 0.5 lies in [crossings[k], crossings[k + 1]).
+      const int x0 = std::max(0, static_cast<int>(std::ceil(crossings[k] - 0.5)));
+      const int x1 = std::min(image.width, static_cast<int>(std::ceil(crossings[k + 1] - 0.5)));
+      for (int x = x0; x < x1; ++x) BlendPixel(image, x, row, colour);
+    }
+  }
+}
+
+void FillRectPx(RgbImage& image, int x0, int y0, int x1, int y1, Rgb colour, double alpha) {
+  for (int y = std::max(0, y0); y < std::min(image.height, y1); ++y) {
+    for (int x = std::max(0, x0); x < std::min(image.width, x1); ++x) {
+      BlendPixel(image, x, y, colour, alpha);
+    }
+  }
+}
+
+void DrawPolyline(RgbImage& image, const WorldToPixel& map,
+                  std::span<const Eigen::Vector2d> points_W, Rgb colour, double width_px) {
+  const std::vector<Eigen::Vector2d> points_px = ToPixels(map, points_W);
+  DrawPolylinePx(image, points_px, colour, width_px);
+}
+
+void DrawSegment(RgbImage& image, const WorldToPixel& map, const Eigen::Vector2d& a_W,
+                 const Eigen::Vector2d& b_W, Rgb colour, double width_px) {
+  const Eigen::Vector2d points_px[] = {map.ToPixel(a_W), map.ToPixel(b_W)};
+  DrawPolylinePx(image, points_px, colour, width_px);
+}
+
+void DrawPoint(RgbImage& image, const WorldToPixel& map, const Eigen::Vector2d& p_W, Rgb colour,
+               double radius_px) {
+  FillCirclePx(image, map.ToPixel(p_W), radius_px, colour);
+}
+
+void DrawCircle(RgbImage& image, const WorldToPixel& map, const Eigen::Vector2d& centre_W,
+                double radius_m, Rgb colour, double width_px) {
+  DrawCirclePx(image, map.ToPixel(centre_W), radius_m * map.pixels_per_m, colour, width_px);
+}
+
+void DrawPoseMarker(RgbImage& image, const WorldToPixel& map, const Eigen::Vector2d& p_W,
+                    double theta_rad, Rgb colour, double length_px) {
+  // Image v points down, so a world heading theta is (cos, -sin) in pixels.
+  const Eigen::Vector2d forward(std::cos(theta_rad), -std::sin(theta_rad));
+  const Eigen::Vector2d left(-forward.y(), forward.x());
+  const Eigen::Vector2d c = map.ToPixel(p_W);
+  const Eigen::Vector2d triangle[] = {c + 0.6 * length_px * forward,
+                                      c - 0.4 * length_px * forward + 0.3 * length_px * left,
+                                      c - 0.4 * length_px * forward - 0.3 * length_px * left};
+  FillPolygonPx(image, triangle, colour);
+}
+
+void DrawPaths(RgbImage& image, const WorldToPixel& map, std::span<const PathOverlay> paths) {
+  for (const PathOverlay& path : paths) {
+    if (path.points_W.empty()) continue;
+    DrawPolyline(image, map, path.points_W, path.colour, path.width_px);
+    DrawPoint(image, map, path.points_W.front(), path.colour, path.width_px + 2.0);
+    DrawCircle(image, map, path.points_W.back(), (path.width_px + 3.0) / map.pixels_per_m,
+               path.colour, 1.5);
+  }
+}
+
+PixelRect DrawLegend(RgbImage& image, std::span<const LegendEntry> entries, Corner corner,
+                     int text_scale, int margin_px) {
+  if (entries.empty()) return {};
+  const int pad = 3 * text_scale;
+  const int row_h = TextHeightPx(text_scale) + pad;
+  const int swatch = TextHeightPx(text_scale);
+  int text_w = 0;
+  for (const LegendEntry& e : entries) text_w = std::max(text_w, TextWidthPx(e.label, text_scale));
+  const int box_w = pad + swatch + pad + text_w + pad;
+  const int box_h = pad + static_cast<int>(entries.size()) * row_h;
+  const bool left = corner == Corner::kTopLeft || corner == Corner::kBottomLeft;
+  const bool top = corner == Corner::kTopLeft || corner == Corner::kTopRight;
+  PixelRect box;
+  box.x0 = left ? margin_px : image.width - margin_px - box_w;
+  box.y0 = top ? margin_px : image.height - margin_px - box_h;
+  box.x1 = box.x0 + box_w;
+  box.y1 = box.y0 + box_h;
+  FillRectPx(image, box.x0, box.y0, box.x1, box.y1, colours::kWhite, 0.85);
+  FillRectPx(image, box.x0, box.y0, box.x1, box.y0 + 1, colours::kBlack);
+  FillRectPx(image, box.x0, box.y1 - 1, box.x1, box.y1, colours::kBlack);
+  FillRectPx(image, box.x0, box.y0, box.x0 + 1, box.y1, colours::kBlack);
+  FillRectPx(image, box.x1 - 1, box.y0, box.x1, box.y1, colours::kBlack);
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const int y = box.y0 + pad + static_cast<int>(i) * row_h;
+    FillRectPx(image, box.x0 + pad, y, box.x0 + pad + swatch, y + swatch, entries[i].colour);
+    DrawText(image, box.x0 + 2 * pad + swatch, y, entries[i].label, colours::kBlack, text_scale);
+  }
+  return box;
+}
+
+std::vector<LegendEntry> LegendFor(std::span<const PathOverlay> paths) {
+  std::vector<LegendEntry> entries;
+  for (const PathOverlay& path : paths) {
+    if (!path.label.empty()) entries.push_back({path.label, path.colour});
+  }
+  return entries;
+}
+
+}  // namespace plywood::render

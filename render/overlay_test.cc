@@ -1,0 +1,116 @@
+#include "render/overlay.h"
+
+#include <gtest/gtest.h>
+
+#include "render/bitmap_font.h"
+
+namespace plywood::render {
+namespace {
+
+constexpr Rgb kGrey{128, 128, 128};
+
+int CountColour(const RgbImage& image, Rgb colour) {
+  int n = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) n += PixelAt(image, x, y) == colour;
+  }
+  return n;
+}
+
+TEST(OverlayTest, PolylinePaintsPixelsAlongItsSegmentsOnly) {
+  RgbImage image(100, 100);
+  Fill(image, kGrey);
+  // World (0..10 m) at 10 px/m: an L from (1, 9) to (8, 9) to (8, 2), i.e. pixel rows/cols 10/80.
+  const WorldToPixel map{10.0, 0.0, 10.0};
+  const std::vector<Eigen::Vector2d> path_W = {{1.0, 9.0}, {8.0, 9.0}, {8.0, 2.0}};
+  DrawPolyline(image, map, path_W, colours::kBlack, 3.0);
+  // Horizontal leg on the line v = 10 (between pixel rows 9 and 10), u from 10 to 80.
+  for (int x = 12; x <= 76; ++x) {  // stop clear of the vertical leg's band
+    EXPECT_EQ(PixelAt(image, x, 9), colours::kBlack) << x;
+    EXPECT_EQ(PixelAt(image, x, 10), colours::kBlack) << x;
+    EXPECT_EQ(PixelAt(image, x, 13), kGrey) << x;  // 3 px wide: 1.5 px either side of v = 10
+    EXPECT_EQ(PixelAt(image, x, 6), kGrey) << x;
+  }
+  // Vertical leg on u = 80, v from 10 to 80.
+  for (int y = 12; y <= 78; ++y) {
+    EXPECT_EQ(PixelAt(image, 79, y), colours::kBlack) << y;
+    EXPECT_EQ(PixelAt(image, 80, y), colours::kBlack) << y;
+    EXPECT_EQ(PixelAt(image, 83, y), kGrey) << y;
+  }
+  // Nothing inside the L or beyond its ends.
+  EXPECT_EQ(PixelAt(image, 40, 40), kGrey);
+  EXPECT_EQ(PixelAt(image, 5, 9), kGrey);
+  EXPECT_EQ(PixelAt(image, 79, 85), kGrey);
+  // Roughly the area of a 3 px wide band 140 px long.
+  const int black = CountColour(image, colours::kBlack);
+  EXPECT_GT(black, 2 * 140);
+  EXPECT_LT(black, 4 * 140);
+}
+
+TEST(OverlayTest, OverlappingSegmentsOfOnePolylineBlendOnce) {
+  RgbImage image(20, 20);
+  Fill(image, colours::kWhite);
+  // Back and forth over the same pixels: the anti-aliased edge must equal a single pass's.
+  const std::vector<Eigen::Vector2d> once = {{2.0, 10.2}, {18.0, 10.2}};
+  const std::vector<Eigen::Vector2d> twice = {{2.0, 10.2}, {18.0, 10.2}, {2.0, 10.2}};
+  RgbImage a = image, b = image;
+  DrawPolylinePx(a, once, colours::kBlack, 2.0);
+  DrawPolylinePx(b, twice, colours::kBlack, 2.0);
+  EXPECT_EQ(a.pixels, b.pixels);
+}
+
+TEST(OverlayTest, FilledCircleCoversItsArea) {
+  RgbImage image(64, 64);
+  Fill(image, kGrey);
+  FillCirclePx(image, {32.0, 32.0}, 10.0, colours::kRed);
+  EXPECT_EQ(PixelAt(image, 32, 32), colours::kRed);
+  EXPECT_EQ(PixelAt(image, 32 + 8, 32), colours::kRed);
+  EXPECT_EQ(PixelAt(image, 32 + 12, 32), kGrey);
+  // Full pixels: those with centres within r - 0.5, about pi (r - 0.5)^2.
+  EXPECT_NEAR(CountColour(image, colours::kRed), 3.14159 * 9.5 * 9.5, 12.0);
+}
+
+TEST(OverlayTest, PolygonFillMatchesAxisAlignedRectangleExactly) {
+  RgbImage image(20, 20);
+  Fill(image, kGrey);
+  const std::vector<Eigen::Vector2d> rect = {{2.0, 3.0}, {12.0, 3.0}, {12.0, 8.0}, {2.0, 8.0}};
+  FillPolygonPx(image, rect, colours::kBlue);
+  EXPECT_EQ(CountColour(image, colours::kBlue), 10 * 5);
+  EXPECT_EQ(PixelAt(image, 2, 3), colours::kBlue);
+  EXPECT_EQ(PixelAt(image, 11, 7), colours::kBlue);
+  EXPECT_EQ(PixelAt(image, 12, 7), kGrey);
+  EXPECT_EQ(PixelAt(image, 2, 8), kGrey);
+}
+
+TEST(OverlayTest, LegendBoxSitsInItsCornerWithSwatches) {
+  RgbImage image(300, 200);
+  Fill(image, kGrey);
+  const std::vector<PathOverlay> paths = {{"ground truth", {}, colours::kBlack, 2.0},
+                                          {"", {}, colours::kGreen, 2.0},
+                                          {"encoders", {}, colours::kRed, 2.0}};
+  const std::vector<LegendEntry> entries = LegendFor(paths);
+  ASSERT_EQ(entries.size(), 2u);
+  const PixelRect box = DrawLegend(image, entries, Corner::kTopRight, 2, 8);
+  EXPECT_EQ(box.x1, 300 - 8);
+  EXPECT_EQ(box.y0, 8);
+  EXPECT_GT(box.x1 - box.x0, TextWidthPx("ground truth", 2));
+  EXPECT_EQ(CountColour(image, colours::kRed), TextHeightPx(2) * TextHeightPx(2));
+  EXPECT_EQ(PixelAt(image, 4, 100), kGrey);  // outside the box untouched
+}
+
+TEST(BitmapFontTest, GlyphsHaveTheExpectedInk) {
+  RgbImage image(40, 10);
+  Fill(image, colours::kWhite);
+  DrawText(image, 1, 1, "I-", colours::kBlack);
+  // 'I' is a vertical bar in column 2 plus serifs in columns 1 and 3 of rows 0 and 6.
+  for (int row = 0; row < 7; ++row) EXPECT_EQ(PixelAt(image, 1 + 2, 1 + row), colours::kBlack);
+  EXPECT_EQ(PixelAt(image, 1 + 1, 1 + 0), colours::kBlack);
+  EXPECT_EQ(PixelAt(image, 1 + 0, 1 + 3), colours::kWhite);
+  // '-' is row 3 across all five columns of the second glyph.
+  for (int col = 0; col < 5; ++col) EXPECT_EQ(PixelAt(image, 7 + col, 1 + 3), colours::kBlack);
+  EXPECT_EQ(PixelAt(image, 7 + 2, 1 + 2), colours::kWhite);
+  EXPECT_EQ(TextWidthPx("I-"), 11);
+}
+
+}  // namespace
+}  // namespace plywood::render

@@ -1,0 +1,83 @@
+#include "render/snapshot.h"
+
+#include <atomic>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+
+#include "render/geom_footprint.h"
+#include "render/offscreen_context.h"
+
+namespace plywood::render {
+namespace {
+
+void WarnSoftwareFallbackOnce(const std::string& reason) {
+  static std::atomic<bool> warned{false};
+  if (!warned.exchange(true)) {
+    std::cerr << "plywood: offscreen OpenGL rendering unavailable (" << reason
+              << "); snapshots are drawn in software\n";
+  }
+}
+
+}  // namespace
+
+void SnapshotOptions::Validate() const {
+  try {
+    view.Validate();
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("view.") + e.what());
+  }
+  if (legend_text_scale < 1 || legend_text_scale > 8) {
+    throw std::invalid_argument("legend_text_scale: must be in [1, 8], got " +
+                                std::to_string(legend_text_scale));
+  }
+}
+
+Snapshot RenderSnapshot(const mjModel* m, mjData* d, const std::vector<PathOverlay>& paths,
+                        const SnapshotOptions& options) {
+  options.Validate();
+  WorldBounds bounds = StaticGeometryExtent(m).bounds;
+  if (options.frame_paths) {
+    for (const PathOverlay& path : paths) {
+      for (const Eigen::Vector2d& p : path.points_W) {
+        if (p.allFinite()) bounds.Extend(p);
+      }
+    }
+  }
+  Snapshot snapshot;
+  bool drawn = false;
+  if (options.use_opengl) {
+    if (!OffscreenRenderingAvailable()) {
+      WarnSoftwareFallbackOnce(kHasOffscreenRendering ? "no OSMesa context"
+                                                      : "built without OSMesa");
+    } else {
+      try {
+        TopDownRenderer renderer(m, bounds, options.view);
+        snapshot.picture = renderer.Render(d);
+        snapshot.backend = SnapshotBackend::kOpenGl;
+        drawn = true;
+      } catch (const std::runtime_error& e) {
+        WarnSoftwareFallbackOnce(e.what());
+      }
+    }
+  }
+  if (!drawn) {
+    snapshot.picture = RenderTopDownSoftware(m, d, bounds, options.view);
+    snapshot.backend = SnapshotBackend::kSoftware;
+  }
+  DrawPaths(snapshot.picture.image, snapshot.picture.world_to_pixel, paths);
+  if (options.legend) {
+    DrawLegend(snapshot.picture.image, LegendFor(paths), options.legend_corner,
+               options.legend_text_scale);
+  }
+  return snapshot;
+}
+
+SnapshotBackend WriteSnapshot(const mjModel* m, mjData* d, const std::vector<PathOverlay>& paths,
+                              const std::filesystem::path& path, const SnapshotOptions& options) {
+  Snapshot snapshot = RenderSnapshot(m, d, paths, options);
+  WritePng(snapshot.picture.image, path);
+  return snapshot.backend;
+}
+
+}  // namespace plywood::render

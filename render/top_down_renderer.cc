@@ -1,0 +1,233 @@
+#include "render/top_down_renderer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "render/geom_footprint.h"
+#include "render/image_ops.h"
+#include "render/offscreen_context.h"
+#include "render/overlay.h"
+#include "sim/mujoco_handles.h"
+
+namespace plywood::render {
+namespace {
+
+constexpr int kRobotGeomGroup = 3;  // sim::Scene::kRobotGeomGroup, without pulling in scene.h
+
+bool GroupShown(const mjModel* m, int g, bool show_robot) {
+  const int group = m->geom_group[g];
+  return (group >= 0 && group <= 2) || (show_robot && group == kRobotGeomGroup);
+}
+
+TopDownFrame FrameFor(const WorldBounds& bounds, const TopDownOptions& options) {
+  options.Validate();
+  return FrameBounds(bounds.Padded(options.margin_m), options.longer_side_px);
+}
+
+}  // namespace
+
+void TopDownOptions::Validate() const {
+  if (longer_side_px < 16 || longer_side_px > 8192) {
+    throw std::invalid_argument("longer_side_px: must be in [16, 8192], got " +
+                                std::to_string(longer_side_px));
+  }
+  if (!(margin_m >= 0.0) || !std::isfinite(margin_m)) {
+    throw std::invalid_argument("margin_m: must be >= 0, got " + std::to_string(margin_m));
+  }
+}
+
+double TopDownCameraHeightM(int longer_side_px, double z_top_m) {
+  // Parallax of a point h high at the picture's corner (r = 0.71 of the longer side L, with
+  // longer_side_px / L pixels per metre) is 0.71 * longer_side_px * h / D pixels; D = 4 * px * h
+  // keeps it under 0.18 px. Assume at least 1 m of height for the robot on top of the world.
+  return std::max(100.0, 4.0 * longer_side_px * std::max(z_top_m, 1.0));
+}
+
+mjvGLCamera MakeTopDownGlCamera(const TopDownFrame& frame, double height_m, double z_top_m) {
+  const Eigen::Vector2d centre = frame.shown.centre();
+  mjvGLCamera camera{};
+  camera.pos[0] = static_cast<float>(centre.x());
+  camera.pos[1] = static_cast<float>(centre.y());
+  camera.pos[2] = static_cast<float>(height_m);
+  camera.forward[2] = -1.0f;
+  camera.up[1] = 1.0f;
+  // Near and far hug the scene: depth precision stays high although the camera is far away.
+  const double near_m = height_m - std::max(z_top_m, 1.0) - 1.0;
+  const double half_height_floor_m = 0.5 * frame.height_px / frame.world_to_pixel.pixels_per_m;
+  camera.frustum_near = static_cast<float>(near_m);
+  camera.frustum_far = static_cast<float>(height_m + 1.0);
+  camera.frustum_center = 0.0f;
+  camera.frustum_top = static_cast<float>(half_height_floor_m * near_m / height_m);
+  camera.frustum_bottom = -camera.frustum_top;
+  return camera;
+}
+
+WorldToPixel FloorMappingOf(const mjvGLCamera& camera, int width_px, int height_px) {
+  // Similar triangles: the near-plane window scales by distance / near onto the floor (z = 0).
+  const double to_floor = static_cast<double>(camera.pos[2]) / camera.frustum_near;
+  const double half_height_m = 0.5 * (camera.frustum_top - camera.frustum_bottom) * to_floor;
+  const double pixels_per_m = height_px / (2.0 * half_height_m);
+  const double centre_x_m = camera.pos[0] + camera.frustum_center * to_floor;
+  const double centre_y_m =
+      camera.pos[1] + 0.5 * (camera.frustum_top + camera.frustum_bottom) * to_floor;
+  return {pixels_per_m, centre_x_m - 0.5 * width_px / pixels_per_m, centre_y_m + half_height_m};
+}
+
+struct TopDownRenderer::Gl {
+  // Declared first so it is destroyed last, after the GL objects below are freed.
+  OffscreenContext context;
+  sim::MjModelPtr model;
+  mjvScene scene;
+  mjrContext con;
+  mjvOption option;
+  mjvCamera camera;
+  mjvGLCamera gl_camera;
+  double z_top_m = 0.0;
+
+  Gl(int width, int height) : context(width, height) {
+    mjv_defaultScene(&scene);
+    mjr_defaultContext(&con);
+  }
+  ~Gl() {
+    try {
+      context.MakeCurrent();
+    } catch (const std::exception&) {
+    }
+    mjr_freeContext(&con);
+    mjv_freeScene(&scene);
+  }
+};
+
+TopDownRenderer::TopDownRenderer(const mjModel* m, const WorldBounds& bounds,
+                                 const TopDownOptions& options)
+    : options_(options), frame_(FrameFor(bounds, options)) {
+  if (!kHasOffscreenRendering) {
+    throw std::runtime_error("offscreen rendering: this build has no OSMesa");
+  }
+  gl_ = std::make_unique<Gl>(frame_.width_px, frame_.height_px);
+  gl_->model.reset(mj_copyModel(nullptr, m));
+  if (!gl_->model) throw std::runtime_error("offscreen rendering: mj_copyModel failed");
+  mjModel* copy = gl_->model.get();
+  // The offscreen buffer is sized from the model (default 640 x 480): raise it to the picture.
+  copy->vis.global.offwidth = std::max(copy->vis.global.offwidth, frame_.width_px);
+  copy->vis.global.offheight = std::max(copy->vis.global.offheight, frame_.height_px);
+  // A headlight straight down with ambient + diffuse = 0.8: alone it shows upward faces at 80% of
+  // their colour, leaving headroom for the world's own lights before colours saturate.
+  for (int i = 0; i < 3; ++i) {
+    copy->vis.headlight.ambient[i] = 0.3f;
+    copy->vis.headlight.diffuse[i] = 0.5f;
+    copy->vis.headlight.specular[i] = 0.0f;
+  }
+  copy->vis.headlight.active = 1;
+
+  mjv_makeScene(copy, &gl_->scene, std::max(1000, 2 * copy->ngeom + 100));
+  mjr_makeContext(copy, &gl_->con, mjFONTSCALE_100);
+  mjr_setBuffer(mjFB_OFFSCREEN, &gl_->con);
+  if (gl_->con.currentBuffer != mjFB_OFFSCREEN) {
+    throw std::runtime_error("offscreen rendering: MuJoCo could not bind its offscreen buffer");
+  }
+  const mjrRect max_viewport = mjr_maxViewport(&gl_->con);
+  if (max_viewport.width < frame_.width_px || max_viewport.height < frame_.height_px) {
+    throw std::runtime_error("offscreen rendering: buffer " + std::to_string(max_viewport.width) +
+                             " x " + std::to_string(max_viewport.height) + " is smaller than " +
+                             std::to_string(frame_.width_px) + " x " +
+                             std::to_string(frame_.height_px));
+  }
+  gl_->scene.flags[mjRND_SKYBOX] = 0;
+  gl_->scene.flags[mjRND_FOG] = 0;
+  gl_->scene.flags[mjRND_HAZE] = 0;
+  gl_->scene.flags[mjRND_REFLECTION] = 0;
+
+  mjv_defaultOption(&gl_->option);
+  for (int i = 0; i < mjNGROUP; ++i) {
+    gl_->option.geomgroup[i] = (i <= 2) || (options_.show_robot && i == kRobotGeomGroup);
+    gl_->option.sitegroup[i] = 0;  // sensor sites would clutter the map
+  }
+
+  const StaticExtent extent = StaticGeometryExtent(copy);
+  gl_->z_top_m = extent.z_max_m;
+  const double height_m = TopDownCameraHeightM(options_.longer_side_px, extent.z_max_m);
+  gl_->gl_camera = MakeTopDownGlCamera(frame_, height_m, extent.z_max_m);
+  // The abstract camera only places the headlight (mjv_updateScene derives it from this camera);
+  // the GL camera above replaces the projection it would produce.
+  mjv_defaultCamera(&gl_->camera);
+  gl_->camera.type = mjCAMERA_FREE;
+  gl_->camera.lookat[0] = gl_->gl_camera.pos[0];
+  gl_->camera.lookat[1] = gl_->gl_camera.pos[1];
+  gl_->camera.lookat[2] = 0.0;
+  gl_->camera.azimuth = 90.0;
+  gl_->camera.elevation = -90.0;
+  gl_->camera.distance = height_m;
+  // The floor map this camera yields is what we report, so the two cannot disagree.
+  frame_.world_to_pixel = FloorMappingOf(gl_->gl_camera, frame_.width_px, frame_.height_px);
+}
+
+TopDownRenderer::~TopDownRenderer() = default;
+
+TopDownImage TopDownRenderer::Render(mjData* d) {
+  gl_->context.MakeCurrent();
+  mjr_setBuffer(mjFB_OFFSCREEN, &gl_->con);
+  mjv_updateScene(gl_->model.get(), d, &gl_->option, nullptr, &gl_->camera, mjCAT_ALL, &gl_->scene);
+  gl_->scene.camera[0] = gl_->gl_camera;
+  gl_->scene.camera[1] = gl_->gl_camera;
+  const mjrRect viewport{0, 0, frame_.width_px, frame_.height_px};
+  mjr_render(viewport, &gl_->scene, &gl_->con);
+  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(frame_.width_px) * frame_.height_px * 3);
+  mjr_readPixels(rgb.data(), nullptr, viewport, &gl_->con);
+  if (const int error = mjr_getError(); error != 0) {
+    throw std::runtime_error("offscreen rendering: OpenGL error " + std::to_string(error));
+  }
+  return {FromBottomUpRows(rgb, frame_.width_px, frame_.height_px), frame_.world_to_pixel};
+}
+
+TopDownImage RenderTopDownSoftware(const mjModel* m, const mjData* d, const WorldBounds& bounds,
+                                   const TopDownOptions& options) {
+  const TopDownFrame frame = FrameFor(bounds, options);
+  TopDownImage out{RgbImage(frame.width_px, frame.height_px), frame.world_to_pixel};
+  Rgb floor{200, 200, 200};
+  std::vector<GeomFootprint> footprints;
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (!GroupShown(m, g, options.show_robot)) continue;
+    const bool is_static = IsStaticGeom(m, g);
+    if (!is_static && d == nullptr) continue;
+    Eigen::Isometry3d X_WG = Eigen::Isometry3d::Identity();
+    if (is_static) {
+      X_WG = StaticGeomPose(m, g);
+    } else {
+      X_WG.translation() =
+          Eigen::Vector3d(d->geom_xpos[3 * g], d->geom_xpos[3 * g + 1], d->geom_xpos[3 * g + 2]);
+      X_WG.linear() =
+          Eigen::Map<const Eigen::Matrix<mjtNum, 3, 3, Eigen::RowMajor>>(d->geom_xmat + 9 * g);
+    }
+    GeomFootprint footprint = FootprintOf(m, g, X_WG);
+    if (m->geom_type[g] == mjGEOM_PLANE) {
+      floor = footprint.colour;
+      continue;
+    }
+    footprints.push_back(std::move(footprint));
+  }
+  Fill(out.image, floor);
+  std::stable_sort(
+      footprints.begin(), footprints.end(),
+      [](const GeomFootprint& a, const GeomFootprint& b) { return a.z_top_m < b.z_top_m; });
+  for (const GeomFootprint& f : footprints) {
+    std::vector<Eigen::Vector2d> outline_px;
+    for (const Eigen::Vector2d& v : f.outline_W)
+      outline_px.push_back(frame.world_to_pixel.ToPixel(v));
+    FillPolygonPx(out.image, outline_px, f.colour);
+    if (outline_px.size() >= 3) {
+      outline_px.push_back(outline_px.front());
+      const Rgb edge{static_cast<std::uint8_t>(f.colour.r * 0.6),
+                     static_cast<std::uint8_t>(f.colour.g * 0.6),
+                     static_cast<std::uint8_t>(f.colour.b * 0.6)};
+      DrawPolylinePx(out.image, outline_px, edge, 1.0);
+    }
+  }
+  return out;
+}
+
+}  // namespace plywood::render

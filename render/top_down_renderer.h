@@ -1,0 +1,74 @@
+#pragma once
+
+#include <mujoco/mujoco.h>
+
+#include <memory>
+
+#include "render/png_image.h"
+#include "render/world_to_pixel.h"
+
+namespace plywood::render {
+
+struct TopDownOptions {
+  int longer_side_px = 1024;  // picture size along the longer side of the framed bounds
+  double margin_m = 0.25;     // floor shown beyond the framed bounds on every side
+  bool show_robot = true;     // draw geom group 3 (sim::Scene::kRobotGeomGroup)
+
+  // @throws std::invalid_argument whose message starts with the offending field's name.
+  void Validate() const;
+};
+
+// A top-down picture and the exact map from floor coordinates to its pixels.
+struct TopDownImage {
+  RgbImage image;
+  WorldToPixel world_to_pixel;
+};
+
+// The GL camera for a top-down view of `frame`: `height_m` above the floor's centre, looking down
+// with world +y up the picture, its frustum cut so the floor plane fills the picture exactly.
+// MuJoCo 2.2.2 has no orthographic projection, so the camera stands far away: a point `h` above
+// the floor at `r` from the centre appears displaced by r * h / (height_m - h), which
+// TopDownCameraHeightM keeps below a quarter pixel. `z_top_m` bounds the scene's height (near
+// plane).
+mjvGLCamera MakeTopDownGlCamera(const TopDownFrame& frame, double height_m, double z_top_m);
+double TopDownCameraHeightM(int longer_side_px, double z_top_m);
+
+// The floor-plane map a downward-looking GL camera produces on a `width_px` x `height_px` viewport,
+// following mjr_render's projection (glFrustum with the horizontal half-width set by the aspect).
+// @pre camera looks along -z with up = +y.
+WorldToPixel FloorMappingOf(const mjvGLCamera& camera, int width_px, int height_px);
+
+// Renders top-down views of one model through MuJoCo's OpenGL renderer in an offscreen context.
+// Construction copies the model (to size the offscreen buffer and light the scene from above) and
+// builds the GL resources once, so rendering many frames is cheap. Not copyable; one per thread.
+class TopDownRenderer {
+ public:
+  // Frames `bounds` (plus options.margin_m).
+  // @throws std::invalid_argument on bad options or bounds, std::runtime_error when no offscreen
+  // GL context can be made or MuJoCo cannot render offscreen.
+  TopDownRenderer(const mjModel* m, const WorldBounds& bounds, const TopDownOptions& options = {});
+  ~TopDownRenderer();
+  TopDownRenderer(const TopDownRenderer&) = delete;
+  TopDownRenderer& operator=(const TopDownRenderer&) = delete;
+
+  // Renders the scene in `d` (which must belong to the model given at construction, with
+  // kinematics computed, as after mj_forward or mj_step).
+  // @throws std::runtime_error when GL reports an error.
+  TopDownImage Render(mjData* d);
+
+  const TopDownFrame& frame() const { return frame_; }
+
+ private:
+  struct Gl;
+  TopDownOptions options_;
+  TopDownFrame frame_;
+  std::unique_ptr<Gl> gl_;
+};
+
+// The same view drawn without GL: the floor colour, then every visible geom's footprint from above
+// (static ones from the model, moving ones from `d`), lowest first. Used when offscreen rendering
+// is unavailable; the picture is flatter but the mapping is identical.
+TopDownImage RenderTopDownSoftware(const mjModel* m, const mjData* d, const WorldBounds& bounds,
+                                   const TopDownOptions& options = {});
+
+}  // namespace plywood::render

@@ -1,0 +1,75 @@
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "msgs/laser_scan.h"
+#include "msgs/pose2d.h"
+#include "msgs/range_ring.h"
+#include "msgs/wheel_speed_command.h"
+
+namespace plywood::robot {
+
+// What a motion controller sees at one control tick. The runner decides which pose to pass (ground
+// truth, or an odometry estimate as on the real robot); the controller cannot tell which.
+struct ControllerInput {
+  double time_s = 0.0;
+  msgs::Pose2D X_WR_estimate;              // the pose the controller steers by
+  const msgs::RangeRing* sonar = nullptr;  // latest sonar ring; null before the first one
+  const msgs::LaserScan* laser = nullptr;  // latest laser scan; null before the first one
+};
+
+// A motion controller: called once per control tick, it returns the wheel speeds to hold until the
+// next tick. Controllers are built from a DiffDriveSpec and their options struct, keep state
+// between ticks (so they cannot be copied), and measure their control period from time_s.
+class Controller {
+ public:
+  Controller() = default;
+  Controller(const Controller&) = delete;
+  Controller& operator=(const Controller&) = delete;
+  virtual ~Controller() = default;
+
+  // @pre input.time_s does not decrease from one call to the next.
+  virtual msgs::WheelSpeedCommand Update(const ControllerInput& input) = 0;
+
+  // True once the task is complete; Update then commands zero wheel speeds.
+  virtual bool Finished() const = 0;
+};
+
+// Speed magnitude (m/s or rad/s) for a move that must come to rest after `remaining` more units
+// (m or rad). It ramps up from `previous` at `accel`, caps at `cruise` and follows the braking
+// curve sqrt(2 accel remaining). Once what would be left after this tick falls inside `tolerance`
+// (where the move counts as done), it commands remaining / dt_s instead, still within the ramp and
+// the cruise cap, so that an ideal drive lands on the target at the next tick rather than stopping
+// anywhere inside the tolerance. dt_s is the expected control period; with dt_s <= 0 (unknown, i.e.
+// the first tick) it returns 0, since no ramp step can be sized.
+inline double StoppingSpeed(double previous, double cruise, double accel, double remaining,
+                            double tolerance, double dt_s) {
+  if (dt_s <= 0.0 || remaining <= 0.0) return 0.0;
+  const double ramp_cap = std::min(cruise, std::max(previous, 0.0) + accel * dt_s);
+  const double speed = std::min(ramp_cap, std::sqrt(2.0 * accel * remaining));
+  if (remaining - speed * dt_s < tolerance) return std::min(ramp_cap, remaining / dt_s);
+  return speed;
+}
+
+namespace internal {
+
+// Option checks shared by the controllers' Validate(); messages start with the field name.
+inline void RequirePositive(const std::string& field, double value) {
+  if (!std::isfinite(value) || value <= 0.0) {
+    throw std::invalid_argument(field + ": must be a finite number > 0, got " +
+                                std::to_string(value));
+  }
+}
+
+inline void RequireNonNegative(const std::string& field, double value) {
+  if (!std::isfinite(value) || value < 0.0) {
+    throw std::invalid_argument(field + ": must be a finite number >= 0, got " +
+                                std::to_string(value));
+  }
+}
+
+}  // namespace internal
+}  // namespace plywood::robot

@@ -1,0 +1,77 @@
+#include "sim/controller_config.h"
+
+#include <algorithm>
+#include <array>
+#include <string_view>
+
+#include "sim/config_archive.h"
+#include "sim/config_fields.h"
+#include "sim/yaml_fields.h"
+
+namespace plywood::sim {
+namespace {
+
+constexpr std::array<std::string_view, 5> kControllerTypes{"idle", "square_path", "waypoints",
+                                                           "wheel_script", "wall_following"};
+
+// Reads the shared keys and the chosen controller's options from one mapping.
+template <typename Archive>
+void VisitChosen(Archive& archive, ControllerConfig& config) {
+  archive("rate_hz", config.rate_hz);
+  archive("steer_by", config.steer_by);
+  if (config.type == "square_path") VisitFields(archive, config.square_path);
+  if (config.type == "waypoints") VisitFields(archive, config.waypoints);
+  if (config.type == "wheel_script") VisitFields(archive, config.wheel_script);
+  if (config.type == "wall_following") VisitFields(archive, config.wall_following);
+}
+
+}  // namespace
+
+void ReadControllerConfig(YamlFields fields, ControllerConfig& config) {
+  fields.Get("type", &config.type);
+  if (std::find(kControllerTypes.begin(), kControllerTypes.end(), config.type) ==
+      kControllerTypes.end()) {
+    std::string known;
+    for (std::string_view type : kControllerTypes)
+      known += (known.empty() ? "" : ", ") + std::string(type);
+    fields.Fail("type", "unknown controller '" + config.type + "' (known: " + known + ")");
+  }
+  YamlReadArchive archive(fields);
+  VisitChosen(archive, config);
+  archive.fields().Finish();
+  if (!(config.rate_hz > 0.0)) fields.Fail("rate_hz", "must be a finite number > 0");
+  if (config.steer_by != "ground_truth" && config.steer_by != "encoder_odometry") {
+    fields.Fail("steer_by",
+                "expected ground_truth or encoder_odometry, got '" + config.steer_by + "'");
+  }
+  if (config.type == "square_path") fields.Validate(config.square_path);
+  if (config.type == "waypoints") fields.Validate(config.waypoints);
+  if (config.type == "wheel_script") fields.Validate(config.wheel_script);
+  if (config.type == "wall_following") fields.Validate(config.wall_following);
+}
+
+YAML::Node WriteControllerConfig(ControllerConfig& config) {
+  YamlWriteArchive archive;
+  archive("type", config.type);
+  VisitChosen(archive, config);
+  return archive.node();
+}
+
+std::unique_ptr<robot::Controller> MakeController(const ControllerConfig& config,
+                                                  const robot::DiffDriveSpec& nominal) {
+  if (config.type == "square_path") {
+    return std::make_unique<robot::SquarePathController>(nominal, config.square_path);
+  }
+  if (config.type == "waypoints") {
+    return std::make_unique<robot::WaypointController>(nominal, config.waypoints);
+  }
+  if (config.type == "wheel_script") {
+    return std::make_unique<robot::WheelScriptController>(nominal, config.wheel_script);
+  }
+  if (config.type == "wall_following") {
+    return std::make_unique<robot::WallFollowingController>(nominal, config.wall_following);
+  }
+  return nullptr;
+}
+
+}  // namespace plywood::sim

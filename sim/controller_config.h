@@ -1,0 +1,41 @@
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <memory>
+#include <string>
+
+#include "robot/controller.h"
+#include "robot/diff_drive_spec.h"
+#include "robot/square_path_controller.h"
+#include "robot/wall_following_controller.h"
+#include "robot/waypoint_controller.h"
+#include "robot/wheel_script_controller.h"
+
+namespace plywood::sim {
+
+class YamlFields;
+
+// Which controller drives the robot, how often it runs, and which pose it steers by. In YAML the
+// chosen controller's options sit beside `type`:
+//   controller: {type: square_path, side_m: 4, direction: ccw, steer_by: encoder_odometry}
+struct ControllerConfig {
+  std::string type = "idle";  // idle | square_path | waypoints | wheel_script | wall_following
+  double rate_hz = 50.0;
+  // ground_truth (an ideal localiser) or encoder_odometry (what a real robot without one has).
+  std::string steer_by = "ground_truth";
+  robot::SquarePathOptions square_path;
+  robot::WaypointOptions waypoints;
+  robot::WheelScriptOptions wheel_script;
+  robot::WallFollowingOptions wall_following;
+};
+
+// @throws ConfigError naming the field.
+void ReadControllerConfig(YamlFields fields, ControllerConfig& config);
+YAML::Node WriteControllerConfig(ControllerConfig& config);
+
+// The controller `config` names, or nullptr for "idle" (the robot stands still).
+std::unique_ptr<robot::Controller> MakeController(const ControllerConfig& config,
+                                                  const robot::DiffDriveSpec& nominal);
+
+}  // namespace plywood::sim

@@ -1,0 +1,92 @@
+#pragma once
+
+#include <mujoco/mujoco.h>
+
+#include <Eigen/Core>
+#include <optional>
+#include <vector>
+
+namespace plywood::sim {
+
+// Which of a compiled model's geoms count as the world's static 2-D geometry.
+struct GroundTruthOptions {
+  // When set, keep only geoms whose vertical extent [z_min, z_max] contains this height (m), so a
+  // laser at 0.34 m does not "see" a table top at 0.72-0.75 m. Unset: every height.
+  std::optional<double> height_m;
+  // Geoms in this group are the robot's (sim::Scene::kRobotGeomGroup) and never part of the world.
+  int excluded_geom_group = 3;
+  // A geom is upright when its z axis is within this angle of the world's vertical (either sign).
+  double max_tilt_rad = 1e-6;
+
+  // @throws std::invalid_argument naming the field.
+  void Validate() const;
+};
+
+// A static, upright box or cylinder of the world, seen from above: the prism
+// {p : R_WG^T (p - centre_W) in [-half_size_xy, +half_size_xy]} x [z_min_m, z_max_m] for a box,
+// the disc |p - centre_W| <= radius_m for a cylinder.
+struct UprightGeom {
+  enum class Shape { kBox, kCylinder };
+  Shape shape = Shape::kBox;
+  int geom_id = -1;
+  Eigen::Vector2d centre_W = Eigen::Vector2d::Zero();
+  // Columns: the geom's local x and y axes projected on the floor. Orthonormal; a reflection when
+  // the geom's z axis points down.
+  Eigen::Matrix2d R_WG = Eigen::Matrix2d::Identity();
+  Eigen::Vector2d half_size_xy = Eigen::Vector2d::Zero();  // boxes only
+  double radius_m = 0.0;                                   // cylinders only
+  double z_min_m = 0.0;
+  double z_max_m = 0.0;
+
+  // True when the point lies inside the cross-section or on its boundary.
+  bool ContainsXY(const Eigen::Vector2d& p_W) const;
+};
+
+// One vertical face of a static upright box, as a 2-D segment in the world frame.
+// Orientation: a -> b runs counter-clockwise around the box seen from above (z up), so the
+// outward normal is (b - a) turned clockwise by 90 deg: ((b - a).y, -(b - a).x) / |b - a|.
+// face_index names the face in the box's own frame: 0 = +x, 1 = +y, 2 = -x, 3 = -y.
+struct WallSegment {
+  Eigen::Vector2d a = Eigen::Vector2d::Zero();
+  Eigen::Vector2d b = Eigen::Vector2d::Zero();
+  int geom_id = -1;
+  int face_index = 0;
+
+  double LengthM() const { return (b - a).norm(); }
+  Eigen::Vector2d OutwardNormal() const;
+};
+
+// The cross-section of a static upright cylinder (a round column or a table leg).
+struct WallCircle {
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  double radius_m = 0.0;
+  int geom_id = -1;
+};
+
+struct GroundTruthWalls {
+  std::vector<WallSegment> segments;  // four per box, in geom order then face order
+  std::vector<WallCircle> circles;
+  // Static geoms that the 2-D description cannot represent (tilted boxes and cylinders, spheres,
+  // capsules, ellipsoids, meshes, ...), never including planes: callers may warn or fall back to
+  // mj_ray for them.
+  std::vector<int> unrepresented_geom_ids;
+};
+
+// True when the geom's body is welded to the world: no joint anywhere in its chain, not mocap.
+bool IsStaticGeom(const mjModel* model, int geom_id);
+
+// The static upright boxes and cylinders of `model` (world alone or world + robot) that pass
+// `options`, in geom order. Poses come from the model alone (body_pos/quat composed down the body
+// tree with geom_pos/quat), so no mjData is needed and qpos does not matter.
+// @throws std::invalid_argument if `options` is invalid.
+std::vector<UprightGeom> ExtractUprightGeoms(const mjModel* model,
+                                             const GroundTruthOptions& options = {});
+
+// The world's wall segments (four vertical faces per upright box) and circles (upright
+// cylinders), skipping planes and the robot's geoms. See UprightGeom for what "static" and
+// "upright" mean.
+// @throws std::invalid_argument if `options` is invalid.
+GroundTruthWalls ExtractGroundTruthWalls(const mjModel* model,
+                                         const GroundTruthOptions& options = {});
+
+}  // namespace plywood::sim
