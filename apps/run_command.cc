@@ -1,5 +1,7 @@
 #include "apps/run_command.h"
 
+#include <unistd.h>
+
 #include <cstdio>
 #include <iostream>
 
@@ -63,12 +65,21 @@ int RunCommand(const std::vector<std::string>& args) {
 
   sim::ExperimentRunner runner(config);
   const bool quiet = line.Switch("--quiet");
+  // A live progress bar on a terminal; in logs (CI, batch) a line every 10 %.
+  const bool terminal = isatty(fileno(stderr));
+  int last_decile = 0;
   runner.Run([&](double fraction, double simulated_s) {
     if (quiet) return;
-    std::fprintf(stderr, "\r[%-30s] %5.1f%%  t = %.0f s ", std::string(30 * fraction, '#').c_str(),
-                 100.0 * fraction, simulated_s);
+    if (terminal) {
+      std::fprintf(stderr, "\r[%-30s] %5.1f%%  t = %.0f s ", std::string(30 * fraction, '#').c_str(),
+                   100.0 * fraction, simulated_s);
+    } else if (static_cast<int>(10 * fraction) > last_decile) {
+      last_decile = static_cast<int>(10 * fraction);
+      std::fprintf(stderr, "plywood: %s %3d%% (t = %.0f s)\n", config.name.c_str(), 10 * last_decile,
+                   simulated_s);
+    }
   });
-  if (!quiet) std::fprintf(stderr, "\r%60s\r", "");
+  if (!quiet && terminal) std::fprintf(stderr, "\r%60s\r", "");
 
   sim::WriteRunOutputs(config, runner.record(), out_dir);
   if (config.output.snapshot && !line.Switch("--no-snapshot")) {

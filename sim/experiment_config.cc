@@ -9,6 +9,7 @@
 #include "sim/config_archive.h"
 #include "sim/config_error.h"
 #include "sim/config_fields.h"
+#include "sim/mujoco_handles.h"
 #include "sim/robot_catalog.h"
 #include "sim/yaml_fields.h"
 
@@ -30,6 +31,21 @@ std::filesystem::path ResolvePath(const std::string& text, const std::filesystem
   }
   fields.Fail(key, "no such file: " + text + " (looked in " + base_dir.string() + " and " +
                        DataRoot().string() + ")");
+}
+
+// A world may name free spots as <custom><numeric name="spawn_0" data="x_m y_m yaw_deg"/>; the
+// first is where a robot starts when the experiment gives no spawn (else the origin).
+SpawnPose WorldDefaultSpawn(const std::filesystem::path& world) {
+  MjModelPtr model;
+  try {
+    model = LoadModelFromFile(world.string());
+  } catch (const std::exception&) {
+    return {};  // the scene reports the compile error with its full context
+  }
+  const int id = mj_name2id(model.get(), mjOBJ_NUMERIC, "spawn_0");
+  if (id < 0 || model->numeric_size[id] != 3) return {};
+  const mjtNum* data = model->numeric_data + model->numeric_adr[id];
+  return {data[0], data[1], data[2]};
 }
 
 void RequirePositiveFinite(const char* field, double value) {
@@ -94,7 +110,11 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   } catch (const std::invalid_argument& e) {
     robot.Fail("model", e.what());
   }
-  ReadOptions(robot.Child("spawn"), config.spawn);
+  if (robot.Has("spawn")) {
+    ReadOptions(robot.Child("spawn"), config.spawn);
+  } else {
+    config.spawn = WorldDefaultSpawn(config.world_path);
+  }
   ReadOptions(robot.Child("nominal"), config.nominal);
   ReadOptions(robot.Child("deviation"), config.deviation);
   robot.Finish();

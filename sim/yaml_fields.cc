@@ -40,6 +40,7 @@ std::string YamlFields::FieldPath(const std::string& key) const {
 }
 
 bool YamlFields::Has(const std::string& key) const {
+  known_.insert(key);
   return node_.IsMap() && node_[key].IsDefined();
 }
 
@@ -135,6 +136,7 @@ void YamlFields::GetDegrees(const std::string& key, double* radians) {
 }
 
 YamlFields YamlFields::Child(const std::string& key) {
+  known_.insert(key);
   used_.insert(key);
   return YamlFields(node_.IsMap() ? node_[key] : YAML::Node(), file_, FieldPath(key));
 }
@@ -152,6 +154,7 @@ std::vector<YamlFields> YamlFields::ChildList(const std::string& key) {
 }
 
 YAML::Node YamlFields::Raw(const std::string& key) {
+  known_.insert(key);
   used_.insert(key);
   return node_.IsMap() ? node_[key] : YAML::Node();
 }
@@ -160,14 +163,17 @@ void YamlFields::Finish() const {
   if (!node_.IsMap()) return;
   for (const auto& entry : node_) {
     const std::string key = entry.first.Scalar();
-    if (!used_.count(key)) Fail(key, "unknown key");
+    if (used_.count(key)) continue;
+    std::string known;
+    for (const std::string& k : known_) known += (known.empty() ? "" : ", ") + k;
+    Fail(key, "unknown key" + (known.empty() ? std::string() : " (known here: " + known + ")"));
   }
 }
 
 void ApplyOverride(YAML::Node root, const std::string& assignment, const std::string& source) {
   const auto equals = assignment.find('=');
   if (equals == std::string::npos || equals == 0) {
-    throw ConfigError(source, assignment, "expected key.path=value");
+    throw ConfigError(source, "", "expected key.path=value");
   }
   const std::string path = assignment.substr(0, equals);
   YAML::Node value;

@@ -64,6 +64,7 @@ class YamlFields {
   std::string file_;
   std::string path_;
   std::set<std::string> used_;
+  mutable std::set<std::string> known_;  // every key asked for, to list in "unknown key" errors
 };
 
 // Applies a command-line override "a.b.c=value" to a YAML tree, creating mappings on the way.
