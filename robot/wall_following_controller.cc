@@ -13,6 +13,14 @@ namespace plywood::robot {
 namespace {
 
 constexpr double kTimeSlackS = 1e-9;
+// A point further than this from the first line fitted beside the robot belongs to something else
+// (the next wall at a corner, a door jamb, a table leg): about twice the sonar's 1 % noise at 2 m
+// plus what an echo placed on the beam axis is off by when it came from the edge of the cone.
+constexpr double kOutlierM = 0.1;
+// Laser returns closer together than this along a scan add nothing to the fit but cost memory.
+constexpr double kMinPointSpacingM = 0.03;
+// Speed at the near end of the slow-down zone, as a fraction of speed_m_s: still enough to creep.
+constexpr double kMinSpeedFraction = 0.3;
 
 // Folds a line direction into (-pi/2, pi/2]: a wall has no arrow, we take the one ahead.
 double FoldLineAngle(double angle_rad) {
@@ -70,6 +78,8 @@ void WallFollowingOptions::Validate() const {
                                 std::to_string(max_wall_range_m));
   }
   internal::RequirePositive("front_clearance_m", front_clearance_m);
+  internal::RequirePositive("lane_half_width_m", lane_half_width_m);
+  internal::RequireNonNegative("memory_s", memory_s);
   internal::RequireNonNegative("duration_s", duration_s);
 }
 
@@ -80,35 +90,65 @@ WallFollowingController::WallFollowingController(const DiffDriveSpec& spec,
   options_.Validate();
 }
 
-void WallFollowingController::AddPoint(const msgs::Pose2D& X_RS, double beam_rad, double range_m,
-                                       std::vector<Point>* side, std::vector<Point>* front) const {
-  const msgs::Pose2D X_RP =
-      X_RS * msgs::Pose2D{range_m * std::cos(beam_rad), range_m * std::sin(beam_rad), 0.0};
-  const double direction_rad = msgs::WrapAngle(X_RS.theta_rad + beam_rad);
-  const double from_side_normal_rad =
-      msgs::WrapAngle(direction_rad - side_sign_ * std::numbers::pi / 2.0);
-  if (std::abs(from_side_normal_rad) <= options_.side_window_rad &&
-      range_m <= options_.max_wall_range_m) {
-    side->push_back({X_RP.x_m, X_RP.y_m});
-  }
-  if (std::abs(direction_rad) <= options_.front_window_rad) front->push_back({X_RP.x_m, X_RP.y_m});
+void WallFollowingController::AddPoint(const msgs::Pose2D& X_WR, const msgs::Pose2D& X_RS,
+                                       double beam_rad, double range_m, double time_s) {
+  const msgs::Pose2D X_WP =
+      X_WR * X_RS * msgs::Pose2D{range_m * std::cos(beam_rad), range_m * std::sin(beam_rad), 0.0};
+  memory_.push_back({{X_WP.x_m, X_WP.y_m}, time_s});
 }
 
-void WallFollowingController::CollectPoints(const ControllerInput& input, std::vector<Point>* side,
-                                            std::vector<Point>* front) const {
+void WallFollowingController::Remember(const ControllerInput& input) {
+  const double time_s =
+      options_.sensor == WallSensor::kSonar ? input.sonar->time_s : input.laser->time_s;
+  if (last_reading_time_s_ && time_s <= *last_reading_time_s_) return;
+  last_reading_time_s_ = time_s;
+  // Stale points go before the new ones arrive, so the latest reading always counts in full.
+  memory_.erase(memory_.begin(),
+                std::find_if(memory_.begin(), memory_.end(), [&](const StampedPoint& p) {
+                  return p.time_s >= time_s - options_.memory_s - kTimeSlackS;
+                }));
+  const msgs::Pose2D& X_WR = input.X_WR_estimate;
   if (options_.sensor == WallSensor::kSonar) {
+    // No echo is not free space (specular miss): only echoes go in, placed on the beam axis.
     for (const msgs::RangeReading& reading : input.sonar->readings) {
       if (!reading.echo || reading.range_m < input.sonar->range_min_m ||
           reading.range_m > input.sonar->range_max_m) {
         continue;
       }
-      AddPoint(reading.X_RS, 0.0, reading.range_m, side, front);
+      AddPoint(X_WR, reading.X_RS, 0.0, reading.range_m, time_s);
     }
   } else {
     const msgs::LaserScan& scan = *input.laser;
+    std::optional<Point> last_W;
     for (std::size_t i = 0; i < scan.ranges_m.size(); ++i) {
-      if (scan.IsReturn(i))
-        AddPoint(scan.X_RS, scan.BeamAngleRad(i), scan.ranges_m[i], side, front);
+      if (!scan.IsReturn(i)) continue;
+      AddPoint(X_WR, scan.X_RS, scan.BeamAngleRad(i), scan.ranges_m[i], time_s);
+      const Point p_W = memory_.back().p_W;
+      if (last_W && std::hypot(p_W.x_m - last_W->x_m, p_W.y_m - last_W->y_m) < kMinPointSpacingM) {
+        memory_.pop_back();
+      } else {
+        last_W = p_W;
+      }
+    }
+  }
+}
+
+void WallFollowingController::CollectPoints(const msgs::Pose2D& X_WR, std::vector<Point>* side,
+                                            std::vector<Point>* front) const {
+  const msgs::Pose2D X_RW = X_WR.Inverse();
+  for (const StampedPoint& stamped : memory_) {
+    const msgs::Pose2D X_RP = X_RW * msgs::Pose2D{stamped.p_W.x_m, stamped.p_W.y_m, 0.0};
+    const Point p{X_RP.x_m, X_RP.y_m};
+    const double bearing_rad = std::atan2(p.y_m, p.x_m);
+    const double from_side_normal_rad =
+        msgs::WrapAngle(bearing_rad - side_sign_ * std::numbers::pi / 2.0);
+    if (std::abs(from_side_normal_rad) <= options_.side_window_rad &&
+        std::hypot(p.x_m, p.y_m) <= options_.max_wall_range_m) {
+      side->push_back(p);
+    }
+    if (p.x_m > 0.0 && (std::abs(p.y_m) <= options_.lane_half_width_m ||
+                        std::abs(bearing_rad) <= options_.front_window_rad)) {
+      front->push_back(p);
     }
   }
 }
@@ -116,29 +156,52 @@ void WallFollowingController::CollectPoints(const ControllerInput& input, std::v
 std::optional<WallFollowingController::WallEstimate> WallFollowingController::FitWall(
     const std::vector<Point>& side, double theta_estimate_rad) {
   if (side.empty()) return std::nullopt;
-  double cx = 0.0, cy = 0.0;
-  for (const Point& p : side) {
-    cx += p.x_m;
-    cy += p.y_m;
-  }
-  cx /= side.size();
-  cy /= side.size();
-  double sxx = 0.0, syy = 0.0, sxy = 0.0;
-  for (const Point& p : side) {
-    sxx += (p.x_m - cx) * (p.x_m - cx);
-    syy += (p.y_m - cy) * (p.y_m - cy);
-    sxy += (p.x_m - cx) * (p.y_m - cy);
+  // Centroid and principal axis (the total-least-squares line direction) of the points `use`
+  // accepts; nullopt for the angle when they do not spread along a line.
+  struct Fit {
+    double cx = 0.0, cy = 0.0;
+    std::optional<double> angle_rad;
+    int count = 0;
+  };
+  const auto fit = [&](const auto& use) {
+    Fit f;
+    for (const Point& p : side) {
+      if (!use(p)) continue;
+      f.cx += p.x_m;
+      f.cy += p.y_m;
+      ++f.count;
+    }
+    if (f.count == 0) return f;
+    f.cx /= f.count;
+    f.cy /= f.count;
+    double sxx = 0.0, syy = 0.0, sxy = 0.0;
+    for (const Point& p : side) {
+      if (!use(p)) continue;
+      sxx += (p.x_m - f.cx) * (p.x_m - f.cx);
+      syy += (p.y_m - f.cy) * (p.y_m - f.cy);
+      sxy += (p.x_m - f.cx) * (p.y_m - f.cy);
+    }
+    if (sxx + syy > 1e-12) f.angle_rad = FoldLineAngle(0.5 * std::atan2(2.0 * sxy, sxx - syy));
+    return f;
+  };
+  Fit f = fit([](const Point&) { return true; });
+  if (f.angle_rad) {
+    const Fit all = f;
+    const double s = std::sin(*all.angle_rad), c = std::cos(*all.angle_rad);
+    const Fit inliers = fit([&](const Point& p) {
+      return std::abs((p.x_m - all.cx) * s - (p.y_m - all.cy) * c) <= kOutlierM;
+    });
+    if (inliers.count > 0 && inliers.count < all.count) f = inliers;
   }
   double angle_rad = 0.0;
-  if (sxx + syy > 1e-12) {
-    // Principal axis of the scatter: the total-least-squares line direction.
-    angle_rad = FoldLineAngle(0.5 * std::atan2(2.0 * sxy, sxx - syy));
+  if (f.angle_rad) {
+    angle_rad = *f.angle_rad;
     wall_heading_W_rad_ = theta_estimate_rad + angle_rad;
   } else if (wall_heading_W_rad_) {
     angle_rad = FoldLineAngle(*wall_heading_W_rad_ - theta_estimate_rad);
   }
   // Distance from the centre of rotation to the line through the centroid.
-  const double distance_m = std::abs(cx * std::sin(angle_rad) - cy * std::cos(angle_rad));
+  const double distance_m = std::abs(f.cx * std::sin(angle_rad) - f.cy * std::cos(angle_rad));
   return WallEstimate{distance_m, angle_rad};
 }
 
@@ -158,14 +221,13 @@ msgs::WheelSpeedCommand WallFollowingController::Update(const ControllerInput& i
     return {};
   }
 
+  Remember(input);
   std::vector<Point> side, front;
-  CollectPoints(input, &side, &front);
+  CollectPoints(input.X_WR_estimate, &side, &front);
   wall_ = FitWall(side, input.X_WR_estimate.theta_rad);
 
   double ahead_m = std::numeric_limits<double>::infinity();
-  for (const Point& p : front) {
-    if (p.x_m > 0.0) ahead_m = std::min(ahead_m, p.x_m);
-  }
+  for (const Point& p : front) ahead_m = std::min(ahead_m, p.x_m);
   // Hysteresis: once blocked, keep turning until the way ahead is clear by a further distance_m
   // and the side sees a wall roughly parallel (or none), else the wall being left behind pulls the
   // robot straight back into the corner.
@@ -179,8 +241,13 @@ msgs::WheelSpeedCommand WallFollowingController::Update(const ControllerInput& i
     return TwistToWheelSpeeds(spec_, {0.0, -side_sign_ * options_.max_turn_rate_rad_s});
   }
 
-  speed_m_s_ =
-      dt_s > 0.0 ? std::min(options_.speed_m_s, speed_m_s_ + options_.accel_m_s2 * dt_s) : 0.0;
+  // Slow down linearly over the last distance_m before the clearance, so that the robot does not
+  // reach it faster than the sonar (a few hertz) can tell.
+  const double slow_fraction = std::clamp(
+      (ahead_m - options_.front_clearance_m) / options_.distance_m, kMinSpeedFraction, 1.0);
+  speed_m_s_ = dt_s > 0.0 ? std::min(options_.speed_m_s * slow_fraction,
+                                     speed_m_s_ + options_.accel_m_s2 * dt_s)
+                          : 0.0;
   double yaw_rate_rad_s = 0.0;
   if (!wall_) {
     yaw_rate_rad_s = side_sign_ * speed_m_s_ / options_.distance_m;

@@ -97,8 +97,9 @@ Result RunClosedLoop(WallFollowingController& controller, const DiffDriveSpec& s
                      bool laser, msgs::Pose2D X_WR, double time_s) {
   Result result;
   for (int i = 0; i * kDt < time_s; ++i) {
-    const msgs::RangeRing ring = Sonar(walls, sonar_poses, X_WR);
-    const msgs::LaserScan scan = Laser(walls, X_WR);
+    msgs::RangeRing ring = Sonar(walls, sonar_poses, X_WR);
+    msgs::LaserScan scan = Laser(walls, X_WR);
+    ring.time_s = scan.time_s = i * kDt;
     ControllerInput input{i * kDt, X_WR};
     if (laser) {
       input.laser = &scan;
