@@ -6,8 +6,10 @@
 #include <iostream>
 
 #include "apps/command_line.h"
+#include "apps/protocols.h"
 #include "render/overlay.h"
 #include "render/snapshot.h"
+#include "sim/config_error.h"
 #include "sim/experiment_config.h"
 #include "sim/experiment_runner.h"
 #include "sim/run_writer.h"
@@ -63,6 +65,19 @@ int RunCommand(const std::vector<std::string>& args) {
   const std::string out_dir =
       line.Value("--out").value_or("runs/" + config.name + "-seed" + std::to_string(config.seed));
 
+  const bool snapshots = config.output.snapshot && !line.Switch("--no-snapshot");
+  if (config.protocol != "single") {
+    const auto& protocols = Protocols();
+    const auto it = protocols.find(config.protocol);
+    if (it == protocols.end()) {
+      std::string known = "single";
+      for (const auto& [name, protocol] : protocols) known += ", " + name;
+      throw sim::ConfigError(config.source_file, "protocol",
+                             "unknown protocol '" + config.protocol + "' (known: " + known + ")");
+    }
+    return it->second(ProtocolContext{config, out_dir, line.Switch("--quiet"), snapshots});
+  }
+
   sim::ExperimentRunner runner(config);
   const bool quiet = line.Switch("--quiet");
   // A live progress bar on a terminal; in logs (CI, batch) a line every 10 %.
@@ -71,18 +86,18 @@ int RunCommand(const std::vector<std::string>& args) {
   runner.Run([&](double fraction, double simulated_s) {
     if (quiet) return;
     if (terminal) {
-      std::fprintf(stderr, "\r[%-30s] %5.1f%%  t = %.0f s ", std::string(30 * fraction, '#').c_str(),
-                   100.0 * fraction, simulated_s);
+      std::fprintf(stderr, "\r[%-30s] %5.1f%%  t = %.0f s ",
+                   std::string(30 * fraction, '#').c_str(), 100.0 * fraction, simulated_s);
     } else if (static_cast<int>(10 * fraction) > last_decile) {
       last_decile = static_cast<int>(10 * fraction);
-      std::fprintf(stderr, "plywood: %s %3d%% (t = %.0f s)\n", config.name.c_str(), 10 * last_decile,
-                   simulated_s);
+      std::fprintf(stderr, "plywood: %s %3d%% (t = %.0f s)\n", config.name.c_str(),
+                   10 * last_decile, simulated_s);
     }
   });
   if (!quiet && terminal) std::fprintf(stderr, "\r%60s\r", "");
 
   sim::WriteRunOutputs(config, runner.record(), out_dir);
-  if (config.output.snapshot && !line.Switch("--no-snapshot")) {
+  if (snapshots) {
     render::SnapshotOptions options;
     options.view.longer_side_px = config.output.snapshot_size_px;
     render::WriteSnapshot(runner.scene().model(), runner.mutable_scene().mutable_data(),

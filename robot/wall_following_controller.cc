@@ -20,7 +20,10 @@ constexpr double kOutlierM = 0.1;
 // Laser returns closer together than this along a scan add nothing to the fit but cost memory.
 constexpr double kMinPointSpacingM = 0.03;
 // Speed at the near end of the slow-down zone, as a fraction of speed_m_s: still enough to creep.
-constexpr double kMinSpeedFraction = 0.3;
+constexpr double kMinSpeedFraction = 0.5;
+// An arc around the end of a wall turns by at most half a turn (a thin wall or a door jamb); one
+// that finds nothing by then would only circle, so the robot drives straight to find a wall.
+constexpr double kMaxArcRad = std::numbers::pi;
 
 // Folds a line direction into (-pi/2, pi/2]: a wall has no arrow, we take the one ahead.
 double FoldLineAngle(double angle_rad) {
@@ -135,19 +138,20 @@ void WallFollowingController::Remember(const ControllerInput& input) {
 
 void WallFollowingController::CollectPoints(const msgs::Pose2D& X_WR, std::vector<Point>* side,
                                             std::vector<Point>* front) const {
-  const msgs::Pose2D X_RW = X_WR.Inverse();
+  // Hot loop over up to a few thousand points: rotate by hand and compare bearings through their
+  // cosines, no trigonometry per point.
+  const double c = std::cos(X_WR.theta_rad), s = std::sin(X_WR.theta_rad);
+  const double cos_side = std::cos(options_.side_window_rad);
+  const double cos_front = std::cos(options_.front_window_rad);
   for (const StampedPoint& stamped : memory_) {
-    const msgs::Pose2D X_RP = X_RW * msgs::Pose2D{stamped.p_W.x_m, stamped.p_W.y_m, 0.0};
-    const Point p{X_RP.x_m, X_RP.y_m};
-    const double bearing_rad = std::atan2(p.y_m, p.x_m);
-    const double from_side_normal_rad =
-        msgs::WrapAngle(bearing_rad - side_sign_ * std::numbers::pi / 2.0);
-    if (std::abs(from_side_normal_rad) <= options_.side_window_rad &&
-        std::hypot(p.x_m, p.y_m) <= options_.max_wall_range_m) {
+    const double dx = stamped.p_W.x_m - X_WR.x_m, dy = stamped.p_W.y_m - X_WR.y_m;
+    const Point p{c * dx + s * dy, -s * dx + c * dy};
+    const double range_m = std::hypot(p.x_m, p.y_m);
+    if (side_sign_ * p.y_m >= range_m * cos_side && range_m <= options_.max_wall_range_m) {
       side->push_back(p);
     }
-    if (p.x_m > 0.0 && (std::abs(p.y_m) <= options_.lane_half_width_m ||
-                        std::abs(bearing_rad) <= options_.front_window_rad)) {
+    if (p.x_m > 0.0 &&
+        (std::abs(p.y_m) <= options_.lane_half_width_m || p.x_m >= range_m * cos_front)) {
       front->push_back(p);
     }
   }
@@ -250,8 +254,12 @@ msgs::WheelSpeedCommand WallFollowingController::Update(const ControllerInput& i
                           : 0.0;
   double yaw_rate_rad_s = 0.0;
   if (!wall_) {
-    yaw_rate_rad_s = side_sign_ * speed_m_s_ / options_.distance_m;
+    if (wall_heading_W_rad_ && arc_turned_rad_ < kMaxArcRad) {
+      yaw_rate_rad_s = side_sign_ * speed_m_s_ / options_.distance_m;
+      arc_turned_rad_ += std::abs(yaw_rate_rad_s) * dt_s;
+    }
   } else {
+    arc_turned_rad_ = 0.0;
     const double distance_error_m = wall_->distance_m - options_.distance_m;
     // Heading relative to the wall is minus the wall's direction seen from the robot.
     const double heading_to_wall_rad = -wall_->angle_rad;

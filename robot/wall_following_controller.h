@@ -64,9 +64,10 @@ struct WallFollowingOptions {
 // from the last fit through the change in the estimated heading. The speed falls as the lane ahead
 // closes in; anything in it closer than front_clearance_m makes the robot turn on the spot away
 // from the wall (inner corners, or heading into the wall) until the lane is clear by a further
-// distance_m and the side sees a roughly parallel wall; with no wall in view it drives an arc of
-// radius distance_m towards the wall side (outer corners, or looking for a wall). Without a
-// reading of the chosen sensor yet it commands zero.
+// distance_m and the side sees a roughly parallel wall. When the wall goes out of view it drives
+// an arc of radius distance_m towards the wall side (outer corners) for at most half a turn;
+// before any wall was seen, or after such an arc found none, it drives straight ahead until the
+// lane ahead closes in. Without a reading of the chosen sensor yet it commands zero.
 // @pre Each new sonar ring or laser scan carries a later time_s than the one before.
 class WallFollowingController final : public Controller {
  public:
@@ -111,7 +112,8 @@ class WallFollowingController final : public Controller {
   std::vector<StampedPoint> memory_;  // oldest first
   std::optional<double> last_reading_time_s_;
   double speed_m_s_ = 0.0;
-  bool turning_away_ = false;  // blocked ahead: turning on the spot away from the wall
+  double arc_turned_rad_ = 0.0;  // heading change of the arc since the wall went out of view
+  bool turning_away_ = false;    // blocked ahead: turning on the spot away from the wall
   bool finished_ = false;
 };
 

@@ -40,10 +40,6 @@ void ReadControllerConfig(YamlFields fields, ControllerConfig& config) {
   VisitChosen(archive, config);
   archive.fields().Finish();
   if (!(config.rate_hz > 0.0)) fields.Fail("rate_hz", "must be a finite number > 0");
-  if (config.steer_by != "ground_truth" && config.steer_by != "encoder_odometry") {
-    fields.Fail("steer_by",
-                "expected ground_truth or encoder_odometry, got '" + config.steer_by + "'");
-  }
   if (config.type == "square_path") fields.Validate(config.square_path);
   if (config.type == "waypoints") fields.Validate(config.waypoints);
   if (config.type == "wheel_script") fields.Validate(config.wheel_script);

@@ -18,11 +18,12 @@ class YamlFields;
 
 // Which controller drives the robot, how often it runs, and which pose it steers by. In YAML the
 // chosen controller's options sit beside `type`:
-//   controller: {type: square_path, side_m: 4, direction: ccw, steer_by: encoder_odometry}
+//   controller: {type: square_path, side_m: 4, direction: ccw, steer_by: encoder}
 struct ControllerConfig {
   std::string type = "idle";  // idle | square_path | waypoints | wheel_script | wall_following
   double rate_hz = 50.0;
-  // ground_truth (an ideal localiser) or encoder_odometry (what a real robot without one has).
+  // ground_truth (an ideal localiser) or the name of an odometry estimator the experiment runs
+  // (e.g. encoder: what a real robot without a localiser has).
   std::string steer_by = "ground_truth";
   robot::SquarePathOptions square_path;
   robot::WaypointOptions waypoints;

@@ -95,6 +95,13 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   config.name = std::filesystem::path(source).stem().string();
   top.Get("name", &config.name);
   top.Get("seed", &config.seed);
+  top.Get("protocol", &config.protocol);
+  if (config.protocol != "single") {
+    if (!top.Has(config.protocol))
+      config.protocol_options = YAML::Node(YAML::NodeType::Map);
+    else
+      config.protocol_options = YAML::Clone(top.Raw(config.protocol));
+  }
   top.Get("duration_s", &config.duration_s);
   if (!std::isfinite(config.duration_s) || config.duration_s <= 0.0) {
     top.Fail("duration_s", "must be a finite number > 0, got " + FormatNumber(config.duration_s));
@@ -122,6 +129,11 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   ReadOptions(top.Child("physics"), config.physics);
   ReadControllerConfig(top.Child("controller"), config.controller);
   ReadSensorSuiteConfig(top.Child("sensors"), config.nominal, config.sensors);
+  if (top.Has("odometry")) {
+    ReadOdometryConfig(top.Child("odometry"), config.odometry);
+  } else if (config.sensors.encoders) {
+    config.odometry.enabled = {"encoder"};
+  }
   ReadOptions(top.Child("output"), config.output);
   top.Finish();
   return config;
@@ -144,6 +156,10 @@ std::string ExperimentConfigToYaml(const ExperimentConfig& const_config) {
   YAML::Node root(YAML::NodeType::Map);
   root["name"] = config.name;
   root["seed"] = config.seed;
+  if (config.protocol != "single") {
+    root["protocol"] = config.protocol;
+    root[config.protocol] = config.protocol_options;
+  }
   root["duration_s"] = FormatNumber(config.duration_s);
   root["world"] = config.world_path.string();
   YAML::Node robot(YAML::NodeType::Map);
@@ -155,6 +171,7 @@ std::string ExperimentConfigToYaml(const ExperimentConfig& const_config) {
   root["physics"] = WriteOptions(config.physics);
   root["controller"] = WriteControllerConfig(config.controller);
   root["sensors"] = WriteSensorSuiteConfig(config.sensors);
+  root["odometry"] = WriteOdometryConfig(config.odometry);
   root["output"] = WriteOptions(config.output);
   YAML::Emitter out;
   out << root;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <yaml-cpp/yaml.h>
+
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -7,6 +9,7 @@
 
 #include "robot/diff_drive_spec.h"
 #include "sim/controller_config.h"
+#include "sim/odometry_config.h"
 #include "sim/physical_deviation.h"
 #include "sim/sensor_suite_config.h"
 
@@ -38,6 +41,11 @@ struct OutputOptions {
 struct ExperimentConfig {
   std::string source_file;  // the YAML it came from, for error messages
   std::string name;
+  // "single" (one run) or a registered multi-run protocol (apps/protocols.h) such as "umbmark".
+  // A protocol reads its own options from the top-level section named after it, kept here raw
+  // and read strictly by the protocol (YamlFields over protocol_options).
+  std::string protocol = "single";
+  YAML::Node protocol_options;
   std::uint64_t seed = 1;
   double duration_s = 60.0;
   std::string world;                 // as written in the YAML
@@ -49,6 +57,7 @@ struct ExperimentConfig {
   PhysicsOptions physics;
   ControllerConfig controller;
   SensorSuiteConfig sensors;
+  OdometryConfig odometry;
   OutputOptions output;
 };
 

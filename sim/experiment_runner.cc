@@ -8,11 +8,11 @@
 #include <optional>
 
 #include "robot/controller.h"
-#include "robot/encoder_odometry.h"
 #include "robot/trajectory_metrics.h"
 #include "sim/config_error.h"
 #include "sim/controller_config.h"
 #include "sim/grid_ray_caster_2d.h"
+#include "sim/odometry_config.h"
 #include "sim/physical_deviation.h"
 #include "sim/robot_catalog.h"
 #include "sim/sensor_schedule.h"
@@ -84,7 +84,9 @@ struct ExperimentRunner::Parts {
   std::unique_ptr<robot::Controller> controller;
   std::optional<SensorSchedule> control_schedule;
   SensorSchedule trajectory_schedule{10.0};
-  std::optional<robot::EncoderOdometry> encoder_odometry;
+  std::vector<std::unique_ptr<robot::OdometryEstimator>> estimators;
+  // The estimate the controller steers by; null: ground truth.
+  const robot::OdometryEstimator* steering = nullptr;
   // Latest readings handed to the controller.
   std::optional<msgs::SonarRing> last_sonar;
   std::optional<msgs::LaserScan> last_laser;
@@ -153,16 +155,26 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
   }
   if (s.encoders) {
     p.encoders.emplace(s.encoders->rate_hz, *s.encoders, ComponentSeed(seed, "encoders"));
-    p.encoder_odometry.emplace(config.nominal, scene_->TruePose());
-    record_.estimator_names.push_back("encoder_odometry");
+  }
+  if (!config.odometry.enabled.empty() && !s.encoders) {
+    throw ConfigError(config.source_file, "odometry",
+                      "odometry estimators need sensors.encoders to be enabled");
+  }
+  for (auto& [name, estimator] :
+       MakeEstimators(config.odometry, config.nominal, scene_->TruePose())) {
+    record_.estimator_names.push_back(name);
+    if (config.controller.steer_by == name) p.steering = estimator.get();
+    p.estimators.push_back(std::move(estimator));
   }
   if (s.gyro) p.gyro.emplace(s.gyro->rate_hz, *s.gyro, ComponentSeed(seed, "gyro"));
   if (s.bumpers) {
     in_file("bumpers", [&] { p.bumpers.emplace(s.bumpers->rate_hz, *scene_, *s.bumpers); });
   }
-  if (config.controller.steer_by == "encoder_odometry" && !p.encoder_odometry) {
+  if (config.controller.steer_by != "ground_truth" && p.steering == nullptr) {
     throw ConfigError(config.source_file, "controller.steer_by",
-                      "encoder_odometry needs sensors.encoders to be enabled");
+                      "expected ground_truth or an estimator enabled under odometry: (which needs "
+                      "sensors.encoders), got '" +
+                          config.controller.steer_by + "'");
   }
   try {
     p.controller = MakeController(config.controller, config.nominal);
@@ -180,14 +192,19 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
 
 ExperimentRunner::~ExperimentRunner() = default;
 
+const robot::Controller* ExperimentRunner::controller() const { return parts_->controller.get(); }
+
 void ExperimentRunner::SampleSensors() {
   Parts& p = *parts_;
   const double t = scene_->time_s();
   if (p.encoders && p.encoders->schedule.Due(t)) {
     record_.encoders.push_back(p.encoders->sensor.Sample(*scene_));
-    p.encoder_odometry->Update(record_.encoders.back());
+    for (auto& estimator : p.estimators) estimator->AddEncoders(record_.encoders.back());
   }
-  if (p.gyro && p.gyro->schedule.Due(t)) record_.gyro.push_back(p.gyro->sensor.Sample(*scene_));
+  if (p.gyro && p.gyro->schedule.Due(t)) {
+    record_.gyro.push_back(p.gyro->sensor.Sample(*scene_));
+    for (auto& estimator : p.estimators) estimator->AddGyro(record_.gyro.back());
+  }
   if (p.bumpers && p.bumpers->schedule.Due(t)) {
     record_.bumpers.push_back(p.bumpers->sensor.Sample(*scene_));
   }
@@ -196,7 +213,10 @@ void ExperimentRunner::SampleSensors() {
     LaserRecord laser;
     laser.scan = p.scan_scratch.scan;
     laser.X_WR_truth = scene_->TruePose();
-    laser.X_WR_odometry = p.encoder_odometry ? p.encoder_odometry->pose() : laser.X_WR_truth;
+    // The log's odometry pose: the steering estimate, else the first estimator, else truth.
+    laser.X_WR_odometry = p.steering             ? p.steering->pose()
+                          : p.estimators.empty() ? laser.X_WR_truth
+                                                 : p.estimators.front()->pose();
     laser.hit_geom_ids = p.scan_scratch.hit_geom_ids;
     laser.hit_segment_ids.assign(laser.scan.ranges_m.size(), -1);
     const Eigen::Vector2d origin_W =
@@ -236,7 +256,7 @@ void ExperimentRunner::Run(const Progress& progress) {
   bool finished = false;
   const auto record_trajectory = [&] {
     TrajectorySample sample{scene_->time_s(), scene_->TruePose(), {}};
-    if (p.encoder_odometry) sample.estimates.push_back(p.encoder_odometry->pose());
+    for (const auto& estimator : p.estimators) sample.estimates.push_back(estimator->pose());
     record_.trajectory.push_back(std::move(sample));
   };
   // Step k integrates [k dt, (k+1) dt]; the run covers [0, duration] in whole steps.
@@ -246,9 +266,7 @@ void ExperimentRunner::Run(const Progress& progress) {
     if (p.controller && p.control_schedule->Due(scene_->time_s())) {
       robot::ControllerInput input;
       input.time_s = scene_->time_s();
-      input.X_WR_estimate = config_.controller.steer_by == "encoder_odometry"
-                                ? p.encoder_odometry->pose()
-                                : scene_->TruePose();
+      input.X_WR_estimate = p.steering ? p.steering->pose() : scene_->TruePose();
       input.sonar = p.last_sonar ? &*p.last_sonar : nullptr;
       input.laser = p.last_laser ? &*p.last_laser : nullptr;
       scene_->SetWheelSpeeds(p.controller->Update(input));

@@ -11,6 +11,7 @@
 #include "msgs/pose2d.h"
 #include "msgs/range_ring.h"
 #include "msgs/wheel_encoders.h"
+#include "robot/controller.h"
 #include "sim/experiment_config.h"
 #include "sim/ground_truth_walls.h"
 #include "sim/metrics.h"
@@ -79,6 +80,10 @@ class ExperimentRunner {
   void Run(const Progress& progress = {});
 
   const RunRecord& record() const { return record_; }
+  // For scorers that run after the run (line extraction, occupancy) and add their metrics.
+  RunRecord& mutable_record() { return record_; }
+  // The controller that drove the run (null for idle), e.g. to read an exploration map.
+  const robot::Controller* controller() const;
   const RunCost& cost() const { return cost_; }
   const Scene& scene() const { return *scene_; }
   Scene& mutable_scene() { return *scene_; }
