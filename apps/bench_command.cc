@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "apps/command_line.h"
+#include "apps/line_bench.h"
 #include "sim/experiment_config.h"
 #include "sim/experiment_runner.h"
 #include "sim/ray_caster_bench.h"
@@ -47,6 +48,7 @@ int BenchCommand(const std::vector<std::string>& args) {
   std::printf("%-28s %10.3f us  (%d geoms)\n", "mj_ray per ray", rays.mj_ray_us_per_ray,
               rays.world_geoms);
   std::printf("%-28s %10.3f us\n", "grid caster per ray", rays.grid_us_per_ray);
+  PrintLineExtractorBench();
   return 0;
 }
 

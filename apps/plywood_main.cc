@@ -1,6 +1,7 @@
 // plywood: the command line of the Plywood testbed.
 //   plywood run EXPERIMENT.yaml [--out DIR] [--seed N] [--set key.path=value]...
 //   plywood bench [--seconds S] [--world PATH]
+//   plywood replay LOG --extractor NAME [--out DIR] [--skip-bad]
 // Exit codes: 0 success, 1 a failure during the run, 2 bad input (config, files, usage).
 
 #include <cstdio>
@@ -11,7 +12,9 @@
 
 #include "apps/bench_command.h"
 #include "apps/command_line.h"
+#include "apps/replay_command.h"
 #include "apps/run_command.h"
+#include "apps/train_command.h"
 #include "sim/config_error.h"
 
 namespace {
@@ -21,7 +24,9 @@ constexpr const char* kUsage =
     "  run EXPERIMENT.yaml [--out DIR] [--seed N] [--set key.path=value]... [--quiet]\n"
     "      run one experiment and write its results to DIR (default runs/NAME-seedN)\n"
     "  bench [--seconds S] [--world PATH]\n"
-    "      print the real-time factor and ray throughput of a P3-DX with LMS 200 + 16 sonars\n";
+    "      print the real-time factor and ray throughput of a P3-DX with LMS 200 + 16 sonars\n"
+    "  train sonar-net [--out FILE] [--rooms N] [--poses N] [--epochs N] [--seed N]\n"
+    "      train seed 001's sonar interpretation network on simulated rooms\n";
 
 int Dispatch(const std::vector<std::string>& args) {
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
@@ -31,6 +36,8 @@ int Dispatch(const std::vector<std::string>& args) {
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (args[0] == "run") return plywood::apps::RunCommand(rest);
   if (args[0] == "bench") return plywood::apps::BenchCommand(rest);
+  if (args[0] == "replay") return plywood::apps::ReplayCommand(rest);
+  if (args[0] == "train") return plywood::apps::TrainCommand(rest);
   throw plywood::apps::UsageError{"unknown command '" + args[0] + "' (try plywood --help)"};
 }
 

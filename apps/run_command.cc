@@ -7,6 +7,7 @@
 
 #include "apps/command_line.h"
 #include "apps/protocols.h"
+#include "apps/sonar_map_scorer.h"
 #include "render/overlay.h"
 #include "render/snapshot.h"
 #include "sim/config_error.h"
@@ -96,7 +97,9 @@ int RunCommand(const std::vector<std::string>& args) {
   });
   if (!quiet && terminal) std::fprintf(stderr, "\r%60s\r", "");
 
+  AddSonarMapMetrics(runner);  // seed 001 map scores, if the sonar explorer drove
   sim::WriteRunOutputs(config, runner.record(), out_dir);
+  if (snapshots) WriteSonarMapPictures(runner, out_dir);
   if (snapshots) {
     render::SnapshotOptions options;
     options.view.longer_side_px = config.output.snapshot_size_px;

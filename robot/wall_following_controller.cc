@@ -83,6 +83,11 @@ void WallFollowingOptions::Validate() const {
   internal::RequirePositive("front_clearance_m", front_clearance_m);
   internal::RequirePositive("lane_half_width_m", lane_half_width_m);
   internal::RequireNonNegative("memory_s", memory_s);
+  internal::RequireNonNegative("wall_memory_s", wall_memory_s);
+  if (wall_memory_s > memory_s) {
+    throw std::invalid_argument("wall_memory_s: must not exceed memory_s, got " +
+                                std::to_string(wall_memory_s));
+  }
   internal::RequireNonNegative("duration_s", duration_s);
 }
 
@@ -143,11 +148,13 @@ void WallFollowingController::CollectPoints(const msgs::Pose2D& X_WR, std::vecto
   const double c = std::cos(X_WR.theta_rad), s = std::sin(X_WR.theta_rad);
   const double cos_side = std::cos(options_.side_window_rad);
   const double cos_front = std::cos(options_.front_window_rad);
+  const double newest_s = last_reading_time_s_.value_or(0.0);
   for (const StampedPoint& stamped : memory_) {
     const double dx = stamped.p_W.x_m - X_WR.x_m, dy = stamped.p_W.y_m - X_WR.y_m;
     const Point p{c * dx + s * dy, -s * dx + c * dy};
     const double range_m = std::hypot(p.x_m, p.y_m);
-    if (side_sign_ * p.y_m >= range_m * cos_side && range_m <= options_.max_wall_range_m) {
+    if (side_sign_ * p.y_m >= range_m * cos_side && range_m <= options_.max_wall_range_m &&
+        stamped.time_s >= newest_s - options_.wall_memory_s - kTimeSlackS) {
       side->push_back(p);
     }
     if (p.x_m > 0.0 &&
@@ -234,14 +241,20 @@ msgs::WheelSpeedCommand WallFollowingController::Update(const ControllerInput& i
   for (const Point& p : front) ahead_m = std::min(ahead_m, p.x_m);
   // Hysteresis: once blocked, keep turning until the way ahead is clear by a further distance_m
   // and the side sees a wall roughly parallel (or none), else the wall being left behind pulls the
-  // robot straight back into the corner.
-  if (ahead_m < options_.front_clearance_m) turning_away_ = true;
+  // robot straight back into the corner. Clutter (a wardrobe in a corner, table legs) may never
+  // fit as one parallel wall: after half a turn a clear way ahead is enough.
+  if (ahead_m < options_.front_clearance_m) {
+    if (!turning_away_) turned_away_rad_ = 0.0;
+    turning_away_ = true;
+  }
   if (turning_away_ && ahead_m > options_.front_clearance_m + options_.distance_m &&
-      (!wall_ || std::abs(wall_->angle_rad) < options_.max_approach_angle_rad / 2.0)) {
+      (!wall_ || std::abs(wall_->angle_rad) < options_.max_approach_angle_rad / 2.0 ||
+       turned_away_rad_ > std::numbers::pi)) {
     turning_away_ = false;
   }
   if (turning_away_) {
     speed_m_s_ = 0.0;
+    turned_away_rad_ += options_.max_turn_rate_rad_s * dt_s;
     return TwistToWheelSpeeds(spec_, {0.0, -side_sign_ * options_.max_turn_rate_rad_s});
   }
 

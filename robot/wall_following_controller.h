@@ -48,7 +48,10 @@ struct WallFollowingOptions {
   // Echo points are kept this long (in the estimate frame) after the reading that produced them:
   // a sonar that hears nothing has not seen free space, only a specular miss, so a wall heard a
   // moment ago still counts. 0 uses the latest reading only.
-  double memory_s = 2.0;
+  double memory_s = 10.0;
+  // Only points this recent shape the wall fit: a sonar echo placed on the beam axis is off by up
+  // to the cone's half-angle, and older points add more of that error than they add wall.
+  double wall_memory_s = 2.0;
   double duration_s = 0.0;  // finishes after this long; 0 runs until stopped
 
   // @throws std::invalid_argument naming the offending field.
@@ -64,10 +67,11 @@ struct WallFollowingOptions {
 // from the last fit through the change in the estimated heading. The speed falls as the lane ahead
 // closes in; anything in it closer than front_clearance_m makes the robot turn on the spot away
 // from the wall (inner corners, or heading into the wall) until the lane is clear by a further
-// distance_m and the side sees a roughly parallel wall. When the wall goes out of view it drives
-// an arc of radius distance_m towards the wall side (outer corners) for at most half a turn;
-// before any wall was seen, or after such an arc found none, it drives straight ahead until the
-// lane ahead closes in. Without a reading of the chosen sensor yet it commands zero.
+// distance_m and the side sees a roughly parallel wall (or it has turned half a turn). When the
+// wall goes out of view it drives an arc of radius distance_m towards the wall side (outer corners)
+// for at most half a turn; before any wall was seen, or after such an arc found none, it drives
+// straight ahead until the lane ahead closes in. Without a reading of the chosen sensor yet it
+// commands zero.
 // @pre Each new sonar ring or laser scan carries a later time_s than the one before.
 class WallFollowingController final : public Controller {
  public:
@@ -113,7 +117,9 @@ class WallFollowingController final : public Controller {
   std::optional<double> last_reading_time_s_;
   double speed_m_s_ = 0.0;
   double arc_turned_rad_ = 0.0;  // heading change of the arc since the wall went out of view
-  bool turning_away_ = false;    // blocked ahead: turning on the spot away from the wall
+  bool turning_away_ = false;
+  double turned_away_rad_ = 0.0;  // heading change since turning_away_ was set    // blocked ahead:
+                                  // turning on the spot away from the wall
   bool finished_ = false;
 };
 

@@ -225,6 +225,9 @@ TEST(WallFollowingControllerTest, InvalidOptionsThrowNamingTheField) {
   ExpectThrowsNaming(with([](auto& o) { o.front_window_rad = 0; }), "front_window_rad");
   ExpectThrowsNaming(with([](auto& o) { o.max_wall_range_m = 0.4; }), "max_wall_range_m");
   ExpectThrowsNaming(with([](auto& o) { o.front_clearance_m = 0; }), "front_clearance_m");
+  ExpectThrowsNaming(with([](auto& o) { o.lane_half_width_m = 0; }), "lane_half_width_m");
+  ExpectThrowsNaming(with([](auto& o) { o.memory_s = -1; }), "memory_s");
+  ExpectThrowsNaming(with([](auto& o) { o.wall_memory_s = 20; }), "wall_memory_s");
   ExpectThrowsNaming(with([](auto& o) { o.duration_s = -1; }), "duration_s");
 }
 

@@ -29,8 +29,8 @@ struct BumperSensorOptions {
 //  - P3-DX: front 0..4 centred at -53.7, -24.5, 0, 24.5, 53.7; rear 5..9 at 143.1, 163.0, 180,
 //    -163.0, -143.1 (so a contact on the ring's flat side goes to panel 4/5 or 9/0, split at 98.4).
 //  - Magellan Pro: panel i centred at 22.5 i, each covering +-11.25.
-// Contacts are MuJoCo's from the last step, i.e. at the start of that step, as a real switch is read
-// a moment late.
+// Contacts are MuJoCo's from the last step, i.e. at the start of that step, as a real switch is
+// read a moment late.
 class BumperSensor {
  public:
   // @throws std::invalid_argument when `options` is invalid.

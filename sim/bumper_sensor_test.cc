@@ -7,6 +7,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "sim/scene.h"
 #include "tests/support/mujoco_test_support.h"
@@ -105,6 +106,69 @@ TEST(BumperSensorTest, MagellanPanelFacingTheWallPresses) {
   EXPECT_NE(std::find(pressed.begin(), pressed.end(), 0), pressed.end());
   for (int panel : pressed) EXPECT_TRUE(panel <= 2 || panel >= 14) << panel;
   EXPECT_NEAR(scene.TruePose().x_m, 1.0 - 0.211, 0.01);
+}
+
+TEST(BumperSensorTest, PanelArcsAreCentredOnThePanels) {
+  constexpr double kDeg = std::numbers::pi / 180.0;
+  Scene magellan = MakeSceneFacing("magellan_pro.xml", 0.0);
+  const BumperSensor ring(magellan);
+  for (int i = 0; i < 16; ++i) {
+    // Panel i faces 22.5 i deg and owns +-11.25 deg around it.
+    EXPECT_EQ(ring.PanelAtBearing((22.5 * i - 11.0) * kDeg), i);
+    EXPECT_EQ(ring.PanelAtBearing((22.5 * i + 11.0) * kDeg), i);
+  }
+  Scene p3dx = MakeSceneFacing("p3dx.xml", 0.3);  // the robot's own heading does not matter
+  const BumperSensor bumpers(p3dx);
+  EXPECT_EQ(bumpers.PanelAtBearing(0.0), 2);
+  EXPECT_EQ(bumpers.PanelAtBearing(std::numbers::pi), 7);
+  EXPECT_EQ(bumpers.PanelAtBearing(-std::numbers::pi), 7);
+  // Panel centres seen from the base origin: atan2(0.083, 0.182) = 24.5 deg and
+  // atan2(0.150, 0.110) = 53.7 deg in front, 143.1 and 163.0 deg behind; arcs meet halfway
+  // (12.3, 39.1, 98.4, 171.5 deg).
+  EXPECT_EQ(bumpers.PanelAtBearing(12.0 * kDeg), 2);
+  EXPECT_EQ(bumpers.PanelAtBearing(13.0 * kDeg), 3);
+  EXPECT_EQ(bumpers.PanelAtBearing(-38.0 * kDeg), 1);
+  EXPECT_EQ(bumpers.PanelAtBearing(-40.0 * kDeg), 0);
+  EXPECT_EQ(bumpers.PanelAtBearing(98.0 * kDeg), 4);
+  EXPECT_EQ(bumpers.PanelAtBearing(99.0 * kDeg), 5);
+  EXPECT_EQ(bumpers.PanelAtBearing(-99.0 * kDeg), 9);
+  EXPECT_EQ(bumpers.PanelAtBearing(172.0 * kDeg), 7);
+  EXPECT_EQ(bumpers.PanelAtBearing(-170.0 * kDeg), 8);
+}
+
+// Places the robot with heading `theta_rad` so that it reaches `depth_m` into the wall (face
+// x = 1) with its outermost point `reach_m` from the origin along +x, then runs collision.
+void PlaceAgainstWall(Scene& scene, double theta_rad, double reach_m, double depth_m) {
+  const mjModel* m = scene.model();
+  mjData* d = scene.mutable_data();
+  mjtNum* q = d->qpos + m->jnt_qposadr[m->body_jntadr[scene.base_body_id()]];
+  q[0] = 1.0 - reach_m + depth_m;
+  q[1] = 0.0;
+  q[3] = std::cos(theta_rad / 2.0);
+  q[4] = q[5] = 0.0;
+  q[6] = std::sin(theta_rad / 2.0);
+  mj_forward(m, d);
+}
+
+TEST(BumperSensorTest, MagellanPanelFacingAFlatWallIsTheOnlyOnePressed) {
+  Scene scene = MakeSceneFacing("magellan_pro.xml", 0.0);
+  const BumperSensor bumpers(scene);
+  for (int i = 0; i < 16; ++i) {
+    // Heading -22.5 i deg turns panel i (its face 0.211 m out) towards the wall.
+    PlaceAgainstWall(scene, -22.5 * i * std::numbers::pi / 180.0, 0.211, 0.002);
+    EXPECT_EQ(PressedPanels(bumpers.Sample(scene)), std::vector<int>{i}) << "panel " << i;
+  }
+}
+
+TEST(BumperSensorTest, P3dxCentrePanelsFacingAFlatWallAreTheOnesPressed) {
+  Scene scene = MakeSceneFacing("p3dx.xml", 0.0);
+  const BumperSensor bumpers(scene);
+  PlaceAgainstWall(scene, 0.0, 0.218, 0.002);  // front face at x = 0.218
+  EXPECT_EQ(PressedPanels(bumpers.Sample(scene)), std::vector<int>{2});
+  PlaceAgainstWall(scene, std::numbers::pi, 0.307, 0.002);  // rear face at x = -0.307
+  EXPECT_EQ(PressedPanels(bumpers.Sample(scene)), std::vector<int>{7});
+  PlaceAgainstWall(scene, 0.0, 0.218, -0.002);  // 2 mm short of the wall
+  EXPECT_TRUE(PressedPanels(bumpers.Sample(scene)).empty());
 }
 
 TEST(BumperSensorTest, NothingPressesWhileDrivingInTheOpen) {

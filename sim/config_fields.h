@@ -201,6 +201,9 @@ void VisitFields(A& a, robot::WallFollowingOptions& o) {
   a("front_window_rad", o.front_window_rad);
   a("max_wall_range_m", o.max_wall_range_m);
   a("front_clearance_m", o.front_clearance_m);
+  a("lane_half_width_m", o.lane_half_width_m);
+  a("memory_s", o.memory_s);
+  a("wall_memory_s", o.wall_memory_s);
   a("duration_s", o.duration_s);
 }
 

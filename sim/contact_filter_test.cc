@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <random>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -30,10 +31,10 @@ std::set<std::pair<int, int>> Contacts(const mjModel* m, mjData* d, const std::v
   return pairs;
 }
 
-TEST(TightContactFilterTest, KeepsEveryContactTheDefaultFilterFinds) {
+void ExpectSameContactsAsTheDefaultFilter(const std::string& robot) {
   SceneOptions options;
   options.world_mjcf = DataRoot() / "worlds" / "seed000_room_3.xml";
-  options.robot_mjcf = FindRobot("p3dx").mjcf;
+  options.robot_mjcf = FindRobot(robot).mjcf;
   Scene scene(options);
   const mjModel* m = scene.model();
   mjData* d = scene.mutable_data();
@@ -49,10 +50,52 @@ TEST(TightContactFilterTest, KeepsEveryContactTheDefaultFilterFinds) {
     qpos[3] = std::cos(a / 2.0);
     qpos[6] = std::sin(a / 2.0);
     const auto expected = Contacts(m, d, qpos, nullptr);
-    EXPECT_EQ(Contacts(m, d, qpos, TightContactFilter), expected) << "trial " << trial;
-    poses_with_wall_contact += expected.size() > 4;  // more than wheels + caster on the floor
+    EXPECT_EQ(Contacts(m, d, qpos, TightContactFilter), expected) << robot << " trial " << trial;
+    poses_with_wall_contact += std::any_of(expected.begin(), expected.end(), [&](const auto& pair) {
+      return m->geom_type[pair.first] != mjGEOM_PLANE && m->geom_type[pair.second] != mjGEOM_PLANE;
+    });
   }
-  EXPECT_GT(poses_with_wall_contact, 20) << "the trial poses must include wall contacts";
+  EXPECT_GT(poses_with_wall_contact, 20) << robot << ": the trial poses must include wall contacts";
+}
+
+TEST(TightContactFilterTest, KeepsEveryContactTheDefaultFilterFinds) {
+  ExpectSameContactsAsTheDefaultFilter("p3dx");
+  ExpectSameContactsAsTheDefaultFilter("magellan_pro");
+}
+
+TEST(TightContactFilterTest, KeepsEveryContactWithTableLegsAndColumns) {
+  // The office's cylinders (table legs, columns), approached from every side and distance.
+  for (const std::string robot : {"p3dx", "magellan_pro"}) {
+    SceneOptions options;
+    options.world_mjcf = DataRoot() / "worlds" / "office.xml";
+    options.robot_mjcf = FindRobot(robot).mjcf;
+    Scene scene(options);
+    const mjModel* m = scene.model();
+    mjData* d = scene.mutable_data();
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    int poses_touching_a_cylinder = 0, cylinders = 0;
+    for (int g = 0; g < m->ngeom; ++g) {
+      if (scene.IsRobotGeom(g) || m->geom_type[g] != mjGEOM_CYLINDER) continue;
+      ++cylinders;
+      for (int trial = 0; trial < 8; ++trial) {
+        std::vector<double> qpos(m->qpos0, m->qpos0 + m->nq);
+        const double bearing = 6.283 * unit(rng), distance = m->geom_size[3 * g] + 0.5 * unit(rng);
+        qpos[0] = d->geom_xpos[3 * g] + distance * std::cos(bearing);
+        qpos[1] = d->geom_xpos[3 * g + 1] + distance * std::sin(bearing);
+        const double yaw = 6.283 * unit(rng);
+        qpos[3] = std::cos(yaw / 2.0);
+        qpos[6] = std::sin(yaw / 2.0);
+        const auto expected = Contacts(m, d, qpos, nullptr);
+        EXPECT_EQ(Contacts(m, d, qpos, TightContactFilter), expected) << robot << " geom " << g;
+        poses_touching_a_cylinder +=
+            std::any_of(expected.begin(), expected.end(),
+                        [&](const auto& pair) { return pair.first == g || pair.second == g; });
+      }
+    }
+    EXPECT_GT(cylinders, 10);
+    EXPECT_GT(poses_touching_a_cylinder, cylinders) << robot;
+  }
 }
 
 TEST(TightContactFilterTest, DropsARobotGeomFarFromALongWall) {

@@ -2,17 +2,20 @@
 
 #include <algorithm>
 #include <array>
+#include <filesystem>
 #include <string_view>
 
 #include "sim/config_archive.h"
 #include "sim/config_fields.h"
+#include "sim/robot_catalog.h"
+#include "sim/sonar_explorer_fields.h"
 #include "sim/yaml_fields.h"
 
 namespace plywood::sim {
 namespace {
 
-constexpr std::array<std::string_view, 5> kControllerTypes{"idle", "square_path", "waypoints",
-                                                           "wheel_script", "wall_following"};
+constexpr std::array<std::string_view, 6> kControllerTypes{
+    "idle", "square_path", "waypoints", "wheel_script", "wall_following", "sonar_explorer"};
 
 // Reads the shared keys and the chosen controller's options from one mapping.
 template <typename Archive>
@@ -23,6 +26,7 @@ void VisitChosen(Archive& archive, ControllerConfig& config) {
   if (config.type == "waypoints") VisitFields(archive, config.waypoints);
   if (config.type == "wheel_script") VisitFields(archive, config.wheel_script);
   if (config.type == "wall_following") VisitFields(archive, config.wall_following);
+  if (config.type == "sonar_explorer") VisitFields(archive, config.sonar_explorer);
 }
 
 }  // namespace
@@ -44,6 +48,7 @@ void ReadControllerConfig(YamlFields fields, ControllerConfig& config) {
   if (config.type == "waypoints") fields.Validate(config.waypoints);
   if (config.type == "wheel_script") fields.Validate(config.wheel_script);
   if (config.type == "wall_following") fields.Validate(config.wall_following);
+  if (config.type == "sonar_explorer") fields.Validate(config.sonar_explorer);
 }
 
 YAML::Node WriteControllerConfig(ControllerConfig& config) {
@@ -66,6 +71,18 @@ std::unique_ptr<robot::Controller> MakeController(const ControllerConfig& config
   }
   if (config.type == "wall_following") {
     return std::make_unique<robot::WallFollowingController>(nominal, config.wall_following);
+  }
+  if (config.type == "sonar_explorer") {
+    const perception::SonarExplorerOptions& o = config.sonar_explorer;
+    std::shared_ptr<const perception::SonarCellModel> model;
+    if (o.sonar_model == "net") {
+      std::filesystem::path weights = o.weights_file;
+      if (weights.is_relative()) weights = DataRoot() / weights;
+      model = std::make_shared<perception::SonarNet>(perception::SonarNet::Load(weights));
+    } else {
+      model = std::make_shared<perception::ClassicalSonarModel>();
+    }
+    return std::make_unique<perception::SonarExplorer>(nominal, o, model);
   }
   return nullptr;
 }

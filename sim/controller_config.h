@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "perception/sonar_explorer.h"
 #include "robot/controller.h"
 #include "robot/diff_drive_spec.h"
 #include "robot/square_path_controller.h"
@@ -20,7 +21,8 @@ class YamlFields;
 // chosen controller's options sit beside `type`:
 //   controller: {type: square_path, side_m: 4, direction: ccw, steer_by: encoder}
 struct ControllerConfig {
-  std::string type = "idle";  // idle | square_path | waypoints | wheel_script | wall_following
+  // idle | square_path | waypoints | wheel_script | wall_following | sonar_explorer
+  std::string type = "idle";
   double rate_hz = 50.0;
   // ground_truth (an ideal localiser) or the name of an odometry estimator the experiment runs
   // (e.g. encoder: what a real robot without a localiser has).
@@ -29,6 +31,7 @@ struct ControllerConfig {
   robot::WaypointOptions waypoints;
   robot::WheelScriptOptions wheel_script;
   robot::WallFollowingOptions wall_following;
+  perception::SonarExplorerOptions sonar_explorer;  // seed 001 (docs/sonar_map.md)
 };
 
 // @throws ConfigError naming the field.

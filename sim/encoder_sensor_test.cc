@@ -11,6 +11,7 @@
 
 #include "sim/scene.h"
 #include "tests/support/mujoco_test_support.h"
+#include "tests/support/options_test_support.h"
 
 namespace plywood::sim {
 namespace {
@@ -22,12 +23,7 @@ std::int64_t ExpectedTicks(double angle_rad, int ticks_per_rev) {
 }
 
 void ExpectInvalid(const EncoderSensorOptions& options, const std::string& field) {
-  try {
-    options.Validate();
-    ADD_FAILURE() << "expected " << field << " to be rejected";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()).rfind(field + ":", 0), 0u) << e.what();
-  }
+  plywood::testing::ExpectInvalidField(options, field);
 }
 
 TEST(EncoderSensorTest, ValidateNamesTheField) {

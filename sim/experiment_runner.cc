@@ -160,6 +160,12 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
     throw ConfigError(config.source_file, "odometry",
                       "odometry estimators need sensors.encoders to be enabled");
   }
+  for (const std::string& name : config.odometry.enabled) {
+    if (EstimatorNeedsGyro(name) && !s.gyro) {
+      throw ConfigError(config.source_file, "odometry." + name,
+                        "this estimator needs sensors.gyro to be enabled");
+    }
+  }
   for (auto& [name, estimator] :
        MakeEstimators(config.odometry, config.nominal, scene_->TruePose())) {
     record_.estimator_names.push_back(name);

@@ -11,42 +11,16 @@
 
 #include "sim/mujoco_handles.h"
 #include "sim/mujoco_ray_caster.h"
+#include "tests/support/ray_caster_test_support.h"
 
 namespace plywood::sim {
 namespace {
 
-struct World {
-  MjModelPtr model;
-  MjDataPtr data;
-  int Geom(const char* name) const { return mj_name2id(model.get(), mjOBJ_GEOM, name); }
-};
+using plywood::testing::CompiledWorld;
+using plywood::testing::ExpectNormal;
 
-World Compile(const std::string& xml) {
-  World world;
-  world.model = LoadModelFromString(xml, std::string(PLYWOOD_BINARY_DIR) + "/grid_ray_world.xml");
-  world.data.reset(mj_makeData(world.model.get()));
-  mj_forward(world.model.get(), world.data.get());
-  return world;
-}
-
-constexpr char kClosedFormWorld[] = R"(
-<mujoco>
-  <worldbody>
-    <geom name="floor" type="plane" size="0 0 1"/>
-    <geom name="wall" type="box" pos="3 0 1" size="0.05 2 1"/>
-    <geom name="yawed" type="box" pos="0 -4 0.5" euler="0 0 30" size="0.5 0.25 0.5"/>
-    <geom name="post" type="cylinder" pos="-3 1 0.5" size="0.25 0.5"/>
-    <geom name="table_top" type="box" pos="0 4 0.72" size="0.6 0.4 0.02"/>
-    <body name="robot" pos="1.5 0 0">
-      <freejoint/>
-      <geom name="robot_chassis" type="box" group="3" pos="0 0 0.3" size="0.2 0.2 0.2"/>
-    </body>
-  </worldbody>
-</mujoco>)";
-
-void ExpectNormal(const Eigen::Vector3d& actual, const Eigen::Vector3d& expected) {
-  EXPECT_NEAR((actual - expected).norm(), 0.0, 1e-12)
-      << actual.transpose() << " vs " << expected.transpose();
+CompiledWorld Compile(const std::string& xml) {
+  return plywood::testing::CompileWorld(xml, "grid_ray_world.xml");
 }
 
 TEST(GridRayCaster2DTest, OptionsValidate) {
@@ -65,7 +39,7 @@ TEST(GridRayCaster2DTest, OptionsValidate) {
 }
 
 TEST(GridRayCaster2DTest, StaticWorldNeedsNoMujocoCallsForHorizontalRays) {
-  const World w = Compile(kClosedFormWorld);
+  const CompiledWorld w = Compile(plywood::testing::ClosedFormWorld());
   const GridRayCaster2D grid(w.model.get(), w.data.get());
   EXPECT_EQ(grid.num_grid_geoms(), 4);  // wall, yawed, post, table top
   EXPECT_EQ(grid.num_horizontal_fallback_geoms(), 0);
@@ -73,7 +47,7 @@ TEST(GridRayCaster2DTest, StaticWorldNeedsNoMujocoCallsForHorizontalRays) {
 }
 
 TEST(GridRayCaster2DTest, BoxAtKnownDistanceThroughTheRobot) {
-  const World w = Compile(kClosedFormWorld);
+  const CompiledWorld w = Compile(plywood::testing::ClosedFormWorld());
   const GridRayCaster2D grid(w.model.get(), w.data.get());
   RayHit hit;
   ASSERT_TRUE(grid.Cast({0, 0, 0.3}, {1, 0, 0}, 8.0, &hit));
@@ -91,7 +65,7 @@ TEST(GridRayCaster2DTest, BoxAtKnownDistanceThroughTheRobot) {
 }
 
 TEST(GridRayCaster2DTest, YawedBoxObliqueRay) {
-  const World w = Compile(kClosedFormWorld);
+  const CompiledWorld w = Compile(plywood::testing::ClosedFormWorld());
   const GridRayCaster2D grid(w.model.get(), w.data.get());
   const double yaw = M_PI / 6;
   const Eigen::Vector3d u(std::cos(yaw), std::sin(yaw), 0), v(-std::sin(yaw), std::cos(yaw), 0);
@@ -108,7 +82,7 @@ TEST(GridRayCaster2DTest, YawedBoxObliqueRay) {
 }
 
 TEST(GridRayCaster2DTest, CylinderOffAxis) {
-  const World w = Compile(kClosedFormWorld);
+  const CompiledWorld w = Compile(plywood::testing::ClosedFormWorld());
   const GridRayCaster2D grid(w.model.get(), w.data.get());
   RayHit hit;
   ASSERT_TRUE(grid.Cast({-1, 1.1, 0.3}, {-1, 0, 0}, 8.0, &hit));
@@ -119,7 +93,7 @@ TEST(GridRayCaster2DTest, CylinderOffAxis) {
 }
 
 TEST(GridRayCaster2DTest, TableTopAboveRayHeightIsNotHit) {
-  const World w = Compile(kClosedFormWorld);
+  const CompiledWorld w = Compile(plywood::testing::ClosedFormWorld());
   const GridRayCaster2D grid(w.model.get(), w.data.get());
   RayHit hit;
   EXPECT_FALSE(grid.Cast({0, 2, 0.3}, {0, 1, 0}, 8.0, &hit));
@@ -130,7 +104,7 @@ TEST(GridRayCaster2DTest, TableTopAboveRayHeightIsNotHit) {
 }
 
 TEST(GridRayCaster2DTest, DownwardRayHitsTheFloor) {
-  const World w = Compile(kClosedFormWorld);
+  const CompiledWorld w = Compile(plywood::testing::ClosedFormWorld());
   const GridRayCaster2D grid(w.model.get(), w.data.get());
   RayHit hit;
   ASSERT_TRUE(grid.Cast({0, 0, 0.3}, Eigen::Vector3d(-1, 0, -1).normalized(), 8.0, &hit));
@@ -234,7 +208,7 @@ void Compare(const RayCaster& reference, const RayCaster& grid, const Eigen::Vec
 class RandomWorldTest : public ::testing::TestWithParam<double> {};
 
 TEST_P(RandomWorldTest, HorizontalRaysMatchMjRayRayForRay) {
-  const World w = Compile(RandomWorld(7, 60));
+  const CompiledWorld w = Compile(RandomWorld(7, 60));
   GridRayCaster2DOptions options;
   options.cell_size_m = GetParam();
   const MujocoRayCaster reference(w.model.get(), w.data.get());
@@ -257,7 +231,7 @@ TEST_P(RandomWorldTest, HorizontalRaysMatchMjRayRayForRay) {
 }
 
 TEST_P(RandomWorldTest, TiltedAndSteepRaysMatchMjRay) {
-  const World w = Compile(RandomWorld(8, 60));
+  const CompiledWorld w = Compile(RandomWorld(8, 60));
   GridRayCaster2DOptions options;
   options.cell_size_m = GetParam();
   const MujocoRayCaster reference(w.model.get(), w.data.get());
@@ -281,7 +255,7 @@ TEST_P(RandomWorldTest, TiltedAndSteepRaysMatchMjRay) {
 INSTANTIATE_TEST_SUITE_P(CellSizes, RandomWorldTest, ::testing::Values(0.13, 0.5, 2.0));
 
 TEST(GridRayCaster2DTest, SeesMovingBodiesWhereTheyAreNow) {
-  World w = Compile(RandomWorld(9, 20));
+  CompiledWorld w = Compile(RandomWorld(9, 20));
   const MujocoRayCaster reference(w.model.get(), w.data.get());
   const GridRayCaster2D grid(w.model.get(), w.data.get());
   // Move the crate into the line of a ray after the grid was built.
@@ -306,7 +280,7 @@ TEST(GridRayCaster2DTest, OfficeWorldMatchesMjRay) {
   const std::filesystem::path office =
       std::filesystem::path(PLYWOOD_SOURCE_ROOT) / "worlds/office.xml";
   if (!std::filesystem::exists(office)) GTEST_SKIP() << office << " not written yet";
-  World w;
+  CompiledWorld w;
   w.model = LoadModelFromFile(office.string());
   w.data.reset(mj_makeData(w.model.get()));
   mj_forward(w.model.get(), w.data.get());

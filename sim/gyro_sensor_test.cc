@@ -10,17 +10,13 @@
 #include "msgs/pose2d.h"
 #include "sim/scene.h"
 #include "tests/support/mujoco_test_support.h"
+#include "tests/support/options_test_support.h"
 
 namespace plywood::sim {
 namespace {
 
 void ExpectInvalid(const GyroSensorOptions& options, const std::string& field) {
-  try {
-    options.Validate();
-    ADD_FAILURE() << "expected " << field << " to be rejected";
-  } catch (const std::invalid_argument& e) {
-    EXPECT_EQ(std::string(e.what()).rfind(field + ":", 0), 0u) << e.what();
-  }
+  plywood::testing::ExpectInvalidField(options, field);
 }
 
 TEST(GyroSensorTest, ValidateNamesTheField) {

@@ -9,6 +9,7 @@
 #include "msgs/range_ring.h"
 #include "sim/ray_caster.h"
 #include "sim/scene.h"
+#include "sim/sensor_sites.h"
 
 namespace plywood::sim {
 
@@ -54,8 +55,7 @@ class IrRingSensor {
 
  private:
   const IrRingOptions options_;
-  std::vector<int> site_ids_;
-  std::vector<msgs::Pose2D> X_RS_;
+  const std::vector<SensorSite> sites_;
   std::vector<Eigen::Vector3d> dirs_S_;
   double cos_incidence_limit_ = 0.0;
   std::mt19937_64 rng_;

@@ -13,75 +13,24 @@
 #include "sim/mujoco_ray_caster.h"
 #include "sim/scene.h"
 #include "tests/support/mujoco_test_support.h"
+#include "tests/support/options_test_support.h"
+#include "tests/support/sample_stats.h"
+#include "tests/support/sensor_test_support.h"
 
 namespace plywood::sim {
 namespace {
 
+using plywood::testing::ExpectInvalidField;
+using plywood::testing::FloorWorld;
 using plywood::testing::MakeTempDir;
-using plywood::testing::SourceRoot;
+using plywood::testing::RobotIn;
+using plywood::testing::SampleStats;
+using plywood::testing::Segment;
+using plywood::testing::SegmentCaster;
+using plywood::testing::ToWorld;
 using plywood::testing::WriteFile;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
-
-// Walls as 2-D segments of unbounded height: exact ranges and normals for the unit tests.
-struct Segment {
-  Eigen::Vector2d a, b;
-  int geom_id;
-};
-
-class SegmentCaster : public RayCaster {
- public:
-  explicit SegmentCaster(std::vector<Segment> segments) : segments_(std::move(segments)) {}
-
-  bool Cast(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W, double max_range_m,
-            RayHit* hit) const override {
-    const Eigen::Vector2d o = origin_W.head<2>(), d = dir_W.head<2>();
-    const auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) {
-      return u.x() * v.y() - u.y() * v.x();
-    };
-    bool found = false;
-    for (const Segment& s : segments_) {
-      const Eigen::Vector2d e = s.b - s.a, w = s.a - o;
-      const double denom = cross(d, e);
-      if (std::abs(denom) < 1e-15) continue;
-      const double t = cross(w, e) / denom, u = cross(w, d) / denom;
-      if (t <= 1e-12 || u < 0.0 || u > 1.0 || t > max_range_m) continue;
-      if (found && t >= hit->distance_m) continue;
-      found = true;
-      Eigen::Vector2d n(-e.y(), e.x());
-      n.normalize();
-      if (n.dot(d) > 0.0) n = -n;
-      hit->distance_m = t;
-      hit->geom_id = s.geom_id;
-      hit->normal_W = Eigen::Vector3d(n.x(), n.y(), 0.0);
-    }
-    return found;
-  }
-
- private:
-  std::vector<Segment> segments_;
-};
-
-// A point given in the sensor's planar frame, in the world.
-Eigen::Vector2d ToWorld(const Eigen::Isometry3d& X_WS, double x, double y) {
-  return (X_WS * Eigen::Vector3d(x, y, 0.0)).head<2>();
-}
-
-std::filesystem::path FloorWorld(const std::string& name) {
-  return WriteFile(MakeTempDir(name) / "floor.xml", R"(<mujoco>
-  <worldbody><geom name="floor" type="plane" size="10 10 0.1"/></worldbody>
-</mujoco>
-)");
-}
-
-SceneOptions RobotIn(const std::string& robot, const std::filesystem::path& world,
-                     msgs::Pose2D spawn) {
-  SceneOptions options;
-  options.world_mjcf = world;
-  options.robot_mjcf = SourceRoot() / "models" / (robot + ".xml");
-  options.spawn = spawn;
-  return options;
-}
 
 class IrRingTest : public ::testing::Test {
  protected:
@@ -138,14 +87,9 @@ TEST_F(IrRingTest, NoiseHasTheConfiguredSigma) {
   options_.noise_free = false;
   IrRingSensor ir(scene_, {"ir_0"}, options_, 5);
   const SegmentCaster caster({Wall(0.4, 0.0)});
-  double sum = 0.0, sum_sq = 0.0;
-  const int n = 20000;
-  for (int i = 0; i < n; ++i) {
-    const double e = ir.Measure(scene_, caster).readings[0].range_m - 0.4;
-    sum += e;
-    sum_sq += e * e;
-  }
-  const double mean = sum / n, sigma = std::sqrt(sum_sq / n - mean * mean);
+  SampleStats stats;
+  for (int i = 0; i < 20000; ++i) stats.Add(ir.Measure(scene_, caster).readings[0].range_m - 0.4);
+  const double mean = stats.Mean(), sigma = stats.Sigma();
   EXPECT_LT(std::abs(mean), 0.05 * 0.01);
   EXPECT_NEAR(sigma, 0.01, 0.05 * 0.01);
 }
@@ -161,30 +105,12 @@ TEST(IrRingSensorTest, MissingSiteIsAConfigErrorNamingTheSite) {
 }
 
 TEST(IrRingOptionsTest, ValidateNamesTheField) {
-  const auto expect_field = [](IrRingOptions o, const std::string& field) {
-    try {
-      o.Validate();
-      ADD_FAILURE() << field << " accepted";
-    } catch (const std::invalid_argument& e) {
-      EXPECT_EQ(std::string(e.what()).rfind(field + ":", 0), 0u) << e.what();
-    }
-  };
   EXPECT_NO_THROW(IrRingOptions{}.Validate());
-  IrRingOptions o;
-  o.rays_per_beam = 0;
-  expect_field(o, "rays_per_beam");
-  o = {};
-  o.range_min_m = 0.9;
-  expect_field(o, "range_min_m");
-  o = {};
-  o.sigma_m = -1.0;
-  expect_field(o, "sigma_m");
-  o = {};
-  o.incidence_limit_deg = 100.0;
-  expect_field(o, "incidence_limit_deg");
-  o = {};
-  o.rate_hz = -2.0;
-  expect_field(o, "rate_hz");
+  ExpectInvalidField(IrRingOptions{.rays_per_beam = 0}, "rays_per_beam");
+  ExpectInvalidField(IrRingOptions{.range_min_m = 0.9}, "range_min_m");
+  ExpectInvalidField(IrRingOptions{.sigma_m = -1.0}, "sigma_m");
+  ExpectInvalidField(IrRingOptions{.incidence_limit_deg = 100.0}, "incidence_limit_deg");
+  ExpectInvalidField(IrRingOptions{.rate_hz = -2.0}, "rate_hz");
 }
 
 TEST(IrRingSensorSceneTest, FrontAndSideEmittersReadAMujocoWall) {

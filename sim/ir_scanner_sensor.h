@@ -1,13 +1,13 @@
 #pragma once
 
-#include <Eigen/Core>
 #include <cstdint>
 #include <random>
 #include <string>
 #include <vector>
 
-#include "sim/laser_sensor.h"
+#include "sim/planar_scan.h"
 #include "sim/ray_caster.h"
+#include "sim/scan_measurement.h"
 #include "sim/scene.h"
 
 namespace plywood::sim {
@@ -54,9 +54,7 @@ class IrScannerSensor {
 
  private:
   const IrScannerOptions options_;
-  const int site_id_;
-  const msgs::Pose2D X_RS_;
-  std::vector<Eigen::Vector3d> dirs_S_;
+  const PlanarScan geometry_;
   std::mt19937_64 rng_;
 };
 

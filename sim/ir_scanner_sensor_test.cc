@@ -12,71 +12,24 @@
 #include "sim/config_error.h"
 #include "sim/mujoco_ray_caster.h"
 #include "sim/scene.h"
-#include "tests/support/mujoco_test_support.h"
+#include "tests/support/options_test_support.h"
+#include "tests/support/sample_stats.h"
+#include "tests/support/sensor_test_support.h"
 
 namespace plywood::sim {
 namespace {
 
-using plywood::testing::MakeTempDir;
-using plywood::testing::SourceRoot;
-using plywood::testing::WriteFile;
+using plywood::testing::ExpectInvalidField;
+using plywood::testing::FloorWorld;
+using plywood::testing::Rectangle;
+using plywood::testing::RobotIn;
+using plywood::testing::RoomRange;
+using plywood::testing::RoomSegments;
+using plywood::testing::RoomWorld;
+using plywood::testing::SampleStats;
+using plywood::testing::SegmentCaster;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
-
-// Walls as 2-D segments of unbounded height: exact ranges and normals for the unit tests.
-struct Segment {
-  Eigen::Vector2d a, b;
-  int geom_id;
-};
-
-class SegmentCaster : public RayCaster {
- public:
-  explicit SegmentCaster(std::vector<Segment> segments) : segments_(std::move(segments)) {}
-
-  bool Cast(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W, double max_range_m,
-            RayHit* hit) const override {
-    const Eigen::Vector2d o = origin_W.head<2>(), d = dir_W.head<2>();
-    const auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) {
-      return u.x() * v.y() - u.y() * v.x();
-    };
-    bool found = false;
-    for (const Segment& s : segments_) {
-      const Eigen::Vector2d e = s.b - s.a, w = s.a - o;
-      const double denom = cross(d, e);
-      if (std::abs(denom) < 1e-15) continue;
-      const double t = cross(w, e) / denom, u = cross(w, d) / denom;
-      if (t <= 1e-12 || u < 0.0 || u > 1.0 || t > max_range_m) continue;
-      if (found && t >= hit->distance_m) continue;
-      found = true;
-      Eigen::Vector2d n(-e.y(), e.x());
-      n.normalize();
-      if (n.dot(d) > 0.0) n = -n;
-      hit->distance_m = t;
-      hit->geom_id = s.geom_id;
-      hit->normal_W = Eigen::Vector3d(n.x(), n.y(), 0.0);
-    }
-    return found;
-  }
-
- private:
-  std::vector<Segment> segments_;
-};
-
-std::filesystem::path FloorWorld(const std::string& name) {
-  return WriteFile(MakeTempDir(name) / "floor.xml", R"(<mujoco>
-  <worldbody><geom name="floor" type="plane" size="10 10 0.1"/></worldbody>
-</mujoco>
-)");
-}
-
-SceneOptions RobotIn(const std::string& robot, const std::filesystem::path& world,
-                     msgs::Pose2D spawn) {
-  SceneOptions options;
-  options.world_mjcf = world;
-  options.robot_mjcf = SourceRoot() / "models" / (robot + ".xml");
-  options.spawn = spawn;
-  return options;
-}
 
 // The Magellan Pro inside a 4 x 3 m box given as segments, walls at distances from the scanner.
 class IrScannerTest : public ::testing::Test {
@@ -84,21 +37,12 @@ class IrScannerTest : public ::testing::Test {
   IrScannerTest()
       : scene_(RobotIn("magellan_pro", FloorWorld("ir_scanner"), {0.0, 0.0, 0.0})),
         p_(scene_.SitePoseInWorld(*scene_.FindSite("ir_scanner")).translation().head<2>()),
-        caster_({{{-1.5, -1.0}, {2.5, -1.0}, 1},
-                 {{2.5, -1.0}, {2.5, 2.0}, 2},
-                 {{2.5, 2.0}, {-1.5, 2.0}, 3},
-                 {{-1.5, 2.0}, {-1.5, -1.0}, 4}}) {}
+        caster_(RoomSegments(kBox)) {}
 
   // The box's boundary from the scanner (at the robot's origin, heading 0) along heading phi.
-  double TrueRange(double phi) const {
-    const double c = std::cos(phi), s = std::sin(phi);
-    double t = 1e9;
-    if (c > 1e-12) t = std::min(t, (2.5 - p_.x()) / c);
-    if (c < -1e-12) t = std::min(t, (-1.5 - p_.x()) / c);
-    if (s > 1e-12) t = std::min(t, (2.0 - p_.y()) / s);
-    if (s < -1e-12) t = std::min(t, (-1.0 - p_.y()) / s);
-    return t;
-  }
+  double TrueRange(double phi) const { return RoomRange(kBox, p_.x(), p_.y(), phi).first; }
+
+  static constexpr Rectangle kBox{-1.5, 2.5, -1.0, 2.0};
 
   Scene scene_;
   Eigen::Vector2d p_;
@@ -160,20 +104,17 @@ TEST_F(IrScannerTest, RangeNoiseHasTheConfiguredSigma) {
   IrScannerOptions options;
   options.outlier_probability = 0.0;
   IrScannerSensor scanner(scene_, "ir_scanner", options, 23);
-  double sum = 0.0, sum_sq = 0.0;
-  int n = 0;
-  while (n < 20000) {
+  SampleStats stats;
+  while (stats.count() < 20000) {
     const ScanMeasurement m = scanner.Measure(scene_, caster_);
     for (std::size_t i = 0; i < m.scan.ranges_m.size(); ++i) {
       const double expected = TrueRange(m.scan.BeamAngleRad(i));
       if (expected > 2.9) continue;
       const double e = m.scan.ranges_m[i] - expected;
-      sum += e;
-      sum_sq += e * e;
-      ++n;
+      stats.Add(e);
     }
   }
-  const double mean = sum / n, sigma = std::sqrt(sum_sq / n - mean * mean);
+  const double mean = stats.Mean(), sigma = stats.Sigma();
   EXPECT_LT(std::abs(mean), 0.05 * 0.005);
   EXPECT_NEAR(sigma, 0.005, 0.05 * 0.005);
 }
@@ -189,63 +130,30 @@ TEST(IrScannerSensorTest, MissingSiteIsAConfigErrorNamingTheSite) {
 }
 
 TEST(IrScannerOptionsTest, ValidateNamesTheFieldAndCountsBeams) {
-  const auto expect_field = [](IrScannerOptions o, const std::string& field) {
-    try {
-      o.Validate();
-      ADD_FAILURE() << field << " accepted";
-    } catch (const std::invalid_argument& e) {
-      EXPECT_EQ(std::string(e.what()).rfind(field + ":", 0), 0u) << e.what();
-    }
-  };
   EXPECT_NO_THROW(IrScannerOptions{}.Validate());
   EXPECT_EQ(IrScannerOptions{}.BeamCount(), 200);
-  IrScannerOptions o;
-  o.fov_deg = 180.0;
-  EXPECT_EQ(o.BeamCount(), 101);  // a partial sweep includes both ends
-  o = {};
-  o.fov_deg = 400.0;
-  expect_field(o, "fov_deg");
-  o = {};
-  o.resolution_deg = 1.7;
-  expect_field(o, "fov_deg");
-  o = {};
-  o.resolution_deg = 0.0;
-  expect_field(o, "resolution_deg");
-  o = {};
-  o.sigma_m = -0.1;
-  expect_field(o, "sigma_m");
-  o = {};
-  o.outlier_probability = 2.0;
-  expect_field(o, "outlier_probability");
-  o = {};
-  o.range_min_m = 3.5;
-  expect_field(o, "range_min_m");
-  o = {};
-  o.rate_hz = 0.0;
-  expect_field(o, "rate_hz");
+  EXPECT_EQ(IrScannerOptions{.fov_deg = 180.0}.BeamCount(),
+            101);  // a partial sweep includes both ends
+  ExpectInvalidField(IrScannerOptions{.fov_deg = 400.0}, "fov_deg");
+  ExpectInvalidField(IrScannerOptions{.resolution_deg = 1.7}, "fov_deg");
+  ExpectInvalidField(IrScannerOptions{.resolution_deg = 0.0}, "resolution_deg");
+  ExpectInvalidField(IrScannerOptions{.sigma_m = -0.1}, "sigma_m");
+  ExpectInvalidField(IrScannerOptions{.outlier_probability = 2.0}, "outlier_probability");
+  ExpectInvalidField(IrScannerOptions{.range_min_m = 3.5}, "range_min_m");
+  ExpectInvalidField(IrScannerOptions{.rate_hz = 0.0}, "rate_hz");
 }
 
 TEST(IrScannerSensorSceneTest, NoiseFreeTurnMatchesAMujocoRoom) {
-  const auto world = WriteFile(MakeTempDir("ir_scanner_scene") / "room.xml", R"(<mujoco><worldbody>
-  <geom name="floor" type="plane" size="5 5 0.1"/>
-  <geom name="east" type="box" pos="1.25 0 0.5" size="0.05 2 0.5"/>
-  <geom name="west" type="box" pos="-1.05 0 0.5" size="0.05 2 0.5"/>
-  <geom name="north" type="box" pos="0 1.05 0.5" size="2 0.05 0.5"/>
-  <geom name="south" type="box" pos="0 -0.85 0.5" size="2 0.05 0.5"/>
-</worldbody></mujoco>
-)");
+  // The scanner sits above the robot's origin.
+  constexpr Rectangle kRoom{-1.0, 1.2, -0.8, 1.0};
+  const auto world = RoomWorld("ir_scanner_scene", kRoom);
   const Scene scene(RobotIn("magellan_pro", world, {}));
   IrScannerOptions options;
   options.noise_free = true;
   IrScannerSensor scanner(scene, "ir_scanner", options, 1);
   const ScanMeasurement m = scanner.Measure(scene, MujocoRayCaster(scene.model(), scene.data()));
   for (std::size_t i = 0; i < m.scan.ranges_m.size(); ++i) {
-    const double c = std::cos(m.scan.BeamAngleRad(i)), s = std::sin(m.scan.BeamAngleRad(i));
-    double t = 1e9;
-    if (c > 1e-12) t = std::min(t, 1.2 / c);
-    if (c < -1e-12) t = std::min(t, -1.0 / c);
-    if (s > 1e-12) t = std::min(t, 1.0 / s);
-    if (s < -1e-12) t = std::min(t, -0.8 / s);
+    const double t = RoomRange(kRoom, 0.0, 0.0, m.scan.BeamAngleRad(i)).first;
     EXPECT_NEAR(m.scan.ranges_m[i], t, 1e-6) << i;
   }
 }

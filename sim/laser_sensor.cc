@@ -1,23 +1,12 @@
 #include "sim/laser_sensor.h"
 
+#include <algorithm>
 #include <cmath>
-#include <numbers>
-#include <optional>
-#include <stdexcept>
-#include <string>
 
-#include "sim/config_error.h"
+#include "sim/require_field.h"
 
 namespace plywood::sim {
 namespace {
-
-constexpr double kDegToRad = std::numbers::pi / 180.0;
-
-void Require(bool ok, const std::string& field, const std::string& what, double value) {
-  if (!ok) {
-    throw std::invalid_argument(field + ": " + what + ", got " + std::to_string(value));
-  }
-}
 
 bool IsOneOf(double value, std::initializer_list<double> allowed) {
   for (const double a : allowed) {
@@ -26,38 +15,30 @@ bool IsOneOf(double value, std::initializer_list<double> allowed) {
   return false;
 }
 
-int RequireSite(const Scene& scene, const std::string& site_name) {
-  const std::optional<int> id = scene.FindSite(site_name);
-  if (!id) {
-    throw ConfigError("robot", site_name, "no such site on the robot; the laser needs it");
-  }
-  return *id;
-}
-
 }  // namespace
 
 void LaserOptions::Validate() const {
-  Require(std::isfinite(fov_deg) && fov_deg > 0.0 && fov_deg <= 180.0, "fov_deg",
-          "must be in (0, 180]", fov_deg);
-  Require(IsOneOf(resolution_deg, {0.25, 0.5, 1.0}), "resolution_deg",
-          "must be 0.25, 0.5 or 1 (the LMS 200's modes)", resolution_deg);
+  RequireField(std::isfinite(fov_deg) && fov_deg > 0.0 && fov_deg <= 180.0, "fov_deg",
+               "must be in (0, 180]", fov_deg);
+  RequireField(IsOneOf(resolution_deg, {0.25, 0.5, 1.0}), "resolution_deg",
+               "must be 0.25, 0.5 or 1 (the LMS 200's modes)", resolution_deg);
   const double steps = fov_deg / resolution_deg;
-  Require(std::abs(steps - std::round(steps)) < 1e-9, "fov_deg",
-          "must be a whole number of resolution_deg steps", fov_deg);
-  Require(IsOneOf(range_max_m, {8.0, 16.0, 32.0, 80.0}), "range_max_m",
-          "must be 8, 16, 32 or 80 (the LMS 200's range modes)", range_max_m);
-  Require(std::isfinite(range_min_m) && range_min_m >= 0.0 && range_min_m < range_max_m,
-          "range_min_m", "must be in [0, range_max_m)", range_min_m);
-  Require(std::isfinite(range_noise_sigma_m) && range_noise_sigma_m >= 0.0, "range_noise_sigma_m",
-          "must be >= 0", range_noise_sigma_m);
-  Require(dropout_probability >= 0.0 && dropout_probability <= 1.0, "dropout_probability",
-          "must be in [0, 1]", dropout_probability);
-  Require(std::isfinite(mixed_pixel_min_jump_m) && mixed_pixel_min_jump_m > 0.0,
-          "mixed_pixel_min_jump_m", "must be > 0", mixed_pixel_min_jump_m);
-  Require(mixed_pixel_probability >= 0.0 && mixed_pixel_probability <= 1.0,
-          "mixed_pixel_probability", "must be in [0, 1]", mixed_pixel_probability);
-  Require(std::isfinite(rate_hz) && rate_hz > 0.0 && rate_hz <= 75.0, "rate_hz",
-          "must be in (0, 75] (the LMS 200's fastest scan)", rate_hz);
+  RequireField(std::abs(steps - std::round(steps)) < 1e-9, "fov_deg",
+               "must be a whole number of resolution_deg steps", fov_deg);
+  RequireField(IsOneOf(range_max_m, {8.0, 16.0, 32.0, 80.0}), "range_max_m",
+               "must be 8, 16, 32 or 80 (the LMS 200's range modes)", range_max_m);
+  RequireField(std::isfinite(range_min_m) && range_min_m >= 0.0 && range_min_m < range_max_m,
+               "range_min_m", "must be in [0, range_max_m)", range_min_m);
+  RequireField(std::isfinite(range_noise_sigma_m) && range_noise_sigma_m >= 0.0,
+               "range_noise_sigma_m", "must be >= 0", range_noise_sigma_m);
+  RequireField(dropout_probability >= 0.0 && dropout_probability <= 1.0, "dropout_probability",
+               "must be in [0, 1]", dropout_probability);
+  RequireField(std::isfinite(mixed_pixel_min_jump_m) && mixed_pixel_min_jump_m > 0.0,
+               "mixed_pixel_min_jump_m", "must be > 0", mixed_pixel_min_jump_m);
+  RequireField(mixed_pixel_probability >= 0.0 && mixed_pixel_probability <= 1.0,
+               "mixed_pixel_probability", "must be in [0, 1]", mixed_pixel_probability);
+  RequireField(std::isfinite(rate_hz) && rate_hz > 0.0 && rate_hz <= 75.0, "rate_hz",
+               "must be in (0, 75] (the LMS 200's fastest scan)", rate_hz);
 }
 
 double LaserOptions::RangeResolutionM() const { return range_max_m > 32.0 ? 0.01 : 0.001; }
@@ -69,17 +50,10 @@ int LaserOptions::BeamCount() const {
 LaserSensor::LaserSensor(const Scene& scene, const std::string& site_name,
                          const LaserOptions& options, std::uint64_t seed)
     : options_((options.Validate(), options)),
-      site_id_(RequireSite(scene, site_name)),
-      X_RS_(scene.SitePoseInRobot(site_id_)),
-      rng_(seed) {
-  const int n = options_.BeamCount();
-  dirs_S_.reserve(n);
-  for (int i = 0; i < n; ++i) {
-    const double a = (-options_.fov_deg / 2.0 + i * options_.resolution_deg) * kDegToRad;
-    dirs_S_.emplace_back(std::cos(a), std::sin(a), 0.0);
-  }
-  true_ranges_m_.resize(n);
-}
+      geometry_(scene, site_name, "the laser", -options_.fov_deg / 2.0, options_.resolution_deg,
+                options_.BeamCount()),
+      true_ranges_m_(geometry_.beam_count()),
+      rng_(seed) {}
 
 ScanMeasurement LaserSensor::Measure(const Scene& scene, const RayCaster& caster) {
   ScanMeasurement out;
@@ -88,36 +62,15 @@ ScanMeasurement LaserSensor::Measure(const Scene& scene, const RayCaster& caster
 }
 
 void LaserSensor::Measure(const Scene& scene, const RayCaster& caster, ScanMeasurement* out) {
-  const int n = static_cast<int>(dirs_S_.size());
-  const double range_max_m = options_.range_max_m;
-  msgs::LaserScan& scan = out->scan;
-  scan.time_s = scene.time_s();
-  scan.angle_min_rad = -options_.fov_deg / 2.0 * kDegToRad;
-  scan.angle_increment_rad = options_.resolution_deg * kDegToRad;
-  scan.range_min_m = options_.range_min_m;
-  scan.range_max_m = range_max_m;
-  scan.X_RS = X_RS_;
-  scan.ranges_m.resize(n);
-  out->hit_geom_ids.resize(n);
-
-  const Eigen::Isometry3d X_WS = scene.SitePoseInWorld(site_id_);
-  const Eigen::Matrix3d R_WS = X_WS.linear();
-  const Eigen::Vector3d p_WS = X_WS.translation();
-  RayHit hit;
-  for (int i = 0; i < n; ++i) {
-    if (caster.Cast(p_WS, R_WS * dirs_S_[i], range_max_m, &hit) && hit.distance_m < range_max_m) {
-      true_ranges_m_[i] = hit.distance_m;
-      out->hit_geom_ids[i] = hit.geom_id;
-    } else {
-      true_ranges_m_[i] = range_max_m;
-      out->hit_geom_ids[i] = -1;
-    }
-    scan.ranges_m[i] = true_ranges_m_[i];
-  }
+  geometry_.Cast(scene, caster, options_.range_min_m, options_.range_max_m, out);
   if (options_.noise_free) return;
 
+  const int n = geometry_.beam_count();
+  const double range_max_m = options_.range_max_m;
+  msgs::LaserScan& scan = out->scan;
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   if (options_.mixed_pixels) {
+    std::copy(scan.ranges_m.begin(), scan.ranges_m.end(), true_ranges_m_.begin());
     for (int i = 0; i + 1 < n; ++i) {
       const double a = true_ranges_m_[i], b = true_ranges_m_[i + 1];
       if (a >= range_max_m || b >= range_max_m) continue;

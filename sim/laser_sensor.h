@@ -1,25 +1,17 @@
 #pragma once
 
-#include <Eigen/Core>
 #include <cstdint>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "msgs/laser_scan.h"
+#include "sim/planar_scan.h"
 #include "sim/ray_caster.h"
+#include "sim/scan_measurement.h"
 #include "sim/scene.h"
 
 namespace plywood::sim {
-
-// A planar scan together with its ground truth: which geom each beam's reported point lies on.
-// hit_geom_ids[i] is the MuJoCo geom id, or -1 when beam i reports no point on a surface (no
-// return, a dropout, a mixed pixel or an outlier). This is what tells a scorer which ground-truth
-// wall segments a scan observed.
-struct ScanMeasurement {
-  msgs::LaserScan scan;
-  std::vector<int> hit_geom_ids;
-};
 
 // SICK LMS 200 as configured over its serial protocol. Ranges are reported in mm in the 8, 16 and
 // 32 m modes and in cm in the 80 m mode (LMS 200 Technical Description); the scan is quantised to
@@ -66,14 +58,12 @@ class LaserSensor {
   void Measure(const Scene& scene, const RayCaster& caster, ScanMeasurement* out);
 
   const LaserOptions& options() const { return options_; }
-  int site_id() const { return site_id_; }
+  int site_id() const { return geometry_.site().id; }
 
  private:
   const LaserOptions options_;
-  const int site_id_;
-  const msgs::Pose2D X_RS_;
-  std::vector<Eigen::Vector3d> dirs_S_;  // unit beam directions in the site frame
-  std::vector<double> true_ranges_m_;    // scratch: geometric range per beam (range_max: no hit)
+  const PlanarScan geometry_;
+  std::vector<double> true_ranges_m_;  // scratch: geometric range per beam (range_max: no hit)
   std::mt19937_64 rng_;
 };
 

@@ -13,76 +13,25 @@
 #include "sim/config_error.h"
 #include "sim/mujoco_ray_caster.h"
 #include "sim/scene.h"
-#include "tests/support/mujoco_test_support.h"
+#include "tests/support/options_test_support.h"
+#include "tests/support/sample_stats.h"
+#include "tests/support/sensor_test_support.h"
 
 namespace plywood::sim {
 namespace {
 
-using plywood::testing::MakeTempDir;
-using plywood::testing::SourceRoot;
-using plywood::testing::WriteFile;
+using plywood::testing::ExpectInvalidField;
+using plywood::testing::FloorWorld;
+using plywood::testing::Rectangle;
+using plywood::testing::RobotIn;
+using plywood::testing::RoomRange;
+using plywood::testing::RoomWorld;
+using plywood::testing::SampleStats;
+using plywood::testing::SegmentCaster;
+using plywood::testing::ToWorld;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
-
-// Walls as 2-D segments of unbounded height: exact ranges and normals for the unit tests.
-struct Segment {
-  Eigen::Vector2d a, b;
-  int geom_id;
-};
-
-class SegmentCaster : public RayCaster {
- public:
-  explicit SegmentCaster(std::vector<Segment> segments) : segments_(std::move(segments)) {}
-
-  bool Cast(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W, double max_range_m,
-            RayHit* hit) const override {
-    const Eigen::Vector2d o = origin_W.head<2>(), d = dir_W.head<2>();
-    const auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) {
-      return u.x() * v.y() - u.y() * v.x();
-    };
-    bool found = false;
-    for (const Segment& s : segments_) {
-      const Eigen::Vector2d e = s.b - s.a, w = s.a - o;
-      const double denom = cross(d, e);
-      if (std::abs(denom) < 1e-15) continue;
-      const double t = cross(w, e) / denom, u = cross(w, d) / denom;
-      if (t <= 1e-12 || u < 0.0 || u > 1.0 || t > max_range_m) continue;
-      if (found && t >= hit->distance_m) continue;
-      found = true;
-      Eigen::Vector2d n(-e.y(), e.x());
-      n.normalize();
-      if (n.dot(d) > 0.0) n = -n;
-      hit->distance_m = t;
-      hit->geom_id = s.geom_id;
-      hit->normal_W = Eigen::Vector3d(n.x(), n.y(), 0.0);
-    }
-    return found;
-  }
-
- private:
-  std::vector<Segment> segments_;
-};
-
-// A point given in the sensor's planar frame, in the world.
-Eigen::Vector2d ToWorld(const Eigen::Isometry3d& X_WS, double x, double y) {
-  return (X_WS * Eigen::Vector3d(x, y, 0.0)).head<2>();
-}
-
-std::filesystem::path FloorWorld(const std::string& name) {
-  return WriteFile(MakeTempDir(name) / "floor.xml", R"(<mujoco>
-  <worldbody><geom name="floor" type="plane" size="10 10 0.1"/></worldbody>
-</mujoco>
-)");
-}
-
-SceneOptions P3dxIn(const std::filesystem::path& world, msgs::Pose2D spawn) {
-  SceneOptions options;
-  options.world_mjcf = world;
-  options.robot_mjcf = SourceRoot() / "models" / "p3dx.xml";
-  options.spawn = spawn;
-  return options;
-}
 
 TEST(LaserOptionsTest, DefaultsAreTheLms200In8mModeAtHalfDegree) {
   const LaserOptions options;
@@ -95,51 +44,20 @@ TEST(LaserOptionsTest, DefaultsAreTheLms200In8mModeAtHalfDegree) {
 }
 
 TEST(LaserOptionsTest, ValidateNamesTheField) {
-  const auto expect_field = [](LaserOptions options, const std::string& field) {
-    try {
-      options.Validate();
-      ADD_FAILURE() << field << " accepted";
-    } catch (const std::invalid_argument& e) {
-      EXPECT_EQ(std::string(e.what()).rfind(field + ":", 0), 0u) << e.what();
-    }
-  };
-  LaserOptions o;
-  o = {};
-  o.fov_deg = 190.0;
-  expect_field(o, "fov_deg");
-  o = {};
-  o.fov_deg = 180.25;
-  expect_field(o, "fov_deg");
-  o = {};
-  o.resolution_deg = 0.3;
-  expect_field(o, "resolution_deg");
-  o = {};
-  o.range_max_m = 10.0;
-  expect_field(o, "range_max_m");
-  o = {};
-  o.range_min_m = -0.1;
-  expect_field(o, "range_min_m");
-  o = {};
-  o.range_noise_sigma_m = -0.01;
-  expect_field(o, "range_noise_sigma_m");
-  o = {};
-  o.dropout_probability = 1.5;
-  expect_field(o, "dropout_probability");
-  o = {};
-  o.mixed_pixel_min_jump_m = 0.0;
-  expect_field(o, "mixed_pixel_min_jump_m");
-  o = {};
-  o.mixed_pixel_probability = -0.5;
-  expect_field(o, "mixed_pixel_probability");
-  o = {};
-  o.rate_hz = 100.0;
-  expect_field(o, "rate_hz");
+  ExpectInvalidField(LaserOptions{.fov_deg = 190.0}, "fov_deg");
+  ExpectInvalidField(LaserOptions{.fov_deg = 180.25}, "fov_deg");
+  ExpectInvalidField(LaserOptions{.resolution_deg = 0.3}, "resolution_deg");
+  ExpectInvalidField(LaserOptions{.range_max_m = 10.0}, "range_max_m");
+  ExpectInvalidField(LaserOptions{.range_min_m = -0.1}, "range_min_m");
+  ExpectInvalidField(LaserOptions{.range_noise_sigma_m = -0.01}, "range_noise_sigma_m");
+  ExpectInvalidField(LaserOptions{.dropout_probability = 1.5}, "dropout_probability");
+  ExpectInvalidField(LaserOptions{.mixed_pixel_min_jump_m = 0.0}, "mixed_pixel_min_jump_m");
+  ExpectInvalidField(LaserOptions{.mixed_pixel_probability = -0.5}, "mixed_pixel_probability");
+  ExpectInvalidField(LaserOptions{.rate_hz = 100.0}, "rate_hz");
 }
 
 TEST(LaserSensorTest, MissingSiteIsAConfigErrorNamingTheSite) {
-  SceneOptions options = P3dxIn(FloorWorld("laser_missing_site"), {});
-  options.robot_mjcf = SourceRoot() / "models" / "magellan_pro.xml";  // no laser
-  const Scene scene(options);
+  const Scene scene(RobotIn("magellan_pro", FloorWorld("laser_missing_site"), {}));  // no laser
   try {
     LaserSensor laser(scene, "laser", LaserOptions{}, 1);
     FAIL() << "no ConfigError";
@@ -153,7 +71,7 @@ TEST(LaserSensorTest, MissingSiteIsAConfigErrorNamingTheSite) {
 class LaserWallTest : public ::testing::Test {
  protected:
   LaserWallTest()
-      : scene_(P3dxIn(FloorWorld("laser_wall"), {1.0, -0.5, 30.0 * kDeg})),
+      : scene_(RobotIn("p3dx", FloorWorld("laser_wall"), {1.0, -0.5, 30.0 * kDeg})),
         X_WS_(scene_.SitePoseInWorld(*scene_.FindSite("laser"))),
         caster_({{ToWorld(X_WS_, kWallM, -6.0), ToWorld(X_WS_, kWallM, 6.0), 7}}) {}
 
@@ -203,19 +121,16 @@ TEST_F(LaserWallTest, RangeNoiseIsZeroMeanWithConfiguredSigma) {
   LaserSensor noisy(scene_, "laser", options, 42);
   LaserSensor clean(scene_, "laser", exact, 1);
   const ScanMeasurement truth = clean.Measure(scene_, caster_);
-  double sum = 0.0, sum_sq = 0.0;
-  int n = 0;
-  while (n < 20000) {
+  SampleStats stats;
+  while (stats.count() < 20000) {
     const ScanMeasurement m = noisy.Measure(scene_, caster_);
     for (std::size_t i = 0; i < m.scan.ranges_m.size(); ++i) {
       if (truth.scan.ranges_m[i] > 7.5) continue;  // keep clear of the range_max clamp
       const double e = m.scan.ranges_m[i] - truth.scan.ranges_m[i];
-      sum += e;
-      sum_sq += e * e;
-      ++n;
+      stats.Add(e);
     }
   }
-  const double mean = sum / n, sigma = std::sqrt(sum_sq / n - mean * mean);
+  const double mean = stats.Mean(), sigma = stats.Sigma();
   EXPECT_LT(std::abs(mean), 0.05 * 0.01);
   EXPECT_NEAR(sigma, 0.01, 0.05 * 0.01);
 }
@@ -265,7 +180,7 @@ TEST_F(LaserWallTest, DropoutRateMatchesAndDropoutsReportRangeMax) {
 }
 
 TEST(LaserSensorTest, MixedPixelsFallBetweenTheTwoSurfacesAtDepthEdges) {
-  Scene scene(P3dxIn(FloorWorld("laser_mixed"), {}));
+  Scene scene(RobotIn("p3dx", FloorWorld("laser_mixed"), {}));
   const Eigen::Isometry3d X_WS = scene.SitePoseInWorld(*scene.FindSite("laser"));
   // A far wall at 4 m and a near panel at 2 m covering beam angles of about -20..+20 deg.
   const SegmentCaster caster({{ToWorld(X_WS, 4.0, -5.0), ToWorld(X_WS, 4.0, 5.0), 1},
@@ -298,7 +213,7 @@ TEST(LaserSensorTest, MixedPixelsFallBetweenTheTwoSurfacesAtDepthEdges) {
 }
 
 TEST(LaserSensorTest, SameSeedSameScanOtherSeedOtherScan) {
-  Scene scene(P3dxIn(FloorWorld("laser_seed"), {}));
+  Scene scene(RobotIn("p3dx", FloorWorld("laser_seed"), {}));
   const Eigen::Isometry3d X_WS = scene.SitePoseInWorld(*scene.FindSite("laser"));
   const SegmentCaster caster({{ToWorld(X_WS, 2.0, -5.0), ToWorld(X_WS, 2.0, 5.0), 1}});
   LaserSensor a(scene, "laser", LaserOptions{}, 5), b(scene, "laser", LaserOptions{}, 5),
@@ -308,53 +223,18 @@ TEST(LaserSensorTest, SameSeedSameScanOtherSeedOtherScan) {
   EXPECT_NE(ra, c.Measure(scene, caster).scan.ranges_m);
 }
 
-// A closed rectangular room of four wall boxes, interior [-2, 3] x [-1.5, 2.5] before rotating
-// the whole room by `yaw_rad` about the world origin.
-std::filesystem::path RoomWorld(const std::string& name, double yaw_rad) {
-  struct Wall {
-    const char* name;
-    double x, y, hx, hy;
-  };
-  const Wall walls[] = {{"wall_east", 3.05, 0.5, 0.05, 2.2},
-                        {"wall_west", -2.05, 0.5, 0.05, 2.2},
-                        {"wall_north", 0.5, 2.55, 2.7, 0.05},
-                        {"wall_south", 0.5, -1.55, 2.7, 0.05}};
-  std::string xml =
-      "<mujoco>\n  <worldbody>\n    <geom name=\"floor\" type=\"plane\" size=\"10 10 0.1\"/>\n";
-  const double c = std::cos(yaw_rad), s = std::sin(yaw_rad);
-  for (const Wall& w : walls) {
-    xml += "    <geom name=\"" + std::string(w.name) + "\" type=\"box\" pos=\"" +
-           std::to_string(c * w.x - s * w.y) + " " + std::to_string(s * w.x + c * w.y) +
-           " 0.5\" size=\"" + std::to_string(w.hx) + " " + std::to_string(w.hy) +
-           " 0.5\" euler=\"0 0 " + std::to_string(yaw_rad / kDeg) + "\"/>\n";
-  }
-  xml += "  </worldbody>\n</mujoco>\n";
-  return WriteFile(MakeTempDir(name) / "room.xml", xml);
-}
-
-// Distance from a point inside [-2, 3] x [-1.5, 2.5] to the boundary along heading phi, and the
-// wall it meets.
-std::pair<double, std::string> RoomRange(double px, double py, double phi) {
-  const double c = std::cos(phi), s = std::sin(phi);
-  std::pair<double, std::string> best{1e9, ""};
-  const auto consider = [&](double t, const char* wall) {
-    if (t > 0.0 && t < best.first) best = {t, wall};
-  };
-  if (c > 1e-12) consider((3.0 - px) / c, "wall_east");
-  if (c < -1e-12) consider((-2.0 - px) / c, "wall_west");
-  if (s > 1e-12) consider((2.5 - py) / s, "wall_north");
-  if (s < -1e-12) consider((-1.5 - py) / s, "wall_south");
-  return best;
-}
+// The room's interior before it is rotated about the world origin.
+constexpr Rectangle kRoom{-2.0, 3.0, -1.5, 2.5};
 
 TEST(LaserSensorSceneTest, NoiseFreeScanMatchesTheRoomAxisAlignedAndRotated) {
   const msgs::Pose2D X_room_R{0.3, 0.4, 20.0 * kDeg};  // robot pose in the room's frame
   for (const double room_yaw_deg : {0.0, 30.0}) {
     const double yaw = room_yaw_deg * kDeg;
     const msgs::Pose2D X_W_room{0.0, 0.0, yaw};
-    const Scene scene(
-        P3dxIn(RoomWorld("laser_room_" + std::to_string(static_cast<int>(room_yaw_deg)), yaw),
-               X_W_room * X_room_R));
+    const Scene scene(RobotIn(
+        "p3dx",
+        RoomWorld("laser_room_" + std::to_string(static_cast<int>(room_yaw_deg)), kRoom, yaw),
+        X_W_room * X_room_R));
     const MujocoRayCaster caster(scene.model(), scene.data());
     LaserOptions options;
     options.noise_free = true;
@@ -364,7 +244,8 @@ TEST(LaserSensorSceneTest, NoiseFreeScanMatchesTheRoomAxisAlignedAndRotated) {
     const double px = X_room_R.x_m + 0.021 * std::cos(X_room_R.theta_rad);
     const double py = X_room_R.y_m + 0.021 * std::sin(X_room_R.theta_rad);
     for (std::size_t i = 0; i < m.scan.ranges_m.size(); ++i) {
-      const auto [range_m, wall] = RoomRange(px, py, X_room_R.theta_rad + m.scan.BeamAngleRad(i));
+      const auto [range_m, wall] =
+          RoomRange(kRoom, px, py, X_room_R.theta_rad + m.scan.BeamAngleRad(i));
       EXPECT_NEAR(m.scan.ranges_m[i], range_m, 1e-3) << "room " << room_yaw_deg << " beam " << i;
       // Beams that end within a millimetre of a corner may name either wall.
       const double corner_margin = 1e-3;

@@ -74,6 +74,7 @@ class Scene {
   Eigen::Isometry3d SitePoseInWorld(int site_id) const;
 
   const std::filesystem::path& world_path() const { return options_.world_mjcf; }
+  const std::filesystem::path& robot_path() const { return options_.robot_mjcf; }
 
  private:
   SceneOptions options_;

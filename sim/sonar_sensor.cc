@@ -4,10 +4,9 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <optional>
-#include <stdexcept>
 
-#include "sim/config_error.h"
+#include "sim/planar_fan.h"
+#include "sim/require_field.h"
 
 namespace plywood::sim {
 namespace {
@@ -17,59 +16,39 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // Bounce rays start at least this far off the surface so they do not hit it again.
 constexpr double kSurfaceOffsetM = 1e-6;
 
-void Require(bool ok, const std::string& field, const std::string& what, double value) {
-  if (!ok) {
-    throw std::invalid_argument(field + ": " + what + ", got " + std::to_string(value));
-  }
-}
-
 }  // namespace
 
 void SonarOptions::Validate() const {
-  Require(std::isfinite(beam_half_angle_deg) && beam_half_angle_deg >= 0.0 &&
-              beam_half_angle_deg < 90.0,
-          "beam_half_angle_deg", "must be in [0, 90)", beam_half_angle_deg);
-  Require(rays_per_cone >= 1 && rays_per_cone <= 1000, "rays_per_cone", "must be in [1, 1000]",
-          rays_per_cone);
-  Require(std::isfinite(incidence_limit_deg) && incidence_limit_deg >= 0.0 &&
-              incidence_limit_deg <= 90.0,
-          "incidence_limit_deg", "must be in [0, 90]", incidence_limit_deg);
-  Require(std::isfinite(range_max_m) && range_max_m > 0.0, "range_max_m", "must be > 0",
-          range_max_m);
-  Require(std::isfinite(range_min_m) && range_min_m >= 0.0 && range_min_m < range_max_m,
-          "range_min_m", "must be in [0, range_max_m)", range_min_m);
-  Require(std::isfinite(range_noise_fraction) && range_noise_fraction >= 0.0,
-          "range_noise_fraction", "must be >= 0", range_noise_fraction);
-  Require(std::isfinite(rate_hz) && rate_hz > 0.0, "rate_hz", "must be > 0", rate_hz);
+  RequireField(std::isfinite(beam_half_angle_deg) && beam_half_angle_deg >= 0.0 &&
+                   beam_half_angle_deg < 90.0,
+               "beam_half_angle_deg", "must be in [0, 90)", beam_half_angle_deg);
+  RequireField(rays_per_cone >= 1 && rays_per_cone <= 1000, "rays_per_cone", "must be in [1, 1000]",
+               rays_per_cone);
+  RequireField(std::isfinite(incidence_limit_deg) && incidence_limit_deg >= 0.0 &&
+                   incidence_limit_deg <= 90.0,
+               "incidence_limit_deg", "must be in [0, 90]", incidence_limit_deg);
+  RequireField(std::isfinite(range_max_m) && range_max_m > 0.0, "range_max_m", "must be > 0",
+               range_max_m);
+  RequireField(std::isfinite(range_min_m) && range_min_m >= 0.0 && range_min_m < range_max_m,
+               "range_min_m", "must be in [0, range_max_m)", range_min_m);
+  RequireField(std::isfinite(range_noise_fraction) && range_noise_fraction >= 0.0,
+               "range_noise_fraction", "must be >= 0", range_noise_fraction);
+  RequireField(std::isfinite(rate_hz) && rate_hz > 0.0, "rate_hz", "must be > 0", rate_hz);
 }
 
-std::vector<std::string> SonarSensor::DefaultSiteNames() {
-  std::vector<std::string> names;
-  for (int i = 0; i < 16; ++i) names.push_back("sonar_" + std::to_string(i));
-  return names;
-}
+std::vector<std::string> SonarSensor::DefaultSiteNames() { return NumberedSiteNames("sonar_", 16); }
 
 SonarSensor::SonarSensor(const Scene& scene, const std::vector<std::string>& site_names,
                          const SonarOptions& options, std::uint64_t seed)
-    : options_((options.Validate(), options)), rng_(seed) {
-  if (site_names.empty()) throw std::invalid_argument("site_names: must not be empty");
-  for (const std::string& name : site_names) {
-    const std::optional<int> id = scene.FindSite(name);
-    if (!id) throw ConfigError("robot", name, "no such site on the robot; the sonar ring needs it");
-    site_ids_.push_back(*id);
-    X_RS_.push_back(scene.SitePoseInRobot(*id));
-  }
+    : options_((options.Validate(), options)),
+      sites_(RequireSensorSites(scene, site_names, "the sonar ring")),
+      rng_(seed) {
   // Centre-out order, so the first ray that hits is the central-most one (the multipath bounce).
-  const int n = options_.rays_per_cone;
-  std::vector<double> angles_rad;
-  for (int j = 0; j < n; ++j) {
-    angles_rad.push_back(n == 1 ? 0.0
-                                : options_.beam_half_angle_deg * kDegToRad *
-                                      (-1.0 + 2.0 * j / static_cast<double>(n - 1)));
-  }
+  std::vector<double> angles_rad =
+      SymmetricFanAnglesRad(options_.beam_half_angle_deg, options_.rays_per_cone);
   std::stable_sort(angles_rad.begin(), angles_rad.end(),
                    [](double a, double b) { return std::abs(a) < std::abs(b) - 1e-12; });
-  for (const double a : angles_rad) dirs_S_.emplace_back(std::cos(a), std::sin(a), 0.0);
+  dirs_S_ = PlanarDirections(angles_rad);
   cos_incidence_limit_ = std::cos(options_.incidence_limit_deg * kDegToRad);
   cos_half_angle_ = std::cos(options_.beam_half_angle_deg * kDegToRad);
 }
@@ -84,12 +63,12 @@ void SonarSensor::Measure(const Scene& scene, const RayCaster& caster, msgs::Ran
   out->time_s = scene.time_s();
   out->range_min_m = options_.range_min_m;
   out->range_max_m = options_.range_max_m;
-  out->readings.resize(site_ids_.size());
+  out->readings.resize(sites_.size());
   std::normal_distribution<double> unit_noise(0.0, 1.0);
-  for (std::size_t k = 0; k < site_ids_.size(); ++k) {
+  for (std::size_t k = 0; k < sites_.size(); ++k) {
     msgs::RangeReading& reading = out->readings[k];
-    reading.X_RS = X_RS_[k];
-    double range_m = EchoRange(scene.SitePoseInWorld(site_ids_[k]), caster);
+    reading.X_RS = sites_[k].X_RS;
+    double range_m = EchoRange(scene.SitePoseInWorld(sites_[k].id), caster);
     if (range_m >= 0.0 && !options_.noise_free) {
       range_m += options_.range_noise_fraction * range_m * unit_noise(rng_);
     }

@@ -9,6 +9,7 @@
 #include "msgs/range_ring.h"
 #include "sim/ray_caster.h"
 #include "sim/scene.h"
+#include "sim/sensor_sites.h"
 
 namespace plywood::sim {
 
@@ -75,8 +76,7 @@ class SonarSensor {
   double EchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& caster) const;
 
   const SonarOptions options_;
-  std::vector<int> site_ids_;
-  std::vector<msgs::Pose2D> X_RS_;
+  const std::vector<SensorSite> sites_;
   std::vector<Eigen::Vector3d> dirs_S_;  // fan directions in the site frame, centre-out
   double cos_incidence_limit_ = 0.0;
   double cos_half_angle_ = 0.0;

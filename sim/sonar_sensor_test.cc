@@ -12,81 +12,31 @@
 #include "sim/config_error.h"
 #include "sim/mujoco_ray_caster.h"
 #include "sim/scene.h"
-#include "tests/support/mujoco_test_support.h"
+#include "tests/support/options_test_support.h"
+#include "tests/support/sample_stats.h"
+#include "tests/support/sensor_test_support.h"
 
 namespace plywood::sim {
 namespace {
 
-using plywood::testing::MakeTempDir;
-using plywood::testing::SourceRoot;
-using plywood::testing::WriteFile;
+using plywood::testing::ExpectInvalidField;
+using plywood::testing::FloorWorld;
+using plywood::testing::Rectangle;
+using plywood::testing::RobotIn;
+using plywood::testing::RoomSegments;
+using plywood::testing::RoomWorld;
+using plywood::testing::SampleStats;
+using plywood::testing::Segment;
+using plywood::testing::SegmentCaster;
+using plywood::testing::ToWorld;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
-
-// Walls as 2-D segments of unbounded height: exact ranges and normals for the unit tests.
-struct Segment {
-  Eigen::Vector2d a, b;
-  int geom_id;
-};
-
-class SegmentCaster : public RayCaster {
- public:
-  explicit SegmentCaster(std::vector<Segment> segments) : segments_(std::move(segments)) {}
-
-  bool Cast(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W, double max_range_m,
-            RayHit* hit) const override {
-    const Eigen::Vector2d o = origin_W.head<2>(), d = dir_W.head<2>();
-    const auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) {
-      return u.x() * v.y() - u.y() * v.x();
-    };
-    bool found = false;
-    for (const Segment& s : segments_) {
-      const Eigen::Vector2d e = s.b - s.a, w = s.a - o;
-      const double denom = cross(d, e);
-      if (std::abs(denom) < 1e-15) continue;
-      const double t = cross(w, e) / denom, u = cross(w, d) / denom;
-      if (t <= 1e-12 || u < 0.0 || u > 1.0 || t > max_range_m) continue;
-      if (found && t >= hit->distance_m) continue;
-      found = true;
-      Eigen::Vector2d n(-e.y(), e.x());
-      n.normalize();
-      if (n.dot(d) > 0.0) n = -n;
-      hit->distance_m = t;
-      hit->geom_id = s.geom_id;
-      hit->normal_W = Eigen::Vector3d(n.x(), n.y(), 0.0);
-    }
-    return found;
-  }
-
- private:
-  std::vector<Segment> segments_;
-};
-
-// A point given in the sensor's planar frame, in the world.
-Eigen::Vector2d ToWorld(const Eigen::Isometry3d& X_WS, double x, double y) {
-  return (X_WS * Eigen::Vector3d(x, y, 0.0)).head<2>();
-}
-
-std::filesystem::path FloorWorld(const std::string& name) {
-  return WriteFile(MakeTempDir(name) / "floor.xml", R"(<mujoco>
-  <worldbody><geom name="floor" type="plane" size="10 10 0.1"/></worldbody>
-</mujoco>
-)");
-}
-
-SceneOptions P3dxIn(const std::filesystem::path& world, msgs::Pose2D spawn) {
-  SceneOptions options;
-  options.world_mjcf = world;
-  options.robot_mjcf = SourceRoot() / "models" / "p3dx.xml";
-  options.spawn = spawn;
-  return options;
-}
 
 // One transducer (sonar_0) of a P3-DX facing a configurable set of walls given in its own frame.
 class SonarGeometryTest : public ::testing::Test {
  protected:
   SonarGeometryTest()
-      : scene_(P3dxIn(FloorWorld("sonar_geometry"), {0.5, -0.2, 25.0 * kDeg})),
+      : scene_(RobotIn("p3dx", FloorWorld("sonar_geometry"), {0.5, -0.2, 25.0 * kDeg})),
         X_WS_(scene_.SitePoseInWorld(*scene_.FindSite("sonar_0"))) {
     options_.noise_free = true;
   }
@@ -215,21 +165,17 @@ TEST_F(SonarGeometryTest, RangeLimits) {
 }
 
 TEST(SonarSensorTest, NoiseIsOnePercentOfRangeAndZeroMean) {
-  Scene scene(P3dxIn(FloorWorld("sonar_noise"), {0.2, 0.1, 10.0 * kDeg}));
+  Scene scene(RobotIn("p3dx", FloorWorld("sonar_noise"), {0.2, 0.1, 10.0 * kDeg}));
   // A 4 x 3 m box around the robot.
-  const SegmentCaster caster({{{-1.8, -1.4}, {2.2, -1.4}, 1},
-                              {{2.2, -1.4}, {2.2, 1.6}, 2},
-                              {{2.2, 1.6}, {-1.8, 1.6}, 3},
-                              {{-1.8, 1.6}, {-1.8, -1.4}, 4}});
+  const SegmentCaster caster(RoomSegments({-1.8, 2.2, -1.4, 1.6}));
   SonarOptions options;
   SonarOptions exact = options;
   exact.noise_free = true;
   SonarSensor noisy(scene, SonarSensor::DefaultSiteNames(), options, 9);
   SonarSensor clean(scene, SonarSensor::DefaultSiteNames(), exact, 1);
   const msgs::RangeRing truth = clean.Measure(scene, caster);
-  double sum = 0.0, sum_sq = 0.0;
-  int n = 0;
-  while (n < 20000) {
+  SampleStats stats;
+  while (stats.count() < 20000) {
     const msgs::RangeRing ring = noisy.Measure(scene, caster);
     ASSERT_EQ(ring.readings.size(), 16u);
     for (std::size_t k = 0; k < 16; ++k) {
@@ -237,18 +183,16 @@ TEST(SonarSensorTest, NoiseIsOnePercentOfRangeAndZeroMean) {
       ASSERT_TRUE(ring.readings[k].echo);
       const double z = (ring.readings[k].range_m - truth.readings[k].range_m) /
                        (0.01 * truth.readings[k].range_m);
-      sum += z;
-      sum_sq += z * z;
-      ++n;
+      stats.Add(z);
     }
   }
-  const double mean = sum / n, sigma = std::sqrt(sum_sq / n - mean * mean);
+  const double mean = stats.Mean(), sigma = stats.Sigma();
   EXPECT_LT(std::abs(mean), 0.05);
   EXPECT_NEAR(sigma, 1.0, 0.05);
 }
 
 TEST(SonarSensorTest, MissingSiteIsAConfigErrorNamingTheSite) {
-  Scene scene(P3dxIn(FloorWorld("sonar_missing"), {}));
+  Scene scene(RobotIn("p3dx", FloorWorld("sonar_missing"), {}));
   try {
     SonarSensor sonar(scene, {"sonar_0", "sonar_16"}, SonarOptions{}, 1);
     FAIL() << "no ConfigError";
@@ -258,58 +202,24 @@ TEST(SonarSensorTest, MissingSiteIsAConfigErrorNamingTheSite) {
 }
 
 TEST(SonarOptionsTest, ValidateNamesTheField) {
-  const auto expect_field = [](SonarOptions o, const std::string& field) {
-    try {
-      o.Validate();
-      ADD_FAILURE() << field << " accepted";
-    } catch (const std::invalid_argument& e) {
-      EXPECT_EQ(std::string(e.what()).rfind(field + ":", 0), 0u) << e.what();
-    }
-  };
   EXPECT_NO_THROW(SonarOptions{}.Validate());
-  SonarOptions o;
-  o.beam_half_angle_deg = 95.0;
-  expect_field(o, "beam_half_angle_deg");
-  o = {};
-  o.rays_per_cone = 0;
-  expect_field(o, "rays_per_cone");
-  o = {};
-  o.incidence_limit_deg = -1.0;
-  expect_field(o, "incidence_limit_deg");
-  o = {};
-  o.range_min_m = 6.0;
-  expect_field(o, "range_min_m");
-  o = {};
-  o.range_max_m = 0.0;
-  expect_field(o, "range_max_m");
-  o = {};
-  o.range_noise_fraction = -0.01;
-  expect_field(o, "range_noise_fraction");
-  o = {};
-  o.rate_hz = 0.0;
-  expect_field(o, "rate_hz");
+  ExpectInvalidField(SonarOptions{.beam_half_angle_deg = 95.0}, "beam_half_angle_deg");
+  ExpectInvalidField(SonarOptions{.rays_per_cone = 0}, "rays_per_cone");
+  ExpectInvalidField(SonarOptions{.incidence_limit_deg = -1.0}, "incidence_limit_deg");
+  ExpectInvalidField(SonarOptions{.range_min_m = 6.0}, "range_min_m");
+  ExpectInvalidField(SonarOptions{.range_max_m = 0.0}, "range_max_m");
+  ExpectInvalidField(SonarOptions{.range_noise_fraction = -0.01}, "range_noise_fraction");
+  ExpectInvalidField(SonarOptions{.rate_hz = 0.0}, "rate_hz");
 }
 
 // The P3-DX in a real MuJoCo room: interior [-2, 3] x [-1.5, 2.5], optionally rotated.
 TEST(SonarSensorSceneTest, SideSonarsReadTheWallsTheyFaceInAxisAlignedAndRotatedRooms) {
   for (const double yaw_deg : {0.0, 30.0}) {
-    const double yaw = yaw_deg * kDeg, c = std::cos(yaw), s = std::sin(yaw);
-    std::string xml =
-        "<mujoco><worldbody><geom name=\"floor\" type=\"plane\" size=\"10 10 0.1\"/>\n";
-    const double walls[4][4] = {{3.05, 0.5, 0.05, 2.2},
-                                {-2.05, 0.5, 0.05, 2.2},
-                                {0.5, 2.55, 2.7, 0.05},
-                                {0.5, -1.55, 2.7, 0.05}};
-    for (const auto& w : walls) {
-      xml += "<geom type=\"box\" pos=\"" + std::to_string(c * w[0] - s * w[1]) + " " +
-             std::to_string(s * w[0] + c * w[1]) + " 0.5\" size=\"" + std::to_string(w[2]) + " " +
-             std::to_string(w[3]) + " 0.5\" euler=\"0 0 " + std::to_string(yaw_deg) + "\"/>\n";
-    }
-    xml += "</worldbody></mujoco>\n";
-    const auto world =
-        WriteFile(MakeTempDir("sonar_room_" + std::to_string(int(yaw_deg))) / "room.xml", xml);
+    const double yaw = yaw_deg * kDeg;
+    const auto world = RoomWorld("sonar_room_" + std::to_string(int(yaw_deg)),
+                                 Rectangle{-2.0, 3.0, -1.5, 2.5}, yaw);
     const msgs::Pose2D X_room_R{0.3, 0.4, 0.0};
-    const Scene scene(P3dxIn(world, msgs::Pose2D{0.0, 0.0, yaw} * X_room_R));
+    const Scene scene(RobotIn("p3dx", world, msgs::Pose2D{0.0, 0.0, yaw} * X_room_R));
     const MujocoRayCaster caster(scene.model(), scene.data());
     SonarOptions options;
     options.noise_free = true;

@@ -79,7 +79,7 @@ TEST_P(WallFollowingSimTest, FollowsTheLeftWallWithoutTouchingIt) {
                            ", speed_m_s: " + std::to_string(kSpeedMS) +
                            "}\n"
                            "sensors:\n" +
-                           sensor_yaml + "  bumpers: {}\n";
+                           sensor_yaml + "  encoders: {}\n  bumpers: {}\n";
   const ExperimentConfig config =
       ParseExperimentConfig(yaml, "inline", std::filesystem::path(PLYWOOD_SOURCE_ROOT));
   ExperimentRunner runner(config);

@@ -1,0 +1,52 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "msgs/laser_scan.h"
+#include "msgs/pose2d.h"
+
+namespace plywood::perception {
+
+// The usable returns of one scan in beam order, in both views: polar (range, bearing) and
+// Cartesian (x, y) in the frame of the first sensor (S). Line extractors work on this.
+struct ScanPoints {
+  std::vector<double> range_m;
+  std::vector<double> bearing_rad;
+  std::vector<Eigen::Vector2d> points;  // p_S
+  std::vector<int> beam_index;          // index of the beam in the concatenated source scans
+  double angle_increment_rad = 0.0;     // bearing step between neighbouring beams
+  // True when the scan covers a full turn, so the last point neighbours the first (seed 000's two
+  // back-to-back LMS 200).
+  bool closed = false;
+
+  std::size_t size() const { return points.size(); }
+  bool empty() const { return points.empty(); }
+  void Add(double range_m, double bearing_rad, int beam);
+};
+
+// Which returns become points: range_min_m < r < range_max_m (strict on both sides, so ranges
+// reported at the sensor's maximum never pass) and r <= range_cut_m (seed 000's "max range used").
+struct ScanFilter {
+  double range_min_m = 0.05;
+  double range_max_m = 1e9;  // typically the sensor's maximum, minus a margin for real logs
+  double range_cut_m = 1e9;
+
+  // The valid-ray rule of plywood replay: 0.05 m < r < M - 0.2 m.
+  static ScanFilter ForLog(double log_range_max_m) { return {0.05, log_range_max_m - 0.2, 1e9}; }
+  bool Passes(double r_m) const {
+    return r_m > range_min_m && r_m < range_max_m && r_m <= range_cut_m;
+  }
+};
+
+// The scan's returns that pass `filter` (and scan.IsReturn), in the sensor frame.
+ScanPoints MakeScanPoints(const msgs::LaserScan& scan, const ScanFilter& filter);
+
+// Several scans taken from one spot, combined in the frame of the first sensor: scans[k] is
+// rotated by X_SSk.theta_rad (the sensors must share an origin, as two back-to-back LMS 200 do).
+// Beam indices run over the concatenation. `closed` is set when the bearings cover a full turn.
+ScanPoints MakeCombinedScanPoints(const std::vector<msgs::LaserScan>& scans,
+                                  const std::vector<double>& heading_offsets_rad,
+                                  const ScanFilter& filter);
+
+}  // namespace plywood::perception

@@ -1,0 +1,16 @@
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace plywood::sim {
+
+// The check behind the sensors' Validate(): throws std::invalid_argument "<field>: <what>, got
+// <value>", so the message starts with the field's name as the YAML layer spells it.
+inline void RequireField(bool ok, const std::string& field, const std::string& what, double value) {
+  if (!ok) {
+    throw std::invalid_argument(field + ": " + what + ", got " + std::to_string(value));
+  }
+}
+
+}  // namespace plywood::sim

@@ -1,0 +1,118 @@
+// Replays the real 8-sonar log (../shared/data/sonar8) through seed 001's grid integration with the
+// classical cone model, writes a PNG, and checks that the walls the robot drove along come out as
+// long straight occupied runs (the log has no ground-truth map).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "perception/log_odds_grid.h"
+#include "perception/sonar8_log.h"
+#include "perception/sonar_cell_model.h"
+#include "render/png_image.h"
+
+namespace plywood {
+namespace {
+
+const std::filesystem::path kData =
+    std::filesystem::path(PLYWOOD_SOURCE_ROOT) / ".." / "shared" / "data" / "sonar8";
+
+perception::LogOddsGrid Replay(const std::vector<perception::Sonar8Record>& log) {
+  double x0 = 1e9, y0 = 1e9, x1 = -1e9, y1 = -1e9;
+  for (const auto& r : log) {
+    x0 = std::min(x0, r.X_WR.x_m), x1 = std::max(x1, r.X_WR.x_m);
+    y0 = std::min(y0, r.X_WR.y_m), y1 = std::max(y1, r.X_WR.y_m);
+  }
+  perception::LogOddsGridOptions o;
+  o.resolution_m = 0.1;
+  o.origin_xy = {x0 - 5.5, y0 - 5.5};
+  o.width = static_cast<int>((x1 - x0 + 11) / 0.1);
+  o.height = static_cast<int>((y1 - y0 + 11) / 0.1);
+  o.local_cells = 110;  // these sonars reach 5 m: a local grid of +-5.5 m
+  o.local_cell_m = 0.1;
+  perception::LogOddsGrid grid(o);
+  perception::ClassicalSonarOptions cone;
+  cone.arc_half_width_m = 0.1;
+  const perception::ClassicalSonarModel model(cone);
+  for (const auto& r : log) grid.Integrate(model, r.ring, r.X_WR);
+  return grid;
+}
+
+TEST(Sonar8ReplayTest, WallsComeOutAsStraightOccupiedRuns) {
+  if (!std::filesystem::exists(kData / "measurement.txt")) {
+    GTEST_SKIP() << "no real sonar log at " << kData << " (../shared is absent)";
+  }
+  const auto log = perception::LoadSonar8Log(kData);
+  ASSERT_EQ(log.size(), 413u);
+  const perception::LogOddsGrid grid = Replay(log);
+
+  render::RgbImage image(grid.width(), grid.height());
+  int occupied = 0;
+  for (int iy = 0; iy < grid.height(); ++iy)
+    for (int ix = 0; ix < grid.width(); ++ix) {
+      const auto g = static_cast<std::uint8_t>(255.0 * (1.0 - grid.Probability(ix, iy)));
+      std::uint8_t* p = image.At(ix, grid.height() - 1 - iy);
+      p[0] = p[1] = p[2] = g;
+      occupied += grid.Probability(ix, iy) > 0.7;
+    }
+  const auto out = std::filesystem::path(PLYWOOD_BINARY_DIR) / "test_tmp" / "sonar8_grid.png";
+  std::filesystem::create_directories(out.parent_path());
+  render::WritePng(image, out);
+
+  // Longest straight run of occupied cells along a row or a column: walls 2 m or more long that
+  // the robot drove beside must show up as runs of at least 20 cells with at most 1-cell gaps.
+  auto longest = [&](bool rows) {
+    int best = 0;
+    const int outer = rows ? grid.height() : grid.width();
+    const int inner = rows ? grid.width() : grid.height();
+    for (int a = 0; a < outer; ++a) {
+      int run = 0, gap = 0;
+      for (int b = 0; b < inner; ++b) {
+        const bool occ = rows ? grid.Probability(b, a) > 0.7 : grid.Probability(a, b) > 0.7;
+        if (occ) {
+          run += 1 + gap;
+          gap = 0;
+        } else if (run > 0 && gap < 1) {
+          ++gap;
+        } else {
+          run = 0;
+          gap = 0;
+        }
+        best = std::max(best, run);
+      }
+    }
+    return best;
+  };
+  const int row_run = longest(true), col_run = longest(false);
+  RecordProperty("occupied_cells", occupied);
+  RecordProperty("longest_row_run", row_run);
+  RecordProperty("longest_column_run", col_run);
+  std::printf("occupied cells %d, longest x run %d cells, longest y run %d cells, picture %s\n",
+              occupied, row_run, col_run, out.c_str());
+  EXPECT_GE(std::max(row_run, col_run), 20);
+  // Walls are thin: occupied cells are a small part of what the sonars swept.
+  EXPECT_LT(occupied, grid.width() * grid.height() / 5);
+}
+
+TEST(Sonar8LogTest, MalformedLineGivesItsNumber) {
+  const auto dir = std::filesystem::path(PLYWOOD_BINARY_DIR) / "test_tmp" / "sonar8_bad";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "measurement.txt") << "1 5110 5110 2320 2360 5110 5110 2160 1190\n"
+                                         << "2 5110 5110 2320 x 5110 5110 2160 1190\n";
+  std::ofstream(dir / "poses.txt") << "1 0 0 0\n2 0 0 0\n";
+  try {
+    perception::LoadSonar8Log(dir);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("measurement.txt: line 2: 'x' is not a number"),
+              std::string::npos)
+        << e.what();
+  }
+  std::ofstream(dir / "measurement.txt") << "1 5110 5110 2320 2360 5110 5110 2160\n";
+  EXPECT_THROW(perception::LoadSonar8Log(dir), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace plywood
