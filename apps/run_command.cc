@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 
 #include "apps/command_line.h"
@@ -13,6 +14,7 @@
 #include "sim/config_error.h"
 #include "sim/experiment_config.h"
 #include "sim/experiment_runner.h"
+#include "sim/line_scan_scorer.h"
 #include "sim/run_writer.h"
 
 namespace plywood::apps {
@@ -98,6 +100,8 @@ int RunCommand(const std::vector<std::string>& args) {
   if (!quiet && terminal) std::fprintf(stderr, "\r%60s\r", "");
 
   AddSonarMapMetrics(runner);  // seed 001 map scores, if the sonar explorer drove
+  // Line extraction scores (lines: section); wall-clock time per scan goes to timing.json only.
+  const std::vector<sim::ExtractorScore> line_scores = sim::AddLineMetrics(runner);
   sim::WriteRunOutputs(config, runner.record(), out_dir);
   if (snapshots) WriteSonarMapPictures(runner, out_dir);
   if (snapshots) {
@@ -106,7 +110,19 @@ int RunCommand(const std::vector<std::string>& args) {
     render::WriteSnapshot(runner.scene().model(), runner.mutable_scene().mutable_data(),
                           TrajectoryOverlays(runner.record()), out_dir + "/snapshot.png", options);
   }
+  if (!line_scores.empty()) {
+    std::ofstream(out_dir + "/timing.json") << sim::LineTimingJson(line_scores);
+  }
   if (!quiet) PrintSummary(runner, out_dir);
+  if (!quiet) {
+    for (const auto& s : line_scores) {
+      std::printf("%-34s recall %.3f, precision %.3f, sigma_r %.4f m, sigma_alpha %.3f deg, "
+                  "%.1f points/line, %.1f us/scan\n",
+                  ("lines " + s.name).c_str(), s.score.Recall(), s.score.Precision(),
+                  s.score.SigmaRM(), s.score.SigmaAlphaDeg(), s.score.PointsPerLine(),
+                  s.us_per_scan);
+    }
+  }
   return 0;
 }
 

@@ -192,6 +192,8 @@ TopDownImage RenderTopDownSoftware(const mjModel* m, const mjData* d, const Worl
   std::vector<GeomFootprint> footprints;
   for (int g = 0; g < m->ngeom; ++g) {
     if (!GroupShown(m, g, options.show_robot)) continue;
+    // Invisible geoms (alpha 0, no material) are collision shapes only, e.g. a bumper ring.
+    if (m->geom_matid[g] < 0 && m->geom_rgba[4 * g + 3] <= 0.0f) continue;
     const bool is_static = IsStaticGeom(m, g);
     if (!is_static && d == nullptr) continue;
     Eigen::Isometry3d X_WG = Eigen::Isometry3d::Identity();

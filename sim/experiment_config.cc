@@ -134,6 +134,7 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   } else if (config.sensors.encoders) {
     config.odometry.enabled = {"encoder"};
   }
+  if (top.Has("lines")) ReadLinesConfig(top.Child("lines"), config.lines);
   ReadOptions(top.Child("output"), config.output);
   top.Finish();
   return config;
@@ -172,6 +173,7 @@ std::string ExperimentConfigToYaml(const ExperimentConfig& const_config) {
   root["controller"] = WriteControllerConfig(config.controller);
   root["sensors"] = WriteSensorSuiteConfig(config.sensors);
   root["odometry"] = WriteOdometryConfig(config.odometry);
+  if (config.lines.given) root["lines"] = WriteLinesConfig(config.lines);
   root["output"] = WriteOptions(config.output);
   YAML::Emitter out;
   out << root;

@@ -9,6 +9,7 @@
 
 #include "robot/diff_drive_spec.h"
 #include "sim/controller_config.h"
+#include "sim/lines_config.h"
 #include "sim/odometry_config.h"
 #include "sim/physical_deviation.h"
 #include "sim/sensor_suite_config.h"
@@ -58,6 +59,7 @@ struct ExperimentConfig {
   ControllerConfig controller;
   SensorSuiteConfig sensors;
   OdometryConfig odometry;
+  LinesConfig lines;  // post-run line-extraction scoring (docs/lines.md)
   OutputOptions output;
 };
 

@@ -40,15 +40,14 @@ struct Scheduled {
   Sensor sensor;
 };
 
-// The ground-truth segment a beam hit: the first face of the hit geom that the beam's ray crosses
-// (exact, and independent of the range noise).
-int HitSegment(const GroundTruthWalls& walls, int geom_id, const Eigen::Vector2d& origin_W,
-               const Eigen::Vector2d& dir_W) {
+// The ground-truth segment a beam hit: the first of the hit geom's faces (`candidates`, indices
+// into walls.segments) that the beam's ray crosses (exact, and independent of the range noise).
+int HitSegment(const GroundTruthWalls& walls, const std::vector<int>& candidates,
+               const Eigen::Vector2d& origin_W, const Eigen::Vector2d& dir_W) {
   int best = -1;
   double best_t = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < walls.segments.size(); ++i) {
+  for (int i : candidates) {
     const WallSegment& s = walls.segments[i];
-    if (s.geom_id != geom_id) continue;
     // Solve origin + t dir = a + u (b - a) for t >= 0, u in [0, 1].
     const Eigen::Vector2d ab = s.b - s.a;
     const double denominator = dir_W.x() * ab.y() - dir_W.y() * ab.x();
@@ -58,7 +57,7 @@ int HitSegment(const GroundTruthWalls& walls, int geom_id, const Eigen::Vector2d
     const double u = (ao.x() * dir_W.y() - ao.y() * dir_W.x()) / denominator;
     if (t >= 0.0 && u >= -1e-9 && u <= 1.0 + 1e-9 && t < best_t) {
       best_t = t;
-      best = static_cast<int>(i);
+      best = i;
     }
   }
   return best;
@@ -91,6 +90,8 @@ struct ExperimentRunner::Parts {
   std::optional<msgs::SonarRing> last_sonar;
   std::optional<msgs::LaserScan> last_laser;
   ScanMeasurement scan_scratch;
+  // Indices into RunRecord::walls.segments of each geom's faces, by geom id.
+  std::vector<std::vector<int>> segments_of_geom;
   long rays_per_laser_scan = 0, rays_per_sonar_ring = 0, rays_per_ir_ring = 0, rays_per_ir_scan = 0;
 };
 
@@ -194,6 +195,10 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
   if (p.laser)
     truth_options.height_m = scene_->SitePoseInWorld(p.laser->sensor.site_id()).translation().z();
   record_.walls = ExtractGroundTruthWalls(scene_->model(), truth_options);
+  p.segments_of_geom.resize(scene_->model()->ngeom);
+  for (std::size_t i = 0; i < record_.walls.segments.size(); ++i) {
+    p.segments_of_geom[record_.walls.segments[i].geom_id].push_back(static_cast<int>(i));
+  }
 }
 
 ExperimentRunner::~ExperimentRunner() = default;
@@ -231,8 +236,9 @@ void ExperimentRunner::SampleSensors() {
     for (std::size_t i = 0; i < laser.scan.ranges_m.size(); ++i) {
       if (laser.hit_geom_ids[i] < 0) continue;
       const double angle = heading_W + laser.scan.BeamAngleRad(i);
-      laser.hit_segment_ids[i] = HitSegment(record_.walls, laser.hit_geom_ids[i], origin_W,
-                                            {std::cos(angle), std::sin(angle)});
+      laser.hit_segment_ids[i] =
+          HitSegment(record_.walls, p.segments_of_geom[laser.hit_geom_ids[i]], origin_W,
+                     {std::cos(angle), std::sin(angle)});
     }
     p.last_laser = laser.scan;
     record_.laser.push_back(std::move(laser));
