@@ -59,6 +59,8 @@ void CognitiveMapOptions::Validate() const {
   if (min_obstacle_cells < 1) throw std::invalid_argument("min_obstacle_cells: must be >= 1");
   if (!(wall_band_m >= 0.0)) throw std::invalid_argument("wall_band_m: must be >= 0");
   if (!(min_passage_m >= 0.0)) throw std::invalid_argument("min_passage_m: must be >= 0");
+  if (!(side_free_overrun_m >= 0.0))
+    throw std::invalid_argument("side_free_overrun_m: must be >= 0");
 }
 
 CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& inside,
@@ -128,6 +130,36 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
   map.room.x1 = FitSide(east, res, band, sigma, min_pts).value_or(free_x1);
   map.room.y0 = FitSide(south, res, band, sigma, min_pts).value_or(free_y0);
   map.room.y1 = FitSide(north, res, band, sigma, min_pts).value_or(free_y1);
+  // A side fitted well inside space the sonar saw free is an obstacle face against a wall that was
+  // never heard (layout 3): no room wall has free space behind it, so the side moves out to the
+  // outermost column (row) with at least min_wall_points free cells.
+  {
+    std::vector<int> free_in_column(W, 0), free_in_row(H, 0);
+    for (int iy = 0; iy < H; ++iy)
+      for (int ix = 0; ix < W; ++ix)
+        if (seen_free[iy * W + ix]) {
+          ++free_in_column[ix];
+          ++free_in_row[iy];
+        }
+    int cx0 = W, cx1 = -1, cy0 = H, cy1 = -1;
+    for (int ix = 0; ix < W; ++ix)
+      if (free_in_column[ix] >= min_pts) cx0 = std::min(cx0, ix), cx1 = std::max(cx1, ix);
+    for (int iy = 0; iy < H; ++iy)
+      if (free_in_row[iy] >= min_pts) cy0 = std::min(cy0, iy), cy1 = std::max(cy1, iy);
+    const double overrun = options.side_free_overrun_m;
+    if (cx1 >= 0) {
+      const double x0 = grid.CellCentre(cx0, 0).x() - 0.5 * res;
+      const double x1 = grid.CellCentre(cx1, 0).x() + 0.5 * res;
+      if (map.room.x0 - x0 > overrun) map.room.x0 = x0;
+      if (x1 - map.room.x1 > overrun) map.room.x1 = x1;
+    }
+    if (cy1 >= 0) {
+      const double y0 = grid.CellCentre(0, cy0).y() - 0.5 * res;
+      const double y1 = grid.CellCentre(0, cy1).y() + 0.5 * res;
+      if (map.room.y0 - y0 > overrun) map.room.y0 = y0;
+      if (y1 - map.room.y1 > overrun) map.room.y1 = y1;
+    }
+  }
   if (map.room.x1 - map.room.x0 < res || map.room.y1 - map.room.y0 < res) {
     map.room = {inside.x() - res, inside.y() - res, inside.x() + res, inside.y() + res};
   }

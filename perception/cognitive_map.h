@@ -17,6 +17,8 @@ struct CognitiveMapOptions {
   int min_obstacle_cells = 6;     // smaller occupied blobs inside the room are noise
   double wall_band_m = 0.15;      // occupied cells this close inside a wall line belong to it
   double min_passage_m = 0.45;    // free-free stretches narrower than the robot go into D
+  // A room side with more free space than this beyond it is an obstacle face, not the wall.
+  double side_free_overrun_m = 0.3;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
 };

@@ -80,10 +80,18 @@ CognitiveMap SonarExplorer::Map() const {
 }
 
 bool SonarExplorer::FrontBlocked(const msgs::RangeRing& ring) const {
+  // The echo points in the corridor the robot body sweeps ahead. The sonars up to 60 deg off the
+  // axis count, since an obstacle corner met at an angle is heard only by the oblique ones.
+  constexpr double kRadius = 0.2;      // the Magellan's radius
+  constexpr double kSideMargin = 0.1;  // corridor half-width = radius + this
   for (const auto& r : ring.readings) {
-    if (!r.echo || std::abs(msgs::WrapAngle(r.X_RS.theta_rad)) > 0.5) continue;
-    const double along = r.X_RS.x_m + r.range_m * std::cos(r.X_RS.theta_rad);
-    if (along < options_.stop_range_m + 0.2) return true;  // 0.2: the Magellan's radius
+    const double bearing = msgs::WrapAngle(r.X_RS.theta_rad);
+    if (!r.echo || std::abs(bearing) > 1.05) continue;
+    const double along = r.X_RS.x_m + r.range_m * std::cos(bearing);
+    const double side = r.X_RS.y_m + r.range_m * std::sin(bearing);
+    if (along > 0.0 && along < options_.stop_range_m + kRadius &&
+        std::abs(side) < kRadius + kSideMargin)
+      return true;
   }
   return false;
 }
@@ -256,7 +264,16 @@ msgs::WheelSpeedCommand SonarExplorer::Update(const robot::ControllerInput& inpu
         input.time_s - *perimeter_start_s_ > options_.perimeter_max_s) {
       perimeter_done_ = true;
     } else {
-      return follower_->Update(input);
+      // The follower cannot hear an obstacle corner met head-on; a close front echo turns the
+      // robot on the spot away from the wall (on its left) until the way ahead is clear.
+      const msgs::WheelSpeedCommand command = follower_->Update(input);
+      if (input.sonar != nullptr && robot::WheelSpeedsToTwist(spec_, command).linear_m_s > 0.0 &&
+          FrontBlocked(*input.sonar)) {
+        robot::BodyTwist turn;
+        turn.angular_rad_s = -options_.turn_rate_rad_s;
+        return robot::TwistToWheelSpeeds(spec_, turn);
+      }
+      return command;
     }
   }
   return Explore(input);

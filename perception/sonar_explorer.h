@@ -27,7 +27,7 @@ struct SonarExplorerOptions {
   double log_odds_limit = 12.0;
   CognitiveMapOptions map;
   // Obstacle (and wall) perimeter following first: one full turn of the boundary.
-  double wall_distance_m = 0.45;
+  double wall_distance_m = 0.5;     // 0.45 grazed obstacle corners (layout 3)
   double perimeter_turn_rad = 6.0;  // heading change that closes the circuit (2 pi minus slack)
   double perimeter_max_s = 150.0;
   // Then the seed's utility loop over the partitions.

@@ -24,8 +24,7 @@ RunRecord ScanFrom(const ExperimentConfig& base, const Eigen::Vector2d& p_W, dou
   // Just long enough for `scans` scans at the laser's rate (one at t = 0).
   config.duration_s = (static_cast<double>(scans) - 0.5) / base.sensors.laser->rate_hz;
   const auto spawn = [&](const Eigen::Vector2d& site_R) {
-    const Eigen::Vector2d robot_W =
-        p_W - Eigen::Rotation2Dd(theta_rad).toRotationMatrix() * site_R;
+    const Eigen::Vector2d robot_W = p_W - Eigen::Rotation2Dd(theta_rad).toRotationMatrix() * site_R;
     config.spawn = {robot_W.x(), robot_W.y(), theta_rad * 180.0 / std::numbers::pi};
   };
   spawn(Eigen::Vector2d::Zero());

@@ -61,9 +61,8 @@ std::vector<ExtractorScore> ScoreExtractors(std::span<const TruthScan> scans,
       const auto start = std::chrono::steady_clock::now();
       const std::vector<perception::LineSegment> lines = extractor->Extract(scan.points);
       seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      result.score.Add(perception::ScoreScan(lines, scan.truth,
-                                             static_cast<long>(scan.points.size()),
-                                             config.scoring));
+      result.score.Add(perception::ScoreScan(
+          lines, scan.truth, static_cast<long>(scan.points.size()), config.scoring));
     }
     result.us_per_scan = scans.empty() ? 0.0 : 1e6 * seconds / static_cast<double>(scans.size());
     scores.push_back(std::move(result));
@@ -104,8 +103,8 @@ std::vector<ExtractorScore> AddLineMetrics(ExperimentRunner& runner) {
 std::string LineTimingJson(std::span<const ExtractorScore> scores) {
   std::string json = "{\"lines\": {";
   for (std::size_t i = 0; i < scores.size(); ++i) {
-    json += (i ? ", \"" : "\"") + scores[i].name + "\": {\"us_per_scan\": " +
-            FormatNumber(scores[i].us_per_scan) + "}";
+    json += (i ? ", \"" : "\"") + scores[i].name +
+            "\": {\"us_per_scan\": " + FormatNumber(scores[i].us_per_scan) + "}";
   }
   return json + "}}\n";
 }

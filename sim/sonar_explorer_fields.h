@@ -20,6 +20,7 @@ void VisitFields(A& a, perception::SonarExplorerOptions& o) {
   a("min_obstacle_cells", o.map.min_obstacle_cells);
   a("wall_band_m", o.map.wall_band_m);
   a("min_passage_m", o.map.min_passage_m);
+  a("side_free_overrun_m", o.map.side_free_overrun_m);
   a("wall_distance_m", o.wall_distance_m);
   a("perimeter_turn_rad", o.perimeter_turn_rad);
   a("perimeter_max_s", o.perimeter_max_s);

@@ -1,0 +1,85 @@
+// `plywood replay` on malformed CARMEN logs, end to end: a bad line gives one line on stderr with
+// the file and line number and exit code 2; with --skip-bad it is skipped and counted.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "tests/support/mujoco_test_support.h"
+
+namespace plywood {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string Slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+Result RunPlywood(const std::string& args, const fs::path& dir) {
+  const fs::path binary = fs::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood";
+  const std::string command = binary.string() + " " + args + " >" + (dir / "stdout").string() +
+                              " 2>" + (dir / "stderr").string();
+  const int status = std::system(command.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, Slurp(dir / "stdout"),
+          Slurp(dir / "stderr")};
+}
+
+// A FLASER line of 181 beams seeing a flat wall 2 m ahead: r_i = 2 / cos(bearing), else 8 m.
+std::string GoodLine(double t) {
+  std::ostringstream line;
+  line << "FLASER 181";
+  for (int i = 0; i < 181; ++i) {
+    const double bearing = (i - 90) * 3.141592653589793 / 180.0;
+    const double c = std::cos(bearing);
+    line << " " << (c > 0.25 ? 2.0 / c : 8.0);
+  }
+  line << " 0 0 0 0 0 0 " << t << " host " << t << "\n";
+  return line.str();
+}
+
+TEST(ReplayCliTest, MalformedLinesFailWithTheirLineNumberOrAreSkippedAndCounted) {
+  const fs::path dir = testing::MakeTempDir("replay_cli_test");
+  std::string good = GoodLine(0.0) + GoodLine(0.1);
+  std::string wrong_count = GoodLine(0.2);
+  wrong_count.replace(0, 10, "FLASER 180");  // one field too many for 180 beams
+  std::string nan = GoodLine(0.3);
+  nan.replace(nan.find(' ', 11) + 1, 1, "nan ");
+  std::string text_field = GoodLine(0.4);
+  text_field.replace(text_field.find(' ', 11) + 1, 1, "abc ");
+  const std::vector<std::pair<std::string, std::string>> bad{
+      {"wrong count", wrong_count}, {"NaN", nan}, {"text in a number", text_field}};
+  for (const auto& [what, line] : bad) {
+    SCOPED_TRACE(what);
+    const fs::path log =
+        testing::WriteFile(dir / "bad.log", "# a comment\n" + good + line + GoodLine(0.5));
+    const Result r = RunPlywood("replay " + log.string() + " --out " + (dir / "out").string(), dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("bad.log:4:"), std::string::npos) << r.err;  // file:line
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+
+    const Result skipped =
+        RunPlywood("replay " + log.string() + " --skip-bad --out " + (dir / "out").string(), dir);
+    EXPECT_EQ(skipped.exit_code, 0) << skipped.err;
+    EXPECT_NE(skipped.out.find("(3 scans, 1 lines skipped)"), std::string::npos) << skipped.out;
+    EXPECT_NE(Slurp(dir / "out" / "metrics.json").find("\"skipped_lines\": 1"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace plywood
