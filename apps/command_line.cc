@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "perception/parse_number.h"
+
 namespace plywood::apps {
 namespace {
 
@@ -61,11 +63,8 @@ bool CommandLine::Switch(const std::string& flag) const { return Contains(switch
 std::optional<double> CommandLine::Number(const std::string& flag) const {
   const auto text = Value(flag);
   if (!text) return std::nullopt;
-  char* end = nullptr;
-  const double value = std::strtod(text->c_str(), &end);
-  if (text->empty() || *end != '\0' || !std::isfinite(value)) {
-    throw UsageError{flag + ": expected a number, got '" + *text + "'"};
-  }
+  const std::optional<double> value = perception::ParseFiniteNumber(*text);
+  if (!value) throw UsageError{flag + ": expected a number, got '" + *text + "'"};
   return value;
 }
 

@@ -7,22 +7,22 @@
 #include <cstdio>
 #include <cstdlib>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
+
+#include "perception/parse_number.h"
 
 namespace plywood::perception {
 namespace {
 
 // Strict number parsing: the whole token must be a finite number.
 double ParseNumber(const std::string& token, const char* field) {
-  char* end = nullptr;
-  errno = 0;
-  const double value = std::strtod(token.c_str(), &end);
-  if (token.empty() || end != token.c_str() + token.size() || errno == ERANGE ||
-      !std::isfinite(value)) {
+  const std::optional<double> value = ParseFiniteNumber(token);
+  if (!value) {
     throw std::runtime_error(std::string(field) + ": not a finite number: '" + token + "'");
   }
-  return value;
+  return *value;
 }
 
 std::vector<std::string> Tokens(const std::string& line) {

@@ -3,8 +3,11 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
+
+#include "perception/parse_number.h"
 
 namespace plywood::perception {
 namespace {
@@ -22,17 +25,12 @@ std::vector<std::vector<double>> ReadColumns(const std::filesystem::path& path, 
     std::vector<double> row;
     std::string token;
     while (s >> token) {
-      std::size_t used = 0;
-      double v = 0.0;
-      try {
-        v = std::stod(token, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used != token.size() || !std::isfinite(v))
+      const std::optional<double> v = ParseFiniteNumber(token);
+      if (!v) {
         throw std::runtime_error(path.string() + ": line " + std::to_string(n) + ": '" + token +
                                  "' is not a number");
-      row.push_back(v);
+      }
+      row.push_back(*v);
     }
     if (static_cast<int>(row.size()) != columns)
       throw std::runtime_error(path.string() + ": line " + std::to_string(n) + ": expected " +

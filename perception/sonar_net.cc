@@ -5,9 +5,12 @@
 #include <cstdio>
 #include <fstream>
 #include <numeric>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <stdexcept>
+
+#include "perception/parse_number.h"
 
 namespace plywood::perception {
 namespace {
@@ -220,15 +223,9 @@ SonarNet SonarNet::FromText(const std::string& text, const std::string& source) 
         std::string token;
         if (!(s >> token))
           Fail(source, line_no, "expected " + std::to_string(cols + 1) + " numbers");
-        std::size_t used = 0;
-        double v = 0.0;
-        try {
-          v = std::stod(token, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
-        if (used != token.size() || !std::isfinite(v))
-          Fail(source, line_no, "'" + token + "' is not a finite number");
+        const std::optional<double> parsed = ParseFiniteNumber(token);
+        if (!parsed) Fail(source, line_no, "'" + token + "' is not a finite number");
+        const double v = *parsed;
         if (c < cols)
           w(r, c) = v;
         else

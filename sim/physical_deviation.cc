@@ -1,37 +1,27 @@
 #include "sim/physical_deviation.h"
 
-#include <cmath>
-#include <stdexcept>
-#include <string>
+#include "robot/odometry_increments.h"
 
 namespace plywood::sim {
-namespace {
 
-void RequireRatio(const char* field, double value) {
-  // A ratio far from 1 is no longer a "deviation" the diff-drive model can carry (a wheel would
-  // shrink to nothing or the track would exceed the chassis); 0.5..2 is generous.
-  if (!std::isfinite(value) || value < 0.5 || value > 2.0) {
-    throw std::invalid_argument(std::string(field) + ": must be a ratio in [0.5, 2], got " +
-                                std::to_string(value));
-  }
-}
-
-}  // namespace
-
+// The same two ratios describe how a robot is really built (here) and the calibration its odometry
+// applies (robot::OdometryCalibration), so one implementation of Borenstein & Feng's formulas and
+// of the ratio checks serves both.
 void PhysicalDeviation::Validate() const {
-  RequireRatio("wheel_diameter_ratio", wheel_diameter_ratio);
-  RequireRatio("track_ratio", track_ratio);
+  robot::OdometryCalibration{.wheel_diameter_ratio = wheel_diameter_ratio,
+                             .track_ratio = track_ratio}
+      .Validate();
 }
 
 WheelGeometry DeviatedWheelGeometry(const robot::DiffDriveSpec& nominal,
                                     const PhysicalDeviation& deviation) {
-  nominal.Validate();
   deviation.Validate();
-  const double e_d = deviation.wheel_diameter_ratio;
-  const double r = nominal.wheel_radius_m;
-  return {.left_radius_m = 2.0 * r / (e_d + 1.0),
-          .right_radius_m = 2.0 * r * e_d / (e_d + 1.0),
-          .track_m = deviation.track_ratio * nominal.track_m};
+  const robot::OdometryGeometry built =
+      robot::CalibratedGeometry(nominal, {.wheel_diameter_ratio = deviation.wheel_diameter_ratio,
+                                          .track_ratio = deviation.track_ratio});
+  return {.left_radius_m = built.left_wheel_radius_m,
+          .right_radius_m = built.right_wheel_radius_m,
+          .track_m = built.track_m};
 }
 
 }  // namespace plywood::sim

@@ -5,6 +5,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "perception/parse_number.h"
 #include "sim/config_error.h"
 
 namespace plywood::sim {
@@ -17,12 +18,11 @@ std::string Describe(const YAML::Node& node) {
   return "'" + node.Scalar() + "'";
 }
 
-// Parses the whole of `text` as a finite number in the C locale.
+// Parses the whole of `text` as a finite number (perception::ParseFiniteNumber).
 bool ParseFinite(const std::string& text, double* value) {
-  std::istringstream in(text);
-  in.imbue(std::locale::classic());
-  in >> *value;
-  return !in.fail() && in.eof() && std::isfinite(*value);
+  const std::optional<double> parsed = perception::ParseFiniteNumber(text);
+  if (parsed) *value = *parsed;
+  return parsed.has_value();
 }
 
 }  // namespace
