@@ -25,6 +25,8 @@ constexpr const char* kUsage =
     "      run one experiment and write its results to DIR (default runs/NAME-seedN)\n"
     "  bench [--seconds S] [--world PATH]\n"
     "      print the real-time factor and ray throughput of a P3-DX with LMS 200 + 16 sonars\n"
+    "  replay LOG --extractor NAME [--out DIR] [--skip-bad]\n"
+    "      run a line extractor on every scan of a CARMEN log (plain or .gz) and score it\n"
     "  train sonar-net [--out FILE] [--rooms N] [--poses N] [--epochs N] [--seed N]\n"
     "      train seed 001's sonar interpretation network on simulated rooms\n";
 
