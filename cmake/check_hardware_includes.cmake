@@ -1,14 +1,15 @@
-# Fails when a file under FOLDER includes MuJoCo, GL, GLFW, OSMesa or yaml-cpp headers.
+# Fails when a file under FOLDER includes MuJoCo, GL, GLFW, OSMesa or yaml-cpp headers, or the
+# simulator-side folders (sim/, render/, apps/) that would bring them in.
 file(GLOB_RECURSE files "${FOLDER}/*.h" "${FOLDER}/*.cc")
 set(violations "")
 foreach(f ${files})
-  file(STRINGS "${f}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"](mujoco/|GL/|GLFW/|yaml-cpp/|mujoco\\.h)")
+  file(STRINGS "${f}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"](mujoco/|GL/|GLFW/|yaml-cpp/|mujoco\\.h|sim/|render/|apps/)")
   foreach(line ${lines})
     list(APPEND violations "${f}: ${line}")
   endforeach()
 endforeach()
 if(violations)
   string(REPLACE ";" "\n  " pretty "${violations}")
-  message(FATAL_ERROR "Hardware-side code must not include simulator, GL or YAML headers:\n  ${pretty}")
+  message(FATAL_ERROR "Hardware-side code must not include simulator, GL or YAML headers (nor sim/, render/, apps/):\n  ${pretty}")
 endif()
 file(TOUCH "${STAMP}")
