@@ -14,22 +14,8 @@
 #include "sim/config_error.h"
 #include "sim/experiment_runner.h"
 #include "sim/lines_config.h"
+#include "sim/lines_fields.h"
 #include "sim/yaml_fields.h"
-
-namespace plywood::perception {
-// Declared in sim/lines_config.cc's VisitFields set; repeated here for the protocol's section.
-template <typename A>
-void VisitRansac(A& a, RansacOptions& o) {
-  a("iterations", o.iterations);
-  a("distance_threshold_m", o.distance_threshold_m);
-  a("min_inliers", o.min_inliers);
-  a("max_gap_m", o.max_gap_m);
-  a("min_points", o.min_points);
-  a("min_length_m", o.min_length_m);
-  a("max_lines", o.max_lines);
-  a("seed", o.seed);
-}
-}  // namespace plywood::perception
 
 namespace plywood::apps {
 namespace {
@@ -71,7 +57,7 @@ int Seed004RansacProtocol(const ProtocolContext& context) {
     if (scan_stride < 1) fields.Fail("scan_stride", "must be >= 1");
     if (beam_stride < 1) fields.Fail("beam_stride", "must be >= 1");
     sim::YamlReadArchive archive(fields.Child("ransac"));
-    perception::VisitRansac(archive, ransac);
+    VisitFields(archive, ransac);
     archive.fields().Finish();
     archive.fields().Validate(ransac);
     fields.Finish();

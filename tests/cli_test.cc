@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "tests/support/cli_test_support.h"
 #include "tests/support/mujoco_test_support.h"
 
 namespace plywood {
@@ -19,26 +20,9 @@ using testing::MakeTempDir;
 using testing::SourceRoot;
 using testing::WriteFile;
 
-struct Result {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string Slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-Result RunPlywood(const std::string& args, const fs::path& dir) {
-  const fs::path binary = fs::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood";
-  const std::string command = binary.string() + " " + args + " >" + (dir / "stdout").string() +
-                              " 2>" + (dir / "stderr").string();
-  const int status = std::system(command.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, Slurp(dir / "stdout"), Slurp(dir / "stderr")};
-}
+using Result = testing::CliResult;
+using testing::RunPlywood;
+using testing::Slurp;
 
 // A short noisy experiment in a small room; every sensor on, so every log is exercised.
 std::string SmallExperiment() {
@@ -62,11 +46,12 @@ class BadInputTest : public ::testing::Test {
   // Writes `yaml` into experiments-like folder, runs it and checks the one-line error.
   void ExpectOneLineError(const std::string& yaml, const std::string& extra_args,
                           const std::vector<std::string>& must_contain) {
-    const fs::path dir = MakeTempDir(::testing::UnitTest::GetInstance()->current_test_info()->name());
+    const fs::path dir =
+        MakeTempDir(::testing::UnitTest::GetInstance()->current_test_info()->name());
     const fs::path file = WriteFile(dir / "experiment.yaml", yaml);
-    const Result result = RunPlywood("run " + file.string() + " --quiet --out " +
-                                         (dir / "out").string() + " " + extra_args,
-                                     dir);
+    const Result result = RunPlywood(
+        "run " + file.string() + " --quiet --out " + (dir / "out").string() + " " + extra_args,
+        dir);
     EXPECT_EQ(result.exit_code, 2) << result.err;
     ASSERT_FALSE(result.err.empty());
     EXPECT_EQ(result.err.find('\n'), result.err.size() - 1) << "not one line: " << result.err;
@@ -90,12 +75,14 @@ TEST_F(BadInputTest, BrokenYamlSyntax) {
 }
 
 TEST_F(BadInputTest, UnknownKey) {
-  ExpectOneLineError(SmallExperiment() + "colour: red\n", "", {"experiment.yaml", "colour", "unknown key"});
+  ExpectOneLineError(SmallExperiment() + "colour: red\n", "",
+                     {"experiment.yaml", "colour", "unknown key"});
 }
 
 TEST_F(BadInputTest, UnknownNestedKeyNamesItsPath) {
-  ExpectOneLineError(Replace(SmallExperiment(), "sonar: {rate_hz: 10}", "sonar: {rate_hz: 10, bogus: 1}"),
-                     "", {"experiment.yaml", "sensors.sonar.bogus", "unknown key"});
+  ExpectOneLineError(
+      Replace(SmallExperiment(), "sonar: {rate_hz: 10}", "sonar: {rate_hz: 10, bogus: 1}"), "",
+      {"experiment.yaml", "sensors.sonar.bogus", "unknown key"});
 }
 
 TEST_F(BadInputTest, WrongType) {
@@ -104,27 +91,30 @@ TEST_F(BadInputTest, WrongType) {
 }
 
 TEST_F(BadInputTest, MissingWorldFile) {
-  ExpectOneLineError(Replace(SmallExperiment(), "worlds/seed000_room_1.xml", "worlds/nowhere.xml"), "",
-                     {"experiment.yaml", "world", "no such file", "nowhere.xml"});
+  ExpectOneLineError(Replace(SmallExperiment(), "worlds/seed000_room_1.xml", "worlds/nowhere.xml"),
+                     "", {"experiment.yaml", "world", "no such file", "nowhere.xml"});
 }
 
 TEST_F(BadInputTest, WorldThatDoesNotCompile) {
   const fs::path dir = MakeTempDir("BrokenWorldFile");
-  const fs::path world = WriteFile(dir / "broken_room.xml",
-                                   "<mujoco><worldbody><geom type=\"box\" size=\"1 1\"/></worldbody>"
-                                   "</mujoco>\n");
+  const fs::path world =
+      WriteFile(dir / "broken_room.xml",
+                "<mujoco><worldbody><geom type=\"box\" size=\"1 1\"/></worldbody>"
+                "</mujoco>\n");
   ExpectOneLineError(Replace(SmallExperiment(), "worlds/seed000_room_1.xml", world.string()), "",
                      {"broken_room.xml", "does not compile"});
 }
 
 TEST_F(BadInputTest, NanValue) {
-  ExpectOneLineError(Replace(SmallExperiment(), "range_noise_sigma_m: 0.01", "range_noise_sigma_m: .nan"),
-                     "", {"experiment.yaml", "sensors.laser.range_noise_sigma_m", "finite"});
+  ExpectOneLineError(
+      Replace(SmallExperiment(), "range_noise_sigma_m: 0.01", "range_noise_sigma_m: .nan"), "",
+      {"experiment.yaml", "sensors.laser.range_noise_sigma_m", "finite"});
 }
 
 TEST_F(BadInputTest, NegativeValue) {
-  ExpectOneLineError(Replace(SmallExperiment(), "range_noise_sigma_m: 0.01", "range_noise_sigma_m: -0.01"),
-                     "", {"experiment.yaml", "sensors.laser.range_noise_sigma_m"});
+  ExpectOneLineError(
+      Replace(SmallExperiment(), "range_noise_sigma_m: 0.01", "range_noise_sigma_m: -0.01"), "",
+      {"experiment.yaml", "sensors.laser.range_noise_sigma_m"});
 }
 
 TEST_F(BadInputTest, NegativeWheelRadius) {
@@ -179,9 +169,9 @@ class ReproducibilityTest : public ::testing::Test {
   static fs::path Run(const std::string& name, const std::string& extra_args) {
     const fs::path dir = MakeTempDir("Reproducibility_" + name);
     const fs::path file = WriteFile(dir / "small.yaml", SmallExperiment());
-    const Result result = RunPlywood("run " + file.string() + " --quiet --out " +
-                                         (dir / "out").string() + " " + extra_args,
-                                     dir);
+    const Result result = RunPlywood(
+        "run " + file.string() + " --quiet --out " + (dir / "out").string() + " " + extra_args,
+        dir);
     EXPECT_EQ(result.exit_code, 0) << result.err;
     return dir / "out";
   }
@@ -191,8 +181,8 @@ TEST_F(ReproducibilityTest, SameSeedSameBytesDifferentSeedDifferentNumbers) {
   const fs::path a = Run("a", "--seed 11");
   const fs::path b = Run("b", "--seed 11");
   const fs::path c = Run("c", "--seed 12");
-  for (const char* file : {"config.yaml", "trajectory.csv", "metrics.json", "laser.log", "sonar.csv",
-                           "encoders.csv", "gyro.csv"}) {
+  for (const char* file : {"config.yaml", "trajectory.csv", "metrics.json", "laser.log",
+                           "sonar.csv", "encoders.csv", "gyro.csv"}) {
     ASSERT_TRUE(fs::exists(a / file)) << file;
     EXPECT_EQ(Slurp(a / file), Slurp(b / file)) << file << " differs between equal seeds";
   }
@@ -204,9 +194,8 @@ TEST_F(ReproducibilityTest, SameSeedSameBytesDifferentSeedDifferentNumbers) {
 TEST_F(ReproducibilityTest, ResolvedConfigReproducesTheRun) {
   const fs::path first = Run("first", "");
   const fs::path dir = MakeTempDir("Reproducibility_again");
-  const Result again = RunPlywood("run " + (first / "config.yaml").string() + " --quiet --out " +
-                                      (dir / "out").string(),
-                                  dir);
+  const Result again = RunPlywood(
+      "run " + (first / "config.yaml").string() + " --quiet --out " + (dir / "out").string(), dir);
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_EQ(Slurp(first / "config.yaml"), Slurp(dir / "out" / "config.yaml"));
   EXPECT_EQ(Slurp(first / "trajectory.csv"), Slurp(dir / "out" / "trajectory.csv"));
@@ -216,22 +205,22 @@ TEST_F(ReproducibilityTest, ResolvedConfigReproducesTheRun) {
 TEST(CliTest, UserWorldOutsideTheRepoRunsAndWritesEveryOutput) {
   const fs::path dir = MakeTempDir("UserWorld");
   // A 4 x 3 m room of the user's own, rotated 10 degrees, written by hand.
-  const fs::path world = WriteFile(
-      dir / "my_rooms" / "my_room.xml",
-      "<mujoco model=\"my_room\"><worldbody>\n"
-      "  <geom name=\"floor\" type=\"plane\" size=\"5 5 0.1\"/>\n"
-      "  <body euler=\"0 0 10\">\n"
-      "    <geom type=\"box\" pos=\"2 0 0.5\" size=\"0.009 1.5 0.5\"/>\n"
-      "    <geom type=\"box\" pos=\"-2 0 0.5\" size=\"0.009 1.5 0.5\"/>\n"
-      "    <geom type=\"box\" pos=\"0 1.5 0.5\" size=\"2 0.009 0.5\"/>\n"
-      "    <geom type=\"box\" pos=\"0 -1.5 0.5\" size=\"2 0.009 0.5\"/>\n"
-      "  </body>\n"
-      "</worldbody></mujoco>\n");
+  const fs::path world =
+      WriteFile(dir / "my_rooms" / "my_room.xml",
+                "<mujoco model=\"my_room\"><worldbody>\n"
+                "  <geom name=\"floor\" type=\"plane\" size=\"5 5 0.1\"/>\n"
+                "  <body euler=\"0 0 10\">\n"
+                "    <geom type=\"box\" pos=\"2 0 0.5\" size=\"0.009 1.5 0.5\"/>\n"
+                "    <geom type=\"box\" pos=\"-2 0 0.5\" size=\"0.009 1.5 0.5\"/>\n"
+                "    <geom type=\"box\" pos=\"0 1.5 0.5\" size=\"2 0.009 0.5\"/>\n"
+                "    <geom type=\"box\" pos=\"0 -1.5 0.5\" size=\"2 0.009 0.5\"/>\n"
+                "  </body>\n"
+                "</worldbody></mujoco>\n");
   const fs::path experiment = WriteFile(dir / "small.yaml", SmallExperiment());
-  const Result result = RunPlywood("run " + experiment.string() + " --out " +
-                                       (dir / "out").string() + " --set world=" + world.string() +
-                                       " --set output.snapshot=true",
-                                   dir);
+  const Result result =
+      RunPlywood("run " + experiment.string() + " --out " + (dir / "out").string() +
+                     " --set world=" + world.string() + " --set output.snapshot=true",
+                 dir);
   ASSERT_EQ(result.exit_code, 0) << result.err;
   for (const char* file : {"config.yaml", "trajectory.csv", "metrics.json", "laser.log",
                            "walls.csv", "snapshot.png"}) {

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include "tests/support/cli_test_support.h"
 #include "tests/support/mujoco_test_support.h"
 
 namespace plywood {
@@ -15,12 +16,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string Slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using testing::Slurp;
 
 const char* kExperiment =
     "name: odometry_cli\n"

@@ -11,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include "tests/support/cli_test_support.h"
 #include "tests/support/mujoco_test_support.h"
 
 namespace plywood {
@@ -18,27 +19,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string Slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-Result RunPlywood(const std::string& args, const fs::path& dir) {
-  const fs::path binary = fs::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood";
-  const std::string command = binary.string() + " " + args + " >" + (dir / "stdout").string() +
-                              " 2>" + (dir / "stderr").string();
-  const int status = std::system(command.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, Slurp(dir / "stdout"),
-          Slurp(dir / "stderr")};
-}
+using Result = testing::CliResult;
+using testing::RunPlywood;
+using testing::Slurp;
 
 // A FLASER line of 181 beams seeing a flat wall 2 m ahead: r_i = 2 / cos(bearing), else 8 m.
 std::string GoodLine(double t) {

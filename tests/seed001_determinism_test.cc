@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "tests/support/cli_test_support.h"
 #include "tests/support/mujoco_test_support.h"
 
 namespace plywood {
@@ -18,12 +19,7 @@ namespace fs = std::filesystem;
 using testing::MakeTempDir;
 using testing::SourceRoot;
 
-std::string Slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using testing::Slurp;
 
 // Runs `plywood run` on the shipped layout-4 experiment, cut short, into dir/name.
 int RunShort(const fs::path& dir, const std::string& name, int seed) {

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace plywood::testing {
+
+// The whole content of a file ("" if it cannot be read).
+std::string Slurp(const std::filesystem::path& path);
+
+struct CliResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+// Runs the built `plywood` binary with `args` (a shell-quoted string), capturing stdout and
+// stderr in files under `dir`.
+CliResult RunPlywood(const std::string& args, const std::filesystem::path& dir);
+
+}  // namespace plywood::testing
