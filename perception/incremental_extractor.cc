@@ -9,6 +9,7 @@ namespace plywood::perception {
 
 void IncrementalOptions::Validate() const {
   breakpoints.Validate();
+  round_objects.Validate();
   if (!(max_distance_m > 0.0)) {
     throw std::invalid_argument("max_distance_m: must be > 0, got " +
                                 std::to_string(max_distance_m));
@@ -75,6 +76,7 @@ std::vector<LineSegment> IncrementalExtractor::Extract(const ScanPoints& scan) c
       }
       merged.push_back(std::move(line));
     }
+    RemoveRoundObjects(p, options_.breakpoints.sigma_m, options_.round_objects, &merged);
     for (const auto& line : merged) {
       if (static_cast<int>(line.size()) < options_.filter.min_points) continue;
       LineSegment s = FitSegmentTrimmed(p, line);

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "perception/line_extractor.h"
+#include "perception/round_object_filter.h"
 
 namespace plywood::perception {
 
@@ -11,12 +12,15 @@ namespace plywood::perception {
 // breakpoint group in scan order, growing the current line while the next point lies within
 // max_distance_m of its total-least-squares fit; otherwise close the line and start a new one at
 // that point. A single point off the line whose successor is back on it is skipped as an outlier.
-// Neighbouring lines of one group are merged when their union fits within max_distance_m.
+// Neighbouring lines of one group are merged when their union fits within max_distance_m; groups
+// one circle explains better (columns, table legs) give no lines (round_object_filter.h).
 struct IncrementalOptions {
   BreakpointOptions breakpoints;
   double max_distance_m = 0.04;
   int seed_points = 3;  // points taken before the first distance test
-  SegmentFilterOptions filter;
+  // 6 cm: chords across a table leg (5 cm) are not walls.
+  SegmentFilterOptions filter{.min_points = 5, .min_length_m = 0.06};
+  RoundObjectOptions round_objects;
 
   void Validate() const;
 };

@@ -14,6 +14,60 @@ double ChordDistance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const E
   return std::abs(d.x() * (p.y() - a.y()) - d.y() * (p.x() - a.x())) / length;
 }
 
+// Distance of `q` from the total-least-squares line of `moments`.
+double FitDistance(const LineMoments& moments, const Eigen::Vector2d& q) {
+  double alpha = 0.0, r = 0.0;
+  moments.Fit(&alpha, &r);
+  return std::abs(q.x() * std::cos(alpha) + q.y() * std::sin(alpha) - r);
+}
+
+// The end-point fit splits a corner at the point farthest from the chord, so a few points of one
+// wall next to the corner can stay with the other when they are within split_threshold_m of it.
+// Moves boundary points between neighbouring pieces while one fits the other line better (each
+// line fitted without that point): noise-free corners come out exact.
+void MoveCornerPoints(std::span<const Eigen::Vector2d> p, std::vector<int>* left,
+                      std::vector<int>* right) {
+  if (left->size() < 4 || right->size() < 4) return;
+  LineMoments left_moments, right_moments;
+  for (int i : *left) left_moments.Add(p[i]);
+  for (int i : *right) right_moments.Add(p[i]);
+  if (left->back() == right->front()) {  // a split point both pieces kept: one gives it up
+    const Eigen::Vector2d& shared = p[left->back()];
+    LineMoments left_without = left_moments, right_without = right_moments;
+    left_without.Remove(shared);
+    right_without.Remove(shared);
+    if (FitDistance(left_without, shared) <= FitDistance(right_without, shared)) {
+      right_moments = right_without;
+      right->erase(right->begin());
+    } else {
+      left_moments = left_without;
+      left->pop_back();
+    }
+  }
+  constexpr int kMaxMoves = 32;
+  for (int move = 0; move < kMaxMoves; ++move) {
+    if (left->size() < 4 || right->size() < 4) return;
+    const Eigen::Vector2d& last = p[left->back()];
+    const Eigen::Vector2d& first = p[right->front()];
+    LineMoments left_without = left_moments, right_without = right_moments;
+    left_without.Remove(last);
+    right_without.Remove(first);
+    if (FitDistance(right_moments, last) < FitDistance(left_without, last)) {
+      left_moments = left_without;
+      right_moments.Add(last);
+      right->insert(right->begin(), left->back());
+      left->pop_back();
+    } else if (FitDistance(left_moments, first) < FitDistance(right_without, first)) {
+      right_moments = right_without;
+      left_moments.Add(first);
+      left->push_back(right->front());
+      right->erase(right->begin());
+    } else {
+      return;
+    }
+  }
+}
+
 }  // namespace
 
 const char* ToString(LineFitMethod method) {
@@ -33,6 +87,7 @@ void SplitAndMergeOptions::Validate() const {
                                 std::to_string(split_threshold_m));
   }
   modal.Validate();
+  round_objects.Validate();
   if (filter.min_points < 2) {
     throw std::invalid_argument("min_points: must be >= 2, got " +
                                 std::to_string(filter.min_points));
@@ -58,6 +113,7 @@ std::vector<LineSegment> SplitAndMergeExtractor::Extract(const ScanPoints& scan)
   };
   std::vector<std::vector<int>> pieces;
   std::vector<std::pair<int, int>> stack;
+  std::vector<int> position(p.size(), -1);  // of each point in its breakpoint group
   for (std::vector<int>& group : SplitAtBreakpoints(scan, options_.breakpoints)) {
     if (static_cast<int>(group.size()) < min_points) continue;
     // Iterative end-point fit over positions [lo, hi] of `group` (inclusive).
@@ -143,6 +199,22 @@ std::vector<LineSegment> SplitAndMergeExtractor::Extract(const ScanPoints& scan)
         }
       }
       merged.push_back(std::move(piece));
+    }
+    RemoveRoundObjects(p, options_.breakpoints.sigma_m, options_.round_objects, &merged);
+    // Neighbouring pieces (no dropped run between them) share a corner.
+    for (std::size_t k = 0; k < group.size(); ++k) position[group[k]] = static_cast<int>(k);
+    const auto neighbours = [&](const std::vector<int>& left, const std::vector<int>& right) {
+      const int gap = position[right.front()] - position[left.back()];
+      return gap >= 0 && gap <= 2;  // 0: a shared split point, 2: a skipped single outlier
+    };
+    for (std::size_t k = 0; k + 1 < merged.size(); ++k) {
+      if (neighbours(merged[k], merged[k + 1])) MoveCornerPoints(p, &merged[k], &merged[k + 1]);
+    }
+    // A closed scan without breakpoints is one group that starts and ends at the same corner.
+    if (scan.closed && group.size() == p.size() && merged.size() >= 3 &&
+        position[merged.front().front()] == 0 &&
+        position[merged.back().back()] == static_cast<int>(group.size()) - 1) {
+      MoveCornerPoints(p, &merged.back(), &merged.front());
     }
     for (const auto& piece : merged) {
       if (static_cast<int>(piece.size()) < min_points) continue;

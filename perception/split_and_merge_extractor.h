@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "perception/line_extractor.h"
+#include "perception/round_object_filter.h"
 #include "perception/tls_line_fit.h"
 
 namespace plywood::perception {
@@ -19,7 +20,8 @@ LineFitMethod ParseLineFitMethod(const std::string& text);
 // normal form, then merge neighbouring pieces of the same group whose union still fits a line
 // within split_threshold_m. Two departures from common implementations: the split point stays in
 // the data (it goes to the piece whose line it fits better, not dropped), and pieces are merged
-// only inside a breakpoint group, never across a gap such as a doorway.
+// only inside a breakpoint group, never across a gap such as a doorway. Groups that one circle
+// explains better than their lines (columns, table legs) give no lines (round_object_filter.h).
 struct SplitAndMergeOptions {
   BreakpointOptions breakpoints;
   double split_threshold_m = 0.04;
@@ -28,7 +30,9 @@ struct SplitAndMergeOptions {
   bool skip_single_outliers = true;
   LineFitMethod fit = LineFitMethod::kTotalLeastSquares;
   ModalFitOptions modal;
-  SegmentFilterOptions filter;
+  // 6 cm: chords across a table leg (5 cm) are not walls.
+  SegmentFilterOptions filter{.min_points = 5, .min_length_m = 0.06};
+  RoundObjectOptions round_objects;
 
   // @throws std::invalid_argument starting with the field name.
   void Validate() const;

@@ -1,5 +1,6 @@
 #include "sim/laser_sensor.h"
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 
@@ -61,6 +62,29 @@ ScanMeasurement LaserSensor::Measure(const Scene& scene, const RayCaster& caster
   return out;
 }
 
+bool LaserSensor::IsDepthEdge(int near, int far, double angle_increment_rad) const {
+  // A wall seen at a grazing angle also makes neighbouring ranges jump, but the far beam's hit
+  // continues the near surface (the line through the near beam and its other neighbour): the
+  // footprint covers one surface and returns its middle. Only a far hit off that line is an edge
+  // the footprint can straddle. Without the other neighbour the jump counts as an edge.
+  const int other = 2 * near - far;
+  if (other < 0 || other >= geometry_.beam_count()) return true;
+  const double r_other = true_ranges_m_[other];
+  if (r_other >= options_.range_max_m) return true;
+  const auto point = [&](int beam) {
+    const double angle = beam * angle_increment_rad;  // relative angles suffice
+    return Eigen::Vector2d(true_ranges_m_[beam] * std::cos(angle),
+                           true_ranges_m_[beam] * std::sin(angle));
+  };
+  const Eigen::Vector2d p_near = point(near), p_other = point(other), p_far = point(far);
+  const Eigen::Vector2d along = p_near - p_other;
+  const double length = along.norm();
+  if (length < 1e-9) return true;
+  const Eigen::Vector2d d = p_far - p_near;
+  const double off_line_m = std::abs(along.x() * d.y() - along.y() * d.x()) / length;
+  return off_line_m > 0.5 * options_.mixed_pixel_min_jump_m;
+}
+
 void LaserSensor::Measure(const Scene& scene, const RayCaster& caster, ScanMeasurement* out) {
   geometry_.Cast(scene, caster, options_.range_min_m, options_.range_max_m, out);
   if (options_.noise_free) return;
@@ -75,8 +99,10 @@ void LaserSensor::Measure(const Scene& scene, const RayCaster& caster, ScanMeasu
       const double a = true_ranges_m_[i], b = true_ranges_m_[i + 1];
       if (a >= range_max_m || b >= range_max_m) continue;
       if (std::abs(a - b) <= options_.mixed_pixel_min_jump_m) continue;
-      if (uniform(rng_) >= options_.mixed_pixel_probability) continue;
       const int far = a > b ? i : i + 1;
+      const int near = a > b ? i + 1 : i;
+      if (!IsDepthEdge(near, far, scan.angle_increment_rad)) continue;
+      if (uniform(rng_) >= options_.mixed_pixel_probability) continue;
       const double near_m = std::min(a, b);
       scan.ranges_m[far] = near_m + uniform(rng_) * std::abs(a - b);
       out->hit_geom_ids[far] = -1;  // a phantom point on no surface

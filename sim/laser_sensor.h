@@ -24,7 +24,8 @@ struct LaserOptions {
   double range_noise_sigma_m = 0.01;  // Gaussian; the LMS 200 data sheet gives +-15 mm typ.
   double dropout_probability = 0.0;   // a beam independently reports range_max_m
   // Mixed pixels (Ye & Borenstein, ICRA 2002): where two neighbouring beams' true ranges differ by
-  // more than mixed_pixel_min_jump_m, the beam on the far side straddles both surfaces with
+  // more than mixed_pixel_min_jump_m at a depth edge (the far hit is off the near surface, so not
+  // a wall seen at a grazing angle), the beam on the far side straddles both surfaces with
   // probability mixed_pixel_probability and reports a range uniform between them.
   bool mixed_pixels = false;
   double mixed_pixel_min_jump_m = 0.1;
@@ -61,6 +62,9 @@ class LaserSensor {
   int site_id() const { return geometry_.site().id; }
 
  private:
+  // Whether the true ranges of neighbouring beams `near` < `far` (in range) straddle a depth edge.
+  bool IsDepthEdge(int near, int far, double angle_increment_rad) const;
+
   const LaserOptions options_;
   const PlanarScan geometry_;
   std::vector<double> true_ranges_m_;  // scratch: geometric range per beam (range_max: no hit)

@@ -212,6 +212,31 @@ TEST(LaserSensorTest, MixedPixelsFallBetweenTheTwoSurfacesAtDepthEdges) {
   }
 }
 
+TEST(LaserSensorTest, AWallSeenAtAGrazingAngleGivesNoMixedPixels) {
+  Scene scene(RobotIn("p3dx", FloorWorld("laser_grazing"), {}));
+  const Eigen::Isometry3d X_WS = scene.SitePoseInWorld(*scene.FindSite("laser"));
+  // A wall 0.5 m to the left running along the beam directions: past about 3 m, neighbouring
+  // beams' ranges differ by more than the 0.1 m jump, yet there is no depth edge.
+  const SegmentCaster caster({{ToWorld(X_WS, -1.0, 0.5), ToWorld(X_WS, 7.5, 0.5), 1}});
+  LaserOptions options;
+  options.range_noise_sigma_m = 0.0;
+  options.mixed_pixels = true;
+  options.mixed_pixel_probability = 1.0;
+  LaserOptions exact = options;
+  exact.noise_free = true;
+  const ScanMeasurement truth = LaserSensor(scene, "laser", exact, 1).Measure(scene, caster);
+  int jumps = 0;
+  for (std::size_t i = 0; i + 1 < truth.scan.ranges_m.size(); ++i) {
+    const double a = truth.scan.ranges_m[i], b = truth.scan.ranges_m[i + 1];
+    if (a < options.range_max_m && b < options.range_max_m && std::abs(a - b) > 0.1) ++jumps;
+  }
+  ASSERT_GE(jumps, 5);  // the old rule would have mixed these
+  const ScanMeasurement m = LaserSensor(scene, "laser", options, 11).Measure(scene, caster);
+  for (std::size_t i = 0; i < m.scan.ranges_m.size(); ++i) {
+    EXPECT_NEAR(m.scan.ranges_m[i], truth.scan.ranges_m[i], 0.0005 + 1e-12) << "beam " << i;
+  }
+}
+
 TEST(LaserSensorTest, SameSeedSameScanOtherSeedOtherScan) {
   Scene scene(RobotIn("p3dx", FloorWorld("laser_seed"), {}));
   const Eigen::Isometry3d X_WS = scene.SitePoseInWorld(*scene.FindSite("laser"));

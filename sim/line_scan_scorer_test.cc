@@ -127,6 +127,16 @@ TEST(LineScanScorerTest, SplitAndMergeMeetsAcceptanceOnUnseenWorlds) {
          walls.push_back({{3.6, 1.0}, {3.6, -1.2}});
          return PolygonWorld(walls);
        }()},
+      {"rotated_room_with_columns",
+       // Round columns are cut into chords that match no wall unless the extractor sees they are
+       // round (perception/round_object_filter.h); a rotated box's corner must survive.
+       PolygonWorld({Rotated({{-2.4, -1.8}, {2.6, -1.8}, {2.6, 2.0}, {-2.4, 2.0}}, -14.0)},
+                    "<geom name=\"column_0\" type=\"cylinder\" pos=\"1.1 -0.5 0.5\" "
+                    "size=\"0.15 0.5\"/>\n"
+                    "<geom name=\"column_1\" type=\"cylinder\" pos=\"-0.8 1.2 0.5\" "
+                    "size=\"0.2 0.5\"/>\n"
+                    "<geom name=\"box\" type=\"box\" pos=\"-1.0 -0.9 0.4\" size=\"0.3 0.25 0.4\" "
+                    "euler=\"0 0 33\"/>\n")},
   };
   for (const auto& [name, xml] : worlds) {
     const Seed000RoomResult r = RunWorld(name, xml, 5);

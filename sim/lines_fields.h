@@ -31,6 +31,15 @@ void VisitFields(A& a, SegmentFilterOptions& o) {
   a("min_length_m", o.min_length_m);
 }
 
+// Flat beside each ordered extractor's own fields, like the segment filter's.
+template <typename A>
+void VisitFields(A& a, RoundObjectOptions& o) {
+  a("reject_round_objects", o.reject_round_objects);
+  a("max_round_radius_m", o.max_round_radius_m);
+  a("min_round_points", o.min_round_points);
+  a("min_round_arc_deg", o.min_round_arc_deg);
+}
+
 template <typename A>
 void VisitFields(A& a, ModalFitOptions& o) {
   a("pair_step", o.pair_step);
@@ -56,6 +65,7 @@ void VisitFields(A& a, SplitAndMergeOptions& o) {
       [](const std::string& t) { return ParseLineFitMethod(t); });
   a.Nested("modal", o.modal);
   VisitFields(a, o.filter);
+  VisitFields(a, o.round_objects);
 }
 
 template <typename A>
@@ -64,6 +74,7 @@ void VisitFields(A& a, IncrementalOptions& o) {
   a("max_distance_m", o.max_distance_m);
   a("seed_points", o.seed_points);
   VisitFields(a, o.filter);
+  VisitFields(a, o.round_objects);
 }
 
 template <typename A>

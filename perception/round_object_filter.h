@@ -1,0 +1,39 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <span>
+#include <vector>
+
+namespace plywood::perception {
+
+// Round objects (columns, table legs, bins) have no line to give, yet an ordered extractor cuts
+// them into chords that match no wall: most of the false lines in simulated rooms with columns.
+// After the extractor has cut a breakpoint group into lines, runs of two or more consecutive
+// lines that one small circle explains are dropped. A run is round when, after dropping points
+// more than 3 noise sigmas off the circle (the mixed pixels where a column meets the wall behind
+// it), at least 80 % of its points remain, the circle is seen from outside over at least
+// min_round_arc_deg of its circumference (a column shows nearly half of it; clutter that happens
+// to fit a circle shows a short piece), and the circle (3 parameters) explains the points
+//   (a) at least as well as the run's lines (2 parameters each plus the split points), residual
+//       variance over degrees of freedom, the lines refitted to the same points; or
+//   (b) at the noise level (RMS <= 1.5 sigma) with the lines' gain within what their extra
+//       parameters buy from noise (3 sigma^2 each): few points let two chords fit the noise.
+// Noise-free polygons keep their edges (their lines fit exactly, a circle cannot). Single lines
+// are never dropped: looser rules also removed clutter from the real CARMEN logs (docs/lines.md).
+struct RoundObjectOptions {
+  bool reject_round_objects = true;
+  double max_round_radius_m = 0.5;  // larger curves are walls; cutting them into chords is right
+  int min_round_points = 8;         // fewer points cannot tell an arc from two lines
+  double min_round_arc_deg = 120.0;
+
+  // @throws std::invalid_argument starting with the field name.
+  void Validate() const;
+};
+
+// Removes from `lines` (the lines of one breakpoint group in scan order, each a list of point
+// indices into `points`; sensor at the origin) every run of consecutive lines that is a round
+// object seen from outside. `noise_sigma_m` is the range noise of one point.
+void RemoveRoundObjects(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
+                        const RoundObjectOptions& options, std::vector<std::vector<int>>* lines);
+
+}  // namespace plywood::perception
