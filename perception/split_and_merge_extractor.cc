@@ -25,12 +25,11 @@ double FitDistance(const LineMoments& moments, const Eigen::Vector2d& q) {
 // wall next to the corner can stay with the other when they are within split_threshold_m of it.
 // Moves boundary points between neighbouring pieces while one fits the other line better (each
 // line fitted without that point): noise-free corners come out exact.
+// `left_moments` and `right_moments` are the pieces' moments, kept up to date.
 void MoveCornerPoints(std::span<const Eigen::Vector2d> p, std::vector<int>* left,
-                      std::vector<int>* right) {
+                      std::vector<int>* right, LineMoments& left_moments,
+                      LineMoments& right_moments) {
   if (left->size() < 4 || right->size() < 4) return;
-  LineMoments left_moments, right_moments;
-  for (int i : *left) left_moments.Add(p[i]);
-  for (int i : *right) right_moments.Add(p[i]);
   if (left->back() == right->front()) {  // a split point both pieces kept: one gives it up
     const Eigen::Vector2d& shared = p[left->back()];
     LineMoments left_without = left_moments, right_without = right_moments;
@@ -114,6 +113,7 @@ std::vector<LineSegment> SplitAndMergeExtractor::Extract(const ScanPoints& scan)
   std::vector<std::vector<int>> pieces;
   std::vector<std::pair<int, int>> stack;
   std::vector<int> position(p.size(), -1);  // of each point in its breakpoint group
+  std::vector<LineMoments> moments;         // of each merged piece
   for (std::vector<int>& group : SplitAtBreakpoints(scan, options_.breakpoints)) {
     if (static_cast<int>(group.size()) < min_points) continue;
     // Iterative end-point fit over positions [lo, hi] of `group` (inclusive).
@@ -207,14 +207,19 @@ std::vector<LineSegment> SplitAndMergeExtractor::Extract(const ScanPoints& scan)
       const int gap = position[right.front()] - position[left.back()];
       return gap >= 0 && gap <= 2;  // 0: a shared split point, 2: a skipped single outlier
     };
+    moments.assign(merged.size(), LineMoments());
+    for (std::size_t k = 0; k < merged.size(); ++k)
+      for (int i : merged[k]) moments[k].Add(p[i]);
     for (std::size_t k = 0; k + 1 < merged.size(); ++k) {
-      if (neighbours(merged[k], merged[k + 1])) MoveCornerPoints(p, &merged[k], &merged[k + 1]);
+      if (neighbours(merged[k], merged[k + 1])) {
+        MoveCornerPoints(p, &merged[k], &merged[k + 1], moments[k], moments[k + 1]);
+      }
     }
     // A closed scan without breakpoints is one group that starts and ends at the same corner.
     if (scan.closed && group.size() == p.size() && merged.size() >= 3 &&
         position[merged.front().front()] == 0 &&
         position[merged.back().back()] == static_cast<int>(group.size()) - 1) {
-      MoveCornerPoints(p, &merged.back(), &merged.front());
+      MoveCornerPoints(p, &merged.back(), &merged.front(), moments.back(), moments.front());
     }
     for (const auto& piece : merged) {
       if (static_cast<int>(piece.size()) < min_points) continue;
