@@ -16,6 +16,7 @@ constexpr double kTrimSigmas = 3.0;
 constexpr double kMinKeptFraction = 0.8;
 constexpr double kNoiseLevelSigmas = 1.5;
 constexpr double kChiSquarePerParameter = 3.0;
+constexpr double kMinBulgeSigmas = 3.0;
 
 // Whether lines[first..last] (inclusive) are one round object.
 bool IsRoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
@@ -25,6 +26,24 @@ bool IsRoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
   for (int k = first; k <= last; ++k) run.insert(run.end(), lines[k].begin(), lines[k].end());
   const int total = static_cast<int>(run.size());
   if (total < options.min_round_points) return false;
+  // Cheap test first: the near side of a round object bulges towards the sensor, beyond the
+  // chord between the run's ends; straight walls and concave corners do not (most runs).
+  {
+    const Eigen::Vector2d a = points[run.front()], b = points[run.back()];
+    Eigen::Vector2d normal(a.y() - b.y(), b.x() - a.x());
+    if (normal.norm() < 1e-12) return false;
+    normal.normalize();
+    if (normal.dot(-a) < 0.0) normal = -normal;  // towards the sensor
+    double bulge_m = 0.0;
+    for (int i : run) bulge_m = std::max(bulge_m, normal.dot(points[i] - a));
+    // A chord c of a circle of radius <= R_max has a sagitta >= R_max - sqrt(R_max^2 - c^2 / 4).
+    const double half_chord = 0.5 * (b - a).norm();
+    const double r_max = options.max_round_radius_m;
+    if (half_chord >= r_max) return false;
+    const double min_sagitta = r_max - std::sqrt(r_max * r_max - half_chord * half_chord);
+    const double noise_m = kMinBulgeSigmas * noise_sigma_m;
+    if (bulge_m < std::max(noise_m, min_sagitta - noise_m)) return false;
+  }
   std::optional<CircleFit> circle = FitCircle(points, run);
   if (!circle) return false;
   // Trim the points off the circle once and refit.
@@ -33,8 +52,11 @@ bool IsRoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
     return std::abs((points[i] - circle->centre).norm() - circle->radius_m) > trim_m;
   };
   std::vector<int> kept;
-  for (int i : run)
-    if (!off_circle(i)) kept.push_back(i);
+  std::vector<char> is_kept(run.size());  // in run order: lines[first..last] concatenated
+  for (std::size_t j = 0; j < run.size(); ++j) {
+    is_kept[j] = !off_circle(run[j]);
+    if (is_kept[j]) kept.push_back(run[j]);
+  }
   if (kept.size() < kMinKeptFraction * total ||
       static_cast<int>(kept.size()) < options.min_round_points) {
     return false;
@@ -68,13 +90,12 @@ bool IsRoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
   // The run's lines refitted to the kept points.
   const int line_count = last - first + 1;
   double lines_rss_m2 = 0.0;
+  std::size_t j = 0;
   for (int k = first; k <= last; ++k) {
     LineMoments moments;
-    std::vector<int> line_kept;
     for (int i : lines[k])
-      if (std::find(kept.begin(), kept.end(), i) != kept.end()) line_kept.push_back(i);
-    if (line_kept.size() < 3) continue;  // two points lie on their line exactly
-    for (int i : line_kept) moments.Add(points[i]);
+      if (is_kept[j++]) moments.Add(points[i]);
+    if (moments.count() < 3) continue;  // two points lie on their line exactly
     double alpha = 0.0, r = 0.0, rss = 0.0;
     moments.Fit(&alpha, &r, &rss);
     lines_rss_m2 += rss;
@@ -92,15 +113,6 @@ bool IsRoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
   const double noise_m2 = noise_sigma_m * noise_sigma_m;
   return circle_variance <= kNoiseLevelSigmas * kNoiseLevelSigmas * noise_m2 &&
          circle->rss_m2 - lines_rss_m2 <= kChiSquarePerParameter * (line_parameters - 3) * noise_m2;
-}
-
-// Diagonal of the bounding box of lines[first..last]: a circle of radius R fits in 2 R.
-double RunExtentM(std::span<const Eigen::Vector2d> points,
-                  const std::vector<std::vector<int>>& lines, int first, int last) {
-  Eigen::Vector2d lo = points[lines[first].front()], hi = lo;
-  for (int k = first; k <= last; ++k)
-    for (int i : lines[k]) lo = lo.cwiseMin(points[i]), hi = hi.cwiseMax(points[i]);
-  return (hi - lo).norm();
 }
 
 }  // namespace
@@ -125,6 +137,16 @@ void RemoveRoundObjects(std::span<const Eigen::Vector2d> points, double noise_si
   if (!options.reject_round_objects || lines->empty()) return;
   const int count = static_cast<int>(lines->size());
   std::vector<char> drop(count, 0);
+  // Bounding box of each line's points.
+  std::vector<Eigen::Vector2d> box_lo(count), box_hi(count);
+  for (int k = 0; k < count; ++k) {
+    if ((*lines)[k].empty()) continue;
+    box_lo[k] = box_hi[k] = points[(*lines)[k].front()];
+    for (int i : (*lines)[k]) {
+      box_lo[k] = box_lo[k].cwiseMin(points[i]);
+      box_hi[k] = box_hi[k].cwiseMax(points[i]);
+    }
+  }
   for (int first = 0; first < count;) {
     if ((*lines)[first].empty()) {
       ++first;
@@ -132,9 +154,12 @@ void RemoveRoundObjects(std::span<const Eigen::Vector2d> points, double noise_si
     }
     // The longest round run starting here.
     int round_last = -1;
+    Eigen::Vector2d lo = box_lo[first], hi = box_hi[first];
     for (int last = first + 1; last < count; ++last) {
       if ((*lines)[last].empty()) break;
-      if (RunExtentM(points, *lines, first, last) > 2.0 * options.max_round_radius_m) break;
+      // Points on a circle of radius R lie within 2 R of each other.
+      lo = lo.cwiseMin(box_lo[last]), hi = hi.cwiseMax(box_hi[last]);
+      if ((hi - lo).norm() > 2.0 * options.max_round_radius_m) break;
       if (IsRoundRun(points, noise_sigma_m, options, *lines, first, last)) round_last = last;
     }
     if (round_last < 0) {

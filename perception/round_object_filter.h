@@ -12,8 +12,9 @@ namespace plywood::perception {
 // lines that one small circle explains are dropped. A run is round when, after dropping points
 // more than 3 noise sigmas off the circle (the mixed pixels where a column meets the wall behind
 // it), at least 80 % of its points remain, the circle is seen from outside over at least
-// min_round_arc_deg of its circumference (a column shows nearly half of it; clutter that happens
-// to fit a circle shows a short piece), and the circle (3 parameters) explains the points
+// min_round_arc_deg of its circumference (a column shows nearly half of it, about 100 deg of it
+// sampled 3 m away; clutter that happens to fit a circle shows a short piece), and the circle (3
+// parameters) explains the points
 //   (a) at least as well as the run's lines (2 parameters each plus the split points), residual
 //       variance over degrees of freedom, the lines refitted to the same points; or
 //   (b) at the noise level (RMS <= 1.5 sigma) with the lines' gain within what their extra
@@ -24,7 +25,7 @@ struct RoundObjectOptions {
   bool reject_round_objects = true;
   double max_round_radius_m = 0.5;  // larger curves are walls; cutting them into chords is right
   int min_round_points = 8;         // fewer points cannot tell an arc from two lines
-  double min_round_arc_deg = 120.0;
+  double min_round_arc_deg = 100.0;
 
   // @throws std::invalid_argument starting with the field name.
   void Validate() const;

@@ -181,6 +181,9 @@ std::vector<LineSegment> SplitAndMergeExtractor::Extract(const ScanPoints& scan)
         }
       }
     }
+    // Round objects first: the merge below can join a column's chords into one line again (the
+    // union's own fit is closer to the arc than the chord the split tested).
+    RemoveRoundObjects(p, options_.breakpoints.sigma_m, options_.round_objects, &pieces);
     // Merge neighbours whose union is still one line (the end-point fit over-splits when the
     // chord of a long group passes far from its middle).
     std::vector<std::vector<int>> merged;
