@@ -11,18 +11,30 @@
 #include "render/overlay.h"
 #include "render/png_image.h"
 #include "render/world_to_pixel.h"
+#include "sim/lines_config.h"
 #include "sim/metrics.h"
+#include "sim/yaml_fields.h"
 
 namespace plywood::apps {
 
 int ReplayCommand(const std::vector<std::string>& args) {
-  const CommandLine line(args, {"--extractor", "--out"}, {"--skip-bad"});
+  const CommandLine line(args, {"--extractor", "--out", "--set"}, {"--skip-bad"});
   if (line.positional().size() != 1) {
-    throw UsageError{"usage: plywood replay LOG --extractor NAME [--out DIR] [--skip-bad]"};
+    throw UsageError{
+        "usage: plywood replay LOG --extractor NAME [--out DIR] [--skip-bad] "
+        "[--set EXTRACTOR.KEY=VALUE]..."};
   }
   const std::filesystem::path log_path = line.positional()[0];
   const std::string name = line.Value("--extractor").value_or("split_and_merge");
-  const auto extractor = perception::MakeLineExtractor(name);  // invalid_argument: exit 2
+  // Extractor options as in an experiment's `lines:` section, e.g.
+  // --set split_and_merge.min_points=5 (ConfigError naming the key: exit 2).
+  YAML::Node lines_node(YAML::NodeType::Map);
+  for (const std::string& assignment : line.Values("--set")) {
+    sim::ApplyOverride(lines_node, assignment, "--set " + assignment);
+  }
+  sim::LinesConfig lines;
+  sim::ReadLinesConfig(sim::YamlFields(lines_node, "--set", ""), lines);
+  const auto extractor = perception::MakeLineExtractor(name, lines.options);  // exit 2 if bad
   if (!std::filesystem::is_regular_file(log_path)) {
     throw std::invalid_argument(log_path.string() + ": no such log file");
   }

@@ -1,5 +1,6 @@
 // `plywood replay` on malformed CARMEN logs, end to end: a bad line gives one line on stderr with
-// the file and line number and exit code 2; with --skip-bad it is skipped and counted.
+// the file and line number and exit code 2; with --skip-bad it is skipped and counted. Extractor
+// options come from --set, checked like an experiment's `lines:` section.
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -61,6 +62,37 @@ TEST(ReplayCliTest, MalformedLinesFailWithTheirLineNumberOrAreSkippedAndCounted)
     EXPECT_EQ(skipped.exit_code, 0) << skipped.err;
     EXPECT_NE(skipped.out.find("(3 scans, 1 lines skipped)"), std::string::npos) << skipped.out;
     EXPECT_NE(Slurp(dir / "out" / "metrics.json").find("\"skipped_lines\": 1"), std::string::npos);
+  }
+}
+
+TEST(ReplayCliTest, ExtractorOptionsAreSetByKeyAndBadKeysAreNamed) {
+  const fs::path dir = testing::MakeTempDir("replay_cli_test_set");
+  // Three scans of a flat wall 2 m ahead: with at least 200 points per line (more than the ~120
+  // valid rays a scan has) nothing is extracted and nothing is explained.
+  const fs::path log =
+      testing::WriteFile(dir / "wall.log", GoodLine(0.0) + GoodLine(0.1) + GoodLine(0.2));
+  const Result defaults =
+      RunPlywood("replay " + log.string() + " --out " + (dir / "a").string(), dir);
+  ASSERT_EQ(defaults.exit_code, 0) << defaults.err;
+  EXPECT_NE(Slurp(dir / "a" / "metrics.json").find("\"lines\": 3"), std::string::npos);
+  const Result strict =
+      RunPlywood("replay " + log.string() + " --set split_and_merge.min_points=200 --out " +
+                     (dir / "b").string(),
+                 dir);
+  ASSERT_EQ(strict.exit_code, 0) << strict.err;
+  EXPECT_NE(Slurp(dir / "b" / "metrics.json").find("\"lines\": 0"), std::string::npos);
+
+  const std::vector<std::pair<std::string, std::string>> bad{
+      {"split_and_merge.min_pointz=5", "split_and_merge.min_pointz: unknown key"},
+      {"split_and_merge.min_points=1", "split_and_merge.min_points: must be >= 2"},
+      {"split_and_merge.min_points=many", "split_and_merge.min_points"},
+      {"nonsense", "expected key.path=value"}};
+  for (const auto& [assignment, message] : bad) {
+    const Result r = RunPlywood(
+        "replay " + log.string() + " --set " + assignment + " --out " + (dir / "c").string(), dir);
+    EXPECT_EQ(r.exit_code, 2) << assignment;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   }
 }
 
