@@ -38,6 +38,27 @@ std::string FormatNumber(double value) {
   return std::string(buffer, result.ptr);
 }
 
+namespace {
+
+// Appends only: GCC 12 at -O3 reports a false -Werror=restrict on "\n" + std::string(...)
+// (operator+ inserting at the front of a temporary).
+void StartMember(std::string& json, bool first_in_object, std::size_t depth,
+                 const std::string& name) {
+  if (!first_in_object) json += ',';
+  json += '\n';
+  json.append(2 * depth, ' ');
+  json += Quote(name);
+  json += ": ";
+}
+
+void CloseObject(std::string& json, std::size_t depth) {
+  json += '\n';
+  json.append(2 * depth, ' ');
+  json += '}';
+}
+
+}  // namespace
+
 std::string Metrics::ToJson() const {
   // Keys are sorted, so a depth-first walk opens and closes objects by comparing each key's path
   // with the previous one.
@@ -57,24 +78,23 @@ std::string Metrics::ToJson() const {
       ++common;
     }
     while (open.size() > common) {
-      json += "\n" + std::string(2 * open.size(), ' ') + "}";
+      CloseObject(json, open.size());
       open.pop_back();
       first_in_object = false;
     }
     for (std::size_t i = common; i + 1 < parts.size(); ++i) {
-      json += std::string(first_in_object ? "" : ",") + "\n" +
-              std::string(2 * (open.size() + 1), ' ') + Quote(parts[i]) + ": {";
+      StartMember(json, first_in_object, open.size() + 1, parts[i]);
+      json += '{';
       open.push_back(parts[i]);
       first_in_object = true;
     }
-    json += std::string(first_in_object ? "" : ",") + "\n" +
-            std::string(2 * (open.size() + 1), ' ') + Quote(parts.back()) + ": ";
+    StartMember(json, first_in_object, open.size() + 1, parts.back());
     json += std::holds_alternative<double>(value) ? FormatNumber(std::get<double>(value))
                                                   : Quote(std::get<std::string>(value));
     first_in_object = false;
   }
   while (!open.empty()) {
-    json += "\n" + std::string(2 * open.size(), ' ') + "}";
+    CloseObject(json, open.size());
     open.pop_back();
   }
   return json + "\n}\n";
