@@ -108,7 +108,16 @@ void WriteSonarMapPictures(const sim::ExperimentRunner& runner, const std::strin
   for (int iy = y0; iy <= y1; ++iy)
     for (int ix = x0; ix <= x1; ++ix) {
       const Eigen::Vector2d p = truth->raster.CellCentre(ix, iy);
-      const bool occupied = truth->raster.IsOccupied(ix, iy);
+      // The true geometry is drawn as its outline, so that what the map says inside an obstacle
+      // (and the wall band) stays visible.
+      auto solid = [&](int jx, int jy) {
+        return jx < 0 || jy < 0 || jx >= truth->raster.width || jy >= truth->raster.height ||
+               truth->raster.IsOccupied(jx, jy);
+      };
+      const bool occupied =
+          truth->raster.IsOccupied(ix, iy) &&
+          !(solid(ix - 1, iy) && solid(ix + 1, iy) && solid(ix, iy - 1) && solid(ix, iy + 1) &&
+            solid(ix - 2, iy) && solid(ix + 2, iy) && solid(ix, iy - 2) && solid(ix, iy + 2));
       const Eigen::Vector2i px = pixel(ix, iy);
       const Eigen::Vector2i c = explorer->grid().CellAt(p);
       const double prob = c.x() < 0 ? 0.5 : explorer->grid().Probability(c.x(), c.y());

@@ -57,6 +57,8 @@ void CognitiveMapOptions::Validate() const {
   if (!(fit_sigma_m > 0.0)) throw std::invalid_argument("fit_sigma_m: must be > 0");
   if (min_wall_points < 2) throw std::invalid_argument("min_wall_points: must be >= 2");
   if (min_obstacle_cells < 1) throw std::invalid_argument("min_obstacle_cells: must be >= 1");
+  if (!(std::isfinite(obstacle_join_m) && obstacle_join_m >= 0.0))
+    throw std::invalid_argument("obstacle_join_m: must be a finite number >= 0");
   if (!(wall_band_m >= 0.0)) throw std::invalid_argument("wall_band_m: must be >= 0");
   if (!(min_passage_m >= 0.0)) throw std::invalid_argument("min_passage_m: must be >= 0");
   if (!(side_free_overrun_m >= 0.0))
@@ -173,6 +175,7 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
            c.y() < map.room.y1 - band;
   };
   int next_id = 0;
+  std::vector<Rect> blobs;
   for (int iy = 0; iy < H; ++iy)
     for (int ix = 0; ix < W; ++ix) {
       // Obstacle blobs are the cells never seen free (their inside stays unknown) that touch
@@ -225,20 +228,56 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
       };
       // Obstacle sides are short: fit with a band as wide as the blob so every point counts.
       const double wide = 10.0;
-      Rect r;
-      r.x0 = FitSide(w, res, wide, sigma, 2).value_or(extreme(w, true));
-      r.x1 = FitSide(e, res, wide, sigma, 2).value_or(extreme(e, false));
-      r.y0 = FitSide(s, res, wide, sigma, 2).value_or(extreme(s, true));
-      r.y1 = FitSide(n, res, wide, sigma, 2).value_or(extreme(n, false));
-      r.x0 = Snap(std::max(r.x0, map.room.x0), xs, options.snap_distance_m);
-      r.x1 = Snap(std::min(r.x1, map.room.x1), xs, options.snap_distance_m);
-      r.y0 = Snap(std::max(r.y0, map.room.y0), ys, options.snap_distance_m);
-      r.y1 = Snap(std::min(r.y1, map.room.y1), ys, options.snap_distance_m);
+      // The sonar hears an obstacle's faces, never its inside, and seldom all of a face: the
+      // blob's extent (faces plus the unknown inside) is the obstacle. A fit would average a
+      // face with the edge of the unknown inside where part of that face went unheard.
+      Rect r{extreme(w, true), extreme(s, true), extreme(e, false), extreme(n, false)};
+      if (options.fit_obstacle_sides) {
+        r.x0 = FitSide(w, res, wide, sigma, 2).value_or(r.x0);
+        r.x1 = FitSide(e, res, wide, sigma, 2).value_or(r.x1);
+        r.y0 = FitSide(s, res, wide, sigma, 2).value_or(r.y0);
+        r.y1 = FitSide(n, res, wide, sigma, 2).value_or(r.y1);
+      }
+      r.x0 = std::max(r.x0, map.room.x0);
+      r.x1 = std::min(r.x1, map.room.x1);
+      r.y0 = std::max(r.y0, map.room.y0);
+      r.y1 = std::min(r.y1, map.room.y1);
       if (r.x1 - r.x0 < res || r.y1 - r.y0 < res) continue;
-      xs.insert(xs.end(), {r.x0, r.x1});
-      ys.insert(ys.end(), {r.y0, r.y1});
-      map.obstacles.push_back(r);
+      blobs.push_back(r);
     }
+  // Pieces closer than obstacle_join_m to each other or to a room side are one obstacle against
+  // it: the sonar splits a face it hears at the edge of its range, and the robot cannot drive
+  // through a gap that narrow to see into it.
+  const double join = options.obstacle_join_m;
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (std::size_t i = 0; i < blobs.size() && !merged; ++i)
+      for (std::size_t j = i + 1; j < blobs.size() && !merged; ++j) {
+        const Rect& a = blobs[i];
+        const Rect& b = blobs[j];
+        const double gap_x = std::max(a.x0, b.x0) - std::min(a.x1, b.x1);
+        const double gap_y = std::max(a.y0, b.y0) - std::min(a.y1, b.y1);
+        if (std::max(gap_x, gap_y) >= join) continue;
+        blobs[i] = {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1),
+                    std::max(a.y1, b.y1)};
+        blobs.erase(blobs.begin() + static_cast<std::ptrdiff_t>(j));
+        merged = true;
+      }
+  }
+  for (Rect r : blobs) {
+    if (r.x0 - map.room.x0 < join) r.x0 = map.room.x0;
+    if (map.room.x1 - r.x1 < join) r.x1 = map.room.x1;
+    if (r.y0 - map.room.y0 < join) r.y0 = map.room.y0;
+    if (map.room.y1 - r.y1 < join) r.y1 = map.room.y1;
+    r.x0 = Snap(r.x0, xs, options.snap_distance_m);
+    r.x1 = Snap(r.x1, xs, options.snap_distance_m);
+    r.y0 = Snap(r.y0, ys, options.snap_distance_m);
+    r.y1 = Snap(r.y1, ys, options.snap_distance_m);
+    if (r.x1 - r.x0 < res || r.y1 - r.y0 < res) continue;
+    xs.insert(xs.end(), {r.x0, r.x1});
+    ys.insert(ys.end(), {r.y0, r.y1});
+    map.obstacles.push_back(r);
+  }
 
   map.corners = {{map.room.x0, map.room.y0},
                  {map.room.x1, map.room.y0},

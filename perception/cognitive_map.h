@@ -19,6 +19,10 @@ struct CognitiveMapOptions {
   double min_passage_m = 0.45;    // free-free stretches narrower than the robot go into D
   // A room side with more free space than this beyond it is an obstacle face, not the wall.
   double side_free_overrun_m = 0.3;
+  // Obstacle pieces closer than this to each other or to a room side are joined to them.
+  double obstacle_join_m = 0.3;
+  // Obstacle sides: the blob's extent (false) or a chi-square fit of its extreme cells (true).
+  bool fit_obstacle_sides = false;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
 };

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/bumpers.h"
 #include "msgs/laser_scan.h"
 #include "msgs/pose2d.h"
 #include "msgs/range_ring.h"
@@ -19,6 +20,7 @@ struct ControllerInput {
   msgs::Pose2D X_WR_estimate;              // the pose the controller steers by
   const msgs::RangeRing* sonar = nullptr;  // latest sonar ring; null before the first one
   const msgs::LaserScan* laser = nullptr;  // latest laser scan; null before the first one
+  const msgs::Bumpers* bumpers = nullptr;  // latest bump panel states; null without bumpers
 };
 
 // A motion controller: called once per control tick, it returns the wheel speeds to hold until the

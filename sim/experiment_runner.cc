@@ -281,6 +281,7 @@ void ExperimentRunner::Run(const Progress& progress) {
       input.X_WR_estimate = p.steering ? p.steering->pose() : scene_->TruePose();
       input.sonar = p.last_sonar ? &*p.last_sonar : nullptr;
       input.laser = p.last_laser ? &*p.last_laser : nullptr;
+      input.bumpers = record_.bumpers.empty() ? nullptr : &record_.bumpers.back();
       scene_->SetWheelSpeeds(p.controller->Update(input));
       if (p.controller->Finished() && !finished) finished = true;
     }
