@@ -57,6 +57,8 @@ void CognitiveMapOptions::Validate() const {
   if (!(fit_sigma_m > 0.0)) throw std::invalid_argument("fit_sigma_m: must be > 0");
   if (min_wall_points < 2) throw std::invalid_argument("min_wall_points: must be >= 2");
   if (min_obstacle_cells < 1) throw std::invalid_argument("min_obstacle_cells: must be >= 1");
+  if (!(obstacle_free_p > 0.0 && obstacle_free_p <= eps))
+    throw std::invalid_argument("obstacle_free_p: must be in (0, eps]");
   if (!(std::isfinite(obstacle_join_m) && obstacle_join_m >= 0.0))
     throw std::invalid_argument("obstacle_join_m: must be a finite number >= 0");
   if (!(wall_band_m >= 0.0)) throw std::invalid_argument("wall_band_m: must be >= 0");
@@ -190,7 +192,9 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
         for (int dy = -1; dy <= 1; ++dy)
           for (int dx = -1; dx <= 1; ++dx) {
             const int nx = c.x() + dx, ny = c.y() + dy;
-            if (!grid.Contains(nx, ny) || seen_free[ny * W + nx] || !interior(nx, ny)) continue;
+            if (!grid.Contains(nx, ny) || !interior(nx, ny) ||
+                grid.Probability(nx, ny) < options.obstacle_free_p)
+              continue;
             if (component[ny * W + nx] >= 0) continue;
             component[ny * W + nx] = next_id;
             stack.push_back({nx, ny});

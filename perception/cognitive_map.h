@@ -19,6 +19,9 @@ struct CognitiveMapOptions {
   double min_passage_m = 0.45;    // free-free stretches narrower than the robot go into D
   // A room side with more free space than this beyond it is an obstacle face, not the wall.
   double side_free_overrun_m = 0.3;
+  // An obstacle blob grows over every cell not seen free with P below this (<= eps): corner
+  // echoes off the junction of an obstacle and a wall make its face look faintly free.
+  double obstacle_free_p = 0.3;
   // Obstacle pieces closer than this to each other or to a room side are joined to them.
   double obstacle_join_m = 0.3;
   // Obstacle sides: the blob's extent (false) or a chi-square fit of its extreme cells (true).

@@ -38,7 +38,10 @@ std::vector<Eigen::Vector2i> ShortestCellPath(const std::vector<char>& traversab
                                               const std::vector<char>& goal, int width, int height,
                                               const Eigen::Vector2i& start);
 // Line of sight between two cell centres: every cell the segment passes through is traversable
-// (the segment is sampled every quarter cell; the end cells are not checked).
+// (the segment is sampled every quarter cell; the end cells are not checked). Unlike
+// ShortestCellPath it lets a segment through the shared corner of two diagonal blocked cells and
+// can miss a very thin clip of a corner: the explorer's traversable cells are the free space
+// shrunk by path_clearance_m, so such a gap never sits next to anything solid.
 bool LineOfSight(const std::vector<char>& traversable, int width, int height,
                  const Eigen::Vector2i& a, const Eigen::Vector2i& b);
 // Drops the cells of a path that the line of sight lets the robot skip (string pulling): keeps

@@ -55,9 +55,6 @@ void SonarExplorerOptions::Validate() const {
   RequirePositive("bump_back_off_s", bump_back_off_s);
   RequirePositive("bump_back_off_speed_m_s", bump_back_off_speed_m_s);
   RequireNonNegative("front_margin_m", front_margin_m);
-  if (!(robot_radius_m + front_margin_m < path_clearance_m))
-    throw std::invalid_argument(
-        "front_margin_m: robot_radius_m + front_margin_m must be < path_clearance_m");
   RequirePositive("waypoint_tolerance_m", waypoint_tolerance_m);
   RequirePositive("explore_max_s", explore_max_s);
   if (frontier_min_cells < 1)
@@ -67,6 +64,9 @@ void SonarExplorerOptions::Validate() const {
   RequirePositive("path_clearance_m", path_clearance_m);
   if (!(path_clearance_m > robot_radius_m))
     throw std::invalid_argument("path_clearance_m: must be > robot_radius_m");
+  if (!(robot_radius_m + front_margin_m < path_clearance_m))
+    throw std::invalid_argument(
+        "front_margin_m: robot_radius_m + front_margin_m must be < path_clearance_m");
   RequirePositive("frontier_view_m", frontier_view_m);
   RequireNonNegative("frontier_wall_band_m", frontier_wall_band_m);
   if (!(frontier_view_m > waypoint_tolerance_m))

@@ -71,10 +71,13 @@ struct SonarExplorerOptions {
 // boundary (wall on the left) for one circuit, then repeatedly rebuilds the partition map, decays
 // the visit counts (c <- lambda c), counts a visit to the partition it is in, and drives to the
 // free partition with the highest utility U = 1/c (K if never visited) along the graph's shortest
-// x/y path. A move that a close front echo blocks puts the transition it was making into D. Once
-// every free partition was visited it drives to the nearest unknown frontier it has not yet come
-// close to (the places live in the room as fitted, which misses what was never seen). It
-// finishes when no place and no frontier is left, or after explore_max_s.
+// x/y path, or over the grid when that path would pass closer than path_clearance_m to anything
+// heard. A move that a close front echo (or an occupied cell of the grid) blocks puts the
+// transition it was making into D. Once every free partition was visited it drives to the nearest
+// unknown frontier it has not yet reached (the places live in the room as fitted, which misses what
+// was never seen). It finishes when no place and no frontier is left, or after explore_max_s.
+// A pressed bump panel marks the contact point for the planner and backs the robot away from it.
+// The commanded wheel speeds change at most max_wheel_accel_rad_s2.
 class SonarExplorer final : public robot::Controller {
  public:
   // @throws std::invalid_argument for invalid options.

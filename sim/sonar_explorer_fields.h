@@ -23,6 +23,7 @@ void VisitFields(A& a, perception::SonarExplorerOptions& o) {
   a("min_passage_m", o.map.min_passage_m);
   a("side_free_overrun_m", o.map.side_free_overrun_m);
   a("obstacle_join_m", o.map.obstacle_join_m);
+  a("obstacle_free_p", o.map.obstacle_free_p);
   a("fit_obstacle_sides", o.map.fit_obstacle_sides);
   a("wall_distance_m", o.wall_distance_m);
   a("perimeter_turn_rad", o.perimeter_turn_rad);
