@@ -1,0 +1,51 @@
+// CI gate for seed 001's cognitive map: runs the four shipped room experiments in full (about a
+// second each) and fails when the partition map's e or the grid's e rises above the committed
+// baseline (tests/baselines/sonar_map.json) plus its margin, when e misses issue 5's goal, or when
+// a bumper was pressed. Prints every figure.
+
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cstdio>
+#include <string>
+
+#include "tests/support/cli_test_support.h"
+#include "tests/support/mujoco_test_support.h"
+
+namespace plywood {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::MakeTempDir;
+using testing::RunPlywood;
+using testing::SourceRoot;
+
+TEST(SonarMapBaselineTest, MapErrorDoesNotWorsen) {
+  const YAML::Node baseline =
+      YAML::LoadFile((SourceRoot() / "tests" / "baselines" / "sonar_map.json").string());
+  const double margin = baseline["margin"].as<double>();
+  const double goal = baseline["goal"].as<double>();
+  const fs::path dir = MakeTempDir("sonar_map_baseline");
+  for (const auto& entry : baseline["layouts"]) {
+    const std::string name = entry.first.as<std::string>();
+    const fs::path out = dir / name;
+    const auto result =
+        RunPlywood("run " + (SourceRoot() / "experiments" / (name + ".yaml")).string() + " --out " +
+                       out.string() + " --quiet",
+                   dir);
+    ASSERT_EQ(result.exit_code, 0) << name << ": " << result.err;
+    const YAML::Node metrics = YAML::LoadFile((out / "metrics.json").string());
+    const double error = metrics["occupancy"]["error"].as<double>();
+    const double grid_error = metrics["occupancy"]["grid_error"].as<double>();
+    const double contacts = metrics["sensors"]["bumpers"]["contact_samples"].as<double>();
+    std::printf("%s e %.4f grid e %.4f contact samples %.0f\n", name.c_str(), error, grid_error,
+                contacts);
+    EXPECT_LE(error, entry.second["error"].as<double>() + margin) << name;
+    EXPECT_LE(error, goal) << name;
+    EXPECT_LE(grid_error, entry.second["grid_error"].as<double>() + margin) << name;
+    EXPECT_EQ(contacts, 0.0) << name;
+  }
+}
+
+}  // namespace
+}  // namespace plywood
