@@ -40,6 +40,7 @@ void SonarExplorerOptions::Validate() const {
   RequirePositive("wall_distance_m", wall_distance_m);
   RequirePositive("perimeter_turn_rad", perimeter_turn_rad);
   RequirePositive("perimeter_max_s", perimeter_max_s);
+  RequirePositive("perimeter_front_clearance_m", perimeter_front_clearance_m);
   RequirePositive("speed_m_s", speed_m_s);
   RequirePositive("turn_rate_rad_s", turn_rate_rad_s);
   RequirePositive("replan_period_s", replan_period_s);
@@ -84,6 +85,7 @@ SonarExplorer::SonarExplorer(const robot::DiffDriveSpec& spec, const SonarExplor
   follow.side = robot::WallSide::kLeft;
   follow.distance_m = options_.wall_distance_m;
   follow.speed_m_s = options_.speed_m_s;
+  follow.front_clearance_m = options_.perimeter_front_clearance_m;
   follower_ = std::make_unique<robot::WallFollowingController>(spec_, follow);
 }
 
@@ -225,10 +227,16 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
   if (best < 0) path_.clear();
   if (!best_unvisited) {
     // No reachable place left that was never visited: on to the unknown frontiers, and finish
-    // when none is left either.
-    std::vector<Eigen::Vector2d> frontier = PlanToFrontier(planning, here);
-    if (!frontier.empty()) {
-      path_ = std::move(frontier);
+    // when none is left either. Standing on a frontier goal already (the robot came to rest a few
+    // centimetres past where it marked one) is arriving there: look, then plan again. Each look
+    // marks new cells, so this ends.
+    std::optional<std::vector<Eigen::Vector2d>> frontier = PlanToFrontier(planning, here);
+    while (frontier && frontier->empty()) {
+      MarkLooked(here);
+      frontier = PlanToFrontier(planning, here);
+    }
+    if (frontier) {
+      path_ = std::move(*frontier);
       heading_to_frontier_ = true;
       target_partition_ = -1;
       return;
@@ -297,14 +305,15 @@ SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here
   return out;
 }
 
-std::vector<Eigen::Vector2d> SonarExplorer::CellPath(const std::vector<char>& traversable,
-                                                     const std::vector<char>& goal,
-                                                     const Eigen::Vector2d& here) const {
+std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::CellPath(
+    const std::vector<char>& traversable, const std::vector<char>& goal,
+    const Eigen::Vector2d& here) const {
   const int W = grid_.width(), H = grid_.height();
   const Eigen::Vector2i start = grid_.CellAt(here);
-  if (start.x() < 0) return {};
-  const std::vector<Eigen::Vector2i> path =
-      SimplifyPath(ShortestCellPath(traversable, goal, W, H, start), traversable, W, H);
+  if (start.x() < 0) return std::nullopt;
+  const std::vector<Eigen::Vector2i> cells = ShortestCellPath(traversable, goal, W, H, start);
+  if (cells.empty()) return std::nullopt;
+  const std::vector<Eigen::Vector2i> path = SimplifyPath(cells, traversable, W, H);
   std::vector<Eigen::Vector2d> waypoints;
   for (std::size_t k = 1; k < path.size(); ++k)
     waypoints.push_back(grid_.CellCentre(path[k].x(), path[k].y()));
@@ -345,13 +354,13 @@ std::vector<Eigen::Vector2d> SonarExplorer::SafePathTo(const PlanningCells& plan
   const Eigen::Vector2i t = grid_.CellAt(target);
   if (t.x() < 0) return {};
   goal[static_cast<std::size_t>(t.y()) * W + t.x()] = 1;
-  path = CellPath(traversable, goal, here);
+  path = CellPath(traversable, goal, here).value_or(std::vector<Eigen::Vector2d>{});
   if (!path.empty()) path.back() = target;
   return path;
 }
 
-std::vector<Eigen::Vector2d> SonarExplorer::PlanToFrontier(const PlanningCells& planning,
-                                                           const Eigen::Vector2d& here) const {
+std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToFrontier(
+    const PlanningCells& planning, const Eigen::Vector2d& here) const {
   const int W = grid_.width(), H = grid_.height();
   const double res = grid_.resolution_m();
   // Unknown cells next to an occupied one are the edge of a wall the sonar has heard, not space

@@ -1,0 +1,88 @@
+// CI gate for seed 001's map on rooms that are not in the repo: writes each room of
+// tests/baselines/sonar_map_unseen.json as MJCF, explores it with its layout's shipped experiment
+// and fails when e or the grid's e rises above the measured value plus the margin, or when the
+// robot touches something it did not touch before. Two rooms pin a fixed defect: the explorer
+// finished with a third of the room unknown because it stood on a frontier goal already.
+
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "tests/support/cli_test_support.h"
+#include "tests/support/mujoco_test_support.h"
+
+namespace plywood {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::MakeTempDir;
+using testing::RunPlywood;
+using testing::SourceRoot;
+
+std::string Box(const std::string& name, double x, double y, double hx, double hy, double hz) {
+  std::ostringstream s;
+  s << "<geom name=\"" << name << "\" type=\"box\" pos=\"" << x << " " << y << " " << hz
+    << "\" size=\"" << hx << " " << hy << " " << hz << "\"/>\n";
+  return s.str();
+}
+
+// Plywood walls 18 mm thick with their inner faces on x = +-w/2, y = +-h/2; boxes 0.6 m tall.
+std::string RoomMjcf(const YAML::Node& room) {
+  const double w = room["room"][0].as<double>(), h = room["room"][1].as<double>();
+  const double t = 0.009;
+  std::ostringstream s;
+  s << "<mujoco model=\"unseen_room\"><worldbody>\n"
+    << "<geom name=\"floor\" type=\"plane\" size=\"" << w / 2 + 0.5 << " " << h / 2 + 0.5
+    << " 0.05\"/>\n"
+    << Box("wall_0", 0, -h / 2 - t, w / 2 + 2 * t, t, 0.5)
+    << Box("wall_1", w / 2 + t, 0, t, h / 2, 0.5)
+    << Box("wall_2", 0, h / 2 + t, w / 2 + 2 * t, t, 0.5)
+    << Box("wall_3", -w / 2 - t, 0, t, h / 2, 0.5);
+  int i = 0;
+  for (const auto& b : room["boxes"])
+    s << Box("obstacle_" + std::to_string(i++), b[0].as<double>(), b[1].as<double>(),
+             b[2].as<double>(), b[3].as<double>(), 0.3);
+  s << "</worldbody></mujoco>\n";
+  return s.str();
+}
+
+TEST(SonarMapUnseenWorldsTest, MapErrorDoesNotWorsen) {
+  const YAML::Node baseline =
+      YAML::LoadFile((SourceRoot() / "tests" / "baselines" / "sonar_map_unseen.json").string());
+  const double margin = baseline["margin"].as<double>();
+  const fs::path dir = MakeTempDir("sonar_map_unseen");
+  for (const auto& entry : baseline["worlds"]) {
+    const std::string name = entry.first.as<std::string>();
+    const YAML::Node& room = entry.second;
+    const fs::path world = dir / (name + ".xml");
+    std::ofstream(world) << RoomMjcf(room);
+    const fs::path out = dir / name;
+    const YAML::Node& spawn = room["spawn"];
+    const std::string experiment =
+        "seed001_room_" + std::to_string(room["layout"].as<int>()) + ".yaml";
+    const auto result =
+        RunPlywood("run " + (SourceRoot() / "experiments" / experiment).string() + " --out " +
+                       out.string() + " --quiet --set world=" + world.string() +
+                       " --set robot.spawn.x_m=" + spawn[0].as<std::string>() +
+                       " --set robot.spawn.y_m=" + spawn[1].as<std::string>() +
+                       " --set robot.spawn.theta_deg=" + spawn[2].as<std::string>(),
+                   dir);
+    ASSERT_EQ(result.exit_code, 0) << name << ": " << result.err;
+    const YAML::Node metrics = YAML::LoadFile((out / "metrics.json").string());
+    const double error = metrics["occupancy"]["error"].as<double>();
+    const double grid_error = metrics["occupancy"]["grid_error"].as<double>();
+    const double contacts = metrics["sensors"]["bumpers"]["contact_samples"].as<double>();
+    std::printf("%s (layout %d) e %.4f grid e %.4f contact samples %.0f\n", name.c_str(),
+                room["layout"].as<int>(), error, grid_error, contacts);
+    EXPECT_LE(error, room["error"].as<double>() + margin) << name;
+    EXPECT_LE(grid_error, room["grid_error"].as<double>() + margin) << name;
+    EXPECT_LE(contacts, room["contacts"].as<double>()) << name;
+  }
+}
+
+}  // namespace
+}  // namespace plywood
