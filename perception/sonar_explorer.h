@@ -45,6 +45,9 @@ struct SonarExplorerOptions {
   // from it for this long at this speed.
   double bump_back_off_s = 1.5;
   double bump_back_off_speed_m_s = 0.1;
+  // A newly pressed panel sets the commanded wheel speeds to zero at once (the acceleration
+  // limit applies again from there).
+  bool bump_stops_wheels = true;
   double turn_rate_rad_s = 0.8;
   double replan_period_s = 2.0;
   double visit_decay = 0.95;         // lambda: c(p) <- lambda c(p) at every replan
@@ -81,8 +84,8 @@ struct SonarExplorerOptions {
 // transition it was making into D. Once every free partition was visited it drives to the nearest
 // unknown frontier it has not yet reached (the places live in the room as fitted, which misses what
 // was never seen). It finishes when no place and no frontier is left, or after explore_max_s.
-// A pressed bump panel marks the contact point for the planner and backs the robot away from it.
-// The commanded wheel speeds change at most max_wheel_accel_rad_s2.
+// A pressed bump panel marks the contact point for the planner, stops the wheels at once and backs
+// the robot away from it. Otherwise the commanded wheel speeds change at most max_wheel_accel_rad_s2.
 class SonarExplorer final : public robot::Controller {
  public:
   // @throws std::invalid_argument for invalid options.
@@ -163,6 +166,7 @@ class SonarExplorer final : public robot::Controller {
   std::vector<Eigen::Vector2d> blocking_echoes_;
   double backing_off_until_s_ = -1.0;
   double backing_off_speed_m_s_ = 0.0;
+  bool stop_at_once_ = false;  // a bump asks Update to zero the wheel speeds before ramping
   double last_replan_s_ = -1e9;
   double last_decay_s_ = -1.0;
   std::vector<Eigen::Vector2d> path_;

@@ -106,10 +106,18 @@ TEST(SonarExplorerTest, FirstCommandIsZeroAndWheelSpeedsChangeAtMostTheAccelerat
   int at_limit = 0;
   double fastest = 0.0;
   for (int k = 1; k < 300; ++k) {
-    // A front bump at 1.5 s asks for a step from forward to backward.
+    // A front bump at 1.5 s stops the wheels at once; from there the back-off ramps up.
     const msgs::Bumpers bump = Pressed(driver.time_s(), 0);
     const msgs::WheelSpeedCommand c = driver.Tick(k == 150 ? &bump : nullptr);
     SCOPED_TRACE(k);
+    if (k == 150) {
+      // From forward speed to zero, then one step towards the back-off (backwards), in one tick.
+      EXPECT_GT(Speed(last), 0.05);
+      EXPECT_NEAR(c.left_rad_s, -step, 1e-12);
+      EXPECT_NEAR(c.right_rad_s, -step, 1e-12);
+      last = c;
+      continue;
+    }
     const double dl = std::abs(c.left_rad_s - last.left_rad_s);
     const double dr = std::abs(c.right_rad_s - last.right_rad_s);
     EXPECT_LE(dl, step + 1e-12);
@@ -138,7 +146,7 @@ TEST(SonarExplorerTest, FrontBumpBacksOffAtTheBackOffSpeedWithinTheBackOffTime) 
     SCOPED_TRACE(k);
     const double now = Speed(driver.Tick(k == 0 ? &front : &none));
     if (!reached) {
-      // The rate limit lets the speed fall by at most a wheel step a tick, but it always falls.
+      // Stopped at once, then ramped towards the back-off: the speed always falls.
       EXPECT_LT(now, v);
       reached = std::abs(now + options.bump_back_off_speed_m_s) < 1e-9;
     } else {
@@ -151,6 +159,24 @@ TEST(SonarExplorerTest, FrontBumpBacksOffAtTheBackOffSpeedWithinTheBackOffTime) 
   // The back-off is over: the follower drives forward again.
   for (int k = 0; k < 100; ++k) v = Speed(driver.Tick(&none));
   EXPECT_GT(v, 0.0);
+}
+
+TEST(SonarExplorerTest, WithoutTheBumpStopTheLimitHoldsThroughABump) {
+  SonarExplorerOptions options = ClassicalOptions();
+  options.bump_stops_wheels = false;
+  auto explorer = MakeExplorer(options);
+  Driver driver(*explorer);
+  msgs::WheelSpeedCommand last{};
+  for (int k = 0; k < 100; ++k) last = driver.Tick();
+  ASSERT_GT(Speed(last), 0.05);
+  const msgs::Bumpers front = Pressed(driver.time_s(), 0);
+  const double step = options.max_wheel_accel_rad_s2 * kDt;
+  for (int k = 0; k < 50; ++k) {
+    const msgs::WheelSpeedCommand c = driver.Tick(k == 0 ? &front : nullptr);
+    EXPECT_LE(std::abs(c.left_rad_s - last.left_rad_s), step + 1e-12) << k;
+    EXPECT_LE(std::abs(c.right_rad_s - last.right_rad_s), step + 1e-12) << k;
+    last = c;
+  }
 }
 
 TEST(SonarExplorerTest, RearBumpBacksOffForwards) {
