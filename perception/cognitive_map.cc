@@ -51,6 +51,32 @@ double Snap(double value, const std::vector<double>& earlier, double d_e) {
 
 }  // namespace
 
+std::vector<Eigen::Vector2i> TrimThinEnds(const std::vector<Eigen::Vector2i>& cells,
+                                          double min_fill) {
+  if (cells.empty()) return cells;
+  std::map<int, int> in_row, in_column;
+  for (const Eigen::Vector2i& c : cells) {
+    ++in_row[c.y()];
+    ++in_column[c.x()];
+  }
+  // The outermost keys whose count reaches min_fill of the largest count.
+  auto span = [min_fill](const std::map<int, int>& counts) {
+    int fullest = 0;
+    for (const auto& [key, n] : counts) fullest = std::max(fullest, n);
+    const double needed = min_fill * fullest;
+    int lo = counts.rbegin()->first, hi = counts.begin()->first;
+    for (const auto& [key, n] : counts)
+      if (n >= needed) lo = std::min(lo, key), hi = std::max(hi, key);
+    return std::pair{lo, hi};
+  };
+  const auto [y0, y1] = span(in_row);
+  const auto [x0, x1] = span(in_column);
+  std::vector<Eigen::Vector2i> kept;
+  for (const Eigen::Vector2i& c : cells)
+    if (c.x() >= x0 && c.x() <= x1 && c.y() >= y0 && c.y() <= y1) kept.push_back(c);
+  return kept;
+}
+
 void CognitiveMapOptions::Validate() const {
   if (!(eps > 0.0 && eps < 0.5)) throw std::invalid_argument("eps: must be in (0, 0.5)");
   if (!(snap_distance_m >= 0.0)) throw std::invalid_argument("snap_distance_m: must be >= 0");
@@ -65,6 +91,8 @@ void CognitiveMapOptions::Validate() const {
   if (!(min_passage_m >= 0.0)) throw std::invalid_argument("min_passage_m: must be >= 0");
   if (!(side_free_overrun_m >= 0.0))
     throw std::invalid_argument("side_free_overrun_m: must be >= 0");
+  if (!(obstacle_min_fill >= 0.0 && obstacle_min_fill <= 1.0))
+    throw std::invalid_argument("obstacle_min_fill: must be in [0, 1]");
 }
 
 CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& inside,
@@ -204,6 +232,7 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
       int occupied_cells = 0;
       for (const auto& c : cells) occupied_cells += is_occ(c.x(), c.y());
       if (occupied_cells < options.min_obstacle_cells) continue;
+      if (options.obstacle_min_fill > 0.0) cells = TrimThinEnds(cells, options.obstacle_min_fill);
       // Per row the extreme cells give west/east boundary points, per column south/north.
       std::map<int, std::pair<int, int>> rows, cols;
       for (const auto& c : cells) {

@@ -26,6 +26,11 @@ struct CognitiveMapOptions {
   double obstacle_join_m = 0.3;
   // Obstacle sides: the blob's extent (false) or a chi-square fit of its extreme cells (true).
   bool fit_obstacle_sides = false;
+  // The extent spans only the outermost rows (columns) the blob fills to at least this fraction of
+  // its fullest row (column): corner echoes where a box meets a wall paint occupied wedges that
+  // taper along the wall, while a box, whose inside the sonar never sees free, fills every row.
+  // 0 keeps the whole blob.
+  double obstacle_min_fill = 0.3;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
 };
@@ -42,6 +47,12 @@ struct CognitiveMap {
   NegativeExperience negative;
   TopologicalGraph graph;
 };
+
+// The cells of `cells` inside the box spanned by the outermost rows and columns holding at least
+// min_fill times as many of them as the fullest row (column); cells between such rows stay, however
+// few. Empty input gives empty output.
+std::vector<Eigen::Vector2i> TrimThinEnds(const std::vector<Eigen::Vector2i>& cells,
+                                          double min_fill);
 
 // `inside`: a point known to be free inside the room (the start pose). Sides without enough
 // boundary points fall back to the outermost cell the grid has seen free.

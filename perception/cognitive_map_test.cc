@@ -224,6 +224,71 @@ TEST(CognitiveMapTest, ObstacleFartherFromAWallThanTheJoinDistanceKeepsItsFace) 
   ExpectTilesTheRoom(map);
 }
 
+// Cells of the rectangle [x0, x1] x [y0, y1] (inclusive cell indices).
+std::vector<Eigen::Vector2i> Block(int x0, int y0, int x1, int y1) {
+  std::vector<Eigen::Vector2i> cells;
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) cells.emplace_back(x, y);
+  return cells;
+}
+
+std::vector<Eigen::Vector2i> Sorted(std::vector<Eigen::Vector2i> cells) {
+  std::sort(cells.begin(), cells.end(), [](const Eigen::Vector2i& a, const Eigen::Vector2i& b) {
+    return std::tie(a.y(), a.x()) < std::tie(b.y(), b.x());
+  });
+  return cells;
+}
+
+TEST(TrimThinEndsTest, CutsATaperingWedgeBelowAFullBlock) {
+  // A 10 x 10 block (rows 0-9) and below it rows of 3, 2 and 1 cells.
+  std::vector<Eigen::Vector2i> cells = Block(0, 0, 9, 9);
+  for (const auto& c : {Block(0, -1, 2, -1), Block(0, -2, 1, -2), Block(0, -3, 0, -3)})
+    cells.insert(cells.end(), c.begin(), c.end());
+  // Rows need 0.3 x 10 = 3 cells: the 3-cell row stays, the 2- and 1-cell rows go. Columns 0-2
+  // hold 13, 12, 11 cells, the others 10: all reach 0.3 x 13.
+  std::vector<Eigen::Vector2i> want = Block(0, 0, 9, 9);
+  const std::vector<Eigen::Vector2i> row = Block(0, -1, 2, -1);
+  want.insert(want.end(), row.begin(), row.end());
+  EXPECT_EQ(Sorted(TrimThinEnds(cells, 0.3)), Sorted(want));
+  // At 0.5 the 3-cell row goes too.
+  EXPECT_EQ(Sorted(TrimThinEnds(cells, 0.5)), Sorted(Block(0, 0, 9, 9)));
+}
+
+TEST(TrimThinEndsTest, KeepsThinRowsBetweenFullOnes) {
+  // Two full 6-cell rows joined by a one-cell neck (rows 1-3 hold 1 cell, under 0.3 x 6; the
+  // columns hold 5 and 2 cells, all over 0.3 x 5): only the ends are trimmed, so all stays.
+  std::vector<Eigen::Vector2i> cells = Block(0, 0, 5, 0);
+  const std::vector<Eigen::Vector2i> top = Block(0, 4, 5, 4);
+  cells.insert(cells.end(), top.begin(), top.end());
+  for (int y = 1; y <= 3; ++y) cells.emplace_back(0, y);
+  EXPECT_EQ(Sorted(TrimThinEnds(cells, 0.3)), Sorted(cells));
+}
+
+TEST(TrimThinEndsTest, ZeroFillAndEmptyInputChangeNothing) {
+  std::vector<Eigen::Vector2i> cells = Block(0, 0, 4, 4);
+  cells.emplace_back(7, 7);  // a lone cell far away: its row and column hold one cell
+  EXPECT_EQ(Sorted(TrimThinEnds(cells, 0.0)), Sorted(cells));
+  EXPECT_EQ(Sorted(TrimThinEnds(cells, 0.3)), Sorted(Block(0, 0, 4, 4)));
+  EXPECT_TRUE(TrimThinEnds({}, 0.3).empty());
+}
+
+TEST(CognitiveMapTest, CornerEchoWedgeBelowAnObstacleIsNotPartOfIt) {
+  // A 0.5 x 0.5 m obstacle 0.2 m from the west wall (joined to it), and under its west end the
+  // occupied wedge that corner echoes paint along the wall: rows of 2, 1 and 1 cells.
+  LogOddsGrid grid = Room({{0.75, 1.30, 1.25, 1.80}});
+  for (const auto& [ix, iy] : {std::pair{15, 25}, {16, 25}, {15, 24}, {15, 23}})
+    for (int k = 0; k < 2; ++k) Mark(grid, ix, iy, 0.98);  // outweighs the free marks
+  CognitiveMapOptions whole_blob;
+  whole_blob.obstacle_min_fill = 0.0;
+  const CognitiveMap with_wedge = BuildCognitiveMap(grid, kInside, whole_blob);
+  ASSERT_EQ(with_wedge.obstacles.size(), 1u);
+  ExpectRectNear(with_wedge.obstacles[0], {kX0, 1.15, 1.25, 1.80});
+  const CognitiveMap map = BuildCognitiveMap(grid, kInside, {});
+  ASSERT_EQ(map.obstacles.size(), 1u);
+  ExpectRectNear(map.obstacles[0], {kX0, 1.30, 1.25, 1.80});
+  ExpectTilesTheRoom(map);
+}
+
 void ExpectThrowsNaming(const CognitiveMapOptions& options, const std::string& field) {
   try {
     options.Validate();
@@ -233,13 +298,18 @@ void ExpectThrowsNaming(const CognitiveMapOptions& options, const std::string& f
   }
 }
 
-TEST(CognitiveMapTest, InvalidJoinDistanceThrowsNamingTheField) {
+TEST(CognitiveMapTest, InvalidJoinDistanceOrFillThrowsNamingTheField) {
   EXPECT_NO_THROW(CognitiveMapOptions{}.Validate());
   for (const double join :
        {-0.1, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     CognitiveMapOptions options;
     options.obstacle_join_m = join;
     ExpectThrowsNaming(options, "obstacle_join_m");
+  }
+  for (const double fill : {-0.1, 1.1, std::numeric_limits<double>::quiet_NaN()}) {
+    CognitiveMapOptions options;
+    options.obstacle_min_fill = fill;
+    ExpectThrowsNaming(options, "obstacle_min_fill");
   }
   // BuildCognitiveMap validates too.
   CognitiveMapOptions options;

@@ -25,6 +25,7 @@ void VisitFields(A& a, perception::SonarExplorerOptions& o) {
   a("obstacle_join_m", o.map.obstacle_join_m);
   a("obstacle_free_p", o.map.obstacle_free_p);
   a("fit_obstacle_sides", o.map.fit_obstacle_sides);
+  a("obstacle_min_fill", o.map.obstacle_min_fill);
   a("wall_distance_m", o.wall_distance_m);
   a("perimeter_turn_rad", o.perimeter_turn_rad);
   a("perimeter_max_s", o.perimeter_max_s);
