@@ -103,6 +103,7 @@ int RunCommand(const std::vector<std::string>& args) {
   // Line extraction scores (lines: section); wall-clock time per scan goes to timing.json only.
   const std::vector<sim::ExtractorScore> line_scores = sim::AddLineMetrics(runner);
   sim::WriteRunOutputs(config, runner.record(), out_dir);
+  WriteSonarMap(runner, out_dir);
   if (snapshots) WriteSonarMapPictures(runner, out_dir);
   if (snapshots) {
     render::SnapshotOptions options;
@@ -116,11 +117,11 @@ int RunCommand(const std::vector<std::string>& args) {
   if (!quiet) PrintSummary(runner, out_dir);
   if (!quiet) {
     for (const auto& s : line_scores) {
-      std::printf("%-34s recall %.3f, precision %.3f, sigma_r %.4f m, sigma_alpha %.3f deg, "
-                  "%.1f points/line, %.1f us/scan\n",
-                  ("lines " + s.name).c_str(), s.score.Recall(), s.score.Precision(),
-                  s.score.SigmaRM(), s.score.SigmaAlphaDeg(), s.score.PointsPerLine(),
-                  s.us_per_scan);
+      std::printf(
+          "%-34s recall %.3f, precision %.3f, sigma_r %.4f m, sigma_alpha %.3f deg, "
+          "%.1f points/line, %.1f us/scan\n",
+          ("lines " + s.name).c_str(), s.score.Recall(), s.score.Precision(), s.score.SigmaRM(),
+          s.score.SigmaAlphaDeg(), s.score.PointsPerLine(), s.us_per_scan);
     }
   }
   return 0;

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 #include "apps/sonar_ground_truth.h"
+#include "perception/cognitive_map_json.h"
 #include "perception/sonar_explorer.h"
 #include "render/png_image.h"
 #include "sim/occupancy_raster.h"
@@ -91,6 +93,14 @@ bool AddSonarMapMetrics(sim::ExperimentRunner& runner) {
   m.Set("occupancy.rings", static_cast<double>(explorer->rings_integrated()));
   m.Set("occupancy.explored", explorer->Finished() ? 1.0 : 0.0);
   return true;
+}
+
+void WriteSonarMap(const sim::ExperimentRunner& runner, const std::string& out_dir) {
+  const auto* explorer = dynamic_cast<const perception::SonarExplorer*>(runner.controller());
+  if (explorer == nullptr) return;
+  std::filesystem::create_directories(out_dir);
+  std::ofstream(std::filesystem::path(out_dir) / "cognitive_map.json")
+      << perception::CognitiveMapToJson(explorer->Map());
 }
 
 void WriteSonarMapPictures(const sim::ExperimentRunner& runner, const std::string& out_dir) {

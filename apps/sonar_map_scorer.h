@@ -15,6 +15,10 @@ namespace plywood::apps {
 // (and does nothing) for any other controller.
 bool AddSonarMapMetrics(sim::ExperimentRunner& runner);
 
+// Writes DIR/cognitive_map.json (perception/cognitive_map_json.h): the map the explorer built, in
+// its odometry frame. No-op for other controllers.
+void WriteSonarMap(const sim::ExperimentRunner& runner, const std::string& out_dir);
+
 // Writes DIR/occupancy_grid.png and DIR/occupancy_partitions.png (partitions, graph and the true
 // geometry in red). No-op for other controllers.
 void WriteSonarMapPictures(const sim::ExperimentRunner& runner, const std::string& out_dir);

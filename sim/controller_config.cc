@@ -78,7 +78,12 @@ std::unique_ptr<robot::Controller> MakeController(const ControllerConfig& config
     if (o.sonar_model == "net") {
       std::filesystem::path weights = o.weights_file;
       if (weights.is_relative()) weights = DataRoot() / weights;
-      model = std::make_shared<perception::SonarNet>(perception::SonarNet::Load(weights));
+      try {
+        model = std::make_shared<perception::SonarNet>(perception::SonarNet::Load(weights));
+      } catch (const std::runtime_error& e) {
+        // Bad input like any other option: the runner names the experiment file with it.
+        throw std::invalid_argument(std::string("weights_file: ") + e.what());
+      }
     } else {
       model = std::make_shared<perception::ClassicalSonarModel>();
     }

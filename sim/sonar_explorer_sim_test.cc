@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "perception/sonar_explorer.h"
+#include "sim/config_error.h"
 #include "sim/experiment_config.h"
 #include "sim/experiment_runner.h"
 
@@ -43,8 +44,9 @@ TEST(SonarExplorerSimTest, CorruptedWeightsFileIsAClearError) {
     ExperimentRunner runner(
         LoadExperimentConfig(kExperiment, {"controller.weights_file=" + path.string()}));
     FAIL() << "no error";
-  } catch (const std::runtime_error& e) {
-    EXPECT_EQ(std::string(e.what()), path.string() + ": line 5: 'oops' is not a finite number");
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()), kExperiment + ": controller: weights_file: " + path.string() +
+                                         ": line 5: 'oops' is not a finite number");
   }
 }
 

@@ -151,6 +151,28 @@ TEST_F(BadInputTest, ControllerOptionOutOfRange) {
                      {"experiment.yaml", "controller", "duration_s"});
 }
 
+TEST_F(BadInputTest, CorruptedOrMissingSonarWeights) {
+  const std::string explorer = Replace(
+      SmallExperiment(), "controller: {type: wheel_script, segments: [[1.5, 3, 3], [1.5, -2, 2]]}",
+      "controller: {type: sonar_explorer, weights_file: weights.txt}");
+  const fs::path dir = MakeTempDir("sonar_weights_fixture");
+  // Truncated mid-layer, a word where a number goes, and no file at all: each one line, exit 2.
+  const std::string good = Slurp(SourceRoot() / "models" / "sonar_net_v1.txt");
+  ASSERT_GT(good.size(), 400u);
+  const fs::path truncated = WriteFile(dir / "truncated.txt", good.substr(0, 300));
+  const fs::path garbled =
+      WriteFile(dir / "garbled.txt", Replace(good, "layer 16 5", "layer sixteen 5"));
+  for (const auto& [path, words] : std::vector<std::pair<fs::path, std::vector<std::string>>>{
+           {truncated, {"truncated.txt", "line "}},
+           {garbled, {"garbled.txt", "line "}},
+           {dir / "absent.txt", {"absent.txt", "cannot open"}}}) {
+    SCOPED_TRACE(path.string());
+    std::vector<std::string> must = {"experiment.yaml", "controller", "weights_file"};
+    must.insert(must.end(), words.begin(), words.end());
+    ExpectOneLineError(explorer, "--set controller.weights_file=" + path.string(), must);
+  }
+}
+
 TEST(CliTest, MissingExperimentFile) {
   const fs::path dir = MakeTempDir("MissingExperimentFile");
   const Result result = RunPlywood("run /nonexistent/experiment.yaml", dir);

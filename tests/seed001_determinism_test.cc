@@ -1,5 +1,6 @@
-// Seed 001 end to end: the same experiment and seed give the same map, byte for byte in
-// metrics.json (issue 5's acceptance: same seed -> identical map and metrics).
+// Seed 001 end to end: the same experiment and seed give the same map and metrics, byte for byte
+// in cognitive_map.json, occupancy_grid.png and metrics.json (issue 5's acceptance: same seed ->
+// identical map and metrics).
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -33,7 +34,7 @@ int RunShort(const fs::path& dir, const std::string& name, int seed) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-TEST(Seed001DeterminismTest, SameSeedGivesIdenticalMetricsBytes) {
+TEST(Seed001DeterminismTest, SameSeedGivesIdenticalMapAndMetricsBytes) {
   const fs::path dir = MakeTempDir("seed001_determinism");
   ASSERT_EQ(RunShort(dir, "a", 1), 0) << Slurp(dir / "a.log");
   ASSERT_EQ(RunShort(dir, "b", 1), 0) << Slurp(dir / "b.log");
@@ -46,6 +47,13 @@ TEST(Seed001DeterminismTest, SameSeedGivesIdenticalMetricsBytes) {
   EXPECT_EQ(a, b);
   // The noise really depends on the seed, so the equality above is not vacuous.
   EXPECT_NE(a, c);
+  for (const char* file : {"cognitive_map.json", "occupancy_grid.png"}) {
+    SCOPED_TRACE(file);
+    const std::string map_a = Slurp(dir / "a" / file);
+    ASSERT_FALSE(map_a.empty());
+    EXPECT_EQ(map_a, Slurp(dir / "b" / file));
+    EXPECT_NE(map_a, Slurp(dir / "c" / file));
+  }
 }
 
 }  // namespace
