@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 
 #include "apps/sonar_ground_truth.h"
 #include "perception/cognitive_map_json.h"
@@ -99,8 +100,10 @@ void WriteSonarMap(const sim::ExperimentRunner& runner, const std::string& out_d
   const auto* explorer = dynamic_cast<const perception::SonarExplorer*>(runner.controller());
   if (explorer == nullptr) return;
   std::filesystem::create_directories(out_dir);
-  std::ofstream(std::filesystem::path(out_dir) / "cognitive_map.json")
-      << perception::CognitiveMapToJson(explorer->Map());
+  const std::filesystem::path path = std::filesystem::path(out_dir) / "cognitive_map.json";
+  std::ofstream file(path);
+  file << perception::CognitiveMapToJson(explorer->Map());
+  if (!file) throw std::runtime_error(path.string() + ": cannot write");
 }
 
 void WriteSonarMapPictures(const sim::ExperimentRunner& runner, const std::string& out_dir) {

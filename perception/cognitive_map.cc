@@ -63,7 +63,8 @@ std::vector<Eigen::Vector2i> TrimThinEnds(const std::vector<Eigen::Vector2i>& ce
   auto span = [min_fill](const std::map<int, int>& counts) {
     int fullest = 0;
     for (const auto& [key, n] : counts) fullest = std::max(fullest, n);
-    const double needed = min_fill * fullest;
+    // A row holding exactly min_fill of the fullest counts (0.7 * 10 is 7.000000000000001).
+    const double needed = min_fill * fullest - 1e-9;
     int lo = counts.rbegin()->first, hi = counts.begin()->first;
     for (const auto& [key, n] : counts)
       if (n >= needed) lo = std::min(lo, key), hi = std::max(hi, key);

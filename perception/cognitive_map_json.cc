@@ -1,6 +1,7 @@
 #include "perception/cognitive_map_json.h"
 
-#include <cstdio>
+#include <charconv>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -8,10 +9,14 @@ namespace plywood::perception {
 namespace {
 
 std::string Number(double v) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof(buffer), "%.4f", v);
+  if (!std::isfinite(v)) return "null";  // JSON has no NaN or infinity
+  // std::to_chars does not depend on the locale, so the bytes are the same on every machine.
+  char buffer[64];
+  const auto result =
+      std::to_chars(buffer, buffer + sizeof(buffer), v, std::chars_format::fixed, 4);
+  const std::string text(buffer, result.ptr);
   // "-0.0000" and "0.0000" are the same place.
-  return std::string(buffer) == "-0.0000" ? std::string("0.0000") : std::string(buffer);
+  return text == "-0.0000" ? std::string("0.0000") : text;
 }
 
 std::string Point(const Eigen::Vector2d& p) {

@@ -228,14 +228,15 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
   if (!best_unvisited) {
     // No reachable place left that was never visited: on to the unknown frontiers, and finish
     // when none is left either. Standing on a frontier goal already (the robot came to rest a few
-    // centimetres past where it marked one) is arriving there: look, then plan again. Each look
-    // marks new cells, so this ends.
+    // centimetres past where it marked one) is arriving there: look from here and from the centre
+    // of the robot's cell, which the goal test measures from; then no goal is left in that cell.
     std::optional<std::vector<Eigen::Vector2d>> frontier = PlanToFrontier(planning, here);
-    while (frontier && frontier->empty()) {
+    if (frontier && frontier->empty()) {
       MarkLooked(here);
+      MarkLooked(grid_.CellCentre(cell.x(), cell.y()));
       frontier = PlanToFrontier(planning, here);
     }
-    if (frontier) {
+    if (frontier && !frontier->empty()) {
       path_ = std::move(*frontier);
       heading_to_frontier_ = true;
       target_partition_ = -1;

@@ -33,10 +33,9 @@ struct SonarExplorerOptions {
   double wall_distance_m = 0.5;     // 0.45 grazed obstacle corners (layout 3)
   double perimeter_turn_rad = 6.0;  // heading change that closes the circuit (2 pi minus slack)
   double perimeter_max_s = 150.0;
-  // The follower turns on the spot at an inner corner when the wall ahead is this close. Close to
-  // wall_distance_m, so that after the turn the new wall is at about the wanted distance: with
-  // the follower's 0.8 m the robot stayed 0.8 m off every wall in a 3 m room and never saw the
-  // gaps behind obstacles.
+  // The follower turns on the spot at an inner corner when the wall ahead is this close. With 0.8 m
+  // the robot stays about 0.8 m off the walls of a 3 m room; 0.55-0.7 m were tried on unseen rooms
+  // (docs/sonar_map.md) and were no better, as the follower then cuts its turns short.
   double perimeter_front_clearance_m = 0.8;
   // Then the seed's utility loop over the partitions.
   double speed_m_s = 0.2;
@@ -85,7 +84,8 @@ struct SonarExplorerOptions {
 // unknown frontier it has not yet reached (the places live in the room as fitted, which misses what
 // was never seen). It finishes when no place and no frontier is left, or after explore_max_s.
 // A pressed bump panel marks the contact point for the planner, stops the wheels at once and backs
-// the robot away from it. Otherwise the commanded wheel speeds change at most max_wheel_accel_rad_s2.
+// the robot away from it. Otherwise the commanded wheel speeds change at most
+// max_wheel_accel_rad_s2.
 class SonarExplorer final : public robot::Controller {
  public:
   // @throws std::invalid_argument for invalid options.
