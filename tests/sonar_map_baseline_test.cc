@@ -9,15 +9,16 @@
 #include <cstdio>
 #include <string>
 
-#include "tests/support/cli_test_support.h"
 #include "tests/support/mujoco_test_support.h"
+#include "tests/support/sonar_map_test_support.h"
 
 namespace plywood {
 namespace {
 
 namespace fs = std::filesystem;
 using testing::MakeTempDir;
-using testing::RunPlywood;
+using testing::RunSonarMap;
+using testing::SonarMapScore;
 using testing::SourceRoot;
 
 TEST(SonarMapBaselineTest, MapErrorDoesNotWorsen) {
@@ -28,22 +29,14 @@ TEST(SonarMapBaselineTest, MapErrorDoesNotWorsen) {
   const fs::path dir = MakeTempDir("sonar_map_baseline");
   for (const auto& entry : baseline["layouts"]) {
     const std::string name = entry.first.as<std::string>();
-    const fs::path out = dir / name;
-    const auto result =
-        RunPlywood("run " + (SourceRoot() / "experiments" / (name + ".yaml")).string() + " --out " +
-                       out.string() + " --quiet",
-                   dir);
-    ASSERT_EQ(result.exit_code, 0) << name << ": " << result.err;
-    const YAML::Node metrics = YAML::LoadFile((out / "metrics.json").string());
-    const double error = metrics["occupancy"]["error"].as<double>();
-    const double grid_error = metrics["occupancy"]["grid_error"].as<double>();
-    const double contacts = metrics["sensors"]["bumpers"]["contact_samples"].as<double>();
-    std::printf("%s e %.4f grid e %.4f contact samples %.0f\n", name.c_str(), error, grid_error,
-                contacts);
-    EXPECT_LE(error, entry.second["error"].as<double>() + margin) << name;
-    EXPECT_LE(error, goal) << name;
-    EXPECT_LE(grid_error, entry.second["grid_error"].as<double>() + margin) << name;
-    EXPECT_EQ(contacts, 0.0) << name;
+    const SonarMapScore score = RunSonarMap(name + ".yaml", dir / name);
+    ASSERT_FALSE(::testing::Test::HasFatalFailure());
+    std::printf("%s e %.4f grid e %.4f contact samples %.0f\n", name.c_str(), score.error,
+                score.grid_error, score.contacts);
+    EXPECT_LE(score.error, entry.second["error"].as<double>() + margin) << name;
+    EXPECT_LE(score.error, goal) << name;
+    EXPECT_LE(score.grid_error, entry.second["grid_error"].as<double>() + margin) << name;
+    EXPECT_EQ(score.contacts, 0.0) << name;
   }
 }
 

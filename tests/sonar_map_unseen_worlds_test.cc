@@ -12,15 +12,16 @@
 #include <sstream>
 #include <string>
 
-#include "tests/support/cli_test_support.h"
 #include "tests/support/mujoco_test_support.h"
+#include "tests/support/sonar_map_test_support.h"
 
 namespace plywood {
 namespace {
 
 namespace fs = std::filesystem;
 using testing::MakeTempDir;
-using testing::RunPlywood;
+using testing::RunSonarMap;
+using testing::SonarMapScore;
 using testing::SourceRoot;
 
 std::string Box(const std::string& name, double x, double y, double hx, double hy, double hz) {
@@ -60,27 +61,20 @@ TEST(SonarMapUnseenWorldsTest, MapErrorDoesNotWorsen) {
     const YAML::Node& room = entry.second;
     const fs::path world = dir / (name + ".xml");
     std::ofstream(world) << RoomMjcf(room);
-    const fs::path out = dir / name;
     const YAML::Node& spawn = room["spawn"];
     const std::string experiment =
         "seed001_room_" + std::to_string(room["layout"].as<int>()) + ".yaml";
-    const auto result =
-        RunPlywood("run " + (SourceRoot() / "experiments" / experiment).string() + " --out " +
-                       out.string() + " --quiet --set world=" + world.string() +
-                       " --set robot.spawn.x_m=" + spawn[0].as<std::string>() +
-                       " --set robot.spawn.y_m=" + spawn[1].as<std::string>() +
-                       " --set robot.spawn.theta_deg=" + spawn[2].as<std::string>(),
-                   dir);
-    ASSERT_EQ(result.exit_code, 0) << name << ": " << result.err;
-    const YAML::Node metrics = YAML::LoadFile((out / "metrics.json").string());
-    const double error = metrics["occupancy"]["error"].as<double>();
-    const double grid_error = metrics["occupancy"]["grid_error"].as<double>();
-    const double contacts = metrics["sensors"]["bumpers"]["contact_samples"].as<double>();
+    const SonarMapScore score = RunSonarMap(
+        experiment, dir / name,
+        "--set world=" + world.string() + " --set robot.spawn.x_m=" + spawn[0].as<std::string>() +
+            " --set robot.spawn.y_m=" + spawn[1].as<std::string>() +
+            " --set robot.spawn.theta_deg=" + spawn[2].as<std::string>());
+    ASSERT_FALSE(::testing::Test::HasFatalFailure());
     std::printf("%s (layout %d) e %.4f grid e %.4f contact samples %.0f\n", name.c_str(),
-                room["layout"].as<int>(), error, grid_error, contacts);
-    EXPECT_LE(error, room["error"].as<double>() + margin) << name;
-    EXPECT_LE(grid_error, room["grid_error"].as<double>() + margin) << name;
-    EXPECT_LE(contacts, room["contacts"].as<double>()) << name;
+                room["layout"].as<int>(), score.error, score.grid_error, score.contacts);
+    EXPECT_LE(score.error, room["error"].as<double>() + margin) << name;
+    EXPECT_LE(score.grid_error, room["grid_error"].as<double>() + margin) << name;
+    EXPECT_LE(score.contacts, room["contacts"].as<double>()) << name;
   }
 }
 
