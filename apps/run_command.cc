@@ -51,6 +51,18 @@ void PrintSummary(const sim::ExperimentRunner& runner, const std::string& out_di
                 m.Number(key + "final_error_m"), m.Number(key + "heading_error_deg"),
                 m.Number(key + "drift_percent"), m.Number(key + "ate_rms_m"));
   }
+  if (m.values().count("occupancy.error")) {
+    std::printf(
+        "%-34s e %.4f (grid %.4f), %.0f partitions, graph %.0f nodes / %.0f arcs%s\n",
+        "cognitive map (seed 001)", m.Number("occupancy.error"), m.Number("occupancy.grid_error"),
+        m.Number("occupancy.partitions"), m.Number("occupancy.graph_nodes"),
+        m.Number("occupancy.graph_edges"),
+        m.Number("occupancy.explored") > 0.0 ? "" : " (time limit before the map was complete)");
+  }
+  if (m.values().count("sensors.bumpers.contact_samples")) {
+    std::printf("%-34s %.0f\n", "bumper contact samples",
+                m.Number("sensors.bumpers.contact_samples"));
+  }
   std::printf("%-34s %s\n", "results", out_dir.c_str());
 }
 
