@@ -422,7 +422,10 @@ std::optional<msgs::WheelSpeedCommand> SonarExplorer::ReactToBump(
   backing_off_speed_m_s_ =
       along >= 0.0 ? -options_.bump_back_off_speed_m_s : options_.bump_back_off_speed_m_s;
   backing_off_until_s_ = input.time_s + options_.bump_back_off_s;
-  stop_at_once_ = options_.bump_stops_wheels;
+  // Stop the wheels at once, as a base's bumper circuit does (Update ramps on from here): ramping
+  // down under the limit kept pushing into the obstacle for most of a second, and that slip was
+  // the drift.
+  if (options_.bump_stops_wheels) command_ = {};
   twist.linear_m_s = backing_off_speed_m_s_;
   return robot::TwistToWheelSpeeds(spec_, twist);
 }
@@ -500,10 +503,6 @@ msgs::WheelSpeedCommand SonarExplorer::Update(const robot::ControllerInput& inpu
   const double dt = last_command_s_ < 0.0 ? 0.0 : input.time_s - last_command_s_;
   last_command_s_ = input.time_s;
   const double step = options_.max_wheel_accel_rad_s2 * dt;
-  // A bump stops the wheels at once, as a base's bumper circuit does: ramping down under the
-  // limit kept pushing into the obstacle for most of a second, and that slip was the drift.
-  if (stop_at_once_) command_ = {};
-  stop_at_once_ = false;
   command_.left_rad_s += std::clamp(wanted.left_rad_s - command_.left_rad_s, -step, step);
   command_.right_rad_s += std::clamp(wanted.right_rad_s - command_.right_rad_s, -step, step);
   return command_;

@@ -166,7 +166,6 @@ class SonarExplorer final : public robot::Controller {
   std::vector<Eigen::Vector2d> blocking_echoes_;
   double backing_off_until_s_ = -1.0;
   double backing_off_speed_m_s_ = 0.0;
-  bool stop_at_once_ = false;  // a bump asks Update to zero the wheel speeds before ramping
   double last_replan_s_ = -1e9;
   double last_decay_s_ = -1.0;
   std::vector<Eigen::Vector2d> path_;

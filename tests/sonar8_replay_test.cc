@@ -102,7 +102,8 @@ TEST(Sonar8ReplayTest, WallsComeOutAsStraightOccupiedRuns) {
               occupied, row_run, col_run, out.c_str());
   // The first leg runs along +x (x 0 to 8.6 m, y 0 to -0.2 m) between two corridor walls, whose
   // echoes lie about 1.19 m to the left and 0.9 m to the right (with door openings).
-  auto band = [&](double y0, double y1, auto&& predicate) {
+  // The share of columns (x 1 to 8 m) holding an occupied cell between y0 and y1.
+  auto band = [&](double y0, double y1) {
     const double res = grid.resolution_m();
     const int columns = static_cast<int>(std::lround(7.0 / res)) + 1;  // x from 1 to 8 m
     const int rows = static_cast<int>(std::lround((y1 - y0) / res)) + 1;
@@ -111,14 +112,13 @@ TEST(Sonar8ReplayTest, WallsComeOutAsStraightOccupiedRuns) {
       bool hit = false;
       for (int j = 0; j < rows && !hit; ++j) {
         const Eigen::Vector2i c = grid.CellAt({1.0 + i * res, y0 + j * res});
-        hit = c.x() >= 0 && predicate(grid.Probability(c.x(), c.y()));
+        hit = c.x() >= 0 && grid.Probability(c.x(), c.y()) > 0.7;
       }
       hits += hit;
     }
     return static_cast<double>(hits) / columns;
   };
-  auto occupied_cell = [](double p) { return p > 0.7; };
-  const double left = band(1.05, 1.35, occupied_cell), right = band(-1.05, -0.75, occupied_cell);
+  const double left = band(1.05, 1.35), right = band(-1.05, -0.75);
   std::printf(
       "columns of the first leg with an occupied cell in the wall band: left %.3f, right %.3f\n",
       left, right);
