@@ -3,11 +3,11 @@
 #include <cstdio>
 
 #include "apps/command_line.h"
-#include "apps/line_bench.h"
-#include "sim/experiment_config.h"
-#include "sim/experiment_runner.h"
-#include "sim/ray_caster_bench.h"
-#include "sim/robot_catalog.h"
+#include "eval/lines/line_bench.h"
+#include "sim/config/experiment_config.h"
+#include "sim/config/robot_catalog.h"
+#include "sim/raycast/ray_caster_bench.h"
+#include "sim/runner/experiment_runner.h"
 
 namespace plywood::apps {
 
@@ -48,7 +48,7 @@ int BenchCommand(const std::vector<std::string>& args) {
   std::printf("%-28s %10.3f us  (%d geoms)\n", "mj_ray per ray", rays.mj_ray_us_per_ray,
               rays.world_geoms);
   std::printf("%-28s %10.3f us\n", "grid caster per ray", rays.grid_us_per_ray);
-  PrintLineExtractorBench();
+  eval::PrintLineExtractorBench();
   return 0;
 }
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "perception/parse_number.h"
+#include "perception/logs/parse_number.h"
 
 namespace plywood::apps {
 namespace {

@@ -15,7 +15,7 @@
 #include "apps/replay_command.h"
 #include "apps/run_command.h"
 #include "apps/train_command.h"
-#include "sim/config_error.h"
+#include "sim/config/config_error.h"
 
 namespace {
 

@@ -5,15 +5,15 @@
 #include <fstream>
 
 #include "apps/command_line.h"
-#include "perception/carmen_log.h"
-#include "perception/line_extractor_factory.h"
-#include "perception/log_replay.h"
+#include "perception/lines/line_extractor_factory.h"
+#include "perception/logs/carmen_log.h"
+#include "perception/logs/log_replay.h"
 #include "render/overlay.h"
 #include "render/png_image.h"
 #include "render/world_to_pixel.h"
-#include "sim/lines_config.h"
-#include "sim/metrics.h"
-#include "sim/yaml_fields.h"
+#include "sim/config/lines_config.h"
+#include "sim/config/yaml_fields.h"
+#include "sim/runner/metrics.h"
 
 namespace plywood::apps {
 

@@ -11,14 +11,14 @@
 #include <sstream>
 
 #include "apps/command_line.h"
-#include "apps/sonar_ground_truth.h"
-#include "perception/sonar_cell_model.h"
-#include "perception/sonar_net.h"
-#include "sim/mujoco_ray_caster.h"
-#include "sim/occupancy_raster.h"
-#include "sim/robot_catalog.h"
-#include "sim/scene.h"
-#include "sim/sonar_sensor.h"
+#include "eval/sonar_map/sonar_ground_truth.h"
+#include "perception/sonar_map/sonar_cell_model.h"
+#include "perception/sonar_map/sonar_net.h"
+#include "sim/config/robot_catalog.h"
+#include "sim/raycast/mujoco_ray_caster.h"
+#include "sim/sensors/sonar_sensor.h"
+#include "sim/world/occupancy_raster.h"
+#include "sim/world/scene.h"
 
 namespace plywood::apps {
 namespace {
@@ -134,7 +134,7 @@ void Generate(const RandomRoom& room, int poses, const std::filesystem::path& di
     mj_forward(m, d);
     sim::MujocoRayCaster caster(m, d);
     const msgs::RangeRing ring = sonar.Measure(scene, caster);
-    const ReachableSpace space = ComputeReachableSpace(raster, {x, y});
+    const eval::ReachableSpace space = eval::ComputeReachableSpace(raster, {x, y});
     const int ring_index = static_cast<int>(out->rings.size());
     out->rings.push_back(ring);
     const double c = std::cos(theta), s = std::sin(theta);

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "sim/mujoco_handles.h"
+#include "sim/world/mujoco_handles.h"
 
 namespace plywood::render {
 namespace {

@@ -22,8 +22,8 @@ TEST(FromBottomUpRowsTest, FirstInputRowBecomesBottomRow) {
   ASSERT_EQ(image.height, height);
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
-      EXPECT_EQ(PixelAt(image, x, y), (Rgb{static_cast<std::uint8_t>(height - 1 - y),
-                                           static_cast<std::uint8_t>(x), 7}))
+      EXPECT_EQ(PixelAt(image, x, y),
+                (Rgb{static_cast<std::uint8_t>(height - 1 - y), static_cast<std::uint8_t>(x), 7}))
           << "x=" << x << " y=" << y;
     }
   }

@@ -8,7 +8,7 @@
 #include "render/image_ops.h"
 #include "render/offscreen_context.h"
 #include "render/png_image.h"
-#include "sim/mujoco_handles.h"
+#include "sim/world/mujoco_handles.h"
 #include "tests/support/mujoco_test_support.h"
 
 namespace plywood::render {
@@ -18,7 +18,8 @@ namespace {
 std::string RoomWithRobotMjcf() {
   return R"(
 <mujoco>
-  <include file=")" + (testing::SourceRoot() / "models" / "p3dx.xml").string() + R"("/>
+  <include file=")" +
+         (testing::SourceRoot() / "models" / "p3dx.xml").string() + R"("/>
   <worldbody>
     <light pos="0 0 3" dir="0 0 -1" directional="true" diffuse="0.3 0.3 0.3"/>
     <geom name="floor" type="plane" size="0 0 1" rgba="0.55 0.55 0.52 1"/>
@@ -68,7 +69,8 @@ void ExpectPathDrawn(const Snapshot& s, const PathOverlay& path) {
   // Interior path points (away from the other path's crossing near the start) are painted.
   for (std::size_t i = 10; i < path.points_W.size(); i += 10) {
     const Eigen::Vector2d uv = s.picture.world_to_pixel.ToPixel(path.points_W[i]);
-    EXPECT_TRUE(IsBlack(PixelAt(s.picture.image, static_cast<int>(uv.x()), static_cast<int>(uv.y()))))
+    EXPECT_TRUE(
+        IsBlack(PixelAt(s.picture.image, static_cast<int>(uv.x()), static_cast<int>(uv.y()))))
         << i;
   }
 }

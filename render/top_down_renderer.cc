@@ -11,7 +11,7 @@
 #include "render/image_ops.h"
 #include "render/offscreen_context.h"
 #include "render/overlay.h"
-#include "sim/mujoco_handles.h"
+#include "sim/world/mujoco_handles.h"
 
 namespace plywood::render {
 namespace {

@@ -5,7 +5,7 @@
 #include "render/geom_footprint.h"
 #include "render/image_ops.h"
 #include "render/offscreen_context.h"
-#include "sim/mujoco_handles.h"
+#include "sim/world/mujoco_handles.h"
 
 namespace plywood::render {
 namespace {
@@ -55,8 +55,8 @@ RedBlob FindRed(const RgbImage& image) {
 TEST(TopDownCameraTest, FloorMappingOfTheCameraIsTheFramesMapping) {
   const TopDownFrame frame = FrameBounds({-2.0, 3.0, -1.0, 1.5}, 800);
   const double height_m = TopDownCameraHeightM(800, 0.5);
-  const WorldToPixel map = FloorMappingOf(MakeTopDownGlCamera(frame, height_m, 0.5),
-                                          frame.width_px, frame.height_px);
+  const WorldToPixel map =
+      FloorMappingOf(MakeTopDownGlCamera(frame, height_m, 0.5), frame.width_px, frame.height_px);
   for (const Eigen::Vector2d& p_W :
        {Eigen::Vector2d(-2.0, 1.5), Eigen::Vector2d(3.0, -1.0), Eigen::Vector2d(0.3, 0.7)}) {
     EXPECT_LT((map.ToPixel(p_W) - frame.world_to_pixel.ToPixel(p_W)).norm(), 0.01)

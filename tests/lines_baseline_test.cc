@@ -9,14 +9,14 @@
 #include <cstdio>
 #include <string>
 
-#include "sim/experiment_config.h"
-#include "sim/seed000_rooms.h"
+#include "eval/lines/seed000_rooms.h"
+#include "sim/config/experiment_config.h"
 
 namespace plywood {
 namespace {
 
 void Check(const YAML::Node& baseline, double margin, const std::string& set,
-           const std::vector<sim::ExtractorScore>& scores) {
+           const std::vector<eval::ExtractorScore>& scores) {
   for (const auto& s : scores) {
     const YAML::Node expected = baseline[set][s.name];
     std::printf(
@@ -40,9 +40,9 @@ TEST(LinesBaselineTest, RecallAndPrecisionDoNotWorsen) {
       root + "/experiments/seed000_rooms.yaml", {"seed=" + baseline["seed"].as<std::string>()});
 
   // The four seed-000 rooms at their paper range cuts.
-  std::vector<sim::ExtractorScore> rooms;
-  for (const auto& room : sim::ReadSeed000RoomsOptions(config).rooms) {
-    const auto result = sim::RunSeed000Room(config, room, scans);
+  std::vector<eval::ExtractorScore> rooms;
+  for (const auto& room : eval::ReadSeed000RoomsOptions(config).rooms) {
+    const auto result = eval::RunSeed000Room(config, room, scans);
     if (rooms.empty()) {
       rooms = result.scores;
     } else {
@@ -55,14 +55,14 @@ TEST(LinesBaselineTest, RecallAndPrecisionDoNotWorsen) {
   sim::ExperimentConfig office = config;
   office.world = "worlds/office.xml";
   office.world_path = root + "/worlds/office.xml";
-  std::vector<sim::TruthScan> office_scans;
+  std::vector<eval::TruthScan> office_scans;
   for (const auto& spot : baseline["office_spots"]) {
     const auto rig =
-        sim::TakeBackToBackScans(office, {spot[0].as<double>(), spot[1].as<double>()}, 0.0, scans);
-    for (auto& scan : sim::MakeTruthScans(rig, office.sensors.laser->range_max_m))
+        eval::TakeBackToBackScans(office, {spot[0].as<double>(), spot[1].as<double>()}, 0.0, scans);
+    for (auto& scan : eval::MakeTruthScans(rig, office.sensors.laser->range_max_m))
       office_scans.push_back(std::move(scan));
   }
-  Check(baseline, margin, "office", sim::ScoreExtractors(office_scans, config.lines));
+  Check(baseline, margin, "office", eval::ScoreExtractors(office_scans, config.lines));
 }
 
 }  // namespace

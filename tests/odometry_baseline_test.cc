@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <string>
 
-#include "sim/experiment_config.h"
-#include "sim/experiment_runner.h"
+#include "sim/config/experiment_config.h"
+#include "sim/runner/experiment_runner.h"
 
 namespace plywood {
 namespace {

@@ -5,10 +5,10 @@
 
 #include <filesystem>
 
-#include "perception/carmen_log.h"
-#include "sim/experiment_config.h"
-#include "sim/experiment_runner.h"
-#include "sim/run_writer.h"
+#include "perception/logs/carmen_log.h"
+#include "sim/config/experiment_config.h"
+#include "sim/runner/experiment_runner.h"
+#include "sim/runner/run_writer.h"
 #include "tests/support/mujoco_test_support.h"
 
 namespace plywood {

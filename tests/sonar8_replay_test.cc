@@ -10,9 +10,9 @@
 #include <fstream>
 #include <string>
 
-#include "perception/log_odds_grid.h"
-#include "perception/sonar8_log.h"
-#include "perception/sonar_cell_model.h"
+#include "perception/logs/sonar8_log.h"
+#include "perception/sonar_map/log_odds_grid.h"
+#include "perception/sonar_map/sonar_cell_model.h"
 #include "render/png_image.h"
 
 namespace plywood {

@@ -5,7 +5,7 @@
 #include <Eigen/Core>
 #include <string>
 
-#include "sim/mujoco_handles.h"
+#include "sim/world/mujoco_handles.h"
 
 namespace plywood::testing {
 

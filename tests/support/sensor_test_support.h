@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "msgs/pose2d.h"
-#include "sim/ray_caster.h"
-#include "sim/scene.h"
+#include "sim/raycast/ray_caster.h"
+#include "sim/world/scene.h"
 
 namespace plywood::testing {
 

@@ -1,0 +1,62 @@
+#include "eval/lines/line_bench.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <random>
+
+#include "perception/lines/line_extractor_factory.h"
+
+namespace plywood::eval {
+namespace {
+
+// 361 beams over 180 deg at 0.5 deg from (0, 0), facing +x, inside the polygon `corners`.
+msgs::LaserScan RoomScan() {
+  const std::vector<Eigen::Vector2d> corners{{-1.0, -1.2}, {3.0, -1.2}, {3.0, 0.8},
+                                             {1.2, 0.8},   {1.2, 2.5},  {-1.0, 2.5}};
+  msgs::LaserScan scan;
+  scan.angle_min_rad = -std::numbers::pi / 2;
+  scan.angle_increment_rad = std::numbers::pi / 360;
+  scan.range_max_m = 8.0;
+  std::mt19937_64 rng(1);
+  std::normal_distribution<double> noise(0.0, 0.01);
+  for (int i = 0; i < 361; ++i) {
+    const double a = scan.BeamAngleRad(i);
+    const Eigen::Vector2d d(std::cos(a), std::sin(a));
+    double best = 8.0;
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+      const Eigen::Vector2d p = corners[k], e = corners[(k + 1) % corners.size()] - p;
+      const double den = d.x() * e.y() - d.y() * e.x();
+      if (std::abs(den) < 1e-12) continue;
+      const double t = (p.x() * e.y() - p.y() * e.x()) / den;
+      const double u = (p.x() * d.y() - p.y() * d.x()) / den;
+      if (t > 0 && u >= 0 && u <= 1) best = std::min(best, t);
+    }
+    scan.ranges_m.push_back(best + noise(rng));
+  }
+  return scan;
+}
+
+}  // namespace
+
+void PrintLineExtractorBench(double seconds_per_extractor) {
+  const perception::ScanPoints scan =
+      perception::MakeScanPoints(RoomScan(), perception::ScanFilter{});
+  std::printf("line extraction, 361-beam scan (%zu points), 1 core:\n", scan.size());
+  for (const std::string& name : perception::LineExtractorNames()) {
+    const auto extractor = perception::MakeLineExtractor(name);
+    std::size_t lines = 0;
+    long scans = 0;
+    const auto start = std::chrono::steady_clock::now();
+    double elapsed = 0.0;
+    while (elapsed < seconds_per_extractor) {
+      for (int k = 0; k < 20; ++k, ++scans) lines += extractor->Extract(scan).size();
+      elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
+    std::printf("  %-26s %10.0f scans/s  (%.1f lines per scan)\n", name.c_str(), scans / elapsed,
+                static_cast<double>(lines) / scans);
+  }
+}
+
+}  // namespace plywood::eval

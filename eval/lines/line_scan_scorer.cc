@@ -1,0 +1,112 @@
+#include "eval/lines/line_scan_scorer.h"
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "perception/lines/line_extractor_factory.h"
+
+namespace plywood::eval {
+
+TruthScan MakeTruthScan(std::span<const sim::LaserRecord* const> records,
+                        const sim::GroundTruthWalls& walls, double range_cut_m) {
+  TruthScan out;
+  if (records.empty()) return out;
+  const msgs::Pose2D X_WS0 = records[0]->X_WR_truth * records[0]->scan.X_RS;
+  std::vector<msgs::LaserScan> scans;
+  std::vector<double> offsets;
+  for (const sim::LaserRecord* record : records) {
+    const msgs::Pose2D X_WS = record->X_WR_truth * record->scan.X_RS;
+    if (std::hypot(X_WS.x_m - X_WS0.x_m, X_WS.y_m - X_WS0.y_m) > 1e-3) {
+      throw std::invalid_argument("records: combined scans must share the sensor origin");
+    }
+    scans.push_back(record->scan);
+    offsets.push_back(X_WS.theta_rad - X_WS0.theta_rad);
+  }
+  const perception::ScanFilter filter{0.0, 1e18, range_cut_m};  // the scan's own limits apply too
+  out.points = perception::MakeCombinedScanPoints(scans, offsets, filter);
+
+  // Which used point hit which wall face: beam indices run over the concatenated records.
+  std::vector<int> hit_segment;
+  for (const sim::LaserRecord* record : records) {
+    hit_segment.insert(hit_segment.end(), record->hit_segment_ids.begin(),
+                       record->hit_segment_ids.end());
+  }
+  const msgs::Pose2D X_S0W = X_WS0.Inverse();
+  out.truth.resize(walls.segments.size());
+  for (std::size_t k = 0; k < walls.segments.size(); ++k) {
+    const auto to_sensor = [&](const Eigen::Vector2d& p_W) {
+      const msgs::Pose2D p = X_S0W * msgs::Pose2D{p_W.x(), p_W.y(), 0.0};
+      return Eigen::Vector2d(p.x_m, p.y_m);
+    };
+    out.truth[k].a = to_sensor(walls.segments[k].a);
+    out.truth[k].b = to_sensor(walls.segments[k].b);
+  }
+  for (int beam : out.points.beam_index) {
+    const int segment = hit_segment[beam];
+    if (segment >= 0) ++out.truth[segment].observed_rays;
+  }
+  return out;
+}
+
+std::vector<ExtractorScore> ScoreExtractors(std::span<const TruthScan> scans,
+                                            const sim::LinesConfig& config) {
+  std::vector<ExtractorScore> scores;
+  for (const std::string& name : config.extractors) {
+    const auto extractor = perception::MakeLineExtractor(name, config.options);
+    ExtractorScore result;
+    result.name = name;
+    double seconds = 0.0;
+    for (const TruthScan& scan : scans) {
+      const auto start = std::chrono::steady_clock::now();
+      const std::vector<perception::LineSegment> lines = extractor->Extract(scan.points);
+      seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      result.score.Add(perception::ScoreScan(
+          lines, scan.truth, static_cast<long>(scan.points.size()), config.scoring));
+    }
+    result.us_per_scan = scans.empty() ? 0.0 : 1e6 * seconds / static_cast<double>(scans.size());
+    scores.push_back(std::move(result));
+  }
+  return scores;
+}
+
+void SetLineMetrics(std::span<const ExtractorScore> scores, long scans, sim::Metrics& metrics,
+                    const std::string& prefix) {
+  metrics.Set(prefix + ".scans", static_cast<double>(scans));
+  for (const ExtractorScore& s : scores) {
+    const std::string key = prefix + "." + s.name + ".";
+    metrics.Set(key + "recall", s.score.Recall());
+    metrics.Set(key + "precision", s.score.Precision());
+    metrics.Set(key + "sigma_r_m", s.score.SigmaRM());
+    metrics.Set(key + "sigma_alpha_deg", s.score.SigmaAlphaDeg());
+    metrics.Set(key + "points_per_line", s.score.PointsPerLine());
+    metrics.Set(key + "lines_per_scan",
+                scans ? static_cast<double>(s.score.extracted) / static_cast<double>(scans) : 0.0);
+  }
+}
+
+std::vector<ExtractorScore> AddLineMetrics(sim::ExperimentRunner& runner) {
+  const sim::LinesConfig& config = runner.config().lines;
+  sim::RunRecord& record = runner.mutable_record();
+  if (!config.given || record.laser.empty()) return {};
+  std::vector<TruthScan> scans;
+  scans.reserve(record.laser.size());
+  for (const sim::LaserRecord& laser : record.laser) {
+    const sim::LaserRecord* one[] = {&laser};
+    scans.push_back(MakeTruthScan(one, record.walls, config.range_cut_m));
+  }
+  std::vector<ExtractorScore> scores = ScoreExtractors(scans, config);
+  SetLineMetrics(scores, static_cast<long>(scans.size()), record.metrics);
+  return scores;
+}
+
+std::string LineTimingJson(std::span<const ExtractorScore> scores) {
+  std::string json = "{\"lines\": {";
+  for (std::size_t i = 0; i < scores.size(); ++i) {
+    json += (i ? ", \"" : "\"") + scores[i].name +
+            "\": {\"us_per_scan\": " + sim::FormatNumber(scores[i].us_per_scan) + "}";
+  }
+  return json + "}}\n";
+}
+
+}  // namespace plywood::eval

@@ -1,0 +1,55 @@
+#pragma once
+
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "perception/lines/line_extractor.h"
+#include "perception/lines/line_scoring.h"
+#include "perception/lines/scan_points.h"
+#include "sim/config/lines_config.h"
+#include "sim/runner/experiment_runner.h"
+
+namespace plywood::eval {
+
+// One scan as the line scorer sees it: the used points in the sensor frame (S of the first record)
+// and every ground-truth wall face in that frame, each with the number of used points that hit it.
+struct TruthScan {
+  perception::ScanPoints points;
+  std::vector<perception::TruthSegment> truth;
+};
+
+// Builds a TruthScan from laser records taken from one spot (one record, or two back-to-back LMS
+// 200 whose sensor origins coincide): a return is used when range_min_m < r < range_max_m of its
+// scan and r <= range_cut_m. Poses are the ground truth ones.
+// @throws std::invalid_argument when the records' sensor origins are more than 1 mm apart.
+TruthScan MakeTruthScan(std::span<const sim::LaserRecord* const> records,
+                        const sim::GroundTruthWalls& walls, double range_cut_m);
+
+// Score of one extractor over many scans, and its wall-clock cost (never written to
+// metrics.json: reruns must give the same bytes).
+struct ExtractorScore {
+  std::string name;
+  perception::LineScore score;
+  double us_per_scan = 0.0;
+};
+
+// Runs each of config.extractors on every scan and scores it (perception/lines/line_scoring.h).
+std::vector<ExtractorScore> ScoreExtractors(std::span<const TruthScan> scans,
+                                            const sim::LinesConfig& config);
+
+// Adds lines.<extractor>.{recall, precision, sigma_r_m, sigma_alpha_deg, points_per_line,
+// lines_per_scan} and lines.scans to `metrics`.
+void SetLineMetrics(std::span<const ExtractorScore> scores, long scans, sim::Metrics& metrics,
+                    const std::string& prefix = "lines");
+
+// The post-run scorer of `lines:`: every laser scan of the run, scored with the config's
+// extractors; metrics into the run's record. Returns the scores (with timings) for printing, or
+// nothing when the experiment has no lines section or no laser.
+std::vector<ExtractorScore> AddLineMetrics(sim::ExperimentRunner& runner);
+
+// {"lines": {"<extractor>": {"us_per_scan": ...}}} as JSON text, for timing.json.
+std::string LineTimingJson(std::span<const ExtractorScore> scores);
+
+}  // namespace plywood::eval

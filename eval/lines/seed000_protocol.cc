@@ -1,0 +1,141 @@
+#include "eval/lines/seed000_protocol.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+#include "eval/lines/seed000_rooms.h"
+#include "render/overlay.h"
+#include "render/png_image.h"
+#include "render/world_to_pixel.h"
+#include "sim/config/experiment_config.h"
+
+namespace plywood::eval {
+namespace {
+
+void WriteText(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+// Ground-truth faces (grey; observed ones black), the first scan pair's points (red) and the
+// first extractor's segments on it (blue), in the world frame (= the front sensor's frame).
+void WriteRoomPicture(const eval::Seed000RoomResult& result, const sim::LinesConfig& lines,
+                      const std::filesystem::path& path) {
+  if (result.scans.empty()) return;
+  const eval::TruthScan& scan = result.scans.front();
+  render::WorldBounds bounds = render::WorldBounds::Empty();
+  for (const auto& p : scan.points.points) bounds.Extend(p);
+  bounds.Extend(Eigen::Vector2d::Zero());
+  if (bounds.IsEmpty() || bounds.width_m() + bounds.height_m() <= 0.0) return;
+  const render::TopDownFrame frame = render::FrameBounds(bounds.Padded(0.5), 900);
+  render::RgbImage image(frame.width_px, frame.height_px);
+  render::Fill(image, render::colours::kWhite);
+  for (const auto& t : scan.truth) {
+    const bool seen = t.observed_rays >= lines.scoring.min_observed_rays;
+    render::DrawSegment(image, frame.world_to_pixel, t.a, t.b,
+                        seen ? render::colours::kBlack : render::Rgb{190, 190, 190},
+                        seen ? 3.0 : 1.0);
+  }
+  for (const auto& p : scan.points.points)
+    render::DrawPoint(image, frame.world_to_pixel, p, render::colours::kRed, 1.5);
+  const std::string name =
+      lines.extractors.empty() ? std::string("split_and_merge") : lines.extractors.front();
+  const auto extractor = perception::MakeLineExtractor(name, lines.options);
+  for (const auto& s : extractor->Extract(scan.points))
+    render::DrawSegment(image, frame.world_to_pixel, s.start, s.end, render::colours::kBlue, 2.0);
+  render::DrawPoint(image, frame.world_to_pixel, Eigen::Vector2d::Zero(), render::colours::kGreen,
+                    4.0);
+  render::WritePng(image, path);
+}
+
+}  // namespace
+
+int Seed000Protocol(const ProtocolContext& context) {
+  const sim::ExperimentConfig& config = context.config;
+  const eval::Seed000RoomsOptions options = eval::ReadSeed000RoomsOptions(config);
+  sim::LinesConfig lines = config.lines;
+  if (!lines.given) lines.extractors = perception::LineExtractorNames();
+  const std::vector<eval::Seed000Room> rooms = eval::RoomsToRun(config, options);
+  const std::filesystem::path out = context.out_dir;
+  std::filesystem::create_directories(out);
+
+  sim::Metrics metrics;
+  std::vector<eval::ExtractorScore> total;
+  long total_scans = 0;
+  std::string csv =
+      "room,range_cut_m,walls_visible,paper_lines,extractor,lines_per_scan,points_per_scan,"
+      "reduction,recall,precision,sigma_r_m,sigma_alpha_deg\n";
+  if (!context.quiet) {
+    std::printf("\nseed 000 rooms: two back-to-back LMS 200 at the origin, %d scan pairs each\n",
+                options.scans);
+    std::printf("%-16s %5s %7s %6s %-16s %7s %9s %7s %7s\n", "room", "cut_m", "visible", "paper",
+                "extractor", "lines", "reduction", "recall", "prec");
+  }
+  for (const eval::Seed000Room& room : rooms) {
+    const eval::Seed000RoomResult result = eval::RunSeed000Room(config, room, options.scans);
+    const std::string stem = room.world_path.stem().string();
+    const std::string key = "seed000." + stem;
+    metrics.Set(key + ".walls_visible", result.WallsVisible());
+    metrics.Set(key + ".points_per_scan", result.PointsPerScan());
+    metrics.Set(key + ".range_cut_m", room.range_cut_m);
+    if (room.paper_lines > 0) metrics.Set(key + ".paper_lines", room.paper_lines);
+    for (const auto& s : result.scores) {
+      const double lines_per_scan =
+          s.score.scans ? static_cast<double>(s.score.extracted) / s.score.scans : 0.0;
+      const double reduction = lines_per_scan > 0 ? result.PointsPerScan() / lines_per_scan : 0.0;
+      metrics.Set(key + "." + s.name + ".lines_per_scan", lines_per_scan);
+      metrics.Set(key + "." + s.name + ".reduction", reduction);
+      metrics.Set(key + "." + s.name + ".recall", s.score.Recall());
+      metrics.Set(key + "." + s.name + ".precision", s.score.Precision());
+      csv += stem + "," + sim::FormatNumber(room.range_cut_m) + "," +
+             sim::FormatNumber(result.WallsVisible()) + "," + std::to_string(room.paper_lines) +
+             "," + s.name + "," + sim::FormatNumber(lines_per_scan) + "," +
+             sim::FormatNumber(result.PointsPerScan()) + "," + sim::FormatNumber(reduction) + "," +
+             sim::FormatNumber(s.score.Recall()) + "," + sim::FormatNumber(s.score.Precision()) +
+             "," + sim::FormatNumber(s.score.SigmaRM()) + "," +
+             sim::FormatNumber(s.score.SigmaAlphaDeg()) + "\n";
+      if (!context.quiet) {
+        std::printf("%-16s %5.1f %7.2f %6s %-16s %7.2f %8.1fx %7.3f %7.3f\n", stem.c_str(),
+                    room.range_cut_m, result.WallsVisible(),
+                    room.paper_lines ? std::to_string(room.paper_lines).c_str() : "-",
+                    s.name.c_str(), lines_per_scan, reduction, s.score.Recall(),
+                    s.score.Precision());
+      }
+    }
+    if (total.empty()) {
+      total = result.scores;
+      for (auto& s : total) s.us_per_scan = 0.0;  // summed over scans below, divided at the end
+    } else {
+      for (std::size_t e = 0; e < total.size(); ++e) total[e].score.Add(result.scores[e].score);
+    }
+    for (std::size_t e = 0; e < total.size(); ++e) {
+      total[e].us_per_scan +=
+          result.scores[e].us_per_scan * static_cast<double>(result.scans.size());
+    }
+    total_scans += static_cast<long>(result.scans.size());
+    if (context.snapshots) WriteRoomPicture(result, lines, out / (stem + ".png"));
+  }
+  for (auto& s : total) s.us_per_scan /= static_cast<double>(std::max(1L, total_scans));
+  eval::SetLineMetrics(total, total_scans, metrics);
+
+  WriteText(out / "config.yaml", sim::ExperimentConfigToYaml(config));
+  WriteText(out / "metrics.json", metrics.ToJson());
+  WriteText(out / "rooms.csv", csv);
+  WriteText(out / "timing.json", eval::LineTimingJson(total));
+  if (!context.quiet) {
+    std::printf("\nall rooms (%ld scan pairs)\n%-16s %7s %7s %9s %11s %9s %9s\n", total_scans,
+                "extractor", "recall", "prec", "sigma_r_m", "sigma_a_deg", "pts/line", "us/scan");
+    for (const auto& s : total) {
+      std::printf("%-16s %7.3f %7.3f %9.4f %11.3f %9.1f %9.1f\n", s.name.c_str(), s.score.Recall(),
+                  s.score.Precision(), s.score.SigmaRM(), s.score.SigmaAlphaDeg(),
+                  s.score.PointsPerLine(), s.us_per_scan);
+    }
+    std::printf("%-16s %s\n", "results", out.c_str());
+  }
+  return 0;
+}
+
+}  // namespace plywood::eval

@@ -1,0 +1,14 @@
+#pragma once
+
+#include "eval/protocol.h"
+
+namespace plywood::eval {
+
+// `protocol: seed000_rooms` (Souza, Becker, Rodrigues; seed 000): two back-to-back LMS 200 at the
+// origin of each room (eval/lines/seed000_rooms.h), every extractor of the `lines:` section (all
+// five by default). Prints lines found vs walls visible within the range cut, the data reduction
+// and recall / precision per extractor and room; writes metrics.json (seed000.<room>.* and
+// lines.<extractor>.* over all rooms), rooms.csv, timing.json, config.yaml and <room>.png.
+int Seed000Protocol(const ProtocolContext& context);
+
+}  // namespace plywood::eval

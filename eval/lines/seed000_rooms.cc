@@ -1,0 +1,90 @@
+#include "eval/lines/seed000_rooms.h"
+
+#include "sim/config/config_error.h"
+#include "sim/config/robot_catalog.h"
+#include "sim/config/yaml_fields.h"
+
+namespace plywood::eval {
+namespace {
+
+std::filesystem::path ResolveWorld(const std::string& text, const sim::ExperimentConfig& config,
+                                   const sim::YamlFields& fields, const std::string& key) {
+  const std::filesystem::path given(text);
+  if (given.is_absolute()) {
+    if (std::filesystem::is_regular_file(given)) return given.lexically_normal();
+  } else {
+    const auto base = std::filesystem::absolute(config.source_file).parent_path();
+    for (const auto& root : {base, sim::DataRoot()}) {
+      if (std::filesystem::is_regular_file(root / given)) return (root / given).lexically_normal();
+    }
+  }
+  fields.Fail(key, "no such file: " + text);
+}
+
+}  // namespace
+
+Seed000RoomsOptions ReadSeed000RoomsOptions(const sim::ExperimentConfig& config) {
+  Seed000RoomsOptions options;
+  sim::YamlFields fields(config.protocol_options, config.source_file, config.protocol);
+  fields.Get("scans", &options.scans);
+  if (options.scans < 1 || options.scans > 1000) {
+    fields.Fail("scans", "must be in 1..1000, got " + std::to_string(options.scans));
+  }
+  fields.Get("range_cut_m", &options.range_cut_m);
+  if (!(options.range_cut_m > 0.0)) fields.Fail("range_cut_m", "must be > 0");
+  std::vector<sim::YamlFields> rooms = fields.ChildList("rooms");
+  for (std::size_t i = 0; i < rooms.size(); ++i) {
+    Seed000Room room;
+    if (!rooms[i].Has("world")) rooms[i].Fail("world", "missing: give the room's MJCF file");
+    rooms[i].Get("world", &room.world);
+    room.world_path = ResolveWorld(room.world, config, rooms[i], "world");
+    rooms[i].Get("range_cut_m", &room.range_cut_m);
+    if (!(room.range_cut_m > 0.0)) rooms[i].Fail("range_cut_m", "must be > 0");
+    rooms[i].Get("paper_lines", &room.paper_lines);
+    rooms[i].Finish();
+    options.rooms.push_back(room);
+  }
+  fields.Finish();
+  return options;
+}
+
+std::vector<Seed000Room> RoomsToRun(const sim::ExperimentConfig& config,
+                                    const Seed000RoomsOptions& options) {
+  if (!options.rooms.empty() &&
+      std::filesystem::equivalent(options.rooms.front().world_path, config.world_path)) {
+    return options.rooms;
+  }
+  Seed000Room user;
+  user.world = config.world;
+  user.world_path = config.world_path;
+  user.range_cut_m = options.range_cut_m;
+  return {user};
+}
+
+double Seed000RoomResult::WallsVisible() const {
+  if (scores.empty() || scores.front().score.scans == 0) return 0.0;
+  return static_cast<double>(scores.front().score.observable) /
+         static_cast<double>(scores.front().score.scans);
+}
+
+double Seed000RoomResult::PointsPerScan() const {
+  if (rig.front.empty() || rig.back.empty()) return 0.0;
+  return static_cast<double>(rig.front[0].scan.ranges_m.size() + rig.back[0].scan.ranges_m.size());
+}
+
+Seed000RoomResult RunSeed000Room(const sim::ExperimentConfig& config, const Seed000Room& room,
+                                 int scans) {
+  sim::ExperimentConfig room_config = config;
+  room_config.world = room.world;
+  room_config.world_path = room.world_path;
+  Seed000RoomResult result;
+  result.room = room;
+  result.rig = TakeBackToBackScans(room_config, Eigen::Vector2d::Zero(), 0.0, scans);
+  result.scans = MakeTruthScans(result.rig, room.range_cut_m);
+  sim::LinesConfig lines = config.lines;
+  if (!lines.given) lines.extractors = perception::LineExtractorNames();
+  result.scores = ScoreExtractors(result.scans, lines);
+  return result;
+}
+
+}  // namespace plywood::eval

@@ -1,0 +1,56 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "eval/lines/back_to_back_scans.h"
+#include "eval/lines/line_scan_scorer.h"
+#include "sim/config/experiment_config.h"
+
+namespace plywood::eval {
+
+// One room of seed 000's protocol: the world, the paper's range cut for it and the number of
+// lines the paper reports there (0: not from the paper).
+struct Seed000Room {
+  std::string world;
+  std::filesystem::path world_path;  // resolved
+  double range_cut_m = 4.0;
+  int paper_lines = 0;
+};
+
+// The `seed000_rooms:` section of `protocol: seed000_rooms`:
+//   seed000_rooms:
+//     scans: 10                 # back-to-back scan pairs per room (independent noise)
+//     range_cut_m: 4            # for a world given with --set world=PATH
+//     rooms: [{world: worlds/seed000_room_1.xml, range_cut_m: 4, paper_lines: 7}, ...]
+// The rooms run when the experiment's `world` is the first room's (the file's default); any
+// other world (--set world=PATH) runs alone with range_cut_m, sensors at its origin.
+struct Seed000RoomsOptions {
+  int scans = 10;
+  double range_cut_m = 4.0;
+  std::vector<Seed000Room> rooms;
+};
+
+// @throws sim::ConfigError naming the field.
+Seed000RoomsOptions ReadSeed000RoomsOptions(const sim::ExperimentConfig& config);
+
+// The rooms the protocol runs for `config` (see Seed000RoomsOptions).
+std::vector<Seed000Room> RoomsToRun(const sim::ExperimentConfig& config,
+                                    const Seed000RoomsOptions& options);
+
+// What one room gave: the scan pairs, and each extractor's score over them.
+struct Seed000RoomResult {
+  Seed000Room room;
+  BackToBackScans rig;
+  std::vector<TruthScan> scans;
+  std::vector<ExtractorScore> scores;  // in config.lines.extractors order (all five by default)
+  double WallsVisible() const;         // observable ground-truth faces per scan
+  double PointsPerScan() const;        // all beams of the pair (722 at 0.5 deg)
+};
+
+// Two back-to-back lasers at the room's origin facing +x and -x, `scans` pairs, every extractor.
+Seed000RoomResult RunSeed000Room(const sim::ExperimentConfig& config, const Seed000Room& room,
+                                 int scans);
+
+}  // namespace plywood::eval

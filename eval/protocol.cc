@@ -1,0 +1,42 @@
+#include "eval/protocol.h"
+
+#include "eval/lines/seed000_protocol.h"
+#include "eval/lines/seed004_ransac_protocol.h"
+#include "eval/odometry/umbmark_protocol.h"
+#include "eval/odometry/weighted_gain_protocol.h"
+#include "eval/single_run_protocol.h"
+#include "sim/config/config_error.h"
+
+namespace plywood::eval {
+
+const std::vector<Protocol>& Protocols() {
+  static const std::vector<Protocol> protocols{
+      {"single", "one run: sensors, estimators, controller and every post-run scorer",
+       SingleRunProtocol},
+      {"seed000_rooms", "seed 000: two back-to-back LMS 200 in each room, every line extractor",
+       Seed000Protocol},
+      {"seed004_ransac", "seed 004: RANSAC lines on the point cloud of a whole run",
+       Seed004RansacProtocol},
+      {"umbmark", "Borenstein & Feng's UMBmark: 5 + 5 squares, calibration, 5 + 5 again",
+       UmbmarkProtocol},
+      {"weighted_gain_search", "seed 004: grid search of the weighted fusion's gains",
+       WeightedGainProtocol},
+  };
+  return protocols;
+}
+
+const Protocol& FindProtocol(const sim::ExperimentConfig& config) {
+  std::string known;
+  for (const Protocol& protocol : Protocols()) {
+    if (protocol.name == config.protocol) return protocol;
+    known += (known.empty() ? "" : ", ") + protocol.name;
+  }
+  throw sim::ConfigError(config.source_file, "protocol",
+                         "unknown protocol '" + config.protocol + "' (known: " + known + ")");
+}
+
+int RunProtocol(const ProtocolContext& context) {
+  return FindProtocol(context.config).run(context);
+}
+
+}  // namespace plywood::eval

@@ -1,0 +1,40 @@
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "sim/config/experiment_config.h"
+
+namespace plywood::eval {
+
+// What a protocol gets: the loaded experiment (its own options in config.protocol_options, read
+// strictly with sim::YamlFields), where to write, and whether to print progress and pictures.
+struct ProtocolContext {
+  const sim::ExperimentConfig& config;
+  std::filesystem::path out_dir;
+  bool quiet = false;
+  bool snapshots = true;
+};
+
+// One way of running and scoring an experiment: the plain run ("single") or a paper's multi-run
+// protocol (UMBmark's 10 squares, seed 000's four rooms, ...). `plywood run`, sweeps and the tests
+// all go through RunProtocol, so they run the same code. `run` returns the exit code; bad options
+// throw sim::ConfigError naming the field.
+struct Protocol {
+  std::string name;
+  std::string summary;  // one line for --help
+  std::function<int(const ProtocolContext&)> run;
+};
+
+// Every protocol, "single" first. Each lives in its own eval/<capability>/<name>_protocol.cc.
+const std::vector<Protocol>& Protocols();
+
+// The protocol named by config.protocol. @throws sim::ConfigError naming `protocol` when unknown.
+const Protocol& FindProtocol(const sim::ExperimentConfig& config);
+
+// Runs config.protocol with `context`.
+int RunProtocol(const ProtocolContext& context);
+
+}  // namespace plywood::eval

@@ -1,0 +1,117 @@
+#include "eval/single_run_protocol.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include "eval/lines/line_scan_scorer.h"
+#include "eval/sonar_map/sonar_map_scorer.h"
+#include "render/overlay.h"
+#include "render/snapshot.h"
+#include "sim/runner/experiment_runner.h"
+#include "sim/runner/run_writer.h"
+
+namespace plywood::eval {
+namespace {
+
+std::vector<render::PathOverlay> TrajectoryOverlays(const sim::RunRecord& record) {
+  std::vector<render::PathOverlay> paths(1 + record.estimator_names.size());
+  paths[0].label = "ground truth";
+  paths[0].colour = render::colours::kBlack;
+  paths[0].width_px = 3.0;
+  for (std::size_t e = 0; e < record.estimator_names.size(); ++e) {
+    paths[e + 1].label = record.estimator_names[e];
+    paths[e + 1].colour = render::colours::kPalette[e % std::size(render::colours::kPalette)];
+  }
+  for (const auto& sample : record.trajectory) {
+    paths[0].points_W.emplace_back(sample.truth.x_m, sample.truth.y_m);
+    for (std::size_t e = 0; e < sample.estimates.size(); ++e) {
+      paths[e + 1].points_W.emplace_back(sample.estimates[e].x_m, sample.estimates[e].y_m);
+    }
+  }
+  return paths;
+}
+
+void PrintSummary(const sim::ExperimentRunner& runner, const std::string& out_dir) {
+  const sim::RunCost& cost = runner.cost();
+  const sim::Metrics& m = runner.record().metrics;
+  std::printf("\n%-34s %s\n", "experiment", runner.config().name.c_str());
+  std::printf("%-34s %.2f s in %.2f s wall (%.0fx real time), %ld rays\n", "simulated",
+              cost.simulated_s, cost.wall_s, cost.RealTimeFactor(), cost.rays);
+  std::printf("%-34s %.3f m\n", "distance travelled (truth)", m.Number("truth.distance_m"));
+  for (const auto& name : runner.record().estimator_names) {
+    const std::string key = "odometry." + name + ".";
+    std::printf("%-34s final %.3f m, heading %.2f deg, drift %.2f %%, ATE %.3f m\n", name.c_str(),
+                m.Number(key + "final_error_m"), m.Number(key + "heading_error_deg"),
+                m.Number(key + "drift_percent"), m.Number(key + "ate_rms_m"));
+  }
+  if (m.values().count("occupancy.error")) {
+    std::printf(
+        "%-34s e %.4f (grid %.4f), %.0f partitions, graph %.0f nodes / %.0f arcs%s\n",
+        "cognitive map (seed 001)", m.Number("occupancy.error"), m.Number("occupancy.grid_error"),
+        m.Number("occupancy.partitions"), m.Number("occupancy.graph_nodes"),
+        m.Number("occupancy.graph_edges"),
+        m.Number("occupancy.explored") > 0.0 ? "" : " (time limit before the map was complete)");
+  }
+  if (m.values().count("sensors.bumpers.contact_samples")) {
+    std::printf("%-34s %.0f\n", "bumper contact samples",
+                m.Number("sensors.bumpers.contact_samples"));
+  }
+  std::printf("%-34s %s\n", "results", out_dir.c_str());
+}
+
+}  // namespace
+
+int SingleRunProtocol(const ProtocolContext& context) {
+  const sim::ExperimentConfig& config = context.config;
+  const std::string out_dir = context.out_dir.string();
+  const bool quiet = context.quiet;
+  const bool snapshots = context.snapshots;
+  sim::ExperimentRunner runner(config);
+  // A live progress bar on a terminal; in logs (CI, batch) a line every 10 %.
+  const bool terminal = isatty(fileno(stderr));
+  int last_decile = 0;
+  runner.Run([&](double fraction, double simulated_s) {
+    if (quiet) return;
+    if (terminal) {
+      std::fprintf(stderr, "\r[%-30s] %5.1f%%  t = %.0f s ",
+                   std::string(30 * fraction, '#').c_str(), 100.0 * fraction, simulated_s);
+    } else if (static_cast<int>(10 * fraction) > last_decile) {
+      last_decile = static_cast<int>(10 * fraction);
+      std::fprintf(stderr, "plywood: %s %3d%% (t = %.0f s)\n", config.name.c_str(),
+                   10 * last_decile, simulated_s);
+    }
+  });
+  if (!quiet && terminal) std::fprintf(stderr, "\r%60s\r", "");
+
+  AddSonarMapMetrics(runner);  // seed 001 map scores, if the sonar explorer drove
+  // Line extraction scores (lines: section); wall-clock time per scan goes to timing.json only.
+  const std::vector<eval::ExtractorScore> line_scores = eval::AddLineMetrics(runner);
+  sim::WriteRunOutputs(config, runner.record(), out_dir);
+  WriteSonarMap(runner, out_dir);
+  if (snapshots) WriteSonarMapPictures(runner, out_dir);
+  if (snapshots) {
+    render::SnapshotOptions options;
+    options.view.longer_side_px = config.output.snapshot_size_px;
+    render::WriteSnapshot(runner.scene().model(), runner.mutable_scene().mutable_data(),
+                          TrajectoryOverlays(runner.record()), out_dir + "/snapshot.png", options);
+  }
+  if (!line_scores.empty()) {
+    std::ofstream(out_dir + "/timing.json") << eval::LineTimingJson(line_scores);
+  }
+  if (!quiet) PrintSummary(runner, out_dir);
+  if (!quiet) {
+    for (const auto& s : line_scores) {
+      std::printf(
+          "%-34s recall %.3f, precision %.3f, sigma_r %.4f m, sigma_alpha %.3f deg, "
+          "%.1f points/line, %.1f us/scan\n",
+          ("lines " + s.name).c_str(), s.score.Recall(), s.score.Precision(), s.score.SigmaRM(),
+          s.score.SigmaAlphaDeg(), s.score.PointsPerLine(), s.us_per_scan);
+    }
+  }
+  return 0;
+}
+
+}  // namespace plywood::eval

@@ -1,0 +1,180 @@
+#include "eval/sonar_map/sonar_map_scorer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "eval/sonar_map/sonar_ground_truth.h"
+#include "perception/sonar_map/cognitive_map_json.h"
+#include "perception/sonar_map/sonar_explorer.h"
+#include "render/png_image.h"
+#include "sim/world/occupancy_raster.h"
+
+namespace plywood::eval {
+namespace {
+
+struct Truth {
+  sim::OccupancyRaster raster;
+  ReachableSpace space;
+  int x0 = 0, y0 = 0, x1 = -1, y1 = -1;  // raster cells of the room's bounding box
+};
+
+// The raster is kept in a unique object so ReachableSpace's pointer stays valid.
+std::unique_ptr<Truth> MakeTruth(const sim::ExperimentRunner& runner) {
+  auto truth = std::make_unique<Truth>();
+  sim::OccupancyRasterOptions options;
+  options.resolution_m = 0.01;
+  truth->raster = sim::RasteriseOccupancy(runner.scene().model(), options);
+  const auto& spawn = runner.config().spawn;
+  truth->space = ComputeReachableSpace(truth->raster, {spawn.x_m, spawn.y_m});
+  truth->x0 = truth->raster.width;
+  truth->y0 = truth->raster.height;
+  for (int iy = 0; iy < truth->raster.height; ++iy)
+    for (int ix = 0; ix < truth->raster.width; ++ix)
+      if (truth->space.free[static_cast<std::size_t>(iy) * truth->raster.width + ix]) {
+        truth->x0 = std::min(truth->x0, ix);
+        truth->x1 = std::max(truth->x1, ix);
+        truth->y0 = std::min(truth->y0, iy);
+        truth->y1 = std::max(truth->y1, iy);
+      }
+  return truth;
+}
+
+bool GridFree(const perception::LogOddsGrid& grid, const Eigen::Vector2d& p) {
+  const Eigen::Vector2i c = grid.CellAt(p);
+  return c.x() < 0 || grid.LogOdds(c.x(), c.y()) <= 0.0;
+}
+
+bool MapFree(const perception::CognitiveMap& map, const Eigen::Vector2d& p) {
+  const int i = map.partitions.Find(p);
+  return i >= 0 && map.partitions.partitions()[i].label == perception::Label::kFree;
+}
+
+void Line(render::RgbImage& image, Eigen::Vector2d a, Eigen::Vector2d b,
+          const std::array<std::uint8_t, 3>& colour) {
+  const int steps = static_cast<int>(std::ceil((b - a).norm())) + 1;
+  for (int k = 0; k <= steps; ++k) {
+    const Eigen::Vector2d p = a + (b - a) * (static_cast<double>(k) / steps);
+    const int x = static_cast<int>(std::lround(p.x())), y = static_cast<int>(std::lround(p.y()));
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx)
+        if (x + dx >= 0 && y + dy >= 0 && x + dx < image.width && y + dy < image.height)
+          std::copy(colour.begin(), colour.end(), image.At(x + dx, y + dy));
+  }
+}
+
+}  // namespace
+
+bool AddSonarMapMetrics(sim::ExperimentRunner& runner) {
+  const auto* explorer = dynamic_cast<const perception::SonarExplorer*>(runner.controller());
+  if (explorer == nullptr) return false;
+  const auto truth = MakeTruth(runner);
+  const perception::CognitiveMap map = explorer->Map();
+  double total = 0.0, map_errors = 0.0, grid_errors = 0.0;
+  for (int iy = truth->y0; iy <= truth->y1; ++iy)
+    for (int ix = truth->x0; ix <= truth->x1; ++ix) {
+      const Eigen::Vector2d p = truth->raster.CellCentre(ix, iy);
+      const bool free = truth->space.free[static_cast<std::size_t>(iy) * truth->raster.width + ix];
+      total += free;
+      map_errors += free != MapFree(map, p);
+      grid_errors += free != GridFree(explorer->grid(), p);
+    }
+  sim::Metrics& m = runner.mutable_record().metrics;
+  const double cell = truth->raster.resolution_m * truth->raster.resolution_m;
+  m.Set("occupancy.error", total > 0 ? map_errors / total : 1.0);
+  m.Set("occupancy.grid_error", total > 0 ? grid_errors / total : 1.0);
+  m.Set("occupancy.area_total_m2", total * cell);
+  m.Set("occupancy.area_error_m2", map_errors * cell);
+  m.Set("occupancy.partitions", static_cast<double>(map.partitions.partitions().size()));
+  m.Set("occupancy.graph_nodes", static_cast<double>(map.graph.nodes.size()));
+  m.Set("occupancy.graph_edges", static_cast<double>(map.graph.arcs.size()));
+  m.Set("occupancy.negative_experience", static_cast<double>(map.negative.size()));
+  m.Set("occupancy.rings", static_cast<double>(explorer->rings_integrated()));
+  m.Set("occupancy.explored", explorer->Finished() ? 1.0 : 0.0);
+  return true;
+}
+
+void WriteSonarMap(const sim::ExperimentRunner& runner, const std::string& out_dir) {
+  const auto* explorer = dynamic_cast<const perception::SonarExplorer*>(runner.controller());
+  if (explorer == nullptr) return;
+  std::filesystem::create_directories(out_dir);
+  const std::filesystem::path path = std::filesystem::path(out_dir) / "cognitive_map.json";
+  std::ofstream file(path);
+  file << perception::CognitiveMapToJson(explorer->Map());
+  if (!file) throw std::runtime_error(path.string() + ": cannot write");
+}
+
+void WriteSonarMapPictures(const sim::ExperimentRunner& runner, const std::string& out_dir) {
+  const auto* explorer = dynamic_cast<const perception::SonarExplorer*>(runner.controller());
+  if (explorer == nullptr) return;
+  const auto truth = MakeTruth(runner);
+  const perception::CognitiveMap map = explorer->Map();
+  // 1 px per cm, the room's box plus 0.3 m on every side.
+  const int margin = 30;
+  const int x0 = std::max(0, truth->x0 - margin), y0 = std::max(0, truth->y0 - margin);
+  const int x1 = std::min(truth->raster.width - 1, truth->x1 + margin);
+  const int y1 = std::min(truth->raster.height - 1, truth->y1 + margin);
+  render::RgbImage grid_image(x1 - x0 + 1, y1 - y0 + 1), part_image(x1 - x0 + 1, y1 - y0 + 1);
+  auto pixel = [&](int ix, int iy) { return Eigen::Vector2i(ix - x0, y1 - iy); };
+  for (int iy = y0; iy <= y1; ++iy)
+    for (int ix = x0; ix <= x1; ++ix) {
+      const Eigen::Vector2d p = truth->raster.CellCentre(ix, iy);
+      // The true geometry is drawn as its outline, so that what the map says inside an obstacle
+      // (and the wall band) stays visible.
+      auto solid = [&](int jx, int jy) {
+        return jx < 0 || jy < 0 || jx >= truth->raster.width || jy >= truth->raster.height ||
+               truth->raster.IsOccupied(jx, jy);
+      };
+      const bool occupied =
+          truth->raster.IsOccupied(ix, iy) &&
+          !(solid(ix - 1, iy) && solid(ix + 1, iy) && solid(ix, iy - 1) && solid(ix, iy + 1) &&
+            solid(ix - 2, iy) && solid(ix + 2, iy) && solid(ix, iy - 2) && solid(ix, iy + 2));
+      const Eigen::Vector2i px = pixel(ix, iy);
+      const Eigen::Vector2i c = explorer->grid().CellAt(p);
+      const double prob = c.x() < 0 ? 0.5 : explorer->grid().Probability(c.x(), c.y());
+      const auto g = static_cast<std::uint8_t>(std::lround(255.0 * (1.0 - prob)));
+      std::uint8_t* q = grid_image.At(px.x(), px.y());
+      q[0] = occupied ? 220 : g;
+      q[1] = occupied ? 30 : g;
+      q[2] = occupied ? 30 : g;
+      std::uint8_t* r = part_image.At(px.x(), px.y());
+      const int i = map.partitions.Find(p);
+      if (occupied) {
+        r[0] = 220, r[1] = 30, r[2] = 30;
+      } else if (i < 0) {
+        r[0] = r[1] = r[2] = 90;
+      } else if (map.partitions.partitions()[i].label == perception::Label::kFree) {
+        r[0] = 200, r[1] = 235, r[2] = 200;
+      } else {
+        r[0] = r[1] = r[2] = 60;
+      }
+    }
+  auto to_px = [&](const Eigen::Vector2d& p) {
+    const Eigen::Vector2d q = (p - truth->raster.origin_xy) / truth->raster.resolution_m;
+    return Eigen::Vector2d(q.x() - x0, y1 - q.y());
+  };
+  for (const auto& part : map.partitions.partitions()) {
+    const auto& rc = part.rect;
+    const Eigen::Vector2d a = to_px({rc.x0, rc.y0}), b = to_px({rc.x1, rc.y0}),
+                          c = to_px({rc.x1, rc.y1}), d = to_px({rc.x0, rc.y1});
+    const std::array<std::uint8_t, 3> black{0, 0, 0};
+    Line(part_image, a, b, black);
+    Line(part_image, b, c, black);
+    Line(part_image, c, d, black);
+    Line(part_image, d, a, black);
+  }
+  const auto& parts = map.partitions.partitions();
+  for (const auto& arc : map.graph.arcs) {
+    const Eigen::Vector2d door = 0.5 * (arc.door_a + arc.door_b);
+    const std::array<std::uint8_t, 3> blue{30, 60, 220};
+    Line(part_image, to_px(parts[arc.a].rect.Centre()), to_px(door), blue);
+    Line(part_image, to_px(door), to_px(parts[arc.b].rect.Centre()), blue);
+  }
+  std::filesystem::create_directories(out_dir);
+  render::WritePng(grid_image, std::filesystem::path(out_dir) / "occupancy_grid.png");
+  render::WritePng(part_image, std::filesystem::path(out_dir) / "occupancy_partitions.png");
+}
+
+}  // namespace plywood::eval

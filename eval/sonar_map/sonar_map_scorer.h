@@ -1,0 +1,26 @@
+#pragma once
+
+#include <string>
+
+#include "sim/runner/experiment_runner.h"
+
+namespace plywood::eval {
+
+// When the run was driven by seed 001's SonarExplorer: scores its map against the world's ground
+// truth and adds occupancy.error (e = A_e / A_tot of the partition map), occupancy.grid_error (of
+// the grid thresholded at P > 0.5, unseen cells free), occupancy.partitions, occupancy.graph_nodes,
+// occupancy.graph_edges and occupancy.rings. A_tot is the reachable free area inside the room's
+// bounding box; A_e the area inside that box whose free/not-free label differs. The map lives in
+// the odometry frame, which starts at the spawn pose, so it is compared in place. Returns false
+// (and does nothing) for any other controller.
+bool AddSonarMapMetrics(sim::ExperimentRunner& runner);
+
+// Writes DIR/cognitive_map.json (perception/sonar_map/cognitive_map_json.h): the map the explorer
+// built, in its odometry frame. No-op for other controllers.
+void WriteSonarMap(const sim::ExperimentRunner& runner, const std::string& out_dir);
+
+// Writes DIR/occupancy_grid.png and DIR/occupancy_partitions.png (partitions, graph and the true
+// geometry in red). No-op for other controllers.
+void WriteSonarMapPictures(const sim::ExperimentRunner& runner, const std::string& out_dir);
+
+}  // namespace plywood::eval

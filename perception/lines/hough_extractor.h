@@ -1,0 +1,37 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "perception/lines/line_extractor.h"
+
+namespace plywood::perception {
+
+// Sequential Hough transform (Duda & Hart 1972): every point votes for the (theta, rho) cells of
+// the lines through it; the strongest cell's points (within distance_threshold_m of its line)
+// are refitted by total least squares, cut into runs at gaps wider than max_gap_m, kept when a
+// run has min_points, and their votes withdrawn before the next peak is taken.
+struct HoughOptions {
+  double theta_bin_deg = 1.0;
+  double rho_bin_m = 0.02;
+  int min_votes = 8;
+  double distance_threshold_m = 0.03;
+  double max_gap_m = 0.3;
+  int min_points = 5;
+  double min_length_m = 0.0;
+  int max_lines = 100;
+
+  void Validate() const;
+};
+
+class HoughExtractor final : public LineExtractor {
+ public:
+  explicit HoughExtractor(const HoughOptions& options = {});
+  std::string name() const override { return "hough"; }
+  std::vector<LineSegment> Extract(const ScanPoints& scan) const override;
+
+ private:
+  const HoughOptions options_;
+};
+
+}  // namespace plywood::perception

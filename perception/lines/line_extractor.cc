@@ -1,0 +1,121 @@
+#include "perception/lines/line_extractor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace plywood::perception {
+
+void BreakpointOptions::Validate() const {
+  if (!(min_m > 0.0))
+    throw std::invalid_argument("min_m: must be > 0, got " + std::to_string(min_m));
+  if (!(max_m >= min_m)) {
+    throw std::invalid_argument("max_m: must be >= min_m, got " + std::to_string(max_m));
+  }
+  if (!(lambda_deg > 0.0 && lambda_deg < 90.0)) {
+    throw std::invalid_argument("lambda_deg: must be in (0, 90), got " +
+                                std::to_string(lambda_deg));
+  }
+  if (!(sigma_m >= 0.0)) {
+    throw std::invalid_argument("sigma_m: must be >= 0, got " + std::to_string(sigma_m));
+  }
+}
+
+std::vector<std::vector<int>> SplitAtBreakpoints(const ScanPoints& scan,
+                                                 const BreakpointOptions& options) {
+  std::vector<std::vector<int>> groups;
+  const int n = static_cast<int>(scan.size());
+  if (n == 0) return groups;
+  const double dphi = std::abs(scan.angle_increment_rad);
+  const double lambda = options.lambda_deg * std::numbers::pi / 180.0;
+  const double ratio = dphi > 0.0 && lambda > dphi ? std::sin(dphi) / std::sin(lambda - dphi) : 0.0;
+  const auto threshold = [&](int i, int j) {
+    // Invalid beams may lie between neighbours: scale by the number of beam steps.
+    const int beam_steps = std::abs(scan.beam_index[j] - scan.beam_index[i]);
+    const double steps =
+        beam_steps >= 1 && beam_steps < static_cast<int>(scan.beam_index.size()) ? beam_steps : 1;
+    const double d =
+        std::min(scan.range_m[i], scan.range_m[j]) * ratio * steps + 3.0 * options.sigma_m;
+    return std::min(options.max_m, std::max(options.min_m, d));
+  };
+  const auto near = [&](int i, int j) {
+    return (scan.points[i] - scan.points[j]).norm() <= threshold(i, j);
+  };
+  // For a closed scan start at a breakpoint so no wall is cut at the seam.
+  int start = 0;
+  bool wrap = false;
+  if (scan.closed && n > 2) {
+    wrap = true;
+    const auto lone = [&](int i) {
+      const int before = (i + n - 1) % n, after = (i + 1) % n;
+      return options.drop_lone_outliers && !near(before, i) && !near(i, after) &&
+             near(before, after);
+    };
+    for (int i = 0; i < n; ++i) {
+      if (!near((i + n - 1) % n, i) && !lone(i) && !lone((i + n - 1) % n)) {
+        start = i;
+        wrap = false;  // a real break exists: the seam is one of them
+        break;
+      }
+    }
+    if (wrap) {
+      // One closed loop of points: cut at the sharpest corner, where a point and both its
+      // neighbours lie far from the chord between the fifth neighbours on either side (a single
+      // outlier has near neighbours), so no wall is cut in two.
+      double sharpest = -1.0;
+      const int k = std::min(5, (n - 1) / 2);
+      const auto chord_distance = [&](int i, int j) {
+        const Eigen::Vector2d& a = scan.points[(i + n - k) % n];
+        const Eigen::Vector2d d = scan.points[(i + k) % n] - a;
+        const Eigen::Vector2d q = scan.points[(j + n) % n] - a;
+        return std::abs(d.x() * q.y() - d.y() * q.x()) / std::max(d.norm(), 1e-12);
+      };
+      for (int i = 0; i < n && k > 1; ++i) {
+        const double distance =
+            std::min({chord_distance(i, i - 1), chord_distance(i, i), chord_distance(i, i + 1)});
+        if (distance > sharpest) sharpest = distance, start = i;
+      }
+    }
+  }
+  const bool closed_order = scan.closed && n > 2;
+  std::vector<int> order(n);
+  for (int k = 0; k < n; ++k) order[k] = (start + k) % n;
+  std::vector<int> current{order[0]};
+  for (int k = 1; k < n; ++k) {
+    const int i = order[k];
+    const int previous = current.empty() ? order[k - 1] : current.back();
+    if (near(previous, i)) {
+      current.push_back(i);
+      continue;
+    }
+    // Lone outlier: i is far from its predecessor, but the predecessor is near the next point.
+    if (options.drop_lone_outliers && !current.empty() && (k + 1 < n || closed_order)) {
+      const int next = order[(k + 1) % n];
+      if ((k + 1 < n || closed_order) && !near(i, next) && near(previous, next)) continue;
+    }
+    groups.push_back(std::move(current));
+    current = {i};
+  }
+  groups.push_back(std::move(current));
+  return groups;
+}
+
+std::vector<std::vector<int>> SplitRunsAlongLine(std::span<const Eigen::Vector2d> points,
+                                                 std::vector<int> indices, double alpha_rad,
+                                                 double max_gap_m) {
+  const Eigen::Vector2d d(-std::sin(alpha_rad), std::cos(alpha_rad));
+  std::vector<std::pair<double, int>> keyed;
+  keyed.reserve(indices.size());
+  for (int i : indices) keyed.emplace_back(points[i].dot(d), i);
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<std::vector<int>> runs;
+  for (std::size_t k = 0; k < keyed.size(); ++k) {
+    if (k == 0 || keyed[k].first - keyed[k - 1].first > max_gap_m) runs.emplace_back();
+    runs.back().push_back(keyed[k].second);
+  }
+  return runs;
+}
+
+}  // namespace plywood::perception

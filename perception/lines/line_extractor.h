@@ -1,0 +1,57 @@
+#pragma once
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "perception/lines/line_segment.h"
+#include "perception/lines/scan_points.h"
+
+namespace plywood::perception {
+
+// A line extractor: scan points in, segments out, in the points' frame. Implementations are
+// immutable after construction (options fixed), deterministic (a randomised one seeds its own
+// generator per call from its options), and safe to call from several threads.
+class LineExtractor {
+ public:
+  virtual ~LineExtractor() = default;
+  virtual std::string name() const = 0;
+  // An empty scan or one with too few points gives no segments; never throws on data.
+  virtual std::vector<LineSegment> Extract(const ScanPoints& scan) const = 0;
+};
+
+// Breaking an ordered scan into groups of neighbouring points (shared by the ordered extractors).
+// Two consecutive points belong to different groups when they are farther apart than
+// min(max_m, max(min_m, r * sin(dphi) / sin(lambda - dphi) + 3 sigma)) -- the adaptive breakpoint
+// of Borges & Aldon ("Line extraction in 2D range images for mobile robotics", JIRS 2004), kept
+// below max_m so a doorway (0.8 m and wider) always breaks a wall.
+struct BreakpointOptions {
+  double min_m = 0.2;
+  double max_m = 0.5;
+  double lambda_deg = 10.0;
+  double sigma_m = 0.01;
+  // A single point far from both neighbours, whose neighbours are close to each other, is an
+  // outlier (a dust speck, a mixed pixel): dropped instead of breaking the group.
+  bool drop_lone_outliers = true;
+
+  void Validate() const;
+};
+
+// Groups of point indices (each in scan order; for a closed scan a group may wrap past the end).
+std::vector<std::vector<int>> SplitAtBreakpoints(const ScanPoints& scan,
+                                                 const BreakpointOptions& options);
+
+// Segments shorter than min_length_m or with fewer than min_points points are dropped.
+struct SegmentFilterOptions {
+  int min_points = 5;
+  double min_length_m = 0.0;
+};
+
+// For extractors that find a line first and its points second (RANSAC, Hough): sorts
+// points[indices] along the line with normal angle alpha_rad and cuts the sorted run wherever two
+// neighbours are more than max_gap_m apart along it. Returns the runs, each sorted.
+std::vector<std::vector<int>> SplitRunsAlongLine(std::span<const Eigen::Vector2d> points,
+                                                 std::vector<int> indices, double alpha_rad,
+                                                 double max_gap_m);
+
+}  // namespace plywood::perception

@@ -1,0 +1,214 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "perception/lines/line_extractor_factory.h"
+#include "perception/lines/line_scoring.h"
+#include "perception/lines/ray_explanation.h"
+#include "perception/lines/tls_line_fit.h"
+
+namespace plywood::perception {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// An exact 360-beam scan (1 deg) of a convex polygon around the origin.
+ScanPoints ScanPolygon(const std::vector<Eigen::Vector2d>& corners, int beams = 720,
+                       double noise_m = 0.0, int outlier_beam = -1, double outlier_m = 0.0) {
+  msgs::LaserScan scan;
+  scan.angle_min_rad = -kPi;
+  scan.angle_increment_rad = 2.0 * kPi / beams;
+  scan.range_max_m = 20.0;
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> noise(0.0, noise_m);
+  for (int i = 0; i < beams; ++i) {
+    const double a = scan.BeamAngleRad(i);
+    const Eigen::Vector2d d(std::cos(a), std::sin(a));
+    double best = 20.0;
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+      const Eigen::Vector2d p = corners[k], q = corners[(k + 1) % corners.size()];
+      const Eigen::Vector2d e = q - p;
+      const double den = d.x() * e.y() - d.y() * e.x();
+      if (std::abs(den) < 1e-12) continue;
+      const double t = (p.x() * e.y() - p.y() * e.x()) / den;
+      const double u = (p.x() * d.y() - p.y() * d.x()) / den;
+      if (t > 0 && u >= 0 && u <= 1) best = std::min(best, t);
+    }
+    scan.ranges_m.push_back(best + (noise_m > 0 ? noise(rng) : 0.0));
+  }
+  if (outlier_beam >= 0) scan.ranges_m[outlier_beam] += outlier_m;
+  ScanPoints points = MakeScanPoints(scan, ScanFilter{});
+  points.closed = true;
+  return points;
+}
+
+std::vector<TruthSegment> Edges(const std::vector<Eigen::Vector2d>& corners) {
+  std::vector<TruthSegment> edges;
+  for (std::size_t k = 0; k < corners.size(); ++k)
+    edges.push_back({corners[k], corners[(k + 1) % corners.size()], 100});
+  return edges;
+}
+
+const std::vector<Eigen::Vector2d> kPentagon{
+    {2.0, -1.0}, {2.5, 1.5}, {0.0, 2.2}, {-1.8, 0.7}, {-1.2, -1.6}};
+
+// Rectangular rooms (the seed-000 rooms' shape) off centre: a corner can fall on the seam of the
+// closed scan, where the end-point fit's corner points must still go to their own wall.
+const std::vector<std::vector<Eigen::Vector2d>> kExactPolygons{
+    kPentagon,
+    {{-2.5, -2.0}, {3.5, -2.0}, {3.5, 3.0}, {-2.5, 3.0}},
+    {{-2.2, -2.0}, {3.8, -2.0}, {3.8, 3.0}, {-2.2, 3.0}},
+    {{-1.8, -1.3}, {4.2, -1.3}, {4.2, 1.7}, {-1.8, 1.7}},
+    {{-1.0, -3.1}, {1.4, -3.1}, {1.4, 0.6}, {-1.0, 0.6}}};
+
+TEST(LineExtractorsTest, NoiseFreePolygonGivesExactlyItsEdges) {
+  for (const std::vector<Eigen::Vector2d>& polygon : kExactPolygons) {
+    const ScanPoints scan = ScanPolygon(polygon);
+    for (const std::string& name : LineExtractorNames()) {
+      LineExtractorOptions options;
+      options.polar_neighbour.max_range_m = 10.0;
+      const auto extractor = MakeLineExtractor(name, options);
+      const std::vector<LineSegment> lines = extractor->Extract(scan);
+      ASSERT_EQ(lines.size(), polygon.size()) << name;
+      for (const TruthSegment& edge : Edges(polygon)) {
+        const Eigen::Vector2d u = (edge.b - edge.a).normalized();
+        double alpha = 0, r = 0;
+        CanonicalNormalForm(std::atan2(-u.x(), u.y()), Eigen::Vector2d(u.y(), -u.x()).dot(edge.a),
+                            &alpha, &r);
+        int found = 0;
+        for (const LineSegment& s : lines) {
+          if (AngleDifferenceRad(s.alpha_rad, alpha) < 1e-6 && std::abs(s.r_m - r) < 1e-6) ++found;
+        }
+        EXPECT_EQ(found, 1) << name << " edge alpha " << alpha << " r " << r;
+      }
+    }
+  }
+}
+
+TEST(LineExtractorsTest, ASingleOutlierDoesNotSplitAWall) {
+  // Beam 90 of 720 hits the middle of the long edge (2,-1)-(2.5,1.5) near bearing 0... pick the
+  // beam at bearing +10 deg, well inside an edge.
+  const int beam = 360 + 20;
+  // 12 cm is inside the breakpoint distance (so the outlier stays in the group), 0.8 m is not.
+  for (const double outlier_m : {-0.12, 0.12, -0.8}) {
+    const ScanPoints scan = ScanPolygon(kPentagon, 720, 0.0, beam, outlier_m);
+    for (const char* name : {"split_and_merge", "incremental"}) {
+      const auto lines = MakeLineExtractor(name)->Extract(scan);
+      EXPECT_EQ(lines.size(), kPentagon.size()) << name;
+      LineScore score = ScoreScan(lines, Edges(kPentagon), static_cast<long>(scan.size()));
+      EXPECT_EQ(score.Recall(), 1.0) << name;
+      EXPECT_EQ(score.Precision(), 1.0) << name;
+    }
+  }
+}
+
+TEST(LineExtractorsTest, DegenerateScansGiveNoLines) {
+  msgs::LaserScan scan;
+  scan.angle_min_rad = -kPi / 2;
+  scan.angle_increment_rad = kPi / 360;
+  scan.range_max_m = 8.0;
+  const ScanPoints empty = MakeScanPoints(scan, ScanFilter{});
+  scan.ranges_m.assign(361, 8.0);  // all max range: no returns
+  const ScanPoints all_max = MakeScanPoints(scan, ScanFilter{});
+  EXPECT_TRUE(all_max.empty());
+  ScanPoints single;
+  single.Add(2.0, 0.3, 0);
+  for (const std::string& name : LineExtractorNames()) {
+    const auto extractor = MakeLineExtractor(name);
+    EXPECT_TRUE(extractor->Extract(empty).empty()) << name;
+    EXPECT_TRUE(extractor->Extract(all_max).empty()) << name;
+    EXPECT_TRUE(extractor->Extract(single).empty()) << name;
+  }
+}
+
+TEST(LineExtractorsTest, NoisySquareRoomIsFoundWithSmallErrors) {
+  const std::vector<Eigen::Vector2d> room{{-1.5, -1.2}, {2.0, -1.2}, {2.0, 1.5}, {-1.5, 1.5}};
+  const ScanPoints scan = ScanPolygon(room, 720, 0.01);
+  // polar_neighbour is left out: its 3-point local lines are dominated by 1 cm noise at 0.5 deg
+  // spacing (points 2 cm apart), which is what seed 000's method does; see docs/lines.md.
+  for (const char* name : {"split_and_merge", "incremental", "ransac", "hough"}) {
+    const auto lines = MakeLineExtractor(name)->Extract(scan);
+    const LineScore score = ScoreScan(lines, Edges(room), static_cast<long>(scan.size()));
+    EXPECT_EQ(score.Recall(), 1.0) << name;
+    EXPECT_EQ(score.Precision(), 1.0) << name;
+    EXPECT_LT(score.SigmaRM(), 0.01) << name;
+  }
+}
+
+TEST(LineExtractorsTest, ADoorwayIsNeverBridged) {
+  // Two collinear wall pieces x = 2, y in [-2, -0.45] and [0.45, 2], with the room beyond the
+  // doorway far away (no returns).
+  ScanPoints scan;
+  scan.angle_increment_rad = kPi / 360;
+  for (int i = 0; i <= 360; ++i) {
+    const double a = -kPi / 4 + i * kPi / 720;
+    const double y = 2.0 * std::tan(a);
+    if (std::abs(y) < 0.45) continue;
+    scan.Add(2.0 / std::cos(a), a, i);
+  }
+  for (const std::string& name : LineExtractorNames()) {
+    const auto lines = MakeLineExtractor(name)->Extract(scan);
+    ASSERT_EQ(lines.size(), 2u) << name;
+    for (const auto& s : lines)
+      EXPECT_GT(std::min(std::abs(s.start.y()), std::abs(s.end.y())), 0.44);
+  }
+}
+
+TEST(LineScoringTest, GateAndOverlapAreApplied) {
+  const std::vector<TruthSegment> truth{{{2, -1}, {2, 1}, 20}};
+  LineSegment s;
+  s.alpha_rad = 0.0;
+  s.r_m = 2.04;
+  s.start = {2.04, -0.5};
+  s.end = {2.04, 0.5};
+  EXPECT_EQ(MatchSegment(s, truth, {}), 0);
+  s.r_m = 2.06;  // beyond 5 cm
+  EXPECT_EQ(MatchSegment(s, truth, {}), -1);
+  s.r_m = 2.0;
+  s.start = {2.0, 0.8};  // only 0.2 of 1.2 m overlaps
+  s.end = {2.0, 2.0};
+  EXPECT_EQ(MatchSegment(s, truth, {}), -1);
+}
+
+TEST(RayExplanationTest, DistanceIsToTheSegmentNotTheLine) {
+  LineSegment s;
+  s.alpha_rad = 0;
+  s.r_m = 1;
+  s.start = {1, 0};
+  s.end = {1, 1};
+  const std::vector<Eigen::Vector2d> points{{1.03, 0.5}, {1.0, 1.2}, {1.04, 0.0}};
+  const RayExplanation e = ExplainRays(points, std::vector<LineSegment>{s});
+  EXPECT_EQ(e.rays, 3);
+  EXPECT_EQ(e.explained, 2);
+  EXPECT_NEAR(e.RmsM(), std::sqrt((0.03 * 0.03 + 0.04 * 0.04) / 2), 1e-12);
+}
+
+TEST(LineFitTest, CovarianceShrinksWithMorePoints) {
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> noise(0.0, 0.01);
+  std::vector<Eigen::Vector2d> points;
+  for (int i = 0; i < 200; ++i) points.emplace_back(1.0 + noise(rng), -1.0 + 0.01 * i);
+  std::vector<int> few{0, 1, 2, 3, 4, 5, 6, 7, 8, 9}, all(200);
+  for (int i = 0; i < 200; ++i) all[i] = i;
+  const LineSegment a = FitSegmentTls(points, few), b = FitSegmentTls(points, all);
+  EXPECT_GT(a.covariance(0, 0), 10 * b.covariance(0, 0));
+  EXPECT_NEAR(b.r_m, 1.0, 0.005);
+  EXPECT_NEAR(std::sqrt(b.covariance(1, 1)), 0.01 / std::sqrt(200.0), 0.0005);
+}
+
+TEST(LineExtractorsTest, UnknownNameAndBadOptionsAreRejectedByField) {
+  EXPECT_THROW(MakeLineExtractor("nope"), std::invalid_argument);
+  LineExtractorOptions options;
+  options.split_and_merge.split_threshold_m = -1;
+  try {
+    MakeLineExtractor("split_and_merge", options);
+    ADD_FAILURE();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("split_threshold_m:", 0), 0u);
+  }
+}
+
+}  // namespace
+}  // namespace plywood::perception

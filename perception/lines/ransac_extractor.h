@@ -1,0 +1,48 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "perception/lines/line_extractor.h"
+
+namespace plywood::perception {
+
+// Sequential RANSAC (Fischler & Bolles 1981) as seed 004 used it, with its defects fixed: each
+// round samples `iterations` point pairs from the points not yet explained, keeps the line with
+// most inliers within an absolute distance_threshold_m (seed 004: relative to scene size), stops
+// when that falls below min_inliers, refits the inliers by total least squares and collects them
+// again, cuts them into runs at gaps wider than max_gap_m (walls on one infinite line are
+// separate segments, and two table legs are not bridged), keeps runs of at least min_points, and
+// removes the round's inliers before the next round (seed 004 never did, finding duplicates).
+// Works on unordered point sets (an accumulated cloud) as well as scans. Deterministic: the
+// generator is seeded from `seed` on every call.
+struct RansacOptions {
+  int iterations = 100;
+  double distance_threshold_m = 0.03;
+  int min_inliers = 8;
+  double max_gap_m = 0.3;
+  int min_points = 5;
+  double min_length_m = 0.0;
+  int max_lines = 100;
+  std::uint64_t seed = 4;
+
+  void Validate() const;
+};
+
+class RansacExtractor final : public LineExtractor {
+ public:
+  explicit RansacExtractor(const RansacOptions& options = {});
+  std::string name() const override { return "ransac"; }
+  std::vector<LineSegment> Extract(const ScanPoints& scan) const override;
+  // The same on bare points (e.g. a world-frame cloud); `inliers` (optional) receives each
+  // segment's point indices.
+  std::vector<LineSegment> ExtractFromPoints(
+      std::span<const Eigen::Vector2d> points,
+      std::vector<std::vector<int>>* inliers = nullptr) const;
+
+ private:
+  const RansacOptions options_;
+};
+
+}  // namespace plywood::perception

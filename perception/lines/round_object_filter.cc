@@ -1,0 +1,181 @@
+#include "perception/lines/round_object_filter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "perception/lines/circle_fit.h"
+#include "perception/lines/tls_line_fit.h"
+
+namespace plywood::perception {
+namespace {
+
+constexpr double kTrimSigmas = 3.0;
+constexpr double kMinKeptFraction = 0.8;
+constexpr double kNoiseLevelSigmas = 1.5;
+constexpr double kChiSquarePerParameter = 3.0;
+constexpr double kMinBulgeSigmas = 3.0;
+
+// Whether lines[first..last] (inclusive) are one round object.
+bool IsRoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
+                const RoundObjectOptions& options, const std::vector<std::vector<int>>& lines,
+                int first, int last) {
+  std::vector<int> run;
+  for (int k = first; k <= last; ++k) run.insert(run.end(), lines[k].begin(), lines[k].end());
+  const int total = static_cast<int>(run.size());
+  if (total < options.min_round_points) return false;
+  // Cheap test first: the near side of a round object bulges towards the sensor, beyond the
+  // chord between the run's ends; straight walls and concave corners do not (most runs).
+  {
+    const Eigen::Vector2d a = points[run.front()], b = points[run.back()];
+    Eigen::Vector2d normal(a.y() - b.y(), b.x() - a.x());
+    if (normal.norm() < 1e-12) return false;
+    normal.normalize();
+    if (normal.dot(-a) < 0.0) normal = -normal;  // towards the sensor
+    double bulge_m = 0.0;
+    for (int i : run) bulge_m = std::max(bulge_m, normal.dot(points[i] - a));
+    // A chord c of a circle of radius <= R_max has a sagitta >= R_max - sqrt(R_max^2 - c^2 / 4).
+    const double half_chord = 0.5 * (b - a).norm();
+    const double r_max = options.max_round_radius_m;
+    if (half_chord >= r_max) return false;
+    const double min_sagitta = r_max - std::sqrt(r_max * r_max - half_chord * half_chord);
+    const double noise_m = kMinBulgeSigmas * noise_sigma_m;
+    if (bulge_m < std::max(noise_m, min_sagitta - noise_m)) return false;
+  }
+  std::optional<CircleFit> circle = FitCircle(points, run);
+  if (!circle) return false;
+  // Trim the points off the circle once and refit.
+  const double trim_m = kTrimSigmas * noise_sigma_m;
+  const auto off_circle = [&](int i) {
+    return std::abs((points[i] - circle->centre).norm() - circle->radius_m) > trim_m;
+  };
+  std::vector<int> kept;
+  std::vector<char> is_kept(run.size());  // in run order: lines[first..last] concatenated
+  for (std::size_t j = 0; j < run.size(); ++j) {
+    is_kept[j] = !off_circle(run[j]);
+    if (is_kept[j]) kept.push_back(run[j]);
+  }
+  if (kept.size() < kMinKeptFraction * total ||
+      static_cast<int>(kept.size()) < options.min_round_points) {
+    return false;
+  }
+  if (static_cast<int>(kept.size()) < total) {
+    circle = FitCircle(points, kept);
+    if (!circle) return false;
+  }
+  if (circle->radius_m > options.max_round_radius_m) return false;
+  // Seen from outside: the sensor (origin) lies outside the circle, so the points are its near
+  // side. A concave arc around the sensor is a curved wall, not an object.
+  if (circle->centre.norm() <= circle->radius_m) return false;
+  // A round object seen from outside shows nearly half its circumference (180 deg minus twice
+  // asin(R / distance)), centred on the direction to the sensor; clutter that happens to fit a
+  // small circle shows a short piece of one.
+  std::vector<double> angles;
+  Eigen::Vector2d mean_direction = Eigen::Vector2d::Zero();
+  for (int i : kept) {
+    const Eigen::Vector2d d = (points[i] - circle->centre).normalized();
+    angles.push_back(std::atan2(d.y(), d.x()));
+    mean_direction += d;
+  }
+  if (mean_direction.dot(-circle->centre) <= 0.0) return false;  // the far side: never seen
+  std::sort(angles.begin(), angles.end());
+  double largest_gap = angles.front() + 2.0 * M_PI - angles.back();
+  for (std::size_t k = 1; k < angles.size(); ++k) {
+    largest_gap = std::max(largest_gap, angles[k] - angles[k - 1]);
+  }
+  if ((2.0 * M_PI - largest_gap) * 180.0 / M_PI < options.min_round_arc_deg) return false;
+
+  // The run's lines refitted to the kept points.
+  const int line_count = last - first + 1;
+  double lines_rss_m2 = 0.0;
+  std::size_t j = 0;
+  for (int k = first; k <= last; ++k) {
+    LineMoments moments;
+    for (int i : lines[k])
+      if (is_kept[j++]) moments.Add(points[i]);
+    if (moments.count() < 3) continue;  // two points lie on their line exactly
+    double alpha = 0.0, r = 0.0, rss = 0.0;
+    moments.Fit(&alpha, &r, &rss);
+    lines_rss_m2 += rss;
+  }
+  const int n = static_cast<int>(kept.size());
+  const int line_parameters = 3 * line_count - 1;
+  if (n <= line_parameters) return false;
+  // (a) The circle explains the points at least as well as the lines, each residual variance
+  // over its degrees of freedom.
+  const double circle_variance = circle->rss_m2 / (n - 3);
+  if (circle_variance <= lines_rss_m2 / (n - line_parameters)) return true;
+  // (b) With few points the lines' extra parameters can fit the noise: the circle still wins when
+  // it fits at the sensor's noise level and the lines' gain is what their extra parameters buy
+  // from noise alone (a chi-square budget per extra parameter, the noise sigma known).
+  const double noise_m2 = noise_sigma_m * noise_sigma_m;
+  return circle_variance <= kNoiseLevelSigmas * kNoiseLevelSigmas * noise_m2 &&
+         circle->rss_m2 - lines_rss_m2 <= kChiSquarePerParameter * (line_parameters - 3) * noise_m2;
+}
+
+}  // namespace
+
+void RoundObjectOptions::Validate() const {
+  if (!(max_round_radius_m > 0.0)) {
+    throw std::invalid_argument("max_round_radius_m: must be > 0, got " +
+                                std::to_string(max_round_radius_m));
+  }
+  if (!(min_round_arc_deg >= 0.0 && min_round_arc_deg <= 360.0)) {
+    throw std::invalid_argument("min_round_arc_deg: must be in [0, 360], got " +
+                                std::to_string(min_round_arc_deg));
+  }
+  if (min_round_points < 4) {
+    throw std::invalid_argument("min_round_points: must be >= 4, got " +
+                                std::to_string(min_round_points));
+  }
+}
+
+void RemoveRoundObjects(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
+                        const RoundObjectOptions& options, std::vector<std::vector<int>>* lines) {
+  if (!options.reject_round_objects || lines->empty()) return;
+  const int count = static_cast<int>(lines->size());
+  std::vector<char> drop(count, 0);
+  // Bounding box of each line's points.
+  std::vector<Eigen::Vector2d> box_lo(count), box_hi(count);
+  for (int k = 0; k < count; ++k) {
+    if ((*lines)[k].empty()) continue;
+    box_lo[k] = box_hi[k] = points[(*lines)[k].front()];
+    for (int i : (*lines)[k]) {
+      box_lo[k] = box_lo[k].cwiseMin(points[i]);
+      box_hi[k] = box_hi[k].cwiseMax(points[i]);
+    }
+  }
+  for (int first = 0; first < count;) {
+    if ((*lines)[first].empty()) {
+      ++first;
+      continue;
+    }
+    // The longest round run starting here.
+    int round_last = -1;
+    Eigen::Vector2d lo = box_lo[first], hi = box_hi[first];
+    for (int last = first + 1; last < count; ++last) {
+      if ((*lines)[last].empty()) break;
+      // Points on a circle of radius R lie within 2 R of each other.
+      lo = lo.cwiseMin(box_lo[last]), hi = hi.cwiseMax(box_hi[last]);
+      if ((hi - lo).norm() > 2.0 * options.max_round_radius_m) break;
+      if (IsRoundRun(points, noise_sigma_m, options, *lines, first, last)) round_last = last;
+    }
+    if (round_last < 0) {
+      ++first;
+      continue;
+    }
+    for (int k = first; k <= round_last; ++k) drop[k] = 1;
+    first = round_last + 1;
+  }
+  int out = 0;
+  for (int k = 0; k < count; ++k) {
+    if (drop[k]) continue;
+    if (out != k) (*lines)[out] = std::move((*lines)[k]);  // never self-move: it may clear
+    ++out;
+  }
+  lines->resize(out);
+}
+
+}  // namespace plywood::perception

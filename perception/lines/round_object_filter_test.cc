@@ -1,0 +1,166 @@
+#include "perception/lines/round_object_filter.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "perception/lines/scan_points.h"
+#include "perception/lines/split_and_merge_extractor.h"
+
+namespace plywood::perception {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+struct Disc {
+  Eigen::Vector2d centre;
+  double radius_m;
+};
+
+// A closed 720-beam scan (0.5 deg, two back-to-back LMS 200) from the origin of polygons
+// (each a closed chain of corners) and discs, with Gaussian range noise.
+ScanPoints ScanScene(const std::vector<std::vector<Eigen::Vector2d>>& polygons,
+                     const std::vector<Disc>& discs, double noise_m = 0.0) {
+  msgs::LaserScan scan;
+  scan.angle_min_rad = -kPi;
+  scan.angle_increment_rad = kPi / 360.0;
+  scan.range_max_m = 20.0;
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> noise(0.0, noise_m);
+  for (int i = 0; i < 720; ++i) {
+    const double a = scan.BeamAngleRad(i);
+    const Eigen::Vector2d d(std::cos(a), std::sin(a));
+    double best = 20.0;
+    for (const auto& corners : polygons) {
+      for (std::size_t k = 0; k < corners.size(); ++k) {
+        const Eigen::Vector2d p = corners[k], e = corners[(k + 1) % corners.size()] - p;
+        const double den = d.x() * e.y() - d.y() * e.x();
+        if (std::abs(den) < 1e-12) continue;
+        const double t = (p.x() * e.y() - p.y() * e.x()) / den;
+        const double u = (p.x() * d.y() - p.y() * d.x()) / den;
+        if (t > 0 && u >= 0 && u <= 1) best = std::min(best, t);
+      }
+    }
+    for (const Disc& disc : discs) {
+      const double along = disc.centre.dot(d);
+      const double off_sq = disc.centre.squaredNorm() - along * along;
+      const double r_sq = disc.radius_m * disc.radius_m;
+      if (off_sq <= r_sq && along > 0) best = std::min(best, along - std::sqrt(r_sq - off_sq));
+    }
+    scan.ranges_m.push_back(best + (noise_m > 0 ? noise(rng) : 0.0));
+  }
+  ScanPoints points = MakeScanPoints(scan, ScanFilter{});
+  points.closed = true;
+  return points;
+}
+
+const std::vector<Eigen::Vector2d> kRoom{{-2.5, -2.0}, {3.5, -2.0}, {3.5, 3.0}, {-2.5, 3.0}};
+
+int LinesNear(const std::vector<LineSegment>& lines, const Eigen::Vector2d& p, double radius_m) {
+  int count = 0;
+  for (const LineSegment& s : lines) count += s.SegmentDistance(p) < radius_m;
+  return count;
+}
+
+TEST(RoundObjectFilterTest, AColumnGivesNoLinesAndTheWallsStayExact) {
+  const Disc column{{1.2, 0.6}, 0.15};
+  const ScanPoints scan = ScanScene({kRoom}, {column});
+  SplitAndMergeOptions keep_round;
+  keep_round.round_objects.reject_round_objects = false;
+  EXPECT_GE(LinesNear(SplitAndMergeExtractor(keep_round).Extract(scan), column.centre, 0.2), 2)
+      << "without the filter the column is cut into chords";
+
+  const std::vector<LineSegment> lines = SplitAndMergeExtractor().Extract(scan);
+  EXPECT_EQ(LinesNear(lines, column.centre, 0.2), 0);
+  // The four walls, the one behind the column in two pieces, each exact.
+  EXPECT_EQ(lines.size(), 5u);
+  for (const LineSegment& s : lines) {
+    const double x = s.r_m * std::cos(s.alpha_rad), y = s.r_m * std::sin(s.alpha_rad);
+    const bool on_wall = std::abs(x - 3.5) < 1e-6 || std::abs(x + 2.5) < 1e-6 ||
+                         std::abs(y - 3.0) < 1e-6 || std::abs(y + 2.0) < 1e-6;
+    EXPECT_TRUE(on_wall) << "alpha " << s.alpha_rad << " r " << s.r_m;
+  }
+}
+
+TEST(RoundObjectFilterTest, NoisyColumnsGoAndABoxCornerStays) {
+  // 1 cm range noise (the LMS 200); columns at 1.3 and 2.4 m; a 0.4 m square box turned 45 deg so
+  // the sensor sees one of its convex corners with two 0.4 m faces.
+  const Disc near_column{{1.3, 0.2}, 0.2}, far_column{{-1.0, 2.2}, 0.2};
+  const Eigen::Vector2d box_centre(0.3, -1.4);
+  std::vector<Eigen::Vector2d> box;
+  for (int k = 0; k < 4; ++k) {
+    const double a = k * kPi / 2.0;
+    box.push_back(box_centre + 0.2 * std::sqrt(2.0) * Eigen::Vector2d(std::cos(a), std::sin(a)));
+  }
+  const ScanPoints scan = ScanScene({kRoom, box}, {near_column, far_column}, 0.01);
+  const std::vector<LineSegment> lines = SplitAndMergeExtractor().Extract(scan);
+  EXPECT_EQ(LinesNear(lines, near_column.centre, near_column.radius_m + 0.05), 0);
+  EXPECT_EQ(LinesNear(lines, far_column.centre, far_column.radius_m + 0.05), 0);
+  // Both visible box faces, each within 3 deg of its true direction (normals at -45 and -135 deg
+  // seen from the box centre, so normal-form alpha -135 or 45 and -45 or 135 from the origin).
+  int faces = 0;
+  for (const LineSegment& s : lines) {
+    if (s.SegmentDistance(box_centre) > 0.35) continue;
+    const double folded = std::remainder(s.alpha_rad - kPi / 4.0, kPi / 2.0);
+    EXPECT_LT(std::abs(folded), 3.0 * kPi / 180.0);
+    ++faces;
+  }
+  EXPECT_EQ(faces, 2);
+}
+
+TEST(RoundObjectFilterTest, SingleLinesAndArcsAroundTheSensorStay) {
+  // Points on a circle of radius 0.4 m around the sensor (a curved wall seen from inside), cut in
+  // two "lines": never an object.
+  std::vector<Eigen::Vector2d> points;
+  for (int k = 0; k < 20; ++k) {
+    const double a = -0.8 + 1.6 * k / 19.0;
+    points.push_back(0.4 * Eigen::Vector2d(std::cos(a), std::sin(a)) + Eigen::Vector2d(0.1, 0));
+  }
+  std::vector<std::vector<int>> lines{{}, {}};
+  for (int k = 0; k < 20; ++k) lines[k < 10 ? 0 : 1].push_back(k);
+  RemoveRoundObjects(points, 0.01, {}, &lines);
+  EXPECT_EQ(lines.size(), 2u);
+
+  // The arc turned to face the sensor from 2 m away is what a laser sees of a column, but over
+  // 92 deg only: kept at the default min_round_arc_deg, dropped when any arc will do.
+  for (auto& p : points) p = Eigen::Vector2d(2.1, 0.0) - (p - Eigen::Vector2d(0.1, 0.0));
+  std::vector<std::vector<int>> copy = lines;
+  RemoveRoundObjects(points, 0.01, {}, &copy);
+  EXPECT_EQ(copy.size(), 2u);
+  RoundObjectOptions any_arc;
+  any_arc.min_round_arc_deg = 0.0;
+  RemoveRoundObjects(points, 0.01, any_arc, &copy);
+  EXPECT_TRUE(copy.empty());
+  // Its far side (mirrored through the centre) is never visible: kept.
+  std::vector<Eigen::Vector2d> far_side;
+  for (const auto& p : points) far_side.push_back(Eigen::Vector2d(4.2, 0.0) - p);
+  copy = lines;
+  RemoveRoundObjects(far_side, 0.01, any_arc, &copy);
+  EXPECT_EQ(copy.size(), 2u);
+
+  // A single line is never dropped, however round its points.
+  std::vector<std::vector<int>> one{{}};
+  for (int k = 0; k < 20; ++k) one[0].push_back(k);
+  RemoveRoundObjects(points, 0.01, any_arc, &one);
+  EXPECT_EQ(one.size(), 1u);
+}
+
+TEST(RoundObjectFilterTest, BadOptionsAreRejectedByField) {
+  const auto message = [](const RoundObjectOptions& o) {
+    try {
+      o.Validate();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(message({.max_round_radius_m = 0.0}).rfind("max_round_radius_m:", 0), 0u);
+  EXPECT_EQ(message({.min_round_points = 2}).rfind("min_round_points:", 0), 0u);
+  EXPECT_EQ(message({.min_round_arc_deg = -1.0}).rfind("min_round_arc_deg:", 0), 0u);
+}
+
+}  // namespace
+}  // namespace plywood::perception

@@ -1,0 +1,43 @@
+#include "perception/lines/scan_points.h"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace plywood::perception {
+
+void ScanPoints::Add(double r, double bearing, int beam) {
+  range_m.push_back(r);
+  bearing_rad.push_back(bearing);
+  points.emplace_back(r * std::cos(bearing), r * std::sin(bearing));
+  beam_index.push_back(beam);
+}
+
+ScanPoints MakeScanPoints(const msgs::LaserScan& scan, const ScanFilter& filter) {
+  return MakeCombinedScanPoints({scan}, {0.0}, filter);
+}
+
+ScanPoints MakeCombinedScanPoints(const std::vector<msgs::LaserScan>& scans,
+                                  const std::vector<double>& heading_offsets_rad,
+                                  const ScanFilter& filter) {
+  if (scans.size() != heading_offsets_rad.size()) {
+    throw std::invalid_argument("heading_offsets_rad: need one offset per scan");
+  }
+  ScanPoints out;
+  int beam = 0;
+  double covered_rad = 0.0;
+  for (std::size_t k = 0; k < scans.size(); ++k) {
+    const msgs::LaserScan& scan = scans[k];
+    if (k == 0) out.angle_increment_rad = scan.angle_increment_rad;
+    covered_rad += std::abs(scan.angle_increment_rad) * static_cast<double>(scan.ranges_m.size());
+    for (std::size_t i = 0; i < scan.ranges_m.size(); ++i, ++beam) {
+      const double r = scan.ranges_m[i];
+      if (!std::isfinite(r) || !scan.IsReturn(i) || !filter.Passes(r)) continue;
+      out.Add(r, scan.BeamAngleRad(i) + heading_offsets_rad[k], beam);
+    }
+  }
+  out.closed = scans.size() > 1 && covered_rad >= 2.0 * std::numbers::pi - 1e-9;
+  return out;
+}
+
+}  // namespace plywood::perception

@@ -1,0 +1,59 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <span>
+#include <vector>
+
+#include "perception/lines/line_segment.h"
+
+namespace plywood::perception {
+
+// Running first and second moments of a point set: O(1) to add or remove a point, O(1) to fit,
+// which makes incremental extraction and merge tests cheap.
+class LineMoments {
+ public:
+  void Add(const Eigen::Vector2d& p);
+  void Remove(const Eigen::Vector2d& p);
+  int count() const { return n_; }
+  // Total-least-squares line in normal form (alpha, r >= 0): minimises the sum of squared
+  // perpendicular distances. Returns the residual sum of squares in *rss_m2 when given.
+  // @pre count() >= 2.
+  void Fit(double* alpha_rad, double* r_m, double* rss_m2 = nullptr) const;
+
+ private:
+  int n_ = 0;
+  // Sums relative to the first point added, so far-away points (world-frame clouds) keep
+  // precision.
+  Eigen::Vector2d origin_ = Eigen::Vector2d::Zero();
+  double sx_ = 0, sy_ = 0, sxx_ = 0, syy_ = 0, sxy_ = 0;
+};
+
+// A segment from `points[indices]` fitted by total least squares in normal form, with endpoints
+// the projections of the extreme points along the line, and the (alpha, r) covariance.
+// @pre indices.size() >= 2.
+LineSegment FitSegmentTls(std::span<const Eigen::Vector2d> points, std::span<const int> indices);
+
+// FitSegmentTls, then up to `rounds` times: drop the points farther from the line than
+// max(trim_sigmas * 1.4826 * median |residual|, 1e-9 m) and refit. Removes points of a
+// neighbouring wall that a distance gate let in near a corner (RANSAC, Hough, incremental), and
+// leaves exact points exact.
+LineSegment FitSegmentTrimmed(std::span<const Eigen::Vector2d> points, std::vector<int> indices,
+                              double trim_sigmas = 3.0, int rounds = 2);
+
+// Seed 003's modal filter (Skrzypczynski & Wozniak 1994), in normal form so vertical lines work:
+// directions of point pairs `pair_step` apart are histogrammed in bins of `bin_deg`; the mode
+// (with its two neighbouring bins) gives the direction as the mean of its pairs; r is the mean of
+// p . n over the points of those pairs. Robust to single outliers, which pull a least-squares fit.
+struct ModalFitOptions {
+  int pair_step = 3;
+  double bin_deg = 2.0;
+  void Validate() const;
+};
+LineSegment FitSegmentModal(std::span<const Eigen::Vector2d> points, std::span<const int> indices,
+                            const ModalFitOptions& options);
+
+// Largest perpendicular distance of points[indices] from the line (alpha, r).
+double MaxLineDistance(std::span<const Eigen::Vector2d> points, std::span<const int> indices,
+                       double alpha_rad, double r_m);
+
+}  // namespace plywood::perception

@@ -1,0 +1,170 @@
+#include "perception/logs/carmen_log.h"
+
+#include <zlib.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+
+#include "perception/logs/parse_number.h"
+
+namespace plywood::perception {
+namespace {
+
+// Strict number parsing: the whole token must be a finite number.
+double ParseNumber(const std::string& token, const char* field) {
+  const std::optional<double> value = ParseFiniteNumber(token);
+  if (!value) {
+    throw std::runtime_error(std::string(field) + ": not a finite number: '" + token + "'");
+  }
+  return *value;
+}
+
+std::vector<std::string> Tokens(const std::string& line) {
+  std::istringstream in(line);
+  std::vector<std::string> tokens;
+  for (std::string t; in >> t;) tokens.push_back(t);
+  return tokens;
+}
+
+void ParseFlaser(const std::vector<std::string>& t, CarmenLog* log) {
+  if (t.size() < 2) throw std::runtime_error("FLASER: missing beam count");
+  const double n_value = ParseNumber(t[1], "FLASER beam count");
+  if (n_value < 1 || n_value > 100000 || n_value != std::floor(n_value)) {
+    throw std::runtime_error("FLASER beam count: must be a whole number in 1..100000");
+  }
+  const auto n = static_cast<std::size_t>(n_value);
+  // n ranges, then x y theta odom_x odom_y odom_theta ipc_timestamp hostname logger_timestamp.
+  if (t.size() != 2 + n + 9) {
+    throw std::runtime_error("FLASER: expected " + std::to_string(2 + n + 9) + " fields for " +
+                             std::to_string(n) + " beams, got " + std::to_string(t.size()));
+  }
+  CarmenLaserRecord record;
+  record.scan.ranges_m.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = ParseNumber(t[2 + i], "FLASER range");
+    if (r < 0.0) throw std::runtime_error("FLASER range: negative range " + t[2 + i]);
+    record.scan.ranges_m[i] = r;
+  }
+  const std::size_t p = 2 + n;
+  record.X_WL = {ParseNumber(t[p], "FLASER x"), ParseNumber(t[p + 1], "FLASER y"),
+                 ParseNumber(t[p + 2], "FLASER theta")};
+  record.X_WR_odom = {ParseNumber(t[p + 3], "FLASER odom_x"),
+                      ParseNumber(t[p + 4], "FLASER odom_y"),
+                      ParseNumber(t[p + 5], "FLASER odom_theta")};
+  record.scan.time_s = ParseNumber(t[p + 6], "FLASER ipc_timestamp");
+  ParseNumber(t[p + 8], "FLASER logger_timestamp");
+  record.scan.angle_min_rad = -std::numbers::pi / 2.0;
+  record.scan.angle_increment_rad = n > 1 ? std::numbers::pi / static_cast<double>(n - 1) : 0.0;
+  log->lasers.push_back(std::move(record));
+}
+
+// Line-oriented reader over plain or gzip files (zlib reads both transparently).
+class LineReader {
+ public:
+  explicit LineReader(const std::filesystem::path& path) : file_(gzopen(path.c_str(), "rb")) {
+    if (file_ == nullptr) throw std::runtime_error(path.string() + ": cannot open");
+  }
+  ~LineReader() { gzclose(file_); }
+  LineReader(const LineReader&) = delete;
+  LineReader& operator=(const LineReader&) = delete;
+
+  bool Next(std::string* line) {
+    line->clear();
+    char buffer[65536];
+    while (gzgets(file_, buffer, sizeof(buffer)) != nullptr) {
+      line->append(buffer);
+      if (!line->empty() && line->back() == '\n') {
+        line->pop_back();
+        if (!line->empty() && line->back() == '\r') line->pop_back();
+        return true;
+      }
+    }
+    return !line->empty();
+  }
+
+ private:
+  gzFile file_;
+};
+
+}  // namespace
+
+bool ParseCarmenLine(const std::string& line, CarmenLog* log) {
+  const std::vector<std::string> t = Tokens(line);
+  if (t.empty() || t[0][0] == '#') return false;
+  if (t[0] == "FLASER") {
+    ParseFlaser(t, log);
+    return true;
+  }
+  if (t[0] == "PARAM") {
+    if (t.size() < 3) throw std::runtime_error("PARAM: expected a name and a value");
+    log->params[t[1]] = t[2];
+    return true;
+  }
+  return false;
+}
+
+CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptions& options) {
+  if (!std::filesystem::is_regular_file(path)) {
+    throw std::runtime_error(path.string() + ": no such log file");
+  }
+  CarmenLog log;
+  LineReader reader(path);
+  std::string line;
+  for (std::size_t number = 1; reader.Next(&line); ++number) {
+    const std::size_t before = log.lasers.size();
+    try {
+      ParseCarmenLine(line, &log);
+    } catch (const std::exception& e) {
+      if (!options.skip_bad) {
+        throw std::runtime_error(path.string() + ":" + std::to_string(number) + ": " + e.what());
+      }
+      ++log.skipped_lines;
+      continue;
+    }
+    if (log.lasers.size() > before) log.lasers.back().line_number = number;
+  }
+  // Range limits: PARAM front_laser_max when the log has it, else the largest range in the log.
+  double range_max = 0.0;
+  if (auto it = log.params.find("front_laser_max"); it != log.params.end()) {
+    range_max = std::strtod(it->second.c_str(), nullptr);
+  }
+  if (!(range_max > 0.0)) {
+    for (const auto& record : log.lasers) {
+      for (double r : record.scan.ranges_m) range_max = std::max(range_max, r);
+    }
+  }
+  for (auto& record : log.lasers) record.scan.range_max_m = range_max;
+  return log;
+}
+
+void WriteCarmenLaser(std::ostream& out, const CarmenLaserRecord& record) {
+  char number[64];
+  const auto put = [&](double v, const char* format) {
+    std::snprintf(number, sizeof(number), format, v);
+    out << ' ' << number;
+  };
+  out << "FLASER " << record.scan.ranges_m.size();
+  for (double r : record.scan.ranges_m) put(std::min(r, record.scan.range_max_m), "%.3f");
+  put(record.X_WL.x_m, "%.6f");
+  put(record.X_WL.y_m, "%.6f");
+  put(record.X_WL.theta_rad, "%.6f");
+  put(record.X_WR_odom.x_m, "%.6f");
+  put(record.X_WR_odom.y_m, "%.6f");
+  put(record.X_WR_odom.theta_rad, "%.6f");
+  put(record.scan.time_s, "%.6f");
+  out << " plywood";
+  put(record.scan.time_s, "%.6f");
+  out << '\n';
+}
+
+void WriteCarmenParam(std::ostream& out, const std::string& name, const std::string& value) {
+  out << "PARAM " << name << ' ' << value << " plywood 0.000000\n";
+}
+
+}  // namespace plywood::perception

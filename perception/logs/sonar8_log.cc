@@ -1,0 +1,76 @@
+#include "perception/logs/sonar8_log.h"
+
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+
+#include "perception/logs/parse_number.h"
+
+namespace plywood::perception {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::vector<std::vector<double>> ReadColumns(const std::filesystem::path& path, int columns) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path.string() + ": cannot open");
+  std::vector<std::vector<double>> rows;
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    std::istringstream s(line);
+    std::vector<double> row;
+    std::string token;
+    while (s >> token) {
+      const std::optional<double> v = ParseFiniteNumber(token);
+      if (!v) {
+        throw std::runtime_error(path.string() + ": line " + std::to_string(n) + ": '" + token +
+                                 "' is not a number");
+      }
+      row.push_back(*v);
+    }
+    if (static_cast<int>(row.size()) != columns)
+      throw std::runtime_error(path.string() + ": line " + std::to_string(n) + ": expected " +
+                               std::to_string(columns) + " numbers, got " +
+                               std::to_string(row.size()));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace
+
+std::vector<Sonar8Record> LoadSonar8Log(const std::filesystem::path& folder) {
+  const auto m = ReadColumns(folder / "measurement.txt", 9);
+  const auto p = ReadColumns(folder / "poses.txt", 4);
+  if (m.size() != p.size())
+    throw std::runtime_error((folder / "poses.txt").string() + ": " + std::to_string(p.size()) +
+                             " poses for " + std::to_string(m.size()) + " measurements");
+  constexpr std::array<double, 8> kBearingDeg{-90, -37.5, -22.5, -7.5, 7.5, 22.5, 37.5, 90};
+  std::vector<Sonar8Record> out;
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    if (m[i][0] != p[i][0])
+      throw std::runtime_error((folder / "poses.txt").string() + ": line " + std::to_string(i + 1) +
+                               ": timestamp differs from measurement.txt");
+    Sonar8Record r;
+    r.X_WR = {p[i][1] / 1000.0, p[i][2] / 1000.0, msgs::WrapAngle(p[i][3] / 10.0 * kPi / 180.0)};
+    r.ring.time_s = m[i][0] / 1000.0;
+    r.ring.range_min_m = 0.17;
+    r.ring.range_max_m = 5.0;
+    for (int k = 0; k < 8; ++k) {
+      msgs::RangeReading reading;
+      reading.X_RS = {0.0, 0.0, kBearingDeg[k] * kPi / 180.0};
+      const double range_m = m[i][k + 1] / 1000.0;
+      reading.echo = range_m >= 0.17 && range_m <= 5.0;
+      reading.range_m = reading.echo ? range_m : 0.0;
+      r.ring.readings.push_back(reading);
+    }
+    out.push_back(r);
+  }
+  return out;
+}
+
+}  // namespace plywood::perception

@@ -1,0 +1,332 @@
+#include "perception/sonar_map/cognitive_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "perception/sonar_map/line_fit.h"
+
+namespace plywood::perception {
+namespace {
+
+// Position of one room side from its boundary points: the mode column (or row) of the points
+// gives the wall; points within the band around it are fitted with the chi-square line
+// u = a + b v, evaluated at the middle of their v span.
+std::optional<double> FitSide(const std::vector<Eigen::Vector2d>& uv, double res, double band,
+                              double sigma, int min_points) {
+  if (static_cast<int>(uv.size()) < min_points) return std::nullopt;
+  std::map<long, int> histogram;
+  for (const auto& p : uv) ++histogram[std::lround(p.x() / res)];
+  long mode = histogram.begin()->first;
+  for (const auto& [bin, count] : histogram)
+    if (count > histogram[mode]) mode = bin;
+  std::vector<double> u, v, s;
+  for (const auto& p : uv) {
+    if (std::abs(p.x() - mode * res) <= band) {
+      u.push_back(p.x());
+      v.push_back(p.y());
+      s.push_back(sigma);
+    }
+  }
+  if (static_cast<int>(u.size()) < min_points) return std::nullopt;
+  const auto [vmin, vmax] = std::minmax_element(v.begin(), v.end());
+  if (*vmax - *vmin < 1e-9) return mode * res;
+  const LineFit fit = ChiSquareLineFit(v, u, s);
+  return fit.a + fit.b * 0.5 * (*vmin + *vmax);
+}
+
+double Snap(double value, const std::vector<double>& earlier, double d_e) {
+  double best = value, best_d = d_e;
+  for (double e : earlier) {
+    if (std::abs(e - value) <= best_d) {
+      best_d = std::abs(e - value);
+      best = e;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+std::vector<Eigen::Vector2i> TrimThinEnds(const std::vector<Eigen::Vector2i>& cells,
+                                          double min_fill) {
+  if (cells.empty()) return cells;
+  std::map<int, int> in_row, in_column;
+  for (const Eigen::Vector2i& c : cells) {
+    ++in_row[c.y()];
+    ++in_column[c.x()];
+  }
+  // The outermost keys whose count reaches min_fill of the largest count.
+  auto span = [min_fill](const std::map<int, int>& counts) {
+    int fullest = 0;
+    for (const auto& [key, n] : counts) fullest = std::max(fullest, n);
+    // A row holding exactly min_fill of the fullest counts (0.7 * 10 is 7.000000000000001).
+    const double needed = min_fill * fullest - 1e-9;
+    int lo = counts.rbegin()->first, hi = counts.begin()->first;
+    for (const auto& [key, n] : counts)
+      if (n >= needed) lo = std::min(lo, key), hi = std::max(hi, key);
+    return std::pair{lo, hi};
+  };
+  const auto [y0, y1] = span(in_row);
+  const auto [x0, x1] = span(in_column);
+  std::vector<Eigen::Vector2i> kept;
+  for (const Eigen::Vector2i& c : cells)
+    if (c.x() >= x0 && c.x() <= x1 && c.y() >= y0 && c.y() <= y1) kept.push_back(c);
+  return kept;
+}
+
+void CognitiveMapOptions::Validate() const {
+  if (!(eps > 0.0 && eps < 0.5)) throw std::invalid_argument("eps: must be in (0, 0.5)");
+  if (!(snap_distance_m >= 0.0)) throw std::invalid_argument("snap_distance_m: must be >= 0");
+  if (!(fit_sigma_m > 0.0)) throw std::invalid_argument("fit_sigma_m: must be > 0");
+  if (min_wall_points < 2) throw std::invalid_argument("min_wall_points: must be >= 2");
+  if (min_obstacle_cells < 1) throw std::invalid_argument("min_obstacle_cells: must be >= 1");
+  if (!(obstacle_free_p > 0.0 && obstacle_free_p <= eps))
+    throw std::invalid_argument("obstacle_free_p: must be in (0, eps]");
+  if (!(std::isfinite(obstacle_join_m) && obstacle_join_m >= 0.0))
+    throw std::invalid_argument("obstacle_join_m: must be a finite number >= 0");
+  if (!(wall_band_m >= 0.0)) throw std::invalid_argument("wall_band_m: must be >= 0");
+  if (!(min_passage_m >= 0.0)) throw std::invalid_argument("min_passage_m: must be >= 0");
+  if (!(side_free_overrun_m >= 0.0))
+    throw std::invalid_argument("side_free_overrun_m: must be >= 0");
+  if (!(obstacle_min_fill >= 0.0 && obstacle_min_fill <= 1.0))
+    throw std::invalid_argument("obstacle_min_fill: must be in [0, 1]");
+}
+
+CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& inside,
+                               const CognitiveMapOptions& options) {
+  options.Validate();
+  const double res = grid.resolution_m();
+  const int W = grid.width(), H = grid.height();
+  std::vector<char> occ(static_cast<std::size_t>(W) * H, 0);
+  std::vector<char> seen_free(occ.size(), 0);
+  for (int iy = 0; iy < H; ++iy)
+    for (int ix = 0; ix < W; ++ix) {
+      const double p = grid.Probability(ix, iy);
+      occ[iy * W + ix] = p > 1.0 - options.eps;
+      seen_free[iy * W + ix] = p < options.eps;
+    }
+  auto is_occ = [&](int ix, int iy) { return occ[static_cast<std::size_t>(iy) * W + ix] != 0; };
+
+  Eigen::Vector2i c0 = grid.CellAt(inside);
+  if (c0.x() < 0) throw std::invalid_argument("inside: the point is outside the grid");
+
+  // Boundary points nearest the robot: one per row (west, east) and one per column (south, north),
+  // at the face of the first occupied cell met when scanning outwards from the inside point.
+  std::vector<Eigen::Vector2d> west, east, south, north;  // (u = position, v = along the side)
+  for (int iy = 0; iy < H; ++iy) {
+    if (is_occ(c0.x(), iy)) continue;
+    const double y = grid.CellCentre(0, iy).y();
+    for (int ix = c0.x(); ix >= 0; --ix)
+      if (is_occ(ix, iy)) {
+        west.emplace_back(grid.CellCentre(ix, iy).x() + 0.5 * res, y);
+        break;
+      }
+    for (int ix = c0.x(); ix < W; ++ix)
+      if (is_occ(ix, iy)) {
+        east.emplace_back(grid.CellCentre(ix, iy).x() - 0.5 * res, y);
+        break;
+      }
+  }
+  for (int ix = 0; ix < W; ++ix) {
+    if (is_occ(ix, c0.y())) continue;
+    const double x = grid.CellCentre(ix, 0).x();
+    for (int iy = c0.y(); iy >= 0; --iy)
+      if (is_occ(ix, iy)) {
+        south.emplace_back(grid.CellCentre(ix, iy).y() + 0.5 * res, x);
+        break;
+      }
+    for (int iy = c0.y(); iy < H; ++iy)
+      if (is_occ(ix, iy)) {
+        north.emplace_back(grid.CellCentre(ix, iy).y() - 0.5 * res, x);
+        break;
+      }
+  }
+  // Fallback for a side never seen occupied: the outermost cell seen free.
+  double free_x0 = inside.x(), free_x1 = inside.x(), free_y0 = inside.y(), free_y1 = inside.y();
+  for (int iy = 0; iy < H; ++iy)
+    for (int ix = 0; ix < W; ++ix)
+      if (seen_free[iy * W + ix]) {
+        const Eigen::Vector2d c = grid.CellCentre(ix, iy);
+        free_x0 = std::min(free_x0, c.x() - 0.5 * res);
+        free_x1 = std::max(free_x1, c.x() + 0.5 * res);
+        free_y0 = std::min(free_y0, c.y() - 0.5 * res);
+        free_y1 = std::max(free_y1, c.y() + 0.5 * res);
+      }
+  const double band = options.wall_band_m, sigma = options.fit_sigma_m;
+  const int min_pts = options.min_wall_points;
+  CognitiveMap map;
+  map.room.x0 = FitSide(west, res, band, sigma, min_pts).value_or(free_x0);
+  map.room.x1 = FitSide(east, res, band, sigma, min_pts).value_or(free_x1);
+  map.room.y0 = FitSide(south, res, band, sigma, min_pts).value_or(free_y0);
+  map.room.y1 = FitSide(north, res, band, sigma, min_pts).value_or(free_y1);
+  // A side fitted well inside space the sonar saw free is an obstacle face against a wall that was
+  // never heard (layout 3): no room wall has free space behind it, so the side moves out to the
+  // outermost column (row) with at least min_wall_points free cells.
+  {
+    std::vector<int> free_in_column(W, 0), free_in_row(H, 0);
+    for (int iy = 0; iy < H; ++iy)
+      for (int ix = 0; ix < W; ++ix)
+        if (seen_free[iy * W + ix]) {
+          ++free_in_column[ix];
+          ++free_in_row[iy];
+        }
+    int cx0 = W, cx1 = -1, cy0 = H, cy1 = -1;
+    for (int ix = 0; ix < W; ++ix)
+      if (free_in_column[ix] >= min_pts) cx0 = std::min(cx0, ix), cx1 = std::max(cx1, ix);
+    for (int iy = 0; iy < H; ++iy)
+      if (free_in_row[iy] >= min_pts) cy0 = std::min(cy0, iy), cy1 = std::max(cy1, iy);
+    const double overrun = options.side_free_overrun_m;
+    if (cx1 >= 0) {
+      const double x0 = grid.CellCentre(cx0, 0).x() - 0.5 * res;
+      const double x1 = grid.CellCentre(cx1, 0).x() + 0.5 * res;
+      if (map.room.x0 - x0 > overrun) map.room.x0 = x0;
+      if (x1 - map.room.x1 > overrun) map.room.x1 = x1;
+    }
+    if (cy1 >= 0) {
+      const double y0 = grid.CellCentre(0, cy0).y() - 0.5 * res;
+      const double y1 = grid.CellCentre(0, cy1).y() + 0.5 * res;
+      if (map.room.y0 - y0 > overrun) map.room.y0 = y0;
+      if (y1 - map.room.y1 > overrun) map.room.y1 = y1;
+    }
+  }
+  if (map.room.x1 - map.room.x0 < res || map.room.y1 - map.room.y0 < res) {
+    map.room = {inside.x() - res, inside.y() - res, inside.x() + res, inside.y() + res};
+  }
+
+  // Obstacles: 8-connected blobs of occupied cells inside the room, away from the wall band.
+  std::vector<int> component(occ.size(), -1);
+  std::vector<double> xs{map.room.x0, map.room.x1}, ys{map.room.y0, map.room.y1};
+  auto interior = [&](int ix, int iy) {
+    const Eigen::Vector2d c = grid.CellCentre(ix, iy);
+    return c.x() > map.room.x0 + band && c.x() < map.room.x1 - band && c.y() > map.room.y0 + band &&
+           c.y() < map.room.y1 - band;
+  };
+  int next_id = 0;
+  std::vector<Rect> blobs;
+  for (int iy = 0; iy < H; ++iy)
+    for (int ix = 0; ix < W; ++ix) {
+      // Obstacle blobs are the cells never seen free (their inside stays unknown) that touch
+      // enough occupied cells: the faces the sonar heard plus the interior it could not see.
+      if (!is_occ(ix, iy) || component[iy * W + ix] >= 0 || !interior(ix, iy)) continue;
+      std::vector<Eigen::Vector2i> cells, stack{{ix, iy}};
+      component[iy * W + ix] = next_id;
+      while (!stack.empty()) {
+        const Eigen::Vector2i c = stack.back();
+        stack.pop_back();
+        cells.push_back(c);
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int nx = c.x() + dx, ny = c.y() + dy;
+            if (!grid.Contains(nx, ny) || !interior(nx, ny) ||
+                grid.Probability(nx, ny) < options.obstacle_free_p)
+              continue;
+            if (component[ny * W + nx] >= 0) continue;
+            component[ny * W + nx] = next_id;
+            stack.push_back({nx, ny});
+          }
+      }
+      ++next_id;
+      int occupied_cells = 0;
+      for (const auto& c : cells) occupied_cells += is_occ(c.x(), c.y());
+      if (occupied_cells < options.min_obstacle_cells) continue;
+      if (options.obstacle_min_fill > 0.0) cells = TrimThinEnds(cells, options.obstacle_min_fill);
+      // Per row the extreme cells give west/east boundary points, per column south/north.
+      std::map<int, std::pair<int, int>> rows, cols;
+      for (const auto& c : cells) {
+        auto r = rows.try_emplace(c.y(), c.x(), c.x()).first;
+        r->second.first = std::min(r->second.first, c.x());
+        r->second.second = std::max(r->second.second, c.x());
+        auto k = cols.try_emplace(c.x(), c.y(), c.y()).first;
+        k->second.first = std::min(k->second.first, c.y());
+        k->second.second = std::max(k->second.second, c.y());
+      }
+      std::vector<Eigen::Vector2d> w, e, s, n;
+      for (const auto& [iy2, ext] : rows) {
+        const double y = grid.CellCentre(0, iy2).y();
+        w.emplace_back(grid.CellCentre(ext.first, 0).x() - 0.5 * res, y);
+        e.emplace_back(grid.CellCentre(ext.second, 0).x() + 0.5 * res, y);
+      }
+      for (const auto& [ix2, ext] : cols) {
+        const double x = grid.CellCentre(ix2, 0).x();
+        s.emplace_back(grid.CellCentre(0, ext.first).y() - 0.5 * res, x);
+        n.emplace_back(grid.CellCentre(0, ext.second).y() + 0.5 * res, x);
+      }
+      auto extreme = [](const std::vector<Eigen::Vector2d>& pts, bool low) {
+        double v = pts.front().x();
+        for (const auto& p : pts) v = low ? std::min(v, p.x()) : std::max(v, p.x());
+        return v;
+      };
+      // Obstacle sides are short: fit with a band as wide as the blob so every point counts.
+      const double wide = 10.0;
+      // The sonar hears an obstacle's faces, never its inside, and seldom all of a face: the
+      // blob's extent (faces plus the unknown inside) is the obstacle. A fit would average a
+      // face with the edge of the unknown inside where part of that face went unheard.
+      Rect r{extreme(w, true), extreme(s, true), extreme(e, false), extreme(n, false)};
+      if (options.fit_obstacle_sides) {
+        r.x0 = FitSide(w, res, wide, sigma, 2).value_or(r.x0);
+        r.x1 = FitSide(e, res, wide, sigma, 2).value_or(r.x1);
+        r.y0 = FitSide(s, res, wide, sigma, 2).value_or(r.y0);
+        r.y1 = FitSide(n, res, wide, sigma, 2).value_or(r.y1);
+      }
+      r.x0 = std::max(r.x0, map.room.x0);
+      r.x1 = std::min(r.x1, map.room.x1);
+      r.y0 = std::max(r.y0, map.room.y0);
+      r.y1 = std::min(r.y1, map.room.y1);
+      if (r.x1 - r.x0 < res || r.y1 - r.y0 < res) continue;
+      blobs.push_back(r);
+    }
+  // Pieces closer than obstacle_join_m to each other or to a room side are one obstacle against
+  // it: the sonar splits a face it hears at the edge of its range, and the robot cannot drive
+  // through a gap that narrow to see into it.
+  const double join = options.obstacle_join_m;
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (std::size_t i = 0; i < blobs.size() && !merged; ++i)
+      for (std::size_t j = i + 1; j < blobs.size() && !merged; ++j) {
+        const Rect& a = blobs[i];
+        const Rect& b = blobs[j];
+        const double gap_x = std::max(a.x0, b.x0) - std::min(a.x1, b.x1);
+        const double gap_y = std::max(a.y0, b.y0) - std::min(a.y1, b.y1);
+        if (std::max(gap_x, gap_y) >= join) continue;
+        blobs[i] = {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1),
+                    std::max(a.y1, b.y1)};
+        blobs.erase(blobs.begin() + static_cast<std::ptrdiff_t>(j));
+        merged = true;
+      }
+  }
+  for (Rect r : blobs) {
+    if (r.x0 - map.room.x0 < join) r.x0 = map.room.x0;
+    if (map.room.x1 - r.x1 < join) r.x1 = map.room.x1;
+    if (r.y0 - map.room.y0 < join) r.y0 = map.room.y0;
+    if (map.room.y1 - r.y1 < join) r.y1 = map.room.y1;
+    r.x0 = Snap(r.x0, xs, options.snap_distance_m);
+    r.x1 = Snap(r.x1, xs, options.snap_distance_m);
+    r.y0 = Snap(r.y0, ys, options.snap_distance_m);
+    r.y1 = Snap(r.y1, ys, options.snap_distance_m);
+    if (r.x1 - r.x0 < res || r.y1 - r.y0 < res) continue;
+    xs.insert(xs.end(), {r.x0, r.x1});
+    ys.insert(ys.end(), {r.y0, r.y1});
+    map.obstacles.push_back(r);
+  }
+
+  map.corners = {{map.room.x0, map.room.y0},
+                 {map.room.x1, map.room.y0},
+                 {map.room.x1, map.room.y1},
+                 {map.room.x0, map.room.y1}};
+  map.partitions = PartitionMap(map.room);
+  for (const Rect& r : map.obstacles) {
+    map.corners.insert(map.corners.end(), {{r.x0, r.y0}, {r.x1, r.y0}, {r.x1, r.y1}, {r.x0, r.y1}});
+    map.partitions.InsertObstacle(r);
+  }
+  map.partitions.Merge();
+  map.adjacency = map.partitions.Adjacencies(1e-6);
+  map.negative = InitialNegativeExperience(map.partitions, map.adjacency, options.min_passage_m);
+  map.graph = BuildGraph(map.partitions, map.adjacency, map.negative);
+  return map;
+}
+
+}  // namespace plywood::perception

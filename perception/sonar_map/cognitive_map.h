@@ -1,0 +1,62 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "perception/sonar_map/log_odds_grid.h"
+#include "perception/sonar_map/partition_map.h"
+
+namespace plywood::perception {
+
+// Every constant seed 001 leaves open for turning the occupancy grid into its map.
+struct CognitiveMapOptions {
+  double eps = 0.3;               // boundary cells: P > 1 - eps
+  double snap_distance_m = 0.15;  // d_e: lines closer than this to an earlier aligned line snap
+  double fit_sigma_m = 0.05;      // per-point sigma of the chi-square fits (half a 10 cm cell)
+  int min_wall_points = 5;        // a room side needs this many boundary points
+  int min_obstacle_cells = 6;     // smaller occupied blobs inside the room are noise
+  double wall_band_m = 0.15;      // occupied cells this close inside a wall line belong to it
+  double min_passage_m = 0.45;    // free-free stretches narrower than the robot go into D
+  // A room side with more free space than this beyond it is an obstacle face, not the wall.
+  double side_free_overrun_m = 0.3;
+  // An obstacle blob grows over every cell not seen free with P below this (<= eps): corner
+  // echoes off the junction of an obstacle and a wall make its face look faintly free.
+  double obstacle_free_p = 0.3;
+  // Obstacle pieces closer than this to each other or to a room side are joined to them.
+  double obstacle_join_m = 0.3;
+  // Obstacle sides: the blob's extent (false) or a chi-square fit of its extreme cells (true).
+  bool fit_obstacle_sides = false;
+  // The extent spans only the outermost rows (columns) the blob fills to at least this fraction of
+  // its fullest row (column): corner echoes where a box meets a wall paint occupied wedges that
+  // taper along the wall, while a box, whose inside the sonar never sees free, fills every row.
+  // 0 keeps the whole blob.
+  double obstacle_min_fill = 0.3;
+  // @throws std::invalid_argument naming the field.
+  void Validate() const;
+};
+
+// The abstraction of one grid: the room's four boundary lines (axis-parallel, each from a
+// chi-square fit of the boundary cells nearest the robot), the obstacles' rectangles (each side a
+// fit of its boundary cells, snapped within d_e to earlier lines), the partitions, D and the graph.
+struct CognitiveMap {
+  Rect room;
+  std::vector<Rect> obstacles;
+  std::vector<Eigen::Vector2d> corners;
+  PartitionMap partitions;
+  std::vector<Adjacency> adjacency;
+  NegativeExperience negative;
+  TopologicalGraph graph;
+};
+
+// The cells of `cells` inside the box spanned by the outermost rows and columns holding at least
+// min_fill times as many of them as the fullest row (column); cells between such rows stay, however
+// few. Empty input gives empty output.
+std::vector<Eigen::Vector2i> TrimThinEnds(const std::vector<Eigen::Vector2i>& cells,
+                                          double min_fill);
+
+// `inside`: a point known to be free inside the room (the start pose). Sides without enough
+// boundary points fall back to the outermost cell the grid has seen free.
+CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& inside,
+                               const CognitiveMapOptions& options);
+
+}  // namespace plywood::perception

@@ -1,0 +1,321 @@
+#include "perception/sonar_map/cognitive_map.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace plywood::perception {
+namespace {
+
+// Hand-made grids: 5 cm cells, origin at (0, 0), so cell ix spans [0.05 ix, 0.05 (ix + 1)].
+constexpr double kRes = 0.05;
+// The room's wall is a one-cell ring: columns 10 and 71, rows 10 and 51. Its inner faces, where
+// BuildCognitiveMap puts the room sides (the boundary points are the faces of the first occupied
+// cells met from inside), enclose a 3.0 x 2.0 m room.
+constexpr int kWallX0 = 10, kWallX1 = 71, kWallY0 = 10, kWallY1 = 51;
+constexpr double kX0 = 0.55, kX1 = 3.55, kY0 = 0.55, kY1 = 2.55;
+// A free point away from every obstacle below.
+const Eigen::Vector2d kInside{3.0, 0.9};
+
+void Mark(LogOddsGrid& grid, int ix, int iy, double p) {
+  for (int k = 0; k < 3; ++k) grid.Add(ix, iy, p);
+}
+
+// The room with obstacles (in metres, on cell edges): each obstacle's one-cell outer ring is
+// occupied (the faces the sonar hears), its inside untouched (unknown), the rest of the room free.
+LogOddsGrid Room(const std::vector<Rect>& obstacles = {}) {
+  LogOddsGridOptions options;
+  options.resolution_m = kRes;
+  options.origin_xy = {0.0, 0.0};
+  options.width = 80;
+  options.height = 60;
+  LogOddsGrid grid(options);
+  for (int iy = kWallY0; iy <= kWallY1; ++iy)
+    for (int ix = kWallX0; ix <= kWallX1; ++ix) {
+      const bool wall = ix == kWallX0 || ix == kWallX1 || iy == kWallY0 || iy == kWallY1;
+      if (wall) {
+        Mark(grid, ix, iy, 0.98);
+        continue;
+      }
+      bool in_obstacle = false;
+      for (const Rect& o : obstacles)
+        in_obstacle = in_obstacle || o.Contains(grid.CellCentre(ix, iy));
+      if (!in_obstacle) Mark(grid, ix, iy, 0.02);
+    }
+  for (const Rect& o : obstacles) {
+    const int ix0 = static_cast<int>(std::lround(o.x0 / kRes));
+    const int ix1 = static_cast<int>(std::lround(o.x1 / kRes)) - 1;
+    const int iy0 = static_cast<int>(std::lround(o.y0 / kRes));
+    const int iy1 = static_cast<int>(std::lround(o.y1 / kRes)) - 1;
+    for (int iy = iy0; iy <= iy1; ++iy)
+      for (int ix = ix0; ix <= ix1; ++ix)
+        if (ix == ix0 || ix == ix1 || iy == iy0 || iy == iy1) Mark(grid, ix, iy, 0.98);
+  }
+  return grid;
+}
+
+// Every side comes from cell edges (multiples of 5 cm) or an exact fit of points in one column:
+// only rounding separates it from the expected value.
+constexpr double kTol = 1e-9;
+
+void ExpectRectNear(const Rect& got, const Rect& want) {
+  EXPECT_NEAR(got.x0, want.x0, kTol);
+  EXPECT_NEAR(got.y0, want.y0, kTol);
+  EXPECT_NEAR(got.x1, want.x1, kTol);
+  EXPECT_NEAR(got.y1, want.y1, kTol);
+}
+
+std::vector<Rect> PartitionRects(const CognitiveMap& map, Label label) {
+  std::vector<Rect> out;
+  for (const Partition& p : map.partitions.partitions())
+    if (p.label == label) out.push_back(p.rect);
+  return out;
+}
+
+double TotalArea(const std::vector<Rect>& rects) {
+  double area = 0.0;
+  for (const Rect& r : rects) area += r.Area();
+  return area;
+}
+
+// The partitions tile the room: free plus obstacle area is the room's, obstacle area the
+// obstacles'.
+void ExpectTilesTheRoom(const CognitiveMap& map) {
+  const double obstacles = TotalArea(map.obstacles);
+  EXPECT_NEAR(TotalArea(PartitionRects(map, Label::kObstacle)), obstacles, kTol);
+  EXPECT_NEAR(TotalArea(PartitionRects(map, Label::kFree)), map.room.Area() - obstacles, kTol);
+}
+
+TEST(CognitiveMapTest, EmptyRoomIsOneFreePartitionOnTheWallsInnerFaces) {
+  const CognitiveMap map = BuildCognitiveMap(Room(), kInside, {});
+  // The side is the inner face of the wall cells: half a cell inside their centres.
+  ExpectRectNear(map.room, {kX0, kY0, kX1, kY1});
+  EXPECT_NEAR(map.room.x0, (kWallX0 + 0.5) * kRes + 0.5 * kRes, kTol);
+  EXPECT_TRUE(map.obstacles.empty());
+  ASSERT_EQ(map.partitions.partitions().size(), 1u);
+  EXPECT_EQ(map.partitions.partitions()[0].label, Label::kFree);
+  ExpectRectNear(map.partitions.partitions()[0].rect, map.room);
+  EXPECT_EQ(map.corners.size(), 4u);
+  EXPECT_EQ(map.graph.nodes.size(), 1u);
+  EXPECT_TRUE(map.graph.arcs.empty());
+  EXPECT_EQ(map.negative.size(), 0u);
+}
+
+TEST(CognitiveMapTest, RoomSidesDoNotDependOnWhereInsideTheRobotIs) {
+  for (const Eigen::Vector2d& inside :
+       {Eigen::Vector2d{0.6, 0.6}, Eigen::Vector2d{3.5, 2.5}, Eigen::Vector2d{2.05, 1.55}}) {
+    SCOPED_TRACE(testing::Message() << inside.transpose());
+    ExpectRectNear(BuildCognitiveMap(Room(), inside, {}).room, {kX0, kY0, kX1, kY1});
+  }
+}
+
+TEST(CognitiveMapTest, FreeStandingObstacleIsItsBlobsExtentAndSplitsTheRoomIntoFour) {
+  // 0.5 x 0.5 m, centred in the room: faces occupied, inside unknown.
+  const Rect obstacle{1.80, 1.30, 2.30, 1.80};
+  const CognitiveMap map = BuildCognitiveMap(Room({obstacle}), kInside, {});
+  // The obstacle's faces seen from the inside point do not move the room sides (the mode wins).
+  ExpectRectNear(map.room, {kX0, kY0, kX1, kY1});
+  ASSERT_EQ(map.obstacles.size(), 1u);
+  // The extent: the outer edges of the extreme cells, not their centres.
+  ExpectRectNear(map.obstacles[0], obstacle);
+  EXPECT_EQ(map.corners.size(), 8u);
+  // Split along the obstacle's edge lines into nine, then merged along x first: a strip below,
+  // one above, one piece each side of the obstacle, and the obstacle.
+  const std::vector<Rect> obstacles = PartitionRects(map, Label::kObstacle);
+  ASSERT_EQ(obstacles.size(), 1u);
+  ExpectRectNear(obstacles[0], obstacle);
+  std::vector<Rect> free = PartitionRects(map, Label::kFree);
+  ASSERT_EQ(free.size(), 4u);
+  std::sort(free.begin(), free.end(), [](const Rect& a, const Rect& b) {
+    return std::tie(a.y0, a.x0) < std::tie(b.y0, b.x0);
+  });
+  ExpectRectNear(free[0], {kX0, kY0, kX1, 1.30});
+  ExpectRectNear(free[1], {kX0, 1.30, 1.80, 1.80});
+  ExpectRectNear(free[2], {2.30, 1.30, kX1, 1.80});
+  ExpectRectNear(free[3], {kX0, 1.80, kX1, kY1});
+  ExpectTilesTheRoom(map);
+  // D holds the four transitions into the obstacle; every free stretch is wider than the robot.
+  EXPECT_EQ(map.negative.size(), 4u);
+  EXPECT_EQ(map.graph.nodes.size(), 4u);
+  EXPECT_EQ(map.graph.arcs.size(), 4u);  // below and above each touch left and right
+}
+
+TEST(CognitiveMapTest, FittedObstacleSidesEqualTheExtentForStraightFaces) {
+  const Rect obstacle{1.80, 1.30, 2.30, 1.80};
+  CognitiveMapOptions options;
+  options.fit_obstacle_sides = true;
+  const CognitiveMap map = BuildCognitiveMap(Room({obstacle}), kInside, options);
+  ASSERT_EQ(map.obstacles.size(), 1u);
+  ExpectRectNear(map.obstacles[0], obstacle);
+}
+
+TEST(CognitiveMapTest, SmallOccupiedBlobsAreNoise) {
+  // A 0.1 x 0.1 m blob: four occupied cells, fewer than min_obstacle_cells = 6.
+  const CognitiveMap map = BuildCognitiveMap(Room({{2.00, 1.50, 2.10, 1.60}}), kInside, {});
+  EXPECT_TRUE(map.obstacles.empty());
+  EXPECT_EQ(map.partitions.partitions().size(), 1u);
+}
+
+TEST(CognitiveMapTest, PiecesCloserThanTheJoinDistanceBecomeOneObstacleOverTheGap) {
+  // 0.2 m apart, less than obstacle_join_m = 0.3.
+  const CognitiveMap map =
+      BuildCognitiveMap(Room({{1.20, 1.30, 1.50, 1.80}, {1.70, 1.30, 2.00, 1.80}}), kInside, {});
+  ASSERT_EQ(map.obstacles.size(), 1u);
+  ExpectRectNear(map.obstacles[0], {1.20, 1.30, 2.00, 1.80});
+  ExpectTilesTheRoom(map);
+}
+
+TEST(CognitiveMapTest, PiecesFartherApartThanTheJoinDistanceStayTwo) {
+  // 0.5 m apart.
+  const CognitiveMap map =
+      BuildCognitiveMap(Room({{1.20, 1.30, 1.50, 1.80}, {2.00, 1.30, 2.30, 1.80}}), kInside, {});
+  ASSERT_EQ(map.obstacles.size(), 2u);
+  std::vector<Rect> obstacles = map.obstacles;
+  std::sort(obstacles.begin(), obstacles.end(),
+            [](const Rect& a, const Rect& b) { return a.x0 < b.x0; });
+  ExpectRectNear(obstacles[0], {1.20, 1.30, 1.50, 1.80});
+  ExpectRectNear(obstacles[1], {2.00, 1.30, 2.30, 1.80});
+  EXPECT_EQ(PartitionRects(map, Label::kObstacle).size(), 2u);
+  ExpectTilesTheRoom(map);
+}
+
+TEST(CognitiveMapTest, JoinDistanceZeroKeepsEvenClosePiecesApart) {
+  CognitiveMapOptions options;
+  options.obstacle_join_m = 0.0;
+  const CognitiveMap map = BuildCognitiveMap(
+      Room({{1.20, 1.30, 1.50, 1.80}, {1.70, 1.30, 2.00, 1.80}}), kInside, options);
+  EXPECT_EQ(map.obstacles.size(), 2u);
+}
+
+TEST(CognitiveMapTest, ObstacleCloseToAWallIsExtendedToIt) {
+  // West face 0.2 m from the west wall's inner face (< obstacle_join_m).
+  const CognitiveMap map = BuildCognitiveMap(Room({{0.75, 1.30, 1.25, 1.80}}), kInside, {});
+  ExpectRectNear(map.room, {kX0, kY0, kX1, kY1});
+  ASSERT_EQ(map.obstacles.size(), 1u);
+  EXPECT_EQ(map.obstacles[0].x0, map.room.x0);  // set to the side itself
+  ExpectRectNear(map.obstacles[0], {kX0, 1.30, 1.25, 1.80});
+  // Against the wall: free strips below and above, one piece east of it, and the obstacle.
+  EXPECT_EQ(PartitionRects(map, Label::kFree).size(), 3u);
+  ExpectTilesTheRoom(map);
+}
+
+TEST(CognitiveMapTest, ObstacleCloseToTheNorthEastCornerIsExtendedToBothSides) {
+  // 0.2 m from the east side, 0.25 m from the north side.
+  const CognitiveMap map = BuildCognitiveMap(Room({{2.85, 1.80, 3.35, 2.30}}), kInside, {});
+  ASSERT_EQ(map.obstacles.size(), 1u);
+  EXPECT_EQ(map.obstacles[0].x1, map.room.x1);
+  EXPECT_EQ(map.obstacles[0].y1, map.room.y1);
+  ExpectRectNear(map.obstacles[0], {2.85, 1.80, kX1, kY1});
+  ExpectTilesTheRoom(map);
+}
+
+TEST(CognitiveMapTest, ObstacleFartherFromAWallThanTheJoinDistanceKeepsItsFace) {
+  // West face 0.5 m from the west wall.
+  const CognitiveMap map = BuildCognitiveMap(Room({{1.05, 1.30, 1.55, 1.80}}), kInside, {});
+  ASSERT_EQ(map.obstacles.size(), 1u);
+  ExpectRectNear(map.obstacles[0], {1.05, 1.30, 1.55, 1.80});
+  EXPECT_EQ(PartitionRects(map, Label::kFree).size(), 4u);
+  ExpectTilesTheRoom(map);
+}
+
+// Cells of the rectangle [x0, x1] x [y0, y1] (inclusive cell indices).
+std::vector<Eigen::Vector2i> Block(int x0, int y0, int x1, int y1) {
+  std::vector<Eigen::Vector2i> cells;
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) cells.emplace_back(x, y);
+  return cells;
+}
+
+std::vector<Eigen::Vector2i> Sorted(std::vector<Eigen::Vector2i> cells) {
+  std::sort(cells.begin(), cells.end(), [](const Eigen::Vector2i& a, const Eigen::Vector2i& b) {
+    return std::tie(a.y(), a.x()) < std::tie(b.y(), b.x());
+  });
+  return cells;
+}
+
+TEST(TrimThinEndsTest, CutsATaperingWedgeBelowAFullBlock) {
+  // A 10 x 10 block (rows 0-9) and below it rows of 3, 2 and 1 cells.
+  std::vector<Eigen::Vector2i> cells = Block(0, 0, 9, 9);
+  for (const auto& c : {Block(0, -1, 2, -1), Block(0, -2, 1, -2), Block(0, -3, 0, -3)})
+    cells.insert(cells.end(), c.begin(), c.end());
+  // Rows need 0.3 x 10 = 3 cells: the 3-cell row stays, the 2- and 1-cell rows go. Columns 0-2
+  // hold 13, 12, 11 cells, the others 10: all reach 0.3 x 13.
+  std::vector<Eigen::Vector2i> want = Block(0, 0, 9, 9);
+  const std::vector<Eigen::Vector2i> row = Block(0, -1, 2, -1);
+  want.insert(want.end(), row.begin(), row.end());
+  EXPECT_EQ(Sorted(TrimThinEnds(cells, 0.3)), Sorted(want));
+  // At 0.5 the 3-cell row goes too.
+  EXPECT_EQ(Sorted(TrimThinEnds(cells, 0.5)), Sorted(Block(0, 0, 9, 9)));
+}
+
+TEST(TrimThinEndsTest, KeepsThinRowsBetweenFullOnes) {
+  // Two full 6-cell rows joined by a one-cell neck (rows 1-3 hold 1 cell, under 0.3 x 6; the
+  // columns hold 5 and 2 cells, all over 0.3 x 5): only the ends are trimmed, so all stays.
+  std::vector<Eigen::Vector2i> cells = Block(0, 0, 5, 0);
+  const std::vector<Eigen::Vector2i> top = Block(0, 4, 5, 4);
+  cells.insert(cells.end(), top.begin(), top.end());
+  for (int y = 1; y <= 3; ++y) cells.emplace_back(0, y);
+  EXPECT_EQ(Sorted(TrimThinEnds(cells, 0.3)), Sorted(cells));
+}
+
+TEST(TrimThinEndsTest, ZeroFillAndEmptyInputChangeNothing) {
+  std::vector<Eigen::Vector2i> cells = Block(0, 0, 4, 4);
+  cells.emplace_back(7, 7);  // a lone cell far away: its row and column hold one cell
+  EXPECT_EQ(Sorted(TrimThinEnds(cells, 0.0)), Sorted(cells));
+  EXPECT_EQ(Sorted(TrimThinEnds(cells, 0.3)), Sorted(Block(0, 0, 4, 4)));
+  EXPECT_TRUE(TrimThinEnds({}, 0.3).empty());
+}
+
+TEST(CognitiveMapTest, CornerEchoWedgeBelowAnObstacleIsNotPartOfIt) {
+  // A 0.5 x 0.5 m obstacle 0.2 m from the west wall (joined to it), and under its west end the
+  // occupied wedge that corner echoes paint along the wall: rows of 2, 1 and 1 cells.
+  LogOddsGrid grid = Room({{0.75, 1.30, 1.25, 1.80}});
+  for (const auto& [ix, iy] : {std::pair{15, 25}, {16, 25}, {15, 24}, {15, 23}})
+    for (int k = 0; k < 2; ++k) Mark(grid, ix, iy, 0.98);  // outweighs the free marks
+  CognitiveMapOptions whole_blob;
+  whole_blob.obstacle_min_fill = 0.0;
+  const CognitiveMap with_wedge = BuildCognitiveMap(grid, kInside, whole_blob);
+  ASSERT_EQ(with_wedge.obstacles.size(), 1u);
+  ExpectRectNear(with_wedge.obstacles[0], {kX0, 1.15, 1.25, 1.80});
+  const CognitiveMap map = BuildCognitiveMap(grid, kInside, {});
+  ASSERT_EQ(map.obstacles.size(), 1u);
+  ExpectRectNear(map.obstacles[0], {kX0, 1.30, 1.25, 1.80});
+  ExpectTilesTheRoom(map);
+}
+
+void ExpectThrowsNaming(const CognitiveMapOptions& options, const std::string& field) {
+  try {
+    options.Validate();
+    ADD_FAILURE() << "no exception for " << field;
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind(field, 0), 0u) << e.what();
+  }
+}
+
+TEST(CognitiveMapTest, InvalidJoinDistanceOrFillThrowsNamingTheField) {
+  EXPECT_NO_THROW(CognitiveMapOptions{}.Validate());
+  for (const double join :
+       {-0.1, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    CognitiveMapOptions options;
+    options.obstacle_join_m = join;
+    ExpectThrowsNaming(options, "obstacle_join_m");
+  }
+  for (const double fill : {-0.1, 1.1, std::numeric_limits<double>::quiet_NaN()}) {
+    CognitiveMapOptions options;
+    options.obstacle_min_fill = fill;
+    ExpectThrowsNaming(options, "obstacle_min_fill");
+  }
+  // BuildCognitiveMap validates too.
+  CognitiveMapOptions options;
+  options.obstacle_join_m = -1.0;
+  EXPECT_THROW(BuildCognitiveMap(Room(), kInside, options), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace plywood::perception

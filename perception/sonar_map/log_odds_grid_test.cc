@@ -1,0 +1,67 @@
+#include "perception/sonar_map/log_odds_grid.h"
+
+#include <gtest/gtest.h>
+
+namespace plywood::perception {
+namespace {
+
+// Seed 001: P = 1 - (1 + prod p/(1-p))^-1 with prior 0.5.
+TEST(CombineReadingsTest, ProductFormulaExact) {
+  // 0.8 twice: prod = 4 * 4 = 16, P = 16/17.
+  EXPECT_NEAR(CombineReadings({0.8, 0.8}), 16.0 / 17.0, 1e-15);
+  // 0.8 then 0.2 cancel; 0.5 says nothing.
+  EXPECT_NEAR(CombineReadings({0.8, 0.2}), 0.5, 1e-15);
+  EXPECT_NEAR(CombineReadings({0.5, 0.5, 0.5}), 0.5, 1e-15);
+  // 0.9, 0.6, 0.3: prod = 9 * 1.5 * 3/7 = 40.5/7, P = 40.5 / 47.5.
+  EXPECT_NEAR(CombineReadings({0.9, 0.6, 0.3}), 40.5 / 47.5, 1e-14);
+  EXPECT_NEAR(CombineReadings({}), 0.5, 0.0);
+}
+
+TEST(CombineReadingsTest, ClampsReadingsAndSum) {
+  LogOddsOptions o;
+  o.p_min = 0.1;
+  EXPECT_NEAR(CombineReadings({1.0}, o), 0.9, 1e-15);  // a certain reading counts as 0.9
+  o.log_odds_limit = std::log(4.0);                    // the sum saturates at P = 0.8
+  EXPECT_NEAR(CombineReadings({0.9, 0.9, 0.9}, o), 0.8, 1e-15);
+  o.p_min = 0.6;
+  EXPECT_THROW(CombineReadings({0.5}, o), std::invalid_argument);
+}
+
+TEST(LogOddsGridTest, AddMatchesCombine) {
+  LogOddsGridOptions o;
+  o.width = 4;
+  o.height = 3;
+  LogOddsGrid grid(o);
+  for (double p : {0.7, 0.9, 0.4}) grid.Add(2, 1, p);
+  EXPECT_NEAR(grid.Probability(2, 1), CombineReadings({0.7, 0.9, 0.4}), 1e-15);
+  EXPECT_EQ(grid.Probability(0, 0), 0.5);
+  EXPECT_EQ(grid.CellAt(o.origin_xy + Eigen::Vector2d(0.12, 0.06)), Eigen::Vector2i(2, 1));
+  EXPECT_EQ(grid.CellAt(o.origin_xy - Eigen::Vector2d(0.01, 0.0)), Eigen::Vector2i(-1, -1));
+}
+
+// A model that says "occupied" ahead of the robot and "free" behind it.
+class AheadModel : public SonarCellModel {
+ public:
+  double Probability(const msgs::RangeRing&, const Eigen::Vector2d& p_R) const override {
+    return p_R.x() > 0.0 ? 0.8 : 0.2;
+  }
+};
+
+TEST(LogOddsGridTest, LocalGridIsPlacedAtTheOdometryPose) {
+  LogOddsGridOptions o;  // 5 cm cells over [-4, 4]^2
+  LogOddsGrid grid(o);
+  const msgs::RangeRing ring;
+  grid.Integrate(AheadModel(), ring, {1.0, 1.0, M_PI / 2});  // facing +y
+  // Ahead (+y) is occupied, behind free; beyond the 0.7 m half-width untouched.
+  const auto at = [&](double x, double y) {
+    const Eigen::Vector2i c = grid.CellAt({x, y});
+    return grid.Probability(c.x(), c.y());
+  };
+  EXPECT_NEAR(at(1.0 + 0.025, 1.5 + 0.025), 0.8, 1e-12);
+  EXPECT_NEAR(at(1.0 + 0.025, 0.5 + 0.025), 0.2, 1e-12);
+  EXPECT_EQ(at(1.0, 1.8), 0.5);
+  EXPECT_EQ(at(1.8, 1.0), 0.5);
+}
+
+}  // namespace
+}  // namespace plywood::perception

@@ -1,0 +1,575 @@
+#include "perception/sonar_map/sonar_explorer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "perception/sonar_map/echo_gated_model.h"
+#include "perception/sonar_map/frontier_planner.h"
+#include "robot/drive/diff_drive_kinematics.h"
+
+namespace plywood::perception {
+namespace {
+
+void RequirePositive(const std::string& field, double v) {
+  if (!(std::isfinite(v) && v > 0.0))
+    throw std::invalid_argument(field + ": must be a finite number > 0, got " + std::to_string(v));
+}
+
+void RequireNonNegative(const std::string& field, double v) {
+  if (!(std::isfinite(v) && v >= 0.0))
+    throw std::invalid_argument(field + ": must be a finite number >= 0, got " + std::to_string(v));
+}
+
+Eigen::Vector2d Position(const msgs::Pose2D& X) { return {X.x_m, X.y_m}; }
+
+}  // namespace
+
+void SonarExplorerOptions::Validate() const {
+  if (sonar_model != "net" && sonar_model != "classical")
+    throw std::invalid_argument("sonar_model: must be net or classical, got '" + sonar_model + "'");
+  if (sonar_model == "net" && weights_file.empty())
+    throw std::invalid_argument("weights_file: needed when sonar_model is net");
+  RequirePositive("grid_half_extent_m", grid_half_extent_m);
+  RequirePositive("grid_resolution_m", grid_resolution_m);
+  if (!(p_min > 0.0 && p_min < 0.5)) throw std::invalid_argument("p_min: must be in (0, 0.5)");
+  RequirePositive("log_odds_limit", log_odds_limit);
+  map.Validate();
+  RequirePositive("wall_distance_m", wall_distance_m);
+  RequirePositive("perimeter_turn_rad", perimeter_turn_rad);
+  RequirePositive("perimeter_max_s", perimeter_max_s);
+  RequirePositive("perimeter_front_clearance_m", perimeter_front_clearance_m);
+  RequirePositive("speed_m_s", speed_m_s);
+  RequirePositive("turn_rate_rad_s", turn_rate_rad_s);
+  RequirePositive("replan_period_s", replan_period_s);
+  if (!(visit_decay > 0.0 && visit_decay <= 1.0))
+    throw std::invalid_argument("visit_decay: must be in (0, 1]");
+  RequirePositive("unvisited_utility", unvisited_utility);
+  RequirePositive("visit_radius_m", visit_radius_m);
+  RequirePositive("place_size_m", place_size_m);
+  RequireNonNegative("perimeter_min_m", perimeter_min_m);
+  RequirePositive("clearance_m", clearance_m);
+  RequirePositive("stop_range_m", stop_range_m);
+  RequirePositive("max_wheel_accel_rad_s2", max_wheel_accel_rad_s2);
+  RequirePositive("bump_back_off_s", bump_back_off_s);
+  RequirePositive("bump_back_off_speed_m_s", bump_back_off_speed_m_s);
+  RequireNonNegative("front_margin_m", front_margin_m);
+  RequirePositive("waypoint_tolerance_m", waypoint_tolerance_m);
+  RequirePositive("explore_max_s", explore_max_s);
+  if (frontier_min_cells < 1)
+    throw std::invalid_argument("frontier_min_cells: must be >= 1, got " +
+                                std::to_string(frontier_min_cells));
+  RequirePositive("robot_radius_m", robot_radius_m);
+  RequirePositive("path_clearance_m", path_clearance_m);
+  if (!(path_clearance_m > robot_radius_m))
+    throw std::invalid_argument("path_clearance_m: must be > robot_radius_m");
+  if (!(robot_radius_m + front_margin_m < path_clearance_m))
+    throw std::invalid_argument(
+        "front_margin_m: robot_radius_m + front_margin_m must be < path_clearance_m");
+  RequirePositive("frontier_view_m", frontier_view_m);
+  RequireNonNegative("frontier_wall_band_m", frontier_wall_band_m);
+  if (!(frontier_view_m > waypoint_tolerance_m))
+    throw std::invalid_argument("frontier_view_m: must be > waypoint_tolerance_m");
+}
+
+SonarExplorer::SonarExplorer(const robot::DiffDriveSpec& spec, const SonarExplorerOptions& options,
+                             std::shared_ptr<const SonarCellModel> model)
+    : spec_(spec), options_(options), model_(std::move(model)) {
+  spec_.Validate();
+  options_.Validate();
+  if (!model_) throw std::invalid_argument("sonar_model: no model given");
+  if (options_.misses_say_nothing) model_ = std::make_shared<EchoGatedModel>(model_);
+  robot::WallFollowingOptions follow;
+  follow.side = robot::WallSide::kLeft;
+  follow.distance_m = options_.wall_distance_m;
+  follow.speed_m_s = options_.speed_m_s;
+  follow.front_clearance_m = options_.perimeter_front_clearance_m;
+  follower_ = std::make_unique<robot::WallFollowingController>(spec_, follow);
+}
+
+CognitiveMap SonarExplorer::Map() const {
+  const Eigen::Vector2d inside =
+      start_ ? Position(*start_) : grid_.CellCentre(grid_.width() / 2, grid_.height() / 2);
+  CognitiveMap map = BuildCognitiveMap(grid_, inside, options_.map);
+  // Failed moves: the transition between the partitions at either end goes into D.
+  for (const auto& [from, to] : failed_moves_) {
+    const int a = map.partitions.Find(from), b = map.partitions.Find(to);
+    if (a >= 0 && b >= 0 && a != b) map.negative.Forbid(a, b);
+  }
+  map.graph = BuildGraph(map.partitions, map.adjacency, map.negative);
+  return map;
+}
+
+std::optional<Eigen::Vector2d> SonarExplorer::FrontBlocked(const msgs::RangeRing& ring) const {
+  // The echo points in the corridor the robot body sweeps ahead. The sonars up to 60 deg off the
+  // axis count, since an obstacle corner met at an angle is heard only by the oblique ones.
+  const double kRadius = options_.robot_radius_m;
+  const double kSideMargin = options_.front_margin_m;  // corridor half-width = radius + this
+  for (const auto& r : ring.readings) {
+    const double bearing = msgs::WrapAngle(r.X_RS.theta_rad);
+    if (!r.echo || std::abs(bearing) > 1.05) continue;
+    const double along = r.X_RS.x_m + r.range_m * std::cos(bearing);
+    const double side = r.X_RS.y_m + r.range_m * std::sin(bearing);
+    // An echo is placed on its sonar's axis but may come from anywhere in the cone: an oblique
+    // sonar's echo beside the body (a corner being passed) blocks only inside the body's sweep.
+    const double half_width = std::abs(bearing) > 0.5 ? kRadius : kRadius + kSideMargin;
+    if (along > 0.0 && along < options_.stop_range_m + kRadius && std::abs(side) < half_width)
+      return Eigen::Vector2d(along, side);
+  }
+  return std::nullopt;
+}
+
+msgs::WheelSpeedCommand SonarExplorer::DriveTo(const msgs::Pose2D& X_WR,
+                                               const Eigen::Vector2d& target) {
+  const Eigen::Vector2d d = target - Position(X_WR);
+  const double heading_error = msgs::WrapAngle(std::atan2(d.y(), d.x()) - X_WR.theta_rad);
+  robot::BodyTwist twist;
+  const double w =
+      std::clamp(2.0 * heading_error, -options_.turn_rate_rad_s, options_.turn_rate_rad_s);
+  twist.angular_rad_s = w;
+  // Trajectories parallel to x or y: turn on the spot first, drive once aligned.
+  if (std::abs(heading_error) < 0.2)
+    twist.linear_m_s = std::min(options_.speed_m_s, 0.1 + d.norm());
+  return robot::TwistToWheelSpeeds(spec_, twist);
+}
+
+void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
+  CognitiveMap map = Map();
+  // Places: the free partitions cut into pieces no larger than place_size_m, so that a room the
+  // sonar has not yet divided still has somewhere to go; D and the graph follow the pieces.
+  {
+    PartitionMap places;
+    for (const Partition& p : map.partitions.partitions()) {
+      if (p.label != Label::kFree) {
+        places.mutable_partitions().push_back(p);
+        continue;
+      }
+      const int nx =
+          std::max(1, static_cast<int>(std::ceil((p.rect.x1 - p.rect.x0) / options_.place_size_m)));
+      const int ny =
+          std::max(1, static_cast<int>(std::ceil((p.rect.y1 - p.rect.y0) / options_.place_size_m)));
+      for (int j = 0; j < ny; ++j)
+        for (int i = 0; i < nx; ++i) {
+          const double w = (p.rect.x1 - p.rect.x0) / nx, h = (p.rect.y1 - p.rect.y0) / ny;
+          places.mutable_partitions().push_back({{p.rect.x0 + i * w, p.rect.y0 + j * h,
+                                                  p.rect.x0 + (i + 1) * w, p.rect.y0 + (j + 1) * h},
+                                                 Label::kFree});
+        }
+    }
+    map.partitions = places;
+    map.adjacency = map.partitions.Adjacencies(1e-6);
+    map.negative = InitialNegativeExperience(map.partitions, map.adjacency, 0.0);
+    for (const auto& [from, to] : failed_moves_) {
+      const int a = map.partitions.Find(from), b = map.partitions.Find(to);
+      if (a >= 0 && b >= 0 && a != b) map.negative.Forbid(a, b);
+    }
+    map.graph = BuildGraph(map.partitions, map.adjacency, map.negative);
+  }
+  const Eigen::Vector2d here = Position(X_WR);
+  // lambda per replan period, however often a blocked move makes the robot replan: otherwise
+  // 1/c of a visited place outgrows K within seconds.
+  while (time_s - last_decay_s_ >= options_.replan_period_s) {
+    for (double& c : visits_) c *= options_.visit_decay;
+    last_decay_s_ = last_decay_s_ < 0.0 ? time_s : last_decay_s_ + options_.replan_period_s;
+  }
+  const Eigen::Vector2i cell = grid_.CellAt(here);
+  if (cell.x() >= 0) visits_[cell.y() * grid_.width() + cell.x()] += 1.0;
+  const PlanningCells planning = Planning(here, map.obstacles);
+  const auto& parts = map.partitions.partitions();
+  double best_u = -1.0, best_d = std::numeric_limits<double>::infinity();
+  bool best_unvisited = false;
+  int best = -1;
+  for (int node : map.graph.nodes) {
+    const Rect& r = parts[node].rect;
+    // The target: the centre, kept clear of the room walls.
+    const Rect shrunk{map.room.x0 + options_.clearance_m, map.room.y0 + options_.clearance_m,
+                      map.room.x1 - options_.clearance_m, map.room.y1 - options_.clearance_m};
+    Eigen::Vector2d t = r.Centre();
+    if (shrunk.x1 > shrunk.x0) t.x() = std::clamp(t.x(), shrunk.x0, shrunk.x1);
+    if (shrunk.y1 > shrunk.y0) t.y() = std::clamp(t.y(), shrunk.y0, shrunk.y1);
+    bool clear = true;
+    for (const Rect& o : map.obstacles) {
+      if (t.x() > o.x0 - options_.clearance_m && t.x() < o.x1 + options_.clearance_m &&
+          t.y() > o.y0 - options_.clearance_m && t.y() < o.y1 + options_.clearance_m)
+        clear = false;
+    }
+    if (!clear || map.partitions.Find(t) < 0 || Abandoned(t)) continue;
+    const Eigen::Vector2i tc = grid_.CellAt(t);
+    if (tc.x() < 0) continue;
+    const bool unvisited = !visited_[tc.y() * grid_.width() + tc.x()];
+    double c = 0.0;
+    for (int iy = 0; iy < grid_.height(); ++iy)
+      for (int ix = 0; ix < grid_.width(); ++ix)
+        if (visits_[iy * grid_.width() + ix] > 0.0 && r.Contains(grid_.CellCentre(ix, iy)))
+          c += visits_[iy * grid_.width() + ix];
+    const double u = c > 0.0 ? 1.0 / c : options_.unvisited_utility;
+    const double dist = std::abs(t.x() - here.x()) + std::abs(t.y() - here.y());
+    if (dist < options_.visit_radius_m) continue;  // already here
+    // Places never reached come first (the seed's K), then the utility, then the distance.
+    const bool better =
+        unvisited != best_unvisited
+            ? unvisited
+            : (u > best_u + 1e-12 || (std::abs(u - best_u) <= 1e-12 && dist < best_d));
+    if (best < 0 || better) {
+      const std::vector<Eigen::Vector2d> path = SafePathTo(planning, map, here, t);
+      if (path.empty()) continue;
+      best_u = u;
+      best_d = dist;
+      best_unvisited = unvisited;
+      best = node;
+      path_ = path;
+    }
+  }
+  target_partition_ = best;
+  heading_to_frontier_ = false;
+  if (best < 0) path_.clear();
+  if (!best_unvisited) {
+    // No reachable place left that was never visited: on to the unknown frontiers, and finish
+    // when none is left either. Standing on a frontier goal already (the robot came to rest a few
+    // centimetres past where it marked one) is arriving there: look from here and from the centre
+    // of the robot's cell, which the goal test measures from; then no goal is left in that cell.
+    std::optional<std::vector<Eigen::Vector2d>> frontier = PlanToFrontier(planning, here);
+    if (frontier && frontier->empty()) {
+      MarkLooked(here);
+      MarkLooked(grid_.CellCentre(cell.x(), cell.y()));
+      frontier = PlanToFrontier(planning, here);
+    }
+    if (frontier && !frontier->empty()) {
+      path_ = std::move(*frontier);
+      heading_to_frontier_ = true;
+      target_partition_ = -1;
+      return;
+    }
+    finished_ = true;
+  }
+}
+
+void SonarExplorer::MarkLooked(const Eigen::Vector2d& at) {
+  const Eigen::Vector2i c = grid_.CellAt(at);
+  if (c.x() < 0) return;
+  const int v = static_cast<int>(std::ceil(options_.frontier_view_m / grid_.resolution_m()));
+  for (int dy = -v; dy <= v; ++dy)
+    for (int dx = -v; dx <= v; ++dx) {
+      const int ix = c.x() + dx, iy = c.y() + dy;
+      if (grid_.Contains(ix, iy) &&
+          (grid_.CellCentre(ix, iy) - at).norm() <= options_.frontier_view_m)
+        looked_[iy * grid_.width() + ix] = 1;
+    }
+}
+
+bool SonarExplorer::Abandoned(const Eigen::Vector2d& target) const {
+  for (const Eigen::Vector2d& a : abandoned_)
+    if ((a - target).norm() < options_.visit_radius_m) return true;
+  return false;
+}
+
+SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here,
+                                                     const std::vector<Rect>& obstacles) const {
+  const int W = grid_.width(), H = grid_.height();
+  const double res = grid_.resolution_m(), eps = options_.map.eps;
+  PlanningCells out;
+  out.cells = CellMap{W, H, std::vector<CellState>(static_cast<std::size_t>(W) * H)};
+  std::vector<char> occupied(out.cells.cells.size(), 0), heard(out.cells.cells.size(), 0);
+  for (int iy = 0; iy < H; ++iy)
+    for (int ix = 0; ix < W; ++ix) {
+      const std::size_t i = static_cast<std::size_t>(iy) * W + ix;
+      const double p = grid_.Probability(ix, iy);
+      CellState state =
+          p < eps ? CellState::kFree : (p > 1.0 - eps ? CellState::kOccupied : CellState::kUnknown);
+      out.cells.cells[i] = state;
+      // The fitted obstacles are no way through, but their unknown cells stay unknown: a blob
+      // fitted around space nobody has seen yet is where the frontier is.
+      bool in_obstacle = false;
+      for (const Rect& o : obstacles)
+        in_obstacle = in_obstacle || o.Contains(grid_.CellCentre(ix, iy));
+      heard[i] = state == CellState::kOccupied;
+      for (const Eigen::Vector2d& e : blocking_echoes_)
+        if (grid_.CellAt(e) == Eigen::Vector2i(ix, iy)) heard[i] = 1;
+      occupied[i] = heard[i] || in_obstacle;
+    }
+  const std::vector<char> near = Dilate(occupied, W, H, options_.path_clearance_m / res);
+  const std::vector<char> near_heard = Dilate(heard, W, H, options_.path_clearance_m / res);
+  out.safe.assign(occupied.size(), 0);
+  out.safe_from_heard.assign(occupied.size(), 0);
+  for (int iy = 0; iy < H; ++iy)
+    for (int ix = 0; ix < W; ++ix) {
+      const std::size_t i = static_cast<std::size_t>(iy) * W + ix;
+      // The robot may be closer than the clearance to something (after a blocked move): the free
+      // cells around it stay usable so that it can leave.
+      const bool escape = out.cells.cells[i] == CellState::kFree &&
+                          (grid_.CellCentre(ix, iy) - here).norm() < options_.path_clearance_m;
+      out.safe[i] = !near[i] || escape;
+      out.safe_from_heard[i] = !near_heard[i] || escape;
+    }
+  return out;
+}
+
+std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::CellPath(
+    const std::vector<char>& traversable, const std::vector<char>& goal,
+    const Eigen::Vector2d& here) const {
+  const int W = grid_.width(), H = grid_.height();
+  const Eigen::Vector2i start = grid_.CellAt(here);
+  if (start.x() < 0) return std::nullopt;
+  const std::vector<Eigen::Vector2i> cells = ShortestCellPath(traversable, goal, W, H, start);
+  if (cells.empty()) return std::nullopt;
+  const std::vector<Eigen::Vector2i> path = SimplifyPath(cells, traversable, W, H);
+  std::vector<Eigen::Vector2d> waypoints;
+  for (std::size_t k = 1; k < path.size(); ++k)
+    waypoints.push_back(grid_.CellCentre(path[k].x(), path[k].y()));
+  return waypoints;
+}
+
+bool SonarExplorer::LegsClear(const PlanningCells& planning, const Eigen::Vector2d& here,
+                              const std::vector<Eigen::Vector2d>& path) const {
+  const double step = grid_.resolution_m() / 4.0;
+  Eigen::Vector2d from = here;
+  for (const Eigen::Vector2d& to : path) {
+    const int n = std::max(1, static_cast<int>(std::ceil((to - from).norm() / step)));
+    for (int k = 0; k <= n; ++k) {
+      const Eigen::Vector2i c = grid_.CellAt(from + (to - from) * (static_cast<double>(k) / n));
+      if (c.x() < 0 || !planning.safe[static_cast<std::size_t>(c.y()) * grid_.width() + c.x()])
+        return false;
+    }
+    from = to;
+  }
+  return true;
+}
+
+std::vector<Eigen::Vector2d> SonarExplorer::SafePathTo(const PlanningCells& planning,
+                                                       const CognitiveMap& map,
+                                                       const Eigen::Vector2d& here,
+                                                       const Eigen::Vector2d& target) const {
+  // The seed's x/y moves along the graph when they keep clear of everything heard; otherwise the
+  // shortest way over the grid cells that do, inside the room as fitted.
+  std::vector<Eigen::Vector2d> path = PlanPath(map.partitions, map.graph, here, target);
+  if (!path.empty() && LegsClear(planning, here, path)) return path;
+  const int W = grid_.width(), H = grid_.height();
+  std::vector<char> traversable(planning.safe.size(), 0), goal(planning.safe.size(), 0);
+  for (int iy = 0; iy < H; ++iy)
+    for (int ix = 0; ix < W; ++ix) {
+      const std::size_t i = static_cast<std::size_t>(iy) * W + ix;
+      traversable[i] = planning.safe[i] && map.room.Contains(grid_.CellCentre(ix, iy));
+    }
+  const Eigen::Vector2i t = grid_.CellAt(target);
+  if (t.x() < 0) return {};
+  goal[static_cast<std::size_t>(t.y()) * W + t.x()] = 1;
+  path = CellPath(traversable, goal, here).value_or(std::vector<Eigen::Vector2d>{});
+  if (!path.empty()) path.back() = target;
+  return path;
+}
+
+std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToFrontier(
+    const PlanningCells& planning, const Eigen::Vector2d& here) const {
+  const int W = grid_.width(), H = grid_.height();
+  const double res = grid_.resolution_m();
+  // Unknown cells next to an occupied one are the edge of a wall the sonar has heard, not space
+  // still to explore: the frontier is where unknown space lies open.
+  CellMap open = planning.cells;
+  {
+    std::vector<char> heard(open.cells.size(), 0);
+    for (std::size_t i = 0; i < heard.size(); ++i) heard[i] = open.cells[i] == CellState::kOccupied;
+    const std::vector<char> near = Dilate(heard, W, H, options_.frontier_wall_band_m / res);
+    for (std::size_t i = 0; i < near.size(); ++i)
+      if (near[i] && open.cells[i] == CellState::kUnknown) open.cells[i] = CellState::kOccupied;
+  }
+  std::vector<char> pending = FrontierMask(open);
+  for (std::size_t i = 0; i < pending.size(); ++i) pending[i] = pending[i] && !looked_[i];
+  pending = KeepClusters(pending, W, H, options_.frontier_min_cells);
+  // Goals: cells close enough that arriving (within the waypoint tolerance) looks at the frontier.
+  const std::vector<char> near_frontier =
+      Dilate(pending, W, H, (options_.frontier_view_m - options_.waypoint_tolerance_m) / res);
+  std::vector<char> traversable(planning.safe.size(), 0), goal(planning.safe.size(), 0);
+  for (int iy = 0; iy < H; ++iy)
+    for (int ix = 0; ix < W; ++ix) {
+      const std::size_t i = static_cast<std::size_t>(iy) * W + ix;
+      traversable[i] = planning.safe_from_heard[i] && planning.cells.cells[i] == CellState::kFree;
+      goal[i] = near_frontier[i] && traversable[i] && !Abandoned(grid_.CellCentre(ix, iy));
+    }
+  return CellPath(traversable, goal, here);
+}
+
+std::optional<msgs::WheelSpeedCommand> SonarExplorer::ReactToBump(
+    const robot::ControllerInput& input) {
+  const msgs::Pose2D& X_WR = input.X_WR_estimate;
+  robot::BodyTwist twist;
+  if (input.time_s < backing_off_until_s_) {
+    twist.linear_m_s = backing_off_speed_m_s_;
+    return robot::TwistToWheelSpeeds(spec_, twist);
+  }
+  if (input.bumpers == nullptr) return std::nullopt;
+  const auto& pressed = input.bumpers->pressed;
+  const int n = static_cast<int>(pressed.size());
+  int panel = -1;
+  for (int i = 0; i < n && panel < 0; ++i)
+    if (pressed[i]) panel = i;
+  if (panel < 0) return std::nullopt;
+  // The sonar missed something (a corner inside its blanking range, or a face seen at a grazing
+  // angle): the contact point is in the way from now on, the move is abandoned, and the robot
+  // backs away from the panel that touched.
+  const double bearing = X_WR.theta_rad + 2.0 * M_PI * panel / n;
+  const Eigen::Vector2d direction(std::cos(bearing), std::sin(bearing));
+  blocking_echoes_.push_back(Position(X_WR) + (options_.robot_radius_m + 0.02) * direction);
+  if (perimeter_done_ && !path_.empty()) {
+    failed_moves_.emplace_back(Position(X_WR), path_.front());
+    abandoned_.push_back(path_.back());
+  }
+  path_.clear();
+  heading_to_frontier_ = false;
+  last_replan_s_ = -1e9;
+  const double along = std::cos(2.0 * M_PI * panel / n);
+  backing_off_speed_m_s_ =
+      along >= 0.0 ? -options_.bump_back_off_speed_m_s : options_.bump_back_off_speed_m_s;
+  backing_off_until_s_ = input.time_s + options_.bump_back_off_s;
+  // Stop the wheels at once, as a base's bumper circuit does (Update ramps on from here): ramping
+  // down under the limit kept pushing into the obstacle for most of a second, and that slip was
+  // the drift.
+  if (options_.bump_stops_wheels) command_ = {};
+  twist.linear_m_s = backing_off_speed_m_s_;
+  return robot::TwistToWheelSpeeds(spec_, twist);
+}
+
+bool SonarExplorer::MapBlocksFront(const msgs::Pose2D& X_WR) const {
+  // Occupied cells heard earlier in the corridor the body sweeps ahead: a corner the sonar heard
+  // from elsewhere stays there when the sonar now misses it (specular, or inside 0.15 m).
+  const double reach = options_.stop_range_m + options_.robot_radius_m;
+  // Narrower than the echo corridor (cell centres are exact; echoes are off by the cone), and
+  // narrower than path_clearance_m, so that a planned path is not blocked by what planned it.
+  const double half_width = options_.robot_radius_m + options_.front_margin_m;
+  const Eigen::Vector2d here = Position(X_WR);
+  const Eigen::Vector2d ahead(std::cos(X_WR.theta_rad), std::sin(X_WR.theta_rad));
+  const Eigen::Vector2i c = grid_.CellAt(here);
+  if (c.x() < 0) return false;
+  const int r = static_cast<int>(std::ceil(std::hypot(reach, half_width) / grid_.resolution_m()));
+  for (int dy = -r; dy <= r; ++dy)
+    for (int dx = -r; dx <= r; ++dx) {
+      const int ix = c.x() + dx, iy = c.y() + dy;
+      if (!grid_.Contains(ix, iy) || grid_.Probability(ix, iy) <= 1.0 - options_.map.eps) continue;
+      const Eigen::Vector2d d = grid_.CellCentre(ix, iy) - here;
+      const double along = d.dot(ahead);
+      const double side = ahead.x() * d.y() - ahead.y() * d.x();
+      if (along > 0.0 && along < reach && std::abs(side) < half_width) return true;
+    }
+  return false;
+}
+
+msgs::WheelSpeedCommand SonarExplorer::Explore(const robot::ControllerInput& input) {
+  const msgs::Pose2D& X_WR = input.X_WR_estimate;
+  if (!explore_start_s_) explore_start_s_ = input.time_s;
+  if (input.time_s - *explore_start_s_ > options_.explore_max_s) {
+    finished_ = true;
+    return {};
+  }
+  if (input.time_s - last_replan_s_ >= options_.replan_period_s || path_.empty()) {
+    last_replan_s_ = input.time_s;
+    Replan(X_WR, input.time_s);
+    if (finished_ || path_.empty()) return {};
+  }
+  while (!path_.empty() && (path_.front() - Position(X_WR)).norm() < options_.waypoint_tolerance_m)
+    path_.erase(path_.begin());
+  if (path_.empty()) {
+    // Arrived at a frontier: what the sonar could see of it from here is seen; passing by does not
+    // count, since the ring may have heard nothing of it on the way.
+    if (heading_to_frontier_) MarkLooked(Position(X_WR));
+    heading_to_frontier_ = false;
+    return {};
+  }
+  msgs::WheelSpeedCommand command = DriveTo(X_WR, path_.front());
+  const robot::BodyTwist twist = robot::WheelSpeedsToTwist(spec_, command);
+  const std::optional<Eigen::Vector2d> echo =
+      twist.linear_m_s > 0.0 && input.sonar != nullptr ? FrontBlocked(*input.sonar) : std::nullopt;
+  if (echo) {
+    // The planner did not know this echo: it is in the way from now on.
+    const double c = std::cos(X_WR.theta_rad), s = std::sin(X_WR.theta_rad);
+    blocking_echoes_.push_back(Position(X_WR) + Eigen::Vector2d(c * echo->x() - s * echo->y(),
+                                                                s * echo->x() + c * echo->y()));
+  }
+  if (twist.linear_m_s > 0.0 && (echo || MapBlocksFront(X_WR))) {
+    // Negative experience: this move cannot be made; forget the path and replan at once.
+    failed_moves_.emplace_back(Position(X_WR), path_.front());
+    abandoned_.push_back(path_.back());
+    path_.clear();
+    last_replan_s_ = -1e9;
+    return {};
+  }
+  return command;
+}
+
+msgs::WheelSpeedCommand SonarExplorer::Update(const robot::ControllerInput& input) {
+  const msgs::WheelSpeedCommand wanted = finished_ ? msgs::WheelSpeedCommand{} : Decide(input);
+  // Wheel speeds change at most max_wheel_accel_rad_s2: a step in speed makes the tyres slip on
+  // the floor, which the encoders do not see (it was most of the heading drift).
+  const double dt = last_command_s_ < 0.0 ? 0.0 : input.time_s - last_command_s_;
+  last_command_s_ = input.time_s;
+  const double step = options_.max_wheel_accel_rad_s2 * dt;
+  command_.left_rad_s += std::clamp(wanted.left_rad_s - command_.left_rad_s, -step, step);
+  command_.right_rad_s += std::clamp(wanted.right_rad_s - command_.right_rad_s, -step, step);
+  return command_;
+}
+
+msgs::WheelSpeedCommand SonarExplorer::Decide(const robot::ControllerInput& input) {
+  const msgs::Pose2D& X_WR = input.X_WR_estimate;
+  if (!start_) {
+    start_ = X_WR;
+    LogOddsGridOptions g;
+    g.resolution_m = options_.grid_resolution_m;
+    const int cells =
+        static_cast<int>(std::ceil(2.0 * options_.grid_half_extent_m / options_.grid_resolution_m));
+    g.width = g.height = cells;
+    g.origin_xy = Position(X_WR) - Eigen::Vector2d::Constant(options_.grid_half_extent_m);
+    g.log_odds.p_min = options_.p_min;
+    g.log_odds.log_odds_limit = options_.log_odds_limit;
+    grid_ = LogOddsGrid(g);
+    visits_.assign(static_cast<std::size_t>(cells) * cells, 0.0);
+    visited_.assign(visits_.size(), 0);
+    looked_.assign(visits_.size(), 0);
+  }
+  if (input.sonar != nullptr && input.sonar->time_s > last_ring_time_s_) {
+    last_ring_time_s_ = input.sonar->time_s;
+    grid_.Integrate(*model_, *input.sonar, X_WR);
+    ++rings_integrated_;
+  }
+  if (const std::optional<msgs::WheelSpeedCommand> back = ReactToBump(input)) return *back;
+  // Cells within visit_radius_m of the robot count as visited.
+  const Eigen::Vector2i c = grid_.CellAt(Position(X_WR));
+  if (c.x() >= 0) {
+    const int r = static_cast<int>(std::ceil(options_.visit_radius_m / grid_.resolution_m()));
+    for (int dy = -r; dy <= r; ++dy)
+      for (int dx = -r; dx <= r; ++dx) {
+        const int ix = c.x() + dx, iy = c.y() + dy;
+        if (grid_.Contains(ix, iy) &&
+            (grid_.CellCentre(ix, iy) - Position(X_WR)).norm() <= options_.visit_radius_m)
+          visited_[iy * grid_.width() + ix] = 1;
+      }
+  }
+  if (!perimeter_done_) {
+    if (!perimeter_start_s_) perimeter_start_s_ = input.time_s;
+    if (last_theta_ && follower_->wall())
+      turned_rad_ += msgs::WrapAngle(X_WR.theta_rad - *last_theta_);
+    last_theta_ = X_WR.theta_rad;
+    if (last_position_ && follower_->wall())
+      perimeter_travelled_m_ += (Position(X_WR) - *last_position_).norm();
+    last_position_ = Position(X_WR);
+    if ((std::abs(turned_rad_) >= options_.perimeter_turn_rad &&
+         perimeter_travelled_m_ >= options_.perimeter_min_m) ||
+        input.time_s - *perimeter_start_s_ > options_.perimeter_max_s) {
+      perimeter_done_ = true;
+    } else {
+      // The follower cannot hear an obstacle corner met head-on; a close front echo turns the
+      // robot on the spot away from the wall (on its left) until the way ahead is clear.
+      const msgs::WheelSpeedCommand command = follower_->Update(input);
+      if (robot::WheelSpeedsToTwist(spec_, command).linear_m_s > 0.0 &&
+          ((input.sonar != nullptr && FrontBlocked(*input.sonar).has_value()) ||
+           MapBlocksFront(X_WR))) {
+        robot::BodyTwist turn;
+        turn.angular_rad_s = -options_.turn_rate_rad_s;
+        return robot::TwistToWheelSpeeds(spec_, turn);
+      }
+      return command;
+    }
+  }
+  return Explore(input);
+}
+
+}  // namespace plywood::perception

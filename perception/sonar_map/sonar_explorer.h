@@ -1,0 +1,180 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "perception/sonar_map/cognitive_map.h"
+#include "perception/sonar_map/frontier_planner.h"
+#include "perception/sonar_map/log_odds_grid.h"
+#include "perception/sonar_map/sonar_cell_model.h"
+#include "perception/sonar_map/sonar_net.h"
+#include "robot/control/controller.h"
+#include "robot/control/wall_following_controller.h"
+#include "robot/drive/diff_drive_spec.h"
+
+namespace plywood::perception {
+
+// Every constant of seed 001's exploration loop the paper leaves open (docs/sonar_map.md).
+struct SonarExplorerOptions {
+  std::string sonar_model = "net";  // net | classical
+  // Weights of the sonar network (SonarNet file), relative to the data root unless absolute.
+  std::string weights_file = "models/sonar_net_v1.txt";
+  double grid_half_extent_m = 4.0;  // the global grid spans start +- this
+  double grid_resolution_m = 0.05;
+  double p_min = 0.02;  // clamp of each reading in the product formula
+  double log_odds_limit = 12.0;
+  // A cell whose nearest transducer heard nothing gets no update (EchoGatedModel).
+  bool misses_say_nothing = true;
+  CognitiveMapOptions map;
+  // Obstacle (and wall) perimeter following first: one full turn of the boundary.
+  double wall_distance_m = 0.5;     // 0.45 grazed obstacle corners (layout 3)
+  double perimeter_turn_rad = 6.0;  // heading change that closes the circuit (2 pi minus slack)
+  double perimeter_max_s = 150.0;
+  // The follower turns on the spot at an inner corner when the wall ahead is this close. With 0.8 m
+  // the robot stays about 0.8 m off the walls of a 3 m room; 0.55-0.7 m were tried on unseen rooms
+  // (docs/sonar_map.md) and were no better, as the follower then cuts its turns short.
+  double perimeter_front_clearance_m = 0.8;
+  // Then the seed's utility loop over the partitions.
+  double speed_m_s = 0.2;
+  double max_wheel_accel_rad_s2 = 5.0;  // limit on the commanded wheel speeds' rate of change
+  // A pressed bump panel (panel i centred at 360 i / n deg, as on the Magellan Pro): back away
+  // from it for this long at this speed.
+  double bump_back_off_s = 1.5;
+  double bump_back_off_speed_m_s = 0.1;
+  // A newly pressed panel sets the commanded wheel speeds to zero at once (the acceleration
+  // limit applies again from there).
+  bool bump_stops_wheels = true;
+  double turn_rate_rad_s = 0.8;
+  double replan_period_s = 2.0;
+  double visit_decay = 0.95;         // lambda: c(p) <- lambda c(p) at every replan
+  double unvisited_utility = 100.0;  // K: U(p) of a partition never visited
+  double place_size_m = 0.9;         // free partitions are visited as places no larger than this
+  double perimeter_min_m = 5.0;      // and at least this far along the boundary
+  double visit_radius_m = 0.4;       // being this close to a partition's target counts as a visit
+  double clearance_m = 0.4;          // targets keep this far from room walls and obstacles
+  double robot_radius_m = 0.2;       // the Magellan Pro's
+  // Every path keeps its centre this far from occupied cells and fitted obstacles: the seed's x/y
+  // moves when they do, otherwise the shortest way over the grid cells that do.
+  double path_clearance_m = 0.45;
+  double stop_range_m = 0.3;  // a front echo closer than this aborts the move (into D)
+  // Half-width of that corridor beyond the body. It is narrower than path_clearance_m, so that a
+  // planned path is not blocked by the cells that shaped it.
+  double front_margin_m = 0.05;
+  double waypoint_tolerance_m = 0.08;
+  double explore_max_s = 200.0;  // then the run is over even if partitions remain unvisited
+  // Once every place was visited, unknown frontiers (frontier_planner.h) are visited too.
+  int frontier_min_cells = 3;          // smaller 8-connected frontier clusters are noise
+  double frontier_view_m = 0.5;        // a frontier cell the robot came this close to is done
+  double frontier_wall_band_m = 0.15;  // unknown cells this close to occupied ones are wall edge
+  // @throws std::invalid_argument naming the field.
+  void Validate() const;
+};
+
+// Seed 001's exploration controller. It owns the cognitive map: every new sonar ring goes through
+// the sonar model into the log-odds grid at the current odometry pose. It first follows the room's
+// boundary (wall on the left) for one circuit, then repeatedly rebuilds the partition map, decays
+// the visit counts (c <- lambda c), counts a visit to the partition it is in, and drives to the
+// free partition with the highest utility U = 1/c (K if never visited) along the graph's shortest
+// x/y path, or over the grid when that path would pass closer than path_clearance_m to anything
+// heard. A move that a close front echo (or an occupied cell of the grid) blocks puts the
+// transition it was making into D. Once every free partition was visited it drives to the nearest
+// unknown frontier it has not yet reached (the places live in the room as fitted, which misses what
+// was never seen). It finishes when no place and no frontier is left, or after explore_max_s.
+// A pressed bump panel marks the contact point for the planner, stops the wheels at once and backs
+// the robot away from it. Otherwise the commanded wheel speeds change at most
+// max_wheel_accel_rad_s2.
+class SonarExplorer final : public robot::Controller {
+ public:
+  // @throws std::invalid_argument for invalid options.
+  SonarExplorer(const robot::DiffDriveSpec& spec, const SonarExplorerOptions& options,
+                std::shared_ptr<const SonarCellModel> model);
+
+  msgs::WheelSpeedCommand Update(const robot::ControllerInput& input) override;
+  bool Finished() const override { return finished_; }
+
+  const LogOddsGrid& grid() const { return grid_; }
+  // The map abstracted from the grid now (plus the failed moves in D).
+  CognitiveMap Map() const;
+  const std::optional<msgs::Pose2D>& start() const { return start_; }
+  int rings_integrated() const { return rings_integrated_; }
+
+ private:
+  // The wheel speeds wanted now, before the acceleration limit.
+  msgs::WheelSpeedCommand Decide(const robot::ControllerInput& input);
+  msgs::WheelSpeedCommand Explore(const robot::ControllerInput& input);
+  msgs::WheelSpeedCommand DriveTo(const msgs::Pose2D& X_WR, const Eigen::Vector2d& target);
+  // The first echo point (robot frame) in the corridor the body sweeps within stop_range_m.
+  std::optional<Eigen::Vector2d> FrontBlocked(const msgs::RangeRing& ring) const;
+  void Replan(const msgs::Pose2D& X_WR, double time_s);
+  // Whether a target lies within visit_radius_m of one whose move a front echo blocked.
+  bool Abandoned(const Eigen::Vector2d& target) const;
+  // The grid's cells as free / occupied / unknown (fitted obstacles occupied), and which of them
+  // keep path_clearance_m from everything occupied, or from the occupied cells only (frontier
+  // paths: a fitted obstacle may be a blob of space not yet seen).
+  struct PlanningCells {
+    CellMap cells;
+    std::vector<char> safe;
+    std::vector<char> safe_from_heard;
+  };
+  PlanningCells Planning(const Eigen::Vector2d& here, const std::vector<Rect>& obstacles) const;
+  // Waypoints after the robot along the shortest traversable cell path to a goal cell: empty when
+  // the robot's cell is a goal, nullopt when no goal can be reached.
+  std::optional<std::vector<Eigen::Vector2d>> CellPath(const std::vector<char>& traversable,
+                                                       const std::vector<char>& goal,
+                                                       const Eigen::Vector2d& here) const;
+  bool LegsClear(const PlanningCells& planning, const Eigen::Vector2d& here,
+                 const std::vector<Eigen::Vector2d>& path) const;
+  std::vector<Eigen::Vector2d> SafePathTo(const PlanningCells& planning, const CognitiveMap& map,
+                                          const Eigen::Vector2d& here,
+                                          const Eigen::Vector2d& target) const;
+  // Path (waypoints after the robot) to the nearest frontier not yet looked at: empty when the
+  // robot stands on a goal already, nullopt when no frontier is left or none can be reached.
+  std::optional<std::vector<Eigen::Vector2d>> PlanToFrontier(const PlanningCells& planning,
+                                                             const Eigen::Vector2d& here) const;
+  // While a bump panel is pressed, and for bump_back_off_s after: the command backing away.
+  std::optional<msgs::WheelSpeedCommand> ReactToBump(const robot::ControllerInput& input);
+  // Whether an occupied grid cell lies in the corridor the body sweeps within stop_range_m.
+  bool MapBlocksFront(const msgs::Pose2D& X_WR) const;
+
+  robot::DiffDriveSpec spec_;
+  SonarExplorerOptions options_;
+  std::shared_ptr<const SonarCellModel> model_;
+  LogOddsGrid grid_;
+  std::unique_ptr<robot::WallFollowingController> follower_;
+  std::optional<msgs::Pose2D> start_;
+  double last_ring_time_s_ = -1.0;
+  int rings_integrated_ = 0;
+  // Perimeter phase bookkeeping.
+  bool perimeter_done_ = false;
+  std::optional<double> last_theta_;
+  double turned_rad_ = 0.0;
+  double perimeter_travelled_m_ = 0.0;
+  std::optional<Eigen::Vector2d> last_position_;
+  std::optional<double> perimeter_start_s_;
+  std::optional<double> explore_start_s_;
+  // Visit counts live on the grid's cells so they survive re-partitioning.
+  std::vector<double> visits_;
+  std::vector<char> visited_;
+  // Marks the cells within frontier_view_m of `at` as looked at.
+  void MarkLooked(const Eigen::Vector2d& at);
+  std::vector<char> looked_;  // cells within frontier_view_m of a frontier goal the robot reached
+  bool heading_to_frontier_ = false;
+  // World points of echoes that blocked a move and of bumps: occupied for the planner.
+  std::vector<Eigen::Vector2d> blocking_echoes_;
+  double backing_off_until_s_ = -1.0;
+  double backing_off_speed_m_s_ = 0.0;
+  double last_replan_s_ = -1e9;
+  double last_decay_s_ = -1.0;
+  std::vector<Eigen::Vector2d> path_;
+  int target_partition_ = -1;
+  std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> failed_moves_;  // from, to points
+  std::vector<Eigen::Vector2d> abandoned_;  // final targets of blocked moves: never tried again
+  bool finished_ = false;
+  msgs::WheelSpeedCommand command_;  // last command sent
+  double last_command_s_ = -1.0;
+};
+
+}  // namespace plywood::perception

@@ -1,0 +1,79 @@
+#include "robot/calibration/weighted_gain_search.h"
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace plywood::robot {
+
+void GainGridOptions::Validate() const {
+  if (!(min_gain > 0.0) || !std::isfinite(min_gain)) {
+    throw std::invalid_argument("min_gain: must be finite and > 0, got " +
+                                std::to_string(min_gain));
+  }
+  if (!(max_gain >= min_gain) || !std::isfinite(max_gain)) {
+    throw std::invalid_argument("max_gain: must be finite and >= min_gain, got " +
+                                std::to_string(max_gain));
+  }
+  if (!(step > 0.0) || !std::isfinite(step)) {
+    throw std::invalid_argument("step: must be finite and > 0, got " + std::to_string(step));
+  }
+  if ((max_gain - min_gain) / step > 2000.0) {
+    throw std::invalid_argument("step: more than 2000 grid points per axis, got " +
+                                std::to_string(step));
+  }
+}
+
+double ReplayDrift(const OdometryGeometry& geometry, const WeightedFusedOdometryOptions& options,
+                   const GainCalibrationRun& run) {
+  WeightedFusedOdometry odometry(geometry, options, run.X_WR_initial);
+  std::size_t g = 0;
+  for (const msgs::WheelEncoders& e : run.encoders) {
+    while (g < run.gyro.size() && run.gyro[g].time_s < e.time_s) odometry.AddGyro(run.gyro[g++]);
+    odometry.AddEncoders(e);
+  }
+  while (g < run.gyro.size()) odometry.AddGyro(run.gyro[g++]);
+  const msgs::Pose2D X_WR = odometry.pose();
+  return 100.0 * std::hypot(X_WR.x_m - run.X_WR_final.x_m, X_WR.y_m - run.X_WR_final.y_m) /
+         run.distance_m;
+}
+
+GainSearchResult SearchWeightedGains(const OdometryGeometry& geometry,
+                                     const WeightedFusedOdometryOptions& base,
+                                     const GainGridOptions& grid, const GainCalibrationRun& run) {
+  grid.Validate();
+  base.Validate();
+  if (run.encoders.empty() || run.gyro.empty()) {
+    throw std::invalid_argument("run: needs encoder and gyro messages");
+  }
+  if (!(run.distance_m > 0.0)) throw std::invalid_argument("run: distance_m must be > 0");
+  const int n =
+      static_cast<int>(std::floor((grid.max_gain - grid.min_gain) / grid.step + 1e-9)) + 1;
+  GainSearchResult result;
+  WeightedFusedOdometryOptions options = base;
+  options.encoder_gain = options.gyro_gain = 1.0;
+  result.unit_drift_percent = ReplayDrift(geometry, options, run);
+  double best = std::numeric_limits<double>::infinity();
+  double best_distance_to_unit = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      options.encoder_gain = grid.min_gain + i * grid.step;
+      options.gyro_gain = grid.min_gain + j * grid.step;
+      const double drift = ReplayDrift(geometry, options, run);
+      ++result.evaluated;
+      const double to_unit = std::hypot(options.encoder_gain - 1.0, options.gyro_gain - 1.0);
+      if (drift < best || (drift == best && to_unit < best_distance_to_unit)) {
+        best = drift;
+        best_distance_to_unit = to_unit;
+        result.encoder_gain = options.encoder_gain;
+        result.gyro_gain = options.gyro_gain;
+      }
+    }
+  }
+  result.drift_percent = best;
+  return result;
+}
+
+}  // namespace plywood::robot

@@ -1,0 +1,39 @@
+#include "robot/drive/diff_drive_spec.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace plywood::robot {
+namespace {
+
+void RequirePositive(const char* field, double value) {
+  if (!std::isfinite(value) || value <= 0.0) {
+    throw std::invalid_argument(std::string(field) + ": must be a finite number > 0, got " +
+                                std::to_string(value));
+  }
+}
+
+}  // namespace
+
+void DiffDriveSpec::Validate() const {
+  RequirePositive("wheel_radius_m", wheel_radius_m);
+  RequirePositive("track_m", track_m);
+  RequirePositive("max_wheel_speed_rad_s", max_wheel_speed_rad_s);
+  RequirePositive("encoder_ticks_per_rev", encoder_ticks_per_rev);
+}
+
+DiffDriveSpec P3dxSpec() { return DiffDriveSpec{}; }
+
+DiffDriveSpec MagellanProSpec() {
+  // Assumed: 3-inch-radius wheels under a 0.406 m round body, track 0.32 m, and stepper-driven
+  // wheels read at 800 steps per revolution (half-stepped 400-step motors behind no gearbox).
+  DiffDriveSpec spec;
+  spec.wheel_radius_m = 0.0762;
+  spec.track_m = 0.32;
+  spec.max_wheel_speed_rad_s = 13.0;
+  spec.encoder_ticks_per_rev = 800;
+  return spec;
+}
+
+}  // namespace plywood::robot

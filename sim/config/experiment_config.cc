@@ -1,0 +1,183 @@
+#include "sim/config/experiment_config.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "sim/config/config_archive.h"
+#include "sim/config/config_error.h"
+#include "sim/config/config_fields.h"
+#include "sim/config/robot_catalog.h"
+#include "sim/config/yaml_fields.h"
+#include "sim/world/mujoco_handles.h"
+
+namespace plywood::sim {
+namespace {
+
+// Relative paths resolve against the YAML's folder first, then the data root (so experiments in
+// experiments/ can say "worlds/office.xml"). Absolute paths are taken as they are.
+std::filesystem::path ResolvePath(const std::string& text, const std::filesystem::path& base_dir,
+                                  const YamlFields& fields, const std::string& key) {
+  const std::filesystem::path given(text);
+  if (given.is_absolute()) {
+    if (!std::filesystem::is_regular_file(given)) fields.Fail(key, "no such file: " + text);
+    return given.lexically_normal();
+  }
+  for (const auto& base : {base_dir, DataRoot()}) {
+    const std::filesystem::path candidate = (base / given).lexically_normal();
+    if (std::filesystem::is_regular_file(candidate)) return candidate;
+  }
+  fields.Fail(key, "no such file: " + text + " (looked in " + base_dir.string() + " and " +
+                       DataRoot().string() + ")");
+}
+
+// A world may name free spots as <custom><numeric name="spawn_0" data="x_m y_m yaw_deg"/>; the
+// first is where a robot starts when the experiment gives no spawn (else the origin).
+SpawnPose WorldDefaultSpawn(const std::filesystem::path& world) {
+  MjModelPtr model;
+  try {
+    model = LoadModelFromFile(world.string());
+  } catch (const std::exception&) {
+    return {};  // the scene reports the compile error with its full context
+  }
+  const int id = mj_name2id(model.get(), mjOBJ_NUMERIC, "spawn_0");
+  if (id < 0 || model->numeric_size[id] != 3) return {};
+  const mjtNum* data = model->numeric_data + model->numeric_adr[id];
+  return {data[0], data[1], data[2]};
+}
+
+void RequirePositiveFinite(const char* field, double value) {
+  if (!std::isfinite(value) || value <= 0.0) {
+    throw std::invalid_argument(std::string(field) + ": must be a finite number > 0, got " +
+                                FormatNumber(value));
+  }
+}
+
+}  // namespace
+
+void PhysicsOptions::Validate() const {
+  RequirePositiveFinite("timestep_s", timestep_s);
+  if (timestep_s > 0.05) {
+    throw std::invalid_argument("timestep_s: must be <= 0.05 s for stable wheel contact, got " +
+                                FormatNumber(timestep_s));
+  }
+}
+
+void OutputOptions::Validate() const {
+  RequirePositiveFinite("trajectory_rate_hz", trajectory_rate_hz);
+  if (snapshot_size_px < 64 || snapshot_size_px > 8192) {
+    throw std::invalid_argument("snapshot_size_px: must be in 64..8192, got " +
+                                std::to_string(snapshot_size_px));
+  }
+}
+
+ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::string& source,
+                                       const std::filesystem::path& base_dir,
+                                       const std::vector<std::string>& overrides) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::Exception& e) {
+    // yaml-cpp's own text carries the line and column.
+    throw ConfigError(source, "", std::string("not valid YAML: ") + e.what());
+  }
+  if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  for (const std::string& assignment : overrides) {
+    if (!root.IsMap()) break;  // reported below as "expected a mapping"
+    ApplyOverride(root, assignment, "--set " + assignment);
+  }
+
+  ExperimentConfig config;
+  config.source_file = source;
+  YamlFields top(root, source, "");
+  config.name = std::filesystem::path(source).stem().string();
+  top.Get("name", &config.name);
+  top.Get("seed", &config.seed);
+  top.Get("protocol", &config.protocol);
+  if (config.protocol != "single") {
+    if (!top.Has(config.protocol))
+      config.protocol_options = YAML::Node(YAML::NodeType::Map);
+    else
+      config.protocol_options = YAML::Clone(top.Raw(config.protocol));
+  }
+  top.Get("duration_s", &config.duration_s);
+  if (!std::isfinite(config.duration_s) || config.duration_s <= 0.0) {
+    top.Fail("duration_s", "must be a finite number > 0, got " + FormatNumber(config.duration_s));
+  }
+  if (!top.Has("world")) top.Fail("world", "missing: give the world's MJCF file");
+  top.Get("world", &config.world);
+  config.world_path = ResolvePath(config.world, base_dir, top, "world");
+
+  YamlFields robot = top.Child("robot");
+  robot.Get("model", &config.robot);
+  try {
+    config.nominal = FindRobot(config.robot).nominal;
+  } catch (const std::invalid_argument& e) {
+    robot.Fail("model", e.what());
+  }
+  if (robot.Has("spawn")) {
+    ReadOptions(robot.Child("spawn"), config.spawn);
+  } else {
+    config.spawn = WorldDefaultSpawn(config.world_path);
+  }
+  ReadOptions(robot.Child("nominal"), config.nominal);
+  ReadOptions(robot.Child("deviation"), config.deviation);
+  robot.Finish();
+
+  ReadOptions(top.Child("physics"), config.physics);
+  ReadControllerConfig(top.Child("controller"), config.controller);
+  ReadSensorSuiteConfig(top.Child("sensors"), config.nominal, config.sensors);
+  if (top.Has("odometry")) {
+    ReadOdometryConfig(top.Child("odometry"), config.odometry);
+  } else if (config.sensors.encoders) {
+    config.odometry.enabled = {"encoder"};
+  }
+  if (top.Has("lines")) ReadLinesConfig(top.Child("lines"), config.lines);
+  ReadOptions(top.Child("output"), config.output);
+  top.Finish();
+  return config;
+}
+
+ExperimentConfig LoadExperimentConfig(const std::filesystem::path& yaml_path,
+                                      const std::vector<std::string>& overrides) {
+  std::ifstream in(yaml_path, std::ios::binary);
+  if (!std::filesystem::is_regular_file(yaml_path) || !in) {
+    throw ConfigError(yaml_path.string(), "", "no such experiment file");
+  }
+  std::stringstream text;
+  text << in.rdbuf();
+  return ParseExperimentConfig(text.str(), yaml_path.string(),
+                               std::filesystem::absolute(yaml_path).parent_path(), overrides);
+}
+
+std::string ExperimentConfigToYaml(const ExperimentConfig& const_config) {
+  ExperimentConfig config = const_config;  // the archives take mutable references
+  YAML::Node root(YAML::NodeType::Map);
+  root["name"] = config.name;
+  root["seed"] = config.seed;
+  if (config.protocol != "single") {
+    root["protocol"] = config.protocol;
+    root[config.protocol] = config.protocol_options;
+  }
+  root["duration_s"] = FormatNumber(config.duration_s);
+  root["world"] = config.world_path.string();
+  YAML::Node robot(YAML::NodeType::Map);
+  robot["model"] = config.robot;
+  robot["spawn"] = WriteOptions(config.spawn);
+  robot["nominal"] = WriteOptions(config.nominal);
+  robot["deviation"] = WriteOptions(config.deviation);
+  root["robot"] = robot;
+  root["physics"] = WriteOptions(config.physics);
+  root["controller"] = WriteControllerConfig(config.controller);
+  root["sensors"] = WriteSensorSuiteConfig(config.sensors);
+  root["odometry"] = WriteOdometryConfig(config.odometry);
+  if (config.lines.given) root["lines"] = WriteLinesConfig(config.lines);
+  root["output"] = WriteOptions(config.output);
+  YAML::Emitter out;
+  out << root;
+  return std::string(out.c_str()) + "\n";
+}
+
+}  // namespace plywood::sim

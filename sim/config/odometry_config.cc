@@ -1,0 +1,129 @@
+#include "sim/config/odometry_config.h"
+
+#include <algorithm>
+
+#include "sim/config/config_archive.h"
+#include "sim/config/yaml_fields.h"
+
+namespace plywood::sim {
+
+// The shared increment options sit flat beside each estimator's own.
+template <typename A>
+void VisitFields(A& a, robot::IncrementOptions& o) {
+  a("dead_band_rad", o.dead_band_rad);
+  a("counter_modulus", o.counter_modulus);
+  a.Enum(
+      "integration", o.integration, [](auto i) { return robot::ToString(i); },
+      [](const std::string& t) { return robot::ParseIntegration(t); });
+}
+
+template <typename A>
+void VisitFields(A& a, robot::OdometryCalibration& o) {
+  a("wheel_diameter_ratio", o.wheel_diameter_ratio);
+  a("track_ratio", o.track_ratio);
+}
+
+template <typename A>
+void VisitFields(A& a, robot::EncoderOdometryOptions& o) {
+  VisitFields(a, o.increments);
+  a("gain", o.gain);
+}
+
+template <typename A>
+void VisitFields(A& a, robot::GyroOdometryOptions& o) {
+  VisitFields(a, o.increments);
+  a("gain", o.gain);
+}
+
+template <typename A>
+void VisitFields(A& a, robot::FusedOdometryOptions& o) {
+  VisitFields(a, o.increments);
+}
+
+template <typename A>
+void VisitFields(A& a, robot::WeightedFusedOdometryOptions& o) {
+  VisitFields(a, o.increments);
+  a("encoder_gain", o.encoder_gain);
+  a("gyro_gain", o.gyro_gain);
+}
+
+template <typename A>
+void VisitFields(A& a, robot::EkfOdometryOptions& o) {
+  VisitFields(a, o.increments);
+  a("gyro_noise_rad_s", o.gyro_noise_rad_s);
+  a("gyro_scale_sigma", o.gyro_scale_sigma);
+  a("gyro_bias_sigma_rad_s", o.gyro_bias_sigma_rad_s);
+  a("gyro_bias_random_walk_rad_s_per_sqrt_s", o.gyro_bias_random_walk_rad_s_per_sqrt_s);
+  a("wheel_slip_sigma", o.wheel_slip_sigma);
+  a("encoder_turn_sigma", o.encoder_turn_sigma);
+}
+
+namespace {
+
+// Calls f(name, options) for every estimator, in column order.
+template <typename F>
+void ForEachEstimator(OdometryConfig& c, F&& f) {
+  f("encoder", c.encoder);
+  f("gyro", c.gyro);
+  f("fused", c.fused);
+  f("weighted", c.weighted);
+  f("ekf", c.ekf);
+}
+
+}  // namespace
+
+const std::vector<std::string>& KnownEstimators() {
+  static const std::vector<std::string> names{"encoder", "gyro", "fused", "weighted", "ekf"};
+  return names;
+}
+
+bool EstimatorNeedsGyro(const std::string& name) { return name != "encoder"; }
+
+void ReadOdometryConfig(YamlFields fields, OdometryConfig& config) {
+  config.given = true;
+  config.enabled.clear();
+  ReadOptions(fields.Child("calibration"), config.calibration);
+  ForEachEstimator(config, [&](const char* name, auto& options) {
+    if (!fields.Has(name)) return;
+    ReadOptions(fields.Child(name), options);
+    config.enabled.push_back(name);
+  });
+  // Finish() names the unknown key and lists the known ones (the estimator names).
+  fields.Finish();
+}
+
+YAML::Node WriteOdometryConfig(OdometryConfig& config) {
+  YAML::Node node(YAML::NodeType::Map);
+  node["calibration"] = WriteOptions(config.calibration);
+  ForEachEstimator(config, [&](const char* name, auto& options) {
+    if (std::find(config.enabled.begin(), config.enabled.end(), name) != config.enabled.end()) {
+      node[name] = WriteOptions(options);
+    }
+  });
+  return node;
+}
+
+std::vector<std::pair<std::string, std::unique_ptr<robot::OdometryEstimator>>> MakeEstimators(
+    const OdometryConfig& config, const robot::DiffDriveSpec& nominal,
+    const msgs::Pose2D& X_WR_initial) {
+  const robot::OdometryGeometry geometry = robot::CalibratedGeometry(nominal, config.calibration);
+  std::vector<std::pair<std::string, std::unique_ptr<robot::OdometryEstimator>>> estimators;
+  for (const std::string& name : config.enabled) {
+    std::unique_ptr<robot::OdometryEstimator> e;
+    if (name == "encoder") {
+      e = std::make_unique<robot::EncoderOdometry>(geometry, config.encoder, X_WR_initial);
+    } else if (name == "gyro") {
+      e = std::make_unique<robot::GyroOdometry>(geometry, config.gyro, X_WR_initial);
+    } else if (name == "fused") {
+      e = std::make_unique<robot::FusedOdometry>(geometry, config.fused, X_WR_initial);
+    } else if (name == "weighted") {
+      e = std::make_unique<robot::WeightedFusedOdometry>(geometry, config.weighted, X_WR_initial);
+    } else if (name == "ekf") {
+      e = std::make_unique<robot::EkfOdometry>(geometry, config.ekf, X_WR_initial);
+    }
+    if (e) estimators.emplace_back(name, std::move(e));
+  }
+  return estimators;
+}
+
+}  // namespace plywood::sim

@@ -1,0 +1,57 @@
+#pragma once
+
+#include "perception/sonar_map/sonar_explorer.h"
+
+namespace plywood::sim {
+
+// YAML keys of `controller: {type: sonar_explorer, ...}`; the map options sit flat beside them.
+template <typename A>
+void VisitFields(A& a, perception::SonarExplorerOptions& o) {
+  a("sonar_model", o.sonar_model);
+  a("weights_file", o.weights_file);
+  a("grid_half_extent_m", o.grid_half_extent_m);
+  a("grid_resolution_m", o.grid_resolution_m);
+  a("p_min", o.p_min);
+  a("log_odds_limit", o.log_odds_limit);
+  a("misses_say_nothing", o.misses_say_nothing);
+  a("eps", o.map.eps);
+  a("snap_distance_m", o.map.snap_distance_m);
+  a("fit_sigma_m", o.map.fit_sigma_m);
+  a("min_wall_points", o.map.min_wall_points);
+  a("min_obstacle_cells", o.map.min_obstacle_cells);
+  a("wall_band_m", o.map.wall_band_m);
+  a("min_passage_m", o.map.min_passage_m);
+  a("side_free_overrun_m", o.map.side_free_overrun_m);
+  a("obstacle_join_m", o.map.obstacle_join_m);
+  a("obstacle_free_p", o.map.obstacle_free_p);
+  a("fit_obstacle_sides", o.map.fit_obstacle_sides);
+  a("obstacle_min_fill", o.map.obstacle_min_fill);
+  a("wall_distance_m", o.wall_distance_m);
+  a("perimeter_turn_rad", o.perimeter_turn_rad);
+  a("perimeter_max_s", o.perimeter_max_s);
+  a("perimeter_front_clearance_m", o.perimeter_front_clearance_m);
+  a("speed_m_s", o.speed_m_s);
+  a("turn_rate_rad_s", o.turn_rate_rad_s);
+  a("replan_period_s", o.replan_period_s);
+  a("visit_decay", o.visit_decay);
+  a("unvisited_utility", o.unvisited_utility);
+  a("place_size_m", o.place_size_m);
+  a("perimeter_min_m", o.perimeter_min_m);
+  a("visit_radius_m", o.visit_radius_m);
+  a("clearance_m", o.clearance_m);
+  a("stop_range_m", o.stop_range_m);
+  a("max_wheel_accel_rad_s2", o.max_wheel_accel_rad_s2);
+  a("bump_back_off_s", o.bump_back_off_s);
+  a("bump_back_off_speed_m_s", o.bump_back_off_speed_m_s);
+  a("bump_stops_wheels", o.bump_stops_wheels);
+  a("front_margin_m", o.front_margin_m);
+  a("waypoint_tolerance_m", o.waypoint_tolerance_m);
+  a("explore_max_s", o.explore_max_s);
+  a("frontier_min_cells", o.frontier_min_cells);
+  a("robot_radius_m", o.robot_radius_m);
+  a("path_clearance_m", o.path_clearance_m);
+  a("frontier_view_m", o.frontier_view_m);
+  a("frontier_wall_band_m", o.frontier_wall_band_m);
+}
+
+}  // namespace plywood::sim

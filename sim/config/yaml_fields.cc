@@ -1,0 +1,204 @@
+#include "sim/config/yaml_fields.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+#include "perception/logs/parse_number.h"
+#include "sim/config/config_error.h"
+
+namespace plywood::sim {
+namespace {
+
+std::string Describe(const YAML::Node& node) {
+  if (node.IsNull()) return "nothing";
+  if (node.IsSequence()) return "a list";
+  if (node.IsMap()) return "a mapping";
+  return "'" + node.Scalar() + "'";
+}
+
+// Parses the whole of `text` as a finite number (perception::ParseFiniteNumber).
+bool ParseFinite(const std::string& text, double* value) {
+  const std::optional<double> parsed = perception::ParseFiniteNumber(text);
+  if (parsed) *value = *parsed;
+  return parsed.has_value();
+}
+
+}  // namespace
+
+YamlFields::YamlFields(const YAML::Node& node, std::string file, std::string path)
+    : node_(node), file_(std::move(file)), path_(std::move(path)) {
+  if (node_.IsDefined() && !node_.IsNull() && !node_.IsMap()) {
+    throw ConfigError(file_, path_.empty() ? "(top level)" : path_,
+                      "expected a mapping of keys, got " + Describe(node_));
+  }
+}
+
+std::string YamlFields::FieldPath(const std::string& key) const {
+  return path_.empty() ? key : path_ + "." + key;
+}
+
+bool YamlFields::Has(const std::string& key) const {
+  known_.insert(key);
+  return node_.IsMap() && node_[key].IsDefined();
+}
+
+void YamlFields::Fail(const std::string& key, const std::string& message) const {
+  throw ConfigError(file_, FieldPath(key), message);
+}
+
+void YamlFields::FailValidation(const std::string& what) const {
+  // Validate() messages read "field: reason"; join the field onto this mapping's path.
+  const auto colon = what.find(": ");
+  if (colon != std::string::npos && what.find(' ') > colon) {
+    throw ConfigError(file_, FieldPath(what.substr(0, colon)), what.substr(colon + 2));
+  }
+  throw ConfigError(file_, path_, what);
+}
+
+YAML::Node YamlFields::Scalar(const std::string& key, const char* expected) const {
+  const YAML::Node value = node_[key];
+  if (!value.IsScalar())
+    Fail(key, std::string("expected ") + expected + ", got " + Describe(value));
+  return value;
+}
+
+void YamlFields::Get(const std::string& key, double* value) {
+  if (!Has(key)) return;
+  used_.insert(key);
+  const std::string text = Scalar(key, "a number").Scalar();
+  if (!ParseFinite(text, value)) Fail(key, "expected a finite number, got '" + text + "'");
+}
+
+void YamlFields::Get(const std::string& key, int* value) {
+  if (!Has(key)) return;
+  double parsed = 0.0;
+  Get(key, &parsed);
+  if (parsed != std::floor(parsed) || std::abs(parsed) > std::numeric_limits<int>::max()) {
+    Fail(key, "expected a whole number, got " + node_[key].Scalar());
+  }
+  *value = static_cast<int>(parsed);
+}
+
+void YamlFields::Get(const std::string& key, std::uint64_t* value) {
+  if (!Has(key)) return;
+  used_.insert(key);
+  const std::string text = Scalar(key, "a whole number").Scalar();
+  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos ||
+      text.size() > 19) {
+    Fail(key, "expected a non-negative whole number, got '" + text + "'");
+  }
+  *value = std::stoull(text);
+}
+
+void YamlFields::Get(const std::string& key, bool* value) {
+  if (!Has(key)) return;
+  used_.insert(key);
+  const std::string text = Scalar(key, "true or false").Scalar();
+  if (text == "true") {
+    *value = true;
+  } else if (text == "false") {
+    *value = false;
+  } else {
+    Fail(key, "expected true or false, got '" + text + "'");
+  }
+}
+
+void YamlFields::Get(const std::string& key, std::string* value) {
+  if (!Has(key)) return;
+  used_.insert(key);
+  *value = Scalar(key, "a string").Scalar();
+}
+
+void YamlFields::Get(const std::string& key, std::vector<double>* value) {
+  if (!Has(key)) return;
+  used_.insert(key);
+  const YAML::Node list = node_[key];
+  if (!list.IsSequence()) Fail(key, "expected a list of numbers, got " + Describe(list));
+  value->clear();
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    double v = 0.0;
+    const std::string element = key + "[" + std::to_string(i) + "]";
+    if (!list[i].IsScalar()) Fail(element, "expected a number, got " + Describe(list[i]));
+    if (!ParseFinite(list[i].Scalar(), &v)) {
+      Fail(element, "expected a finite number, got '" + list[i].Scalar() + "'");
+    }
+    value->push_back(v);
+  }
+}
+
+void YamlFields::GetDegrees(const std::string& key, double* radians) {
+  if (!Has(key)) return;
+  double degrees = 0.0;
+  Get(key, &degrees);
+  *radians = degrees * std::numbers::pi / 180.0;
+}
+
+YamlFields YamlFields::Child(const std::string& key) {
+  known_.insert(key);
+  used_.insert(key);
+  return YamlFields(node_.IsMap() ? node_[key] : YAML::Node(), file_, FieldPath(key));
+}
+
+std::vector<YamlFields> YamlFields::ChildList(const std::string& key) {
+  std::vector<YamlFields> children;
+  if (!Has(key)) return children;
+  used_.insert(key);
+  const YAML::Node list = node_[key];
+  if (!list.IsSequence()) Fail(key, "expected a list, got " + Describe(list));
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    children.emplace_back(list[i], file_, FieldPath(key) + "[" + std::to_string(i) + "]");
+  }
+  return children;
+}
+
+YAML::Node YamlFields::Raw(const std::string& key) {
+  known_.insert(key);
+  used_.insert(key);
+  return node_.IsMap() ? node_[key] : YAML::Node();
+}
+
+void YamlFields::Finish() const {
+  if (!node_.IsMap()) return;
+  for (const auto& entry : node_) {
+    const std::string key = entry.first.Scalar();
+    if (used_.count(key)) continue;
+    std::string known;
+    for (const std::string& k : known_) known += (known.empty() ? "" : ", ") + k;
+    Fail(key, "unknown key" + (known.empty() ? std::string() : " (known here: " + known + ")"));
+  }
+}
+
+void ApplyOverride(YAML::Node root, const std::string& assignment, const std::string& source) {
+  const auto equals = assignment.find('=');
+  if (equals == std::string::npos || equals == 0) {
+    throw ConfigError(source, "", "expected key.path=value");
+  }
+  const std::string path = assignment.substr(0, equals);
+  YAML::Node value;
+  try {
+    value = YAML::Load(assignment.substr(equals + 1));
+  } catch (const YAML::Exception& e) {
+    throw ConfigError(source, path, std::string("value is not valid YAML: ") + e.what());
+  }
+  std::vector<std::string> keys;
+  std::stringstream stream(path);
+  for (std::string key; std::getline(stream, key, '.');) {
+    if (key.empty()) throw ConfigError(source, path, "empty key in path");
+    keys.push_back(key);
+  }
+  // yaml-cpp nodes are handles: walk down with fresh handles, never re-seat (assigning to a handle
+  // would overwrite the node it refers to).
+  std::vector<YAML::Node> chain{root};
+  for (std::size_t i = 0; i + 1 < keys.size(); ++i) {
+    YAML::Node next = chain.back()[keys[i]];
+    if (next.IsDefined() && !next.IsNull() && !next.IsMap()) {
+      throw ConfigError(source, path, "'" + keys[i] + "' is not a mapping");
+    }
+    chain.push_back(next);
+  }
+  chain.back()[keys.back()] = value;
+}
+
+}  // namespace plywood::sim

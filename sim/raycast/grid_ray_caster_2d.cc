@@ -1,0 +1,358 @@
+#include "sim/raycast/grid_ray_caster_2d.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "sim/raycast/mujoco_ray_caster.h"
+#include "sim/raycast/surface_normal.h"
+
+namespace plywood::sim {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Footprints and z ranges are padded so a hit on (or within rounding of) a cell boundary is found
+// from both cells; the traversal may then stop as soon as a cell ends beyond the nearest hit.
+constexpr double kPadM = 1e-6;
+constexpr double kStopSlackM = 1e-9;
+
+struct Aabb {
+  double lo[3];
+  double hi[3];
+};
+
+// World-frame half extents of a geom about its centre.
+bool HalfExtents(int type, const mjtNum* R, const mjtNum* size, double half[3]) {
+  for (int k = 0; k < 3; ++k) {
+    const mjtNum* row = R + 3 * k;  // world axis k expressed in geom axes
+    switch (type) {
+      case mjGEOM_BOX:
+        half[k] =
+            std::abs(row[0]) * size[0] + std::abs(row[1]) * size[1] + std::abs(row[2]) * size[2];
+        break;
+      case mjGEOM_CYLINDER:
+        half[k] =
+            std::abs(row[2]) * size[1] + size[0] * std::sqrt(std::max(0.0, 1.0 - row[2] * row[2]));
+        break;
+      case mjGEOM_CAPSULE:
+        half[k] = std::abs(row[2]) * size[1] + size[0];
+        break;
+      case mjGEOM_SPHERE:
+        half[k] = size[0];
+        break;
+      case mjGEOM_ELLIPSOID:
+        half[k] = std::hypot(row[0] * size[0], row[1] * size[1], row[2] * size[2]);
+        break;
+      default:
+        return false;
+    }
+  }
+  return true;
+}
+
+// mj_ray's quadratic: smallest non-negative root of a x^2 + 2 b x + c = 0, or -1. Kept in the same
+// arithmetic as MuJoCo (including its mjMINVAL cut on the discriminant) so distances agree bitwise.
+inline double SmallestRoot(double a, double b, double c) {
+  double det = b * b - a * c;
+  if (det < mjMINVAL) return -1;
+  det = std::sqrt(det);
+  const double x0 = (-b - det) / a;
+  if (x0 >= 0) return x0;
+  const double x1 = (-b + det) / a;
+  return x1 >= 0 ? x1 : -1;
+}
+
+}  // namespace
+
+void GridRayCaster2DOptions::Validate() const {
+  if (!(cell_size_m > 0.0) || !std::isfinite(cell_size_m)) {
+    throw std::invalid_argument("cell_size_m: must be > 0, got " + std::to_string(cell_size_m));
+  }
+  if (max_cells < 1) {
+    throw std::invalid_argument("max_cells: must be >= 1, got " + std::to_string(max_cells));
+  }
+}
+
+GridRayCaster2D::GridRayCaster2D(const mjModel* model, const mjData* data,
+                                 const GridRayCaster2DOptions& options)
+    : model_(model), data_(data) {
+  options.Validate();
+
+  std::vector<Aabb> boxes;
+  for (int g = 0; g < model->ngeom; ++g) {
+    if (!IsRayVisibleGeom(model, g)) continue;
+    const int type = model->geom_type[g];
+    const mjtNum* R = data->geom_xmat + 9 * g;
+    const bool is_static = model->body_weldid[model->geom_bodyid[g]] == 0;
+    double half[3];
+    if (!is_static || !HalfExtents(type, R, model->geom_size + 3 * g, half)) {
+      fallback_all_.push_back(g);
+      // Only a static plane facing exactly up or down is provably never hit by a horizontal ray.
+      const bool flat_plane = is_static && type == mjGEOM_PLANE && R[2] == 0 && R[5] == 0;
+      if (!flat_plane) fallback_horizontal_.push_back(g);
+      continue;
+    }
+    if (R[0] == 0 && R[4] == 0 && R[8] == 0 && R[1] == 0 && R[3] == 0) {
+      throw std::invalid_argument("data: geom poses are not computed; call mj_forward first");
+    }
+    Shape s;
+    s.geom_id = g;
+    s.type = type;
+    for (int i = 0; i < 3; ++i) {
+      s.pos[i] = data->geom_xpos[3 * g + i];
+      s.size[i] = model->geom_size[3 * g + i];
+    }
+    std::copy(R, R + 9, s.mat);
+    s.upright = (type == mjGEOM_BOX || type == mjGEOM_CYLINDER) && R[2] == 0 && R[5] == 0;
+    s.z_min = s.pos[2] - half[2] - kPadM;
+    s.z_max = s.pos[2] + half[2] + kPadM;
+    Aabb box;
+    for (int k = 0; k < 3; ++k) {
+      box.lo[k] = s.pos[k] - half[k] - kPadM;
+      box.hi[k] = s.pos[k] + half[k] + kPadM;
+    }
+    shapes_.push_back(s);
+    boxes.push_back(box);
+  }
+
+  cell_m_ = options.cell_size_m;
+  if (shapes_.empty()) {
+    nx_ = ny_ = 0;
+    cell_begin_.assign(1, 0);
+    return;
+  }
+  double x1 = -kInf, y1 = -kInf;
+  x0_ = y0_ = kInf;
+  for (const Aabb& b : boxes) {
+    x0_ = std::min(x0_, b.lo[0]);
+    y0_ = std::min(y0_, b.lo[1]);
+    x1 = std::max(x1, b.hi[0]);
+    y1 = std::max(y1, b.hi[1]);
+  }
+  auto cells_along = [this](double extent) {
+    return std::max(1, static_cast<int>(std::ceil(extent / cell_m_)));
+  };
+  while (static_cast<double>(cells_along(x1 - x0_)) * cells_along(y1 - y0_) > options.max_cells) {
+    cell_m_ *= 2.0;
+  }
+  inv_cell_ = 1.0 / cell_m_;
+  nx_ = cells_along(x1 - x0_);
+  ny_ = cells_along(y1 - y0_);
+
+  // Does shape s overlap cell (ix, iy)? Exact separating-axis test for upright boxes and circle
+  // test for upright cylinders; the footprint's bounding box for everything else.
+  auto overlaps = [this](const Shape& s, int ix, int iy) {
+    if (!s.upright) return true;
+    const double h = 0.5 * cell_m_ + kPadM;
+    const double cx = x0_ + (ix + 0.5) * cell_m_ - s.pos[0];
+    const double cy = y0_ + (iy + 0.5) * cell_m_ - s.pos[1];
+    if (s.type == mjGEOM_CYLINDER) {
+      const double dx = std::max(0.0, std::abs(cx) - h);
+      const double dy = std::max(0.0, std::abs(cy) - h);
+      return std::hypot(dx, dy) <= s.size[0] + kPadM;
+    }
+    for (int axis = 0; axis < 2; ++axis) {  // the box's own x and y axes in the floor plane
+      const double ux = s.mat[axis], uy = s.mat[3 + axis];
+      const double cell_radius = (std::abs(ux) + std::abs(uy)) * h;
+      if (std::abs(cx * ux + cy * uy) > cell_radius + s.size[axis] + kPadM) return false;
+    }
+    return true;
+  };
+  auto cell_range = [this](const Aabb& b, int* ix0, int* ix1, int* iy0, int* iy1) {
+    *ix0 = std::clamp(static_cast<int>(std::floor((b.lo[0] - x0_) * inv_cell_)), 0, nx_ - 1);
+    *ix1 = std::clamp(static_cast<int>(std::floor((b.hi[0] - x0_) * inv_cell_)), 0, nx_ - 1);
+    *iy0 = std::clamp(static_cast<int>(std::floor((b.lo[1] - y0_) * inv_cell_)), 0, ny_ - 1);
+    *iy1 = std::clamp(static_cast<int>(std::floor((b.hi[1] - y0_) * inv_cell_)), 0, ny_ - 1);
+  };
+
+  // Two passes (count, then fill) build the compressed per-cell lists.
+  cell_begin_.assign(static_cast<size_t>(nx_) * ny_ + 1, 0);
+  for (size_t i = 0; i < shapes_.size(); ++i) {
+    int ix0, ix1, iy0, iy1;
+    cell_range(boxes[i], &ix0, &ix1, &iy0, &iy1);
+    for (int iy = iy0; iy <= iy1; ++iy) {
+      for (int ix = ix0; ix <= ix1; ++ix) {
+        if (overlaps(shapes_[i], ix, iy)) ++cell_begin_[iy * nx_ + ix + 1];
+      }
+    }
+  }
+  for (size_t c = 1; c < cell_begin_.size(); ++c) cell_begin_[c] += cell_begin_[c - 1];
+  cell_items_.resize(cell_begin_.back());
+  std::vector<uint32_t> fill(cell_begin_.begin(), cell_begin_.end() - 1);
+  for (size_t i = 0; i < shapes_.size(); ++i) {
+    int ix0, ix1, iy0, iy1;
+    cell_range(boxes[i], &ix0, &ix1, &iy0, &iy1);
+    for (int iy = iy0; iy <= iy1; ++iy) {
+      for (int ix = ix0; ix <= ix1; ++ix) {
+        if (overlaps(shapes_[i], ix, iy)) cell_items_[fill[iy * nx_ + ix]++] = i;
+      }
+    }
+  }
+}
+
+double GridRayCaster2D::IntersectShape(const Shape& s, const double* o, const double* v,
+                                       bool horizontal) const {
+  if (!(s.upright && horizontal)) {
+    return mju_rayGeom(s.pos, s.mat, s.size, o, v, s.type);
+  }
+  // Horizontal ray, geom z exactly vertical: the geom-frame ray has lvec[2] == 0, so mj_ray's test
+  // reduces to the floor-plane cross-section plus a height check, computed here in the same
+  // floating-point order (ray_map, then the face or quadratic solution) so results match bitwise.
+  const double* R = s.mat;
+  const double d0 = o[0] - s.pos[0], d1 = o[1] - s.pos[1], d2 = o[2] - s.pos[2];
+  const double lp2 = R[8] * d2;
+  const double half_height = s.type == mjGEOM_BOX ? s.size[2] : s.size[1];
+  if (!(std::abs(lp2) <= half_height)) return -1;
+  const double lp0 = R[0] * d0 + R[3] * d1 + R[6] * d2;
+  const double lp1 = R[1] * d0 + R[4] * d1 + R[7] * d2;
+  const double lv0 = R[0] * v[0] + R[3] * v[1];
+  const double lv1 = R[1] * v[0] + R[4] * v[1];
+
+  if (s.type == mjGEOM_CYLINDER) {
+    const double a = lv0 * lv0 + lv1 * lv1;
+    const double b = lv0 * lp0 + lv1 * lp1;
+    const double c = lp0 * lp0 + lp1 * lp1 - s.size[0] * s.size[0];
+    return SmallestRoot(a, b, c);
+  }
+
+  double x = -1;
+  if (std::abs(lv0) > mjMINVAL) {
+    for (int side = -1; side <= 1; side += 2) {
+      const double sol = (side * s.size[0] - lp0) / lv0;
+      if (sol >= 0 && std::abs(lp1 + sol * lv1) <= s.size[1] && (x < 0 || sol < x)) x = sol;
+    }
+  }
+  if (std::abs(lv1) > mjMINVAL) {
+    for (int side = -1; side <= 1; side += 2) {
+      const double sol = (side * s.size[1] - lp1) / lv1;
+      if (sol >= 0 && std::abs(lp0 + sol * lv0) <= s.size[0] && (x < 0 || sol < x)) x = sol;
+    }
+  }
+  return x;
+}
+
+double GridRayCaster2D::IntersectFallback(int g, const double* o, const double* v) const {
+  switch (model_->geom_type[g]) {
+    case mjGEOM_MESH:
+      return mj_rayMesh(model_, data_, g, o, v);
+    case mjGEOM_HFIELD:
+      return mj_rayHfield(model_, data_, g, o, v);
+    default:
+      return mju_rayGeom(data_->geom_xpos + 3 * g, data_->geom_xmat + 9 * g,
+                         model_->geom_size + 3 * g, o, v, model_->geom_type[g]);
+  }
+}
+
+bool GridRayCaster2D::Cast(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W,
+                           double max_range_m, RayHit* hit) const {
+  const double* o = origin_W.data();
+  const double* v = dir_W.data();
+  const bool horizontal = v[2] == 0.0;
+
+  // Nearest hit so far; exact ties go to the lower geom id, as in mj_ray's loop over geoms.
+  double best_t = kInf;
+  int best_id = std::numeric_limits<int>::max();
+  auto consider = [&best_t, &best_id](double t, int id) {
+    if (t >= 0 && (t < best_t || (t == best_t && id < best_id))) {
+      best_t = t;
+      best_id = id;
+    }
+  };
+
+  for (int g : horizontal ? fallback_horizontal_ : fallback_all_) {
+    consider(IntersectFallback(g, o, v), g);
+  }
+
+  // Clip the ray's floor-plane projection to the grid rectangle.
+  double t_in = 0.0, t_far = std::min(max_range_m, best_t);
+  const double lo[2] = {x0_, y0_};
+  const double hi[2] = {x0_ + nx_ * cell_m_, y0_ + ny_ * cell_m_};
+  bool inside = nx_ > 0;
+  for (int k = 0; k < 2 && inside; ++k) {
+    if (v[k] == 0.0) {
+      inside = o[k] >= lo[k] && o[k] <= hi[k];
+    } else {
+      const double inv = 1.0 / v[k];
+      double ta = (lo[k] - o[k]) * inv, tb = (hi[k] - o[k]) * inv;
+      if (ta > tb) std::swap(ta, tb);
+      t_in = std::max(t_in, ta);
+      t_far = std::min(t_far, tb);
+      inside = t_in <= t_far + kStopSlackM;
+    }
+  }
+
+  if (inside) {
+    // Amanatides-Woo: the cell of the entry point, the ray parameter t at which the next x and y
+    // cell boundaries are crossed, and the t spacing of those boundaries.
+    const double px = o[0] + t_in * v[0], py = o[1] + t_in * v[1];
+    int ix = std::clamp(static_cast<int>(std::floor((px - x0_) * inv_cell_)), 0, nx_ - 1);
+    int iy = std::clamp(static_cast<int>(std::floor((py - y0_) * inv_cell_)), 0, ny_ - 1);
+    const int step_x = v[0] > 0 ? 1 : -1, step_y = v[1] > 0 ? 1 : -1;
+    double t_max_x = kInf, t_max_y = kInf, dt_x = kInf, dt_y = kInf;
+    if (v[0] != 0.0) {
+      t_max_x = (x0_ + (ix + (v[0] > 0 ? 1 : 0)) * cell_m_ - o[0]) / v[0];
+      dt_x = cell_m_ / std::abs(v[0]);
+    }
+    if (v[1] != 0.0) {
+      t_max_y = (y0_ + (iy + (v[1] > 0 ? 1 : 0)) * cell_m_ - o[1]) / v[1];
+      dt_y = cell_m_ / std::abs(v[1]);
+    }
+    // Walls span many cells: a small ring of recently tested shapes skips re-testing them (a
+    // re-test cannot change the answer).
+    constexpr int kRecent = 4;
+    uint32_t recent[kRecent];
+    std::fill(recent, recent + kRecent, UINT32_MAX);
+    int recent_next = 0;
+    const uint32_t* cell_begin = cell_begin_.data();
+    const uint32_t* cell_items = cell_items_.data();
+    const Shape* shapes = shapes_.data();
+    const int nx = nx_, ny = ny_;
+    for (;;) {
+      const double t_out = std::min(t_max_x, t_max_y);
+      double z_lo = o[2], z_hi = o[2];
+      if (!horizontal) {
+        const double z_a = o[2] + t_in * v[2];
+        const double z_b = o[2] + std::min(t_out, std::min(max_range_m, best_t)) * v[2];
+        z_lo = std::min(z_a, z_b);
+        z_hi = std::max(z_a, z_b);
+      }
+      const int cell = iy * nx + ix;
+      for (uint32_t k = cell_begin[cell], end = cell_begin[cell + 1]; k < end; ++k) {
+        const uint32_t index = cell_items[k];
+        const Shape& s = shapes[index];
+        if (s.z_max < z_lo || s.z_min > z_hi) continue;
+        bool seen = false;
+        for (int r = 0; r < kRecent; ++r) seen |= recent[r] == index;
+        if (seen) continue;
+        recent[recent_next] = index;
+        recent_next = (recent_next + 1) & (kRecent - 1);
+        consider(IntersectShape(s, o, v, horizontal), s.geom_id);
+      }
+      if (std::min(best_t, max_range_m) <= t_out + kStopSlackM) break;
+      if (t_max_x < t_max_y) {
+        ix += step_x;
+        if (ix < 0 || ix >= nx) break;
+        t_in = t_max_x;
+        t_max_x += dt_x;
+      } else {
+        iy += step_y;
+        if (iy < 0 || iy >= ny) break;
+        t_in = t_max_y;
+        t_max_y += dt_y;
+      }
+    }
+  }
+
+  if (best_id == std::numeric_limits<int>::max() || best_t > max_range_m) return false;
+  hit->distance_m = best_t;
+  hit->geom_id = best_id;
+  hit->normal_W = SurfaceNormal(model_, data_, best_id, origin_W + best_t * dir_W);
+  if (hit->normal_W.x() == 0 && hit->normal_W.y() == 0 && hit->normal_W.z() == 0) {
+    hit->normal_W = -dir_W;  // meshes, height fields
+  }
+  return true;
+}
+
+}  // namespace plywood::sim

@@ -1,0 +1,310 @@
+#include "sim/raycast/grid_ray_caster_2d.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "sim/raycast/mujoco_ray_caster.h"
+#include "sim/world/mujoco_handles.h"
+#include "tests/support/ray_caster_test_support.h"
+
+namespace plywood::sim {
+namespace {
+
+using plywood::testing::CompiledWorld;
+using plywood::testing::ExpectNormal;
+
+CompiledWorld Compile(const std::string& xml) {
+  return plywood::testing::CompileWorld(xml, "grid_ray_world.xml");
+}
+
+TEST(GridRayCaster2DTest, OptionsValidate) {
+  GridRayCaster2DOptions options;
+  EXPECT_NO_THROW(options.Validate());
+  options.cell_size_m = -1;
+  try {
+    options.Validate();
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("cell_size_m:", 0), 0u) << e.what();
+  }
+  options = GridRayCaster2DOptions();
+  options.max_cells = 0;
+  EXPECT_THROW(options.Validate(), std::invalid_argument);
+}
+
+TEST(GridRayCaster2DTest, StaticWorldNeedsNoMujocoCallsForHorizontalRays) {
+  const CompiledWorld w = Compile(plywood::testing::ClosedFormWorld());
+  const GridRayCaster2D grid(w.model.get(), w.data.get());
+  EXPECT_EQ(grid.num_grid_geoms(), 4);  // wall, yawed, post, table top
+  EXPECT_EQ(grid.num_horizontal_fallback_geoms(), 0);
+  EXPECT_EQ(grid.num_fallback_geoms(), 1);  // the floor, for rays that point down
+}
+
+TEST(GridRayCaster2DTest, BoxAtKnownDistanceThroughTheRobot) {
+  const CompiledWorld w = Compile(plywood::testing::ClosedFormWorld());
+  const GridRayCaster2D grid(w.model.get(), w.data.get());
+  RayHit hit;
+  ASSERT_TRUE(grid.Cast({0, 0, 0.3}, {1, 0, 0}, 8.0, &hit));
+  EXPECT_NEAR(hit.distance_m, 2.95, 1e-12);
+  EXPECT_EQ(hit.geom_id, w.Geom("wall"));
+  ExpectNormal(hit.normal_W, {-1, 0, 0});
+  EXPECT_FALSE(grid.Cast({0, 0, 0.3}, {1, 0, 0}, 2.9, &hit));
+  EXPECT_FALSE(grid.Cast({0, 0, 0.3}, {-1, 0, 0}, 100.0, &hit));
+  // From outside the grid's rectangle, towards it.
+  ASSERT_TRUE(grid.Cast({40, 0.5, 1.9}, {-1, 0, 0}, 100.0, &hit));
+  EXPECT_NEAR(hit.distance_m, 40 - 3.05, 1e-12);
+  ExpectNormal(hit.normal_W, {1, 0, 0});
+  // Above the wall.
+  EXPECT_FALSE(grid.Cast({40, 0.5, 2.1}, {-1, 0, 0}, 100.0, &hit));
+}
+
+TEST(GridRayCaster2DTest, YawedBoxObliqueRay) {
+  const CompiledWorld w = Compile(plywood::testing::ClosedFormWorld());
+  const GridRayCaster2D grid(w.model.get(), w.data.get());
+  const double yaw = M_PI / 6;
+  const Eigen::Vector3d u(std::cos(yaw), std::sin(yaw), 0), v(-std::sin(yaw), std::cos(yaw), 0);
+  const Eigen::Vector3d target = Eigen::Vector3d(0, -4, 0.3) + 0.5 * u + 0.1 * v;
+  const Eigen::Vector3d origin = target + 2.0 * u + 0.7 * v;
+  Eigen::Vector3d dir = target - origin;
+  dir.z() = 0.0;
+  dir.normalize();
+  RayHit hit;
+  ASSERT_TRUE(grid.Cast(origin, dir, 8.0, &hit));
+  EXPECT_NEAR(hit.distance_m, std::hypot(2.0, 0.7), 1e-12);
+  EXPECT_EQ(hit.geom_id, w.Geom("yawed"));
+  ExpectNormal(hit.normal_W, u);
+}
+
+TEST(GridRayCaster2DTest, CylinderOffAxis) {
+  const CompiledWorld w = Compile(plywood::testing::ClosedFormWorld());
+  const GridRayCaster2D grid(w.model.get(), w.data.get());
+  RayHit hit;
+  ASSERT_TRUE(grid.Cast({-1, 1.1, 0.3}, {-1, 0, 0}, 8.0, &hit));
+  const double depth = std::sqrt(0.25 * 0.25 - 0.1 * 0.1);
+  EXPECT_NEAR(hit.distance_m, 2.0 - depth, 1e-12);
+  EXPECT_EQ(hit.geom_id, w.Geom("post"));
+  ExpectNormal(hit.normal_W, Eigen::Vector3d(depth, 0.1, 0) / 0.25);
+}
+
+TEST(GridRayCaster2DTest, TableTopAboveRayHeightIsNotHit) {
+  const CompiledWorld w = Compile(plywood::testing::ClosedFormWorld());
+  const GridRayCaster2D grid(w.model.get(), w.data.get());
+  RayHit hit;
+  EXPECT_FALSE(grid.Cast({0, 2, 0.3}, {0, 1, 0}, 8.0, &hit));
+  ASSERT_TRUE(grid.Cast({0, 2, 0.72}, {0, 1, 0}, 8.0, &hit));
+  EXPECT_NEAR(hit.distance_m, 1.6, 1e-12);
+  EXPECT_EQ(hit.geom_id, w.Geom("table_top"));
+  ExpectNormal(hit.normal_W, {0, -1, 0});
+}
+
+TEST(GridRayCaster2DTest, DownwardRayHitsTheFloor) {
+  const CompiledWorld w = Compile(plywood::testing::ClosedFormWorld());
+  const GridRayCaster2D grid(w.model.get(), w.data.get());
+  RayHit hit;
+  ASSERT_TRUE(grid.Cast({0, 0, 0.3}, Eigen::Vector3d(-1, 0, -1).normalized(), 8.0, &hit));
+  EXPECT_NEAR(hit.distance_m, 0.3 * std::sqrt(2.0), 1e-12);
+  EXPECT_EQ(hit.geom_id, w.Geom("floor"));
+  ExpectNormal(hit.normal_W, {0, 0, 1});
+}
+
+// A room of about 60 random boxes and cylinders on the floor, floating (table tops, shelves),
+// yawed at random, plus the awkward cases: tilted geoms, a static body with its own pose, round
+// geoms, a moving box, a robot in group 3 and a transparent geom.
+std::string RandomWorld(uint64_t seed, int geoms) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> ux(-9.5, 9.5), uy(-6.5, 6.5), unit(0.0, 1.0);
+  std::uniform_int_distribution<int> kind(0, 9);
+  std::ostringstream xml;
+  xml.precision(17);
+  xml << "<mujoco><worldbody>\n<geom name='floor' type='plane' size='0 0 1'/>\n"
+      << "<geom type='box' pos='0 7 1.25' size='10 0.05 1.25'/>\n"
+      << "<geom type='box' pos='0 -7 1.25' size='10 0.05 1.25'/>\n"
+      << "<geom type='box' pos='10 0 1.25' size='0.05 7 1.25'/>\n"
+      << "<geom type='box' pos='-10 0 1.25' size='0.05 7 1.25'/>\n";
+  for (int i = 0; i < geoms; ++i) {
+    const double x = ux(rng), y = uy(rng);
+    // Half the yaws are multiples of 90 deg, as in real rooms.
+    const double yaw = unit(rng) < 0.5 ? 90.0 * std::floor(4 * unit(rng)) : 360.0 * unit(rng);
+    const int k = kind(rng);
+    if (k <= 4) {
+      const double h = 0.1 + 1.2 * unit(rng);
+      xml << "<geom type='box' pos='" << x << " " << y << " " << h << "' euler='0 0 " << yaw
+          << "' size='" << 0.02 + 1.2 * unit(rng) << " " << 0.02 + 0.6 * unit(rng) << " " << h
+          << "'/>\n";
+    } else if (k <= 6) {
+      const double h = 0.1 + 0.8 * unit(rng);
+      xml << "<geom type='cylinder' pos='" << x << " " << y << " " << h << "' size='"
+          << 0.03 + 0.5 * unit(rng) << " " << h << "'/>\n";
+    } else if (k == 7) {
+      xml << "<geom type='box' pos='" << x << " " << y << " " << 0.7 + 0.1 * unit(rng)
+          << "' euler='0 0 " << yaw << "' size='" << 0.3 + 0.6 * unit(rng) << " "
+          << 0.3 + 0.4 * unit(rng) << " 0.02'/>\n";
+    } else if (k == 8) {
+      xml << "<geom type='box' pos='" << x << " " << y << " " << 0.2 + 1.5 * unit(rng)
+          << "' euler='0 0 " << yaw << "' size='" << 0.05 + 0.8 * unit(rng) << " "
+          << 0.05 + 0.3 * unit(rng) << " " << 0.01 + 0.2 * unit(rng) << "'/>\n";
+    } else {
+      xml << "<geom type='cylinder' pos='" << x << " " << y << " " << 0.3 + 1.0 * unit(rng)
+          << "' size='" << 0.05 + 0.3 * unit(rng) << " " << 0.02 + 0.3 * unit(rng) << "'/>\n";
+    }
+  }
+  xml << "<geom name='tilted' type='box' pos='4 3 0.6' euler='20 10 45' size='0.6 0.2 0.4'/>\n"
+      << "<geom name='lying_cylinder' type='cylinder' pos='-4 -3 0.3' euler='90 0 30' "
+      << "size='0.3 0.8'/>\n"
+      << "<geom type='sphere' pos='6 -4 0.5' size='0.5'/>\n"
+      << "<geom type='capsule' pos='-6 4 0.3' euler='0 90 20' size='0.25 0.6'/>\n"
+      << "<geom type='ellipsoid' pos='1 -5 0.4' size='0.3 0.5 0.4'/>\n"
+      << "<geom name='glass' type='box' rgba='1 1 1 0' pos='0 0 1' size='0.4 0.4 1'/>\n"
+      << "<geom type='box' group='4' pos='-1 1 0.5' size='0.2 0.2 0.5'/>\n"
+      << "<geom type='box' group='5' pos='1 -1 0.5' size='0.2 0.2 0.5'/>\n"
+      << "<body name='shelf' pos='7 5 0' euler='0 0 25'>\n"
+      << "  <geom type='box' pos='0.5 0 0.9' size='0.5 0.2 0.9'/>\n"
+      << "  <geom type='cylinder' pos='-0.5 0.3 0.4' size='0.1 0.4'/>\n"
+      << "</body>\n"
+      << "<body name='crate' pos='-7 -5 0.4'><freejoint/>"
+      << "<geom name='crate' type='box' size='0.3 0.3 0.3'/></body>\n"
+      << "<body name='robot' pos='0 3 0'><freejoint/>"
+      << "<geom type='cylinder' group='3' pos='0 0 0.2' size='0.25 0.2'/></body>\n"
+      << "</worldbody></mujoco>\n";
+  return xml.str();
+}
+
+// Casts `rays` rays with both casters and counts disagreements (hit vs miss, geom, distance beyond
+// 1e-9 relative, normal beyond 1e-9).
+struct Comparison {
+  int rays = 0, hits = 0, mismatches = 0;
+  std::string first_mismatch;
+};
+
+void Compare(const RayCaster& reference, const RayCaster& grid, const Eigen::Vector3d& origin,
+             const Eigen::Vector3d& dir, double max_range_m, Comparison* c) {
+  RayHit a, b;
+  const bool hit_a = reference.Cast(origin, dir, max_range_m, &a);
+  const bool hit_b = grid.Cast(origin, dir, max_range_m, &b);
+  ++c->rays;
+  c->hits += hit_a;
+  const bool same =
+      hit_a == hit_b &&
+      (!hit_a || (a.geom_id == b.geom_id &&
+                  std::abs(a.distance_m - b.distance_m) <= 1e-9 * std::max(1.0, a.distance_m) &&
+                  (a.normal_W - b.normal_W).norm() <= 1e-9));
+  if (!same && c->mismatches++ == 0) {
+    std::ostringstream s;
+    s.precision(17);
+    s << "origin " << origin.transpose() << " dir " << dir.transpose() << ": mj_ray " << hit_a
+      << " geom " << a.geom_id << " d " << a.distance_m << " n " << a.normal_W.transpose()
+      << "; grid " << hit_b << " geom " << b.geom_id << " d " << b.distance_m << " n "
+      << b.normal_W.transpose();
+    c->first_mismatch = s.str();
+  }
+}
+
+class RandomWorldTest : public ::testing::TestWithParam<double> {};
+
+TEST_P(RandomWorldTest, HorizontalRaysMatchMjRayRayForRay) {
+  const CompiledWorld w = Compile(RandomWorld(7, 60));
+  GridRayCaster2DOptions options;
+  options.cell_size_m = GetParam();
+  const MujocoRayCaster reference(w.model.get(), w.data.get());
+  const GridRayCaster2D grid(w.model.get(), w.data.get(), options);
+  EXPECT_GE(grid.num_grid_geoms(), 70);
+  // Only the free-moving crate needs MuJoCo on every horizontal ray.
+  EXPECT_EQ(grid.num_horizontal_fallback_geoms(), 1);
+
+  std::mt19937_64 rng(11);
+  // Some origins lie outside the room and the grid, some inside geoms.
+  std::uniform_real_distribution<double> ux(-12, 12), uy(-9, 9), uz(0.01, 2.6), yaw(-M_PI, M_PI);
+  Comparison c;
+  for (int i = 0; i < 10000; ++i) {
+    const double a = yaw(rng);
+    const Eigen::Vector3d origin(ux(rng), uy(rng), i % 4 == 0 ? 0.3 : uz(rng));
+    Compare(reference, grid, origin, {std::cos(a), std::sin(a), 0.0}, i % 2 ? 8.0 : 30.0, &c);
+  }
+  EXPECT_EQ(c.mismatches, 0) << c.first_mismatch;
+  EXPECT_GT(c.hits, 6000);  // the rays do meet geometry
+}
+
+TEST_P(RandomWorldTest, TiltedAndSteepRaysMatchMjRay) {
+  const CompiledWorld w = Compile(RandomWorld(8, 60));
+  GridRayCaster2DOptions options;
+  options.cell_size_m = GetParam();
+  const MujocoRayCaster reference(w.model.get(), w.data.get());
+  const GridRayCaster2D grid(w.model.get(), w.data.get(), options);
+  std::mt19937_64 rng(12);
+  std::uniform_real_distribution<double> ux(-12, 12), uy(-9, 9), uz(0.01, 2.6), yaw(-M_PI, M_PI),
+      pitch(-M_PI / 2, M_PI / 2);
+  std::normal_distribution<double> tilt(0.0, 1e-3);
+  Comparison c;
+  for (int i = 0; i < 4000; ++i) {
+    const double a = yaw(rng);
+    // Even rays: a robot tilted by a few mrad on a bumpy floor; odd rays: anywhere in 3-D.
+    const double p = i % 2 ? pitch(rng) : tilt(rng);
+    const Eigen::Vector3d dir(std::cos(p) * std::cos(a), std::cos(p) * std::sin(a), std::sin(p));
+    Compare(reference, grid, {ux(rng), uy(rng), uz(rng)}, dir, 8.0, &c);
+  }
+  Compare(reference, grid, {1, 1, 2}, {0, 0, -1}, 8.0, &c);  // straight down
+  EXPECT_EQ(c.mismatches, 0) << c.first_mismatch;
+}
+
+INSTANTIATE_TEST_SUITE_P(CellSizes, RandomWorldTest, ::testing::Values(0.13, 0.5, 2.0));
+
+TEST(GridRayCaster2DTest, SeesMovingBodiesWhereTheyAreNow) {
+  CompiledWorld w = Compile(RandomWorld(9, 20));
+  const MujocoRayCaster reference(w.model.get(), w.data.get());
+  const GridRayCaster2D grid(w.model.get(), w.data.get());
+  // Move the crate into the line of a ray after the grid was built.
+  const int crate = mj_name2id(w.model.get(), mjOBJ_BODY, "crate");
+  const int qpos = w.model->jnt_qposadr[w.model->body_jntadr[crate]];
+  w.data->qpos[qpos] = 0.0;
+  w.data->qpos[qpos + 1] = -6.0;
+  w.data->qpos[qpos + 2] = 0.3;
+  mj_forward(w.model.get(), w.data.get());
+  RayHit hit;
+  ASSERT_TRUE(grid.Cast({0, -6.0, 0.3}, {0, 0, 1}, 8.0, &hit));
+  EXPECT_EQ(hit.geom_id, w.Geom("crate"));
+  EXPECT_NEAR(hit.distance_m, 0.3, 1e-12);  // from inside: the exit face, as mj_ray does
+  Comparison c;
+  for (double a = -M_PI; a < M_PI; a += 0.01) {
+    Compare(reference, grid, {0.3, -5.0, 0.3}, {std::cos(a), std::sin(a), 0}, 8.0, &c);
+  }
+  EXPECT_EQ(c.mismatches, 0) << c.first_mismatch;
+}
+
+TEST(GridRayCaster2DTest, OfficeWorldMatchesMjRay) {
+  const std::filesystem::path office =
+      std::filesystem::path(PLYWOOD_SOURCE_ROOT) / "worlds/office.xml";
+  if (!std::filesystem::exists(office)) GTEST_SKIP() << office << " not written yet";
+  CompiledWorld w;
+  w.model = LoadModelFromFile(office.string());
+  w.data.reset(mj_makeData(w.model.get()));
+  mj_forward(w.model.get(), w.data.get());
+  const MujocoRayCaster reference(w.model.get(), w.data.get());
+  const GridRayCaster2D grid(w.model.get(), w.data.get());
+  double lo[2] = {1e9, 1e9}, hi[2] = {-1e9, -1e9};
+  for (int g = 0; g < w.model->ngeom; ++g) {
+    if (w.model->geom_type[g] == mjGEOM_PLANE) continue;
+    for (int k = 0; k < 2; ++k) {
+      lo[k] = std::min(lo[k], w.data->geom_xpos[3 * g + k] - w.model->geom_rbound[g]);
+      hi[k] = std::max(hi[k], w.data->geom_xpos[3 * g + k] + w.model->geom_rbound[g]);
+    }
+  }
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> ux(lo[0], hi[0]), uy(lo[1], hi[1]), uz(0.05, 1.0),
+      yaw(-M_PI, M_PI);
+  Comparison c;
+  for (int i = 0; i < 10000; ++i) {
+    const double a = yaw(rng);
+    const Eigen::Vector3d origin(ux(rng), uy(rng), i % 2 ? 0.3 : uz(rng));
+    Compare(reference, grid, origin, {std::cos(a), std::sin(a), 0.0}, 8.0, &c);
+  }
+  EXPECT_EQ(c.mismatches, 0) << c.first_mismatch;
+}
+
+}  // namespace
+}  // namespace plywood::sim

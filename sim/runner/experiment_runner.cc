@@ -1,0 +1,383 @@
+#include "sim/runner/experiment_runner.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <optional>
+
+#include "robot/control/controller.h"
+#include "robot/odometry/trajectory_metrics.h"
+#include "sim/config/config_error.h"
+#include "sim/config/controller_config.h"
+#include "sim/config/odometry_config.h"
+#include "sim/config/robot_catalog.h"
+#include "sim/raycast/grid_ray_caster_2d.h"
+#include "sim/sensors/sensor_schedule.h"
+#include "sim/world/physical_deviation.h"
+
+namespace plywood::sim {
+namespace {
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+
+// SplitMix64 finaliser: decorrelates nearby seeds.
+std::uint64_t Mix(std::uint64_t z) {
+  z += 0x9e3779b97f4a7c15ULL;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+// A sensor together with its sampling schedule.
+template <typename Sensor>
+struct Scheduled {
+  template <typename... Args>
+  Scheduled(double rate_hz, Args&&... args)
+      : schedule(rate_hz), sensor(std::forward<Args>(args)...) {}
+  SensorSchedule schedule;
+  Sensor sensor;
+};
+
+// The ground-truth segment a beam hit: the first of the hit geom's faces (`candidates`, indices
+// into walls.segments) that the beam's ray crosses (exact, and independent of the range noise).
+int HitSegment(const GroundTruthWalls& walls, const std::vector<int>& candidates,
+               const Eigen::Vector2d& origin_W, const Eigen::Vector2d& dir_W) {
+  int best = -1;
+  double best_t = std::numeric_limits<double>::infinity();
+  for (int i : candidates) {
+    const WallSegment& s = walls.segments[i];
+    // Solve origin + t dir = a + u (b - a) for t >= 0, u in [0, 1].
+    const Eigen::Vector2d ab = s.b - s.a;
+    const double denominator = dir_W.x() * ab.y() - dir_W.y() * ab.x();
+    if (std::abs(denominator) < 1e-12) continue;
+    const Eigen::Vector2d ao = s.a - origin_W;
+    const double t = (ao.x() * ab.y() - ao.y() * ab.x()) / denominator;
+    const double u = (ao.x() * dir_W.y() - ao.y() * dir_W.x()) / denominator;
+    if (t >= 0.0 && u >= -1e-9 && u <= 1.0 + 1e-9 && t < best_t) {
+      best_t = t;
+      best = i;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+std::uint64_t ComponentSeed(std::uint64_t experiment_seed, const std::string& component) {
+  std::uint64_t hash = 0xcbf29ce484222325ULL;  // FNV-1a
+  for (unsigned char c : component) hash = (hash ^ c) * 0x100000001b3ULL;
+  return Mix(experiment_seed ^ Mix(hash));
+}
+
+struct ExperimentRunner::Parts {
+  std::unique_ptr<RayCaster> caster;
+  std::optional<Scheduled<LaserSensor>> laser;
+  std::optional<Scheduled<SonarSensor>> sonar;
+  std::optional<Scheduled<IrRingSensor>> ir_ring;
+  std::optional<Scheduled<IrScannerSensor>> ir_scanner;
+  std::optional<Scheduled<EncoderSensor>> encoders;
+  std::optional<Scheduled<GyroSensor>> gyro;
+  std::optional<Scheduled<BumperSensor>> bumpers;
+  std::unique_ptr<robot::Controller> controller;
+  std::optional<SensorSchedule> control_schedule;
+  SensorSchedule trajectory_schedule{10.0};
+  std::vector<std::unique_ptr<robot::OdometryEstimator>> estimators;
+  // The estimate the controller steers by; null: ground truth.
+  const robot::OdometryEstimator* steering = nullptr;
+  // Latest readings handed to the controller.
+  std::optional<msgs::SonarRing> last_sonar;
+  std::optional<msgs::LaserScan> last_laser;
+  ScanMeasurement scan_scratch;
+  // Indices into RunRecord::walls.segments of each geom's faces, by geom id.
+  std::vector<std::vector<int>> segments_of_geom;
+  long rays_per_laser_scan = 0, rays_per_sonar_ring = 0, rays_per_ir_ring = 0, rays_per_ir_scan = 0;
+};
+
+ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
+    : config_(config), parts_(std::make_unique<Parts>()) {
+  const RobotCatalogEntry& robot_entry = FindRobot(config.robot);
+  SceneOptions scene_options;
+  scene_options.world_mjcf = config.world_path;
+  scene_options.robot_mjcf = robot_entry.mjcf;
+  scene_options.spawn = {config.spawn.x_m, config.spawn.y_m, config.spawn.theta_deg * kDegToRad};
+  scene_options.timestep_s = config.physics.timestep_s;
+  scene_ = std::make_unique<Scene>(scene_options);
+
+  // The as-built drive: the model's own wheels, deviated by E_d and E_b.
+  if (config.deviation.wheel_diameter_ratio != 1.0 || config.deviation.track_ratio != 1.0) {
+    const WheelGeometry built = scene_->wheel_geometry();
+    robot::DiffDriveSpec as_modelled = robot_entry.nominal;
+    as_modelled.wheel_radius_m = (built.left_radius_m + built.right_radius_m) / 2.0;
+    as_modelled.track_m = built.track_m;
+    scene_->SetWheelGeometry(DeviatedWheelGeometry(as_modelled, config.deviation));
+  }
+
+  Parts& p = *parts_;
+  p.caster = std::make_unique<GridRayCaster2D>(scene_->model(), scene_->data());
+  const SensorSuiteConfig& s = config.sensors;
+  const std::uint64_t seed = config.seed;
+  // A sensor the robot cannot carry (no such site) is reported against the experiment file.
+  const auto in_file = [&](const char* sensor, auto make) {
+    try {
+      make();
+    } catch (const ConfigError& e) {
+      throw ConfigError(config.source_file, std::string("sensors.") + sensor,
+                        "robot '" + config.robot + "' cannot carry it: " + e.what());
+    }
+  };
+  if (s.laser) {
+    in_file("laser", [&] {
+      p.laser.emplace(s.laser->rate_hz, *scene_, "laser", *s.laser, ComponentSeed(seed, "laser"));
+    });
+    p.rays_per_laser_scan = s.laser->BeamCount();
+  }
+  if (s.sonar) {
+    in_file("sonar", [&] {
+      p.sonar.emplace(s.sonar->rate_hz, *scene_, SonarSensor::DefaultSiteNames(), *s.sonar,
+                      ComponentSeed(seed, "sonar"));
+    });
+    p.rays_per_sonar_ring = 16L * s.sonar->rays_per_cone;
+  }
+  if (s.ir_ring) {
+    in_file("ir_ring", [&] {
+      p.ir_ring.emplace(s.ir_ring->rate_hz, *scene_, IrRingSensor::DefaultSiteNames(), *s.ir_ring,
+                        ComponentSeed(seed, "ir_ring"));
+    });
+    p.rays_per_ir_ring = 16L * s.ir_ring->rays_per_beam;
+  }
+  if (s.ir_scanner) {
+    in_file("ir_scanner", [&] {
+      p.ir_scanner.emplace(s.ir_scanner->rate_hz, *scene_, "ir_scanner", *s.ir_scanner,
+                           ComponentSeed(seed, "ir_scanner"));
+    });
+    p.rays_per_ir_scan = s.ir_scanner->BeamCount();
+  }
+  if (s.encoders) {
+    p.encoders.emplace(s.encoders->rate_hz, *s.encoders, ComponentSeed(seed, "encoders"));
+  }
+  if (!config.odometry.enabled.empty() && !s.encoders) {
+    throw ConfigError(config.source_file, "odometry",
+                      "odometry estimators need sensors.encoders to be enabled");
+  }
+  for (const std::string& name : config.odometry.enabled) {
+    if (EstimatorNeedsGyro(name) && !s.gyro) {
+      throw ConfigError(config.source_file, "odometry." + name,
+                        "this estimator needs sensors.gyro to be enabled");
+    }
+  }
+  for (auto& [name, estimator] :
+       MakeEstimators(config.odometry, config.nominal, scene_->TruePose())) {
+    record_.estimator_names.push_back(name);
+    if (config.controller.steer_by == name) p.steering = estimator.get();
+    p.estimators.push_back(std::move(estimator));
+  }
+  if (s.gyro) p.gyro.emplace(s.gyro->rate_hz, *s.gyro, ComponentSeed(seed, "gyro"));
+  if (s.bumpers) {
+    in_file("bumpers", [&] { p.bumpers.emplace(s.bumpers->rate_hz, *scene_, *s.bumpers); });
+  }
+  if (config.controller.steer_by != "ground_truth" && p.steering == nullptr) {
+    throw ConfigError(config.source_file, "controller.steer_by",
+                      "expected ground_truth or an estimator enabled under odometry: (which needs "
+                      "sensors.encoders), got '" +
+                          config.controller.steer_by + "'");
+  }
+  try {
+    p.controller = MakeController(config.controller, config.nominal);
+  } catch (const std::invalid_argument& e) {
+    throw ConfigError(config.source_file, "controller", e.what());
+  }
+  if (p.controller) p.control_schedule.emplace(config.controller.rate_hz);
+  p.trajectory_schedule = SensorSchedule(config.output.trajectory_rate_hz);
+
+  GroundTruthOptions truth_options;
+  if (p.laser)
+    truth_options.height_m = scene_->SitePoseInWorld(p.laser->sensor.site_id()).translation().z();
+  record_.walls = ExtractGroundTruthWalls(scene_->model(), truth_options);
+  p.segments_of_geom.resize(scene_->model()->ngeom);
+  for (std::size_t i = 0; i < record_.walls.segments.size(); ++i) {
+    p.segments_of_geom[record_.walls.segments[i].geom_id].push_back(static_cast<int>(i));
+  }
+}
+
+ExperimentRunner::~ExperimentRunner() = default;
+
+const robot::Controller* ExperimentRunner::controller() const { return parts_->controller.get(); }
+
+void ExperimentRunner::SampleSensors() {
+  Parts& p = *parts_;
+  const double t = scene_->time_s();
+  if (p.encoders && p.encoders->schedule.Due(t)) {
+    record_.encoders.push_back(p.encoders->sensor.Sample(*scene_));
+    for (auto& estimator : p.estimators) estimator->AddEncoders(record_.encoders.back());
+  }
+  if (p.gyro && p.gyro->schedule.Due(t)) {
+    record_.gyro.push_back(p.gyro->sensor.Sample(*scene_));
+    for (auto& estimator : p.estimators) estimator->AddGyro(record_.gyro.back());
+  }
+  if (p.bumpers && p.bumpers->schedule.Due(t)) {
+    record_.bumpers.push_back(p.bumpers->sensor.Sample(*scene_));
+  }
+  if (p.laser && p.laser->schedule.Due(t)) {
+    p.laser->sensor.Measure(*scene_, *p.caster, &p.scan_scratch);
+    LaserRecord laser;
+    laser.scan = p.scan_scratch.scan;
+    laser.X_WR_truth = scene_->TruePose();
+    // The log's odometry pose: the steering estimate, else the first estimator, else truth.
+    laser.X_WR_odometry = p.steering             ? p.steering->pose()
+                          : p.estimators.empty() ? laser.X_WR_truth
+                                                 : p.estimators.front()->pose();
+    laser.hit_geom_ids = p.scan_scratch.hit_geom_ids;
+    laser.hit_segment_ids.assign(laser.scan.ranges_m.size(), -1);
+    const Eigen::Vector2d origin_W =
+        scene_->SitePoseInWorld(p.laser->sensor.site_id()).translation().head<2>();
+    const double heading_W = (laser.X_WR_truth * laser.scan.X_RS).theta_rad;
+    for (std::size_t i = 0; i < laser.scan.ranges_m.size(); ++i) {
+      if (laser.hit_geom_ids[i] < 0) continue;
+      const double angle = heading_W + laser.scan.BeamAngleRad(i);
+      laser.hit_segment_ids[i] =
+          HitSegment(record_.walls, p.segments_of_geom[laser.hit_geom_ids[i]], origin_W,
+                     {std::cos(angle), std::sin(angle)});
+    }
+    p.last_laser = laser.scan;
+    record_.laser.push_back(std::move(laser));
+    cost_.rays += p.rays_per_laser_scan;
+  }
+  if (p.sonar && p.sonar->schedule.Due(t)) {
+    record_.sonar.push_back(p.sonar->sensor.Measure(*scene_, *p.caster));
+    p.last_sonar = record_.sonar.back();
+    cost_.rays += p.rays_per_sonar_ring;
+  }
+  if (p.ir_ring && p.ir_ring->schedule.Due(t)) {
+    record_.ir_ring.push_back(p.ir_ring->sensor.Measure(*scene_, *p.caster));
+    cost_.rays += p.rays_per_ir_ring;
+  }
+  if (p.ir_scanner && p.ir_scanner->schedule.Due(t)) {
+    record_.ir_scanner.push_back(p.ir_scanner->sensor.Measure(*scene_, *p.caster).scan);
+    cost_.rays += p.rays_per_ir_scan;
+  }
+}
+
+void ExperimentRunner::Run(const Progress& progress) {
+  Parts& p = *parts_;
+  const auto start = std::chrono::steady_clock::now();
+  const double duration = config_.duration_s;
+  const double dt = scene_->timestep_s();
+  double next_progress_s = 1.0;
+  bool finished = false;
+  const auto record_trajectory = [&] {
+    TrajectorySample sample{scene_->time_s(), scene_->TruePose(), {}};
+    for (const auto& estimator : p.estimators) sample.estimates.push_back(estimator->pose());
+    record_.trajectory.push_back(std::move(sample));
+  };
+  // Step k integrates [k dt, (k+1) dt]; the run covers [0, duration] in whole steps.
+  const long total_steps = std::lround(std::ceil(duration / dt - 1e-9));
+  for (long step = 0; step < total_steps; ++step) {
+    SampleSensors();
+    if (p.controller && p.control_schedule->Due(scene_->time_s())) {
+      robot::ControllerInput input;
+      input.time_s = scene_->time_s();
+      input.X_WR_estimate = p.steering ? p.steering->pose() : scene_->TruePose();
+      input.sonar = p.last_sonar ? &*p.last_sonar : nullptr;
+      input.laser = p.last_laser ? &*p.last_laser : nullptr;
+      input.bumpers = record_.bumpers.empty() ? nullptr : &record_.bumpers.back();
+      scene_->SetWheelSpeeds(p.controller->Update(input));
+      if (p.controller->Finished() && !finished) finished = true;
+    }
+    if (p.trajectory_schedule.Due(scene_->time_s())) record_trajectory();
+    if (finished) break;
+    scene_->Step();
+    ++cost_.steps;
+    const mjData* d = scene_->data();
+    if (d->warning[mjWARN_BADQACC].number > 0 || !std::isfinite(d->qpos[0])) {
+      throw std::runtime_error("physics diverged at t=" + FormatNumber(d->time) + " s (MuJoCo: " +
+                               LastMujocoWarning() + "); try a smaller physics.timestep_s");
+    }
+    if (progress && scene_->time_s() >= next_progress_s) {
+      progress(scene_->time_s() / duration, scene_->time_s());
+      next_progress_s += 1.0;
+    }
+  }
+  // The final state always closes the trajectory, so scores use the true end point.
+  if (record_.trajectory.empty() || record_.trajectory.back().time_s != scene_->time_s()) {
+    SampleSensors();
+    record_trajectory();
+  }
+  cost_.simulated_s = scene_->time_s();
+  cost_.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  record_.metrics.Set("run.controller_finished", finished ? 1.0 : 0.0);
+  Score();
+}
+
+void ExperimentRunner::Score() {
+  Metrics& m = record_.metrics;
+  m.Set("run.seed", static_cast<double>(config_.seed));
+  m.Set("run.simulated_s", scene_->time_s());
+  m.Set("run.steps", static_cast<double>(cost_.steps));
+  m.Set("run.world", config_.world_path.filename().string());
+  m.Set("run.robot", config_.robot);
+
+  std::vector<msgs::Pose2D> truth;
+  for (const auto& sample : record_.trajectory) truth.push_back(sample.truth);
+  const msgs::Pose2D& end = truth.back();
+  m.Set("truth.final_x_m", end.x_m);
+  m.Set("truth.final_y_m", end.y_m);
+  m.Set("truth.final_theta_deg", end.theta_rad / kDegToRad);
+  for (std::size_t e = 0; e < record_.estimator_names.size(); ++e) {
+    std::vector<msgs::Pose2D> estimate;
+    for (const auto& sample : record_.trajectory) estimate.push_back(sample.estimates[e]);
+    const robot::TrajectoryErrors errors = robot::ScoreTrajectory(truth, estimate);
+    const std::string key = "odometry." + record_.estimator_names[e] + ".";
+    m.Set(key + "final_error_m", errors.final_error_m);
+    m.Set(key + "heading_error_deg", errors.heading_error_deg);
+    m.Set(key + "drift_percent", errors.drift_percent);
+    m.Set(key + "ate_rms_m", errors.ate_rms_m);
+  }
+  m.Set("truth.distance_m", robot::ScoreTrajectory(truth, truth).distance_travelled_m);
+
+  if (config_.sensors.laser) {
+    long beams = 0, returns = 0, on_walls = 0;
+    for (const auto& laser : record_.laser) {
+      for (std::size_t i = 0; i < laser.scan.ranges_m.size(); ++i) {
+        ++beams;
+        returns += laser.scan.IsReturn(i);
+        on_walls += laser.hit_segment_ids[i] >= 0;
+      }
+    }
+    m.Set("sensors.laser.scans", static_cast<double>(record_.laser.size()));
+    m.Set("sensors.laser.return_fraction", beams ? static_cast<double>(returns) / beams : 0.0);
+    m.Set("sensors.laser.wall_hit_fraction", beams ? static_cast<double>(on_walls) / beams : 0.0);
+  }
+  const auto score_ring = [&](const char* name, const std::vector<msgs::RangeRing>& rings) {
+    long readings = 0, echoes = 0;
+    for (const auto& ring : rings) {
+      for (const auto& reading : ring.readings) {
+        ++readings;
+        echoes += reading.echo;
+      }
+    }
+    m.Set(std::string("sensors.") + name + ".samples", static_cast<double>(rings.size()));
+    m.Set(std::string("sensors.") + name + ".echo_fraction",
+          readings ? static_cast<double>(echoes) / readings : 0.0);
+  };
+  if (config_.sensors.sonar) score_ring("sonar", record_.sonar);
+  if (config_.sensors.ir_ring) score_ring("ir_ring", record_.ir_ring);
+  if (config_.sensors.ir_scanner) {
+    m.Set("sensors.ir_scanner.scans", static_cast<double>(record_.ir_scanner.size()));
+  }
+  if (config_.sensors.bumpers) {
+    long pressed_samples = 0;
+    for (const auto& b : record_.bumpers) {
+      for (bool pressed : b.pressed) {
+        if (pressed) {
+          ++pressed_samples;
+          break;
+        }
+      }
+    }
+    m.Set("sensors.bumpers.contact_samples", static_cast<double>(pressed_samples));
+  }
+}
+
+}  // namespace plywood::sim

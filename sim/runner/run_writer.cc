@@ -1,0 +1,156 @@
+#include "sim/runner/run_writer.h"
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "perception/logs/carmen_log.h"
+#include "sim/runner/metrics.h"
+
+namespace plywood::sim {
+namespace {
+
+class OutputFile {
+ public:
+  OutputFile(const std::filesystem::path& dir, const std::string& name,
+             std::vector<std::string>* written)
+      : path_(dir / name), out_(path_, std::ios::binary) {
+    if (!out_) throw std::runtime_error(path_.string() + ": cannot write");
+    written->push_back(name);
+  }
+  ~OutputFile() noexcept(false) {
+    out_.flush();
+    if (!out_ && std::uncaught_exceptions() == 0) {
+      throw std::runtime_error(path_.string() + ": write failed");
+    }
+  }
+  std::ostream& out() { return out_; }
+
+ private:
+  std::filesystem::path path_;
+  std::ofstream out_;
+};
+
+std::string N(double value) { return FormatNumber(value); }
+
+void WriteRing(std::ostream& out, const std::vector<msgs::RangeRing>& rings) {
+  // time_s, then one column per transducer: the range, or empty for no echo.
+  out << "time_s";
+  const std::size_t count = rings.empty() ? 0 : rings.front().readings.size();
+  for (std::size_t i = 0; i < count; ++i) out << ",range_" << i << "_m";
+  out << '\n';
+  for (const auto& ring : rings) {
+    out << N(ring.time_s);
+    for (const auto& reading : ring.readings) {
+      out << ',';
+      if (reading.echo) out << N(reading.range_m);
+    }
+    out << '\n';
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const RunRecord& record,
+                                         const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  std::vector<std::string> written;
+  OutputFile(dir, "config.yaml", &written).out() << ExperimentConfigToYaml(config);
+  {
+    OutputFile file(dir, "trajectory.csv", &written);
+    std::ostream& out = file.out();
+    out << "time_s,truth_x_m,truth_y_m,truth_theta_rad";
+    for (const auto& name : record.estimator_names) {
+      out << ',' << name << "_x_m," << name << "_y_m," << name << "_theta_rad";
+    }
+    out << '\n';
+    for (const auto& sample : record.trajectory) {
+      out << N(sample.time_s) << ',' << N(sample.truth.x_m) << ',' << N(sample.truth.y_m) << ','
+          << N(sample.truth.theta_rad);
+      for (const auto& e : sample.estimates) {
+        out << ',' << N(e.x_m) << ',' << N(e.y_m) << ',' << N(e.theta_rad);
+      }
+      out << '\n';
+    }
+  }
+  OutputFile(dir, "metrics.json", &written).out() << record.metrics.ToJson();
+  {
+    OutputFile file(dir, "walls.csv", &written);
+    file.out() << "segment,geom_id,face,ax_m,ay_m,bx_m,by_m\n";
+    for (std::size_t i = 0; i < record.walls.segments.size(); ++i) {
+      const WallSegment& s = record.walls.segments[i];
+      file.out() << i << ',' << s.geom_id << ',' << s.face_index << ',' << N(s.a.x()) << ','
+                 << N(s.a.y()) << ',' << N(s.b.x()) << ',' << N(s.b.y()) << '\n';
+    }
+  }
+  if (!config.output.sensor_logs) return written;
+
+  if (config.sensors.laser) {
+    OutputFile log(dir, "laser.log", &written);
+    OutputFile hits(dir, "laser_hits.csv", &written);
+    log.out()
+        << "# Plywood simulated laser log, CARMEN FLASER format: x y theta is the true laser\n"
+           "# pose, odom_x odom_y odom_theta the encoder-odometry laser pose.\n";
+    if (!record.laser.empty()) {
+      perception::WriteCarmenParam(log.out(), "front_laser_max",
+                                   N(record.laser.front().scan.range_max_m));
+      perception::WriteCarmenParam(log.out(), "robot_frontlaser_offset",
+                                   N(record.laser.front().scan.X_RS.x_m));
+    }
+    hits.out() << "# time_s, then per beam the ground-truth segment it hit (walls.csv), -1 none\n";
+    for (const auto& laser : record.laser) {
+      perception::CarmenLaserRecord carmen;
+      carmen.scan = laser.scan;
+      carmen.X_WL = laser.X_WR_truth * laser.scan.X_RS;
+      carmen.X_WR_odom = laser.X_WR_odometry * laser.scan.X_RS;
+      perception::WriteCarmenLaser(log.out(), carmen);
+      hits.out() << N(laser.scan.time_s);
+      for (int id : laser.hit_segment_ids) hits.out() << ',' << id;
+      hits.out() << '\n';
+    }
+  }
+  if (config.sensors.sonar) WriteRing(OutputFile(dir, "sonar.csv", &written).out(), record.sonar);
+  if (config.sensors.ir_ring) {
+    WriteRing(OutputFile(dir, "ir_ring.csv", &written).out(), record.ir_ring);
+  }
+  if (config.sensors.ir_scanner) {
+    OutputFile file(dir, "ir_scanner.csv", &written);
+    file.out() << "# time_s, angle_min_rad, angle_increment_rad, range_max_m, then ranges_m\n";
+    for (const auto& scan : record.ir_scanner) {
+      file.out() << N(scan.time_s) << ',' << N(scan.angle_min_rad) << ','
+                 << N(scan.angle_increment_rad) << ',' << N(scan.range_max_m);
+      for (double r : scan.ranges_m) file.out() << ',' << N(r);
+      file.out() << '\n';
+    }
+  }
+  if (config.sensors.encoders) {
+    OutputFile file(dir, "encoders.csv", &written);
+    file.out() << "time_s,left_ticks,right_ticks\n";
+    for (const auto& e : record.encoders) {
+      file.out() << N(e.time_s) << ',' << e.left_ticks << ',' << e.right_ticks << '\n';
+    }
+  }
+  if (config.sensors.gyro) {
+    OutputFile file(dir, "gyro.csv", &written);
+    file.out() << "time_s,yaw_rate_rad_s\n";
+    for (const auto& g : record.gyro)
+      file.out() << N(g.time_s) << ',' << N(g.yaw_rate_rad_s) << '\n';
+  }
+  if (config.sensors.bumpers) {
+    OutputFile file(dir, "bumpers.csv", &written);
+    file.out() << "time_s,pressed_panels\n";
+    for (const auto& b : record.bumpers) {
+      file.out() << N(b.time_s) << ',';
+      bool first = true;
+      for (std::size_t i = 0; i < b.pressed.size(); ++i) {
+        if (!b.pressed[i]) continue;
+        file.out() << (first ? "" : " ") << i;
+        first = false;
+      }
+      file.out() << '\n';
+    }
+  }
+  return written;
+}
+
+}  // namespace plywood::sim

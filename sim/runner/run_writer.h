@@ -1,0 +1,20 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "sim/config/experiment_config.h"
+#include "sim/runner/experiment_runner.h"
+
+namespace plywood::sim {
+
+// Writes a finished run to `dir` (created if needed) in the formats of docs/run_outputs.md:
+// config.yaml, trajectory.csv, metrics.json, walls.csv, and with output.sensor_logs laser.log
+// (CARMEN FLASER), laser_hits.csv, sonar.csv, ir_ring.csv, ir_scanner.csv, encoders.csv, gyro.csv,
+// bumpers.csv. Numbers are written in shortest round-trip form, so equal runs give equal bytes.
+// Returns the names of the files written. @throws std::runtime_error naming a file it cannot write.
+std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const RunRecord& record,
+                                         const std::filesystem::path& dir);
+
+}  // namespace plywood::sim

@@ -1,0 +1,52 @@
+#include "sim/sensors/planar_scan.h"
+
+#include <Eigen/Geometry>
+#include <numbers>
+
+#include "sim/sensors/planar_fan.h"
+
+namespace plywood::sim {
+namespace {
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+
+}  // namespace
+
+PlanarScan::PlanarScan(const Scene& scene, const std::string& site_name, const std::string& sensor,
+                       double angle_min_deg, double angle_increment_deg, int beam_count)
+    : site_(RequireSensorSite(scene, site_name, sensor)),
+      angle_min_rad_(angle_min_deg * kDegToRad),
+      angle_increment_rad_(angle_increment_deg * kDegToRad),
+      dirs_S_(PlanarDirections(EvenAnglesRad(angle_min_deg, angle_increment_deg, beam_count))) {}
+
+void PlanarScan::Cast(const Scene& scene, const RayCaster& caster, double range_min_m,
+                      double range_max_m, ScanMeasurement* out) const {
+  const int n = beam_count();
+  msgs::LaserScan& scan = out->scan;
+  scan.time_s = scene.time_s();
+  scan.angle_min_rad = angle_min_rad_;
+  scan.angle_increment_rad = angle_increment_rad_;
+  scan.range_min_m = range_min_m;
+  scan.range_max_m = range_max_m;
+  scan.X_RS = site_.X_RS;
+  scan.ranges_m.resize(n);
+  out->hit_geom_ids.resize(n);
+
+  const Eigen::Isometry3d X_WS = scene.SitePoseInWorld(site_.id);
+  const Eigen::Matrix3d R_WS = X_WS.linear();
+  const Eigen::Vector3d p_WS = X_WS.translation();
+  double* ranges_m = scan.ranges_m.data();
+  int* geom_ids = out->hit_geom_ids.data();
+  RayHit hit;
+  for (int i = 0; i < n; ++i) {
+    if (caster.Cast(p_WS, R_WS * dirs_S_[i], range_max_m, &hit) && hit.distance_m < range_max_m) {
+      ranges_m[i] = hit.distance_m;
+      geom_ids[i] = hit.geom_id;
+    } else {
+      ranges_m[i] = range_max_m;
+      geom_ids[i] = -1;
+    }
+  }
+}
+
+}  // namespace plywood::sim

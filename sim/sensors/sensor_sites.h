@@ -1,0 +1,31 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "msgs/pose2d.h"
+#include "sim/world/scene.h"
+
+namespace plywood::sim {
+
+// Where a sensor is mounted: a site on the robot's base body.
+struct SensorSite {
+  int id = -1;        // MuJoCo site id
+  msgs::Pose2D X_RS;  // planar pose of the site S in the robot frame R
+};
+
+// Looks `site_name` up on the scene's robot; `sensor` names who needs it ("the laser").
+// @throws ConfigError "<robot file>: <site_name>: no such site on the robot; <sensor> needs it".
+SensorSite RequireSensorSite(const Scene& scene, const std::string& site_name,
+                             const std::string& sensor);
+
+// RequireSensorSite for every name, in order.
+// @throws std::invalid_argument for an empty `site_names`; ConfigError for the first missing site.
+std::vector<SensorSite> RequireSensorSites(const Scene& scene,
+                                           const std::vector<std::string>& site_names,
+                                           const std::string& sensor);
+
+// prefix + "0" .. prefix + (count - 1): a ring's default sites ("sonar_0" .. "sonar_15").
+std::vector<std::string> NumberedSiteNames(const std::string& prefix, int count);
+
+}  // namespace plywood::sim

@@ -1,0 +1,150 @@
+#include "sim/sensors/sonar_sensor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "sim/config/require_field.h"
+#include "sim/sensors/planar_fan.h"
+
+namespace plywood::sim {
+namespace {
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// Bounce rays start at least this far off the surface so they do not hit it again.
+constexpr double kSurfaceOffsetM = 1e-6;
+
+}  // namespace
+
+void SonarOptions::Validate() const {
+  RequireField(std::isfinite(beam_half_angle_deg) && beam_half_angle_deg >= 0.0 &&
+                   beam_half_angle_deg < 90.0,
+               "beam_half_angle_deg", "must be in [0, 90)", beam_half_angle_deg);
+  RequireField(rays_per_cone >= 1 && rays_per_cone <= 1000, "rays_per_cone", "must be in [1, 1000]",
+               rays_per_cone);
+  RequireField(std::isfinite(incidence_limit_deg) && incidence_limit_deg >= 0.0 &&
+                   incidence_limit_deg <= 90.0,
+               "incidence_limit_deg", "must be in [0, 90]", incidence_limit_deg);
+  RequireField(std::isfinite(range_max_m) && range_max_m > 0.0, "range_max_m", "must be > 0",
+               range_max_m);
+  RequireField(std::isfinite(range_min_m) && range_min_m >= 0.0 && range_min_m < range_max_m,
+               "range_min_m", "must be in [0, range_max_m)", range_min_m);
+  RequireField(std::isfinite(range_noise_fraction) && range_noise_fraction >= 0.0,
+               "range_noise_fraction", "must be >= 0", range_noise_fraction);
+  RequireField(std::isfinite(rate_hz) && rate_hz > 0.0, "rate_hz", "must be > 0", rate_hz);
+}
+
+std::vector<std::string> SonarSensor::DefaultSiteNames() { return NumberedSiteNames("sonar_", 16); }
+
+SonarSensor::SonarSensor(const Scene& scene, const std::vector<std::string>& site_names,
+                         const SonarOptions& options, std::uint64_t seed)
+    : options_((options.Validate(), options)),
+      sites_(RequireSensorSites(scene, site_names, "the sonar ring")),
+      rng_(seed) {
+  // Centre-out order, so the first ray that hits is the central-most one (the multipath bounce).
+  std::vector<double> angles_rad =
+      SymmetricFanAnglesRad(options_.beam_half_angle_deg, options_.rays_per_cone);
+  std::stable_sort(angles_rad.begin(), angles_rad.end(),
+                   [](double a, double b) { return std::abs(a) < std::abs(b) - 1e-12; });
+  dirs_S_ = PlanarDirections(angles_rad);
+  cos_incidence_limit_ = std::cos(options_.incidence_limit_deg * kDegToRad);
+  cos_half_angle_ = std::cos(options_.beam_half_angle_deg * kDegToRad);
+}
+
+msgs::RangeRing SonarSensor::Measure(const Scene& scene, const RayCaster& caster) {
+  msgs::RangeRing out;
+  Measure(scene, caster, &out);
+  return out;
+}
+
+void SonarSensor::Measure(const Scene& scene, const RayCaster& caster, msgs::RangeRing* out) {
+  out->time_s = scene.time_s();
+  out->range_min_m = options_.range_min_m;
+  out->range_max_m = options_.range_max_m;
+  out->readings.resize(sites_.size());
+  std::normal_distribution<double> unit_noise(0.0, 1.0);
+  for (std::size_t k = 0; k < sites_.size(); ++k) {
+    msgs::RangeReading& reading = out->readings[k];
+    reading.X_RS = sites_[k].X_RS;
+    double range_m = EchoRange(scene.SitePoseInWorld(sites_[k].id), caster);
+    if (range_m >= 0.0 && !options_.noise_free) {
+      range_m += options_.range_noise_fraction * range_m * unit_noise(rng_);
+    }
+    reading.echo = range_m >= 0.0 && range_m < options_.range_max_m;
+    reading.range_m = reading.echo ? std::max(range_m, options_.range_min_m) : 0.0;
+  }
+}
+
+double SonarSensor::EchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& caster) const {
+  const Eigen::Matrix3d R_WS = X_WS.linear();
+  const Eigen::Vector3d p_WS = X_WS.translation();
+  const double range_max_m = options_.range_max_m;
+  const bool need_bounce = options_.corner_echoes || options_.multipath;
+
+  double best_m = kInf;
+  double multipath_m = kInf;  // the central-most hitting ray's bounce
+  bool central_seen = false;
+  double foot_m = kInf;  // nearest perpendicular foot of a hit plane that lies inside the beam
+  Eigen::Vector3d foot_dir_S = Eigen::Vector3d::UnitX();
+  RayHit hit, hit2;
+  for (const Eigen::Vector3d& dir_S : dirs_S_) {
+    const Eigen::Vector3d dir_W = R_WS * dir_S;
+    if (!caster.Cast(p_WS, dir_W, range_max_m, &hit) || hit.distance_m >= range_max_m) continue;
+    const bool is_central = !central_seen;
+    central_seen = true;
+    const Eigen::Vector3d& n_W = hit.normal_W;
+    const double cos_incidence = -dir_W.dot(n_W);
+
+    // Where, within the fan's plane, the hit surface's plane comes nearest.
+    const Eigen::Vector3d n_S = R_WS.transpose() * n_W;
+    const double foot_len = std::hypot(n_S.x(), n_S.y());
+    if (foot_len > 1e-9 && -n_S.x() / foot_len >= cos_half_angle_) {
+      const double t = hit.distance_m * cos_incidence / foot_len;
+      if (t < foot_m) {
+        foot_m = t;
+        foot_dir_S = Eigen::Vector3d(-n_S.x() / foot_len, -n_S.y() / foot_len, 0.0);
+      }
+    }
+
+    if (cos_incidence >= cos_incidence_limit_) {
+      best_m = std::min(best_m, hit.distance_m);
+      continue;
+    }
+    // An oblique hit: the only way back is a second reflection. The round trip is at least 2 d1.
+    if (!need_bounce || (hit.distance_m >= best_m && !(is_central && options_.multipath))) {
+      continue;
+    }
+    const Eigen::Vector3d p1_W = p_WS + hit.distance_m * dir_W;
+    const Eigen::Vector3d r1_W = dir_W - 2.0 * dir_W.dot(n_W) * n_W;
+    // Start the bounce a little way along its own line, so d2 stays exact.
+    const double skip_m = std::min(1e-3, kSurfaceOffsetM / std::max(cos_incidence, 1e-6));
+    if (!caster.Cast(p1_W + skip_m * r1_W, r1_W, 2.0 * range_max_m - hit.distance_m, &hit2)) {
+      continue;
+    }
+    const double d2_m = skip_m + hit2.distance_m;
+    const Eigen::Vector3d p2_W = p1_W + d2_m * r1_W;
+    const Eigen::Vector3d back_W = p_WS - p2_W;
+    const double back_m = back_W.norm();
+    const double path_m = (hit.distance_m + d2_m + back_m) / 2.0;
+    if (is_central) multipath_m = path_m;
+    if (options_.corner_echoes && back_m > 0.0) {
+      const Eigen::Vector3d r2_W = r1_W - 2.0 * r1_W.dot(hit2.normal_W) * hit2.normal_W;
+      if (r2_W.dot(back_W) >= cos_half_angle_ * back_m) best_m = std::min(best_m, path_m);
+    }
+  }
+
+  if (foot_m < best_m) {
+    const Eigen::Vector3d dir_W = R_WS * foot_dir_S;
+    if (caster.Cast(p_WS, dir_W, range_max_m, &hit) && hit.distance_m < range_max_m &&
+        -dir_W.dot(hit.normal_W) >= cos_incidence_limit_) {
+      best_m = std::min(best_m, hit.distance_m);
+    }
+  }
+  if (best_m < range_max_m) return best_m;
+  if (options_.multipath && multipath_m < range_max_m) return multipath_m;
+  return -1.0;
+}
+
+}  // namespace plywood::sim

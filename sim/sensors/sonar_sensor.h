@@ -1,0 +1,86 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "msgs/range_ring.h"
+#include "sim/raycast/ray_caster.h"
+#include "sim/sensors/sensor_sites.h"
+#include "sim/world/scene.h"
+
+namespace plywood::sim {
+
+// A ring of Polaroid 6500-class ultrasonic transducers. Each transducer's beam is a horizontal fan
+// of rays_per_cone rays spread evenly over +-beam_half_angle_deg (inclusive); the reading is the
+// range of the nearest surface point that sends an echo back:
+//  - a direct echo from a ray whose incidence angle (between the reversed ray and the surface
+//    normal) is at most incidence_limit_deg: smooth plywood reflects specularly, so oblique hits
+//    scatter nothing back (Leonard & Durrant-Whyte 1992; Kuc & Siegel 1987);
+//  - a plane's perpendicular foot when it lies inside the beam: a wall whose normal is in the beam
+//    echoes from its nearest point (a "region of constant depth"), so one extra ray is cast there
+//    and the reading of a tilted wall does not depend on where the fan's rays happen to fall;
+//  - a corner echo (corner_echoes): an oblique ray reflected once more by a second surface that
+//    comes back towards the transducer (within the beam half-angle) is heard at half the path
+//    length (d1 + d2 + |p2 - sensor|) / 2; concave corners are the sonar's strongest targets;
+//  - if nothing echoes, a specular miss: echo = false, unless `multipath` is on, when the
+//    central-most hitting ray's single specular bounce is reported as a long reading
+//    (d1 + d2 + |p2 - sensor|) / 2 whatever its direction, if that is below range_max_m.
+// Readings closer than range_min_m (the receiver's blanking time) are reported as range_min_m, the
+// safe side for obstacle avoidance. Noise is Gaussian with sigma = range_noise_fraction * range.
+// All transducers fire at one instant per sample: no firing order and no cross-talk.
+struct SonarOptions {
+  double beam_half_angle_deg = 15.0;  // Polaroid 6500: about 30 deg full opening
+  int rays_per_cone = 7;              // odd counts include the axis
+  // Not published for plywood; with the 15 deg half-angle a smooth wall stays visible while the
+  // transducer axis is within about 35 deg of its normal, which is what Pioneer users see.
+  double incidence_limit_deg = 20.0;
+  bool corner_echoes = true;
+  bool multipath = false;
+  double range_min_m = 0.15;
+  double range_max_m = 5.0;
+  double range_noise_fraction = 0.01;
+  bool noise_free = false;
+  // The P3-DX fires its two banks of 8 transducers in parallel at 40 ms per transducer: a whole
+  // ring every 320 ms.
+  double rate_hz = 3.125;
+
+  // @throws std::invalid_argument whose message starts with the offending field's name.
+  void Validate() const;
+};
+
+class SonarSensor {
+ public:
+  // "sonar_0" .. "sonar_15", the ring every Plywood robot carries.
+  static std::vector<std::string> DefaultSiteNames();
+
+  // @throws ConfigError naming the robot and the first missing site;
+  //         std::invalid_argument from options.Validate() or for an empty `site_names`.
+  SonarSensor(const Scene& scene, const std::vector<std::string>& site_names,
+              const SonarOptions& options, std::uint64_t seed);
+
+  SonarSensor(const SonarSensor&) = delete;
+  SonarSensor& operator=(const SonarSensor&) = delete;
+
+  // One reading per site, in the order of `site_names`, stamped with scene.time_s(). The overload
+  // with `out` reuses its buffers.
+  msgs::RangeRing Measure(const Scene& scene, const RayCaster& caster);
+  void Measure(const Scene& scene, const RayCaster& caster, msgs::RangeRing* out);
+
+  const SonarOptions& options() const { return options_; }
+
+ private:
+  // The noise-free echo range of one transducer, or a negative value for no echo.
+  double EchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& caster) const;
+
+  const SonarOptions options_;
+  const std::vector<SensorSite> sites_;
+  std::vector<Eigen::Vector3d> dirs_S_;  // fan directions in the site frame, centre-out
+  double cos_incidence_limit_ = 0.0;
+  double cos_half_angle_ = 0.0;
+  std::mt19937_64 rng_;
+};
+
+}  // namespace plywood::sim

@@ -1,0 +1,238 @@
+#include "sim/sensors/sonar_sensor.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sim/config/config_error.h"
+#include "sim/raycast/mujoco_ray_caster.h"
+#include "sim/world/scene.h"
+#include "tests/support/options_test_support.h"
+#include "tests/support/sample_stats.h"
+#include "tests/support/sensor_test_support.h"
+
+namespace plywood::sim {
+namespace {
+
+using plywood::testing::ExpectInvalidField;
+using plywood::testing::FloorWorld;
+using plywood::testing::Rectangle;
+using plywood::testing::RobotIn;
+using plywood::testing::RoomSegments;
+using plywood::testing::RoomWorld;
+using plywood::testing::SampleStats;
+using plywood::testing::Segment;
+using plywood::testing::SegmentCaster;
+using plywood::testing::ToWorld;
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// One transducer (sonar_0) of a P3-DX facing a configurable set of walls given in its own frame.
+class SonarGeometryTest : public ::testing::Test {
+ protected:
+  SonarGeometryTest()
+      : scene_(RobotIn("p3dx", FloorWorld("sonar_geometry"), {0.5, -0.2, 25.0 * kDeg})),
+        X_WS_(scene_.SitePoseInWorld(*scene_.FindSite("sonar_0"))) {
+    options_.noise_free = true;
+  }
+
+  // A wall through (x, y) in the sensor frame whose normal (towards the sensor) points at
+  // 180 + normal_offset_deg, i.e. the axis is normal_offset_deg off the wall's normal.
+  Segment Wall(double x, double y, double normal_offset_deg, double half_length, int id) const {
+    const double t = (90.0 + normal_offset_deg) * kDeg;
+    return {ToWorld(X_WS_, x - half_length * std::cos(t), y - half_length * std::sin(t)),
+            ToWorld(X_WS_, x + half_length * std::cos(t), y + half_length * std::sin(t)), id};
+  }
+  Segment Seg(double x0, double y0, double x1, double y1, int id) const {
+    return {ToWorld(X_WS_, x0, y0), ToWorld(X_WS_, x1, y1), id};
+  }
+
+  msgs::RangeReading Read(const std::vector<Segment>& walls) {
+    SonarSensor sonar(scene_, {"sonar_0"}, options_, 1);
+    const msgs::RangeRing ring = sonar.Measure(scene_, SegmentCaster(walls));
+    EXPECT_EQ(ring.readings.size(), 1u);
+    return ring.readings.at(0);
+  }
+
+  Scene scene_;
+  Eigen::Isometry3d X_WS_;
+  SonarOptions options_;
+};
+
+TEST_F(SonarGeometryTest, PerpendicularWallEchoesAtItsDistance) {
+  const msgs::RangeReading r = Read({Wall(2.0, 0.0, 0.0, 3.0, 1)});
+  ASSERT_TRUE(r.echo);
+  EXPECT_NEAR(r.range_m, 2.0, 1e-9);
+  EXPECT_NEAR(r.X_RS.theta_rad, 90.0 * kDeg, 1e-9);  // sonar_0 looks left on the P3-DX
+}
+
+TEST_F(SonarGeometryTest, TiltedWallWithNormalInsideTheBeamEchoesFromItsNearestPoint) {
+  // 12 deg off the normal falls between the fan's rays (0, 5, 10, 15 deg): the echo still comes
+  // from the perpendicular foot at 2 m, not from the nearest ray (2 / cos 2 deg).
+  const double t = 12.0 * kDeg;
+  const msgs::RangeReading r = Read({Wall(2.0 * std::cos(t), 2.0 * std::sin(t), 12.0, 3.0, 1)});
+  ASSERT_TRUE(r.echo);
+  EXPECT_NEAR(r.range_m, 2.0, 1e-9);
+}
+
+TEST_F(SonarGeometryTest, ObliqueWallEchoesOnlyWithinTheIncidenceLimit) {
+  // Wall normal 34 deg off the axis: the edge ray (15 deg) meets it at 19 deg <= 20 deg.
+  const auto wall_at = [&](double offset_deg) {
+    const double t = offset_deg * kDeg;
+    return Wall(2.0 * std::cos(t), 2.0 * std::sin(t), offset_deg, 6.0, 1);
+  };
+  msgs::RangeReading r = Read({wall_at(34.0)});
+  ASSERT_TRUE(r.echo);
+  EXPECT_NEAR(r.range_m, 2.0 / std::cos(19.0 * kDeg), 1e-9);
+  // 40 deg: the best ray meets it at 25 deg: a specular miss.
+  r = Read({wall_at(40.0)});
+  EXPECT_FALSE(r.echo);
+}
+
+// A 90 deg concave corner straight ahead at 2 m, walls at +-45 deg to the axis; 6 rays at
+// +-3, +-9, +-15 deg so none hits the apex itself.
+class SonarCornerTest : public SonarGeometryTest {
+ protected:
+  std::vector<Segment> Corner() const {
+    return {Seg(2.0, 0.0, 0.0, 2.0, 1), Seg(2.0, 0.0, 0.0, -2.0, 2)};
+  }
+  static constexpr double kD = 2.0;
+};
+
+TEST_F(SonarCornerTest, CornerEchoComesBackAtAboutTheCornerDistance) {
+  options_.rays_per_cone = 6;
+  // Ray at angle a meets the wall x + y = D at t1 = D / (cos a + sin a), bounces to the other wall
+  // (the unfolded path is D / (cos a - sin a)) and returns antiparallel; the echo is heard at half
+  // of d1 + d2 + |p2|. The nearest comes from a = 3 deg.
+  const double a = 3.0 * kDeg, c = std::cos(a), s = std::sin(a);
+  const double t1 = kD / (c + s), unfolded = kD / (c - s);
+  const Eigen::Vector2d p2 = t1 * Eigen::Vector2d(c, s) + (unfolded - t1) * Eigen::Vector2d(-s, -c);
+  const double expected = (unfolded + p2.norm()) / 2.0;
+  EXPECT_NEAR(expected, 2.0031, 1e-4);  // hand value for D = 2
+  msgs::RangeReading r = Read(Corner());
+  ASSERT_TRUE(r.echo);
+  EXPECT_NEAR(r.range_m, expected, 1e-9);
+
+  options_.corner_echoes = false;  // walls at >= 30 deg incidence: nothing comes back
+  EXPECT_FALSE(Read(Corner()).echo);
+}
+
+TEST_F(SonarCornerTest, WithAWideIncidenceLimitTheNearestEchoingRayWins) {
+  options_.rays_per_cone = 6;
+  options_.incidence_limit_deg = 40.0;  // the 9 and 15 deg rays (36 and 30 deg incidence) echo
+  options_.corner_echoes = false;
+  const msgs::RangeReading r = Read(Corner());
+  ASSERT_TRUE(r.echo);
+  EXPECT_NEAR(r.range_m, kD / (std::cos(15.0 * kDeg) + std::sin(15.0 * kDeg)), 1e-9);
+}
+
+TEST_F(SonarCornerTest, CornerInsideTheBeamBesideAPerpendicularWallGivesTheNearestRange) {
+  // Wall x = 2 meets the wall y = 0.3 at (2, 0.3), 8.5 deg off the axis; rays beyond it graze
+  // y = 0.3 at >= 75 deg, and their corner echoes come from farther than 2 m.
+  const msgs::RangeReading r = Read({Seg(2.0, -3.0, 2.0, 0.3, 1), Seg(0.5, 0.3, 2.0, 0.3, 2)});
+  ASSERT_TRUE(r.echo);
+  EXPECT_NEAR(r.range_m, 2.0, 1e-9);
+}
+
+TEST_F(SonarGeometryTest, MultipathGivesALongReadingAfterASpecularMiss) {
+  // W1 through (2, 0) with normal (-cos 60, sin 60): the axis meets it at 60 deg, every ray at
+  // >= 45 deg. The central ray reflects to heading 60 deg and meets the wall y = 1.5 after
+  // d2 = 1.5 / sin 60 at p2 = (2 + d2 / 2, 1.5).
+  const double r3 = std::sqrt(3.0);
+  const std::vector<Segment> walls = {Seg(2.0 - 3.0 * r3 / 2.0, -1.5, 2.0 + 3.0 * r3 / 2.0, 1.5, 1),
+                                      Seg(1.0, 1.5, 4.0, 1.5, 2)};
+  EXPECT_FALSE(Read(walls).echo);
+  options_.multipath = true;
+  const double d2 = 1.5 / std::sin(60.0 * kDeg);
+  const double expected = (2.0 + d2 + std::hypot(2.0 + d2 / 2.0, 1.5)) / 2.0;
+  EXPECT_NEAR(expected, 3.4834, 1e-4);
+  const msgs::RangeReading r = Read(walls);
+  ASSERT_TRUE(r.echo);
+  EXPECT_NEAR(r.range_m, expected, 1e-9);
+}
+
+TEST_F(SonarGeometryTest, RangeLimits) {
+  msgs::RangeReading r = Read({Wall(0.1, 0.0, 0.0, 1.0, 1)});
+  ASSERT_TRUE(r.echo);
+  EXPECT_EQ(r.range_m, 0.15);  // inside the blanking distance: reported as range_min_m
+  EXPECT_FALSE(Read({Wall(5.5, 0.0, 0.0, 3.0, 1)}).echo);
+  EXPECT_FALSE(Read({}).echo);
+}
+
+TEST(SonarSensorTest, NoiseIsOnePercentOfRangeAndZeroMean) {
+  Scene scene(RobotIn("p3dx", FloorWorld("sonar_noise"), {0.2, 0.1, 10.0 * kDeg}));
+  // A 4 x 3 m box around the robot.
+  const SegmentCaster caster(RoomSegments({-1.8, 2.2, -1.4, 1.6}));
+  SonarOptions options;
+  SonarOptions exact = options;
+  exact.noise_free = true;
+  SonarSensor noisy(scene, SonarSensor::DefaultSiteNames(), options, 9);
+  SonarSensor clean(scene, SonarSensor::DefaultSiteNames(), exact, 1);
+  const msgs::RangeRing truth = clean.Measure(scene, caster);
+  SampleStats stats;
+  while (stats.count() < 20000) {
+    const msgs::RangeRing ring = noisy.Measure(scene, caster);
+    ASSERT_EQ(ring.readings.size(), 16u);
+    for (std::size_t k = 0; k < 16; ++k) {
+      if (!truth.readings[k].echo) continue;
+      ASSERT_TRUE(ring.readings[k].echo);
+      const double z = (ring.readings[k].range_m - truth.readings[k].range_m) /
+                       (0.01 * truth.readings[k].range_m);
+      stats.Add(z);
+    }
+  }
+  const double mean = stats.Mean(), sigma = stats.Sigma();
+  EXPECT_LT(std::abs(mean), 0.05);
+  EXPECT_NEAR(sigma, 1.0, 0.05);
+}
+
+TEST(SonarSensorTest, MissingSiteIsAConfigErrorNamingTheSite) {
+  Scene scene(RobotIn("p3dx", FloorWorld("sonar_missing"), {}));
+  try {
+    SonarSensor sonar(scene, {"sonar_0", "sonar_16"}, SonarOptions{}, 1);
+    FAIL() << "no ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("sonar_16"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SonarOptionsTest, ValidateNamesTheField) {
+  EXPECT_NO_THROW(SonarOptions{}.Validate());
+  ExpectInvalidField(SonarOptions{.beam_half_angle_deg = 95.0}, "beam_half_angle_deg");
+  ExpectInvalidField(SonarOptions{.rays_per_cone = 0}, "rays_per_cone");
+  ExpectInvalidField(SonarOptions{.incidence_limit_deg = -1.0}, "incidence_limit_deg");
+  ExpectInvalidField(SonarOptions{.range_min_m = 6.0}, "range_min_m");
+  ExpectInvalidField(SonarOptions{.range_max_m = 0.0}, "range_max_m");
+  ExpectInvalidField(SonarOptions{.range_noise_fraction = -0.01}, "range_noise_fraction");
+  ExpectInvalidField(SonarOptions{.rate_hz = 0.0}, "rate_hz");
+}
+
+// The P3-DX in a real MuJoCo room: interior [-2, 3] x [-1.5, 2.5], optionally rotated.
+TEST(SonarSensorSceneTest, SideSonarsReadTheWallsTheyFaceInAxisAlignedAndRotatedRooms) {
+  for (const double yaw_deg : {0.0, 30.0}) {
+    const double yaw = yaw_deg * kDeg;
+    const auto world = RoomWorld("sonar_room_" + std::to_string(int(yaw_deg)),
+                                 Rectangle{-2.0, 3.0, -1.5, 2.5}, yaw);
+    const msgs::Pose2D X_room_R{0.3, 0.4, 0.0};
+    const Scene scene(RobotIn("p3dx", world, msgs::Pose2D{0.0, 0.0, yaw} * X_room_R));
+    const MujocoRayCaster caster(scene.model(), scene.data());
+    SonarOptions options;
+    options.noise_free = true;
+    SonarSensor sonar(scene, {"sonar_0", "sonar_7", "sonar_15"}, options, 1);
+    const msgs::RangeRing ring = sonar.Measure(scene, caster);
+    // sonar_0 (0.069, 0.136) and sonar_15 (-0.157, 0.136) face +y; sonar_7 (0.069, -0.136) faces
+    // -y.
+    ASSERT_TRUE(ring.readings[0].echo && ring.readings[1].echo && ring.readings[2].echo);
+    EXPECT_NEAR(ring.readings[0].range_m, 2.5 - 0.4 - 0.136, 1e-6);
+    EXPECT_NEAR(ring.readings[1].range_m, 1.5 + 0.4 - 0.136, 1e-6);
+    EXPECT_NEAR(ring.readings[2].range_m, 2.5 - 0.4 - 0.136, 1e-6);
+  }
+}
+
+}  // namespace
+}  // namespace plywood::sim

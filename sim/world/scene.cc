@@ -1,0 +1,179 @@
+#include "sim/world/scene.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "sim/config/config_error.h"
+#include "sim/world/contact_filter.h"
+
+namespace plywood::sim {
+namespace {
+
+int RequireId(const mjModel* m, mjtObj type, const std::string& name, const std::string& robot) {
+  const int id = mj_name2id(m, type, name.c_str());
+  if (id < 0) {
+    throw ConfigError(robot, name, "the robot model must define this (see models/README.md)");
+  }
+  return id;
+}
+
+// Distance from a geom's centre to its farthest point, as the compiler computes it for
+// broad-phase culling; must follow any change of a geom's size.
+double CylinderBoundingRadius(double radius, double half_length) {
+  return std::sqrt(radius * radius + half_length * half_length);
+}
+
+}  // namespace
+
+std::string ComposeSceneMjcf(const std::filesystem::path& world,
+                             const std::filesystem::path& robot) {
+  // The composed file "lives" in the world's folder so the world's own relative includes, meshes
+  // and textures resolve as they would if the user loaded it directly.
+  const std::filesystem::path robot_relative =
+      std::filesystem::relative(robot, world.parent_path());
+  return "<mujoco model=\"plywood_scene\">\n  <include file=\"" + world.filename().string() +
+         "\"/>\n  <include file=\"" + robot_relative.string() + "\"/>\n</mujoco>\n";
+}
+
+Scene::Scene(const SceneOptions& options) : options_(options) {
+  namespace fs = std::filesystem;
+  for (const auto& [path, field] :
+       {std::pair{options.world_mjcf, "world"}, std::pair{options.robot_mjcf, "robot"}}) {
+    if (!fs::is_regular_file(path)) {
+      throw ConfigError(path.string(), "", std::string("no such ") + field + " MJCF file");
+    }
+  }
+  const fs::path world = fs::absolute(options.world_mjcf).lexically_normal();
+  const fs::path robot = fs::absolute(options.robot_mjcf).lexically_normal();
+  try {
+    model_ = LoadModelFromString(ComposeSceneMjcf(world, robot),
+                                 (world.parent_path() / "__plywood_scene__.xml").string());
+  } catch (const std::exception& e) {
+    throw ConfigError(options.world_mjcf.string(), "",
+                      std::string("does not compile with robot ") + options.robot_mjcf.string() +
+                          ": " + e.what());
+  }
+  if (!(options.timestep_s > 0.0) || !std::isfinite(options.timestep_s)) {
+    throw std::invalid_argument("timestep_s: must be a finite number > 0");
+  }
+  model_->opt.timestep = options.timestep_s;
+
+  const std::string robot_name = options.robot_mjcf.string();
+  base_body_ = RequireId(model_.get(), mjOBJ_BODY, "base", robot_name);
+  const int free_joint = model_->body_jntadr[base_body_];
+  if (free_joint < 0 || model_->jnt_type[free_joint] != mjJNT_FREE) {
+    throw ConfigError(robot_name, "base", "the base body must carry a free joint");
+  }
+  base_qpos_ = model_->jnt_qposadr[free_joint];
+  const int left_joint = RequireId(model_.get(), mjOBJ_JOINT, "left_wheel", robot_name);
+  const int right_joint = RequireId(model_.get(), mjOBJ_JOINT, "right_wheel", robot_name);
+  left_wheel_qpos_ = model_->jnt_qposadr[left_joint];
+  right_wheel_qpos_ = model_->jnt_qposadr[right_joint];
+  left_wheel_body_ = model_->jnt_bodyid[left_joint];
+  right_wheel_body_ = model_->jnt_bodyid[right_joint];
+  left_motor_ = RequireId(model_.get(), mjOBJ_ACTUATOR, "left_wheel_motor", robot_name);
+  right_motor_ = RequireId(model_.get(), mjOBJ_ACTUATOR, "right_wheel_motor", robot_name);
+  left_tire_ = RequireId(model_.get(), mjOBJ_GEOM, "left_wheel_tire", robot_name);
+  right_tire_ = RequireId(model_.get(), mjOBJ_GEOM, "right_wheel_tire", robot_name);
+
+  // Spawn: the free joint's reference pose, so mj_resetData returns here.
+  mjtNum* qpos0 = model_->qpos0 + base_qpos_;
+  qpos0[0] = options.spawn.x_m;
+  qpos0[1] = options.spawn.y_m;
+  qpos0[3] = std::cos(options.spawn.theta_rad / 2.0);
+  qpos0[4] = 0.0;
+  qpos0[5] = 0.0;
+  qpos0[6] = std::sin(options.spawn.theta_rad / 2.0);
+  InstallTightContactFilter();
+  data_.reset(mj_makeData(model_.get()));
+  mj_resetData(model_.get(), data_.get());
+  mj_forward(model_.get(), data_.get());
+}
+
+msgs::Pose2D Scene::TruePose() const {
+  const mjtNum* q = data_->qpos + base_qpos_;
+  // Yaw of the base's x axis projected on the floor; robust to small roll and pitch.
+  const double w = q[3], x = q[4], y = q[5], z = q[6];
+  const double yaw = std::atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z));
+  return {q[0], q[1], yaw};
+}
+
+double Scene::TrueYawRateRadS() const {
+  // From qvel, not cvel: after mj_step, cvel (like xmat) still describes the state before the
+  // integration, one step behind qpos and TruePose(). A free joint's angular velocity is in the
+  // body frame; its world z component is the third row of the body's rotation matrix times it.
+  const mjtNum* q = data_->qpos + base_qpos_;
+  const mjtNum* omega_B = data_->qvel + model_->jnt_dofadr[model_->body_jntadr[base_body_]] + 3;
+  const double w = q[3], x = q[4], y = q[5], z = q[6];
+  return 2.0 * (x * z - w * y) * omega_B[0] + 2.0 * (y * z + w * x) * omega_B[1] +
+         (1.0 - 2.0 * (x * x + y * y)) * omega_B[2];
+}
+
+void Scene::SetWheelSpeeds(const msgs::WheelSpeedCommand& command) {
+  data_->ctrl[left_motor_] = command.left_rad_s;
+  data_->ctrl[right_motor_] = command.right_rad_s;
+}
+
+void Scene::Step() { mj_step(model_.get(), data_.get()); }
+
+WheelGeometry Scene::wheel_geometry() const {
+  return {model_->geom_size[3 * left_tire_], model_->geom_size[3 * right_tire_],
+          model_->body_pos[3 * left_wheel_body_ + 1] - model_->body_pos[3 * right_wheel_body_ + 1]};
+}
+
+void Scene::SetWheelGeometry(const WheelGeometry& geometry) {
+  if (!(geometry.left_radius_m > 0.0) || !(geometry.right_radius_m > 0.0) ||
+      !(geometry.track_m > 0.0)) {
+    throw std::invalid_argument("wheel geometry: radii and track must be > 0");
+  }
+  mjModel* m = model_.get();
+  const double centre_y =
+      (m->body_pos[3 * left_wheel_body_ + 1] + m->body_pos[3 * right_wheel_body_ + 1]) / 2.0;
+  const auto reshape = [&](int body, int tire, double radius, double y) {
+    m->body_pos[3 * body + 1] = y;
+    m->body_pos[3 * body + 2] = radius;  // axle height: the wheel stands on the floor
+    m->geom_size[3 * tire] = radius;
+    m->geom_rbound[tire] = CylinderBoundingRadius(radius, m->geom_size[3 * tire + 1]);
+    // Visual wheel geoms on the same body follow the tire's radius.
+    for (int g = m->body_geomadr[body]; g < m->body_geomadr[body] + m->body_geomnum[body]; ++g) {
+      if (g != tire && m->geom_type[g] == mjGEOM_CYLINDER) {
+        m->geom_size[3 * g] = radius;
+        m->geom_rbound[g] = CylinderBoundingRadius(radius, m->geom_size[3 * g + 1]);
+      }
+    }
+  };
+  reshape(left_wheel_body_, left_tire_, geometry.left_radius_m, centre_y + geometry.track_m / 2.0);
+  reshape(right_wheel_body_, right_tire_, geometry.right_radius_m,
+          centre_y - geometry.track_m / 2.0);
+  mj_resetData(m, data_.get());
+  mj_forward(m, data_.get());
+}
+
+std::optional<int> Scene::FindSite(const std::string& name) const {
+  const int id = mj_name2id(model_.get(), mjOBJ_SITE, name.c_str());
+  if (id < 0) return std::nullopt;
+  return id;
+}
+
+msgs::Pose2D Scene::SitePoseInRobot(int site_id) const {
+  // Sites that carry sensors sit on the base body, so site_pos/site_quat are already in the robot
+  // frame; yaw is the site's x axis heading in the horizontal plane.
+  const mjtNum* p = model_->site_pos + 3 * site_id;
+  const mjtNum* q = model_->site_quat + 4 * site_id;
+  const double yaw =
+      std::atan2(2.0 * (q[0] * q[3] + q[1] * q[2]), 1.0 - 2.0 * (q[2] * q[2] + q[3] * q[3]));
+  return {p[0], p[1], yaw};
+}
+
+double Scene::SiteHeightM(int site_id) const { return model_->site_pos[3 * site_id + 2]; }
+
+Eigen::Isometry3d Scene::SitePoseInWorld(int site_id) const {
+  Eigen::Isometry3d X_WS = Eigen::Isometry3d::Identity();
+  const mjtNum* p = data_->site_xpos + 3 * site_id;
+  const mjtNum* r = data_->site_xmat + 9 * site_id;
+  X_WS.translation() = Eigen::Vector3d(p[0], p[1], p[2]);
+  X_WS.linear() = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(r);
+  return X_WS;
+}
+
+}  // namespace plywood::sim

@@ -1,0 +1,95 @@
+#pragma once
+
+#include <Eigen/Geometry>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "msgs/pose2d.h"
+#include "msgs/wheel_speed_command.h"
+#include "sim/world/mujoco_handles.h"
+
+namespace plywood::sim {
+
+// Everything that fixes how a world and a robot become one MuJoCo model.
+struct SceneOptions {
+  std::filesystem::path world_mjcf;  // static geometry only; any hand-written MJCF room
+  std::filesystem::path robot_mjcf;  // follows the conventions of models/README.md
+  msgs::Pose2D spawn;                // X_WR at t = 0
+  double timestep_s = 0.01;
+};
+
+// The true geometry of the simulated robot's drive, which may differ from the nominal spec the
+// robot's software uses (Borenstein's E_d and E_b are ratios of these).
+struct WheelGeometry {
+  double left_radius_m = 0.0;
+  double right_radius_m = 0.0;
+  double track_m = 0.0;
+};
+
+// A world and a robot compiled into one MuJoCo model, with the handles every sensor and the runner
+// need. The robot's geoms all live in geom group kRobotGeomGroup so rays can skip them.
+class Scene {
+ public:
+  static constexpr int kRobotGeomGroup = 3;
+
+  // @throws ConfigError naming the world or robot file when either is missing or does not compile,
+  // or when the robot breaks the model conventions.
+  explicit Scene(const SceneOptions& options);
+
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+
+  const mjModel* model() const { return model_.get(); }
+  const mjData* data() const { return data_.get(); }
+  mjData* mutable_data() { return data_.get(); }
+
+  double time_s() const { return data_->time; }
+  double timestep_s() const { return model_->opt.timestep; }
+
+  // Ground-truth pose of the robot's base frame (centre of rotation on the floor).
+  msgs::Pose2D TruePose() const;
+  // Ground-truth yaw rate about the world's vertical axis.
+  double TrueYawRateRadS() const;
+
+  // Wheel joint angles (rad); positive rotation drives forward.
+  double LeftWheelAngleRad() const { return data_->qpos[left_wheel_qpos_]; }
+  double RightWheelAngleRad() const { return data_->qpos[right_wheel_qpos_]; }
+
+  // Wheel velocity setpoints, clamped by the actuators' ctrlrange.
+  void SetWheelSpeeds(const msgs::WheelSpeedCommand& command);
+  void Step();
+
+  // Re-shapes the simulated drive: wheel radii and track as built, not as specified.
+  void SetWheelGeometry(const WheelGeometry& geometry);
+  WheelGeometry wheel_geometry() const;
+
+  bool IsRobotGeom(int geom_id) const { return model_->geom_group[geom_id] == kRobotGeomGroup; }
+  int base_body_id() const { return base_body_; }
+
+  // A site on the robot: its pose in the robot frame (planar part) and in the world (3-D).
+  std::optional<int> FindSite(const std::string& name) const;
+  msgs::Pose2D SitePoseInRobot(int site_id) const;
+  double SiteHeightM(int site_id) const;
+  Eigen::Isometry3d SitePoseInWorld(int site_id) const;
+
+  const std::filesystem::path& world_path() const { return options_.world_mjcf; }
+  const std::filesystem::path& robot_path() const { return options_.robot_mjcf; }
+
+ private:
+  SceneOptions options_;
+  MjModelPtr model_;
+  MjDataPtr data_;
+  int base_body_ = -1;
+  int base_qpos_ = -1;
+  int left_wheel_body_ = -1, right_wheel_body_ = -1;
+  int left_wheel_qpos_ = -1, right_wheel_qpos_ = -1;
+  int left_motor_ = -1, right_motor_ = -1;
+  int left_tire_ = -1, right_tire_ = -1;
+};
+
+// The MJCF text that includes `world` and `robot` into one model (exposed for tests).
+std::string ComposeSceneMjcf(const std::filesystem::path& world,
+                             const std::filesystem::path& robot);
+
+}  // namespace plywood::sim
