@@ -14,6 +14,7 @@
 #include "apps/command_line.h"
 #include "apps/replay_command.h"
 #include "apps/run_command.h"
+#include "apps/sweep_command.h"
 #include "apps/train_command.h"
 #include "sim/config/config_error.h"
 
@@ -40,6 +41,7 @@ int Dispatch(const std::vector<std::string>& args) {
   if (args[0] == "bench") return plywood::apps::BenchCommand(rest);
   if (args[0] == "replay") return plywood::apps::ReplayCommand(rest);
   if (args[0] == "train") return plywood::apps::TrainCommand(rest);
+  if (args[0] == "sweep") return plywood::apps::SweepCommand(rest);
   throw plywood::apps::UsageError{"unknown command '" + args[0] + "' (try plywood --help)"};
 }
 

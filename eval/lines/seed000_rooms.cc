@@ -1,5 +1,7 @@
 #include "eval/lines/seed000_rooms.h"
 
+#include <numbers>
+
 #include "sim/config/config_error.h"
 #include "sim/config/robot_catalog.h"
 #include "sim/config/yaml_fields.h"
@@ -32,6 +34,10 @@ Seed000RoomsOptions ReadSeed000RoomsOptions(const sim::ExperimentConfig& config)
   }
   fields.Get("range_cut_m", &options.range_cut_m);
   if (!(options.range_cut_m > 0.0)) fields.Fail("range_cut_m", "must be > 0");
+  fields.Get("rig_at", &options.rig_at);
+  if (options.rig_at != "origin" && options.rig_at != "spawn") {
+    fields.Fail("rig_at", "expected origin or spawn, got '" + options.rig_at + "'");
+  }
   std::vector<sim::YamlFields> rooms = fields.ChildList("rooms");
   for (std::size_t i = 0; i < rooms.size(); ++i) {
     Seed000Room room;
@@ -58,6 +64,10 @@ std::vector<Seed000Room> RoomsToRun(const sim::ExperimentConfig& config,
   user.world = config.world;
   user.world_path = config.world_path;
   user.range_cut_m = options.range_cut_m;
+  if (options.rig_at == "spawn") {
+    user.rig_W = {config.spawn.x_m, config.spawn.y_m};
+    user.rig_theta_deg = config.spawn.theta_deg;
+  }
   return {user};
 }
 
@@ -79,7 +89,8 @@ Seed000RoomResult RunSeed000Room(const sim::ExperimentConfig& config, const Seed
   room_config.world_path = room.world_path;
   Seed000RoomResult result;
   result.room = room;
-  result.rig = TakeBackToBackScans(room_config, Eigen::Vector2d::Zero(), 0.0, scans);
+  result.rig = TakeBackToBackScans(room_config, room.rig_W,
+                                   room.rig_theta_deg * std::numbers::pi / 180.0, scans);
   result.scans = MakeTruthScans(result.rig, room.range_cut_m);
   sim::LinesConfig lines = config.lines;
   if (!lines.given) lines.extractors = perception::LineExtractorNames();

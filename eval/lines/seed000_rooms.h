@@ -1,5 +1,6 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -17,6 +18,9 @@ struct Seed000Room {
   std::filesystem::path world_path;  // resolved
   double range_cut_m = 4.0;
   int paper_lines = 0;
+  // Where the rig stands, facing +x rotated by rig_theta_deg (the paper: each room's origin).
+  Eigen::Vector2d rig_W = Eigen::Vector2d::Zero();
+  double rig_theta_deg = 0.0;
 };
 
 // The `seed000_rooms:` section of `protocol: seed000_rooms`:
@@ -29,6 +33,9 @@ struct Seed000Room {
 struct Seed000RoomsOptions {
   int scans = 10;
   double range_cut_m = 4.0;
+  // For a world given with --set world=PATH: "origin" (the paper's placement) or "spawn" (the
+  // experiment's robot.spawn, which a sweep over generated worlds sets to a free spot).
+  std::string rig_at = "origin";
   std::vector<Seed000Room> rooms;
 };
 

@@ -48,6 +48,32 @@ SpawnPose WorldDefaultSpawn(const std::filesystem::path& world) {
   return {data[0], data[1], data[2]};
 }
 
+// Short names a user may write for long keys: sensors.laser.sigma_m is the laser's
+// range_noise_sigma_m (the name sweeps and other simulators use). The resolved config.yaml always
+// spells the long key.
+void NormaliseAliases(YAML::Node root, const std::string& source) {
+  if (!root.IsMap()) return;
+  YAML::Node sensors = root["sensors"];
+  if (!sensors.IsMap()) return;
+  YAML::Node laser = sensors["laser"];
+  if (!laser.IsMap() || !laser["sigma_m"]) return;
+  if (laser["range_noise_sigma_m"]) {
+    throw ConfigError(source, "sensors.laser.sigma_m",
+                      "give either sigma_m or range_noise_sigma_m, not both");
+  }
+  laser["range_noise_sigma_m"] = laser["sigma_m"];
+  laser.remove("sigma_m");
+}
+
+constexpr const char* kLaserSigmaAlias = "sensors.laser.sigma_m=";
+
+// "--set sensors.laser.sigma_m=V" sets the long key, whatever the file spelled.
+std::string AliasedAssignment(const std::string& assignment) {
+  if (assignment.rfind(kLaserSigmaAlias, 0) != 0) return assignment;
+  return "sensors.laser.range_noise_sigma_m=" +
+         assignment.substr(std::string(kLaserSigmaAlias).size());
+}
+
 void RequirePositiveFinite(const char* field, double value) {
   if (!std::isfinite(value) || value <= 0.0) {
     throw std::invalid_argument(std::string(field) + ": must be a finite number > 0, got " +
@@ -84,9 +110,10 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
     throw ConfigError(source, "", std::string("not valid YAML: ") + e.what());
   }
   if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  NormaliseAliases(root, source);
   for (const std::string& assignment : overrides) {
     if (!root.IsMap()) break;  // reported below as "expected a mapping"
-    ApplyOverride(root, assignment, "--set " + assignment);
+    ApplyOverride(root, AliasedAssignment(assignment), "--set " + assignment);
   }
 
   ExperimentConfig config;

@@ -1,0 +1,118 @@
+#include "eval/sweep/sweep.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "eval/sweep/sweep_cells.h"
+#include "eval/sweep/sweep_results.h"
+#include "eval/sweep/sweep_runner.h"
+#include "eval/sweep/sweep_spec.h"
+#include "eval/sweep/sweep_worlds.h"
+#include "sim/config/config_error.h"
+#include "sim/config/robot_catalog.h"
+
+namespace plywood::eval {
+namespace {
+
+namespace fs = std::filesystem;
+
+// One PNG per chosen metric (scripts/plot_sweep.py, matplotlib); skipped with a note when
+// python3-matplotlib is missing, since plots are a convenience, not a result.
+void Plot(const fs::path& out_dir, bool quiet) {
+  const fs::path script = sim::DataRoot() / "scripts" / "plot_sweep.py";
+  if (!fs::is_regular_file(script)) return;
+  const std::string check = "/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1";
+  if (std::system(check.c_str()) != 0) {
+    if (!quiet)
+      std::fprintf(stderr, "plywood sweep: no plots (python3-matplotlib not installed)\n");
+    return;
+  }
+  const std::string command = "/usr/bin/python3 '" + script.string() + "' '" + out_dir.string() +
+                              "'" + (quiet ? " >/dev/null" : "");
+  if (std::system(command.c_str()) != 0 && !quiet) {
+    std::fprintf(stderr, "plywood sweep: plotting failed (see above)\n");
+  }
+}
+
+int Collect(const fs::path& out_dir, bool quiet) {
+  const SweepCollectOutcome outcome = CollectSweep(out_dir);
+  Plot(out_dir, quiet);
+  if (!quiet) {
+    std::printf("%s", outcome.table.c_str());
+    std::printf("\n%-12s %d of %d runs finished, %d failed, %d not run\n", "sweep", outcome.done,
+                outcome.cells, outcome.failed, outcome.missing);
+    std::printf("%-12s %s (results.csv, summary.csv, failures.csv, plots/)\n", "results",
+                out_dir.c_str());
+  }
+  return outcome.done == outcome.cells ? 0 : 1;
+}
+
+std::vector<SweepCell> Cells(const SweepSpec& spec, const SweepLayout& layout) {
+  if (auto cells = ReadSweepManifest(spec, layout)) return *cells;
+  const std::vector<SweepWorld> worlds = PrepareSweepWorlds(spec, layout.out);
+  std::vector<SweepCell> cells = ExpandCells(spec, worlds);
+  WriteSweepManifest(spec, cells, layout);
+  return cells;
+}
+
+}  // namespace
+
+int RunSweep(const SweepInvocation& invocation) {
+  const SweepSpec spec = LoadSweepSpec(invocation.sweep_file);
+  const fs::path out =
+      invocation.out.empty() ? fs::path("runs") / "sweeps" / spec.name : invocation.out;
+  const SweepLayout layout{out};
+  const std::vector<SweepCell> cells = Cells(spec, layout);
+  if (!invocation.quiet && invocation.shard_count == 1) {
+    std::fprintf(stderr, "plywood sweep: %s: %zu runs into %s\n", spec.name.c_str(), cells.size(),
+                 out.c_str());
+  }
+  if (invocation.slurm) {
+    const SlurmJob job = WriteSlurmJob(invocation.plywood, invocation.sweep_file, out,
+                                       static_cast<int>(cells.size()), invocation.slurm_options);
+    std::printf("%-12s %s (%d array tasks)\n", "sbatch script", job.script.c_str(), job.tasks);
+    if (invocation.dry_run) return 0;
+    const std::string id = SubmitSlurmJob(job);
+    std::printf("%-12s %s\n%-12s plywood sweep --collect %s\n", "submitted job", id.c_str(), "then",
+                out.c_str());
+    return 0;
+  }
+  SweepRunOptions options;
+  options.jobs = invocation.jobs;
+  options.shard_index = invocation.shard_index;
+  options.shard_count = invocation.shard_count;
+  options.plywood = invocation.plywood;
+  options.quiet = invocation.quiet;
+  if (invocation.bench) {
+    // Both timings from scratch on the same cells, one process at a time and then `jobs` at once.
+    SweepRunOptions serial = options;
+    serial.jobs = 1;
+    serial.quiet = true;
+    SweepRunOptions parallel = options;
+    parallel.quiet = true;
+    const SweepLayout one{out / "bench-jobs1"}, many{out / "bench-jobsN"};
+    fs::remove_all(one.out);
+    fs::remove_all(many.out);
+    const SweepRunOutcome a = RunSweepCells(cells, one, serial);
+    const SweepRunOutcome b = RunSweepCells(cells, many, parallel);
+    const int jobs =
+        options.jobs > 0 ? options.jobs : static_cast<int>(sysconf(_SC_NPROCESSORS_ONLN));
+    std::printf("sweep bench: %d runs of %s\n", a.ran, spec.name.c_str());
+    std::printf("%-14s %8.3f runs/s (%.1f s)\n", "--jobs 1", a.RunsPerSecond(), a.wall_s);
+    std::printf("%-14s %8.3f runs/s (%.1f s)\n", ("--jobs " + std::to_string(jobs)).c_str(),
+                b.RunsPerSecond(), b.wall_s);
+    std::printf("%-14s %8.2fx\n", "speed-up",
+                a.RunsPerSecond() > 0 ? b.RunsPerSecond() / a.RunsPerSecond() : 0.0);
+    return a.failed + b.failed > 0 ? 1 : 0;
+  }
+  const SweepRunOutcome outcome = RunSweepCells(cells, layout, options);
+  if (!invocation.collect) return outcome.failed > 0 ? 1 : 0;
+  const int collected = Collect(out, invocation.quiet);
+  return outcome.failed > 0 ? 1 : collected;
+}
+
+int CollectSweepCommand(const fs::path& out_dir, bool quiet) { return Collect(out_dir, quiet); }
+
+}  // namespace plywood::eval

@@ -1,0 +1,184 @@
+#include "eval/sweep/sweep_cells.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+
+#include "sim/config/config_error.h"
+#include "sim/config/experiment_config.h"
+#include "sim/world/mujoco_handles.h"
+
+namespace plywood::eval {
+namespace {
+
+// The combinations of the set axes, in order: the last crossed axis varies fastest; zipped axes
+// form one axis whose i-th value is every zipped axis's i-th value.
+std::vector<std::vector<std::string>> AxisCombinations(const SweepSpec& spec) {
+  const std::size_t n = spec.axes.size();
+  std::vector<std::vector<std::size_t>> groups;  // axis indices advancing together
+  std::vector<std::size_t> zipped;
+  for (std::size_t a = 0; a < n; ++a) {
+    const bool in_zip =
+        std::find(spec.zip.begin(), spec.zip.end(), spec.axes[a].key) != spec.zip.end();
+    if (in_zip) {
+      if (zipped.empty()) groups.push_back({});  // the zip group sits where its first axis is
+      zipped.push_back(a);
+      continue;
+    }
+    groups.push_back({a});
+  }
+  for (auto& g : groups) {
+    if (g.empty()) g = zipped;
+  }
+  std::vector<std::vector<std::string>> combos{std::vector<std::string>(n)};
+  for (const auto& group : groups) {
+    std::vector<std::vector<std::string>> next;
+    const std::size_t length = spec.axes[group.front()].values.size();
+    for (const auto& partial : combos) {
+      for (std::size_t i = 0; i < length; ++i) {
+        std::vector<std::string> combo = partial;
+        for (std::size_t a : group) combo[a] = spec.axes[a].values[i];
+        next.push_back(combo);
+      }
+    }
+    combos = next;
+  }
+  return combos;
+}
+
+// The world's first spawn pose (worlds/README.md), as --set overrides; none if it has none.
+std::vector<std::string> SpawnOverrides(const std::filesystem::path& world) {
+  sim::MjModelPtr model;
+  try {
+    model = sim::LoadModelFromFile(world.string());
+  } catch (const std::exception&) {
+    return {};  // the run reports the compile error with its full context
+  }
+  const int id = mj_name2id(model.get(), mjOBJ_NUMERIC, "spawn_0");
+  if (id < 0 || model->numeric_size[id] != 3) return {};
+  const mjtNum* data = model->numeric_data + model->numeric_adr[id];
+  const auto text = [](double v) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof(buffer), "%.17g", v);
+    return std::string(buffer);
+  };
+  return {"robot.spawn.x_m=" + text(data[0]), "robot.spawn.y_m=" + text(data[1]),
+          "robot.spawn.theta_deg=" + text(data[2])};
+}
+
+bool SetsSpawn(const SweepSpec& spec) {
+  for (const auto& axis : spec.axes) {
+    if (axis.key.rfind("robot.spawn", 0) == 0) return true;
+  }
+  return false;
+}
+
+// The sweep field whose value alone makes the base experiment fail to load ("set.KEY",
+// "worlds", "seeds"), so the error names what to fix in the sweep file.
+std::string CulpritField(const SweepSpec& spec, const SweepCell& cell,
+                         const std::vector<std::string>& profile_lines) {
+  const auto fails = [&](const std::vector<std::string>& overrides) {
+    try {
+      sim::LoadExperimentConfig(cell.experiment, overrides);
+      return false;
+    } catch (const sim::ConfigError&) {
+      return true;
+    }
+  };
+  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
+    if (fails({spec.axes[a].key + "=" + cell.values[a]})) return "set." + spec.axes[a].key;
+  }
+  if (!cell.world.empty() && fails({"world=" + cell.world})) return "worlds";
+  if (!profile_lines.empty() && fails(profile_lines)) return "profiles (" + cell.profile + ")";
+  return "experiment";
+}
+
+}  // namespace
+
+std::string StableHash(const std::string& text) {
+  std::uint64_t hash = 1469598103934665603ull;
+  for (unsigned char c : text) {
+    hash ^= c;
+    hash *= 1099511628211ull;
+  }
+  char hex[17];
+  std::snprintf(hex, sizeof(hex), "%016llx", static_cast<unsigned long long>(hash));
+  return hex;
+}
+
+std::vector<std::string> ReadProfile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw sim::ConfigError(path.string(), "", "cannot read the profile");
+  std::vector<std::string> lines;
+  int number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++number;
+    while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+    const auto start = line.find_first_not_of(' ');
+    if (start == std::string::npos || line[start] == '#') continue;
+    line = line.substr(start);
+    if (line.find('=') == std::string::npos || line.front() == '=') {
+      throw sim::ConfigError(path.string(), "line " + std::to_string(number),
+                             "expected key.path=value");
+    }
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<SweepWorld>& worlds) {
+  std::vector<SweepWorld> world_axis = worlds;
+  if (world_axis.empty()) world_axis.push_back({});  // the experiment's own world
+  std::vector<std::pair<std::string, std::vector<std::string>>> profiles;
+  for (const auto& p : spec.profiles) profiles.emplace_back(p.stem().string(), ReadProfile(p));
+  if (profiles.empty()) profiles.push_back({});
+  const std::vector<std::vector<std::string>> combos = AxisCombinations(spec);
+  const bool sets_spawn = SetsSpawn(spec);
+  std::vector<SweepCell> cells;
+  for (const auto& experiment : spec.experiments) {
+    for (const SweepWorld& world : world_axis) {
+      std::vector<std::string> world_overrides;
+      if (!world.path.empty()) {
+        world_overrides.push_back("world=" + world.path.string());
+        if (!sets_spawn) {
+          for (const std::string& o : SpawnOverrides(world.path)) world_overrides.push_back(o);
+        }
+      }
+      for (const auto& [profile_name, profile_lines] : profiles) {
+        for (const auto& combo : combos) {
+          std::vector<std::uint64_t> seeds = spec.seeds;
+          const bool own_seed = seeds.empty();
+          if (own_seed) seeds.push_back(0);
+          for (std::uint64_t seed : seeds) {
+            SweepCell cell;
+            cell.index = static_cast<int>(cells.size());
+            cell.experiment = experiment.string();
+            cell.world = world.path.string();
+            cell.family = world.family;
+            cell.profile = profile_name;
+            cell.values = combo;
+            cell.overrides = world_overrides;
+            for (const auto& line : profile_lines) cell.overrides.push_back(line);
+            for (std::size_t a = 0; a < spec.axes.size(); ++a) {
+              cell.overrides.push_back(spec.axes[a].key + "=" + combo[a]);
+            }
+            if (!own_seed) cell.overrides.push_back("seed=" + std::to_string(seed));
+            sim::ExperimentConfig config;
+            try {
+              config = sim::LoadExperimentConfig(experiment, cell.overrides);
+            } catch (const sim::ConfigError& e) {
+              throw sim::ConfigError(spec.source_file, CulpritField(spec, cell, profile_lines),
+                                     e.what());
+            }
+            cell.seed = config.seed;
+            cell.id = StableHash(sim::ExperimentConfigToYaml(config));
+            cells.push_back(cell);
+          }
+        }
+      }
+    }
+  }
+  return cells;
+}
+
+}  // namespace plywood::eval

@@ -1,0 +1,46 @@
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "eval/sweep/sweep_spec.h"
+
+namespace plywood::eval {
+
+// One run of a sweep: the base experiment with `overrides` (the --set list of `plywood run`).
+struct SweepCell {
+  int index = 0;           // position in the sweep's fixed order
+  std::string id;          // 16 hex digits: a stable hash of the resolved config
+  std::string experiment;  // the base experiment file
+  std::string world;       // as given (or the generated file's path); empty: the base's
+  std::string family;      // generator family, empty for hand-made worlds
+  std::string profile;     // the profile file's stem, empty without profiles
+  std::uint64_t seed = 0;
+  std::vector<std::string> values;  // one per SweepSpec::axes
+  std::vector<std::string> overrides;
+};
+
+// A world the sweep runs in, with the family it was drawn from (empty for files).
+struct SweepWorld {
+  std::filesystem::path path;
+  std::string family;
+};
+
+// Every cell, in a fixed order: experiments outermost, then worlds, profiles, the set axes
+// (crossed; zipped axes advance together), and seeds innermost. A world axis places the robot at
+// the world's spawn_0 unless the sweep itself sets robot.spawn. Each cell's config is loaded and
+// checked here, before anything runs, so a key path the experiment does not have fails the whole
+// sweep at once.
+// @throws sim::ConfigError naming the sweep file and the field.
+std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<SweepWorld>& worlds);
+
+// The --set lines of a profile file ('#' comments and blank lines skipped).
+// @throws sim::ConfigError naming the file and line.
+std::vector<std::string> ReadProfile(const std::filesystem::path& path);
+
+// FNV-1a, 64 bit, as 16 hex digits: stable across machines and compilers.
+std::string StableHash(const std::string& text);
+
+}  // namespace plywood::eval

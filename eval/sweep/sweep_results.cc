@@ -1,0 +1,268 @@
+#include "eval/sweep/sweep_results.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+
+#include "eval/sweep/sweep_csv.h"
+#include "sim/config/config_error.h"
+#include "sim/runner/metrics.h"
+
+namespace plywood::eval {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string ReadText(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void WriteText(const fs::path& path, const std::string& text) {
+  const fs::path partial = path.string() + ".partial";
+  {
+    std::ofstream out(partial, std::ios::binary);
+    out << text;
+    if (!out) throw std::runtime_error("cannot write " + partial.string());
+  }
+  fs::rename(partial, path);
+}
+
+// metrics.json flattened to dotted keys; numbers as their shortest round-trip text.
+struct RunMetrics {
+  std::map<std::string, std::string> text;
+  std::map<std::string, double> numbers;
+};
+
+void Flatten(const nlohmann::json& node, const std::string& prefix, RunMetrics& out) {
+  if (node.is_object()) {
+    for (auto it = node.begin(); it != node.end(); ++it)
+      Flatten(it.value(), prefix.empty() ? it.key() : prefix + "." + it.key(), out);
+    return;
+  }
+  if (node.is_number()) {
+    const double value = node.get<double>();
+    out.text[prefix] = sim::FormatNumber(value);
+    out.numbers[prefix] = value;
+  } else if (node.is_string()) {
+    out.text[prefix] = node.get<std::string>();
+  } else if (node.is_boolean()) {
+    out.text[prefix] = node.get<bool>() ? "true" : "false";
+  } else {
+    out.text[prefix] = "";  // null: a number JSON cannot hold (NaN)
+  }
+}
+
+RunMetrics ReadRunMetrics(const fs::path& file) {
+  RunMetrics metrics;
+  try {
+    Flatten(nlohmann::json::parse(ReadText(file)), "", metrics);
+  } catch (const nlohmann::json::exception& e) {
+    throw sim::ConfigError(file.string(), "", std::string("not valid JSON: ") + e.what());
+  }
+  return metrics;
+}
+
+std::string Fixed(double value, const char* format) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), format, value);
+  return buffer;
+}
+
+}  // namespace
+
+double StudentT95(int dof) {
+  static const double kTable[] = {0,     12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365,
+                                  2.306, 2.262,  2.228, 2.201, 2.179, 2.160, 2.145, 2.131,
+                                  2.120, 2.110,  2.101, 2.093, 2.086, 2.080, 2.074, 2.069,
+                                  2.064, 2.060,  2.056, 2.052, 2.048, 2.045, 2.042};
+  if (dof <= 0) return 0.0;
+  if (dof <= 30) return kTable[dof];
+  // Beyond 30 the quantile is nearly linear in 1/dof: 2.042 at 30, 1.95996 at infinity.
+  return 1.95996 + (2.042 - 1.95996) * 30.0 / dof;
+}
+
+SampleSummary Summarise(const std::vector<double>& values) {
+  SampleSummary s;
+  s.n = static_cast<int>(values.size());
+  if (s.n == 0) return s;
+  s.min = *std::min_element(values.begin(), values.end());
+  s.max = *std::max_element(values.begin(), values.end());
+  double sum = 0.0;
+  for (double v : values) sum += v;
+  s.mean = sum / s.n;
+  double squares = 0.0;
+  for (double v : values) squares += (v - s.mean) * (v - s.mean);
+  s.std = s.n > 1 ? std::sqrt(squares / (s.n - 1)) : 0.0;
+  const double half = s.n > 1 ? StudentT95(s.n - 1) * s.std / std::sqrt(s.n) : 0.0;
+  s.ci95_low = s.mean - half;
+  s.ci95_high = s.mean + half;
+  return s;
+}
+
+SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
+  const fs::path manifest = out_dir / "cells.csv";
+  const fs::path meta_file = out_dir / "sweep.json";
+  if (!fs::is_regular_file(manifest) || !fs::is_regular_file(meta_file)) {
+    throw sim::ConfigError(out_dir.string(), "",
+                           "not a sweep directory (no cells.csv / sweep.json)");
+  }
+  nlohmann::json meta;
+  try {
+    meta = nlohmann::json::parse(ReadText(meta_file));
+  } catch (const nlohmann::json::exception& e) {
+    throw sim::ConfigError(meta_file.string(), "", std::string("not valid JSON: ") + e.what());
+  }
+  const auto axes = meta.value("axes", std::vector<std::string>{});
+  auto chosen = meta.value("metrics", std::vector<std::string>{});
+  const bool print_table = !chosen.empty();  // hundreds of metrics would drown the screen
+  const auto group_by = meta.value("group_by", std::vector<std::string>{});
+  const bool several_experiments = meta.value("experiments", std::vector<std::string>{}).size() > 1;
+  const bool profiles = meta.value("profiles", false);
+  const auto rows = ParseCsv(ReadText(manifest));
+  if (rows.empty() || rows[0].size() != 7 + axes.size()) {
+    throw sim::ConfigError(manifest.string(), "", "header does not match sweep.json's axes");
+  }
+
+  struct Row {
+    std::vector<std::string> cell;  // id, world, family, seed, axes
+    RunMetrics metrics;
+  };
+  std::vector<Row> finished;
+  std::string failures_csv;
+  {
+    std::vector<std::string> header{"id", "experiment", "world", "family", "profile", "seed"};
+    for (const auto& a : axes) header.push_back(a);
+    header.push_back("exit_code");
+    header.push_back("error");
+    failures_csv = CsvRow(header);
+  }
+  SweepCollectOutcome outcome;
+  std::set<std::string> metric_keys;
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    const auto& row = rows[r];
+    if (row.size() != rows[0].size()) {
+      throw sim::ConfigError(manifest.string(), "line " + std::to_string(r + 1),
+                             "expected " + std::to_string(rows[0].size()) + " fields");
+    }
+    ++outcome.cells;
+    const std::string& id = row[1];
+    std::vector<std::string> cell(row.begin() + 1, row.end());
+    const fs::path run = out_dir / "runs" / id;
+    const fs::path failure = out_dir / "failures" / (id + ".txt");
+    if (fs::is_regular_file(run / "metrics.json")) {
+      Row done{cell, ReadRunMetrics(run / "metrics.json")};
+      for (const auto& [key, text] : done.metrics.text) metric_keys.insert(key);
+      finished.push_back(std::move(done));
+      ++outcome.done;
+    } else if (fs::is_regular_file(failure)) {
+      std::istringstream lines(ReadText(failure));
+      std::string code, error;
+      std::getline(lines, code);
+      std::getline(lines, error);
+      cell.push_back(code);
+      cell.push_back(error);
+      failures_csv += CsvRow(cell);
+      ++outcome.failed;
+    } else {
+      ++outcome.missing;
+    }
+  }
+
+  // results.csv
+  std::vector<std::string> header{"id", "experiment", "world", "family", "profile", "seed"};
+  for (const auto& a : axes) header.push_back(a);
+  for (const auto& k : metric_keys) header.push_back(k);
+  std::string results = CsvRow(header);
+  for (const Row& row : finished) {
+    std::vector<std::string> fields = row.cell;
+    for (const auto& k : metric_keys) {
+      const auto it = row.metrics.text.find(k);
+      fields.push_back(it == row.metrics.text.end() ? "" : it->second);
+    }
+    results += CsvRow(fields);
+  }
+  WriteText(out_dir / "results.csv", results);
+  WriteText(out_dir / "failures.csv", failures_csv);
+
+  // summary.csv: groups in order of first appearance.
+  if (chosen.empty()) {
+    for (const auto& k : metric_keys) {
+      const bool numeric = std::any_of(finished.begin(), finished.end(), [&](const Row& r) {
+        return r.metrics.numbers.count(k) > 0;
+      });
+      if (numeric) chosen.push_back(k);
+    }
+  }
+  // Row::cell: id, experiment, world, family, profile, seed, axes...
+  std::vector<std::string> group_columns;
+  std::vector<std::size_t> group_index;
+  const auto group = [&](const std::string& column, std::size_t index) {
+    group_columns.push_back(column);
+    group_index.push_back(index);
+  };
+  if (several_experiments) group("experiment", 1);
+  for (const auto& g : group_by) group(g, g == "world" ? 2 : g == "family" ? 3 : 5);
+  if (profiles) group("profile", 4);
+  for (std::size_t a = 0; a < axes.size(); ++a) group(axes[a], 6 + a);
+  std::vector<std::vector<std::string>> groups;
+  std::map<std::vector<std::string>, std::vector<const Row*>> members;
+  for (const Row& row : finished) {
+    std::vector<std::string> key;
+    for (std::size_t i : group_index) key.push_back(row.cell[i]);
+    if (!members.count(key)) groups.push_back(key);
+    members[key].push_back(&row);
+  }
+  std::vector<std::string> summary_header = group_columns;
+  for (const char* c : {"metric", "n", "mean", "std", "ci95_low", "ci95_high", "min", "max"})
+    summary_header.push_back(c);
+  std::string summary = CsvRow(summary_header);
+  std::string table;
+  for (const auto& metric : chosen) {
+    table += "\n" + metric + "\n";
+    for (const auto& group : groups) {
+      std::vector<double> values;
+      for (const Row* row : members[group]) {
+        const auto it = row->metrics.numbers.find(metric);
+        if (it != row->metrics.numbers.end() && std::isfinite(it->second))
+          values.push_back(it->second);
+      }
+      const SampleSummary s = Summarise(values);
+      std::vector<std::string> fields = group;
+      fields.push_back(metric);
+      fields.push_back(std::to_string(s.n));
+      for (double v : {s.mean, s.std, s.ci95_low, s.ci95_high, s.min, s.max})
+        fields.push_back(s.n ? sim::FormatNumber(v) : "");
+      summary += CsvRow(fields);
+      std::string label;
+      for (std::size_t i = 0; i < group.size(); ++i)
+        label += (i ? ", " : "") + group_columns[i] + "=" + group[i];
+      if (label.empty()) label = "all runs";
+      table += "  " + label + ": n " + std::to_string(s.n);
+      if (s.n) {
+        table += ", mean " + Fixed(s.mean, "%.4g") + " (95 % CI " + Fixed(s.ci95_low, "%.4g") +
+                 " .. " + Fixed(s.ci95_high, "%.4g") + "), std " + Fixed(s.std, "%.3g") + ", min " +
+                 Fixed(s.min, "%.4g") + ", max " + Fixed(s.max, "%.4g");
+      }
+      table += "\n";
+    }
+  }
+  WriteText(out_dir / "summary.csv", summary);
+  if (print_table) {
+    outcome.table = table;
+  } else {
+    outcome.table = "\nsummary.csv: " + std::to_string(chosen.size()) + " metrics x " +
+                    std::to_string(groups.size()) +
+                    " groups (name some under metrics: in the sweep to print and plot them)\n";
+  }
+  return outcome;
+}
+
+}  // namespace plywood::eval

@@ -1,0 +1,278 @@
+#include "eval/sweep/sweep_runner.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include "eval/sweep/sweep_csv.h"
+#include "sim/config/config_error.h"
+
+namespace plywood::eval {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+std::string ReadText(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Writes `text` under a temporary name and renames it into place, so a reader (or a resumed
+// sweep) never sees half a file.
+void WriteAtomically(const fs::path& path, const std::string& text) {
+  const fs::path partial = path.string() + ".partial-" + std::to_string(getpid());
+  {
+    std::ofstream out(partial, std::ios::binary);
+    out << text;
+    if (!out) throw std::runtime_error("cannot write " + partial.string());
+  }
+  fs::rename(partial, path);
+}
+
+// The last line a failed run printed that says what went wrong ("plywood: ..."), else its last
+// non-empty line.
+std::string ErrorLine(const fs::path& log) {
+  std::istringstream lines(ReadText(log));
+  std::string last, last_plywood;
+  for (std::string line; std::getline(lines, line);) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    last = line;
+    if (line.rfind("plywood:", 0) == 0) last_plywood = line;
+  }
+  return last_plywood.empty() ? last : last_plywood;
+}
+
+// Starts `plywood run` for one cell with its output in `partial` and its stdout/stderr in `log`.
+pid_t StartRun(const SweepCell& cell, const fs::path& plywood, const fs::path& partial,
+               const fs::path& log) {
+  std::vector<std::string> args{plywood.string(), "run",    cell.experiment, "--out",
+                                partial.string(), "--quiet"};
+  for (const std::string& o : cell.overrides) {
+    args.push_back("--set");
+    args.push_back(o);
+  }
+  const pid_t parent = getpid();
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("cannot start a run: fork failed");
+  if (pid > 0) return pid;
+  // The child: dies with the sweep, so a killed sweep leaves no run writing behind its back.
+  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (getppid() != parent) _exit(127);
+  const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  if (fd >= 0) {
+    dup2(fd, STDOUT_FILENO);
+    dup2(fd, STDERR_FILENO);
+    close(fd);
+  }
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  execv(argv[0], argv.data());
+  std::fprintf(stderr, "plywood: cannot run %s\n", argv[0]);
+  _exit(127);
+}
+
+class Progress {
+ public:
+  Progress(int total, int done, bool quiet)
+      : total_(total), done_at_start_(done), quiet_(quiet), terminal_(isatty(STDERR_FILENO)) {}
+
+  void Report(int done, int failed, bool final) {
+    if (quiet_) return;
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
+    if (!final && !terminal_ && elapsed - last_print_s_ < 5.0) return;
+    last_print_s_ = elapsed;
+    const int ran = done + failed - done_at_start_;
+    const double rate = elapsed > 0 ? ran / elapsed : 0.0;
+    const int left = total_ - done - failed;
+    char eta[32] = "-";
+    if (rate > 0 && left > 0) std::snprintf(eta, sizeof(eta), "%.0f s", left / rate);
+    std::fprintf(stderr, "%splywood sweep: %d/%d done, %d failed, %.2f runs/s, ETA %s%s",
+                 terminal_ ? "\r" : "", done, total_, failed, rate, eta,
+                 terminal_ && !final ? "   " : "\n");
+    std::fflush(stderr);
+  }
+
+ private:
+  int total_;
+  int done_at_start_;
+  bool quiet_;
+  bool terminal_;
+  Clock::time_point start_ = Clock::now();
+  double last_print_s_ = -1e9;
+};
+
+}  // namespace
+
+bool InShard(const SweepCell& cell, int shard_index, int shard_count) {
+  return shard_count <= 1 || cell.index % shard_count == shard_index;
+}
+
+void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cells,
+                        const SweepLayout& layout) {
+  fs::create_directories(layout.out);
+  const fs::path copy = layout.out / "sweep.yaml";
+  if (fs::exists(copy) && ReadText(copy) != spec.text) {
+    throw sim::ConfigError(layout.out.string(), "",
+                           "holds results of a different sweep (its sweep.yaml differs): choose "
+                           "another --out");
+  }
+  nlohmann::ordered_json meta;
+  meta["name"] = spec.name;
+  meta["sweep_file"] = spec.source_file;
+  std::vector<std::string> experiments;
+  for (const auto& e : spec.experiments) experiments.push_back(e.string());
+  meta["experiments"] = experiments;
+  meta["profiles"] = !spec.profiles.empty();
+  std::vector<std::string> keys;
+  for (const auto& axis : spec.axes) keys.push_back(axis.key);
+  meta["axes"] = keys;
+  meta["metrics"] = spec.metrics;
+  meta["group_by"] = spec.group_by;
+  meta["cells"] = cells.size();
+
+  std::vector<std::string> header{"index",  "id",      "experiment", "world",
+                                  "family", "profile", "seed"};
+  for (const auto& k : keys) header.push_back(k);
+  std::string csv = CsvRow(header);
+  for (const SweepCell& cell : cells) {
+    std::vector<std::string> row{
+        std::to_string(cell.index), cell.id, cell.experiment, cell.world, cell.family, cell.profile,
+        std::to_string(cell.seed)};
+    for (const auto& v : cell.values) row.push_back(v);
+    csv += CsvRow(row);
+  }
+  nlohmann::ordered_json full = nlohmann::ordered_json::array();
+  for (const SweepCell& cell : cells) {
+    full.push_back({{"index", cell.index},
+                    {"id", cell.id},
+                    {"experiment", cell.experiment},
+                    {"world", cell.world},
+                    {"family", cell.family},
+                    {"profile", cell.profile},
+                    {"seed", cell.seed},
+                    {"values", cell.values},
+                    {"overrides", cell.overrides}});
+  }
+  WriteAtomically(layout.out / "sweep.json", meta.dump(2) + "\n");
+  WriteAtomically(layout.out / "cells.json", full.dump(1) + "\n");
+  WriteAtomically(layout.out / "cells.csv", csv);
+  if (!fs::exists(copy)) WriteAtomically(copy, spec.text);
+}
+
+SweepRunOutcome RunSweepCells(const std::vector<SweepCell>& cells, const SweepLayout& layout,
+                              const SweepRunOptions& options) {
+  const int jobs = options.jobs > 0
+                       ? options.jobs
+                       : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  fs::create_directories(layout.out / "runs");
+  fs::create_directories(layout.out / "logs");
+  fs::create_directories(layout.out / "failures");
+  // Partial runs of an interrupted sweep (of this shard) never count: start them again.
+  const fs::path partial_root = layout.PartialRoot();
+  fs::create_directories(partial_root);
+
+  SweepRunOutcome outcome;
+  std::vector<const SweepCell*> todo;
+  int done = 0;
+  for (const SweepCell& cell : cells) {
+    if (!InShard(cell, options.shard_index, options.shard_count)) continue;
+    ++outcome.cells;
+    for (const auto& entry : fs::directory_iterator(partial_root)) {
+      if (entry.path().filename().string().rfind(cell.id + ".", 0) == 0)
+        fs::remove_all(entry.path());
+    }
+    if (fs::is_directory(layout.RunDir(cell.id))) {
+      ++outcome.already_done;
+      ++done;
+    } else {
+      todo.push_back(&cell);
+    }
+  }
+  Progress progress(outcome.cells, done, options.quiet);
+  const Clock::time_point start = Clock::now();
+  std::map<pid_t, std::pair<const SweepCell*, fs::path>> running;
+  std::size_t next = 0;
+  int failed = 0;
+  while (next < todo.size() || !running.empty()) {
+    while (next < todo.size() && static_cast<int>(running.size()) < jobs) {
+      const SweepCell& cell = *todo[next++];
+      const fs::path partial = partial_root / (cell.id + "." + std::to_string(getpid()));
+      const pid_t pid = StartRun(cell, options.plywood, partial, layout.LogFile(cell.id));
+      running[pid] = {&cell, partial};
+    }
+    int status = 0;
+    const pid_t pid = waitpid(-1, &status, 0);
+    if (pid < 0) {
+      if (errno == EINTR) continue;
+      throw std::runtime_error("sweep: waitpid failed");
+    }
+    const auto it = running.find(pid);
+    if (it == running.end()) continue;
+    const auto [cell, partial] = it->second;
+    running.erase(it);
+    ++outcome.ran;
+    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    if (code == 0 && fs::is_regular_file(partial / "metrics.json")) {
+      fs::rename(partial, layout.RunDir(cell->id));  // the run counts from here on
+      fs::remove(layout.FailureFile(cell->id));
+      ++done;
+    } else {
+      std::error_code ignored;
+      fs::remove_all(partial, ignored);
+      std::string line = ErrorLine(layout.LogFile(cell->id));
+      if (code == 0) line = "exited 0 without metrics.json";
+      WriteAtomically(layout.FailureFile(cell->id), std::to_string(code) + "\n" + line + "\n");
+      ++failed;
+    }
+    progress.Report(done, failed, false);
+  }
+  outcome.failed = failed;
+  outcome.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
+  progress.Report(done, failed, true);
+  return outcome;
+}
+
+std::optional<std::vector<SweepCell>> ReadSweepManifest(const SweepSpec& spec,
+                                                        const SweepLayout& layout) {
+  const fs::path copy = layout.out / "sweep.yaml";
+  const fs::path cells_file = layout.out / "cells.json";
+  if (!fs::is_regular_file(copy) || ReadText(copy) != spec.text || !fs::is_regular_file(cells_file))
+    return std::nullopt;
+  std::vector<SweepCell> cells;
+  try {
+    for (const auto& item : nlohmann::json::parse(ReadText(cells_file))) {
+      SweepCell cell;
+      cell.index = item.at("index").get<int>();
+      cell.id = item.at("id").get<std::string>();
+      cell.experiment = item.at("experiment").get<std::string>();
+      cell.profile = item.at("profile").get<std::string>();
+      cell.world = item.at("world").get<std::string>();
+      cell.family = item.at("family").get<std::string>();
+      cell.seed = item.at("seed").get<std::uint64_t>();
+      cell.values = item.at("values").get<std::vector<std::string>>();
+      cell.overrides = item.at("overrides").get<std::vector<std::string>>();
+      cells.push_back(cell);
+    }
+  } catch (const nlohmann::json::exception&) {
+    return std::nullopt;  // damaged: expand the sweep again
+  }
+  return cells;
+}
+
+}  // namespace plywood::eval

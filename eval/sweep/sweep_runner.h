@@ -1,0 +1,70 @@
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "eval/sweep/sweep_cells.h"
+#include "eval/sweep/sweep_spec.h"
+
+namespace plywood::eval {
+
+// Where a sweep keeps its files (docs/sweeps.md):
+//   OUT/sweep.yaml   the sweep as given          OUT/cells.csv   every cell: index, id, axes
+//   OUT/runs/ID/     each finished run, the same bytes as `plywood run` with that config and seed
+//   OUT/runs/.partial/  runs in progress (removed on resume)
+//   OUT/logs/ID.log  what each run printed      OUT/failures/ID.txt  exit code and error line
+//   OUT/results.csv, failures.csv, summary.csv, plots/   (CollectSweep)
+struct SweepLayout {
+  std::filesystem::path out;
+  std::filesystem::path RunDir(const std::string& id) const { return out / "runs" / id; }
+  std::filesystem::path PartialRoot() const { return out / "runs" / ".partial"; }
+  std::filesystem::path LogFile(const std::string& id) const {
+    return out / "logs" / (id + ".log");
+  }
+  std::filesystem::path FailureFile(const std::string& id) const {
+    return out / "failures" / (id + ".txt");
+  }
+};
+
+struct SweepRunOptions {
+  int jobs = 0;  // processes at once; 0: one per core
+  int shard_index = 0;
+  int shard_count = 1;
+  std::filesystem::path plywood;  // the binary that runs each cell (`plywood run`)
+  bool quiet = false;
+};
+
+struct SweepRunOutcome {
+  int cells = 0;         // in this shard
+  int already_done = 0;  // finished by an earlier, interrupted sweep
+  int ran = 0;
+  int failed = 0;
+  double wall_s = 0.0;
+  double RunsPerSecond() const { return wall_s > 0 ? ran / wall_s : 0.0; }
+};
+
+// Cells of shard I/N: those whose index % N == I. Shards partition the cells.
+bool InShard(const SweepCell& cell, int shard_index, int shard_count);
+
+// Runs every cell of the shard that has no finished run directory yet, `jobs` at a time, each in
+// its own process (`plywood run EXPERIMENT --set ... --out PARTIAL --quiet`), so a crash cannot
+// take down the sweep. A run counts as done only once its partial directory is renamed into
+// runs/ID, after the process exited 0; a failure lands in failures/ID.txt and the sweep goes on.
+// Killing the sweep kills its runs (PR_SET_PDEATHSIG); running it again removes partial directories
+// and finishes only what is missing. Progress: done/total, failures, runs/s, ETA on stderr.
+SweepRunOutcome RunSweepCells(const std::vector<SweepCell>& cells, const SweepLayout& layout,
+                              const SweepRunOptions& options);
+
+// Writes OUT/sweep.yaml and OUT/cells.csv (the manifest that --collect and shards read). Refuses
+// (sim::ConfigError) when OUT holds a different sweep.
+void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cells,
+                        const SweepLayout& layout);
+
+// The cells written by WriteSweepManifest when OUT holds this very sweep (same sweep.yaml bytes),
+// so Slurm tasks and resumed sweeps need not expand and check every cell again.
+std::optional<std::vector<SweepCell>> ReadSweepManifest(const SweepSpec& spec,
+                                                        const SweepLayout& layout);
+
+}  // namespace plywood::eval

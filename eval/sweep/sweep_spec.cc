@@ -1,0 +1,261 @@
+#include "eval/sweep/sweep_spec.h"
+
+#include <glob.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "sim/config/config_error.h"
+#include "sim/config/robot_catalog.h"
+#include "sim/config/yaml_fields.h"
+
+namespace plywood::eval {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Relative paths resolve against the sweep file's folder, then the data root, like `world:` in an
+// experiment.
+fs::path ResolveFile(const std::string& text, const fs::path& base_dir,
+                     const sim::YamlFields& fields, const std::string& key) {
+  const fs::path given(text);
+  if (given.is_absolute()) {
+    if (!fs::is_regular_file(given)) fields.Fail(key, "no such file: " + text);
+    return given.lexically_normal();
+  }
+  for (const fs::path& base : {base_dir, sim::DataRoot()}) {
+    const fs::path candidate = (base / given).lexically_normal();
+    if (fs::is_regular_file(candidate)) return candidate;
+  }
+  fields.Fail(key, "no such file: " + text + " (looked in " + base_dir.string() + " and " +
+                       sim::DataRoot().string() + ")");
+}
+
+bool IsGlob(const std::string& text) { return text.find_first_of("*?[") != std::string::npos; }
+
+std::vector<fs::path> Glob(const fs::path& pattern) {
+  glob_t matches{};
+  std::vector<fs::path> paths;
+  if (glob(pattern.c_str(), 0, nullptr, &matches) == 0) {
+    for (std::size_t i = 0; i < matches.gl_pathc; ++i) paths.emplace_back(matches.gl_pathv[i]);
+  }
+  globfree(&matches);
+  std::sort(paths.begin(), paths.end());
+  return paths;
+}
+
+// A glob matches against the sweep file's folder first, then the data root.
+std::vector<fs::path> ResolveGlob(const std::string& text, const fs::path& base_dir,
+                                  const sim::YamlFields& fields, const std::string& key) {
+  const fs::path given(text);
+  if (given.is_absolute()) {
+    std::vector<fs::path> found = Glob(given);
+    if (found.empty()) fields.Fail(key, "no file matches " + text);
+    return found;
+  }
+  for (const fs::path& base : {base_dir, sim::DataRoot()}) {
+    std::vector<fs::path> found = Glob((base / given).lexically_normal());
+    if (!found.empty()) return found;
+  }
+  fields.Fail(key, "no file matches " + text + " (looked in " + base_dir.string() + " and " +
+                       sim::DataRoot().string() + ")");
+}
+
+std::string ScalarText(const YAML::Node& node) {
+  if (node.IsScalar()) return node.Scalar();
+  YAML::Emitter out;
+  out << YAML::Flow << node;
+  return out.c_str();
+}
+
+void ReadSeeds(const YAML::Node& node, const sim::YamlFields& top, SweepSpec& spec) {
+  const auto seed_of = [&](const YAML::Node& n, const std::string& field) -> std::uint64_t {
+    try {
+      const long long value = n.as<long long>();
+      if (value < 0) top.Fail(field, "a seed must be >= 0, got " + n.Scalar());
+      return static_cast<std::uint64_t>(value);
+    } catch (const YAML::Exception&) {
+      top.Fail(field, "expected a whole number, got '" + ScalarText(n) + "'");
+    }
+  };
+  if (node.IsSequence()) {
+    if (node.size() == 0) top.Fail("seeds", "empty list: give at least one seed");
+    for (const auto& item : node) spec.seeds.push_back(seed_of(item, "seeds"));
+    return;
+  }
+  if (node.IsMap()) {
+    sim::YamlFields range(node, spec.source_file, "seeds");
+    if (!range.Has("from") || !range.Has("to")) top.Fail("seeds", "a range needs from: and to:");
+    const std::uint64_t from = seed_of(range.Raw("from"), "seeds.from");
+    const std::uint64_t to = seed_of(range.Raw("to"), "seeds.to");
+    range.Finish();
+    if (to < from) top.Fail("seeds.to", "must be >= seeds.from");
+    if (to - from >= 100000) top.Fail("seeds", "more than 100000 seeds");
+    for (std::uint64_t s = from; s <= to; ++s) spec.seeds.push_back(s);
+    return;
+  }
+  top.Fail("seeds", "expected a list of seeds or {from: A, to: B}");
+}
+
+GeneratedWorlds ReadFamily(const YAML::Node& node, const std::string& file,
+                           const sim::YamlFields& top) {
+  sim::YamlFields family(node, file, "worlds");
+  GeneratedWorlds generated;
+  if (!family.Has("family")) top.Fail("worlds.family", "missing: name a world generator family");
+  family.Get("family", &generated.family);
+  if (!family.Has("count")) top.Fail("worlds.count", "missing: how many worlds to generate");
+  int count = 0;
+  family.Get("count", &count);
+  if (count <= 0 || count > 100000) {
+    top.Fail("worlds.count", "must be in 1..100000, got " + std::to_string(count));
+  }
+  generated.count = count;
+  family.Get("seed", &generated.seed);
+  family.Finish();
+  return generated;
+}
+
+void ReadWorlds(const YAML::Node& node, const fs::path& base_dir, const sim::YamlFields& top,
+                SweepSpec& spec) {
+  if (node.IsMap()) {
+    spec.generated.push_back(ReadFamily(node, spec.source_file, top));
+    return;
+  }
+  if (!node.IsSequence()) top.Fail("worlds", "expected a list of files/globs or {family: ...}");
+  if (node.size() == 0) top.Fail("worlds", "empty list: give at least one world");
+  for (const auto& item : node) {
+    if (item.IsMap()) {
+      spec.generated.push_back(ReadFamily(item, spec.source_file, top));
+      continue;
+    }
+    if (!item.IsScalar()) top.Fail("worlds", "expected a file name, a glob or {family: ...}");
+    const std::string text = item.Scalar();
+    if (IsGlob(text)) {
+      for (const fs::path& p : ResolveGlob(text, base_dir, top, "worlds"))
+        spec.world_files.push_back(p);
+    } else {
+      spec.world_files.push_back(ResolveFile(text, base_dir, top, "worlds"));
+    }
+  }
+}
+
+// A list (or one) of files or globs, each resolved.
+std::vector<fs::path> ReadFiles(const YAML::Node& node, const fs::path& base_dir,
+                                const sim::YamlFields& top, const std::string& field) {
+  std::vector<fs::path> files;
+  std::vector<std::string> items;
+  if (node.IsScalar()) {
+    items.push_back(node.Scalar());
+  } else if (node.IsSequence()) {
+    if (node.size() == 0) top.Fail(field, "empty list: give at least one file");
+    for (const auto& item : node) {
+      if (!item.IsScalar()) top.Fail(field, "expected file names or globs");
+      items.push_back(item.Scalar());
+    }
+  } else {
+    top.Fail(field, "expected a file name or a list of them");
+  }
+  for (const std::string& text : items) {
+    if (IsGlob(text)) {
+      for (const fs::path& p : ResolveGlob(text, base_dir, top, field)) files.push_back(p);
+    } else {
+      files.push_back(ResolveFile(text, base_dir, top, field));
+    }
+  }
+  return files;
+}
+
+void ReadAxes(const YAML::Node& node, const sim::YamlFields& top, SweepSpec& spec) {
+  if (!node.IsMap()) top.Fail("set", "expected a mapping of key paths to lists of values");
+  for (const auto& entry : node) {
+    const std::string key = entry.first.as<std::string>();
+    const std::string field = "set." + key;
+    if (key.empty() || key.front() == '.' || key.back() == '.' ||
+        key.find("..") != std::string::npos) {
+      top.Fail(field, "not a key path");
+    }
+    if (key == "seed" || key == "world") {
+      top.Fail(field, "use the sweep's own seeds: / worlds: axes");
+    }
+    SweepAxis axis{key, {}};
+    if (!entry.second.IsSequence()) top.Fail(field, "expected a list of values");
+    if (entry.second.size() == 0) top.Fail(field, "empty list: give at least one value");
+    for (const auto& value : entry.second) axis.values.push_back(ScalarText(value));
+    spec.axes.push_back(axis);
+  }
+  if (spec.axes.empty()) top.Fail("set", "empty: give at least one key path");
+}
+
+std::vector<std::string> ReadNames(const YAML::Node& node, const sim::YamlFields& top,
+                                   const std::string& field) {
+  if (!node.IsSequence()) top.Fail(field, "expected a list");
+  std::vector<std::string> names;
+  for (const auto& item : node) {
+    if (!item.IsScalar()) top.Fail(field, "expected a list of names");
+    names.push_back(item.Scalar());
+  }
+  return names;
+}
+
+}  // namespace
+
+SweepSpec LoadSweepSpec(const fs::path& path) {
+  SweepSpec spec;
+  spec.source_file = path.string();
+  std::ifstream in(path, std::ios::binary);
+  if (!fs::is_regular_file(path) || !in) {
+    throw sim::ConfigError(path.string(), "", "no such sweep file (or not readable)");
+  }
+  std::stringstream text;
+  text << in.rdbuf();
+  spec.text = text.str();
+  YAML::Node root;
+  try {
+    root = YAML::Load(spec.text);
+  } catch (const YAML::Exception& e) {
+    throw sim::ConfigError(path.string(), "", std::string("not valid YAML: ") + e.what());
+  }
+  if (!root.IsMap()) throw sim::ConfigError(path.string(), "", "expected a mapping");
+  const fs::path base_dir = fs::absolute(path).parent_path();
+  sim::YamlFields top(root, spec.source_file, "");
+  spec.name = path.stem().string();
+  top.Get("name", &spec.name);
+  if (!top.Has("experiment")) top.Fail("experiment", "missing: name the base experiment");
+  spec.experiments = ReadFiles(top.Raw("experiment"), base_dir, top, "experiment");
+  if (top.Has("profiles"))
+    spec.profiles = ReadFiles(top.Raw("profiles"), base_dir, top, "profiles");
+  if (top.Has("seeds")) ReadSeeds(top.Raw("seeds"), top, spec);
+  if (top.Has("worlds")) ReadWorlds(top.Raw("worlds"), base_dir, top, spec);
+  if (top.Has("set")) ReadAxes(top.Raw("set"), top, spec);
+  if (top.Has("zip")) {
+    spec.zip = ReadNames(top.Raw("zip"), top, "zip");
+    std::size_t length = 0;
+    for (const std::string& key : spec.zip) {
+      const auto axis = std::find_if(spec.axes.begin(), spec.axes.end(),
+                                     [&](const SweepAxis& a) { return a.key == key; });
+      if (axis == spec.axes.end()) top.Fail("zip", "'" + key + "' is not a key of set:");
+      if (length != 0 && axis->values.size() != length) {
+        top.Fail("zip", "zipped axes need lists of equal length ('" + key + "' has " +
+                            std::to_string(axis->values.size()) + ", the first " +
+                            std::to_string(length) + ")");
+      }
+      length = axis->values.size();
+    }
+  }
+  if (top.Has("metrics")) spec.metrics = ReadNames(top.Raw("metrics"), top, "metrics");
+  if (top.Has("group_by")) {
+    spec.group_by = ReadNames(top.Raw("group_by"), top, "group_by");
+    for (const std::string& g : spec.group_by) {
+      if (g != "world" && g != "family" && g != "seed") {
+        top.Fail("group_by", "unknown column '" + g + "' (known: world, family, seed)");
+      }
+    }
+  }
+  top.Finish();
+  return spec;
+}
+
+}  // namespace plywood::eval

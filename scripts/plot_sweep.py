@@ -1,0 +1,87 @@
+#!/usr/bin/python3
+"""Plots of a finished sweep: one PNG per chosen metric, values of every run against the sweep's
+groups (set-axis values, plus group_by columns), as a box plot with each run as a dot and the mean
+with its 95 % confidence interval. Called by `plywood sweep` after collecting; usage:
+    scripts/plot_sweep.py SWEEP_DIR
+"""
+import csv
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def main(out_dir):
+    with open(os.path.join(out_dir, "sweep.json")) as f:
+        meta = json.load(f)
+    with open(os.path.join(out_dir, "summary.csv"), newline="") as f:
+        reader = csv.DictReader(f)
+        # The summary's group columns are those before "metric".
+        group_columns = reader.fieldnames[: reader.fieldnames.index("metric")]
+        summary = list(reader)
+    with open(os.path.join(out_dir, "results.csv"), newline="") as f:
+        results = list(csv.DictReader(f))
+    metrics = meta.get("metrics") or []
+    if not metrics:
+        print("plot_sweep: no metrics chosen in the sweep; no plots")
+        return
+    plots = os.path.join(out_dir, "plots")
+    os.makedirs(plots, exist_ok=True)
+
+    def label(row):
+        if not group_columns:
+            return "all runs"
+        # The last part of each key path keeps labels short ("sigma_m=0.01").
+        return "\n".join(f"{c.split('.')[-1]}={row[c]}" for c in group_columns)
+
+    groups = []
+    for row in results:
+        key = label(row)
+        if key not in groups:
+            groups.append(key)
+    for metric in metrics:
+        values = {g: [] for g in groups}
+        for row in results:
+            text = row.get(metric, "")
+            if text not in ("", None):
+                v = float(text)
+                if math.isfinite(v):
+                    values[label(row)].append(v)
+        stats = {label(r): r for r in summary if r["metric"] == metric}
+        width = max(4.0, 0.09 * max(len(line) for g in groups for line in g.split("\n")) * len(groups) + 1.5)
+        fig, ax = plt.subplots(figsize=(min(width, 30.0), 4.6))
+        data = [values[g] for g in groups]
+        ax.boxplot([d if d else [math.nan] for d in data], labels=groups, widths=0.5,
+                   showfliers=False)
+        for i, d in enumerate(data, start=1):
+            # Deterministic spread so the same results give the same picture.
+            xs = [i + 0.18 * (((k * 0.618034) % 1.0) - 0.5) for k in range(len(d))]
+            ax.plot(xs, d, "o", ms=3, alpha=0.6, color="tab:blue")
+            s = stats.get(groups[i - 1])
+            if s and s["n"] not in ("", "0"):
+                mean, lo, hi = float(s["mean"]), float(s["ci95_low"]), float(s["ci95_high"])
+                ax.errorbar([i + 0.3], [mean], yerr=[[mean - lo], [hi - mean]], fmt="D",
+                            color="tab:red", ms=5, capsize=4, label="mean, 95 % CI" if i == 1 else None)
+        ax.set_ylabel(metric)
+        if len(groups) > 6:
+            plt.setp(ax.get_xticklabels(), rotation=45, ha="right", fontsize=8)
+        ax.set_title(f"{meta.get('name', 'sweep')}: {metric}")
+        ax.grid(axis="y", alpha=0.3)
+        if any(data):
+            ax.legend(loc="best", fontsize=8)
+        fig.tight_layout()
+        path = os.path.join(plots, metric.replace("/", "_") + ".png")
+        fig.savefig(path, dpi=110)
+        plt.close(fig)
+        print(f"plot_sweep: {path}")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) != 2:
+        sys.exit("usage: plot_sweep.py SWEEP_DIR")
+    main(sys.argv[1])
