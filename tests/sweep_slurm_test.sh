@@ -125,7 +125,7 @@ echo "slurm: job array results byte-identical to the local sweep"
 out=$("$plywood" sweep "$work/sweep.yaml" --out "$work/cancelled" --slurm --max-parallel 1)
 job=$(echo "$out" | awk '/submitted job/ {print $3}')
 for _ in $(seq 300); do
-  n=$(find "$work/cancelled/runs" -mindepth 1 -maxdepth 1 -type d ! -name '.partial' | wc -l)
+  n=$(find "$work/cancelled/runs" -mindepth 1 -maxdepth 1 -type d ! -name '.partial' 2>/dev/null | wc -l || true)
   [ "$n" -ge 1 ] && break
   sleep 0.1
 done
