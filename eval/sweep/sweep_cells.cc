@@ -96,7 +96,7 @@ std::string CulpritField(const SweepSpec& spec, const SweepCell& cell,
 }  // namespace
 
 std::string StableHash(const std::string& text) {
-  std::uint64_t hash = 1469598103934665603ull;
+  std::uint64_t hash = 14695981039346656037ull;
   for (unsigned char c : text) {
     hash ^= c;
     hash *= 1099511628211ull;
