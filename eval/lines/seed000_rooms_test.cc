@@ -1,0 +1,63 @@
+// seed000_rooms.rig_at: the rig stands at the room's origin (the paper) or at robot.spawn (what a
+// sweep over generated worlds needs, since a generated world's origin may be inside furniture).
+
+#include "eval/lines/seed000_rooms.h"
+
+#include <gtest/gtest.h>
+
+#include "sim/config/experiment_config.h"
+#include "sim/runner/metrics.h"
+#include "tests/support/mujoco_test_support.h"
+
+namespace plywood::eval {
+namespace {
+
+sim::ExperimentConfig Config(const std::vector<std::string>& overrides) {
+  std::vector<std::string> all{"world=worlds/hall.xml", "seed000_rooms.scans=2",
+                               "lines.extractors=[split_and_merge]"};
+  all.insert(all.end(), overrides.begin(), overrides.end());
+  return sim::LoadExperimentConfig(testing::SourceRoot() / "experiments/seed000_rooms.yaml", all);
+}
+
+Seed000RoomResult Run(const sim::ExperimentConfig& config) {
+  const Seed000RoomsOptions options = ReadSeed000RoomsOptions(config);
+  const std::vector<Seed000Room> rooms = RoomsToRun(config, options);
+  EXPECT_EQ(rooms.size(), 1u);
+  return RunSeed000Room(config, rooms.front(), options.scans);
+}
+
+TEST(Seed000RoomsTest, RigAtASpawnOnTheOriginEqualsTheOrigin) {
+  const auto at_origin = Run(Config({"robot.spawn.x_m=0", "robot.spawn.y_m=0"}));
+  const auto at_spawn = Run(Config({"robot.spawn.x_m=0", "robot.spawn.y_m=0",
+                                    "robot.spawn.theta_deg=0", "seed000_rooms.rig_at=spawn"}));
+  ASSERT_EQ(at_origin.scans.size(), at_spawn.scans.size());
+  for (std::size_t s = 0; s < at_origin.scans.size(); ++s) {
+    ASSERT_EQ(at_origin.scans[s].points.points.size(), at_spawn.scans[s].points.points.size());
+    for (std::size_t i = 0; i < at_origin.scans[s].points.points.size(); ++i) {
+      EXPECT_EQ(at_origin.scans[s].points.points[i], at_spawn.scans[s].points.points[i]);
+    }
+  }
+}
+
+TEST(Seed000RoomsTest, RigAtSpawnSeesTheHallFromThere) {
+  // 1.5 m from two walls, turned 30 deg: the hall's four walls are all within the 4 m cut from
+  // here (the farthest, 5.5 m away at x = +4, is not), and the sensor frame turns with the rig.
+  const auto result = Run(Config({"robot.spawn.x_m=-2.5", "robot.spawn.y_m=-2.5",
+                                  "robot.spawn.theta_deg=30", "seed000_rooms.rig_at=spawn"}));
+  ASSERT_FALSE(result.scores.empty());
+  const auto& score = result.scores.front().score;
+  EXPECT_GE(result.WallsVisible(), 2.0);
+  EXPECT_GE(score.Recall(), 0.9);
+  EXPECT_GE(score.Precision(), 0.9);
+  // In the front sensor's frame the nearest wall (x = -4, 1.5 m behind-left) is not on the x axis.
+  bool saw_close_point = false;
+  for (const auto& p : result.scans.front().points.points) saw_close_point |= p.norm() < 1.8;
+  EXPECT_TRUE(saw_close_point);
+}
+
+TEST(Seed000RoomsTest, RigAtRejectsAnythingElse) {
+  EXPECT_THROW(ReadSeed000RoomsOptions(Config({"seed000_rooms.rig_at=corner"})), std::exception);
+}
+
+}  // namespace
+}  // namespace plywood::eval
