@@ -19,7 +19,7 @@ sim::ExperimentConfig Config(const std::vector<std::string>& overrides) {
   return sim::LoadExperimentConfig(testing::SourceRoot() / "experiments/seed000_rooms.yaml", all);
 }
 
-Seed000RoomResult Run(const sim::ExperimentConfig& config) {
+Seed000RoomResult RunRoom(const sim::ExperimentConfig& config) {
   const Seed000RoomsOptions options = ReadSeed000RoomsOptions(config);
   const std::vector<Seed000Room> rooms = RoomsToRun(config, options);
   EXPECT_EQ(rooms.size(), 1u);
@@ -27,9 +27,9 @@ Seed000RoomResult Run(const sim::ExperimentConfig& config) {
 }
 
 TEST(Seed000RoomsTest, RigAtASpawnOnTheOriginEqualsTheOrigin) {
-  const auto at_origin = Run(Config({"robot.spawn.x_m=0", "robot.spawn.y_m=0"}));
-  const auto at_spawn = Run(Config({"robot.spawn.x_m=0", "robot.spawn.y_m=0",
-                                    "robot.spawn.theta_deg=0", "seed000_rooms.rig_at=spawn"}));
+  const auto at_origin = RunRoom(Config({"robot.spawn.x_m=0", "robot.spawn.y_m=0"}));
+  const auto at_spawn = RunRoom(Config({"robot.spawn.x_m=0", "robot.spawn.y_m=0",
+                                        "robot.spawn.theta_deg=0", "seed000_rooms.rig_at=spawn"}));
   ASSERT_EQ(at_origin.scans.size(), at_spawn.scans.size());
   for (std::size_t s = 0; s < at_origin.scans.size(); ++s) {
     ASSERT_EQ(at_origin.scans[s].points.points.size(), at_spawn.scans[s].points.points.size());
@@ -42,8 +42,8 @@ TEST(Seed000RoomsTest, RigAtASpawnOnTheOriginEqualsTheOrigin) {
 TEST(Seed000RoomsTest, RigAtSpawnSeesTheHallFromThere) {
   // 1.5 m from two walls, turned 30 deg: the hall's four walls are all within the 4 m cut from
   // here (the farthest, 5.5 m away at x = +4, is not), and the sensor frame turns with the rig.
-  const auto result = Run(Config({"robot.spawn.x_m=-2.5", "robot.spawn.y_m=-2.5",
-                                  "robot.spawn.theta_deg=30", "seed000_rooms.rig_at=spawn"}));
+  const auto result = RunRoom(Config({"robot.spawn.x_m=-2.5", "robot.spawn.y_m=-2.5",
+                                      "robot.spawn.theta_deg=30", "seed000_rooms.rig_at=spawn"}));
   ASSERT_FALSE(result.scores.empty());
   const auto& score = result.scores.front().score;
   EXPECT_GE(result.WallsVisible(), 2.0);
