@@ -2,6 +2,7 @@
 //   plywood run EXPERIMENT.yaml [--out DIR] [--seed N] [--set key.path=value]...
 //   plywood bench [--seconds S] [--world PATH]
 //   plywood replay LOG --extractor NAME [--out DIR] [--skip-bad]
+//   plywood score trajectory|lines|grid RUN_DIR FILE [--out FILE.json] [...]
 // Exit codes: 0 success, 1 a failure during the run, 2 bad input (config, files, usage).
 
 #include <cstdio>
@@ -15,6 +16,7 @@
 #include "apps/replay_command.h"
 #include "apps/run_command.h"
 #include "apps/sweep_command.h"
+#include "apps/score_command.h"
 #include "apps/train_command.h"
 #include "sim/config/config_error.h"
 
@@ -28,6 +30,10 @@ constexpr const char* kUsage =
     "      print the real-time factor and ray throughput of a P3-DX with LMS 200 + 16 sonars\n"
     "  replay LOG --extractor NAME [--out DIR] [--skip-bad]\n"
     "      run a line extractor on every scan of a CARMEN log (plain or .gz) and score it\n"
+    "  score trajectory|lines|grid RUN_DIR FILE [--out FILE.json] [--name NAME]\n"
+    "        [--resolution M --origin X,Y [--threshold P]]\n"
+    "      score a trajectory (TUM or CSV), per-scan line segments or an occupancy grid (PNG,\n"
+    "      PGM) computed elsewhere against a finished run's ground truth\n"
     "  train sonar-net [--out FILE] [--rooms N] [--poses N] [--epochs N] [--seed N]\n"
     "      train seed 001's sonar interpretation network on simulated rooms\n";
 
@@ -42,6 +48,7 @@ int Dispatch(const std::vector<std::string>& args) {
   if (args[0] == "replay") return plywood::apps::ReplayCommand(rest);
   if (args[0] == "train") return plywood::apps::TrainCommand(rest);
   if (args[0] == "sweep") return plywood::apps::SweepCommand(rest);
+  if (args[0] == "score") return plywood::apps::ScoreCommand(rest);
   throw plywood::apps::UsageError{"unknown command '" + args[0] + "' (try plywood --help)"};
 }
 

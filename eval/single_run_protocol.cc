@@ -7,6 +7,7 @@
 #include <string>
 
 #include "eval/lines/line_scan_scorer.h"
+#include "eval/lines/lines_csv.h"
 #include "eval/sonar_map/sonar_map_scorer.h"
 #include "render/overlay.h"
 #include "render/snapshot.h"
@@ -100,6 +101,7 @@ int SingleRunProtocol(const ProtocolContext& context) {
   }
   if (!line_scores.empty()) {
     std::ofstream(out_dir + "/timing.json") << eval::LineTimingJson(line_scores);
+    WriteLinesCsv(context.out_dir / "lines.csv", LinesCsvRows(line_scores));
   }
   if (!quiet) PrintSummary(runner, out_dir);
   if (!quiet) {

@@ -10,13 +10,25 @@ namespace plywood::eval {
 
 TruthScan MakeTruthScan(std::span<const sim::LaserRecord* const> records,
                         const sim::GroundTruthWalls& walls, double range_cut_m) {
+  std::vector<msgs::Pose2D> poses;
+  for (const sim::LaserRecord* record : records) {
+    poses.push_back(record->X_WR_truth * record->scan.X_RS);
+  }
+  return MakeTruthScanAt(records, poses, walls, range_cut_m);
+}
+
+TruthScan MakeTruthScanAt(std::span<const sim::LaserRecord* const> records,
+                          std::span<const msgs::Pose2D> poses, const sim::GroundTruthWalls& walls,
+                          double range_cut_m) {
   TruthScan out;
   if (records.empty()) return out;
-  const msgs::Pose2D X_WS0 = records[0]->X_WR_truth * records[0]->scan.X_RS;
+  if (poses.size() != records.size()) throw std::invalid_argument("X_WS: one pose per record");
+  const msgs::Pose2D X_WS0 = poses[0];
   std::vector<msgs::LaserScan> scans;
   std::vector<double> offsets;
-  for (const sim::LaserRecord* record : records) {
-    const msgs::Pose2D X_WS = record->X_WR_truth * record->scan.X_RS;
+  for (std::size_t k = 0; k < records.size(); ++k) {
+    const sim::LaserRecord* record = records[k];
+    const msgs::Pose2D& X_WS = poses[k];
     if (std::hypot(X_WS.x_m - X_WS0.x_m, X_WS.y_m - X_WS0.y_m) > 1e-3) {
       throw std::invalid_argument("records: combined scans must share the sensor origin");
     }
@@ -49,6 +61,12 @@ TruthScan MakeTruthScan(std::span<const sim::LaserRecord* const> records,
   return out;
 }
 
+perception::LineScore ScoreScanLines(std::span<const perception::LineSegment> lines,
+                                     const TruthScan& scan,
+                                     const perception::LineScoringOptions& options) {
+  return perception::ScoreScan(lines, scan.truth, static_cast<long>(scan.points.size()), options);
+}
+
 std::vector<ExtractorScore> ScoreExtractors(std::span<const TruthScan> scans,
                                             const sim::LinesConfig& config) {
   std::vector<ExtractorScore> scores;
@@ -59,10 +77,15 @@ std::vector<ExtractorScore> ScoreExtractors(std::span<const TruthScan> scans,
     double seconds = 0.0;
     for (const TruthScan& scan : scans) {
       const auto start = std::chrono::steady_clock::now();
-      const std::vector<perception::LineSegment> lines = extractor->Extract(scan.points);
+      std::vector<perception::LineSegment> lines = extractor->Extract(scan.points);
       seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      result.score.Add(perception::ScoreScan(
-          lines, scan.truth, static_cast<long>(scan.points.size()), config.scoring));
+      result.score.Add(ScoreScanLines(lines, scan, config.scoring));
+      ScanLines found;
+      for (const perception::LineSegment& line : lines) {
+        found.matched_truth.push_back(perception::MatchSegment(line, scan.truth, config.scoring));
+      }
+      found.segments = std::move(lines);
+      result.scans.push_back(std::move(found));
     }
     result.us_per_scan = scans.empty() ? 0.0 : 1e6 * seconds / static_cast<double>(scans.size());
     scores.push_back(std::move(result));

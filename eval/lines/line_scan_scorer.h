@@ -27,13 +27,33 @@ struct TruthScan {
 TruthScan MakeTruthScan(std::span<const sim::LaserRecord* const> records,
                         const sim::GroundTruthWalls& walls, double range_cut_m);
 
+// Same, with each record's true sensor pose X_WS given (as read back from laser_scans.csv) instead
+// of computed from its X_WR_truth and scan.X_RS.
+TruthScan MakeTruthScanAt(std::span<const sim::LaserRecord* const> records,
+                          std::span<const msgs::Pose2D> X_WS, const sim::GroundTruthWalls& walls,
+                          double range_cut_m);
+
+// What an extractor found in one scan: its segments (sensor frame) and the index of the truth
+// segment each matched (perception::MatchSegment; -1 for none), for lines.csv.
+struct ScanLines {
+  std::vector<perception::LineSegment> segments;
+  std::vector<int> matched_truth;
+};
+
 // Score of one extractor over many scans, and its wall-clock cost (never written to
 // metrics.json: reruns must give the same bytes).
 struct ExtractorScore {
   std::string name;
   perception::LineScore score;
   double us_per_scan = 0.0;
+  std::vector<ScanLines> scans;  // in scan order
 };
+
+// Scores the segments found in one scan, as every line scorer of Plywood does: ScoreScan against
+// the scan's truth, with the number of used points the extractor was given.
+perception::LineScore ScoreScanLines(std::span<const perception::LineSegment> lines,
+                                     const TruthScan& scan,
+                                     const perception::LineScoringOptions& options);
 
 // Runs each of config.extractors on every scan and scores it (perception/lines/line_scoring.h).
 std::vector<ExtractorScore> ScoreExtractors(std::span<const TruthScan> scans,

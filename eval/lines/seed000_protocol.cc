@@ -5,7 +5,9 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "eval/lines/lines_csv.h"
 #include "eval/lines/seed000_rooms.h"
+#include "eval/score/csv_table.h"
 #include "render/overlay.h"
 #include "render/png_image.h"
 #include "render/world_to_pixel.h"
@@ -65,6 +67,8 @@ int Seed000Protocol(const ProtocolContext& context) {
   sim::Metrics metrics;
   std::vector<eval::ExtractorScore> total;
   long total_scans = 0;
+  std::vector<LinesCsvRow> line_rows;
+  std::string walls_csv = "room,segment,geom_id,face,ax_m,ay_m,bx_m,by_m\n";
   std::string csv =
       "room,range_cut_m,walls_visible,paper_lines,extractor,lines_per_scan,points_per_scan,"
       "reduction,recall,precision,sigma_r_m,sigma_alpha_deg\n";
@@ -78,6 +82,14 @@ int Seed000Protocol(const ProtocolContext& context) {
     const eval::Seed000RoomResult result = eval::RunSeed000Room(config, room, options.scans);
     const std::string stem = room.world_path.stem().string();
     const std::string key = "seed000." + stem;
+    for (const LinesCsvRow& row : LinesCsvRows(result.scores, stem)) line_rows.push_back(row);
+    for (std::size_t i = 0; i < result.rig.walls.segments.size(); ++i) {
+      const sim::WallSegment& w = result.rig.walls.segments[i];
+      walls_csv += CsvField(stem) + "," + std::to_string(i) + "," + std::to_string(w.geom_id) +
+                   "," + std::to_string(w.face_index) + "," + sim::FormatNumber(w.a.x()) + "," +
+                   sim::FormatNumber(w.a.y()) + "," + sim::FormatNumber(w.b.x()) + "," +
+                   sim::FormatNumber(w.b.y()) + "\n";
+    }
     metrics.Set(key + ".walls_visible", result.WallsVisible());
     metrics.Set(key + ".points_per_scan", result.PointsPerScan());
     metrics.Set(key + ".range_cut_m", room.range_cut_m);
@@ -125,6 +137,8 @@ int Seed000Protocol(const ProtocolContext& context) {
   WriteText(out / "metrics.json", metrics.ToJson());
   WriteText(out / "rooms.csv", csv);
   WriteText(out / "timing.json", eval::LineTimingJson(total));
+  WriteText(out / "walls.csv", walls_csv);
+  WriteLinesCsv(out / "lines.csv", line_rows, /*with_room=*/true);
   if (!context.quiet) {
     std::printf("\nall rooms (%ld scan pairs)\n%-16s %7s %7s %9s %11s %9s %9s\n", total_scans,
                 "extractor", "recall", "prec", "sigma_r_m", "sigma_a_deg", "pts/line", "us/scan");

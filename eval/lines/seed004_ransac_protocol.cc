@@ -5,6 +5,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "eval/lines/lines_csv.h"
 #include "perception/lines/line_scoring.h"
 #include "perception/lines/ransac_extractor.h"
 #include "render/overlay.h"
@@ -73,6 +74,7 @@ int Seed004RansacProtocol(const ProtocolContext& context) {
   std::filesystem::create_directories(out);
   const perception::RansacExtractor extractor(ransac);
   sim::Metrics metrics;
+  std::vector<LinesCsvRow> line_rows;  // lines.csv: the whole run is scan 0, in the world frame
   if (!context.quiet)
     std::printf("\nseed 004 RANSAC on the accumulated cloud (%s)\n", config.name.c_str());
   for (const bool odometry : {false, true}) {
@@ -98,6 +100,7 @@ int Seed004RansacProtocol(const ProtocolContext& context) {
     for (std::size_t l = 0; l < lines.size(); ++l) {
       const int face = perception::MatchSegment(lines[l], truth, scoring);
       matched[l] = face >= 0;
+      line_rows.push_back({"", 0, name, lines[l], face, 0});
       int non_wall = 0;
       for (int i : inliers[l]) non_wall += cloud.hit_segment[i] < 0;
       const double fraction = inliers[l].empty() ? 0.0 : double(non_wall) / inliers[l].size();
@@ -145,6 +148,7 @@ int Seed004RansacProtocol(const ProtocolContext& context) {
           score.SigmaRM(), false_lines, false_on_legs);
     }
   }
+  WriteLinesCsv(out / "lines.csv", line_rows);
   std::ofstream(out / "config.yaml") << sim::ExperimentConfigToYaml(context.config);
   std::ofstream(out / "metrics.json") << metrics.ToJson();
   if (!context.quiet) std::printf("%-9s %s\n", "results", out.c_str());

@@ -1,5 +1,7 @@
 #include "eval/sonar_map/sonar_ground_truth.h"
 
+#include <algorithm>
+
 namespace plywood::eval {
 
 bool ReachableSpace::IsFree(const Eigen::Vector2d& p_W) const {
@@ -31,6 +33,39 @@ ReachableSpace ComputeReachableSpace(const sim::OccupancyRaster& raster,
     }
   }
   return space;
+}
+
+std::unique_ptr<OccupancyTruth> MakeOccupancyTruth(const mjModel* model,
+                                                   const Eigen::Vector2d& start_W) {
+  auto truth = std::make_unique<OccupancyTruth>();
+  sim::OccupancyRasterOptions options;
+  options.resolution_m = 0.01;
+  truth->raster = sim::RasteriseOccupancy(model, options);
+  truth->space = ComputeReachableSpace(truth->raster, start_W);
+  truth->x0 = truth->raster.width;
+  truth->y0 = truth->raster.height;
+  for (int iy = 0; iy < truth->raster.height; ++iy)
+    for (int ix = 0; ix < truth->raster.width; ++ix)
+      if (truth->CellFree(ix, iy)) {
+        truth->x0 = std::min(truth->x0, ix);
+        truth->x1 = std::max(truth->x1, ix);
+        truth->y0 = std::min(truth->y0, iy);
+        truth->y1 = std::max(truth->y1, iy);
+      }
+  return truth;
+}
+
+OccupancyError ScoreOccupancy(const OccupancyTruth& truth,
+                              const std::function<bool(const Eigen::Vector2d&)>& map_says_free) {
+  OccupancyError error;
+  error.cell_area_m2 = truth.raster.resolution_m * truth.raster.resolution_m;
+  for (int iy = truth.y0; iy <= truth.y1; ++iy)
+    for (int ix = truth.x0; ix <= truth.x1; ++ix) {
+      const bool free = truth.CellFree(ix, iy);
+      error.total_cells += free;
+      error.error_cells += free != map_says_free(truth.raster.CellCentre(ix, iy));
+    }
+  return error;
 }
 
 }  // namespace plywood::eval

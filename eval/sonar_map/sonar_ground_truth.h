@@ -1,6 +1,10 @@
 #pragma once
 
+#include <mujoco/mujoco.h>
+
 #include <Eigen/Core>
+#include <functional>
+#include <memory>
 #include <vector>
 
 #include "sim/world/occupancy_raster.h"
@@ -18,5 +22,35 @@ struct ReachableSpace {
 
 ReachableSpace ComputeReachableSpace(const sim::OccupancyRaster& raster,
                                      const Eigen::Vector2d& start_W);
+
+// What seed 001's maps are scored against: the world rasterised at 1 cm, the space reachable from
+// the spawn point, and the raster cells of its bounding box (the scored area).
+struct OccupancyTruth {
+  sim::OccupancyRaster raster;
+  ReachableSpace space;                  // points into `raster`: keep the object where it is
+  int x0 = 0, y0 = 0, x1 = -1, y1 = -1;  // raster cells of the reachable space's bounding box
+
+  bool CellFree(int ix, int iy) const {
+    return space.free[static_cast<std::size_t>(iy) * raster.width + ix] != 0;
+  }
+};
+
+// @throws std::invalid_argument when the model has no static geometry to rasterise.
+std::unique_ptr<OccupancyTruth> MakeOccupancyTruth(const mjModel* model,
+                                                   const Eigen::Vector2d& start_W);
+
+// A map's occupancy error e = A_e / A_tot: A_tot the reachable free area, A_e the area of the
+// scored box whose free / not-free label differs from the map's, sampled at the truth's cell
+// centres. `map_says_free(p_W)` is the map's label of a world point.
+struct OccupancyError {
+  double total_cells = 0.0;
+  double error_cells = 0.0;
+  double cell_area_m2 = 0.0;
+  double Error() const { return total_cells > 0 ? error_cells / total_cells : 1.0; }
+  double AreaTotalM2() const { return total_cells * cell_area_m2; }
+  double AreaErrorM2() const { return error_cells * cell_area_m2; }
+};
+OccupancyError ScoreOccupancy(const OccupancyTruth& truth,
+                              const std::function<bool(const Eigen::Vector2d&)>& map_says_free);
 
 }  // namespace plywood::eval

@@ -15,33 +15,6 @@
 namespace plywood::eval {
 namespace {
 
-struct Truth {
-  sim::OccupancyRaster raster;
-  ReachableSpace space;
-  int x0 = 0, y0 = 0, x1 = -1, y1 = -1;  // raster cells of the room's bounding box
-};
-
-// The raster is kept in a unique object so ReachableSpace's pointer stays valid.
-std::unique_ptr<Truth> MakeTruth(const sim::ExperimentRunner& runner) {
-  auto truth = std::make_unique<Truth>();
-  sim::OccupancyRasterOptions options;
-  options.resolution_m = 0.01;
-  truth->raster = sim::RasteriseOccupancy(runner.scene().model(), options);
-  const auto& spawn = runner.config().spawn;
-  truth->space = ComputeReachableSpace(truth->raster, {spawn.x_m, spawn.y_m});
-  truth->x0 = truth->raster.width;
-  truth->y0 = truth->raster.height;
-  for (int iy = 0; iy < truth->raster.height; ++iy)
-    for (int ix = 0; ix < truth->raster.width; ++ix)
-      if (truth->space.free[static_cast<std::size_t>(iy) * truth->raster.width + ix]) {
-        truth->x0 = std::min(truth->x0, ix);
-        truth->x1 = std::max(truth->x1, ix);
-        truth->y0 = std::min(truth->y0, iy);
-        truth->y1 = std::max(truth->y1, iy);
-      }
-  return truth;
-}
-
 bool GridFree(const perception::LogOddsGrid& grid, const Eigen::Vector2d& p) {
   const Eigen::Vector2i c = grid.CellAt(p);
   return c.x() < 0 || grid.LogOdds(c.x(), c.y()) <= 0.0;
@@ -70,23 +43,18 @@ void Line(render::RgbImage& image, Eigen::Vector2d a, Eigen::Vector2d b,
 bool AddSonarMapMetrics(sim::ExperimentRunner& runner) {
   const auto* explorer = dynamic_cast<const perception::SonarExplorer*>(runner.controller());
   if (explorer == nullptr) return false;
-  const auto truth = MakeTruth(runner);
+  const auto& spawn = runner.config().spawn;
+  const auto truth = MakeOccupancyTruth(runner.scene().model(), {spawn.x_m, spawn.y_m});
   const perception::CognitiveMap map = explorer->Map();
-  double total = 0.0, map_errors = 0.0, grid_errors = 0.0;
-  for (int iy = truth->y0; iy <= truth->y1; ++iy)
-    for (int ix = truth->x0; ix <= truth->x1; ++ix) {
-      const Eigen::Vector2d p = truth->raster.CellCentre(ix, iy);
-      const bool free = truth->space.free[static_cast<std::size_t>(iy) * truth->raster.width + ix];
-      total += free;
-      map_errors += free != MapFree(map, p);
-      grid_errors += free != GridFree(explorer->grid(), p);
-    }
+  const OccupancyError map_error =
+      ScoreOccupancy(*truth, [&](const Eigen::Vector2d& p) { return MapFree(map, p); });
+  const OccupancyError grid_error = ScoreOccupancy(
+      *truth, [&](const Eigen::Vector2d& p) { return GridFree(explorer->grid(), p); });
   sim::Metrics& m = runner.mutable_record().metrics;
-  const double cell = truth->raster.resolution_m * truth->raster.resolution_m;
-  m.Set("occupancy.error", total > 0 ? map_errors / total : 1.0);
-  m.Set("occupancy.grid_error", total > 0 ? grid_errors / total : 1.0);
-  m.Set("occupancy.area_total_m2", total * cell);
-  m.Set("occupancy.area_error_m2", map_errors * cell);
+  m.Set("occupancy.error", map_error.Error());
+  m.Set("occupancy.grid_error", grid_error.Error());
+  m.Set("occupancy.area_total_m2", map_error.AreaTotalM2());
+  m.Set("occupancy.area_error_m2", map_error.AreaErrorM2());
   m.Set("occupancy.partitions", static_cast<double>(map.partitions.partitions().size()));
   m.Set("occupancy.graph_nodes", static_cast<double>(map.graph.nodes.size()));
   m.Set("occupancy.graph_edges", static_cast<double>(map.graph.arcs.size()));
@@ -109,7 +77,8 @@ void WriteSonarMap(const sim::ExperimentRunner& runner, const std::string& out_d
 void WriteSonarMapPictures(const sim::ExperimentRunner& runner, const std::string& out_dir) {
   const auto* explorer = dynamic_cast<const perception::SonarExplorer*>(runner.controller());
   if (explorer == nullptr) return;
-  const auto truth = MakeTruth(runner);
+  const auto& spawn = runner.config().spawn;
+  const auto truth = MakeOccupancyTruth(runner.scene().model(), {spawn.x_m, spawn.y_m});
   const perception::CognitiveMap map = explorer->Map();
   // 1 px per cm, the room's box plus 0.3 m on every side.
   const int margin = 30;

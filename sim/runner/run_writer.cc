@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "perception/logs/carmen_log.h"
+#include "perception/logs/tum_trajectory.h"
 #include "sim/runner/metrics.h"
 
 namespace plywood::sim {
@@ -73,6 +74,17 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
       out << '\n';
     }
   }
+  // The same poses as TUM files, one per trajectory, for tools in any language.
+  for (std::size_t e = 0; e <= record.estimator_names.size(); ++e) {
+    const std::string name = e == 0 ? "truth" : record.estimator_names[e - 1];
+    OutputFile file(dir, "trajectory." + name + ".tum", &written);
+    file.out() << "# " << name
+               << ": timestamp tx ty tz qx qy qz qw (TUM); heading = 2 atan2(qz, qw) exactly\n";
+    for (const auto& sample : record.trajectory) {
+      perception::WriteTumPose(file.out(), sample.time_s,
+                               e == 0 ? sample.truth : sample.estimates[e - 1]);
+    }
+  }
   OutputFile(dir, "metrics.json", &written).out() << record.metrics.ToJson();
   {
     OutputFile file(dir, "walls.csv", &written);
@@ -83,11 +95,8 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
                  << N(s.a.y()) << ',' << N(s.b.x()) << ',' << N(s.b.y()) << '\n';
     }
   }
-  if (!config.output.sensor_logs) return written;
-
-  if (config.sensors.laser) {
+  if (config.sensors.laser && config.output.sensor_logs) {
     OutputFile log(dir, "laser.log", &written);
-    OutputFile hits(dir, "laser_hits.csv", &written);
     log.out()
         << "# Plywood simulated laser log, CARMEN FLASER format: x y theta is the true laser\n"
            "# pose, odom_x odom_y odom_theta the encoder-odometry laser pose.\n";
@@ -97,18 +106,45 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
       perception::WriteCarmenParam(log.out(), "robot_frontlaser_offset",
                                    N(record.laser.front().scan.X_RS.x_m));
     }
-    hits.out() << "# time_s, then per beam the ground-truth segment it hit (walls.csv), -1 none\n";
     for (const auto& laser : record.laser) {
       perception::CarmenLaserRecord carmen;
       carmen.scan = laser.scan;
       carmen.X_WL = laser.X_WR_truth * laser.scan.X_RS;
       carmen.X_WR_odom = laser.X_WR_odometry * laser.scan.X_RS;
       perception::WriteCarmenLaser(log.out(), carmen);
+    }
+  }
+  // With a lines: section, the scans at full precision (laser.log keeps millimetres and
+  // micro-radians) and their hits: `plywood score lines` rebuilds every scan's truth from them.
+  const bool lines_truth = config.sensors.laser && config.lines.given;
+  if (config.sensors.laser && (config.output.sensor_logs || lines_truth)) {
+    OutputFile hits(dir, "laser_hits.csv", &written);
+    hits.out() << "# time_s, then per beam the ground-truth segment it hit (walls.csv), -1 none\n";
+    for (const auto& laser : record.laser) {
       hits.out() << N(laser.scan.time_s);
       for (int id : laser.hit_segment_ids) hits.out() << ',' << id;
       hits.out() << '\n';
     }
   }
+  if (lines_truth) {
+    OutputFile file(dir, "laser_scans.csv", &written);
+    file.out() << "time_s,sensor_x_m,sensor_y_m,sensor_theta_rad,angle_min_rad,"
+                  "angle_increment_rad,range_min_m,range_max_m";
+    const std::size_t beams = record.laser.empty() ? 0 : record.laser.front().scan.ranges_m.size();
+    for (std::size_t i = 0; i < beams; ++i) file.out() << ",range_" << i << "_m";
+    file.out() << '\n';
+    for (const auto& laser : record.laser) {
+      const msgs::LaserScan& scan = laser.scan;
+      const msgs::Pose2D X_WS = laser.X_WR_truth * scan.X_RS;
+      file.out() << N(scan.time_s) << ',' << N(X_WS.x_m) << ',' << N(X_WS.y_m) << ','
+                 << N(X_WS.theta_rad) << ',' << N(scan.angle_min_rad) << ','
+                 << N(scan.angle_increment_rad) << ',' << N(scan.range_min_m) << ','
+                 << N(scan.range_max_m);
+      for (double r : scan.ranges_m) file.out() << ',' << N(r);
+      file.out() << '\n';
+    }
+  }
+  if (!config.output.sensor_logs) return written;
   if (config.sensors.sonar) WriteRing(OutputFile(dir, "sonar.csv", &written).out(), record.sonar);
   if (config.sensors.ir_ring) {
     WriteRing(OutputFile(dir, "ir_ring.csv", &written).out(), record.ir_ring);

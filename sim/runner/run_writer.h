@@ -10,10 +10,12 @@
 namespace plywood::sim {
 
 // Writes a finished run to `dir` (created if needed) in the formats of docs/run_outputs.md:
-// config.yaml, trajectory.csv, metrics.json, walls.csv, and with output.sensor_logs laser.log
-// (CARMEN FLASER), laser_hits.csv, sonar.csv, ir_ring.csv, ir_scanner.csv, encoders.csv, gyro.csv,
-// bumpers.csv. Numbers are written in shortest round-trip form, so equal runs give equal bytes.
-// Returns the names of the files written. @throws std::runtime_error naming a file it cannot write.
+// config.yaml, trajectory.csv, trajectory.<truth|estimator>.tum, metrics.json, walls.csv, with
+// output.sensor_logs laser.log (CARMEN FLASER), laser_hits.csv, sonar.csv, ir_ring.csv,
+// ir_scanner.csv, encoders.csv, gyro.csv, bumpers.csv, and with a lines: section laser_hits.csv
+// and laser_scans.csv (what `plywood score lines` rebuilds each scan's truth from). Numbers are
+// written in shortest round-trip form, so equal runs give equal bytes. Returns the names of the
+// files written. @throws std::runtime_error naming a file it cannot write.
 std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const RunRecord& record,
                                          const std::filesystem::path& dir);
 

@@ -1,0 +1,105 @@
+#include "eval/score/grid_image.h"
+
+#include <gtest/gtest.h>
+#include <png.h>
+
+#include <cstdint>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "sim/config/config_error.h"
+#include "tests/support/mujoco_test_support.h"
+
+namespace plywood::eval {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path Dir() {
+  static const fs::path dir = testing::MakeTempDir("grid_image_test");
+  return dir;
+}
+
+fs::path WritePng(const std::string& name, png_uint_32 format, int width, int height,
+                  const void* pixels) {
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  image.width = width;
+  image.height = height;
+  image.format = format;
+  const fs::path path = Dir() / name;
+  EXPECT_TRUE(png_image_write_to_file(&image, path.c_str(), 0, pixels, 0, nullptr));
+  return path;
+}
+
+std::string ErrorOf(const fs::path& path) {
+  try {
+    ReadGridImage(path);
+  } catch (const sim::ConfigError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(GridImageTest, PngValuesAreReadAsStored) {
+  const std::uint8_t grey[] = {0, 128, 255, 205};  // 2 x 2
+  GridImage image = ReadGridImage(WritePng("grey.png", PNG_FORMAT_GRAY, 2, 2, grey));
+  ASSERT_EQ(image.width, 2);
+  ASSERT_EQ(image.height, 2);
+  EXPECT_EQ(image.At(0, 0), 0.0);
+  EXPECT_EQ(image.At(1, 0), 128 / 255.0);
+  EXPECT_EQ(image.At(0, 1), 1.0);
+  EXPECT_EQ(image.At(1, 1), 205 / 255.0);
+  // Transparent white stays white (libpng would composite it onto black); colour is averaged.
+  const std::uint8_t rgba[] = {255, 255, 255, 0, 30, 60, 90, 255};
+  image = ReadGridImage(WritePng("rgba.png", PNG_FORMAT_RGBA, 2, 1, rgba));
+  EXPECT_EQ(image.At(0, 0), 1.0);
+  EXPECT_EQ(image.At(1, 0), 60 / 255.0);
+  // 16 bits, no gamma curve on the way.
+  const std::uint16_t wide[] = {0, 32768, 65535};
+  image = ReadGridImage(WritePng("wide.png", PNG_FORMAT_LINEAR_Y, 3, 1, wide));
+  EXPECT_EQ(image.At(1, 0), 32768 / 65535.0);
+  EXPECT_EQ(image.At(2, 0), 1.0);
+}
+
+TEST(GridImageTest, PgmPlainAndRawWithCommentsAndWideSamples) {
+  std::ofstream(Dir() / "plain.pgm") << "P2\n# made by hand\n3 1 # width height\n4\n0 2\n4\n";
+  GridImage image = ReadGridImage(Dir() / "plain.pgm");
+  EXPECT_EQ(image.brightness, (std::vector<double>{0.0, 0.5, 1.0}));
+  {
+    std::ofstream raw(Dir() / "raw.pgm", std::ios::binary);
+    raw << "P5 2 1 65535\n";
+    raw.put('\x80').put('\x00').put('\xff').put('\xff');
+  }
+  image = ReadGridImage(Dir() / "raw.pgm");
+  EXPECT_EQ(image.brightness, (std::vector<double>{32768 / 65535.0, 1.0}));
+}
+
+TEST(GridImageTest, BrokenImagesAreNamed) {
+  const std::vector<std::uint8_t> grey(64 * 64, 200);
+  const fs::path good = WritePng("cut.png", PNG_FORMAT_GRAY, 64, 64, grey.data());
+  const auto size = fs::file_size(good);
+  fs::resize_file(good, size - 30);  // the image data and the end are gone
+  EXPECT_NE(ErrorOf(good).find("cut.png: PNG: truncated or corrupt (libpng: "), std::string::npos)
+      << ErrorOf(good);
+  const std::uint16_t rgba16[] = {0, 0, 0, 65535};
+  const fs::path alpha16 = WritePng("alpha16.png", PNG_FORMAT_LINEAR_RGB_ALPHA, 1, 1, rgba16);
+  EXPECT_NE(ErrorOf(alpha16).find("alpha16.png: PNG: 16-bit with an alpha channel"),
+            std::string::npos);
+  std::ofstream(Dir() / "zero.pgm") << "P2\n0 3\n255\n";
+  EXPECT_NE(ErrorOf(Dir() / "zero.pgm").find("zero.pgm:2: width: expected a whole number in 1.."),
+            std::string::npos);
+  std::ofstream(Dir() / "short.pgm") << "P2\n2 2\n255\n1 2 3\n";
+  EXPECT_NE(ErrorOf(Dir() / "short.pgm").find("short.pgm:4: pixel 3: missing"), std::string::npos)
+      << ErrorOf(Dir() / "short.pgm");
+  std::ofstream(Dir() / "long.pgm") << "P2\n1 1\n255\n1 2\n";
+  EXPECT_NE(ErrorOf(Dir() / "long.pgm").find("long.pgm:4: pixels: more samples"),
+            std::string::npos);
+  std::ofstream(Dir() / "empty.pgm") << "";
+  EXPECT_NE(ErrorOf(Dir() / "empty.pgm").find("empty.pgm: empty file"), std::string::npos);
+  EXPECT_NE(ErrorOf(Dir() / "absent.pgm").find("absent.pgm: no such file"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace plywood::eval

@@ -1,0 +1,69 @@
+#include "eval/score/lines_score.h"
+
+#include <cstdio>
+
+#include "eval/lines/line_scan_scorer.h"
+#include "eval/lines/lines_csv.h"
+#include "eval/score/run_laser_scans.h"
+#include "eval/score/trajectory_file.h"
+#include "sim/config/config_error.h"
+
+namespace plywood::eval {
+
+ScoreReport ScoreLinesFile(const std::filesystem::path& run_dir, const std::filesystem::path& file,
+                           const LinesScoreOptions& options) {
+  const RunLaserScans run = LoadRunLaserScans(run_dir);
+  const std::string name = options.name.empty() ? TrajectoryNameOf(file) : options.name;
+  if (!IsMetricName(name)) {
+    throw sim::ConfigError("--name", "", "'" + name + "' cannot name a metric (no dots or spaces)");
+  }
+  const std::vector<LinesCsvRow> rows = ReadLinesCsv(file, name);
+
+  // Segments by extractor (in order of first appearance), then by scan, in file order.
+  std::vector<ExtractorScore> scores;
+  std::vector<std::vector<std::vector<perception::LineSegment>>> found;
+  const long scans = static_cast<long>(run.scans.size());
+  for (const LinesCsvRow& row : rows) {
+    if (row.scan >= scans) {
+      throw sim::ConfigError(file.string() + ":" + std::to_string(row.line_number), "scan",
+                             std::to_string(row.scan) + " is beyond the run's " +
+                                 std::to_string(scans) + " scans (0.." + std::to_string(scans - 1) +
+                                 ")");
+    }
+    std::size_t e = 0;
+    while (e < scores.size() && scores[e].name != row.extractor) ++e;
+    if (e == scores.size()) {
+      scores.push_back({row.extractor, {}, 0.0, {}});
+      found.emplace_back(run.scans.size());
+    }
+    found[e][row.scan].push_back(row.segment);
+  }
+  for (std::size_t e = 0; e < scores.size(); ++e) {
+    for (std::size_t s = 0; s < run.scans.size(); ++s) {
+      scores[e].score.Add(ScoreScanLines(found[e][s], run.scans[s], run.lines.scoring));
+    }
+  }
+
+  ScoreReport report;
+  SetLineMetrics(scores, scans, report.metrics);
+  char line[512];
+  std::snprintf(line, sizeof(line), "%-18s %s: %ld laser scans, range cut %s m\n", "run",
+                run_dir.c_str(), scans, sim::FormatNumber(run.lines.range_cut_m).c_str());
+  report.table += line;
+  std::snprintf(line, sizeof(line), "%-18s %s: %zu segments\n", "file", file.c_str(), rows.size());
+  report.table += line;
+  std::snprintf(line, sizeof(line), "%-18s %8s %9s %10s %15s %15s %14s\n", "extractor", "recall",
+                "precision", "sigma_r_m", "sigma_alpha_deg", "points_per_line", "lines_per_scan");
+  report.table += line;
+  for (const ExtractorScore& s : scores) {
+    std::snprintf(
+        line, sizeof(line), "%-18s %8.4f %9.4f %10.5f %15.4f %15.2f %14.2f\n", s.name.c_str(),
+        s.score.Recall(), s.score.Precision(), s.score.SigmaRM(), s.score.SigmaAlphaDeg(),
+        s.score.PointsPerLine(),
+        scans ? static_cast<double>(s.score.extracted) / static_cast<double>(scans) : 0.0);
+    report.table += line;
+  }
+  return report;
+}
+
+}  // namespace plywood::eval

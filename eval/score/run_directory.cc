@@ -1,0 +1,59 @@
+#include "eval/score/run_directory.h"
+
+#include "eval/score/csv_table.h"
+#include "sim/config/config_error.h"
+
+namespace plywood::eval {
+
+std::filesystem::path RunFile(const std::filesystem::path& run_dir, const std::string& name,
+                              const std::string& why) {
+  if (!std::filesystem::is_directory(run_dir)) {
+    throw sim::ConfigError(run_dir.string(), "", "not a directory (give a run's --out folder)");
+  }
+  const std::filesystem::path path = run_dir / name;
+  if (!std::filesystem::is_regular_file(path)) {
+    throw sim::ConfigError(path.string(), "", "missing (" + why + ")");
+  }
+  return path;
+}
+
+sim::ExperimentConfig LoadRunConfig(const std::filesystem::path& run_dir,
+                                    const std::string& command) {
+  const std::filesystem::path path =
+      RunFile(run_dir, "config.yaml", "every run directory holds its resolved experiment");
+  sim::ExperimentConfig config = sim::LoadExperimentConfig(path);
+  if (config.protocol != "single") {
+    throw sim::ConfigError(path.string(), "protocol",
+                           "'" + config.protocol + "' is a multi-run protocol: " + command +
+                               " scores the directory of a single run (protocol: single)");
+  }
+  return config;
+}
+
+sim::GroundTruthWalls ReadWallsCsv(const std::filesystem::path& path) {
+  const CsvTable table = ReadCsv(path, {.rows_required = false});
+  const char* kColumns[] = {"segment", "geom_id", "face", "ax_m", "ay_m", "bx_m", "by_m"};
+  for (std::size_t c = 0; c < std::size(kColumns); ++c) {
+    if (table.header.size() != std::size(kColumns) || table.header[c] != kColumns[c]) {
+      throw sim::ConfigError(table.file + ":" + std::to_string(table.header_line), kColumns[c],
+                             "expected the header segment,geom_id,face,ax_m,ay_m,bx_m,by_m");
+    }
+  }
+  sim::GroundTruthWalls walls;
+  for (const CsvRow& row : table.rows) {
+    if (table.Integer(row, 0, "segment") != static_cast<long>(walls.segments.size())) {
+      table.Fail(row, "segment",
+                 "expected " + std::to_string(walls.segments.size()) +
+                     " (segments are numbered from 0 in order)");
+    }
+    sim::WallSegment s;
+    s.geom_id = static_cast<int>(table.Integer(row, 1, "geom_id"));
+    s.face_index = static_cast<int>(table.Integer(row, 2, "face"));
+    s.a = {table.Number(row, 3, "ax_m"), table.Number(row, 4, "ay_m")};
+    s.b = {table.Number(row, 5, "bx_m"), table.Number(row, 6, "by_m")};
+    walls.segments.push_back(s);
+  }
+  return walls;
+}
+
+}  // namespace plywood::eval

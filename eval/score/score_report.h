@@ -1,0 +1,22 @@
+#pragma once
+
+#include <string>
+
+#include "sim/runner/metrics.h"
+
+namespace plywood::eval {
+
+// What `plywood score` found: the metrics under the same keys as a run's metrics.json, and a
+// table for people.
+struct ScoreReport {
+  sim::Metrics metrics;
+  std::string table;
+};
+
+// Whether `name` can be one part of a dotted metrics key: not empty, no dot, no white space, no
+// comma or quote (it also goes into CSV and JSON).
+inline bool IsMetricName(const std::string& name) {
+  return !name.empty() && name.find_first_of(". \t\r\n,\"") == std::string::npos;
+}
+
+}  // namespace plywood::eval

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "perception/logs/tum_trajectory.h"
+
+namespace plywood::eval {
+
+// One trajectory of a file, poses at strictly increasing times.
+struct NamedTrajectory {
+  std::string name;
+  std::vector<perception::TimedPose> poses;
+};
+
+// Reads the trajectories of `path`, whichever of two layouts it has:
+// - Plywood's trajectory.csv (the first line not a '#' comment starts with `time_s`): a header
+//   `time_s` then groups `NAME_x_m,NAME_y_m,NAME_theta_rad`, one trajectory per group (`truth`
+//   included) in column order;
+// - otherwise TUM (perception/logs/tum_trajectory.h): one trajectory named `tum_name`.
+// @throws sim::ConfigError "FILE:LINE: FIELD: what is wrong" for a bad header, a wrong column
+// count, a field that is not a finite number, times that do not increase; "FILE: ..." for a
+// missing or empty file.
+std::vector<NamedTrajectory> ReadTrajectoryFile(const std::filesystem::path& path,
+                                                const std::string& tum_name);
+
+// The name a trajectory file gives its estimate: the file name without its extension and
+// without a leading "trajectory." (trajectory.encoder.tum -> encoder), characters other than
+// letters, digits, '_' and '-' replaced by '_'.
+std::string TrajectoryNameOf(const std::filesystem::path& path);
+
+}  // namespace plywood::eval

@@ -1,0 +1,123 @@
+#include "eval/score/trajectory_score.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "eval/score/run_directory.h"
+#include "robot/odometry/trajectory_metrics.h"
+#include "sim/config/config_error.h"
+
+namespace plywood::eval {
+namespace {
+
+std::string Seconds(double t) { return sim::FormatNumber(t) + " s"; }
+
+}  // namespace
+
+std::vector<msgs::Pose2D> PosesAtTimes(const NamedTrajectory& estimate,
+                                       const std::vector<double>& times, const std::string& file,
+                                       double tolerance_s) {
+  const std::vector<perception::TimedPose>& poses = estimate.poses;
+  const double first = times.front(), last = times.back();
+  const auto fail = [&](const perception::TimedPose& pose, const std::string& what) {
+    throw sim::ConfigError(file + ":" + std::to_string(pose.line_number), "timestamp", what);
+  };
+  const std::string run = " (the run's samples span " + Seconds(first) + " to " + Seconds(last) +
+                          ", tolerance " + Seconds(tolerance_s) + ")";
+  for (const perception::TimedPose& pose : poses) {
+    if (pose.time_s < first - tolerance_s || pose.time_s > last + tolerance_s) {
+      fail(pose, Seconds(pose.time_s) + " falls outside the run" + run);
+    }
+  }
+  if (poses.front().time_s > first + tolerance_s) {
+    fail(poses.front(), "the file starts at " + Seconds(poses.front().time_s) +
+                            ", after the run's first sample" + run);
+  }
+  if (poses.back().time_s < last - tolerance_s) {
+    fail(poses.back(), "the file ends at " + Seconds(poses.back().time_s) +
+                           ", before the run's last sample" + run);
+  }
+  std::vector<msgs::Pose2D> out;
+  out.reserve(times.size());
+  std::size_t j = 0;  // first pose at or after t
+  for (const double t : times) {
+    while (j < poses.size() && poses[j].time_s < t) ++j;
+    if (j < poses.size() && poses[j].time_s == t) {
+      out.push_back(poses[j].pose);
+    } else if (j == 0) {
+      out.push_back(poses.front().pose);
+    } else if (j == poses.size()) {
+      out.push_back(poses.back().pose);
+    } else {
+      const perception::TimedPose& a = poses[j - 1];
+      const perception::TimedPose& b = poses[j];
+      const double w = (t - a.time_s) / (b.time_s - a.time_s);
+      out.push_back({a.pose.x_m + w * (b.pose.x_m - a.pose.x_m),
+                     a.pose.y_m + w * (b.pose.y_m - a.pose.y_m),
+                     msgs::WrapAngle(a.pose.theta_rad +
+                                     w * msgs::WrapAngle(b.pose.theta_rad - a.pose.theta_rad))});
+    }
+  }
+  return out;
+}
+
+ScoreReport ScoreTrajectoryFile(const std::filesystem::path& run_dir,
+                                const std::filesystem::path& file,
+                                const TrajectoryScoreOptions& options) {
+  const std::filesystem::path truth_path =
+      RunFile(run_dir, "trajectory.csv",
+              "the run's ground truth; multi-run protocols keep it in each run's subfolder");
+  std::vector<NamedTrajectory> run = ReadTrajectoryFile(truth_path, "truth");
+  const auto truth_it = std::find_if(run.begin(), run.end(),
+                                     [](const NamedTrajectory& t) { return t.name == "truth"; });
+  if (truth_it == run.end()) {
+    throw sim::ConfigError(truth_path.string(), "truth_x_m", "missing: no ground-truth columns");
+  }
+  std::vector<double> times;
+  std::vector<msgs::Pose2D> truth;
+  for (const perception::TimedPose& p : truth_it->poses) {
+    times.push_back(p.time_s);
+    truth.push_back(p.pose);
+  }
+
+  std::string name = options.name.empty() ? TrajectoryNameOf(file) : options.name;
+  if (!IsMetricName(name)) {
+    throw sim::ConfigError("--name", "", "'" + name + "' cannot name a metric (no dots or spaces)");
+  }
+  std::vector<NamedTrajectory> estimates = ReadTrajectoryFile(file, name);
+  std::erase_if(estimates, [](const NamedTrajectory& t) { return t.name == "truth"; });
+  if (estimates.empty()) {
+    throw sim::ConfigError(file.string(), "header", "no estimate to score (only truth columns)");
+  }
+
+  ScoreReport report;
+  const double distance = robot::ScoreTrajectory(truth, truth).distance_travelled_m;
+  report.metrics.Set("truth.distance_m", distance);
+  char line[512];
+  std::snprintf(line, sizeof(line), "%-18s %s: %zu samples, %s to %s, %.3f m travelled\n", "run",
+                run_dir.c_str(), times.size(), sim::FormatNumber(times.front()).c_str(),
+                Seconds(times.back()).c_str(), distance);
+  report.table += line;
+  std::snprintf(line, sizeof(line), "%-18s %s: %zu trajectories, %zu poses\n", "file", file.c_str(),
+                estimates.size(), estimates.front().poses.size());
+  report.table += line;
+  std::snprintf(line, sizeof(line), "%-18s %14s %18s %14s %12s\n", "estimate", "final_error_m",
+                "heading_error_deg", "drift_percent", "ate_rms_m");
+  report.table += line;
+  for (const NamedTrajectory& estimate : estimates) {
+    const robot::TrajectoryErrors errors = robot::ScoreTrajectory(
+        truth, PosesAtTimes(estimate, times, file.string(), options.time_tolerance_s));
+    const std::string key = "odometry." + estimate.name + ".";
+    report.metrics.Set(key + "final_error_m", errors.final_error_m);
+    report.metrics.Set(key + "heading_error_deg", errors.heading_error_deg);
+    report.metrics.Set(key + "drift_percent", errors.drift_percent);
+    report.metrics.Set(key + "ate_rms_m", errors.ate_rms_m);
+    std::snprintf(line, sizeof(line), "%-18s %14.6f %18.4f %14.4f %12.6f\n", estimate.name.c_str(),
+                  errors.final_error_m, errors.heading_error_deg, errors.drift_percent,
+                  errors.ate_rms_m);
+    report.table += line;
+  }
+  return report;
+}
+
+}  // namespace plywood::eval

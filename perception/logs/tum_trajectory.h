@@ -1,0 +1,46 @@
+#pragma once
+
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "msgs/pose2d.h"
+
+namespace plywood::perception {
+
+// TUM RGB-D trajectory files (Sturm et al., IROS 2012), the de-facto exchange format of
+// trajectories: one pose per line, `timestamp tx ty tz qx qy qz qw` separated by spaces, lines
+// starting with '#' are comments. A planar pose is tz = qx = qy = 0 and a rotation about z.
+
+// A quaternion about z for a heading: qz = sin(theta / 2), qw = cos(theta / 2), each possibly
+// moved by one unit in the last place so that HeadingOfQuaternion gives back exactly the same
+// double (plain sin/cos miss it for about 7 % of headings; the norm stays within 1e-15 of 1). Exact
+// for |theta| <= 2 pi, which covers every wrapped heading; larger angles are wrapped first.
+struct PlanarQuaternion {
+  double qz = 0.0;
+  double qw = 1.0;
+};
+PlanarQuaternion QuaternionOfHeading(double theta_rad);
+
+// The yaw of a unit quaternion: 2 atan2(qz, qw) when qx = qy = 0 (in (-2 pi, 2 pi], the exact
+// inverse of QuaternionOfHeading), else the z-y-x Euler yaw of the normalised quaternion.
+double HeadingOfQuaternion(double qx, double qy, double qz, double qw);
+
+// One line `t x y 0 0 0 qz qw` (numbers in shortest round-trip form), ending in '\n'.
+void WriteTumPose(std::ostream& out, double time_s, const msgs::Pose2D& pose);
+
+struct TimedPose {
+  double time_s = 0.0;
+  msgs::Pose2D pose;
+  std::size_t line_number = 0;  // in the file it came from
+};
+
+// Reads a TUM file into planar poses (tz is ignored; the heading is HeadingOfQuaternion).
+// @throws std::invalid_argument "FILE:LINE: FIELD: what is wrong" (FIELD one of timestamp, tx, ty,
+// tz, qx, qy, qz, qw) for a wrong number of fields, a field that is not a finite number, a
+// quaternion whose norm is not 1 within 1e-3, timestamps that do not increase; "FILE: ..." for an
+// unreadable file or one without poses.
+std::vector<TimedPose> ReadTumTrajectory(const std::filesystem::path& path);
+
+}  // namespace plywood::perception

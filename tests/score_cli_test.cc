@@ -1,0 +1,205 @@
+// `plywood score` end to end: a run's own files score, through --out, the figures of its
+// metrics.json; every bad file gives exit code 2 and one line naming the file, the line and the
+// field.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <string>
+
+#include "tests/support/cli_test_support.h"
+#include "tests/support/metrics_json_test_support.h"
+#include "tests/support/mujoco_test_support.h"
+
+namespace plywood {
+namespace {
+
+namespace fs = std::filesystem;
+
+using testing::RunPlywood;
+using testing::Slurp;
+
+// A 2 s run with a lines: section, made once with `plywood run`.
+const fs::path& RunDir() {
+  static const fs::path dir = [] {
+    const fs::path root = testing::MakeTempDir("score_cli_run");
+    const fs::path yaml = testing::WriteFile(
+        root / "experiment.yaml",
+        "name: score_cli\n"
+        "duration_s: 2\n"
+        "world: " +
+            (testing::SourceRoot() / "worlds" / "office.xml").string() +
+            "\n"
+            "robot: {model: p3dx, spawn: {x_m: -6.5, y_m: 0.0, theta_deg: 0}}\n"
+            "controller: {type: waypoints, speed_m_s: 0.4, waypoints: [[-6.0, 0.0], [-6.0, 1.0]]}\n"
+            "sensors: {laser: {rate_hz: 10}, encoders: {}, gyro: {}}\n"
+            "odometry: {encoder: {}, fused: {}}\n"
+            "lines: {extractors: [split_and_merge, ransac]}\n"
+            "output: {snapshot: false}\n");
+    const auto r =
+        RunPlywood("run " + yaml.string() + " --quiet --out " + (root / "run").string(), root);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return root / "run";
+  }();
+  return dir;
+}
+
+TEST(ScoreCliTest, OwnFilesScoreTheRunsFiguresThroughOut) {
+  const fs::path dir = testing::MakeTempDir("score_cli_own");
+  const auto run = testing::FlattenMetricsJson(Slurp(RunDir() / "metrics.json"));
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"trajectory", "trajectory.fused.tum"},
+      {"trajectory", "trajectory.csv"},
+      {"lines", "lines.csv"}};
+  for (const auto& [kind, file] : cases) {
+    SCOPED_TRACE(file);
+    const auto r =
+        RunPlywood("score " + kind + " " + RunDir().string() + " " + (RunDir() / file).string() +
+                       " --out " + (dir / "score.json").string(),
+                   dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto scored = testing::FlattenMetricsJson(Slurp(dir / "score.json"));
+    EXPECT_GE(scored.size(), 5u);
+    for (const auto& [key, text] : scored) {
+      ASSERT_TRUE(run.count(key)) << key;
+      EXPECT_EQ(text, run.at(key)) << key;
+    }
+    EXPECT_NE(r.out.find(kind == "lines" ? "split_and_merge" : "fused"), std::string::npos)
+        << r.out;
+  }
+}
+
+TEST(ScoreCliTest, WrittenOutputsListTheNewFiles) {
+  for (const char* name : {"trajectory.truth.tum", "trajectory.encoder.tum", "trajectory.fused.tum",
+                           "lines.csv", "laser_scans.csv", "laser_hits.csv", "walls.csv"}) {
+    EXPECT_TRUE(fs::is_regular_file(RunDir() / name)) << name;
+  }
+  const std::string lines = Slurp(RunDir() / "lines.csv");
+  EXPECT_EQ(lines.substr(0, lines.find('\n')),
+            "scan,extractor,x1_m,y1_m,x2_m,y2_m,alpha_rad,r_m,points,truth_segment");
+}
+
+struct BadCase {
+  std::string what;
+  std::string kind;  // trajectory, lines, grid
+  std::string file;  // name written in the case's folder
+  std::string text;
+  std::string expected;  // in stderr, after "plywood: <dir>/"
+  std::string flags = "";
+};
+
+TEST(ScoreCliTest, BadFilesFailWithOneLineNamingFileLineAndField) {
+  const std::string tum_ok = "0 -6.5 0 0 0 0 0 1\n";
+  const std::string lines_header = "scan,extractor,x1_m,y1_m,x2_m,y2_m\n";
+  const std::string lines_ok = "0,mine,1,0,1,1\n";
+  std::string pgm_truncated = "P5\n4 4\n255\n";
+  pgm_truncated += std::string(10, '\xff');
+  const std::string png_signature = "\x89PNG\r\n\x1a\n";
+  const std::string grid_flags = " --resolution 0.05 --origin -9,-3";
+  const std::vector<BadCase> cases = {
+      {"TUM wrong column count", "trajectory", "a.tum", tum_ok + "0.1 -6.5 0 0 0 0 1\n",
+       "a.tum:2: qw: expected 8 fields"},
+      {"TUM NaN", "trajectory", "b.tum", tum_ok + "0.1 nan 0 0 0 0 0 1\n",
+       "b.tum:2: tx: must be finite"},
+      {"TUM inf", "trajectory", "b2.tum", tum_ok + "0.1 0 -inf 0 0 0 0 1\n",
+       "b2.tum:2: ty: must be finite"},
+      {"TUM not a number", "trajectory", "c.tum", tum_ok + "0.1 0 0 0 0 0 zero 1\n",
+       "c.tum:2: qz: not a number"},
+      {"TUM times not increasing", "trajectory", "d.tum", "# c\n" + tum_ok + tum_ok,
+       "d.tum:3: timestamp: 0 s does not come after"},
+      {"TUM empty", "trajectory", "e.tum", "", "e.tum: empty"},
+      {"TUM outside the run", "trajectory", "f.tum", tum_ok + "2 0 0 0 0 0 0 1\n99 0 0 0 0 0 0 1\n",
+       "f.tum:3: timestamp: 99 s falls outside the run"},
+      {"TUM ends before the run", "trajectory", "g.tum", tum_ok + "1 0 0 0 0 0 0 1\n",
+       "g.tum:2: timestamp: the file ends at 1 s, before the run's last sample"},
+      {"CSV layout bad header", "trajectory", "h.csv",
+       "time_s,mine_x_m,mine_y_m,mine_heading\n0,0,0,0\n",
+       "h.csv:1: mine_heading: expected mine_theta_rad"},
+      {"CSV layout wrong column count", "trajectory", "h2.csv",
+       "time_s,mine_x_m,mine_y_m,mine_theta_rad\n0,0,0,0\n0.1,0,0\n",
+       "h2.csv:3: mine_theta_rad: wrong column count"},
+      {"lines scan beyond the run", "lines", "i.csv",
+       lines_header + lines_ok + "9999,mine,1,0,1,1\n", "i.csv:3: scan: 9999 is beyond the run's "},
+      {"lines wrong column count", "lines", "j.csv", lines_header + lines_ok + "1,mine,1,0,1\n",
+       "j.csv:3: y2_m: wrong column count"},
+      {"lines not a number", "lines", "k.csv", lines_header + "0,mine,1,0,one,1\n",
+       "k.csv:2: x2_m: not a number"},
+      {"lines NaN", "lines", "k2.csv", lines_header + "0,mine,1,NaN,1,1\n",
+       "k2.csv:2: y1_m: must be finite"},
+      {"lines negative scan", "lines", "k3.csv", lines_header + "-1,mine,1,0,1,1\n",
+       "k3.csv:2: scan: must be >= 0"},
+      {"lines fractional scan", "lines", "k4.csv", lines_header + "0.5,mine,1,0,1,1\n",
+       "k4.csv:2: scan: expected a whole number"},
+      {"lines unknown column", "lines", "l.csv", "scan,x1_m,y1_m,x2_m,y2_m,colour\n0,1,0,1,1,red\n",
+       "l.csv:1: colour: unknown column"},
+      {"lines missing column", "lines", "l2.csv", "scan,x1_m,y1_m,x2_m\n0,1,0,1\n",
+       "l2.csv:1: y2_m: missing column"},
+      {"lines empty", "lines", "m.csv", "", "m.csv: empty file"},
+      {"lines header only", "lines", "m2.csv", lines_header, "m2.csv: no rows after the header"},
+      {"lines unterminated quote", "lines", "m3.csv", lines_header + "0,\"mine,1,0,1,1\n",
+       "m3.csv:2: a quoted field is never closed"},
+      {"PNG truncated", "grid", "n.png", png_signature + std::string("\0\0\0\rIHDR", 8),
+       "n.png: PNG: ", grid_flags},
+      {"PGM truncated", "grid", "o.pgm", pgm_truncated, "o.pgm: pixels: truncated: 10 of 16",
+       grid_flags},
+      {"PGM bad maxval", "grid", "p.pgm", "P2\n# a comment\n2 2\n70000\n0 0 0 0\n",
+       "p.pgm:4: maxval: expected a whole number in 1..65535", grid_flags},
+      {"PGM sample beyond maxval", "grid", "p2.pgm", "P2\n2 2\n9\n0 0\n0 10\n",
+       "p2.pgm:5: pixel 3: expected a whole number in 0..9", grid_flags},
+      {"not an image", "grid", "q.pgm", "hello", "q.pgm: not a PNG or PGM", grid_flags},
+      {"image too small for the flags", "grid", "r.pgm", "P2\n2 2\n1\n1 1 1 1\n",
+       "r.pgm: size: 2 x 2 px at 0.05 m/px", grid_flags},
+  };
+  int n = 0;
+  for (const BadCase& c : cases) {
+    SCOPED_TRACE(c.what);
+    const fs::path dir = testing::MakeTempDir("score_cli_bad_" + std::to_string(n++));
+    const fs::path file = testing::WriteFile(dir / c.file, c.text);
+    const auto r = RunPlywood(
+        "score " + c.kind + " " + RunDir().string() + " " + file.string() + c.flags, dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.err.rfind("plywood: " + (dir / c.expected).string(), 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  }
+  EXPECT_GE(cases.size(), 10u);
+}
+
+TEST(ScoreCliTest, MissingRunFilesAndOtherProtocolsAreNamed) {
+  const fs::path dir = testing::MakeTempDir("score_cli_missing");
+  const fs::path tum = testing::WriteFile(dir / "e.tum", "0 0 0 0 0 0 0 1\n");
+  // A directory that is not a run.
+  auto r = RunPlywood("score trajectory " + dir.string() + " " + tum.string(), dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("plywood: " + (dir / "trajectory.csv").string() + ": missing", 0), 0u)
+      << r.err;
+  // A run without a lines: section has no laser_scans.csv.
+  const fs::path plain = dir / "plain";
+  fs::create_directories(plain);
+  for (const char* name : {"config.yaml", "walls.csv", "laser_hits.csv"}) {
+    fs::copy_file(RunDir() / name, plain / name);
+  }
+  r = RunPlywood("score lines " + plain.string() + " " + (RunDir() / "lines.csv").string(), dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err.rfind("plywood: " + (plain / "laser_scans.csv").string() + ": missing", 0), 0u)
+      << r.err;
+  // A multi-run protocol's directory is refused with the reason.
+  const fs::path rooms = dir / "rooms";
+  fs::create_directories(rooms);
+  fs::copy_file(testing::SourceRoot() / "experiments" / "seed000_rooms.yaml",
+                rooms / "config.yaml");
+  r = RunPlywood("score lines " + rooms.string() + " " + (RunDir() / "lines.csv").string(), dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("config.yaml: protocol: 'seed000_rooms' is a multi-run protocol"),
+            std::string::npos)
+      << r.err;
+  // Usage: an unknown kind, a missing grid flag.
+  r = RunPlywood("score maps " + RunDir().string() + " " + tum.string(), dir);
+  EXPECT_EQ(r.exit_code, 2);
+  r = RunPlywood("score grid " + RunDir().string() + " " + tum.string(), dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--resolution"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace plywood
