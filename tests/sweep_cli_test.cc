@@ -192,15 +192,19 @@ std::map<std::string, ino_t> FinishedRuns(const fs::path& out) {
 
 TEST(SweepCliTest, KillNineAndResumeGivesTheSameResultsWithoutRedoingRuns) {
   const fs::path dir = MakeTempDir("SweepKill");
-  const fs::path sweep = WriteFile(dir / "kill.yaml",
-                                   SmallSweep() + "\n");  // 6 runs
+  // 12 runs: three kills, each at a random moment after at least one more run finished.
+  const fs::path sweep =
+      WriteFile(dir / "kill.yaml",
+                "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
+                    "\nseeds: [1, 2, 3]\nworlds: [" + (SourceRoot() / "worlds/hall.xml").string() +
+                    "]\nset:\n  duration_s: [3, 4, 5, 6]\n  output.snapshot: [false]\n");
   ASSERT_EQ(
       RunPlywood("sweep " + sweep.string() + " --out " + (dir / "whole").string() + " --quiet", dir)
           .exit_code,
       0);
   const fs::path out = dir / "killed";
   std::mt19937 random(20261124);  // fixed: the test is repeatable; the points vary per kill
-  std::uniform_int_distribution<int> delay_ms(100, 900);
+  std::uniform_int_distribution<int> extra_ms(0, 150);
   std::map<std::string, ino_t> finished;
   for (int kill_round = 0; kill_round < 3; ++kill_round) {
     const pid_t pid = fork();
@@ -208,24 +212,27 @@ TEST(SweepCliTest, KillNineAndResumeGivesTheSameResultsWithoutRedoingRuns) {
     if (pid == 0) {
       const std::string plywood = Plywood();
       const std::string log = (dir / "killed.log").string();
-      freopen(log.c_str(), "a", stderr);
-      freopen(log.c_str(), "a", stdout);
+      if (!freopen(log.c_str(), "a", stderr) || !freopen(log.c_str(), "a", stdout)) _exit(126);
       execl(plywood.c_str(), plywood.c_str(), "sweep", sweep.c_str(), "--out", out.c_str(),
             "--jobs", "2", static_cast<char*>(nullptr));
       _exit(127);
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms(random)));
+    // Wait for one more finished run, then kill at a random point shortly after.
+    for (int i = 0; i < 3000 && FinishedRuns(out).size() <= finished.size(); ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(extra_ms(random)));
     kill(pid, SIGKILL);
     int status = 0;
     waitpid(pid, &status, 0);
+    EXPECT_TRUE(WIFSIGNALED(status)) << "round " << kill_round << ": the sweep ended first";
     std::this_thread::sleep_for(std::chrono::milliseconds(200));  // its runs die with it
     const auto now = FinishedRuns(out);
+    EXPECT_GT(now.size(), finished.size());
+    EXPECT_LT(now.size(), 12u) << "round " << kill_round << " killed a finished sweep";
     for (const auto& [id, inode] : finished) {
       ASSERT_TRUE(now.count(id)) << id << " vanished";
       EXPECT_EQ(now.at(id), inode) << id << " was run twice";
-    }
-    if (kill_round == 0) {
-      EXPECT_LT(now.size(), 6u) << "the first kill came after the sweep had finished";
     }
     finished = now;
   }
@@ -233,7 +240,7 @@ TEST(SweepCliTest, KillNineAndResumeGivesTheSameResultsWithoutRedoingRuns) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto now = FinishedRuns(out);
   for (const auto& [id, inode] : finished) EXPECT_EQ(now.at(id), inode) << id << " redone";
-  EXPECT_EQ(now.size(), 6u);
+  EXPECT_EQ(now.size(), 12u);
   EXPECT_EQ(Slurp(out / "results.csv"), Slurp(dir / "whole" / "results.csv"));
   EXPECT_EQ(Slurp(out / "summary.csv"), Slurp(dir / "whole" / "summary.csv"));
   EXPECT_TRUE(fs::is_empty(out / "runs" / ".partial"));
