@@ -44,6 +44,8 @@ function(plywood_add_folder_library target)
   set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
   target_include_directories(${target} PUBLIC "$<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>"
                                               "$<INSTALL_INTERFACE:include>")
+  # The headers need C++20 in a user's project too (the installed package carries it).
+  target_compile_features(${target} PUBLIC cxx_std_20)
 endfunction()
 
 # Registers every *_test.cc in the current folder and its subfolders as its own test executable

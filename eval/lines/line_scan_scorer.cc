@@ -4,8 +4,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "perception/lines/line_extractor_factory.h"
-
 namespace plywood::eval {
 
 TruthScan MakeTruthScan(std::span<const sim::LaserRecord* const> records,
@@ -71,7 +69,7 @@ std::vector<ExtractorScore> ScoreExtractors(std::span<const TruthScan> scans,
                                             const sim::LinesConfig& config) {
   std::vector<ExtractorScore> scores;
   for (const std::string& name : config.extractors) {
-    const auto extractor = perception::MakeLineExtractor(name, config.options);
+    const auto extractor = sim::MakeLineExtractor(name, config);
     ExtractorScore result;
     result.name = name;
     double seconds = 0.0;

@@ -45,7 +45,7 @@ void WriteRoomPicture(const eval::Seed000RoomResult& result, const sim::LinesCon
     render::DrawPoint(image, frame.world_to_pixel, p, render::colours::kRed, 1.5);
   const std::string name =
       lines.extractors.empty() ? std::string("split_and_merge") : lines.extractors.front();
-  const auto extractor = perception::MakeLineExtractor(name, lines.options);
+  const auto extractor = sim::MakeLineExtractor(name, lines);
   for (const auto& s : extractor->Extract(scan.points))
     render::DrawSegment(image, frame.world_to_pixel, s.start, s.end, render::colours::kBlue, 2.0);
   render::DrawPoint(image, frame.world_to_pixel, Eigen::Vector2d::Zero(), render::colours::kGreen,

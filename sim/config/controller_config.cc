@@ -1,21 +1,18 @@
 #include "sim/config/controller_config.h"
 
 #include <algorithm>
-#include <array>
 #include <filesystem>
-#include <string_view>
 
 #include "sim/config/config_archive.h"
 #include "sim/config/config_fields.h"
+#include "sim/config/plugin_loader.h"
+#include "sim/config/plugin_options.h"
 #include "sim/config/robot_catalog.h"
 #include "sim/config/sonar_explorer_fields.h"
 #include "sim/config/yaml_fields.h"
 
 namespace plywood::sim {
 namespace {
-
-constexpr std::array<std::string_view, 6> kControllerTypes{
-    "idle", "square_path", "waypoints", "wheel_script", "wall_following", "sonar_explorer"};
 
 // Reads the shared keys and the chosen controller's options from one mapping.
 template <typename Archive>
@@ -31,19 +28,37 @@ void VisitChosen(Archive& archive, ControllerConfig& config) {
 
 }  // namespace
 
-void ReadControllerConfig(YamlFields fields, ControllerConfig& config) {
+const std::vector<std::string>& BuiltInControllerTypes() {
+  static const std::vector<std::string> types{"idle",         "square_path",    "waypoints",
+                                              "wheel_script", "wall_following", "sonar_explorer"};
+  return types;
+}
+
+void ReadControllerConfig(YamlFields fields, const robot::DiffDriveSpec& nominal,
+                          ControllerConfig& config) {
   fields.Get("type", &config.type);
-  if (std::find(kControllerTypes.begin(), kControllerTypes.end(), config.type) ==
-      kControllerTypes.end()) {
+  const std::vector<std::string>& built_in = BuiltInControllerTypes();
+  const robot::ControllerRegistry& registered = RegisteredAlgorithms().controllers;
+  const bool is_registered = registered.Find(config.type) != nullptr;
+  if (!is_registered &&
+      std::find(built_in.begin(), built_in.end(), config.type) == built_in.end()) {
     std::string known;
-    for (std::string_view type : kControllerTypes)
-      known += (known.empty() ? "" : ", ") + std::string(type);
+    for (const std::string& type : built_in) known += (known.empty() ? "" : ", ") + type;
+    for (const std::string& type : registered.Names()) known += ", " + type;
     fields.Fail("type", "unknown controller '" + config.type + "' (known: " + known + ")");
   }
   YamlReadArchive archive(fields);
   VisitChosen(archive, config);
+  config.registered = robot::ParameterMap();
+  if (is_registered) {
+    config.registered = ReadPluginOptions(archive.fields(), {"type", "rate_hz", "steer_by"});
+  }
   archive.fields().Finish();
   if (!(config.rate_hz > 0.0)) fields.Fail("rate_hz", "must be a finite number > 0");
+  if (is_registered) {
+    // Built once now, so a bad or unknown option is reported before the run.
+    CheckPluginBuild(fields, [&] { MakeController(config, nominal); });
+  }
   if (config.type == "square_path") fields.Validate(config.square_path);
   if (config.type == "waypoints") fields.Validate(config.waypoints);
   if (config.type == "wheel_script") fields.Validate(config.wheel_script);
@@ -55,7 +70,9 @@ YAML::Node WriteControllerConfig(ControllerConfig& config) {
   YamlWriteArchive archive;
   archive("type", config.type);
   VisitChosen(archive, config);
-  return archive.node();
+  YAML::Node node = archive.node();
+  WritePluginOptions(config.registered, node);
+  return node;
 }
 
 std::unique_ptr<robot::Controller> MakeController(const ControllerConfig& config,
@@ -88,6 +105,9 @@ std::unique_ptr<robot::Controller> MakeController(const ControllerConfig& config
       model = std::make_shared<perception::ClassicalSonarModel>();
     }
     return std::make_unique<perception::SonarExplorer>(nominal, o, model);
+  }
+  if (const auto* entry = RegisteredAlgorithms().controllers.Find(config.type)) {
+    return robot::MakeRegistered(*entry, config.registered, nominal);
   }
   return nullptr;
 }

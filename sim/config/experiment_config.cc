@@ -9,6 +9,7 @@
 #include "sim/config/config_archive.h"
 #include "sim/config/config_error.h"
 #include "sim/config/config_fields.h"
+#include "sim/config/plugin_loader.h"
 #include "sim/config/robot_catalog.h"
 #include "sim/config/yaml_fields.h"
 #include "sim/world/mujoco_handles.h"
@@ -74,6 +75,24 @@ std::string AliasedAssignment(const std::string& assignment) {
          assignment.substr(std::string(kLaserSigmaAlias).size());
 }
 
+// `plugins: [libmine.so, ...]`: each file resolved like `world` and loaded (plugin_loader.h).
+void ReadPlugins(YamlFields& top, const std::filesystem::path& base_dir, ExperimentConfig& config) {
+  if (!top.Has("plugins")) return;
+  const YAML::Node list = top.Raw("plugins");
+  if (!list.IsSequence()) top.Fail("plugins", "expected a list of shared library files");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string key = "plugins[" + std::to_string(i) + "]";
+    if (!list[i].IsScalar()) top.Fail(key, "expected the path of a shared library");
+    const std::filesystem::path library = ResolvePath(list[i].Scalar(), base_dir, top, key);
+    try {
+      LoadPlugin(library);
+    } catch (const std::invalid_argument& e) {
+      top.Fail(key, e.what());
+    }
+    config.plugins.push_back(library);
+  }
+}
+
 void RequirePositiveFinite(const char* field, double value) {
   if (!std::isfinite(value) || value <= 0.0) {
     throw std::invalid_argument(std::string(field) + ": must be a finite number > 0, got " +
@@ -119,6 +138,7 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   ExperimentConfig config;
   config.source_file = source;
   YamlFields top(root, source, "");
+  ReadPlugins(top, base_dir, config);
   config.name = std::filesystem::path(source).stem().string();
   top.Get("name", &config.name);
   top.Get("seed", &config.seed);
@@ -154,10 +174,10 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   robot.Finish();
 
   ReadOptions(top.Child("physics"), config.physics);
-  ReadControllerConfig(top.Child("controller"), config.controller);
+  ReadControllerConfig(top.Child("controller"), config.nominal, config.controller);
   ReadSensorSuiteConfig(top.Child("sensors"), config.nominal, config.sensors);
   if (top.Has("odometry")) {
-    ReadOdometryConfig(top.Child("odometry"), config.odometry);
+    ReadOdometryConfig(top.Child("odometry"), config.nominal, config.odometry);
   } else if (config.sensors.encoders) {
     config.odometry.enabled = {"encoder"};
   }
@@ -184,6 +204,11 @@ std::string ExperimentConfigToYaml(const ExperimentConfig& const_config) {
   YAML::Node root(YAML::NodeType::Map);
   root["name"] = config.name;
   root["seed"] = config.seed;
+  if (!config.plugins.empty()) {
+    YAML::Node plugins(YAML::NodeType::Sequence);
+    for (const auto& library : config.plugins) plugins.push_back(library.string());
+    root["plugins"] = plugins;
+  }
   if (config.protocol != "single") {
     root["protocol"] = config.protocol;
     root[config.protocol] = config.protocol_options;

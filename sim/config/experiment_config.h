@@ -48,6 +48,9 @@ struct ExperimentConfig {
   std::string protocol = "single";
   YAML::Node protocol_options;
   std::uint64_t seed = 1;
+  // Shared libraries that add algorithms (docs/plugins.md), resolved like `world`; loaded before
+  // anything else is read, so the sections below can name what they registered.
+  std::vector<std::filesystem::path> plugins;
   double duration_s = 60.0;
   std::string world;                 // as written in the YAML
   std::filesystem::path world_path;  // resolved

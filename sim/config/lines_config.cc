@@ -6,6 +6,8 @@
 
 #include "sim/config/config_archive.h"
 #include "sim/config/lines_fields.h"
+#include "sim/config/plugin_loader.h"
+#include "sim/config/plugin_options.h"
 #include "sim/config/yaml_fields.h"
 #include "sim/runner/metrics.h"
 
@@ -17,7 +19,8 @@ void LinesConfig::Validate() const {
   if (!(range_cut_m > 0.0)) {
     throw std::invalid_argument("range_cut_m: must be > 0, got " + FormatNumber(range_cut_m));
   }
-  const auto& known = perception::LineExtractorNames();
+  const std::vector<std::string> known =
+      perception::LineExtractorNames(RegisteredAlgorithms().line_extractors);
   for (std::size_t i = 0; i < extractors.size(); ++i) {
     if (std::find(known.begin(), known.end(), extractors[i]) == known.end()) {
       std::string list;
@@ -34,7 +37,8 @@ void LinesConfig::Validate() const {
 
 void ReadLinesConfig(YamlFields fields, LinesConfig& config) {
   config.given = true;
-  config.extractors = perception::LineExtractorNames();
+  const perception::LineExtractorRegistry& registered = RegisteredAlgorithms().line_extractors;
+  config.extractors = perception::LineExtractorNames(registered);
   if (fields.Has("extractors")) {
     const YAML::Node list = fields.Raw("extractors");
     if (!list.IsSequence()) fields.Fail("extractors", "expected a list of extractor names");
@@ -51,8 +55,22 @@ void ReadLinesConfig(YamlFields fields, LinesConfig& config) {
   ReadOptions(fields.Child("incremental"), config.options.incremental);
   ReadOptions(fields.Child("ransac"), config.options.ransac);
   ReadOptions(fields.Child("hough"), config.options.hough);
+  config.options.registered.clear();
+  for (const std::string& name : registered.Names()) {
+    if (!fields.Has(name)) continue;
+    YamlFields options = fields.Child(name);
+    config.options.registered[name] = ReadPluginOptions(options);
+  }
   fields.Finish();
   fields.Validate(config);
+  // Build each registered extractor that will run, or was given options, once now, so a bad or
+  // unknown option is reported before the run.
+  for (const std::string& name : registered.Names()) {
+    const bool runs = std::find(config.extractors.begin(), config.extractors.end(), name) !=
+                      config.extractors.end();
+    if (!runs && !config.options.registered.count(name)) continue;
+    CheckPluginBuild(fields.Child(name), [&] { MakeLineExtractor(name, config); });
+  }
 }
 
 YAML::Node WriteLinesConfig(LinesConfig& config) {
@@ -68,7 +86,25 @@ YAML::Node WriteLinesConfig(LinesConfig& config) {
   node["incremental"] = WriteOptions(config.options.incremental);
   node["ransac"] = WriteOptions(config.options.ransac);
   node["hough"] = WriteOptions(config.options.hough);
+  for (const auto& [name, options] : config.options.registered) {
+    YAML::Node plugin(YAML::NodeType::Map);
+    WritePluginOptions(options, plugin);
+    if (options.empty()) plugin.SetStyle(YAML::EmitterStyle::Flow);  // "name: {}"
+    node[name] = plugin;
+  }
   return node;
+}
+
+std::unique_ptr<perception::LineExtractor> MakeLineExtractor(const std::string& name,
+                                                             const LinesConfig& config) {
+  return perception::MakeLineExtractor(name, config.options,
+                                       RegisteredAlgorithms().line_extractors);
+}
+
+std::vector<std::string> TakenLinesKeys() {
+  std::vector<std::string> keys = perception::LineExtractorNames();
+  for (const char* key : {"extractors", "range_cut_m", "scoring"}) keys.push_back(key);
+  return keys;
 }
 
 }  // namespace plywood::sim

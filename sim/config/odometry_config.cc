@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "sim/config/config_archive.h"
+#include "sim/config/plugin_loader.h"
+#include "sim/config/plugin_options.h"
 #include "sim/config/yaml_fields.h"
 
 namespace plywood::sim {
@@ -77,19 +79,47 @@ const std::vector<std::string>& KnownEstimators() {
   return names;
 }
 
-bool EstimatorNeedsGyro(const std::string& name) { return name != "encoder"; }
+std::vector<std::string> TakenOdometryKeys() {
+  std::vector<std::string> keys = KnownEstimators();
+  keys.push_back("calibration");
+  return keys;
+}
 
-void ReadOdometryConfig(YamlFields fields, OdometryConfig& config) {
+bool EstimatorNeedsGyro(const std::string& name) {
+  if (const auto* entry = RegisteredAlgorithms().odometry_estimators.Find(name)) {
+    return entry->needs_gyro;
+  }
+  return name != "encoder";
+}
+
+void ReadOdometryConfig(YamlFields fields, const robot::DiffDriveSpec& nominal,
+                        OdometryConfig& config) {
   config.given = true;
   config.enabled.clear();
+  config.registered.clear();
   ReadOptions(fields.Child("calibration"), config.calibration);
   ForEachEstimator(config, [&](const char* name, auto& options) {
     if (!fields.Has(name)) return;
     ReadOptions(fields.Child(name), options);
     config.enabled.push_back(name);
   });
+  const robot::OdometryEstimatorRegistry& registered = RegisteredAlgorithms().odometry_estimators;
+  for (const auto& entry : registered.entries()) {
+    if (!fields.Has(entry.name)) continue;
+    YamlFields options = fields.Child(entry.name);
+    config.registered[entry.name] = ReadPluginOptions(options);
+    config.enabled.push_back(entry.name);
+  }
   // Finish() names the unknown key and lists the known ones (the estimator names).
   fields.Finish();
+  // Build each registered estimator once now, so a bad or unknown option is reported before the
+  // run.
+  for (const auto& [name, options] : config.registered) {
+    CheckPluginBuild(fields.Child(name), [&] {
+      robot::MakeRegistered(*registered.Find(name), options,
+                            robot::CalibratedGeometry(nominal, config.calibration), msgs::Pose2D{});
+    });
+  }
 }
 
 YAML::Node WriteOdometryConfig(OdometryConfig& config) {
@@ -100,6 +130,12 @@ YAML::Node WriteOdometryConfig(OdometryConfig& config) {
       node[name] = WriteOptions(options);
     }
   });
+  for (const auto& [name, options] : config.registered) {
+    YAML::Node plugin(YAML::NodeType::Map);
+    WritePluginOptions(options, plugin);
+    if (options.empty()) plugin.SetStyle(YAML::EmitterStyle::Flow);  // "name: {}"
+    node[name] = plugin;
+  }
   return node;
 }
 
@@ -120,6 +156,11 @@ std::vector<std::pair<std::string, std::unique_ptr<robot::OdometryEstimator>>> M
       e = std::make_unique<robot::WeightedFusedOdometry>(geometry, config.weighted, X_WR_initial);
     } else if (name == "ekf") {
       e = std::make_unique<robot::EkfOdometry>(geometry, config.ekf, X_WR_initial);
+    } else if (const auto* entry = RegisteredAlgorithms().odometry_estimators.Find(name)) {
+      const auto options = config.registered.find(name);
+      e = robot::MakeRegistered(
+          *entry, options == config.registered.end() ? robot::ParameterMap() : options->second,
+          geometry, X_WR_initial);
     }
     if (e) estimators.emplace_back(name, std::move(e));
   }

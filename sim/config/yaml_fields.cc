@@ -159,6 +159,13 @@ YAML::Node YamlFields::Raw(const std::string& key) {
   return node_.IsMap() ? node_[key] : YAML::Node();
 }
 
+std::vector<std::string> YamlFields::Keys() const {
+  std::vector<std::string> keys;
+  if (!node_.IsMap()) return keys;
+  for (const auto& entry : node_) keys.push_back(entry.first.Scalar());
+  return keys;
+}
+
 void YamlFields::Finish() const {
   if (!node_.IsMap()) return;
   for (const auto& entry : node_) {

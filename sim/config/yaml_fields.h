@@ -35,6 +35,8 @@ class YamlFields {
   std::vector<YamlFields> ChildList(const std::string& key);
   // The raw node (marks the key as used).
   YAML::Node Raw(const std::string& key);
+  // The mapping's keys in document order (none when it is absent or empty).
+  std::vector<std::string> Keys() const;
 
   // @throws ConfigError for the first key that was never read.
   void Finish() const;
@@ -52,12 +54,15 @@ class YamlFields {
     }
   }
 
+  // @throws ConfigError for a Validate()-style message "field: reason" at this mapping's path
+  // (a message without a leading field is reported at the mapping itself).
+  [[noreturn]] void FailValidation(const std::string& what) const;
+
   const std::string& file() const { return file_; }
   const std::string& path() const { return path_; }
   std::string FieldPath(const std::string& key) const;
 
  private:
-  [[noreturn]] void FailValidation(const std::string& what) const;
   YAML::Node Scalar(const std::string& key, const char* expected) const;
 
   YAML::Node node_;
