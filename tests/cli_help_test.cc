@@ -48,18 +48,15 @@ bool IsOneLine(const std::string& text) {
   return !text.empty() && std::count(text.begin(), text.end(), '\n') == 1 && text.back() == '\n';
 }
 
-// The help line of `flag`: the line where it is listed.
+// The help line that lists `flag`: its first word is the flag ("--out", "--seconds=120" or
+// "-h,--help"), so a flag only mentioned in another flag's description does not count.
 std::string LineOf(const std::string& help, const std::string& flag) {
   std::istringstream lines(help);
   for (std::string line; std::getline(lines, line);) {
     std::istringstream words(line);
-    std::string word;
-    while (words >> word) {
-      if (word == flag || word.starts_with(flag + "=") || word.starts_with(flag + " ") ||
-          word.ends_with("," + flag)) {
-        return line;
-      }
-    }
+    std::string first;
+    if (!(words >> first)) continue;
+    if (first == flag || first.starts_with(flag + "=") || first.ends_with("," + flag)) return line;
   }
   return "";
 }
