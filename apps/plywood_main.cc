@@ -1,70 +1,115 @@
-// plywood: the command line of the Plywood testbed.
-//   plywood run EXPERIMENT.yaml [--out DIR] [--seed N] [--set key.path=value]...
-//   plywood bench [--seconds S] [--world PATH]
-//   plywood replay LOG --extractor NAME [--out DIR] [--skip-bad]
-//   plywood score trajectory|lines|grid RUN_DIR FILE [--out FILE.json] [...]
+// plywood: the command line of the Plywood testbed. `plywood --help` lists the commands,
+// `plywood COMMAND --help` their flags with defaults and an example.
 // Exit codes: 0 success, 1 a failure during the run, 2 bad input (config, files, usage).
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "apps/bench_command.h"
-#include "apps/command_line.h"
-#include "apps/replay_command.h"
-#include "apps/run_command.h"
-#include "apps/sweep_command.h"
-#include "apps/score_command.h"
-#include "apps/train_command.h"
+#include "apps/command.h"
 #include "sim/config/config_error.h"
 
+namespace plywood::apps {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: plywood <command> [options]\n"
-    "  run EXPERIMENT.yaml [--out DIR] [--seed N] [--set key.path=value]... [--quiet]\n"
-    "      run one experiment and write its results to DIR (default runs/NAME-seedN)\n"
-    "  bench [--seconds S] [--world PATH]\n"
-    "      print the real-time factor and ray throughput of a P3-DX with LMS 200 + 16 sonars\n"
-    "  replay LOG --extractor NAME [--out DIR] [--skip-bad]\n"
-    "      run a line extractor on every scan of a CARMEN log (plain or .gz) and score it\n"
-    "  score trajectory|lines|grid RUN_DIR FILE [--out FILE.json] [--name NAME]\n"
-    "        [--resolution M --origin X,Y [--threshold P]]\n"
-    "      score a trajectory (TUM or CSV), per-scan line segments or an occupancy grid (PNG,\n"
-    "      PGM) computed elsewhere against a finished run's ground truth\n"
-    "  train sonar-net [--out FILE] [--rooms N] [--poses N] [--epochs N] [--seed N]\n"
-    "      train seed 001's sonar interpretation network on simulated rooms\n";
+constexpr const char* kDescription =
+    "plywood " PLYWOOD_VERSION
+    ": a MuJoCo testbed for mobile-robot perception (simulated P3-DX and Magellan Pro in plywood "
+    "rooms, scored against ground truth)";
 
-int Dispatch(const std::vector<std::string>& args) {
-  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-    std::fputs(kUsage, args.empty() ? stderr : stdout);
-    return args.empty() ? 2 : 0;
+constexpr const char* kFooter =
+    "Exit codes: 0 success, 1 a failure during a run, 2 bad input (config, files, usage).\n"
+    "Examples:\n"
+    "  plywood run experiments/default.yaml\n"
+    "  plywood run --help";
+
+// Where a parse error happened, for the one line that reports it: "run: " or "".
+std::string Where(const CLI::App& app) {
+  const std::vector<CLI::App*> parsed = app.get_subcommands();
+  return parsed.empty() ? "" : parsed.front()->get_name() + ": ";
+}
+
+std::string SeeHelp(const std::string& where) {
+  return " (see plywood " + (where.empty() ? "" : where.substr(0, where.size() - 2) + " ") +
+         "--help)";
+}
+
+// CLI11 would report a stray top-level word or flag as a missing subcommand; name it instead.
+void CheckFirstArgument(const std::vector<Command>& commands, const std::string& first) {
+  if (first == "-h" || first == "--help" || first == "--version") return;
+  if (first.starts_with('-')) throw UsageError("unknown option " + first + SeeHelp(""));
+  std::string names;
+  for (const Command& command : commands) {
+    if (command.cli->get_name() == first) return;
+    names += (names.empty() ? "" : ", ") + command.cli->get_name();
   }
-  const std::vector<std::string> rest(args.begin() + 1, args.end());
-  if (args[0] == "run") return plywood::apps::RunCommand(rest);
-  if (args[0] == "bench") return plywood::apps::BenchCommand(rest);
-  if (args[0] == "replay") return plywood::apps::ReplayCommand(rest);
-  if (args[0] == "train") return plywood::apps::TrainCommand(rest);
-  if (args[0] == "sweep") return plywood::apps::SweepCommand(rest);
-  if (args[0] == "score") return plywood::apps::ScoreCommand(rest);
-  throw plywood::apps::UsageError{"unknown command '" + args[0] + "' (try plywood --help)"};
+  throw UsageError("unknown command '" + first + "'; commands: " + names + SeeHelp(""));
+}
+
+// Each command takes only its own flags and positionals: the first stray word is named.
+void RejectExtras(const Command& command) {
+  const std::vector<std::string> extras = command.cli->remaining();
+  if (extras.empty()) return;
+  const std::string where = command.cli->get_name() + ": ";
+  if (extras.front().starts_with('-')) {
+    throw UsageError(where + "unknown option " + extras.front() + SeeHelp(where));
+  }
+  throw UsageError(where + "unexpected argument '" + extras.front() + "'" + SeeHelp(where));
+}
+
+int Main(int argc, char** argv) {
+  CLI::App app(kDescription, "plywood");
+  app.set_version_flag("--version", "plywood " PLYWOOD_VERSION);
+  app.require_subcommand(1);
+  app.get_formatter()->column_width(36);
+  app.footer(kFooter);
+  const std::vector<Command> commands = {AddRunCommand(app),    AddBenchCommand(app),
+                                         AddReplayCommand(app), AddScoreCommand(app),
+                                         AddSweepCommand(app),  AddTrainCommand(app)};
+  for (const Command& command : commands) command.cli->allow_extras();
+
+  if (argc < 2) {
+    std::fputs(app.help().c_str(), stderr);
+    return 2;
+  }
+  if (std::string(argv[1]) == "help") {  // "plywood help" as in earlier versions
+    std::fputs(app.help().c_str(), stdout);
+    return 0;
+  }
+  try {
+    CheckFirstArgument(commands, argv[1]);
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    const std::string where = Where(app);
+    throw UsageError(where + e.what() + SeeHelp(where));
+  }
+  for (const Command& command : commands) {
+    if (!command.cli->parsed()) continue;
+    RejectExtras(command);
+    return command.run();
+  }
+  throw UsageError("no command given" + SeeHelp(""));
 }
 
 }  // namespace
+}  // namespace plywood::apps
 
 int main(int argc, char** argv) {
-  const std::vector<std::string> args(argv + 1, argv + argc);
   try {
-    return Dispatch(args);
-  } catch (const plywood::apps::UsageError& e) {
-    std::fprintf(stderr, "plywood: %s\n", e.message.c_str());
-    return 2;
+    return plywood::apps::Main(argc, argv);
   } catch (const plywood::sim::ConfigError& e) {
     std::fprintf(stderr, "plywood: %s\n", e.what());
     return 2;
-  } catch (const std::invalid_argument& e) {
+  } catch (const std::invalid_argument& e) {  // UsageError too
     std::fprintf(stderr, "plywood: %s\n", e.what());
     return 2;
   } catch (const std::exception& e) {

@@ -1,25 +1,68 @@
-#include "apps/run_command.h"
+// plywood run EXPERIMENT.yaml [--out DIR] [--seed N] [--set KEY.PATH=VALUE]... [--quiet]
+//                             [--no-snapshot] [--force]
 
-#include "apps/command_line.h"
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "apps/command.h"
 #include "eval/protocol.h"
 #include "sim/config/experiment_config.h"
+#include "sim/runner/run_directory.h"
 
 namespace plywood::apps {
 
-int RunCommand(const std::vector<std::string>& args) {
-  const CommandLine line(args, {"--out", "--seed", "--set"}, {"--quiet", "--no-snapshot"});
-  if (line.positional().size() != 1) {
-    throw UsageError{
-        "usage: plywood run EXPERIMENT.yaml [--out DIR] [--seed N] [--set key=value]..."};
-  }
-  std::vector<std::string> overrides = line.Values("--set");
-  if (const auto seed = line.Value("--seed")) overrides.push_back("seed=" + *seed);
-  const sim::ExperimentConfig config = sim::LoadExperimentConfig(line.positional()[0], overrides);
-  const std::string out_dir =
-      line.Value("--out").value_or("runs/" + config.name + "-seed" + std::to_string(config.seed));
-  const bool snapshots = config.output.snapshot && !line.Switch("--no-snapshot");
-  return eval::RunProtocol(
-      eval::ProtocolContext{config, out_dir, line.Switch("--quiet"), snapshots});
+Command AddRunCommand(CLI::App& app) {
+  struct Flags {
+    std::string experiment;
+    std::string out;
+    std::string seed;
+    std::vector<std::string> overrides;
+    bool quiet = false;
+    bool no_snapshot = false;
+    bool force = false;
+  };
+  auto flags = std::make_shared<Flags>();
+  CLI::App* cli = app.add_subcommand(
+      "run", "Run one experiment (or its protocol's runs) and write its results to a directory");
+  cli->add_option("EXPERIMENT", flags->experiment, "experiment YAML file (docs/experiments.md)")
+      ->required();
+  cli->add_option("--out", flags->out, "results directory (docs/run_outputs.md)")
+      ->type_name("DIR")
+      ->default_str("runs/NAME-seedSEED");
+  CLI::Option* seed = cli->add_option("--seed", flags->seed,
+                                      "seed of every random draw (default: the experiment's seed:)")
+                          ->type_name("N");
+  cli->add_option("--set", flags->overrides,
+                  "override one key of the experiment, e.g. robot.spawn.x_m=1 (repeatable)")
+      ->type_name("KEY.PATH=VALUE")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  cli->add_flag("--quiet", flags->quiet, "no progress and no summary");
+  cli->add_flag("--no-snapshot", flags->no_snapshot,
+                "write no pictures (as output.snapshot: false)");
+  cli->add_flag("--force", flags->force,
+                "replace an earlier run in --out (a directory with config.yaml); other files are "
+                "never deleted");
+  cli->footer(
+      "Examples:\n"
+      "  plywood run experiments/default.yaml\n"
+      "  plywood run experiments/default.yaml --out runs/demo --seed 2 --set duration_s=30 "
+      "--force");
+  return {
+      cli, [flags, seed] {
+        std::vector<std::string> overrides = flags->overrides;
+        if (seed->count() > 0) overrides.push_back("seed=" + flags->seed);
+        const sim::ExperimentConfig config =
+            sim::LoadExperimentConfig(flags->experiment, overrides);
+        const std::filesystem::path out_dir =
+            flags->out.empty() ? "runs/" + config.name + "-seed" + std::to_string(config.seed)
+                               : flags->out;
+        eval::FindProtocol(config);  // an unknown protocol must not cost an earlier run
+        sim::PrepareRunDirectory(out_dir, flags->force);
+        const bool snapshots = config.output.snapshot && !flags->no_snapshot;
+        return eval::RunProtocol(eval::ProtocolContext{config, out_dir, flags->quiet, snapshots});
+      }};
 }
 
 }  // namespace plywood::apps

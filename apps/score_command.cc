@@ -1,10 +1,12 @@
-#include "apps/score_command.h"
+// plywood score trajectory|lines|grid RUN_DIR FILE [--out FILE.json] [--name NAME]
+//               [--resolution M --origin X,Y [--threshold P]]
 
 #include <cstdio>
 #include <fstream>
+#include <memory>
 #include <stdexcept>
 
-#include "apps/command_line.h"
+#include "apps/command.h"
 #include "eval/score/grid_score.h"
 #include "eval/score/lines_score.h"
 #include "eval/score/trajectory_score.h"
@@ -13,62 +15,101 @@
 namespace plywood::apps {
 namespace {
 
-constexpr const char* kUsage =
-    "usage: plywood score trajectory|lines|grid RUN_DIR FILE [--out FILE.json] [--name NAME] "
-    "[--resolution M --origin X,Y [--threshold P]] (see plywood --help)";
-
 // "X,Y" as two finite numbers. @throws UsageError.
 Eigen::Vector2d ParseOrigin(const std::string& text) {
   const auto comma = text.find(',');
   const auto x = perception::ParseFiniteNumber(text.substr(0, comma));
   const auto y = comma == std::string::npos ? std::nullopt
                                             : perception::ParseFiniteNumber(text.substr(comma + 1));
-  if (!x || !y) throw UsageError{"--origin: expected X,Y in metres, got '" + text + "'"};
+  if (!x || !y) throw UsageError("score: --origin: expected X,Y in metres, got '" + text + "'");
   return {*x, *y};
 }
 
 }  // namespace
 
-int ScoreCommand(const std::vector<std::string>& args) {
-  const CommandLine line(args, {"--out", "--name", "--resolution", "--origin", "--threshold"}, {});
-  const std::vector<std::string>& positional = line.positional();
-  if (positional.size() != 3) throw UsageError{kUsage};
-  const std::string& what = positional[0];
-  const std::filesystem::path run_dir = positional[1], file = positional[2];
-  const std::string name = line.Value("--name").value_or("");
-  const bool grid = what == "grid";
-  for (const char* flag : {"--resolution", "--origin", "--threshold"}) {
-    if (!grid && line.Value(flag)) throw UsageError{std::string(flag) + " is for score grid only"};
-  }
-  if (grid && line.Value("--name")) throw UsageError{"--name is for score trajectory and lines"};
-
-  eval::ScoreReport report;
-  if (what == "trajectory") {
-    report = eval::ScoreTrajectoryFile(run_dir, file, {.name = name});
-  } else if (what == "lines") {
-    report = eval::ScoreLinesFile(run_dir, file, {.name = name});
-  } else if (grid) {
-    if (!line.Value("--resolution") || !line.Value("--origin")) {
-      throw UsageError{"score grid needs --resolution M (metres per pixel) and --origin X,Y"};
-    }
-    eval::GridPlacement placement;
-    placement.resolution_m = *line.Number("--resolution");
-    placement.origin_W = ParseOrigin(*line.Value("--origin"));
-    placement.occupied_threshold = line.Number("--threshold").value_or(0.5);
-    placement.Validate();
-    report = eval::ScoreGridFile(run_dir, file, placement);
-  } else {
-    throw UsageError{"score: unknown kind '" + what + "' (trajectory, lines or grid)"};
-  }
-  std::fputs(report.table.c_str(), stdout);
-  if (const auto out = line.Value("--out")) {
-    std::ofstream json(*out, std::ios::binary);
-    json << report.metrics.ToJson();
-    json.flush();
-    if (!json) throw std::runtime_error(*out + ": cannot write");
-    std::printf("%-18s %s\n", "results", out->c_str());
-  }
-  return 0;
+Command AddScoreCommand(CLI::App& app) {
+  struct Flags {
+    std::string what;
+    std::string run_dir;
+    std::string file;
+    std::string out;
+    std::string name;
+    double resolution_m = 0.0;
+    std::string origin;
+    double threshold = 0.5;
+  };
+  auto flags = std::make_shared<Flags>();
+  CLI::App* cli = app.add_subcommand(
+      "score",
+      "Score a trajectory (TUM or CSV), per-scan line segments (CSV) or an occupancy grid (PNG, "
+      "PGM) computed by any program against a finished run's ground truth, with the runner's own "
+      "scorers");
+  cli->add_option("KIND", flags->what, "trajectory, lines or grid")
+      ->required()
+      ->check(CLI::IsMember({"trajectory", "lines", "grid"}));
+  cli->add_option("RUN_DIR", flags->run_dir, "a finished `plywood run` directory")->required();
+  cli->add_option("FILE", flags->file, "the file to score (docs/run_outputs.md)")->required();
+  cli->add_option("--out", flags->out, "also write the figures as JSON (metrics.json's keys)")
+      ->type_name("FILE.json");
+  CLI::Option* name =
+      cli->add_option("--name", flags->name,
+                      "trajectory/lines: the name the figures get (default: from the file)")
+          ->type_name("NAME");
+  CLI::Option* resolution =
+      cli->add_option("--resolution", flags->resolution_m, "grid: metres per pixel (required)")
+          ->type_name("M");
+  CLI::Option* origin = cli->add_option("--origin", flags->origin,
+                                        "grid: world position of the lower-left pixel's corner "
+                                        "(required)")
+                            ->type_name("X,Y");
+  CLI::Option* threshold = cli->add_option("--threshold", flags->threshold,
+                                           "grid: occupancy above which a pixel counts as not free")
+                               ->type_name("P")
+                               ->capture_default_str();
+  cli->footer(
+      "Examples:\n"
+      "  plywood score trajectory runs/default-seed1 my_estimate.tum\n"
+      "  plywood score lines runs/default-seed1 my_lines.csv --out scores.json\n"
+      "  plywood score grid runs/seed001_room_1-seed1 map.pgm --resolution 0.05 --origin "
+      "-2,-2");
+  return {cli, [flags, name, resolution, origin, threshold] {
+            const bool grid = flags->what == "grid";
+            for (const CLI::Option* o : {resolution, origin, threshold}) {
+              if (!grid && o->count() > 0) {
+                throw UsageError("score: " + o->get_name() + " is for score grid only");
+              }
+            }
+            if (grid && name->count() > 0) {
+              throw UsageError("score: --name is for score trajectory and lines");
+            }
+            eval::ScoreReport report;
+            if (flags->what == "trajectory") {
+              report =
+                  eval::ScoreTrajectoryFile(flags->run_dir, flags->file, {.name = flags->name});
+            } else if (flags->what == "lines") {
+              report = eval::ScoreLinesFile(flags->run_dir, flags->file, {.name = flags->name});
+            } else {
+              if (resolution->count() == 0 || origin->count() == 0) {
+                throw UsageError(
+                    "score: grid needs --resolution M (metres per pixel) and --origin X,Y");
+              }
+              eval::GridPlacement placement;
+              placement.resolution_m = flags->resolution_m;
+              placement.origin_W = ParseOrigin(flags->origin);
+              placement.occupied_threshold = flags->threshold;
+              placement.Validate();
+              report = eval::ScoreGridFile(flags->run_dir, flags->file, placement);
+            }
+            std::fputs(report.table.c_str(), stdout);
+            if (!flags->out.empty()) {
+              std::ofstream json(flags->out, std::ios::binary);
+              json << report.metrics.ToJson();
+              json.flush();
+              if (!json) throw std::runtime_error(flags->out + ": cannot write");
+              std::printf("%-18s %s\n", "results", flags->out.c_str());
+            }
+            return 0;
+          }};
 }
 
 }  // namespace plywood::apps

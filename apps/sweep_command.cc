@@ -1,10 +1,15 @@
-#include "apps/sweep_command.h"
+// plywood sweep SWEEP.yaml [--jobs N] [--out DIR] [--shard I/N] [--no-collect] [--quiet]
+//                          [--slurm [--partition P] [--max-parallel K] [--tasks N] [--dry-run]]
+//                          [--bench]
+// plywood sweep --collect DIR
 
 #include <unistd.h>
 
 #include <climits>
+#include <cstdio>
+#include <memory>
 
-#include "apps/command_line.h"
+#include "apps/command.h"
 #include "eval/sweep/sweep.h"
 
 namespace plywood::apps {
@@ -13,50 +18,97 @@ namespace {
 std::filesystem::path SelfExecutable() {
   char buffer[PATH_MAX];
   const ssize_t n = readlink("/proc/self/exe", buffer, sizeof(buffer) - 1);
-  if (n <= 0) throw UsageError{"cannot find the plywood binary (/proc/self/exe)"};
-  return std::string(buffer, n);
+  if (n <= 0) throw std::runtime_error("cannot find the plywood binary (/proc/self/exe)");
+  return std::string(buffer, static_cast<std::size_t>(n));
 }
 
 }  // namespace
 
-int SweepCommand(const std::vector<std::string>& args) {
-  const CommandLine line(
-      args, {"--jobs", "--out", "--shard", "--partition", "--max-parallel", "--tasks", "--collect"},
-      {"--slurm", "--dry-run", "--bench", "--no-collect", "--quiet"});
-  const bool quiet = line.Switch("--quiet");
-  if (const auto dir = line.Value("--collect")) {
-    if (!line.positional().empty()) throw UsageError{"--collect DIR takes no sweep file"};
-    return eval::CollectSweepCommand(*dir, quiet);
-  }
-  if (line.positional().size() != 1) {
-    throw UsageError{
-        "usage: plywood sweep SWEEP.yaml [--jobs N] [--out DIR] [--shard I/N] "
-        "[--slurm [--partition P] [--max-parallel K] [--dry-run]] | --collect DIR"};
-  }
-  eval::SweepInvocation invocation;
-  invocation.sweep_file = line.positional()[0];
-  invocation.out = line.Value("--out").value_or("");
-  invocation.jobs = static_cast<int>(line.Number("--jobs").value_or(0));
-  if (invocation.jobs < 0) throw UsageError{"--jobs: must be >= 1"};
-  if (const auto shard = line.Value("--shard")) {
-    int i = -1, n = 0;
-    char extra = 0;
-    if (std::sscanf(shard->c_str(), "%d/%d%c", &i, &n, &extra) != 2 || n < 1 || i < 0 || i >= n)
-      throw UsageError{"--shard: expected I/N with 0 <= I < N, got '" + *shard + "'"};
-    invocation.shard_index = i;
-    invocation.shard_count = n;
-  }
-  invocation.collect = !line.Switch("--no-collect");
-  invocation.quiet = quiet;
-  invocation.slurm = line.Switch("--slurm");
-  invocation.dry_run = line.Switch("--dry-run");
-  invocation.bench = line.Switch("--bench");
-  invocation.slurm_options.partition = line.Value("--partition").value_or("");
-  invocation.slurm_options.max_parallel =
-      static_cast<int>(line.Number("--max-parallel").value_or(0));
-  invocation.slurm_options.tasks = static_cast<int>(line.Number("--tasks").value_or(0));
-  invocation.plywood = SelfExecutable();
-  return eval::RunSweep(invocation);
+Command AddSweepCommand(CLI::App& app) {
+  struct Flags {
+    std::string sweep;
+    std::string collect;
+    std::string shard;
+    eval::SweepInvocation invocation;
+  };
+  auto flags = std::make_shared<Flags>();
+  eval::SweepInvocation& inv = flags->invocation;
+  CLI::App* cli = app.add_subcommand(
+      "sweep",
+      "Run an experiment over worlds x seeds x settings (docs/sweeps.md): one process per run on "
+      "every core, resumable after a kill, or as a Slurm job array; results.csv, summary.csv, "
+      "plots");
+  cli->add_option("SWEEP", flags->sweep, "sweep YAML file (docs/sweeps.md)");
+  cli->add_option("--collect", flags->collect,
+                  "re-aggregate a sweep directory (results.csv, summary.csv, plots) and stop")
+      ->type_name("DIR");
+  cli->add_option("--jobs", inv.jobs, "runs at once (0: one per core)")
+      ->type_name("N")
+      ->check(CLI::Range(0, 4096))
+      ->capture_default_str();
+  cli->add_option("--out", inv.out, "sweep directory")
+      ->type_name("DIR")
+      ->default_str("runs/sweeps/NAME");
+  cli->add_option("--shard", flags->shard,
+                  "run only the cells whose index % N == I (what each Slurm task runs)")
+      ->type_name("I/N");
+  cli->add_flag("--no-collect", "run only; leave results.csv etc. to --collect")
+      ->each([flags](const std::string&) { flags->invocation.collect = false; });
+  cli->add_flag("--quiet", inv.quiet, "no progress, no table");
+  cli->add_flag("--slurm", inv.slurm,
+                "write OUT/slurm/sweep.sbatch (a job array of shards) and submit it with sbatch");
+  cli->add_option("--partition", inv.slurm_options.partition, "Slurm partition (with --slurm)")
+      ->type_name("P");
+  cli->add_option("--max-parallel", inv.slurm_options.max_parallel,
+                  "at most K array tasks at once (with --slurm; 0: no limit)")
+      ->type_name("K")
+      ->check(CLI::Range(0, 100000))
+      ->capture_default_str();
+  cli->add_option("--tasks", inv.slurm_options.tasks,
+                  "array tasks (with --slurm; 0: one per run, at most 1000)")
+      ->type_name("N")
+      ->check(CLI::Range(0, 100000))
+      ->capture_default_str();
+  cli->add_flag("--dry-run", inv.dry_run, "with --slurm: write the script, do not submit it");
+  cli->add_flag("--bench", inv.bench,
+                "run the sweep twice from scratch, with --jobs 1 and with --jobs N, and print the "
+                "runs/s of both");
+  cli->footer(
+      "Examples:\n"
+      "  plywood sweep experiments/sweeps/minimal.yaml\n"
+      "  plywood sweep experiments/sweeps/lines_generated.yaml --jobs 2 --out /tmp/lines\n"
+      "  plywood sweep experiments/sweeps/minimal.yaml --slurm --max-parallel 8\n"
+      "  plywood sweep --collect runs/sweeps/minimal");
+  return {
+      cli, [flags] {
+        eval::SweepInvocation& inv = flags->invocation;
+        if (!flags->collect.empty()) {
+          if (!flags->sweep.empty()) {
+            throw UsageError("sweep: --collect DIR takes no sweep file");
+          }
+          return eval::CollectSweepCommand(flags->collect, inv.quiet);
+        }
+        if (flags->sweep.empty()) {
+          throw UsageError("sweep: give a sweep file, or --collect DIR (see plywood sweep --help)");
+        }
+        if (!flags->shard.empty()) {
+          int i = -1, n = 0;
+          char extra = 0;
+          if (std::sscanf(flags->shard.c_str(), "%d/%d%c", &i, &n, &extra) != 2 || n < 1 || i < 0 ||
+              i >= n) {
+            throw UsageError("sweep: --shard: expected I/N with 0 <= I < N, got '" + flags->shard +
+                             "'");
+          }
+          inv.shard_index = i;
+          inv.shard_count = n;
+        }
+        if (!inv.slurm && (inv.dry_run || !inv.slurm_options.partition.empty())) {
+          throw UsageError("sweep: --dry-run and --partition go with --slurm");
+        }
+        inv.sweep_file = flags->sweep;
+        inv.plywood = SelfExecutable();
+        return eval::RunSweep(inv);
+      }};
 }
 
 }  // namespace plywood::apps

@@ -57,8 +57,8 @@ TEST(ReplayCliTest, MalformedLinesFailWithTheirLineNumberOrAreSkippedAndCounted)
     EXPECT_NE(r.err.find("bad.log:4:"), std::string::npos) << r.err;  // file:line
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 
-    const Result skipped =
-        RunPlywood("replay " + log.string() + " --skip-bad --out " + (dir / "out").string(), dir);
+    const Result skipped = RunPlywood(
+        "replay " + log.string() + " --skip-bad --force --out " + (dir / "out").string(), dir);
     EXPECT_EQ(skipped.exit_code, 0) << skipped.err;
     EXPECT_NE(skipped.out.find("(3 scans, 1 lines skipped)"), std::string::npos) << skipped.out;
     EXPECT_NE(Slurp(dir / "out" / "metrics.json").find("\"skipped_lines\": 1"), std::string::npos);

@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <random>
 
@@ -40,10 +39,11 @@ msgs::LaserScan RoomScan() {
 
 }  // namespace
 
-void PrintLineExtractorBench(double seconds_per_extractor) {
+LineExtractorBench MeasureLineExtractors(double seconds_per_extractor) {
   const perception::ScanPoints scan =
       perception::MakeScanPoints(RoomScan(), perception::ScanFilter{});
-  std::printf("line extraction, 361-beam scan (%zu points), 1 core:\n", scan.size());
+  LineExtractorBench bench;
+  bench.scan_points = scan.size();
   for (const std::string& name : perception::LineExtractorNames()) {
     const auto extractor = perception::MakeLineExtractor(name);
     std::size_t lines = 0;
@@ -54,9 +54,10 @@ void PrintLineExtractorBench(double seconds_per_extractor) {
       for (int k = 0; k < 20; ++k, ++scans) lines += extractor->Extract(scan).size();
       elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
-    std::printf("  %-26s %10.0f scans/s  (%.1f lines per scan)\n", name.c_str(), scans / elapsed,
-                static_cast<double>(lines) / scans);
+    bench.extractors.push_back(
+        {name, scans / elapsed, static_cast<double>(lines) / static_cast<double>(scans)});
   }
+  return bench;
 }
 
 }  // namespace plywood::eval

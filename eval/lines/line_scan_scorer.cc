@@ -4,6 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "perception/lines/line_extractor_factory.h"
+#include "sim/runner/json_text.h"
+
 namespace plywood::eval {
 
 TruthScan MakeTruthScan(std::span<const sim::LaserRecord* const> records,
@@ -122,12 +125,10 @@ std::vector<ExtractorScore> AddLineMetrics(sim::ExperimentRunner& runner) {
 }
 
 std::string LineTimingJson(std::span<const ExtractorScore> scores) {
-  std::string json = "{\"lines\": {";
-  for (std::size_t i = 0; i < scores.size(); ++i) {
-    json += (i ? ", \"" : "\"") + scores[i].name +
-            "\": {\"us_per_scan\": " + sim::FormatNumber(scores[i].us_per_scan) + "}";
-  }
-  return json + "}}\n";
+  nlohmann::ordered_json lines = nlohmann::ordered_json::object();  // in the config's order
+  for (const ExtractorScore& s : scores) lines[s.name]["us_per_scan"] = s.us_per_scan;
+  return sim::WriteJson(nlohmann::ordered_json{{"lines", lines}},
+                        {.layout = sim::JsonStyle::Layout::kOneLine});
 }
 
 }  // namespace plywood::eval

@@ -6,8 +6,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "eval/sonar_map/cognitive_map_json.h"
 #include "eval/sonar_map/sonar_ground_truth.h"
-#include "perception/sonar_map/cognitive_map_json.h"
 #include "perception/sonar_map/sonar_explorer.h"
 #include "render/png_image.h"
 #include "sim/world/occupancy_raster.h"
@@ -70,7 +70,7 @@ void WriteSonarMap(const sim::ExperimentRunner& runner, const std::string& out_d
   std::filesystem::create_directories(out_dir);
   const std::filesystem::path path = std::filesystem::path(out_dir) / "cognitive_map.json";
   std::ofstream file(path);
-  file << perception::CognitiveMapToJson(explorer->Map());
+  file << CognitiveMapToJson(explorer->Map());
   if (!file) throw std::runtime_error(path.string() + ": cannot write");
 }
 

@@ -15,7 +15,7 @@ namespace plywood::eval {
 // (and does nothing) for any other controller.
 bool AddSonarMapMetrics(sim::ExperimentRunner& runner);
 
-// Writes DIR/cognitive_map.json (perception/sonar_map/cognitive_map_json.h): the map the explorer
+// Writes DIR/cognitive_map.json (eval/sonar_map/cognitive_map_json.h): the map the explorer
 // built, in its odometry frame. No-op for other controllers.
 void WriteSonarMap(const sim::ExperimentRunner& runner, const std::string& out_dir);
 

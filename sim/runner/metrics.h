@@ -4,11 +4,14 @@
 #include <string>
 #include <variant>
 
+#include "sim/runner/format_number.h"
+
 namespace plywood::sim {
 
 // The numbers a run reports, keyed by dotted paths ("odometry.encoder.drift_percent"). Written as
-// nested JSON objects with keys sorted and numbers in shortest round-trip form, so the same run
-// gives the same bytes. Wall-clock figures never go here: they would break byte-identical reruns.
+// nested JSON objects (nlohmann) with the keys of each object sorted and numbers in shortest
+// round-trip form (sim/runner/json_text.h), so the same run gives the same bytes. Wall-clock
+// figures never go here: they would break byte-identical reruns.
 class Metrics {
  public:
   using Value = std::variant<double, std::string>;
@@ -25,9 +28,5 @@ class Metrics {
  private:
   std::map<std::string, Value> values_;
 };
-
-// Shortest decimal text that reads back to exactly `value` ("0.1", "1e-07", "12"); "null" for
-// NaN and infinities, which JSON cannot hold.
-std::string FormatNumber(double value);
 
 }  // namespace plywood::sim

@@ -109,6 +109,17 @@ double Scene::TrueYawRateRadS() const {
          (1.0 - 2.0 * (x * x + y * y)) * omega_B[2];
 }
 
+void Scene::PlaceRobot(const msgs::Pose2D& X_WR) {
+  mjtNum* q = data_->qpos + base_qpos_;
+  q[0] = X_WR.x_m;
+  q[1] = X_WR.y_m;
+  q[3] = std::cos(X_WR.theta_rad / 2);
+  q[4] = 0.0;
+  q[5] = 0.0;
+  q[6] = std::sin(X_WR.theta_rad / 2);
+  mj_forward(model_.get(), data_.get());
+}
+
 void Scene::SetWheelSpeeds(const msgs::WheelSpeedCommand& command) {
   data_->ctrl[left_motor_] = command.left_rad_s;
   data_->ctrl[right_motor_] = command.right_rad_s;

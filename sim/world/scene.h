@@ -51,6 +51,9 @@ class Scene {
   msgs::Pose2D TruePose() const;
   // Ground-truth yaw rate about the world's vertical axis.
   double TrueYawRateRadS() const;
+  // Puts the robot's base at X_WR (upright, height unchanged) and recomputes the kinematics
+  // (mj_forward), without stepping: for sampling sensor readings at chosen poses.
+  void PlaceRobot(const msgs::Pose2D& X_WR);
 
   // Wheel joint angles (rad); positive rotation drives forward.
   double LeftWheelAngleRad() const { return data_->qpos[left_wheel_qpos_]; }

@@ -15,10 +15,12 @@ std::string Slurp(const std::filesystem::path& path) {
   return text.str();
 }
 
-CliResult RunPlywood(const std::string& args, const std::filesystem::path& dir) {
+CliResult RunPlywood(const std::string& args, const std::filesystem::path& dir,
+                     const std::filesystem::path& working_dir) {
   const std::filesystem::path binary =
       std::filesystem::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood";
-  const std::string command = binary.string() + " " + args + " >" + (dir / "stdout").string() +
+  const std::string cd = working_dir.empty() ? "" : "cd '" + working_dir.string() + "' && ";
+  const std::string command = cd + binary.string() + " " + args + " >" + (dir / "stdout").string() +
                               " 2>" + (dir / "stderr").string();
   const int status = std::system(command.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, Slurp(dir / "stdout"),

@@ -15,7 +15,8 @@ struct CliResult {
 };
 
 // Runs the built `plywood` binary with `args` (a shell-quoted string), capturing stdout and
-// stderr in files under `dir`.
-CliResult RunPlywood(const std::string& args, const std::filesystem::path& dir);
+// stderr in files under `dir`; in `working_dir` when given, else in the test's own.
+CliResult RunPlywood(const std::string& args, const std::filesystem::path& dir,
+                     const std::filesystem::path& working_dir = {});
 
 }  // namespace plywood::testing

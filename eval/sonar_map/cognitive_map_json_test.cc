@@ -1,11 +1,12 @@
-#include "perception/sonar_map/cognitive_map_json.h"
+#include "eval/sonar_map/cognitive_map_json.h"
 
 #include <gtest/gtest.h>
 
 #include <limits>
 #include <string>
 
-namespace plywood::perception {
+namespace plywood::eval {
+using namespace perception;
 namespace {
 
 // A 3 x 2 m room with a 1 x 1 m obstacle against its south wall: three free partitions around
@@ -89,4 +90,4 @@ TEST(CognitiveMapJsonTest, EmptyListsAndNegativeZero) {
 }
 
 }  // namespace
-}  // namespace plywood::perception
+}  // namespace plywood::eval

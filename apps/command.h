@@ -1,0 +1,30 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+#include <stdexcept>
+
+namespace plywood::apps {
+
+// One `plywood` subcommand. Each AddXCommand (apps/x_command.cc, one file per command) registers
+// the subcommand, its flags with their defaults and an example on `app`, and returns it with what
+// to do once the command line has parsed. `run` returns the exit code (0 ok, 1 a failure during
+// the run); bad input throws sim::ConfigError or std::invalid_argument (exit code 2).
+struct Command {
+  CLI::App* cli = nullptr;
+  std::function<int()> run;
+};
+
+// Bad command-line usage found after parsing: one line, exit code 2.
+struct UsageError : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+Command AddRunCommand(CLI::App& app);
+Command AddBenchCommand(CLI::App& app);
+Command AddReplayCommand(CLI::App& app);
+Command AddTrainCommand(CLI::App& app);
+Command AddScoreCommand(CLI::App& app);
+Command AddSweepCommand(CLI::App& app);
+
+}  // namespace plywood::apps

@@ -1,0 +1,121 @@
+#include "eval/lines/log_replay_run.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <fstream>
+#include <stdexcept>
+
+#include "perception/lines/line_extractor_factory.h"
+#include "perception/logs/carmen_log.h"
+#include "render/overlay.h"
+#include "render/png_image.h"
+#include "render/world_to_pixel.h"
+#include "sim/config/lines_config.h"
+#include "sim/config/yaml_fields.h"
+#include "sim/runner/json_text.h"
+#include "sim/runner/metrics.h"
+#include "sim/runner/run_directory.h"
+
+namespace plywood::eval {
+namespace {
+
+void WriteText(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream file(path, std::ios::binary);
+  file << text;
+  if (!file) throw std::runtime_error(path.string() + ": cannot write");
+}
+
+// The record of the replay, so its directory is recognisable as a run (sim::HoldsPlywoodRun).
+std::string ReplayConfigYaml(const LogReplayRequest& request, const std::string& name,
+                             sim::LinesConfig lines) {
+  lines.extractors = {request.extractor};
+  YAML::Node root(YAML::NodeType::Map);
+  root["name"] = name;
+  root["replay"]["log"] = std::filesystem::absolute(request.log).string();
+  root["replay"]["extractor"] = request.extractor;
+  root["replay"]["skip_bad"] = request.skip_bad;
+  root["lines"] = sim::WriteLinesConfig(lines);
+  YAML::Emitter out;
+  out << root;
+  return std::string(out.c_str()) + "\n";
+}
+
+void WriteSegmentsPicture(const perception::CarmenLog& log, const perception::ReplayResult& result,
+                          const std::filesystem::path& path) {
+  // The segments of every scan, placed by the logged laser poses, on a white page.
+  render::WorldBounds bounds = render::WorldBounds::Empty();
+  for (const auto& [a, b] : result.segments_W) bounds.Extend(a), bounds.Extend(b);
+  for (const auto& record : log.lasers)
+    bounds.Extend(Eigen::Vector2d(record.X_WL.x_m, record.X_WL.y_m));
+  if (bounds.IsEmpty() || bounds.width_m() + bounds.height_m() <= 0.0) return;
+  const render::TopDownFrame frame = render::FrameBounds(bounds.Padded(1.0), 1600);
+  render::RgbImage image(frame.width_px, frame.height_px);
+  render::Fill(image, render::colours::kWhite);
+  for (const auto& [a, b] : result.segments_W)
+    render::DrawSegment(image, frame.world_to_pixel, a, b, render::colours::kBlue, 1.0);
+  for (const auto& record : log.lasers)
+    render::DrawPoint(image, frame.world_to_pixel, {record.X_WL.x_m, record.X_WL.y_m},
+                      render::colours::kRed, 1.0);
+  render::WritePng(image, path);
+}
+
+}  // namespace
+
+std::filesystem::path DefaultReplayDirectory(const std::filesystem::path& log,
+                                             const std::string& extractor) {
+  return "runs/replay-" + log.filename().string() + "-" + extractor;
+}
+
+LogReplaySummary RunLogReplay(const LogReplayRequest& request) {
+  // --set assignments read like an experiment's `lines:` section (ConfigError naming the key).
+  YAML::Node lines_node(YAML::NodeType::Map);
+  for (const std::string& assignment : request.overrides) {
+    sim::ApplyOverride(lines_node, assignment, "--set " + assignment);
+  }
+  sim::LinesConfig lines;
+  sim::ReadLinesConfig(sim::YamlFields(lines_node, "--set", ""), lines);
+  const auto extractor = perception::MakeLineExtractor(request.extractor, lines.options);
+  if (!std::filesystem::is_regular_file(request.log)) {
+    throw std::invalid_argument(request.log.string() + ": no such log file");
+  }
+  perception::CarmenReadOptions read_options;
+  read_options.skip_bad = request.skip_bad;
+  perception::CarmenLog log;
+  try {
+    log = perception::ReadCarmenLog(request.log, read_options);
+  } catch (const std::runtime_error& e) {
+    throw std::invalid_argument(e.what());  // a malformed log is bad input: one line, exit 2
+  }
+  LogReplaySummary summary;
+  summary.out_dir = request.out_dir.empty() ? DefaultReplayDirectory(request.log, request.extractor)
+                                            : request.out_dir;
+  sim::PrepareRunDirectory(summary.out_dir, request.force);
+  summary.skipped_lines = log.skipped_lines;
+  summary.result = perception::ReplayLog(log, *extractor);
+  const perception::ReplayResult& result = summary.result;
+
+  std::filesystem::create_directories(summary.out_dir);
+  WriteText(summary.out_dir / "config.yaml",
+            ReplayConfigYaml(
+                request, DefaultReplayDirectory(request.log, request.extractor).filename().string(),
+                lines));
+  sim::Metrics metrics;
+  metrics.Set("replay.extractor", request.extractor);
+  metrics.Set("replay.scans", static_cast<double>(result.scans));
+  metrics.Set("replay.skipped_lines", static_cast<double>(log.skipped_lines));
+  metrics.Set("replay.valid_rays", static_cast<double>(result.rays.rays));
+  metrics.Set("replay.lines", static_cast<double>(result.lines));
+  metrics.Set("replay.rays_explained", result.rays.Fraction());
+  metrics.Set("replay.rms_m", result.rays.RmsM());
+  metrics.Set("replay.rays_per_line", result.RaysPerLine());
+  metrics.Set("replay.lines_per_scan", result.LinesPerScan());
+  WriteText(summary.out_dir / "metrics.json", metrics.ToJson());
+  WriteText(
+      summary.out_dir / "timing.json",
+      sim::WriteJson(nlohmann::ordered_json{{"replay", {{"us_per_scan", result.UsPerScan()}}}},
+                     {.layout = sim::JsonStyle::Layout::kOneLine}));
+  WriteSegmentsPicture(log, result, summary.out_dir / "segments.png");
+  return summary;
+}
+
+}  // namespace plywood::eval

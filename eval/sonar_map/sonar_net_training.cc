@@ -1,0 +1,244 @@
+#include "eval/sonar_map/sonar_net_training.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "eval/sonar_map/sonar_ground_truth.h"
+#include "perception/sonar_map/sonar_cell_model.h"
+#include "sim/config/robot_catalog.h"
+#include "sim/raycast/mujoco_ray_caster.h"
+#include "sim/sensors/sonar_sensor.h"
+#include "sim/world/occupancy_raster.h"
+#include "sim/world/scene.h"
+
+namespace plywood::eval {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+struct Box {
+  double cx, cy, hx, hy;
+};
+
+struct RandomRoom {
+  double half_x = 0, half_y = 0;
+  std::vector<Box> obstacles;
+};
+
+// Rooms 2-5 m by 2-4.5 m with 0-3 boxes (0.25-0.8 m) placed freely or against a wall: the kinds of
+// scene seed 001 maps, but never its four evaluation layouts (3.5 x 3.0 m exactly).
+RandomRoom MakeRoom(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  RandomRoom room;
+  do {
+    room.half_x = 1.0 + 1.5 * u(rng);
+    room.half_y = 1.0 + 1.25 * u(rng);
+  } while (std::abs(room.half_x - 1.75) < 0.05 && std::abs(room.half_y - 1.5) < 0.05);
+  const int n = static_cast<int>(4 * u(rng));
+  for (int i = 0; i < n; ++i) {
+    Box b;
+    b.hx = 0.125 + 0.275 * u(rng);
+    b.hy = 0.125 + 0.275 * u(rng);
+    b.cx = (room.half_x - b.hx) * (2 * u(rng) - 1);
+    b.cy = (room.half_y - b.hy) * (2 * u(rng) - 1);
+    const double side = u(rng);  // half the boxes touch a wall, as in layouts 2 and 3
+    if (side < 0.125)
+      b.cx = room.half_x - b.hx;
+    else if (side < 0.25)
+      b.cx = -room.half_x + b.hx;
+    else if (side < 0.375)
+      b.cy = room.half_y - b.hy;
+    else if (side < 0.5)
+      b.cy = -room.half_y + b.hy;
+    room.obstacles.push_back(b);
+  }
+  return room;
+}
+
+std::string RoomMjcf(const RandomRoom& room) {
+  std::ostringstream s;
+  const double t = 0.009, hx = room.half_x, hy = room.half_y;
+  s << "<mujoco model=\"train_room\"><worldbody>\n"
+    << "<geom name=\"floor\" type=\"plane\" size=\"" << hx + 1 << ' ' << hy + 1 << " 0.05\"/>\n"
+    << "<geom type=\"box\" pos=\"0 " << -hy - t << " 0.5\" size=\"" << hx + 2 * t << ' ' << t
+    << " 0.5\"/>\n"
+    << "<geom type=\"box\" pos=\"0 " << hy + t << " 0.5\" size=\"" << hx + 2 * t << ' ' << t
+    << " 0.5\"/>\n"
+    << "<geom type=\"box\" pos=\"" << -hx - t << " 0 0.5\" size=\"" << t << ' ' << hy
+    << " 0.5\"/>\n"
+    << "<geom type=\"box\" pos=\"" << hx + t << " 0 0.5\" size=\"" << t << ' ' << hy
+    << " 0.5\"/>\n";
+  for (const Box& b : room.obstacles)
+    s << "<geom type=\"box\" pos=\"" << b.cx << ' ' << b.cy << " 0.3\" size=\"" << b.hx << ' '
+      << b.hy << " 0.3\"/>\n";
+  s << "</worldbody></mujoco>\n";
+  return s.str();
+}
+
+struct Dataset {
+  std::vector<perception::SonarSample> samples;
+  // For the classical model: the ring and the point of each sample.
+  std::vector<msgs::RangeRing> rings;
+  std::vector<std::pair<int, Eigen::Vector2d>> points;
+};
+
+// One room: `poses` random robot poses at least 0.3 m from everything, a ring each, and the 14 x
+// 14 local grid's cells (a random point inside each cell, so the net sees every angle) labelled
+// from the reachable-space ground truth.
+void Generate(const RandomRoom& room, int poses, const std::filesystem::path& dir, int index,
+              std::mt19937_64& rng, Dataset* out) {
+  const std::filesystem::path world = dir / ("room_" + std::to_string(index) + ".xml");
+  {
+    std::ofstream f(world);
+    f << RoomMjcf(room);
+  }
+  sim::SceneOptions so;
+  so.world_mjcf = world;
+  so.robot_mjcf = sim::FindRobot("magellan_pro").mjcf;
+  so.spawn = {0.0, 0.0, 0.0};
+  sim::Scene scene(so);
+  sim::OccupancyRasterOptions ro;
+  ro.resolution_m = 0.01;
+  const sim::OccupancyRaster raster = sim::RasteriseOccupancy(scene.model(), ro);
+  sim::SonarOptions sonar_options;  // specular misses on, as in the experiments
+  sim::SonarSensor sonar(scene, sim::SonarSensor::DefaultSiteNames(), sonar_options, rng());
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int made = 0, tries = 0;
+  while (made < poses && tries < 100 * poses) {
+    ++tries;
+    const double x = (room.half_x - 0.3) * (2 * u(rng) - 1);
+    const double y = (room.half_y - 0.3) * (2 * u(rng) - 1);
+    const double theta = 2 * kPi * u(rng);
+    bool clear = true;
+    for (const Box& b : room.obstacles)
+      if (std::abs(x - b.cx) < b.hx + 0.3 && std::abs(y - b.cy) < b.hy + 0.3) clear = false;
+    if (!clear) continue;
+    scene.PlaceRobot({x, y, theta});
+    sim::MujocoRayCaster caster(scene.model(), scene.data());
+    const msgs::RangeRing ring = sonar.Measure(scene, caster);
+    const eval::ReachableSpace space = eval::ComputeReachableSpace(raster, {x, y});
+    const int ring_index = static_cast<int>(out->rings.size());
+    out->rings.push_back(ring);
+    const double c = std::cos(theta), s = std::sin(theta);
+    for (int j = 0; j < 14; ++j)
+      for (int i = 0; i < 14; ++i) {
+        const Eigen::Vector2d p_R((i - 7 + u(rng)) * 0.1, (j - 7 + u(rng)) * 0.1);
+        const Eigen::Vector2d p_W(x + c * p_R.x() - s * p_R.y(), y + s * p_R.x() + c * p_R.y());
+        perception::SonarSample sample;
+        sample.x = perception::NormalisedFeatures(perception::ComputeCellFeatures(ring, p_R),
+                                                  ring.range_max_m);
+        sample.occupied = space.IsFree(p_W) ? 0.0 : 1.0;
+        out->samples.push_back(sample);
+        out->points.emplace_back(ring_index, p_R);
+      }
+    ++made;
+  }
+}
+
+// The working folder of the generated room files, removed however training ends.
+class TemporaryFolder {
+ public:
+  TemporaryFolder()
+      : path_(std::filesystem::temp_directory_path() /
+              ("plywood-train-" + std::to_string(::getpid()))) {
+    std::filesystem::create_directories(path_);
+  }
+  ~TemporaryFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  TemporaryFolder(const TemporaryFolder&) = delete;
+  TemporaryFolder& operator=(const TemporaryFolder&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+}  // namespace
+
+void SonarNetTrainingOptions::Validate() const {
+  auto count = [](const char* name, int value) {
+    if (value < 1 || value > 100000)
+      throw std::invalid_argument(std::string(name) +
+                                  ": must be a whole number in [1, 100000], got " +
+                                  std::to_string(value));
+  };
+  count("rooms", rooms);
+  count("test_rooms", test_rooms);
+  count("poses", poses);
+  train.Validate();
+  if (out.empty()) throw std::invalid_argument("out: needs a file name");
+}
+
+std::filesystem::path ShippedSonarNetPath() {
+  return sim::DataRoot() / "models" / "sonar_net_v1.txt";
+}
+
+void RefuseShippedSonarNet(const std::filesystem::path& out) {
+  namespace fs = std::filesystem;
+  const fs::path shipped = ShippedSonarNetPath();
+  std::error_code error;
+  const bool same_file = fs::equivalent(out, shipped, error);  // false if either is missing
+  if (same_file || fs::weakly_canonical(out) == fs::weakly_canonical(shipped)) {
+    throw std::invalid_argument(
+        out.string() + ": is the shipped model (" + shipped.string() +
+        "), which training never overwrites; train elsewhere and compare before copying it");
+  }
+}
+
+SonarNetTrainingReport TrainSonarNet(
+    const SonarNetTrainingOptions& options,
+    const std::function<void(const SonarNetDataSummary&)>& on_data) {
+  options.Validate();
+  RefuseShippedSonarNet(options.out);
+  const perception::SonarNetTrainOptions& train = options.train;
+  SonarNetTrainingReport report;
+  report.out = options.out;
+  // Before the long part, so an unwritable place fails at once.
+  if (options.out.has_parent_path()) std::filesystem::create_directories(options.out.parent_path());
+
+  std::mt19937_64 rng(train.seed);
+  Dataset train_set, test_set;
+  {
+    const TemporaryFolder folder;
+    for (int r = 0; r < options.rooms + options.test_rooms; ++r) {
+      const RandomRoom room = MakeRoom(rng);
+      Generate(room, options.poses, folder.path(), r, rng,
+               r < options.rooms ? &train_set : &test_set);
+    }
+  }
+  report.data = {options.rooms, options.test_rooms, train_set.samples.size(),
+                 test_set.samples.size()};
+  if (on_data) on_data(report.data);
+
+  perception::SonarNet net(train.hidden, train.seed);
+  report.train_loss = net.Train(train_set.samples, train);
+
+  std::vector<double> labels, p_net, p_classical, p_prior;
+  const perception::ClassicalSonarModel classical;
+  double occupied = 0.0;
+  for (const auto& s : train_set.samples) occupied += s.occupied;
+  const double base_rate = occupied / static_cast<double>(train_set.samples.size());
+  for (std::size_t i = 0; i < test_set.samples.size(); ++i) {
+    labels.push_back(test_set.samples[i].occupied);
+    p_net.push_back(net.Forward(test_set.samples[i].x));
+    const auto& [ring, p_R] = test_set.points[i];
+    p_classical.push_back(classical.Probability(test_set.rings[ring], p_R));
+    p_prior.push_back(base_rate);
+  }
+  report.net = perception::ScoreProbabilities(p_net, labels);
+  report.classical = perception::ScoreProbabilities(p_classical, labels);
+  report.base_rate = perception::ScoreProbabilities(p_prior, labels);
+  net.Save(options.out);
+  return report;
+}
+
+}  // namespace plywood::eval

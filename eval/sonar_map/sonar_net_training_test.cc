@@ -1,0 +1,68 @@
+#include "eval/sonar_map/sonar_net_training.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "tests/support/mujoco_test_support.h"
+
+namespace plywood::eval {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string Slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+SonarNetTrainingOptions Tiny(const fs::path& out) {
+  SonarNetTrainingOptions options;
+  options.rooms = 2;
+  options.test_rooms = 1;
+  options.poses = 3;
+  options.train.epochs = 2;
+  options.out = out;
+  return options;
+}
+
+TEST(SonarNetTrainingTest, TheShippedWeightsAreRefusedHoweverSpelled) {
+  const fs::path shipped = ShippedSonarNetPath();
+  ASSERT_TRUE(fs::exists(shipped));
+  EXPECT_THROW(RefuseShippedSonarNet(shipped), std::invalid_argument);
+  EXPECT_THROW(RefuseShippedSonarNet(shipped.parent_path() / ".." / "models" / shipped.filename()),
+               std::invalid_argument);
+  const fs::path dir = testing::MakeTempDir("sonar_net_training_refuse");
+  fs::create_hard_link(shipped, dir / "alias.txt");  // same file, other name
+  EXPECT_THROW(RefuseShippedSonarNet(dir / "alias.txt"), std::invalid_argument);
+  EXPECT_NO_THROW(RefuseShippedSonarNet(dir / "net.txt"));
+  EXPECT_NO_THROW(RefuseShippedSonarNet("runs/sonar_net/sonar_net.txt"));
+  EXPECT_THROW(TrainSonarNet(Tiny(shipped)), std::invalid_argument);
+}
+
+TEST(SonarNetTrainingTest, SameOptionsSameWeightsAndScoresOnHeldOutRooms) {
+  const fs::path dir = testing::MakeTempDir("sonar_net_training_same");
+  int data_calls = 0;
+  const SonarNetTrainingReport a =
+      TrainSonarNet(Tiny(dir / "a" / "net.txt"), [&](const SonarNetDataSummary&) { ++data_calls; });
+  const SonarNetTrainingReport b = TrainSonarNet(Tiny(dir / "b" / "net.txt"));
+  EXPECT_EQ(data_calls, 1);
+  // 14 x 14 cells for each of 3 poses a room.
+  EXPECT_EQ(a.data.train_cells, 2u * 3u * 196u);
+  EXPECT_EQ(a.data.test_cells, 1u * 3u * 196u);
+  const std::string weights = Slurp(dir / "a" / "net.txt");
+  EXPECT_EQ(weights.rfind("plywood-sonar-net", 0), 0u) << weights.substr(0, 40);
+  EXPECT_EQ(weights, Slurp(dir / "b" / "net.txt"));
+  EXPECT_EQ(a.net.cross_entropy, b.net.cross_entropy);
+  SonarNetTrainingOptions bad = Tiny(dir / "c.txt");
+  bad.poses = 0;
+  EXPECT_THROW(TrainSonarNet(bad), std::invalid_argument);
+  EXPECT_FALSE(fs::exists(dir / "c.txt"));
+}
+
+}  // namespace
+}  // namespace plywood::eval

@@ -1,0 +1,264 @@
+// The `plywood` command line itself (CLI11): help for every command lists every flag it accepts,
+// usage errors are one line with exit code 2, --version, the --out / --force rules that protect
+// earlier runs and a user's own files, and `train` never writing the shipped weights.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "tests/support/cli_test_support.h"
+#include "tests/support/mujoco_test_support.h"
+
+namespace plywood {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::CliResult;
+using testing::MakeTempDir;
+using testing::RunPlywood;
+using testing::Slurp;
+using testing::SourceRoot;
+using testing::WriteFile;
+
+// Every flag (and positional) each command accepts: a flag dropped from a command fails here.
+const std::map<std::string, std::vector<std::string>> kFlags = {
+    {"run",
+     {"EXPERIMENT", "--out", "--seed", "--set", "--quiet", "--no-snapshot", "--force", "--help"}},
+    {"bench", {"--seconds", "--world", "--help"}},
+    {"replay", {"LOG", "--extractor", "--set", "--skip-bad", "--out", "--force", "--help"}},
+    {"train",
+     {"MODEL", "--out", "--rooms", "--test-rooms", "--poses", "--epochs", "--hidden", "--seed",
+      "--quiet", "--help"}},
+};
+
+// Defaults the help must show, beside the flag.
+const std::map<std::string, std::vector<std::string>> kDefaults = {
+    {"run", {"runs/NAME-seedSEED"}},
+    {"bench", {"120", "worlds/office.xml"}},
+    {"replay", {"split_and_merge", "runs/replay-LOGFILE-EXTRACTOR"}},
+    {"train", {"runs/sonar_net/sonar_net.txt", "60", "15", "25", "30", "16,16"}},
+};
+
+bool IsOneLine(const std::string& text) {
+  return !text.empty() && std::count(text.begin(), text.end(), '\n') == 1 && text.back() == '\n';
+}
+
+// The help line that lists `flag`: its first word is the flag ("--out", "--seconds=120" or
+// "-h,--help"), so a flag only mentioned in another flag's description does not count.
+std::string LineOf(const std::string& help, const std::string& flag) {
+  std::istringstream lines(help);
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream words(line);
+    std::string first;
+    if (!(words >> first)) continue;
+    if (first == flag || first.starts_with(flag + "=") || first.ends_with("," + flag)) return line;
+  }
+  return "";
+}
+
+TEST(CliHelpTest, EveryCommandsHelpListsEveryFlagWithDefaultsAndAnExample) {
+  const fs::path dir = MakeTempDir("cli_help");
+  for (const auto& [command, flags] : kFlags) {
+    for (const char* help : {"--help", "-h"}) {
+      SCOPED_TRACE(command + " " + help);
+      const CliResult r = RunPlywood(command + " " + help, dir);
+      EXPECT_EQ(r.exit_code, 0) << r.err;
+      EXPECT_TRUE(r.err.empty()) << r.err;
+      for (const std::string& flag : flags) {
+        EXPECT_NE(LineOf(r.out, flag), "") << flag << " missing from:\n" << r.out;
+      }
+      for (const std::string& value : kDefaults.at(command)) {
+        EXPECT_NE(r.out.find(value), std::string::npos) << value << " missing from:\n" << r.out;
+      }
+      EXPECT_NE(r.out.find("Usage: plywood " + command), std::string::npos) << r.out;
+      EXPECT_NE(r.out.find("Example"), std::string::npos) << r.out;
+    }
+  }
+  // The flag lines carry their defaults, not just somewhere in the text.
+  const CliResult bench = RunPlywood("bench --help", dir);
+  EXPECT_NE(LineOf(bench.out, "--seconds").find("120"), std::string::npos) << bench.out;
+  const CliResult train = RunPlywood("train --help", dir);
+  EXPECT_NE(LineOf(train.out, "--epochs").find("30"), std::string::npos) << train.out;
+}
+
+TEST(CliHelpTest, TopLevelHelpListsEveryCommand) {
+  const fs::path dir = MakeTempDir("cli_help_top");
+  for (const char* help : {"--help", "-h"}) {
+    const CliResult r = RunPlywood(help, dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    for (const auto& [command, flags] : kFlags) {
+      EXPECT_NE(LineOf(r.out, command), "") << command << " missing from:\n" << r.out;
+    }
+  }
+  // No arguments at all: the same usage, on stderr, and exit code 2.
+  const CliResult none = RunPlywood("", dir);
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_TRUE(none.out.empty()) << none.out;
+  EXPECT_NE(none.err.find("Usage:"), std::string::npos) << none.err;
+  EXPECT_NE(none.err.find("replay"), std::string::npos) << none.err;
+}
+
+TEST(CliHelpTest, VersionIsTheProjectVersion) {
+  const fs::path dir = MakeTempDir("cli_version");
+  const CliResult r = RunPlywood("--version", dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.out, std::string("plywood ") + PLYWOOD_VERSION + "\n");
+}
+
+TEST(CliHelpTest, UsageErrorsAreOneLineNamingTheCulpritWithExitCode2) {
+  const fs::path dir = MakeTempDir("cli_usage");
+  const fs::path experiment = SourceRoot() / "experiments" / "default.yaml";
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"fly", "fly"},
+      {"--colour", "--colour"},
+      {"run " + experiment.string() + " --colour red", "--colour"},
+      {"run " + experiment.string() + " -x", "-x"},
+      {"bench --colour", "--colour"},
+      {"replay log.txt --speed 2", "--speed"},
+      {"train sonar-net --layers 3", "--layers"},
+      {"run", "EXPERIMENT"},                                           // missing positional
+      {"run " + experiment.string() + " second.yaml", "second.yaml"},  // extra positional
+      {"replay", "LOG"},
+      {"train", "MODEL"},
+      {"train sonar-gnn", "sonar-gnn"},
+      {"run " + experiment.string() + " --out", "--out"},  // a flag without its value
+      {"bench --seconds fast", "--seconds"},
+      {"bench --seconds nan", "--seconds"},
+      {"train sonar-net --epochs 0", "--epochs"},
+      {"train sonar-net --rooms 2.5", "--rooms"},
+      {"train sonar-net --hidden 16,x", "--hidden"},
+  };
+  for (const auto& [args, culprit] : cases) {
+    SCOPED_TRACE(args);
+    const CliResult r = RunPlywood(args, dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_TRUE(IsOneLine(r.err)) << r.err;
+    EXPECT_EQ(r.err.rfind("plywood: ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(culprit), std::string::npos) << r.err;
+  }
+}
+
+// A short run of a small room, written to `out`.
+std::string SmallExperiment() {
+  return "name: small\n"
+         "seed: 5\n"
+         "duration_s: 1\n"
+         "world: worlds/seed000_room_1.xml\n"
+         "robot: {model: p3dx}\n"
+         "controller: {type: wheel_script, segments: [[1, 2, 2]]}\n"
+         "sensors: {encoders: {}}\n"
+         "output: {snapshot: false}\n";
+}
+
+TEST(CliOutputDirectoryTest, AnEarlierRunIsReplacedOnlyWithForceAndNothingStaleSurvives) {
+  const fs::path dir = MakeTempDir("cli_out_earlier");
+  const fs::path experiment = WriteFile(dir / "small.yaml", SmallExperiment());
+  const fs::path out = dir / "out";
+  const std::string run = "run " + experiment.string() + " --quiet --out " + out.string();
+  ASSERT_EQ(RunPlywood(run, dir).exit_code, 0);
+  // Something an earlier run (of another version, or another experiment) left behind.
+  WriteFile(out / "stale.csv", "t,x\n");
+  const std::string first_metrics = Slurp(out / "metrics.json");
+  ASSERT_FALSE(first_metrics.empty());
+
+  const CliResult refused = RunPlywood(run + " --set duration_s=2", dir);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_TRUE(IsOneLine(refused.err)) << refused.err;
+  EXPECT_NE(refused.err.find(out.string()), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("--force"), std::string::npos) << refused.err;
+  EXPECT_TRUE(fs::exists(out / "stale.csv"));
+  EXPECT_EQ(Slurp(out / "metrics.json"), first_metrics) << "a refused run wrote results";
+
+  const CliResult forced = RunPlywood(run + " --set duration_s=2 --force", dir);
+  ASSERT_EQ(forced.exit_code, 0) << forced.err;
+  EXPECT_FALSE(fs::exists(out / "stale.csv")) << "a file of the earlier run survived";
+  EXPECT_TRUE(fs::exists(out / "config.yaml"));
+  EXPECT_NE(Slurp(out / "metrics.json"), first_metrics);
+  EXPECT_NE(Slurp(out / "config.yaml").find("duration_s: 2"), std::string::npos);
+
+  // Bad input never costs the earlier run: the config is checked before the directory is cleared.
+  const CliResult bad = RunPlywood(run + " --force --set duration_s=-1", dir);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_TRUE(fs::exists(out / "metrics.json"));
+}
+
+TEST(CliOutputDirectoryTest, OtherFilesAreRefusedEvenWithForce) {
+  const fs::path dir = MakeTempDir("cli_out_foreign");
+  const fs::path experiment = WriteFile(dir / "small.yaml", SmallExperiment());
+  const fs::path out = dir / "thesis";
+  WriteFile(out / "chapter1.tex", "\\chapter{Introduction}\n");
+  for (const char* force : {"", " --force"}) {
+    SCOPED_TRACE(force);
+    const CliResult r =
+        RunPlywood("run " + experiment.string() + " --quiet --out " + out.string() + force, dir);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_TRUE(IsOneLine(r.err)) << r.err;
+    EXPECT_NE(r.err.find("not a Plywood run"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(out / "chapter1.tex"));
+    EXPECT_FALSE(fs::exists(out / "metrics.json"));
+  }
+}
+
+TEST(CliOutputDirectoryTest, ReplayOntoAnEarlierReplayNeedsForce) {
+  const fs::path dir = MakeTempDir("cli_out_replay");
+  // Two scans of a flat wall 2 m ahead.
+  std::ostringstream log;
+  for (double t : {0.0, 0.1}) {
+    log << "FLASER 181";
+    for (int i = 0; i < 181; ++i) {
+      const double c = std::cos((i - 90) * 3.141592653589793 / 180.0);
+      log << " " << (c > 0.25 ? 2.0 / c : 8.0);
+    }
+    log << " 0 0 0 0 0 0 " << t << " host " << t << "\n";
+  }
+  const fs::path log_file = WriteFile(dir / "wall.log", log.str());
+  const fs::path out = dir / "out";
+  const std::string replay = "replay " + log_file.string() + " --out " + out.string();
+  ASSERT_EQ(RunPlywood(replay, dir).exit_code, 0);
+  EXPECT_NE(Slurp(out / "config.yaml").find("extractor: split_and_merge"), std::string::npos);
+  WriteFile(out / "stale.png", "x");
+  const CliResult refused = RunPlywood(replay, dir);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("--force"), std::string::npos) << refused.err;
+  const CliResult forced = RunPlywood(replay + " --force", dir);
+  ASSERT_EQ(forced.exit_code, 0) << forced.err;
+  EXPECT_FALSE(fs::exists(out / "stale.png"));
+  EXPECT_TRUE(fs::exists(out / "metrics.json"));
+}
+
+TEST(CliTrainTest, TrainingNeverWritesTheShippedWeights) {
+  const fs::path shipped = SourceRoot() / "models" / "sonar_net_v1.txt";
+  const std::string bytes = Slurp(shipped);
+  ASSERT_GT(bytes.size(), 400u);
+  const fs::file_time_type mtime = fs::last_write_time(shipped);
+  const fs::path dir = MakeTempDir("cli_train");
+  const std::string small = " --rooms 1 --test-rooms 1 --poses 2 --epochs 1 --quiet";
+
+  // Without --out, in the source tree: runs/sonar_net/sonar_net.txt under the working directory.
+  const fs::path work = dir / "work";
+  fs::create_directories(work);
+  const CliResult defaults = RunPlywood("train sonar-net" + small, dir, work);
+  ASSERT_EQ(defaults.exit_code, 0) << defaults.err;
+  EXPECT_EQ(Slurp(work / "runs" / "sonar_net" / "sonar_net.txt").rfind("plywood-sonar-net", 0), 0u);
+
+  // The shipped file however it is spelled.
+  for (const std::string& out :
+       {std::string("models/sonar_net_v1.txt"), std::string("./models/../models/sonar_net_v1.txt"),
+        shipped.string()}) {
+    SCOPED_TRACE(out);
+    const CliResult r = RunPlywood("train sonar-net" + small + " --out " + out, dir, SourceRoot());
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_TRUE(IsOneLine(r.err)) << r.err;
+    EXPECT_NE(r.err.find("shipped"), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(Slurp(shipped), bytes);
+  EXPECT_EQ(fs::last_write_time(shipped), mtime);
+}
+
+}  // namespace
+}  // namespace plywood
