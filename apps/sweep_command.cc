@@ -29,6 +29,7 @@ Command AddSweepCommand(CLI::App& app) {
     std::string sweep;
     std::string collect;
     std::string shard;
+    bool no_collect = false;
     eval::SweepInvocation invocation;
   };
   auto flags = std::make_shared<Flags>();
@@ -52,8 +53,7 @@ Command AddSweepCommand(CLI::App& app) {
   cli->add_option("--shard", flags->shard,
                   "run only the cells whose index % N == I (what each Slurm task runs)")
       ->type_name("I/N");
-  cli->add_flag("--no-collect", "run only; leave results.csv etc. to --collect")
-      ->each([flags](const std::string&) { flags->invocation.collect = false; });
+  cli->add_flag("--no-collect", flags->no_collect, "run only; leave results.csv etc. to --collect");
   cli->add_flag("--quiet", inv.quiet, "no progress, no table");
   cli->add_flag("--slurm", inv.slurm,
                 "write OUT/slurm/sweep.sbatch (a job array of shards) and submit it with sbatch");
