@@ -2,6 +2,7 @@
 //   plywood run EXPERIMENT.yaml [--out DIR] [--seed N] [--set key.path=value]...
 //   plywood bench [--seconds S] [--world PATH]
 //   plywood replay LOG --extractor NAME [--out DIR] [--skip-bad]
+//   plywood worlds generate FAMILY --count N --seed S --out DIR
 // Exit codes: 0 success, 1 a failure during the run, 2 bad input (config, files, usage).
 
 #include <cstdio>
@@ -15,6 +16,7 @@
 #include "apps/replay_command.h"
 #include "apps/run_command.h"
 #include "apps/train_command.h"
+#include "apps/worlds_command.h"
 #include "sim/config/config_error.h"
 
 namespace {
@@ -28,7 +30,9 @@ constexpr const char* kUsage =
     "  replay LOG --extractor NAME [--out DIR] [--skip-bad]\n"
     "      run a line extractor on every scan of a CARMEN log (plain or .gz) and score it\n"
     "  train sonar-net [--out FILE] [--rooms N] [--poses N] [--epochs N] [--seed N]\n"
-    "      train seed 001's sonar interpretation network on simulated rooms\n";
+    "      train seed 001's sonar interpretation network on simulated rooms\n"
+    "  worlds generate FAMILY --count N --seed S --out DIR [--pictures] [--quiet]\n"
+    "      write N seeded worlds of a family (plywood worlds list; docs/worlds.md)\n";
 
 int Dispatch(const std::vector<std::string>& args) {
   if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
@@ -40,6 +44,7 @@ int Dispatch(const std::vector<std::string>& args) {
   if (args[0] == "bench") return plywood::apps::BenchCommand(rest);
   if (args[0] == "replay") return plywood::apps::ReplayCommand(rest);
   if (args[0] == "train") return plywood::apps::TrainCommand(rest);
+  if (args[0] == "worlds") return plywood::apps::WorldsCommand(rest);
   throw plywood::apps::UsageError{"unknown command '" + args[0] + "' (try plywood --help)"};
 }
 
