@@ -26,5 +26,6 @@ Command AddReplayCommand(CLI::App& app);
 Command AddTrainCommand(CLI::App& app);
 Command AddScoreCommand(CLI::App& app);
 Command AddSweepCommand(CLI::App& app);
+Command AddWorldsCommand(CLI::App& app);
 
 }  // namespace plywood::apps

@@ -66,9 +66,9 @@ int Main(int argc, char** argv) {
   app.require_subcommand(1);
   app.get_formatter()->column_width(36);
   app.footer(kFooter);
-  const std::vector<Command> commands = {AddRunCommand(app),    AddBenchCommand(app),
-                                         AddReplayCommand(app), AddScoreCommand(app),
-                                         AddSweepCommand(app),  AddTrainCommand(app)};
+  const std::vector<Command> commands = {
+      AddRunCommand(app),   AddBenchCommand(app), AddReplayCommand(app), AddScoreCommand(app),
+      AddSweepCommand(app), AddTrainCommand(app), AddWorldsCommand(app)};
   for (const Command& command : commands) command.cli->allow_extras();
 
   if (argc < 2) {

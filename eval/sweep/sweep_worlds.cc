@@ -1,17 +1,78 @@
 #include "eval/sweep/sweep_worlds.h"
 
+#include <unistd.h>
+
+#include <fstream>
+#include <stdexcept>
+
 #include "sim/config/config_error.h"
+#include "sim/world/generator/world_families.h"
+#include "sim/world/generator/world_generator.h"
 
 namespace plywood::eval {
+namespace {
 
-std::vector<SweepWorld> PrepareSweepWorlds(const SweepSpec& spec,
-                                           const std::filesystem::path& /*out_dir*/) {
+namespace fs = std::filesystem;
+
+int IndexRows(const fs::path& index) {
+  std::ifstream in(index);
+  int rows = -1;  // the header
+  for (std::string line; std::getline(in, line);) ++rows;
+  return rows;
+}
+
+// The generator's worlds of one family, written once under OUT/worlds/FAMILY-seedS (into a
+// temporary folder renamed at the end, so a killed sweep never leaves half a set). World i does not
+// depend on the count, so a larger count only adds worlds.
+std::vector<SweepWorld> Generated(const SweepSpec& spec, const GeneratedWorlds& generated,
+                                  const fs::path& out_dir) {
+  try {
+    sim::worldgen::FindWorldFamily(generated.family);
+  } catch (const std::invalid_argument& e) {
+    throw sim::ConfigError(spec.source_file, "worlds.family",
+                           std::string(e.what()).substr(std::string("family: ").size()));
+  }
+  const fs::path dir = out_dir / "worlds" /
+                       (generated.family + "-seed" + std::to_string(generated.seed));
+  if (IndexRows(dir / "index.csv") < generated.count) {
+    const fs::path partial = dir.string() + ".partial-" + std::to_string(getpid());
+    fs::remove_all(partial);
+    sim::worldgen::GenerateWorldsOptions options;
+    options.family = generated.family;
+    options.count = generated.count;
+    options.seed = generated.seed;
+    options.out_dir = partial;
+    try {
+      sim::worldgen::GenerateWorlds(options);
+    } catch (const std::invalid_argument& e) {
+      throw sim::ConfigError(spec.source_file, "worlds", e.what());
+    }
+    fs::remove_all(dir);
+    fs::create_directories(dir.parent_path());
+    fs::rename(partial, dir);
+  }
+  // index.csv lists the worlds in index order; its first column is the MJCF file's name.
+  std::vector<SweepWorld> worlds;
+  std::ifstream index(dir / "index.csv");
+  std::string line;
+  std::getline(index, line);  // header
+  while (static_cast<int>(worlds.size()) < generated.count && std::getline(index, line)) {
+    const std::string file = line.substr(0, line.find(','));
+    worlds.push_back({fs::absolute(dir / file).lexically_normal(), generated.family});
+  }
+  if (static_cast<int>(worlds.size()) < generated.count) {
+    throw std::runtime_error((dir / "index.csv").string() + ": fewer worlds than generated");
+  }
+  return worlds;
+}
+
+}  // namespace
+
+std::vector<SweepWorld> PrepareSweepWorlds(const SweepSpec& spec, const fs::path& out_dir) {
   std::vector<SweepWorld> worlds;
   for (const auto& path : spec.world_files) worlds.push_back({path, ""});
   for (const auto& generated : spec.generated) {
-    // TODO(lead): the world generator (sim/world/generator) lands with helper D.
-    throw sim::ConfigError(spec.source_file, "worlds.family",
-                           "unknown family '" + generated.family + "'");
+    for (SweepWorld& w : Generated(spec, generated, out_dir)) worlds.push_back(std::move(w));
   }
   return worlds;
 }

@@ -1,0 +1,101 @@
+#include "sim/world/generator/world_generator.h"
+
+#include <fstream>
+#include <stdexcept>
+#include <system_error>
+
+#include "sim/world/generator/robot_reach.h"
+#include "sim/world/generator/spawn_placer.h"
+#include "sim/world/generator/world_check.h"
+#include "sim/world/generator/world_families.h"
+#include "sim/world/generator/world_mjcf_writer.h"
+#include "sim/world/generator/world_rng.h"
+
+namespace plywood::sim::worldgen {
+namespace {
+
+constexpr int kMaxAttempts = 1000;
+
+void WriteText(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out << text;
+  out.close();
+  if (!out) throw std::invalid_argument("out: cannot write " + path.string());
+}
+
+}  // namespace
+
+GeneratedWorld GenerateWorld(const std::string& family_name, std::uint64_t seed, int index) {
+  const WorldFamily& family = FindWorldFamily(family_name);
+  if (index < 0) throw std::invalid_argument("index: must be >= 0, got " + std::to_string(index));
+  WorldRng rng(family.name, seed, static_cast<std::uint64_t>(index));
+  SpawnRules rules = DefaultSpawnRules();
+  rules.count = family.spawns;
+  for (int attempt = 1; attempt <= kMaxAttempts; ++attempt) {
+    GeneratedWorld world;
+    world.family = family.name;
+    world.seed = seed;
+    world.index = index;
+    world.attempts = attempt;
+    const std::optional<double> rotation = family.draw(rng, world);
+    if (!rotation || !PlaceSpawns(rng, world, rules)) continue;
+    world.Transform(*rotation, Eigen::Vector2d::Zero());
+    world.Transform(0.0, -Eigen::Vector2d(world.spawns[0].x_m, world.spawns[0].y_m));
+    world.spawns[0].x_m = world.spawns[0].y_m = 0.0;  // exactly, not 1e-17
+    return world;
+  }
+  throw std::runtime_error("world generator: no layout of family " + family.name +
+                           " with free spawn poses after " + std::to_string(kMaxAttempts) +
+                           " draws (seed " + std::to_string(seed) + ", world " +
+                           std::to_string(index) + ")");
+}
+
+void GenerateWorldsOptions::Validate() const {
+  FindWorldFamily(family);
+  if (count < 1 || count > kMaxWorldCount) {
+    throw std::invalid_argument("count: must be a whole number in [1, " +
+                                std::to_string(kMaxWorldCount) + "], got " + std::to_string(count));
+  }
+  if (out_dir.empty()) throw std::invalid_argument("out: no output directory given");
+}
+
+std::string WorldIndexRow(const GeneratedWorld& world) {
+  return world.Name() + ".xml," + world.Name() + ".json," + world.family + "," +
+         std::to_string(world.seed) + "," + std::to_string(world.index) + "," +
+         std::to_string(world.attempts) + "," + std::to_string(world.geoms.size()) + "," +
+         std::to_string(world.spawns.size()) + "," + (world.closed ? "true" : "false") + "," +
+         JsonNumber(world.rig_coverage) + "\n";
+}
+
+std::vector<GeneratedWorldFile> GenerateWorlds(const GenerateWorldsOptions& options) {
+  options.Validate();
+  std::error_code error;
+  std::filesystem::create_directories(options.out_dir, error);
+  if (error || !std::filesystem::is_directory(options.out_dir)) {
+    throw std::invalid_argument("out: cannot create directory " + options.out_dir.string() +
+                                (error ? ": " + error.message() : ": a file is in the way"));
+  }
+  std::vector<GeneratedWorldFile> files;
+  std::string index = kWorldIndexHeader;
+  for (int i = 0; i < options.count; ++i) {
+    const GeneratedWorld world = GenerateWorld(options.family, options.seed, i);
+    GeneratedWorldFile file;
+    file.mjcf = options.out_dir / (world.Name() + ".xml");
+    file.sidecar = options.out_dir / (world.Name() + ".json");
+    file.summary = world.summary;
+    WriteText(file.mjcf, WorldMjcf(world));
+    WriteText(file.sidecar, WorldSidecarJson(world));
+    if (options.check_with_mujoco) {
+      const std::vector<std::string> defects = CheckWrittenWorld(file.mjcf, world, LargestRobot());
+      if (!defects.empty()) {
+        throw std::runtime_error("world generator defect: " + defects.front());
+      }
+    }
+    index += WorldIndexRow(world);
+    files.push_back(file);
+  }
+  WriteText(options.out_dir / "index.csv", index);
+  return files;
+}
+
+}  // namespace plywood::sim::worldgen

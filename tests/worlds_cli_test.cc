@@ -1,0 +1,70 @@
+// `plywood worlds generate` end to end: it writes the worlds, their sidecars and index.csv, the
+// same bytes for the same seed, and bad input gives one line naming the field and exit code 2.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "tests/support/cli_test_support.h"
+#include "tests/support/mujoco_test_support.h"
+
+namespace plywood {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::MakeTempDir;
+using testing::RunPlywood;
+using testing::Slurp;
+
+TEST(WorldsCliTest, GeneratesTheSameBytesForTheSameSeed) {
+  const fs::path dir = MakeTempDir("worlds_cli_generate");
+  for (const char* out : {"a", "b"}) {
+    const auto result =
+        RunPlywood("worlds generate seed001 --count 2 --seed 4 --out " + (dir / out).string(), dir);
+    ASSERT_EQ(result.exit_code, 0) << result.err;
+    EXPECT_NE(result.out.find("2 seed001 worlds (seed 4)"), std::string::npos) << result.out;
+  }
+  for (const char* file : {"seed001_s4_00000.xml", "seed001_s4_00001.json", "index.csv"}) {
+    const std::string a = Slurp(dir / "a" / file);
+    EXPECT_FALSE(a.empty()) << file;
+    EXPECT_EQ(a, Slurp(dir / "b" / file)) << file;
+  }
+  const auto list = RunPlywood("worlds list", dir);
+  EXPECT_EQ(list.exit_code, 0);
+  EXPECT_NE(list.out.find("office"), std::string::npos);
+}
+
+TEST(WorldsCliTest, BadInputNamesTheField) {
+  const fs::path dir = MakeTempDir("worlds_cli_bad");
+  testing::WriteFile(dir / "a_file", "x");
+  const std::string out = " --out " + (dir / "out").string();
+  const std::pair<std::string, std::string> cases[] = {
+      {"worlds generate castle --count 1 --seed 1" + out, "FAMILY: unknown world family 'castle'"},
+      {"worlds generate room --count 0 --seed 1" + out, "--count"},
+      {"worlds generate room --count -4 --seed 1" + out, "--count"},
+      {"worlds generate room --count 100001 --seed 1" + out, "--count"},
+      {"worlds generate room --count 2.5 --seed 1" + out, "--count"},
+      {"worlds generate room --seed 1" + out, "--count"},
+      {"worlds generate room --count 1 --seed -1" + out, "--seed"},
+      {"worlds generate room --count 1 --seed one" + out, "--seed"},
+      {"worlds generate room --count 1 --seed 1 --out " + (dir / "a_file" / "x").string(),
+       "--out: cannot create directory"},
+      {"worlds generate room --count 1 --seed 1 --out " + (dir / "a_file").string(),
+       "--out: cannot create directory"},
+      {"worlds generate room --count 1 --seed 1", "--out"},
+      {"worlds generate room --count 1 --seed 1 --colour red" + out, "--colour"},
+      {"worlds make room", "make"},
+  };
+  for (const auto& [args, expected] : cases) {
+    SCOPED_TRACE(args);
+    const auto result = RunPlywood(args, dir);
+    EXPECT_EQ(result.exit_code, 2);
+    EXPECT_EQ(result.err.rfind("plywood: ", 0), 0u) << result.err;
+    EXPECT_NE(result.err.find(expected), std::string::npos) << result.err;
+    EXPECT_EQ(result.err.find('\n'), result.err.size() - 1) << "not one line: " << result.err;
+  }
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+}  // namespace
+}  // namespace plywood
