@@ -105,6 +105,7 @@ Command AddSweepCommand(CLI::App& app) {
         if (!inv.slurm && (inv.dry_run || !inv.slurm_options.partition.empty())) {
           throw UsageError("sweep: --dry-run and --partition go with --slurm");
         }
+        inv.collect = !flags->no_collect;
         inv.sweep_file = flags->sweep;
         inv.plywood = SelfExecutable();
         return eval::RunSweep(inv);

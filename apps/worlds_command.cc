@@ -1,6 +1,7 @@
 // plywood worlds generate FAMILY --count N --seed S --out DIR [--pictures] [--quiet]
 // plywood worlds list
 
+#include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -18,7 +19,7 @@ Command AddWorldsCommand(CLI::App& app) {
   struct Flags {
     std::string family;
     int count = 0;
-    std::uint64_t seed = 0;
+    std::string seed;
     std::string out;
     bool pictures = false;
     bool quiet = false;
@@ -53,51 +54,57 @@ Command AddWorldsCommand(CLI::App& app) {
       "Examples:\n"
       "  plywood worlds list\n"
       "  plywood worlds generate clutter --count 20 --seed 1 --out /tmp/clutter --pictures");
-  return {cli, [flags, list, generate] {
-            if (list->parsed()) {
-              for (const auto& family : sim::worldgen::WorldFamilies()) {
-                std::printf("%-9s %s\n", family.name.c_str(), family.description.c_str());
-              }
-              return 0;
-            }
-            if (!generate->remaining().empty()) {
-              throw UsageError("worlds generate: unexpected argument '" +
-                               generate->remaining().front() + "'");
-            }
-            sim::worldgen::GenerateWorldsOptions options;
-            options.family = flags->family;
-            try {
-              sim::worldgen::FindWorldFamily(options.family);
-            } catch (const std::invalid_argument& e) {
-              throw UsageError("worlds generate: FAMILY" + std::string(e.what()).substr(6));
-            }
-            options.count = flags->count;
-            options.seed = flags->seed;
-            options.out_dir = flags->out;
-            const auto start = std::chrono::steady_clock::now();
-            std::vector<sim::worldgen::GeneratedWorldFile> files;
-            try {
-              files = sim::worldgen::GenerateWorlds(options);
-            } catch (const std::invalid_argument& e) {
-              throw UsageError("worlds generate: --" + std::string(e.what()));
-            }
-            const double seconds =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            if (flags->pictures) {
-              for (const auto& file : files) {
-                render::WriteWorldPreview(
-                    file.mjcf, sim::worldgen::LargestRobotReachM(),
-                    std::filesystem::path(file.mjcf).replace_extension(".png"));
-              }
-            }
-            if (!flags->quiet) {
-              std::printf("%d %s world%s (seed %llu) in %s: %.1f ms per world\n", options.count,
-                          options.family.c_str(), options.count == 1 ? "" : "s",
-                          static_cast<unsigned long long>(options.seed), options.out_dir.c_str(),
-                          1000.0 * seconds / options.count);
-            }
-            return 0;
-          }};
+  return {
+      cli, [flags, list, generate] {
+        if (list->parsed()) {
+          for (const auto& family : sim::worldgen::WorldFamilies()) {
+            std::printf("%-9s %s\n", family.name.c_str(), family.description.c_str());
+          }
+          return 0;
+        }
+        if (!generate->remaining().empty()) {
+          throw UsageError("worlds generate: unexpected argument '" +
+                           generate->remaining().front() + "'");
+        }
+        sim::worldgen::GenerateWorldsOptions options;
+        options.family = flags->family;
+        try {
+          sim::worldgen::FindWorldFamily(options.family);
+        } catch (const std::invalid_argument& e) {
+          throw UsageError("worlds generate: FAMILY" + std::string(e.what()).substr(6));
+        }
+        options.count = flags->count;
+        // Digits only: CLI11 would wrap "-1" into 2^64 - 1.
+        const char* end = flags->seed.data() + flags->seed.size();
+        const auto [ptr, error] = std::from_chars(flags->seed.data(), end, options.seed);
+        if (flags->seed.empty() || error != std::errc() || ptr != end) {
+          throw UsageError("worlds generate: --seed: must be a whole number in [0, 2^64), got '" +
+                           flags->seed + "'");
+        }
+        options.out_dir = flags->out;
+        const auto start = std::chrono::steady_clock::now();
+        std::vector<sim::worldgen::GeneratedWorldFile> files;
+        try {
+          files = sim::worldgen::GenerateWorlds(options);
+        } catch (const std::invalid_argument& e) {
+          throw UsageError("worlds generate: --" + std::string(e.what()));
+        }
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (flags->pictures) {
+          for (const auto& file : files) {
+            render::WriteWorldPreview(file.mjcf, sim::worldgen::LargestRobotReachM(),
+                                      std::filesystem::path(file.mjcf).replace_extension(".png"));
+          }
+        }
+        if (!flags->quiet) {
+          std::printf("%d %s world%s (seed %llu) in %s: %.1f ms per world\n", options.count,
+                      options.family.c_str(), options.count == 1 ? "" : "s",
+                      static_cast<unsigned long long>(options.seed), options.out_dir.c_str(),
+                      1000.0 * seconds / options.count);
+        }
+        return 0;
+      }};
 }
 
 }  // namespace plywood::apps

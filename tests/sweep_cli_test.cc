@@ -197,7 +197,7 @@ TEST(SweepCliTest, KillNineAndResumeGivesTheSameResultsWithoutRedoingRuns) {
       WriteFile(dir / "kill.yaml",
                 "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
                     "\nseeds: [1, 2, 3]\nworlds: [" + (SourceRoot() / "worlds/hall.xml").string() +
-                    "]\nset:\n  duration_s: [3, 4, 5, 6]\n  output.snapshot: [false]\n");
+                    "]\nset:\n  duration_s: [20, 30, 40, 50]\n  output.snapshot: [false]\n");
   ASSERT_EQ(
       RunPlywood("sweep " + sweep.string() + " --out " + (dir / "whole").string() + " --quiet", dir)
           .exit_code,

@@ -53,7 +53,7 @@ TEST(WorldsCliTest, BadInputNamesTheField) {
        "--out: cannot create directory"},
       {"worlds generate room --count 1 --seed 1", "--out"},
       {"worlds generate room --count 1 --seed 1 --colour red" + out, "--colour"},
-      {"worlds make room", "make"},
+      {"worlds make room", "subcommand"},
   };
   for (const auto& [args, expected] : cases) {
     SCOPED_TRACE(args);
