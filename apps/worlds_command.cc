@@ -50,10 +50,13 @@ Command AddWorldsCommand(CLI::App& app) {
       ->required();
   generate->add_flag("--pictures", flags->pictures, "also write a top-down PNG of every world");
   generate->add_flag("--quiet", flags->quiet, "print nothing");
-  cli->footer(
+  const char* examples =
       "Examples:\n"
       "  plywood worlds list\n"
-      "  plywood worlds generate clutter --count 20 --seed 1 --out /tmp/clutter --pictures");
+      "  plywood worlds generate clutter --count 20 --seed 1 --out /tmp/clutter --pictures";
+  cli->footer(examples);
+  generate->footer(examples);
+  list->footer(examples);
   return {
       cli, [flags, list, generate] {
         if (list->parsed()) {
