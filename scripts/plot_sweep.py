@@ -56,6 +56,7 @@ def main(out_dir):
         width = max(4.0, 0.09 * max(len(line) for g in groups for line in g.split("\n")) * len(groups) + 1.5)
         fig, ax = plt.subplots(figsize=(min(width, 30.0), 4.6))
         data = [values[g] for g in groups]
+        labelled = False
         ax.boxplot([d if d else [math.nan] for d in data], labels=groups, widths=0.5,
                    showfliers=False)
         for i, d in enumerate(data, start=1):
@@ -66,13 +67,15 @@ def main(out_dir):
             if s and s["n"] not in ("", "0"):
                 mean, lo, hi = float(s["mean"]), float(s["ci95_low"]), float(s["ci95_high"])
                 ax.errorbar([i + 0.3], [mean], yerr=[[mean - lo], [hi - mean]], fmt="D",
-                            color="tab:red", ms=5, capsize=4, label="mean, 95 % CI" if i == 1 else None)
+                            color="tab:red", ms=5, capsize=4,
+                            label=None if labelled else "mean, 95 % CI")
+                labelled = True
         ax.set_ylabel(metric)
         if len(groups) > 6:
             plt.setp(ax.get_xticklabels(), rotation=45, ha="right", fontsize=8)
         ax.set_title(f"{meta.get('name', 'sweep')}: {metric}")
         ax.grid(axis="y", alpha=0.3)
-        if any(data):
+        if labelled:
             ax.legend(loc="best", fontsize=8)
         fig.tight_layout()
         path = os.path.join(plots, metric.replace("/", "_") + ".png")

@@ -98,6 +98,10 @@ SampleSummary Summarise(const std::vector<double>& values) {
   double sum = 0.0;
   for (double v : values) sum += v;
   s.mean = sum / s.n;
+  if (s.min == s.max) {  // identical runs (a noise-free profile): exactly no spread
+    s.mean = s.ci95_low = s.ci95_high = s.min;
+    return s;
+  }
   double squares = 0.0;
   for (double v : values) squares += (v - s.mean) * (v - s.mean);
   s.std = s.n > 1 ? std::sqrt(squares / (s.n - 1)) : 0.0;
@@ -211,12 +215,22 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
   if (several_experiments) group("experiment", 1);
   for (const auto& g : group_by) group(g, g == "world" ? 2 : g == "family" ? 3 : 5);
   if (profiles) group("profile", 4);
-  for (std::size_t a = 0; a < axes.size(); ++a) group(axes[a], 6 + a);
+  // An axis with one value (e.g. output.snapshot: [false]) splits nothing: it stays in
+  // results.csv but does not label the groups.
+  for (std::size_t a = 0; a < axes.size(); ++a) {
+    std::set<std::string> values;
+    for (std::size_t r = 1; r < rows.size(); ++r) values.insert(rows[r][7 + a]);
+    if (values.size() > 1) group(axes[a], 6 + a);
+  }
+  // Files are labelled by their stem in the summary ("seed001_room_1"); results.csv keeps paths.
+  const auto label = [](std::size_t index, const std::string& value) {
+    return index == 1 || index == 2 ? fs::path(value).stem().string() : value;
+  };
   std::vector<std::vector<std::string>> groups;
   std::map<std::vector<std::string>, std::vector<const Row*>> members;
   for (const Row& row : finished) {
     std::vector<std::string> key;
-    for (std::size_t i : group_index) key.push_back(row.cell[i]);
+    for (std::size_t i : group_index) key.push_back(label(i, row.cell[i]));
     if (!members.count(key)) groups.push_back(key);
     members[key].push_back(&row);
   }
