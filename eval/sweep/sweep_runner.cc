@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -73,6 +74,9 @@ pid_t StartRun(const SweepCell& cell, const fs::path& plywood, const fs::path& p
   // The child: dies with the sweep, so a killed sweep leaves no run writing behind its back.
   prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (getppid() != parent) _exit(127);
+  // The sweep runs processes side by side, one per core: Mesa's software renderer (snapshots)
+  // would otherwise start a thread per core in every run and oversubscribe the machine.
+  setenv("LP_NUM_THREADS", "1", 0);
   const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   if (fd >= 0) {
     dup2(fd, STDOUT_FILENO);
