@@ -246,6 +246,33 @@ TEST(SweepCliTest, KillNineAndResumeGivesTheSameResultsWithoutRedoingRuns) {
   EXPECT_TRUE(fs::is_empty(out / "runs" / ".partial"));
 }
 
+TEST(SweepCliTest, ASecondSweepIntoARunningOnesDirectoryIsRefused) {
+  const fs::path dir = MakeTempDir("SweepLocked");
+  const fs::path sweep = WriteFile(dir / "small.yaml", SmallSweep());
+  const fs::path out = dir / "out";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const std::string plywood = Plywood();
+    if (!freopen("/dev/null", "w", stderr) || !freopen("/dev/null", "w", stdout)) _exit(126);
+    execl(plywood.c_str(), plywood.c_str(), "sweep", sweep.c_str(), "--out", out.c_str(), "--jobs",
+          "1", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // Once the first sweep has started a run, a second one must not touch the directory.
+  for (int i = 0; i < 5000 && !fs::exists(out / "logs"); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  const auto second = RunPlywood("sweep " + sweep.string() + " --out " + out.string(), dir);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  EXPECT_EQ(second.exit_code, 2) << second.err;
+  EXPECT_NE(second.err.find("another plywood sweep is running"), std::string::npos) << second.err;
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);  // the first one finished undisturbed
+  EXPECT_EQ(CountRunDirs(out), 6);
+}
+
 TEST(SweepCliTest, ADifferentSweepIntoTheSameDirectoryIsRefused) {
   const fs::path dir = MakeTempDir("SweepDifferent");
   const fs::path a = WriteFile(dir / "a.yaml", SmallSweep());

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -181,6 +182,17 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
 
 SweepRunOutcome RunSweepCells(const std::vector<SweepCell>& cells, const SweepLayout& layout,
                               const SweepRunOptions& options) {
+  // One process per shard at a time: two sweeps into the same directory would run cells twice
+  // and remove each other's partial runs. The lock goes with the process, however it ends.
+  fs::create_directories(layout.out);
+  const fs::path lock_file = layout.out / ("shard-" + std::to_string(options.shard_index) + "-of-" +
+                                           std::to_string(options.shard_count) + ".lock");
+  const int lock = open(lock_file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (lock < 0 || flock(lock, LOCK_EX | LOCK_NB) != 0) {
+    throw sim::ConfigError(layout.out.string(), "",
+                           "another plywood sweep is running in this directory (" +
+                               lock_file.filename().string() + ")");
+  }
   const int jobs = options.jobs > 0
                        ? options.jobs
                        : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
@@ -249,6 +261,7 @@ SweepRunOutcome RunSweepCells(const std::vector<SweepCell>& cells, const SweepLa
   outcome.failed = failed;
   outcome.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
   progress.Report(done, failed, true);
+  close(lock);
   return outcome;
 }
 
