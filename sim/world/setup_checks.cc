@@ -23,6 +23,9 @@ std::string GeomName(const mjModel* m, int geom) {
   return name ? "geom '" + std::string(name) + "'" : "geom #" + std::to_string(geom);
 }
 
+// Metres to the millimetre, for messages.
+std::string Mm(double metres) { return msgs::ShortestNumber(std::round(metres * 1000.0) / 1000.0); }
+
 std::string At(const msgs::Pose2D& pose) {
   return "(" + msgs::ShortestNumber(pose.x_m) + ", " + msgs::ShortestNumber(pose.y_m) + ")";
 }
@@ -81,8 +84,7 @@ std::optional<std::string> SpawnOutsideWorld(const Scene& scene) {
   for (int axis = 0; axis < 2; ++axis) {
     if (!(xy[axis] >= lo[axis] && xy[axis] <= hi[axis])) {
       return "the robot at " + At(spawn) + " is outside every room: the world's walls span x in [" +
-             msgs::ShortestNumber(lo[0]) + ", " + msgs::ShortestNumber(hi[0]) + "], y in [" +
-             msgs::ShortestNumber(lo[1]) + ", " + msgs::ShortestNumber(hi[1]) + "]";
+             Mm(lo[0]) + ", " + Mm(hi[0]) + "], y in [" + Mm(lo[1]) + ", " + Mm(hi[1]) + "]";
     }
   }
   return std::nullopt;
