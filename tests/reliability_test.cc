@@ -264,6 +264,17 @@ TEST_F(ReliabilityTest, TinyNumbersArePrintedInShortestForm) {
   EXPECT_EQ(result.err.find("0.000000"), std::string::npos) << result.err;
 }
 
+TEST_F(ReliabilityTest, RobotAndControllerLimitsArePrintedInShortestForm) {
+  // Used to read "got 0.000000" (std::to_string) for each of these.
+  const CliResult wall =
+      Run(HallExperiment(0.0, 0.0, "controller: {type: wall_following, sensor: laser}\n",
+                         "{encoders: {}, laser: {}}"),
+          "--set controller.distance_m=1e-7 --set controller.max_wall_range_m=1e-8");
+  ExpectOneLine(wall, {"controller.max_wall_range_m", "got 1e-08"});
+  const CliResult drive = Run(HallExperiment(0.0, 0.0), "--set robot.nominal.track_m=-1e-9");
+  ExpectOneLine(drive, {"robot.nominal.track_m", "got -1e-09"});
+}
+
 TEST_F(ReliabilityTest, AnUnreadableExperimentIsNotReportedAsMissing) {
   const fs::path dir = Dir();
   const fs::path folder = dir / "folder.yaml";

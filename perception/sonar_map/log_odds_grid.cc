@@ -19,10 +19,10 @@ double ClampedLogit(double p, const LogOddsOptions& o) {
 
 void LogOddsOptions::Validate() const {
   if (!(p_min > 0.0 && p_min < 0.5))
-    throw std::invalid_argument("p_min: must be in (0, 0.5), got " + std::to_string(p_min));
+    throw std::invalid_argument("p_min: must be in (0, 0.5), got " + msgs::ShortestNumber(p_min));
   if (!(log_odds_limit > 0.0))
     throw std::invalid_argument("log_odds_limit: must be > 0, got " +
-                                std::to_string(log_odds_limit));
+                                msgs::ShortestNumber(log_odds_limit));
 }
 
 double CombineReadings(const std::vector<double>& p, const LogOddsOptions& options) {
