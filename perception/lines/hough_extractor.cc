@@ -5,16 +5,22 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "msgs/shortest_number.h"
 #include "perception/lines/tls_line_fit.h"
 
 namespace plywood::perception {
 
 void HoughOptions::Validate() const {
-  if (!(theta_bin_deg > 0.0 && theta_bin_deg <= 10.0)) {
-    throw std::invalid_argument("theta_bin_deg: must be in (0, 10], got " +
-                                std::to_string(theta_bin_deg));
+  // The accumulator holds (180 / theta_bin_deg) x (2 rho_max / rho_bin_m) cells: these ranges keep
+  // it under 15 million (60 MB) for any scan within kMaxHoughRangeM.
+  if (!(theta_bin_deg >= 0.25 && theta_bin_deg <= 10.0)) {
+    throw std::invalid_argument("theta_bin_deg: must be in [0.25, 10], got " +
+                                msgs::ShortestNumber(theta_bin_deg));
   }
-  if (!(rho_bin_m > 0.0)) throw std::invalid_argument("rho_bin_m: must be > 0");
+  if (!(rho_bin_m >= 0.01 && rho_bin_m <= 1.0)) {
+    throw std::invalid_argument("rho_bin_m: must be in [0.01, 1], got " +
+                                msgs::ShortestNumber(rho_bin_m));
+  }
   if (min_votes < 2) throw std::invalid_argument("min_votes: must be >= 2");
   if (!(distance_threshold_m > 0.0))
     throw std::invalid_argument("distance_threshold_m: must be > 0");
@@ -37,6 +43,11 @@ std::vector<LineSegment> HoughExtractor::Extract(const ScanPoints& scan) const {
   const int thetas = static_cast<int>(std::lround(180.0 / options_.theta_bin_deg));
   double rho_max = 0.0;
   for (const auto& q : p) rho_max = std::max(rho_max, q.norm());
+  if (!(rho_max <= kMaxHoughRangeM)) {
+    throw std::invalid_argument("scan: a point lies " + msgs::ShortestNumber(rho_max) +
+                                " m from the sensor, beyond the Hough accumulator's " +
+                                msgs::ShortestNumber(kMaxHoughRangeM) + " m");
+  }
   const int rhos = 2 * static_cast<int>(std::ceil(rho_max / options_.rho_bin_m)) + 3;
   std::vector<double> cos_t(thetas), sin_t(thetas);
   for (int t = 0; t < thetas; ++t) {

@@ -11,6 +11,9 @@ namespace plywood::perception {
 // the lines through it; the strongest cell's points (within distance_threshold_m of its line)
 // are refitted by total least squares, cut into runs at gaps wider than max_gap_m, kept when a
 // run has min_points, and their votes withdrawn before the next peak is taken.
+// Points farther than this from the sensor cannot be voted (no laser in the project reaches it).
+inline constexpr double kMaxHoughRangeM = 100.0;
+
 struct HoughOptions {
   double theta_bin_deg = 1.0;
   double rho_bin_m = 0.02;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "msgs/shortest_number.h"
 #include "perception/lines/tls_line_fit.h"
 
 namespace plywood::perception {
@@ -12,7 +13,7 @@ void IncrementalOptions::Validate() const {
   round_objects.Validate();
   if (!(max_distance_m > 0.0)) {
     throw std::invalid_argument("max_distance_m: must be > 0, got " +
-                                std::to_string(max_distance_m));
+                                msgs::ShortestNumber(max_distance_m));
   }
   if (seed_points < 2) {
     throw std::invalid_argument("seed_points: must be >= 2, got " + std::to_string(seed_points));

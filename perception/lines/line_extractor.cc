@@ -6,20 +6,22 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/shortest_number.h"
+
 namespace plywood::perception {
 
 void BreakpointOptions::Validate() const {
   if (!(min_m > 0.0))
-    throw std::invalid_argument("min_m: must be > 0, got " + std::to_string(min_m));
+    throw std::invalid_argument("min_m: must be > 0, got " + msgs::ShortestNumber(min_m));
   if (!(max_m >= min_m)) {
-    throw std::invalid_argument("max_m: must be >= min_m, got " + std::to_string(max_m));
+    throw std::invalid_argument("max_m: must be >= min_m, got " + msgs::ShortestNumber(max_m));
   }
   if (!(lambda_deg > 0.0 && lambda_deg < 90.0)) {
     throw std::invalid_argument("lambda_deg: must be in (0, 90), got " +
-                                std::to_string(lambda_deg));
+                                msgs::ShortestNumber(lambda_deg));
   }
   if (!(sigma_m >= 0.0)) {
-    throw std::invalid_argument("sigma_m: must be >= 0, got " + std::to_string(sigma_m));
+    throw std::invalid_argument("sigma_m: must be >= 0, got " + msgs::ShortestNumber(sigma_m));
   }
 }
 

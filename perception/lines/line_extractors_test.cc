@@ -3,7 +3,9 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <tuple>
 
+#include "perception/lines/hough_extractor.h"
 #include "perception/lines/line_extractor_factory.h"
 #include "perception/lines/line_scoring.h"
 #include "perception/lines/ray_explanation.h"
@@ -208,6 +210,35 @@ TEST(LineExtractorsTest, UnknownNameAndBadOptionsAreRejectedByField) {
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()).rfind("split_threshold_m:", 0), 0u);
   }
+}
+
+// Issue 18: tiny bins overflowed an int, wrote out of bounds, or left no angle bin at all.
+TEST(HoughExtractorTest, BinsThatWouldNotFitInMemoryAreRejectedByField) {
+  for (const auto& [field, rho_bin_m, theta_bin_deg] :
+       {std::tuple{"rho_bin_m:", 1e-9, 1.0}, std::tuple{"rho_bin_m:", 1e300, 1.0},
+        std::tuple{"theta_bin_deg:", 0.02, 1e-300}, std::tuple{"theta_bin_deg:", 0.02, 0.01}}) {
+    HoughOptions options;
+    options.rho_bin_m = rho_bin_m;
+    options.theta_bin_deg = theta_bin_deg;
+    try {
+      HoughExtractor extractor(options);
+      ADD_FAILURE() << rho_bin_m << " " << theta_bin_deg;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()).rfind(field, 0), 0u) << e.what();
+    }
+  }
+  // The finest bins allowed still find a wall: 50 points on x = 2.
+  HoughOptions finest;
+  finest.rho_bin_m = 0.01;
+  finest.theta_bin_deg = 0.25;
+  ScanPoints scan;
+  for (int i = 0; i < 50; ++i) scan.points.emplace_back(2.0, -1.0 + 0.04 * i);
+  const std::vector<LineSegment> lines = HoughExtractor(finest).Extract(scan);
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_NEAR(lines[0].start.x(), 2.0, 1e-9);
+  // A point beyond the accumulator's reach is refused, not written out of bounds.
+  scan.points.emplace_back(kMaxHoughRangeM + 1.0, 0.0);
+  EXPECT_THROW(HoughExtractor(finest).Extract(scan), std::invalid_argument);
 }
 
 }  // namespace

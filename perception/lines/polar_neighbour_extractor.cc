@@ -4,6 +4,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "msgs/shortest_number.h"
 #include "perception/lines/tls_line_fit.h"
 
 namespace plywood::perception {
@@ -11,7 +12,8 @@ namespace plywood::perception {
 void PolarNeighbourOptions::Validate() const {
   const auto positive = [](const char* name, double v) {
     if (!(v > 0.0))
-      throw std::invalid_argument(std::string(name) + ": must be > 0, got " + std::to_string(v));
+      throw std::invalid_argument(std::string(name) + ": must be > 0, got " +
+                                  msgs::ShortestNumber(v));
   };
   positive("max_point_distance_m", max_point_distance_m);
   positive("max_alpha_diff_deg", max_alpha_diff_deg);

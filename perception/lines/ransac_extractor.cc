@@ -4,6 +4,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "msgs/shortest_number.h"
 #include "perception/lines/tls_line_fit.h"
 
 namespace plywood::perception {
@@ -12,7 +13,7 @@ void RansacOptions::Validate() const {
   if (iterations < 1) throw std::invalid_argument("iterations: must be >= 1");
   if (!(distance_threshold_m > 0.0)) {
     throw std::invalid_argument("distance_threshold_m: must be > 0, got " +
-                                std::to_string(distance_threshold_m));
+                                msgs::ShortestNumber(distance_threshold_m));
   }
   if (min_inliers < 2) throw std::invalid_argument("min_inliers: must be >= 2");
   if (!(max_gap_m > 0.0)) throw std::invalid_argument("max_gap_m: must be > 0");

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/shortest_number.h"
 #include "perception/lines/circle_fit.h"
 #include "perception/lines/tls_line_fit.h"
 
@@ -120,11 +121,11 @@ bool IsRoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
 void RoundObjectOptions::Validate() const {
   if (!(max_round_radius_m > 0.0)) {
     throw std::invalid_argument("max_round_radius_m: must be > 0, got " +
-                                std::to_string(max_round_radius_m));
+                                msgs::ShortestNumber(max_round_radius_m));
   }
   if (!(min_round_arc_deg >= 0.0 && min_round_arc_deg <= 360.0)) {
     throw std::invalid_argument("min_round_arc_deg: must be in [0, 360], got " +
-                                std::to_string(min_round_arc_deg));
+                                msgs::ShortestNumber(min_round_arc_deg));
   }
   if (min_round_points < 4) {
     throw std::invalid_argument("min_round_points: must be >= 4, got " +

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "msgs/shortest_number.h"
+
 namespace plywood::perception {
 namespace {
 
@@ -83,7 +85,7 @@ void SplitAndMergeOptions::Validate() const {
   breakpoints.Validate();
   if (!(split_threshold_m > 0.0)) {
     throw std::invalid_argument("split_threshold_m: must be > 0, got " +
-                                std::to_string(split_threshold_m));
+                                msgs::ShortestNumber(split_threshold_m));
   }
   modal.Validate();
   round_objects.Validate();

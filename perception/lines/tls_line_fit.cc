@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/shortest_number.h"
+
 namespace plywood::perception {
 namespace {
 
@@ -114,7 +116,8 @@ void ModalFitOptions::Validate() const {
     throw std::invalid_argument("pair_step: must be >= 1, got " + std::to_string(pair_step));
   }
   if (!(bin_deg > 0.0 && bin_deg <= 45.0)) {
-    throw std::invalid_argument("bin_deg: must be in (0, 45], got " + std::to_string(bin_deg));
+    throw std::invalid_argument("bin_deg: must be in (0, 45], got " +
+                                msgs::ShortestNumber(bin_deg));
   }
 }
 

@@ -64,6 +64,63 @@ void ParseFlaser(const std::vector<std::string>& t, CarmenLog* log) {
   log->lasers.push_back(std::move(record));
 }
 
+// ROBOTLASER1 laser_type start_angle fov resolution max_range accuracy remission_mode n ranges...
+// m remissions... laser_x laser_y laser_theta robot_x robot_y robot_theta tv rv
+// forward_safety_dist side_safety_dist turn_axis ipc_timestamp hostname logger_timestamp.
+// Unlike FLASER it carries the beams' start angle and spacing, so any fov reads back right.
+void ParseRobotLaser1(const std::vector<std::string>& t, CarmenLog* log) {
+  if (t.size() < 9) throw std::runtime_error("ROBOTLASER1: missing fields before the ranges");
+  const double n_value = ParseNumber(t[8], "ROBOTLASER1 beam count");
+  if (n_value < 1 || n_value > 100000 || n_value != std::floor(n_value)) {
+    throw std::runtime_error("ROBOTLASER1 beam count: must be a whole number in 1..100000");
+  }
+  const auto n = static_cast<std::size_t>(n_value);
+  if (t.size() < 9 + n + 1) throw std::runtime_error("ROBOTLASER1: fewer ranges than announced");
+  const double m_value = ParseNumber(t[9 + n], "ROBOTLASER1 remission count");
+  if (m_value < 0 || m_value > 100000 || m_value != std::floor(m_value)) {
+    throw std::runtime_error("ROBOTLASER1 remission count: must be a whole number in 0..100000");
+  }
+  const auto m = static_cast<std::size_t>(m_value);
+  const std::size_t p = 9 + n + 1 + m;
+  if (t.size() != p + 14) {
+    throw std::runtime_error("ROBOTLASER1: expected " + std::to_string(p + 14) + " fields for " +
+                             std::to_string(n) + " beams and " + std::to_string(m) +
+                             " remissions, got " + std::to_string(t.size()));
+  }
+  CarmenLaserRecord record;
+  record.scan.angle_min_rad = ParseNumber(t[2], "ROBOTLASER1 start_angle");
+  record.scan.angle_increment_rad = ParseNumber(t[4], "ROBOTLASER1 angular_resolution");
+  record.scan.range_max_m = ParseNumber(t[5], "ROBOTLASER1 maximum_range");
+  if (!(record.scan.range_max_m > 0.0)) {
+    throw std::runtime_error("ROBOTLASER1 maximum_range: must be > 0, got " + t[5]);
+  }
+  record.scan.ranges_m.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = ParseNumber(t[9 + i], "ROBOTLASER1 range");
+    if (r < 0.0) throw std::runtime_error("ROBOTLASER1 range: negative range " + t[9 + i]);
+    record.scan.ranges_m[i] = r;
+  }
+  record.X_WL = {ParseNumber(t[p], "ROBOTLASER1 laser_x"),
+                 ParseNumber(t[p + 1], "ROBOTLASER1 laser_y"),
+                 ParseNumber(t[p + 2], "ROBOTLASER1 laser_theta")};
+  record.X_WR_odom = {ParseNumber(t[p + 3], "ROBOTLASER1 robot_x"),
+                      ParseNumber(t[p + 4], "ROBOTLASER1 robot_y"),
+                      ParseNumber(t[p + 5], "ROBOTLASER1 robot_theta")};
+  record.scan.time_s = ParseNumber(t[p + 11], "ROBOTLASER1 ipc_timestamp");
+  ParseNumber(t[p + 13], "ROBOTLASER1 logger_timestamp");
+  log->lasers.push_back(std::move(record));
+}
+
+// True when FLASER's fixed geometry (n beams from -90 deg to +90 deg) is the scan's own.
+bool FlaserCanCarry(const msgs::LaserScan& scan) {
+  const std::size_t n = scan.ranges_m.size();
+  if (n < 2) return false;
+  constexpr double kTolerance = 1e-9;
+  return std::abs(scan.angle_min_rad + std::numbers::pi / 2.0) < kTolerance &&
+         std::abs(scan.angle_increment_rad - std::numbers::pi / static_cast<double>(n - 1)) <
+             kTolerance;
+}
+
 // Line-oriented reader over plain or gzip files (zlib reads both transparently).
 class LineReader {
  public:
@@ -74,6 +131,8 @@ class LineReader {
   LineReader(const LineReader&) = delete;
   LineReader& operator=(const LineReader&) = delete;
 
+  // @throws std::runtime_error with zlib's message when the gzip stream is corrupt or truncated
+  // (gzgets reports those as the end of the file).
   bool Next(std::string* line) {
     line->clear();
     char buffer[65536];
@@ -84,6 +143,12 @@ class LineReader {
         if (!line->empty() && line->back() == '\r') line->pop_back();
         return true;
       }
+    }
+    int error = Z_OK;
+    const char* message = gzerror(file_, &error);
+    if (error != Z_OK && error != Z_STREAM_END) {
+      throw std::runtime_error(std::string("corrupt or truncated gzip data (zlib: ") +
+                               (message ? message : "unknown error") + ")");
     }
     return !line->empty();
   }
@@ -101,8 +166,18 @@ bool ParseCarmenLine(const std::string& line, CarmenLog* log) {
     ParseFlaser(t, log);
     return true;
   }
+  if (t[0] == "ROBOTLASER1") {
+    ParseRobotLaser1(t, log);
+    return true;
+  }
   if (t[0] == "PARAM") {
     if (t.size() < 3) throw std::runtime_error("PARAM: expected a name and a value");
+    if (t[1] == "front_laser_max") {
+      const double range_max = ParseNumber(t[2], "PARAM front_laser_max");
+      if (!(range_max > 0.0)) {
+        throw std::runtime_error("PARAM front_laser_max: must be > 0, got " + t[2]);
+      }
+    }
     log->params[t[1]] = t[2];
     return true;
   }
@@ -116,7 +191,15 @@ CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptio
   CarmenLog log;
   LineReader reader(path);
   std::string line;
-  for (std::size_t number = 1; reader.Next(&line); ++number) {
+  std::size_t number = 1;
+  const auto next_line = [&] {
+    try {
+      return reader.Next(&line);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(path.string() + ":" + std::to_string(number) + ": " + e.what());
+    }
+  };
+  for (; next_line(); ++number) {
     const std::size_t before = log.lasers.size();
     try {
       ParseCarmenLine(line, &log);
@@ -129,19 +212,31 @@ CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptio
     }
     if (log.lasers.size() > before) log.lasers.back().line_number = number;
   }
-  // Range limits: PARAM front_laser_max when the log has it, else the largest range in the log.
+  if (log.lasers.empty()) {
+    throw std::runtime_error(
+        path.string() + ": no usable laser scan (FLASER or ROBOTLASER1 line) in " +
+        std::to_string(number - 1) + " lines" +
+        (log.skipped_lines ? " (" + std::to_string(log.skipped_lines) + " malformed lines skipped)"
+                           : std::string()));
+  }
+  // FLASER range limits: PARAM front_laser_max when the log has it (checked when read), else the
+  // largest range in the log. ROBOTLASER1 lines carry their own.
   double range_max = 0.0;
   if (auto it = log.params.find("front_laser_max"); it != log.params.end()) {
-    range_max = std::strtod(it->second.c_str(), nullptr);
+    range_max = ParseFiniteNumber(it->second).value_or(0.0);
   }
   if (!(range_max > 0.0)) {
     for (const auto& record : log.lasers) {
       for (double r : record.scan.ranges_m) range_max = std::max(range_max, r);
     }
   }
-  for (auto& record : log.lasers) record.scan.range_max_m = range_max;
+  for (auto& record : log.lasers) {
+    if (record.scan.range_max_m == 0.0) record.scan.range_max_m = range_max;
+  }
   return log;
 }
+
+bool IsFlaserScan(const msgs::LaserScan& scan) { return FlaserCanCarry(scan); }
 
 void WriteCarmenLaser(std::ostream& out, const CarmenLaserRecord& record) {
   char number[64];
@@ -149,6 +244,32 @@ void WriteCarmenLaser(std::ostream& out, const CarmenLaserRecord& record) {
     std::snprintf(number, sizeof(number), format, v);
     out << ' ' << number;
   };
+  const msgs::LaserScan& scan = record.scan;
+  if (!FlaserCanCarry(scan)) {
+    // laser_type 0 (SICK LMS), accuracy 0, remission_mode 0, no remissions; tv rv, the safety
+    // distances and the turn axis are unknown (0).
+    out << "ROBOTLASER1 0";
+    // Angles to the last bit: a rounded resolution would add up over hundreds of beams.
+    put(scan.angle_min_rad, "%.17g");
+    put(scan.angle_increment_rad * static_cast<double>(scan.ranges_m.size() - 1), "%.17g");
+    put(scan.angle_increment_rad, "%.17g");
+    put(scan.range_max_m, "%.3f");
+    out << " 0 0 " << scan.ranges_m.size();
+    for (double r : scan.ranges_m) put(std::min(r, scan.range_max_m), "%.3f");
+    out << " 0";
+    put(record.X_WL.x_m, "%.6f");
+    put(record.X_WL.y_m, "%.6f");
+    put(record.X_WL.theta_rad, "%.6f");
+    put(record.X_WR_odom.x_m, "%.6f");
+    put(record.X_WR_odom.y_m, "%.6f");
+    put(record.X_WR_odom.theta_rad, "%.6f");
+    out << " 0 0 0 0 0";
+    put(scan.time_s, "%.6f");
+    out << " plywood";
+    put(scan.time_s, "%.6f");
+    out << '\n';
+    return;
+  }
   out << "FLASER " << record.scan.ranges_m.size();
   for (double r : record.scan.ranges_m) put(std::min(r, record.scan.range_max_m), "%.3f");
   put(record.X_WL.x_m, "%.6f");

@@ -12,7 +12,8 @@
 
 namespace plywood::perception {
 
-// One FLASER line: a 180-degree scan starting at -90 deg with the laser's pose in the world and the
+// One FLASER line (a 180-degree scan starting at -90 deg) or ROBOTLASER1 line (any start and
+// spacing, its own maximum range). FLASER: with the laser's pose in the world and the
 // robot's odometry pose. Beams are spread as pi / (n - 1), so 361 beams are the LMS 200's 0.5 deg.
 struct CarmenLaserRecord {
   msgs::LaserScan scan;
@@ -35,17 +36,24 @@ struct CarmenReadOptions {
 
 // Reads a CARMEN text log, plain or gzip-compressed (by content, not by name). Unknown message
 // types, NEFF and # comments are skipped.
-// @throws std::runtime_error "FILE:LINE: message" on a malformed FLASER/ODOM/PARAM line unless
-// options.skip_bad, and when the file cannot be read.
+// @throws std::runtime_error "FILE:LINE: message" on a malformed FLASER/ROBOTLASER1/PARAM line
+// unless options.skip_bad, on corrupt or truncated gzip data, "FILE: message" when the file
+// cannot be read or holds no usable laser scan.
 CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptions& options = {});
 
 // Parses one line; exposed for tests and fuzzing. Returns false for lines Plywood ignores.
 // @throws std::runtime_error "message" (no file or line prefix) on a malformed line.
 bool ParseCarmenLine(const std::string& line, CarmenLog* log);
 
-// Writes one FLASER line for `record` (timestamps from record.scan.time_s, hostname "plywood").
-// Ranges at or beyond range_max_m are written as range_max_m, as a real LMS 200 reports them.
+// Writes one laser line for `record` (timestamps from record.scan.time_s, hostname "plywood"):
+// FLASER when the scan spans -90..+90 deg in n beams (all FLASER can say), else ROBOTLASER1, which
+// carries the start angle and spacing (the laser pose as its laser pose, X_WR_odom as its robot
+// pose). Ranges at or beyond range_max_m are written as range_max_m, as a real LMS 200 reports
+// them.
 void WriteCarmenLaser(std::ostream& out, const CarmenLaserRecord& record);
+
+// True when WriteCarmenLaser writes `scan` as FLASER.
+bool IsFlaserScan(const msgs::LaserScan& scan);
 
 // Writes a PARAM line.
 void WriteCarmenParam(std::ostream& out, const std::string& name, const std::string& value);

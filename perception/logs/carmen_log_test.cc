@@ -1,11 +1,15 @@
 #include "perception/logs/carmen_log.h"
 
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <iterator>
 #include <numbers>
 #include <sstream>
+#include <utility>
 
 namespace plywood::perception {
 namespace {
@@ -76,6 +80,115 @@ TEST(CarmenLogTest, WriteThenReadRoundTrips) {
   EXPECT_EQ(log.lasers[0].scan.ranges_m, record.scan.ranges_m);
   EXPECT_DOUBLE_EQ(log.lasers[0].X_WL.theta_rad, 0.25);
   EXPECT_DOUBLE_EQ(log.lasers[0].scan.time_s, 3.5);
+}
+
+// Issue 18: a scan of fov != 180 deg written as FLASER was read back spread over 180 deg.
+TEST(CarmenLogTest, ANarrowScanRoundTripsWithItsOwnBeamAngles) {
+  CarmenLaserRecord record;
+  const double deg = std::numbers::pi / 180.0;
+  record.scan.angle_min_rad = -50.0 * deg;
+  record.scan.angle_increment_rad = 1.0 * deg;
+  record.scan.ranges_m.assign(101, 2.0);
+  record.scan.ranges_m[7] = 9.0;
+  record.scan.range_max_m = 8.0;
+  record.scan.time_s = 1.5;
+  record.X_WL = {1.0, 2.0, 0.5};
+  record.X_WR_odom = {1.1, 2.1, 0.6};
+  EXPECT_FALSE(IsFlaserScan(record.scan));
+  std::ostringstream out;
+  WriteCarmenLaser(out, record);
+  EXPECT_EQ(out.str().rfind("ROBOTLASER1 ", 0), 0u) << out.str();
+  const CarmenLog log = ReadCarmenLog(WriteTemp("narrow.log", out.str()));
+  ASSERT_EQ(log.lasers.size(), 1u);
+  const msgs::LaserScan& scan = log.lasers[0].scan;
+  ASSERT_EQ(scan.ranges_m.size(), 101u);
+  EXPECT_NEAR(scan.BeamAngleRad(0), -50.0 * deg, 1e-9);
+  EXPECT_NEAR(scan.BeamAngleRad(100), 50.0 * deg, 1e-8);
+  EXPECT_DOUBLE_EQ(scan.range_max_m, 8.0);
+  EXPECT_DOUBLE_EQ(scan.ranges_m[7], 8.0);  // clipped to the maximum, as FLASER does
+  EXPECT_DOUBLE_EQ(log.lasers[0].X_WL.theta_rad, 0.5);
+  EXPECT_DOUBLE_EQ(log.lasers[0].X_WR_odom.x_m, 1.1);
+  EXPECT_DOUBLE_EQ(scan.time_s, 1.5);
+
+  // A 180-degree scan stays FLASER (the format every CARMEN reader knows).
+  record.scan.angle_min_rad = -90.0 * deg;
+  record.scan.angle_increment_rad = 180.0 * deg / 100.0;
+  EXPECT_TRUE(IsFlaserScan(record.scan));
+  std::ostringstream flaser;
+  WriteCarmenLaser(flaser, record);
+  EXPECT_EQ(flaser.str().rfind("FLASER 101 ", 0), 0u);
+}
+
+TEST(CarmenLogTest, AnInfiniteOrNonPositiveFrontLaserMaxIsRefusedWithItsLine) {
+  for (const std::string value : {"inf", "nan", "0", "-3", "1e999", "8x"}) {
+    const auto path =
+        WriteTemp("param.log", Flaser("1 2 3", 3) + "PARAM front_laser_max " + value + " host 0\n");
+    try {
+      ReadCarmenLog(path);
+      ADD_FAILURE() << "no error for front_laser_max " << value;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("param.log:2: PARAM front_laser_max"), std::string::npos)
+          << e.what();
+    }
+  }
+}
+
+TEST(CarmenLogTest, ALogWithoutAUsableScanIsRefused) {
+  std::string random_bytes;
+  std::uint32_t state = 12345;
+  for (int i = 0; i < 100000; ++i) {
+    state = state * 1664525u + 1013904223u;  // Numerical Recipes' LCG
+    random_bytes.push_back(static_cast<char>(state >> 24));
+  }
+  for (const auto& [name, text] : {std::pair<std::string, std::string>{"empty.log", ""},
+                                   {"random.log", random_bytes},
+                                   {"odom_only.log", "ODOM 0 0 0 0 0 0 1 h 1\n"}}) {
+    try {
+      CarmenReadOptions options;
+      options.skip_bad = true;
+      ReadCarmenLog(WriteTemp(name, text), options);
+      ADD_FAILURE() << "no error for " << name;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(name + ": no usable laser scan"), std::string::npos)
+          << e.what();
+    }
+  }
+}
+
+// zlib reports corrupt or truncated data as the end of the file unless asked: 9 of 30 single-byte
+// flips used to read as a shorter log.
+TEST(CarmenLogTest, CorruptOrTruncatedGzipIsAnError) {
+  std::string text = "PARAM front_laser_max 8 host 0\n";
+  for (int i = 0; i < 200; ++i) text += Flaser("1 2 3", 3);
+  const auto gz_path = std::filesystem::temp_directory_path() / "plywood_carmen_good.log.gz";
+  gzFile gz = gzopen(gz_path.c_str(), "wb");
+  ASSERT_NE(gz, nullptr);
+  ASSERT_EQ(gzwrite(gz, text.data(), static_cast<unsigned>(text.size())),
+            static_cast<int>(text.size()));
+  ASSERT_EQ(gzclose(gz), Z_OK);
+  EXPECT_EQ(ReadCarmenLog(gz_path).lasers.size(), 200u);
+  std::ifstream in(gz_path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GT(bytes.size(), 40u);
+
+  std::string truncated = bytes.substr(0, bytes.size() - 12);
+  std::string trailer_flipped = bytes;
+  trailer_flipped[bytes.size() - 6] ^= 0x5a;  // the stored length (ISIZE)
+  std::string data_flipped = bytes;
+  data_flipped[bytes.size() / 2] ^= 0xff;
+  for (const auto& [name, corrupt] : {std::pair{"truncated", truncated},
+                                      {"trailer_flipped", trailer_flipped},
+                                      {"data_flipped", data_flipped}}) {
+    const auto path = WriteTemp(std::string(name) + ".log.gz", corrupt);
+    try {
+      ReadCarmenLog(path);
+      ADD_FAILURE() << "no error for " << name;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(path.filename().string() + ":"), std::string::npos)
+          << e.what();
+      EXPECT_NE(std::string(e.what()).find("gzip"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(CarmenLogTest, MissingFileIsAnError) {

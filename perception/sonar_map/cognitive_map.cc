@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/shortest_number.h"
 #include "perception/sonar_map/line_fit.h"
 
 namespace plywood::perception {
@@ -81,7 +82,10 @@ std::vector<Eigen::Vector2i> TrimThinEnds(const std::vector<Eigen::Vector2i>& ce
 void CognitiveMapOptions::Validate() const {
   if (!(eps > 0.0 && eps < 0.5)) throw std::invalid_argument("eps: must be in (0, 0.5)");
   if (!(snap_distance_m >= 0.0)) throw std::invalid_argument("snap_distance_m: must be >= 0");
-  if (!(fit_sigma_m > 0.0)) throw std::invalid_argument("fit_sigma_m: must be > 0");
+  // Outside this range the fits' weights 1 / sigma^2 underflow or overflow.
+  if (!(fit_sigma_m >= 1e-3 && fit_sigma_m <= 10.0))
+    throw std::invalid_argument("fit_sigma_m: must be in [0.001, 10], got " +
+                                msgs::ShortestNumber(fit_sigma_m));
   if (min_wall_points < 2) throw std::invalid_argument("min_wall_points: must be >= 2");
   if (min_obstacle_cells < 1) throw std::invalid_argument("min_obstacle_cells: must be >= 1");
   if (!(obstacle_free_p > 0.0 && obstacle_free_p <= eps))

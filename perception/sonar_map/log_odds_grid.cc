@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/shortest_number.h"
+
 namespace plywood::perception {
 namespace {
 
@@ -17,10 +19,10 @@ double ClampedLogit(double p, const LogOddsOptions& o) {
 
 void LogOddsOptions::Validate() const {
   if (!(p_min > 0.0 && p_min < 0.5))
-    throw std::invalid_argument("p_min: must be in (0, 0.5), got " + std::to_string(p_min));
+    throw std::invalid_argument("p_min: must be in (0, 0.5), got " + msgs::ShortestNumber(p_min));
   if (!(log_odds_limit > 0.0))
     throw std::invalid_argument("log_odds_limit: must be > 0, got " +
-                                std::to_string(log_odds_limit));
+                                msgs::ShortestNumber(log_odds_limit));
 }
 
 double CombineReadings(const std::vector<double>& p, const LogOddsOptions& options) {
@@ -34,7 +36,8 @@ double CombineReadings(const std::vector<double>& p, const LogOddsOptions& optio
 
 void LogOddsGridOptions::Validate() const {
   if (!(resolution_m > 0.0))
-    throw std::invalid_argument("resolution_m: must be > 0, got " + std::to_string(resolution_m));
+    throw std::invalid_argument("resolution_m: must be > 0, got " +
+                                msgs::ShortestNumber(resolution_m));
   if (width < 1 || width > 20000) throw std::invalid_argument("width: must be in [1, 20000]");
   if (height < 1 || height > 20000) throw std::invalid_argument("height: must be in [1, 20000]");
   if (local_cells < 1) throw std::invalid_argument("local_cells: must be >= 1");

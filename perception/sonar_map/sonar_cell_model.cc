@@ -6,6 +6,7 @@
 #include <string>
 
 #include "msgs/pose2d.h"
+#include "msgs/shortest_number.h"
 
 namespace plywood::perception {
 namespace {
@@ -59,15 +60,15 @@ Eigen::Matrix<double, 5, 1> NormalisedFeatures(const SonarCellFeatures& f, doubl
 void ClassicalSonarOptions::Validate() const {
   if (!(beam_half_angle_deg > 0.0 && beam_half_angle_deg < 90.0))
     throw std::invalid_argument("beam_half_angle_deg: must be in (0, 90), got " +
-                                std::to_string(beam_half_angle_deg));
+                                msgs::ShortestNumber(beam_half_angle_deg));
   if (!(arc_half_width_m > 0.0))
     throw std::invalid_argument("arc_half_width_m: must be > 0, got " +
-                                std::to_string(arc_half_width_m));
+                                msgs::ShortestNumber(arc_half_width_m));
   if (!(p_occupied > 0.5 && p_occupied < 1.0))
     throw std::invalid_argument("p_occupied: must be in (0.5, 1), got " +
-                                std::to_string(p_occupied));
+                                msgs::ShortestNumber(p_occupied));
   if (!(p_free > 0.0 && p_free < 0.5))
-    throw std::invalid_argument("p_free: must be in (0, 0.5), got " + std::to_string(p_free));
+    throw std::invalid_argument("p_free: must be in (0, 0.5), got " + msgs::ShortestNumber(p_free));
 }
 
 ClassicalSonarModel::ClassicalSonarModel(const ClassicalSonarOptions& options) : options_(options) {

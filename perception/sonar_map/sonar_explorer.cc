@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/shortest_number.h"
 #include "perception/sonar_map/echo_gated_model.h"
 #include "perception/sonar_map/frontier_planner.h"
 #include "robot/drive/diff_drive_kinematics.h"
@@ -15,12 +16,25 @@ namespace {
 
 void RequirePositive(const std::string& field, double v) {
   if (!(std::isfinite(v) && v > 0.0))
-    throw std::invalid_argument(field + ": must be a finite number > 0, got " + std::to_string(v));
+    throw std::invalid_argument(field + ": must be a finite number > 0, got " +
+                                msgs::ShortestNumber(v));
 }
 
 void RequireNonNegative(const std::string& field, double v) {
   if (!(std::isfinite(v) && v >= 0.0))
-    throw std::invalid_argument(field + ": must be a finite number >= 0, got " + std::to_string(v));
+    throw std::invalid_argument(field + ": must be a finite number >= 0, got " +
+                                msgs::ShortestNumber(v));
+}
+
+// A grid side beyond this many cells (the default is 160) would take gigabytes.
+constexpr double kMaxGridCellsPerSide = 4000.0;
+
+// Lengths that become cell or place counts: bounded so the counts fit an int and the grids fit
+// in memory.
+void RequireInRange(const std::string& field, double v, double low, double high) {
+  if (!(v >= low && v <= high))
+    throw std::invalid_argument(field + ": must be in [" + msgs::ShortestNumber(low) + ", " +
+                                msgs::ShortestNumber(high) + "], got " + msgs::ShortestNumber(v));
 }
 
 Eigen::Vector2d Position(const msgs::Pose2D& X) { return {X.x_m, X.y_m}; }
@@ -32,8 +46,14 @@ void SonarExplorerOptions::Validate() const {
     throw std::invalid_argument("sonar_model: must be net or classical, got '" + sonar_model + "'");
   if (sonar_model == "net" && weights_file.empty())
     throw std::invalid_argument("weights_file: needed when sonar_model is net");
-  RequirePositive("grid_half_extent_m", grid_half_extent_m);
-  RequirePositive("grid_resolution_m", grid_resolution_m);
+  RequireInRange("grid_half_extent_m", grid_half_extent_m, 0.5, 100.0);
+  RequireInRange("grid_resolution_m", grid_resolution_m, 0.01, 1.0);
+  if (2.0 * grid_half_extent_m / grid_resolution_m > kMaxGridCellsPerSide)
+    throw std::invalid_argument(
+        "grid_resolution_m: the grid would be " +
+        msgs::ShortestNumber(std::ceil(2.0 * grid_half_extent_m / grid_resolution_m)) +
+        " cells wide (2 grid_half_extent_m / grid_resolution_m), more than " +
+        msgs::ShortestNumber(kMaxGridCellsPerSide));
   if (!(p_min > 0.0 && p_min < 0.5)) throw std::invalid_argument("p_min: must be in (0, 0.5)");
   RequirePositive("log_odds_limit", log_odds_limit);
   map.Validate();
@@ -47,8 +67,8 @@ void SonarExplorerOptions::Validate() const {
   if (!(visit_decay > 0.0 && visit_decay <= 1.0))
     throw std::invalid_argument("visit_decay: must be in (0, 1]");
   RequirePositive("unvisited_utility", unvisited_utility);
-  RequirePositive("visit_radius_m", visit_radius_m);
-  RequirePositive("place_size_m", place_size_m);
+  RequireInRange("visit_radius_m", visit_radius_m, 0.01, 10.0);
+  RequireInRange("place_size_m", place_size_m, 0.1, 100.0);
   RequireNonNegative("perimeter_min_m", perimeter_min_m);
   RequirePositive("clearance_m", clearance_m);
   RequirePositive("stop_range_m", stop_range_m);
@@ -68,7 +88,7 @@ void SonarExplorerOptions::Validate() const {
   if (!(robot_radius_m + front_margin_m < path_clearance_m))
     throw std::invalid_argument(
         "front_margin_m: robot_radius_m + front_margin_m must be < path_clearance_m");
-  RequirePositive("frontier_view_m", frontier_view_m);
+  RequireInRange("frontier_view_m", frontier_view_m, 0.01, 10.0);
   RequireNonNegative("frontier_wall_band_m", frontier_wall_band_m);
   if (!(frontier_view_m > waypoint_tolerance_m))
     throw std::invalid_argument("frontier_view_m: must be > waypoint_tolerance_m");

@@ -6,23 +6,25 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/shortest_number.h"
+
 namespace plywood::robot {
 
 void GainGridOptions::Validate() const {
   if (!(min_gain > 0.0) || !std::isfinite(min_gain)) {
     throw std::invalid_argument("min_gain: must be finite and > 0, got " +
-                                std::to_string(min_gain));
+                                msgs::ShortestNumber(min_gain));
   }
   if (!(max_gain >= min_gain) || !std::isfinite(max_gain)) {
     throw std::invalid_argument("max_gain: must be finite and >= min_gain, got " +
-                                std::to_string(max_gain));
+                                msgs::ShortestNumber(max_gain));
   }
   if (!(step > 0.0) || !std::isfinite(step)) {
-    throw std::invalid_argument("step: must be finite and > 0, got " + std::to_string(step));
+    throw std::invalid_argument("step: must be finite and > 0, got " + msgs::ShortestNumber(step));
   }
   if ((max_gain - min_gain) / step > 2000.0) {
     throw std::invalid_argument("step: more than 2000 grid points per axis, got " +
-                                std::to_string(step));
+                                msgs::ShortestNumber(step));
   }
 }
 

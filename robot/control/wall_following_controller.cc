@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/shortest_number.h"
 #include "robot/drive/diff_drive_kinematics.h"
 
 namespace plywood::robot {
@@ -71,14 +72,14 @@ void WallFollowingOptions::Validate() const {
   internal::RequirePositive("max_approach_angle_rad", max_approach_angle_rad);
   if (max_approach_angle_rad >= std::numbers::pi / 2.0) {
     throw std::invalid_argument("max_approach_angle_rad: must be < pi/2, got " +
-                                std::to_string(max_approach_angle_rad));
+                                msgs::ShortestNumber(max_approach_angle_rad));
   }
   internal::RequirePositive("side_window_rad", side_window_rad);
   internal::RequirePositive("front_window_rad", front_window_rad);
   internal::RequirePositive("max_wall_range_m", max_wall_range_m);
   if (max_wall_range_m <= distance_m) {
     throw std::invalid_argument("max_wall_range_m: must exceed distance_m, got " +
-                                std::to_string(max_wall_range_m));
+                                msgs::ShortestNumber(max_wall_range_m));
   }
   internal::RequirePositive("front_clearance_m", front_clearance_m);
   internal::RequirePositive("lane_half_width_m", lane_half_width_m);
@@ -86,7 +87,7 @@ void WallFollowingOptions::Validate() const {
   internal::RequireNonNegative("wall_memory_s", wall_memory_s);
   if (wall_memory_s > memory_s) {
     throw std::invalid_argument("wall_memory_s: must not exceed memory_s, got " +
-                                std::to_string(wall_memory_s));
+                                msgs::ShortestNumber(wall_memory_s));
   }
   internal::RequireNonNegative("duration_s", duration_s);
 }

@@ -4,13 +4,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/shortest_number.h"
+
 namespace plywood::robot {
 namespace {
 
 void RequirePositive(const char* field, double value) {
   if (!std::isfinite(value) || value <= 0.0) {
     throw std::invalid_argument(std::string(field) + ": must be a finite number > 0, got " +
-                                std::to_string(value));
+                                msgs::ShortestNumber(value));
   }
 }
 

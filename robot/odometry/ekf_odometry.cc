@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/shortest_number.h"
 #include "robot/drive/diff_drive_kinematics.h"
 
 namespace plywood::robot {
@@ -13,14 +14,14 @@ namespace {
 void RequireNonNegative(const char* field, double value) {
   if (!std::isfinite(value) || value < 0.0) {
     throw std::invalid_argument(std::string(field) + ": must be a finite number >= 0, got " +
-                                std::to_string(value));
+                                msgs::ShortestNumber(value));
   }
 }
 
 void RequirePositive(const char* field, double value) {
   if (!std::isfinite(value) || value <= 0.0) {
     throw std::invalid_argument(std::string(field) + ": must be a finite number > 0, got " +
-                                std::to_string(value));
+                                msgs::ShortestNumber(value));
   }
 }
 

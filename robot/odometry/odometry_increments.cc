@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/shortest_number.h"
 #include "robot/drive/diff_drive_kinematics.h"
 
 namespace plywood::robot {
@@ -13,7 +14,7 @@ namespace {
 void RequireRatio(const char* field, double value) {
   if (!std::isfinite(value) || value < 0.5 || value > 2.0) {
     throw std::invalid_argument(std::string(field) + ": must be a ratio in [0.5, 2], got " +
-                                std::to_string(value));
+                                msgs::ShortestNumber(value));
   }
 }
 
@@ -49,7 +50,7 @@ Integration ParseIntegration(std::string_view text) {
 void IncrementOptions::Validate() const {
   if (!std::isfinite(dead_band_rad) || dead_band_rad < 0.0 || dead_band_rad > 0.5) {
     throw std::invalid_argument("dead_band_rad: must be in [0, 0.5], got " +
-                                std::to_string(dead_band_rad));
+                                msgs::ShortestNumber(dead_band_rad));
   }
   if (counter_modulus != 0 && counter_modulus < 4) {
     throw std::invalid_argument("counter_modulus: must be 0 (no wrap) or >= 4, got " +

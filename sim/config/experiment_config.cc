@@ -2,7 +2,9 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -93,6 +95,10 @@ void ReadPlugins(YamlFields& top, const std::filesystem::path& base_dir, Experim
   }
 }
 
+constexpr double kMaxSimulationSteps = 1e8;
+// Below this a step bound failure is blamed on the timestep rather than the duration.
+constexpr double kMinTimestepS = 1e-4;
+
 void RequirePositiveFinite(const char* field, double value) {
   if (!std::isfinite(value) || value <= 0.0) {
     throw std::invalid_argument(std::string(field) + ": must be a finite number > 0, got " +
@@ -129,6 +135,7 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
     throw ConfigError(source, "", std::string("not valid YAML: ") + e.what());
   }
   if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  RejectDuplicateKeys(root, source);
   NormaliseAliases(root, source);
   for (const std::string& assignment : overrides) {
     if (!root.IsMap()) break;  // reported below as "expected a mapping"
@@ -141,6 +148,12 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   ReadPlugins(top, base_dir, config);
   config.name = std::filesystem::path(source).stem().string();
   top.Get("name", &config.name);
+  // The name becomes a folder under runs/: it must stay one folder there.
+  if (config.name.empty() || config.name.find_first_of("/\\") != std::string::npos ||
+      config.name == "." || config.name.find("..") != std::string::npos) {
+    top.Fail("name",
+             "must be a plain folder name (no '/', '\\' or '..'), got '" + config.name + "'");
+  }
   top.Get("seed", &config.seed);
   top.Get("protocol", &config.protocol);
   if (config.protocol != "single") {
@@ -174,6 +187,15 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   robot.Finish();
 
   ReadOptions(top.Child("physics"), config.physics);
+  // The work is bounded up front: a run of more steps would take days (and beyond 9.2e18 the step
+  // count no longer fits a long).
+  if (config.duration_s / config.physics.timestep_s > kMaxSimulationSteps) {
+    const bool step_is_odd = config.physics.timestep_s < kMinTimestepS;
+    top.Fail(step_is_odd ? "physics.timestep_s" : "duration_s",
+             "duration_s / physics.timestep_s = " +
+                 FormatNumber(std::ceil(config.duration_s / config.physics.timestep_s)) +
+                 " steps, more than the limit of " + FormatNumber(kMaxSimulationSteps));
+  }
   ReadControllerConfig(top.Child("controller"), config.nominal, config.controller);
   ReadSensorSuiteConfig(top.Child("sensors"), config.nominal, config.sensors);
   if (top.Has("odometry")) {
@@ -189,9 +211,17 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
 
 ExperimentConfig LoadExperimentConfig(const std::filesystem::path& yaml_path,
                                       const std::vector<std::string>& overrides) {
-  std::ifstream in(yaml_path, std::ios::binary);
-  if (!std::filesystem::is_regular_file(yaml_path) || !in) {
+  std::error_code error;
+  if (!std::filesystem::exists(yaml_path, error)) {
     throw ConfigError(yaml_path.string(), "", "no such experiment file");
+  }
+  if (!std::filesystem::is_regular_file(yaml_path, error)) {
+    throw ConfigError(yaml_path.string(), "", "not a regular file (a folder?)");
+  }
+  std::ifstream in(yaml_path, std::ios::binary);
+  if (!in) {
+    throw ConfigError(yaml_path.string(), "",
+                      std::string("cannot read the experiment file: ") + std::strerror(errno));
   }
   std::stringstream text;
   text << in.rdbuf();

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <set>
 #include <sstream>
 
 #include "perception/logs/parse_number.h"
@@ -174,6 +175,27 @@ void YamlFields::Finish() const {
     std::string known;
     for (const std::string& k : known_) known += (known.empty() ? "" : ", ") + k;
     Fail(key, "unknown key" + (known.empty() ? std::string() : " (known here: " + known + ")"));
+  }
+}
+
+void RejectDuplicateKeys(const YAML::Node& node, const std::string& file, const std::string& path) {
+  const auto child_path = [&](const std::string& key) {
+    return path.empty() ? key : path + "." + key;
+  };
+  if (node.IsMap()) {
+    std::set<std::string> seen;
+    for (const auto& entry : node) {
+      const std::string key = entry.first.IsScalar() ? entry.first.Scalar() : "";
+      if (!seen.insert(key).second) {
+        throw ConfigError(file, child_path(key),
+                          "duplicate key (YAML would silently keep only the first)");
+      }
+      RejectDuplicateKeys(entry.second, file, child_path(key));
+    }
+  } else if (node.IsSequence()) {
+    for (std::size_t i = 0; i < node.size(); ++i) {
+      RejectDuplicateKeys(node[i], file, path + "[" + std::to_string(i) + "]");
+    }
   }
 }
 

@@ -72,6 +72,10 @@ class YamlFields {
   mutable std::set<std::string> known_;  // every key asked for, to list in "unknown key" errors
 };
 
+// @throws ConfigError naming the first key that appears twice in one mapping of `node`.
+void RejectDuplicateKeys(const YAML::Node& node, const std::string& file,
+                         const std::string& path = "");
+
 // Applies a command-line override "a.b.c=value" to a YAML tree, creating mappings on the way.
 // The value is parsed as YAML, so numbers, booleans, lists and strings all work.
 // @throws ConfigError naming `source` (e.g. "--set") when the override is malformed.

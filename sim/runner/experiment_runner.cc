@@ -16,6 +16,7 @@
 #include "sim/raycast/grid_ray_caster_2d.h"
 #include "sim/sensors/sensor_schedule.h"
 #include "sim/world/physical_deviation.h"
+#include "sim/world/setup_checks.h"
 
 namespace plywood::sim {
 namespace {
@@ -61,6 +62,25 @@ int HitSegment(const GroundTruthWalls& walls, const std::vector<int>& candidates
     }
   }
   return best;
+}
+
+// A controller that steers by a sensor the experiment turned off would stand still (or drive
+// blind) and still report numbers.
+void RequireControllerSensors(const ExperimentConfig& config) {
+  const ControllerConfig& c = config.controller;
+  const SensorSuiteConfig& s = config.sensors;
+  const auto need = [&](bool present, const std::string& field, const std::string& sensor) {
+    if (!present) {
+      throw ConfigError(config.source_file, field,
+                        "this controller needs sensors." + sensor + ", which is off");
+    }
+  };
+  if (c.type == "wall_following") {
+    const bool laser = c.wall_following.sensor == robot::WallSensor::kLaser;
+    need(laser ? s.laser.has_value() : s.sonar.has_value(), "controller.sensor",
+         laser ? "laser" : "sonar");
+  }
+  if (c.type == "sonar_explorer") need(s.sonar.has_value(), "controller.type", "sonar");
 }
 
 }  // namespace
@@ -113,6 +133,18 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
     as_modelled.track_m = built.track_m;
     scene_->SetWheelGeometry(DeviatedWheelGeometry(as_modelled, config.deviation));
   }
+
+  // A scene that cannot give meaningful results is refused before anything runs.
+  if (const auto problem = MissingFloor(*scene_)) {
+    throw ConfigError(config.source_file, "world", config.world_path.string() + ": " + *problem);
+  }
+  for (const auto& check : {SpawnOutsideWorld, SpawnCollision}) {
+    if (const auto problem = check(*scene_)) {
+      throw ConfigError(config.source_file, "robot.spawn",
+                        *problem + " in " + config.world_path.filename().string());
+    }
+  }
+  RequireControllerSensors(config);
 
   Parts& p = *parts_;
   p.caster = std::make_unique<GridRayCaster2D>(scene_->model(), scene_->data());

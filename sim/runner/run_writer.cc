@@ -97,9 +97,16 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
   }
   if (config.sensors.laser && config.output.sensor_logs) {
     OutputFile log(dir, "laser.log", &written);
-    log.out()
-        << "# Plywood simulated laser log, CARMEN FLASER format: x y theta is the true laser\n"
-           "# pose, odom_x odom_y odom_theta the encoder-odometry laser pose.\n";
+    if (record.laser.empty() || perception::IsFlaserScan(record.laser.front().scan)) {
+      log.out()
+          << "# Plywood simulated laser log, CARMEN FLASER format: x y theta is the true laser\n"
+             "# pose, odom_x odom_y odom_theta the encoder-odometry laser pose.\n";
+    } else {
+      // FLASER would spread these beams over 180 deg: ROBOTLASER1 says where they point.
+      log.out() << "# Plywood simulated laser log, CARMEN ROBOTLASER1 format (the fov is not 180\n"
+                   "# deg): laser_pose is the true laser pose, robot_pose the encoder-odometry\n"
+                   "# laser pose.\n";
+    }
     if (!record.laser.empty()) {
       perception::WriteCarmenParam(log.out(), "front_laser_max",
                                    N(record.laser.front().scan.range_max_m));

@@ -1,0 +1,93 @@
+#include "sim/world/setup_checks.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "msgs/shortest_number.h"
+
+namespace plywood::sim {
+namespace {
+
+// MuJoCo resolves a contact deeper than this by pushing the bodies apart; shallower ones are
+// resting contact within its solver's tolerance.
+constexpr double kPenetrationToleranceM = 1e-3;
+
+bool IsStaticWorldGeom(const Scene& scene, int geom) {
+  const mjModel* m = scene.model();
+  return !scene.IsRobotGeom(geom) && m->body_weldid[m->geom_bodyid[geom]] == 0;
+}
+
+std::string GeomName(const mjModel* m, int geom) {
+  const char* name = mj_id2name(m, mjOBJ_GEOM, geom);
+  return name ? "geom '" + std::string(name) + "'" : "geom #" + std::to_string(geom);
+}
+
+// Metres to the millimetre, for messages.
+std::string Mm(double metres) { return msgs::ShortestNumber(std::round(metres * 1000.0) / 1000.0); }
+
+std::string At(const msgs::Pose2D& pose) {
+  return "(" + msgs::ShortestNumber(pose.x_m) + ", " + msgs::ShortestNumber(pose.y_m) + ")";
+}
+
+}  // namespace
+
+std::optional<std::string> MissingFloor(const Scene& scene) {
+  const mjModel* m = scene.model();
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (m->geom_type[g] == mjGEOM_PLANE && IsStaticWorldGeom(scene, g)) return std::nullopt;
+  }
+  return "the world has no floor (a static plane geom the wheels can stand on)";
+}
+
+std::optional<std::string> SpawnCollision(const Scene& scene) {
+  const mjModel* m = scene.model();
+  const mjData* d = scene.data();
+  for (int i = 0; i < d->ncon; ++i) {
+    const mjContact& c = d->contact[i];
+    if (!(c.dist < -kPenetrationToleranceM)) continue;
+    const bool robot1 = scene.IsRobotGeom(c.geom1), robot2 = scene.IsRobotGeom(c.geom2);
+    if (robot1 == robot2) continue;
+    const int world_geom = robot1 ? c.geom2 : c.geom1;
+    const int robot_geom = robot1 ? c.geom1 : c.geom2;
+    if (m->geom_type[world_geom] == mjGEOM_PLANE) continue;  // the wheels stand on the floor
+    return "the robot at " + At(scene.TruePose()) + " overlaps " + GeomName(m, world_geom) +
+           " of the world by " + msgs::ShortestNumber(std::round(-c.dist * 1000.0)) + " mm (its " +
+           GeomName(m, robot_geom) + "); choose a free spawn";
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> SpawnOutsideWorld(const Scene& scene) {
+  const mjModel* m = scene.model();
+  const mjData* d = scene.data();
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  double lo[2] = {kInf, kInf}, hi[2] = {-kInf, -kInf};
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (!IsStaticWorldGeom(scene, g) || m->geom_type[g] == mjGEOM_PLANE) continue;
+    const mjtNum* p = d->geom_xpos + 3 * g;
+    const mjtNum* r = d->geom_xmat + 9 * g;  // row-major
+    const mjtNum* size = m->geom_size + 3 * g;
+    for (int axis = 0; axis < 2; ++axis) {
+      // A box's exact extent along the world axis; anything else within its bounding sphere.
+      const double half = m->geom_type[g] == mjGEOM_BOX ? std::abs(r[3 * axis]) * size[0] +
+                                                              std::abs(r[3 * axis + 1]) * size[1] +
+                                                              std::abs(r[3 * axis + 2]) * size[2]
+                                                        : m->geom_rbound[g];
+      lo[axis] = std::min(lo[axis], p[axis] - half);
+      hi[axis] = std::max(hi[axis], p[axis] + half);
+    }
+  }
+  if (!(lo[0] <= hi[0])) return std::nullopt;  // nothing but a floor
+  const msgs::Pose2D spawn = scene.TruePose();
+  const double xy[2] = {spawn.x_m, spawn.y_m};
+  for (int axis = 0; axis < 2; ++axis) {
+    if (!(xy[axis] >= lo[axis] && xy[axis] <= hi[axis])) {
+      return "the robot at " + At(spawn) + " is outside every room: the world's walls span x in [" +
+             Mm(lo[0]) + ", " + Mm(hi[0]) + "], y in [" + Mm(lo[1]) + ", " + Mm(hi[1]) + "]";
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace plywood::sim

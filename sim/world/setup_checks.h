@@ -1,0 +1,27 @@
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "sim/world/scene.h"
+
+namespace plywood::sim {
+
+// What makes a compiled scene unfit to simulate, checked after compilation and before the first
+// step. Each returns a description of the problem (for a one-line error), or nullopt when fine.
+
+// The world has no plane geom for the wheels to stand on.
+std::optional<std::string> MissingFloor(const Scene& scene);
+
+// The robot, at its spawn pose, overlaps the world's static geometry (a wall, an obstacle) by more
+// than a millimetre. Uses MuJoCo's own contacts from the scene's mj_forward: they test the robot's
+// real collision geoms (the bumper ring's convex hull, wheels, caster, chassis) with the same
+// narrow phase the simulation uses, so "free" means the first step will not push the robot away;
+// a 2-D disc test would refuse legitimate spawns near a wall that only the disc touches.
+std::optional<std::string> SpawnCollision(const Scene& scene);
+
+// The spawn lies outside the horizontal bounding box of the world's static geometry (floor
+// excepted): outside every room. A world of nothing but a floor has no outside.
+std::optional<std::string> SpawnOutsideWorld(const Scene& scene);
+
+}  // namespace plywood::sim
