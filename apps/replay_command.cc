@@ -58,8 +58,8 @@ Command AddReplayCommand(CLI::App& app) {
       ->type_name("DIR")
       ->default_str("runs/replay-LOGFILE-EXTRACTOR");
   cli->add_flag("--force", request->force,
-                "replace an earlier run in --out (a directory with config.yaml); other files are "
-                "never deleted");
+                "replace an earlier run in --out (a directory with its config.yaml and "
+                "metrics.json); refused if it holds any file a run does not write");
   cli->footer(
       "Example:\n"
       "  plywood replay ../shared/data/carmen/intel-corrected.log.gz --extractor split_and_merge "

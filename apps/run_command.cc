@@ -42,8 +42,8 @@ Command AddRunCommand(CLI::App& app) {
   cli->add_flag("--no-snapshot", flags->no_snapshot,
                 "write no pictures (as output.snapshot: false)");
   cli->add_flag("--force", flags->force,
-                "replace an earlier run in --out (a directory with config.yaml); other files are "
-                "never deleted");
+                "replace an earlier run in --out (a directory with its config.yaml and "
+                "metrics.json); refused if it holds any file a run does not write");
   cli->footer(
       "Examples:\n"
       "  plywood run experiments/default.yaml\n"

@@ -2,7 +2,6 @@
 //               [--resolution M --origin X,Y [--threshold P]]
 
 #include <cstdio>
-#include <fstream>
 #include <memory>
 #include <stdexcept>
 
@@ -102,10 +101,7 @@ Command AddScoreCommand(CLI::App& app) {
             }
             std::fputs(report.table.c_str(), stdout);
             if (!flags->out.empty()) {
-              std::ofstream json(flags->out, std::ios::binary);
-              json << report.metrics.ToJson();
-              json.flush();
-              if (!json) throw std::runtime_error(flags->out + ": cannot write");
+              eval::WriteScoreJson(report, flags->out, flags->run_dir, flags->file);
               std::printf("%-18s %s\n", "results", flags->out.c_str());
             }
             return 0;

@@ -203,3 +203,29 @@ TEST(ScoreCliTest, MissingRunFilesAndOtherProtocolsAreNamed) {
 
 }  // namespace
 }  // namespace plywood
+
+namespace plywood {
+namespace {
+
+TEST(ScoreCliTest, OutNeverOverwritesTheRunOrTheScoredFile) {
+  const fs::path dir = testing::MakeTempDir("score_cli_out");
+  const fs::path tum = RunDir() / "trajectory.encoder.tum";
+  const std::string metrics_before = Slurp(RunDir() / "metrics.json");
+  const std::string tum_before = Slurp(tum);
+  for (const fs::path& out : {RunDir() / "metrics.json", tum, RunDir() / "sub" / "x.json"}) {
+    SCOPED_TRACE(out.string());
+    const auto r = RunPlywood(
+        "score trajectory " + RunDir().string() + " " + tum.string() + " --out " + out.string(),
+        dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
+  }
+  const auto folder = RunPlywood(
+      "score trajectory " + RunDir().string() + " " + tum.string() + " --out " + dir.string(), dir);
+  EXPECT_EQ(folder.exit_code, 2) << folder.err;
+  EXPECT_EQ(Slurp(RunDir() / "metrics.json"), metrics_before);
+  EXPECT_EQ(Slurp(tum), tum_before);
+}
+
+}  // namespace
+}  // namespace plywood

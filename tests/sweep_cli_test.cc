@@ -140,6 +140,11 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
             "physics.timestep_s]\n",
         "zip"}},
       {"broken_yaml", {"experiment: [unclosed\n", "not valid YAML"}},
+      {"repeated_seed", {"experiment: " + experiment + "\nseeds: [1, 2, 1]\n", "seeds"}},
+      {"repeated_axis_key",
+       {"experiment: " + experiment + "\nset:\n  duration_s: [2]\n  duration_s: [3]\n",
+        "duration_s"}},
+      {"bad_name", {"experiment: " + experiment + "\nname: ../../escape\n", "name"}},
   };
   for (const auto& [name, c] : cases) {
     SCOPED_TRACE(name);
@@ -271,6 +276,51 @@ TEST(SweepCliTest, ASecondSweepIntoARunningOnesDirectoryIsRefused) {
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 0);  // the first one finished undisturbed
   EXPECT_EQ(CountRunDirs(out), 6);
+}
+
+TEST(SweepCliTest, GeneratedWorldsGiveTheSameResultsWhereverTheSweepFolderIs) {
+  const fs::path dir = MakeTempDir("SweepMoved");
+  const fs::path sweep = WriteFile(
+      dir / "gen.yaml", "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
+                            "\nseeds: [1]\nworlds: {family: room, count: 2, seed: 5}\n"
+                            "set: {duration_s: [2], output.snapshot: [false]}\n");
+  for (const char* out : {"a", "elsewhere/b"}) {
+    const auto r =
+        RunPlywood("sweep " + sweep.string() + " --out " + (dir / out).string() + " --quiet", dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  const std::string a = Slurp(dir / "a" / "results.csv");
+  EXPECT_EQ(eval::ParseCsv(a).size(), 3u);
+  EXPECT_NE(a.find("worlds/room-seed5/"), std::string::npos) << a;
+  EXPECT_EQ(a, Slurp(dir / "elsewhere" / "b" / "results.csv"));
+  // The folder moved as a whole resumes with nothing to do.
+  fs::rename(dir / "a", dir / "moved");
+  const auto again =
+      RunPlywood("sweep " + sweep.string() + " --out " + (dir / "moved").string(), dir);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(Slurp(dir / "moved" / "results.csv"), a);
+}
+
+TEST(SweepCliTest, UnsafeOrUnclearOutputsAreRefused) {
+  const fs::path dir = MakeTempDir("SweepOutputs");
+  const fs::path sweep = WriteFile(dir / "small.yaml", SmallSweep());
+  // A folder of somebody's files is not a sweep folder.
+  WriteFile(dir / "mine" / "thesis.tex", "x\n");
+  auto r = RunPlywood("sweep " + sweep.string() + " --out " + (dir / "mine").string(), dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("not a sweep"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "mine" / "runs"));
+  // A metric nobody reports is a typo: the runs are kept, the sweep says so and exits 2.
+  std::string typo_text = SmallSweep();
+  typo_text.replace(typo_text.find("truth.distance_m"), std::string("truth.distance_m").size(),
+                    "truth.distanse_m");
+  const fs::path typo = WriteFile(dir / "typo.yaml", typo_text);
+  r = RunPlywood("sweep " + typo.string() + " --out " + (dir / "typo").string() + " --quiet", dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("metrics: 'truth.distanse_m' is in no run's metrics.json"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(CountRunDirs(dir / "typo"), 6);
 }
 
 TEST(SweepCliTest, ADifferentSweepIntoTheSameDirectoryIsRefused) {

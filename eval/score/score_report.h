@@ -1,5 +1,6 @@
 #pragma once
 
+#include <filesystem>
 #include <string>
 
 #include "sim/runner/metrics.h"
@@ -12,6 +13,12 @@ struct ScoreReport {
   sim::Metrics metrics;
   std::string table;
 };
+
+// Writes report.metrics as JSON to `out` (`plywood score --out`). Refuses (sim::ConfigError, one
+// line) a target inside the scored run's folder or equal to the scored file, so a score never
+// overwrites what it scored, and reports a target it cannot write the same way.
+void WriteScoreJson(const ScoreReport& report, const std::filesystem::path& out,
+                    const std::filesystem::path& run_dir, const std::filesystem::path& scored);
 
 // Whether `name` can be one part of a dotted metrics key: not empty, no dot, no white space, no
 // comma or quote (it also goes into CSV and JSON).

@@ -29,8 +29,13 @@ void Plot(const fs::path& out_dir, bool quiet) {
       std::fprintf(stderr, "plywood sweep: no plots (python3-matplotlib not installed)\n");
     return;
   }
-  const std::string command = "/usr/bin/python3 '" + script.string() + "' '" + out_dir.string() +
-                              "'" + (quiet ? " >/dev/null" : "");
+  const auto quote = [](const std::string& text) {  // single quotes for the shell
+    std::string quoted = "'";
+    for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
+  };
+  const std::string command = "/usr/bin/python3 " + quote(script.string()) + " " +
+                              quote(out_dir.string()) + (quiet ? " >/dev/null" : "");
   if (std::system(command.c_str()) != 0 && !quiet) {
     std::fprintf(stderr, "plywood sweep: plotting failed (see above)\n");
   }
@@ -51,6 +56,7 @@ int Collect(const fs::path& out_dir, bool quiet) {
 
 std::vector<SweepCell> Cells(const SweepSpec& spec, const SweepLayout& layout) {
   if (auto cells = ReadSweepManifest(spec, layout)) return *cells;
+  CheckSweepOverrides(spec);  // before generating worlds: bad input leaves nothing behind
   const std::vector<SweepWorld> worlds = PrepareSweepWorlds(spec, layout.out);
   std::vector<SweepCell> cells = ExpandCells(spec, worlds);
   WriteSweepManifest(spec, cells, layout);
@@ -64,6 +70,8 @@ int RunSweep(const SweepInvocation& invocation) {
   const fs::path out =
       invocation.out.empty() ? fs::path("runs") / "sweeps" / spec.name : invocation.out;
   const SweepLayout layout{out};
+  PrepareSweepFolder(spec, out);
+  const SweepFolderLock lock(out, invocation.shard_index, invocation.shard_count, invocation.quiet);
   const std::vector<SweepCell> cells = Cells(spec, layout);
   if (!invocation.quiet && invocation.shard_count == 1) {
     std::fprintf(stderr, "plywood sweep: %s: %zu runs into %s\n", spec.name.c_str(), cells.size(),
@@ -97,8 +105,7 @@ int RunSweep(const SweepInvocation& invocation) {
     fs::remove_all(many.out);
     const SweepRunOutcome a = RunSweepCells(cells, one, serial);
     const SweepRunOutcome b = RunSweepCells(cells, many, parallel);
-    const int jobs =
-        options.jobs > 0 ? options.jobs : static_cast<int>(sysconf(_SC_NPROCESSORS_ONLN));
+    const int jobs = options.jobs > 0 ? options.jobs : UsableCores();
     std::printf("sweep bench: %d runs of %s\n", a.ran, spec.name.c_str());
     std::printf("%-14s %8.3f runs/s (%.1f s)\n", "--jobs 1", a.RunsPerSecond(), a.wall_s);
     std::printf("%-14s %8.3f runs/s (%.1f s)\n", ("--jobs " + std::to_string(jobs)).c_str(),
@@ -108,7 +115,8 @@ int RunSweep(const SweepInvocation& invocation) {
     return a.failed + b.failed > 0 ? 1 : 0;
   }
   const SweepRunOutcome outcome = RunSweepCells(cells, layout, options);
-  if (!invocation.collect) return outcome.failed > 0 ? 1 : 0;
+  // A shard sees only its cells; the others' are collected once every shard is done.
+  if (!invocation.collect || invocation.shard_count > 1) return outcome.failed > 0 ? 1 : 0;
   const int collected = Collect(out, invocation.quiet);
   return outcome.failed > 0 ? 1 : collected;
 }

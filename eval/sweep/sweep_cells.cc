@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <map>
+#include <sstream>
 
 #include "sim/config/config_error.h"
 #include "sim/config/experiment_config.h"
@@ -88,9 +90,48 @@ std::string CulpritField(const SweepSpec& spec, const SweepCell& cell,
   for (std::size_t a = 0; a < spec.axes.size(); ++a) {
     if (fails({spec.axes[a].key + "=" + cell.values[a]})) return "set." + spec.axes[a].key;
   }
-  if (!cell.world.empty() && fails({"world=" + cell.world})) return "worlds";
+  if (!cell.world.empty() && fails({cell.overrides.front()})) return "worlds";
   if (!profile_lines.empty() && fails(profile_lines)) return "profiles (" + cell.profile + ")";
   return "experiment";
+}
+
+// The resolved config with the world named by its contents rather than its path: a cell's id is
+// the same wherever the sweep folder (and the worlds generated into it) lies.
+std::string IdentityText(const sim::ExperimentConfig& config) {
+  std::string text = sim::ExperimentConfigToYaml(config);
+  std::ifstream in(config.world_path, std::ios::binary);
+  std::stringstream world;
+  world << in.rdbuf();
+  const std::string world_id = "world-content-" + StableHash(world.str());
+  for (const std::string& path : {config.world_path.string(), config.world}) {
+    if (path.empty()) continue;
+    for (std::size_t at = text.find(path); at != std::string::npos;
+         at = text.find(path, at + world_id.size())) {
+      text.replace(at, path.size(), world_id);
+    }
+  }
+  return text;
+}
+
+template <typename T>
+bool HasRepeats(const std::vector<T>& items) {
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    for (std::size_t j = i + 1; j < items.size(); ++j) {
+      if (items[i] == items[j]) return true;
+    }
+  }
+  return false;
+}
+
+std::string RepeatedField(const SweepSpec& spec) {
+  if (HasRepeats(spec.seeds)) return "seeds";
+  if (HasRepeats(spec.experiments)) return "experiment";
+  if (HasRepeats(spec.world_files)) return "worlds";
+  if (HasRepeats(spec.profiles)) return "profiles";
+  for (const auto& axis : spec.axes) {
+    if (HasRepeats(axis.values)) return "set." + axis.key;
+  }
+  return "set";  // values that resolve alike (0.5 and 0.50), or worlds with the same contents
 }
 
 }  // namespace
@@ -126,6 +167,23 @@ std::vector<std::string> ReadProfile(const std::filesystem::path& path) {
   return lines;
 }
 
+void CheckSweepOverrides(const SweepSpec& spec) {
+  for (const auto& experiment : spec.experiments) {
+    const auto check = [&](const std::vector<std::string>& overrides, const std::string& field) {
+      try {
+        sim::LoadExperimentConfig(experiment, overrides);
+      } catch (const sim::ConfigError& e) {
+        throw sim::ConfigError(spec.source_file, field, e.what());
+      }
+    };
+    check({}, "experiment");
+    for (const auto& profile : spec.profiles) check(ReadProfile(profile), "profiles");
+    for (const auto& axis : spec.axes) {
+      for (const auto& value : axis.values) check({axis.key + "=" + value}, "set." + axis.key);
+    }
+  }
+}
+
 std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<SweepWorld>& worlds) {
   std::vector<SweepWorld> world_axis = worlds;
   if (world_axis.empty()) world_axis.push_back({});  // the experiment's own world
@@ -135,9 +193,11 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
   const std::vector<std::vector<std::string>> combos = AxisCombinations(spec);
   const bool sets_spawn = SetsSpawn(spec);
   std::vector<SweepCell> cells;
+  std::map<std::string, int> ids;
   for (const auto& experiment : spec.experiments) {
     for (const SweepWorld& world : world_axis) {
       std::vector<std::string> world_overrides;
+      const std::string world_label = world.label.empty() ? world.path.string() : world.label;
       if (!world.path.empty()) {
         world_overrides.push_back("world=" + world.path.string());
         if (!sets_spawn) {
@@ -153,7 +213,7 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
             SweepCell cell;
             cell.index = static_cast<int>(cells.size());
             cell.experiment = experiment.string();
-            cell.world = world.path.string();
+            cell.world = world_label;
             cell.family = world.family;
             cell.profile = profile_name;
             cell.values = combo;
@@ -171,7 +231,18 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
                                      e.what());
             }
             cell.seed = config.seed;
-            cell.id = StableHash(sim::ExperimentConfigToYaml(config));
+            cell.id = StableHash(IdentityText(config));
+            if (const auto first = ids.find(cell.id); first != ids.end()) {
+              throw sim::ConfigError(spec.source_file, RepeatedField(spec),
+                                     "cell " + std::to_string(cell.index) + " repeats cell " +
+                                         std::to_string(first->second) +
+                                         " (the same resolved config): remove the repeat");
+            }
+            ids[cell.id] = cell.index;
+            if (!world.label.empty()) {
+              // Loaded from where the world is now; run from wherever the sweep folder will be.
+              cell.overrides[0] = std::string("world=") + kSweepFolderPrefix + world.label;
+            }
             cells.push_back(cell);
           }
         }

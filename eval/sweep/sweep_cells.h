@@ -24,9 +24,16 @@ struct SweepCell {
 
 // A world the sweep runs in, with the family it was drawn from (empty for files).
 struct SweepWorld {
-  std::filesystem::path path;
+  std::filesystem::path path;  // absolute
   std::string family;
+  // Generated worlds live in the sweep folder and are named relative to it ("worlds/room-seed1/
+  // room_s1_00000.xml"), so ids, cells and results do not depend on where the folder is.
+  std::string label;  // empty: the path itself
 };
+
+// A cell's world override for a world inside the sweep folder starts with this; the runner puts
+// the folder's absolute path in its place.
+inline constexpr const char* kSweepFolderPrefix = "@SWEEP/";
 
 // Every cell, in a fixed order: experiments outermost, then worlds, profiles, the set axes
 // (crossed; zipped axes advance together), and seeds innermost. A world axis places the robot at
@@ -35,6 +42,11 @@ struct SweepWorld {
 // sweep at once.
 // @throws sim::ConfigError naming the sweep file and the field.
 std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<SweepWorld>& worlds);
+
+// Checks every set value and profile against every base experiment on its own, so a key path the
+// experiment does not have fails before any world is generated or any run starts.
+// @throws sim::ConfigError naming the sweep file and the field.
+void CheckSweepOverrides(const SweepSpec& spec);
 
 // The --set lines of a profile file ('#' comments and blank lines skipped).
 // @throws sim::ConfigError naming the file and line.

@@ -195,6 +195,20 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
   }
   WriteText(out_dir / "results.csv", results);
   WriteText(out_dir / "failures.csv", failures_csv);
+  if (!finished.empty()) {
+    for (const std::string& metric : chosen) {
+      if (metric_keys.count(metric)) continue;
+      std::string near;  // keys sharing the first part, to show what exists
+      const std::string head = metric.substr(0, metric.find('.') + 1);
+      for (const auto& k : metric_keys) {
+        if (k.starts_with(head) && std::count(near.begin(), near.end(), ',') < 4)
+          near += (near.empty() ? "" : ", ") + k;
+      }
+      throw sim::ConfigError(meta.value("sweep_file", out_dir.string()), "metrics",
+                             "'" + metric + "' is in no run's metrics.json" +
+                                 (near.empty() ? std::string() : " (there are: " + near + ")"));
+    }
+  }
 
   // summary.csv: groups in order of first appearance.
   if (chosen.empty()) {

@@ -1,6 +1,7 @@
 #include "eval/sweep/sweep_runner.h"
 
 #include <fcntl.h>
+#include <sched.h>
 #include <signal.h>
 #include <sys/file.h>
 #include <sys/prctl.h>
@@ -13,6 +14,7 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -61,12 +63,17 @@ std::string ErrorLine(const fs::path& log) {
 
 // Starts `plywood run` for one cell with its output in `partial` and its stdout/stderr in `log`.
 pid_t StartRun(const SweepCell& cell, const fs::path& plywood, const fs::path& partial,
-               const fs::path& log) {
+               const fs::path& log, const fs::path& sweep_folder) {
   std::vector<std::string> args{plywood.string(), "run",    cell.experiment, "--out",
                                 partial.string(), "--quiet"};
+  const std::string world_in_sweep = std::string("world=") + kSweepFolderPrefix;
   for (const std::string& o : cell.overrides) {
     args.push_back("--set");
-    args.push_back(o);
+    args.push_back(o.starts_with(world_in_sweep)
+                       ? "world=" + (fs::absolute(sweep_folder) / o.substr(world_in_sweep.size()))
+                                        .lexically_normal()
+                                        .string()
+                       : o);
   }
   const pid_t parent = getpid();
   const pid_t pid = fork();
@@ -122,7 +129,78 @@ class Progress {
   double last_print_s_ = -1e9;
 };
 
+// The hash of every file the cells are made from, by path.
+std::map<std::string, std::string> InputHashes(const SweepSpec& spec) {
+  std::map<std::string, std::string> hashes;
+  for (const auto* files : {&spec.experiments, &spec.profiles, &spec.world_files}) {
+    for (const fs::path& file : *files) hashes[file.string()] = StableHash(ReadText(file));
+  }
+  return hashes;
+}
+
 }  // namespace
+
+SweepFolderLock::SweepFolderLock(const fs::path& out, int shard_index, int shard_count,
+                                 bool quiet) {
+  const auto take = [&](const fs::path& file, int how) {
+    const int fd = open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0) return;
+    fds_.push_back(fd);
+    if (flock(fd, how | LOCK_NB) == 0) return;
+    if (errno == EWOULDBLOCK) {
+      throw sim::ConfigError(out.string(), "",
+                             "another plywood sweep is running in this folder; wait for it or "
+                             "choose another --out");
+    }
+    // Some network file systems have no flock: run unlocked rather than not at all.
+    if (!quiet)
+      std::fprintf(stderr, "plywood sweep: cannot lock %s; running unlocked\n", file.c_str());
+  };
+  // A whole sweep excludes everything else; shards (Slurm tasks) share the folder but each shard
+  // runs once at a time.
+  take(out / "sweep.lock", shard_count > 1 ? LOCK_SH : LOCK_EX);
+  if (shard_count > 1) {
+    take(out / ("shard-" + std::to_string(shard_index) + "-of-" + std::to_string(shard_count) +
+                ".lock"),
+         LOCK_EX);
+  }
+}
+
+SweepFolderLock::~SweepFolderLock() {
+  for (int fd : fds_) close(fd);
+}
+
+void PrepareSweepFolder(const SweepSpec& spec, const fs::path& out) {
+  std::error_code error;
+  if (fs::exists(out, error)) {
+    if (!fs::is_directory(out)) {
+      throw sim::ConfigError(out.string(), "", "exists and is not a folder; choose another --out");
+    }
+    const fs::path copy = out / "sweep.yaml";
+    if (!fs::is_empty(out) && !fs::is_regular_file(copy)) {
+      throw sim::ConfigError(out.string(), "",
+                             "holds files that are not a sweep (no sweep.yaml); choose another "
+                             "--out");
+    }
+    if (fs::is_regular_file(copy) && ReadText(copy) != spec.text) {
+      throw sim::ConfigError(out.string(), "",
+                             "holds results of a different sweep (its sweep.yaml differs): choose "
+                             "another --out");
+    }
+    return;
+  }
+  fs::create_directories(out, error);
+  if (error) {
+    throw sim::ConfigError(out.string(), "", "cannot create the sweep folder: " + error.message());
+  }
+}
+
+int UsableCores() {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof(set), &set) == 0) return std::max(1, CPU_COUNT(&set));
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
 
 bool InShard(const SweepCell& cell, int shard_index, int shard_count) {
   return shard_count <= 1 || cell.index % shard_count == shard_index;
@@ -150,6 +228,7 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
   meta["metrics"] = spec.metrics;
   meta["group_by"] = spec.group_by;
   meta["cells"] = cells.size();
+  meta["inputs"] = InputHashes(spec);
 
   std::vector<std::string> header{"index",  "id",      "experiment", "world",
                                   "family", "profile", "seed"};
@@ -182,20 +261,7 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
 
 SweepRunOutcome RunSweepCells(const std::vector<SweepCell>& cells, const SweepLayout& layout,
                               const SweepRunOptions& options) {
-  // One process per shard at a time: two sweeps into the same directory would run cells twice
-  // and remove each other's partial runs. The lock goes with the process, however it ends.
-  fs::create_directories(layout.out);
-  const fs::path lock_file = layout.out / ("shard-" + std::to_string(options.shard_index) + "-of-" +
-                                           std::to_string(options.shard_count) + ".lock");
-  const int lock = open(lock_file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (lock < 0 || flock(lock, LOCK_EX | LOCK_NB) != 0) {
-    throw sim::ConfigError(layout.out.string(), "",
-                           "another plywood sweep is running in this directory (" +
-                               lock_file.filename().string() + ")");
-  }
-  const int jobs = options.jobs > 0
-                       ? options.jobs
-                       : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  const int jobs = options.jobs > 0 ? options.jobs : UsableCores();
   fs::create_directories(layout.out / "runs");
   fs::create_directories(layout.out / "logs");
   fs::create_directories(layout.out / "failures");
@@ -228,8 +294,10 @@ SweepRunOutcome RunSweepCells(const std::vector<SweepCell>& cells, const SweepLa
   while (next < todo.size() || !running.empty()) {
     while (next < todo.size() && static_cast<int>(running.size()) < jobs) {
       const SweepCell& cell = *todo[next++];
-      const fs::path partial = partial_root / (cell.id + "." + std::to_string(getpid()));
-      const pid_t pid = StartRun(cell, options.plywood, partial, layout.LogFile(cell.id));
+      const fs::path partial = partial_root / (cell.id + "." + std::to_string(cell.index) + "." +
+                                               std::to_string(getpid()));
+      const pid_t pid =
+          StartRun(cell, options.plywood, partial, layout.LogFile(cell.id), layout.out);
       running[pid] = {&cell, partial};
     }
     int status = 0;
@@ -261,7 +329,6 @@ SweepRunOutcome RunSweepCells(const std::vector<SweepCell>& cells, const SweepLa
   outcome.failed = failed;
   outcome.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
   progress.Report(done, failed, true);
-  close(lock);
   return outcome;
 }
 

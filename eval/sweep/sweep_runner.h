@@ -45,6 +45,9 @@ struct SweepRunOutcome {
   double RunsPerSecond() const { return wall_s > 0 ? ran / wall_s : 0.0; }
 };
 
+// The cores this process may run on (its CPU affinity: what a Slurm task or taskset gives it).
+int UsableCores();
+
 // Cells of shard I/N: those whose index % N == I. Shards partition the cells.
 bool InShard(const SweepCell& cell, int shard_index, int shard_count);
 
@@ -56,6 +59,24 @@ bool InShard(const SweepCell& cell, int shard_index, int shard_count);
 // and finishes only what is missing. Progress: done/total, failures, runs/s, ETA on stderr.
 SweepRunOutcome RunSweepCells(const std::vector<SweepCell>& cells, const SweepLayout& layout,
                               const SweepRunOptions& options);
+
+// Refuses (sim::ConfigError, before anything is written) an --out that is a file, a folder holding
+// anything but this very sweep, or a place that cannot be created; creates it otherwise.
+void PrepareSweepFolder(const SweepSpec& spec, const std::filesystem::path& out);
+
+// Held while a sweep (or one shard of it) works in OUT: a second process on the same folder is
+// refused with one line, so cells never run twice. A whole sweep locks the folder exclusively;
+// shards share it, each shard exclusive. Released when the process ends, however it ends.
+class SweepFolderLock {
+ public:
+  SweepFolderLock(const std::filesystem::path& out, int shard_index, int shard_count, bool quiet);
+  ~SweepFolderLock();
+  SweepFolderLock(const SweepFolderLock&) = delete;
+  SweepFolderLock& operator=(const SweepFolderLock&) = delete;
+
+ private:
+  std::vector<int> fds_;
+};
 
 // Writes OUT/sweep.yaml and OUT/cells.csv (the manifest that --collect and shards read). Refuses
 // (sim::ConfigError) when OUT holds a different sweep.

@@ -11,6 +11,7 @@
 #include "sim/config/config_error.h"
 #include "sim/config/robot_catalog.h"
 #include "sim/config/yaml_fields.h"
+#include "sim/world/generator/world_families.h"
 
 namespace plywood::eval {
 namespace {
@@ -106,6 +107,11 @@ GeneratedWorlds ReadFamily(const YAML::Node& node, const std::string& file,
   GeneratedWorlds generated;
   if (!family.Has("family")) top.Fail("worlds.family", "missing: name a world generator family");
   family.Get("family", &generated.family);
+  try {
+    sim::worldgen::FindWorldFamily(generated.family);
+  } catch (const std::invalid_argument& e) {
+    top.Fail("worlds.family", std::string(e.what()).substr(std::string("family: ").size()));
+  }
   if (!family.Has("count")) top.Fail("worlds.count", "missing: how many worlds to generate");
   int count = 0;
   family.Get("count", &count);
@@ -219,10 +225,19 @@ SweepSpec LoadSweepSpec(const fs::path& path) {
     throw sim::ConfigError(path.string(), "", std::string("not valid YAML: ") + e.what());
   }
   if (!root.IsMap()) throw sim::ConfigError(path.string(), "", "expected a mapping");
+  sim::RejectDuplicateKeys(root, spec.source_file);  // a repeated axis would silently win
   const fs::path base_dir = fs::absolute(path).parent_path();
   sim::YamlFields top(root, spec.source_file, "");
   spec.name = path.stem().string();
   top.Get("name", &spec.name);
+  // The name becomes runs/sweeps/NAME: one plain folder.
+  if (spec.name.empty() || spec.name.front() == '.' ||
+      spec.name.find_first_not_of(
+          "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.-") !=
+          std::string::npos) {
+    top.Fail("name", "must be a plain folder name (letters, digits, '_', '.', '-'), got '" +
+                         spec.name + "'");
+  }
   if (!top.Has("experiment")) top.Fail("experiment", "missing: name the base experiment");
   spec.experiments = ReadFiles(top.Raw("experiment"), base_dir, top, "experiment");
   if (top.Has("profiles"))

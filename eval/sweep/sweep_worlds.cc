@@ -32,8 +32,8 @@ std::vector<SweepWorld> Generated(const SweepSpec& spec, const GeneratedWorlds& 
     throw sim::ConfigError(spec.source_file, "worlds.family",
                            std::string(e.what()).substr(std::string("family: ").size()));
   }
-  const fs::path dir = out_dir / "worlds" /
-                       (generated.family + "-seed" + std::to_string(generated.seed));
+  const fs::path dir =
+      out_dir / "worlds" / (generated.family + "-seed" + std::to_string(generated.seed));
   if (IndexRows(dir / "index.csv") < generated.count) {
     const fs::path partial = dir.string() + ".partial-" + std::to_string(getpid());
     fs::remove_all(partial);
@@ -58,7 +58,9 @@ std::vector<SweepWorld> Generated(const SweepSpec& spec, const GeneratedWorlds& 
   std::getline(index, line);  // header
   while (static_cast<int>(worlds.size()) < generated.count && std::getline(index, line)) {
     const std::string file = line.substr(0, line.find(','));
-    worlds.push_back({fs::absolute(dir / file).lexically_normal(), generated.family});
+    const fs::path relative = fs::path("worlds") / dir.filename() / file;
+    worlds.push_back(
+        {fs::absolute(dir / file).lexically_normal(), generated.family, relative.string()});
   }
   if (static_cast<int>(worlds.size()) < generated.count) {
     throw std::runtime_error((dir / "index.csv").string() + ": fewer worlds than generated");

@@ -24,7 +24,9 @@ TEST(RunDirectoryTest, AbsentOrEmptyDirectoriesAreReadyAsTheyAre) {
 TEST(RunDirectoryTest, AnEarlierRunIsReplacedOnlyWithForce) {
   const fs::path dir = MakeTempDir("run_directory_earlier");
   WriteFile(dir / "config.yaml", "name: small\nseed: 1\n");
-  WriteFile(dir / "stale.csv", "1,2\n");
+  WriteFile(dir / "metrics.json", "{}\n");
+  WriteFile(dir / "laser_hits.csv", "1,2\n");  // an earlier run's file the new one may not write
+  WriteFile(dir / "trajectory.ekf.tum", "0 0 0 0 0 0 0 1\n");
   WriteFile(dir / "before" / "cw_1" / "metrics.json", "{}\n");
   EXPECT_TRUE(HoldsPlywoodRun(dir));
   try {
@@ -35,10 +37,34 @@ TEST(RunDirectoryTest, AnEarlierRunIsReplacedOnlyWithForce) {
               std::string::npos)
         << e.what();
   }
-  EXPECT_TRUE(fs::exists(dir / "stale.csv"));
+  EXPECT_TRUE(fs::exists(dir / "laser_hits.csv"));
   PrepareRunDirectory(dir, true);
   EXPECT_TRUE(fs::is_directory(dir));
   EXPECT_TRUE(fs::is_empty(dir));
+}
+
+TEST(RunDirectoryTest, ForceRefusesARunFolderThatAlsoHoldsAUsersFiles) {
+  const fs::path dir = MakeTempDir("run_directory_mixed");
+  // An experiment file named config.yaml beside the user's own work (the reviewer's case), and a
+  // run directory the user put an estimate and notes into.
+  WriteFile(dir / "proj" / "config.yaml", "name: mine\nseed: 1\n");
+  WriteFile(dir / "proj" / "thesis.tex", "x\n");
+  EXPECT_FALSE(HoldsPlywoodRun(dir / "proj"));  // no metrics.json: not a run
+  EXPECT_THROW(PrepareRunDirectory(dir / "proj", true), ConfigError);
+  WriteFile(dir / "run" / "config.yaml", "name: small\nseed: 1\n");
+  WriteFile(dir / "run" / "metrics.json", "{}\n");
+  WriteFile(dir / "run" / "my_estimate.tum", "0 0 0 0 0 0 0 1\n");
+  WriteFile(dir / "run" / "notes" / "todo.txt", "score it\n");
+  try {
+    PrepareRunDirectory(dir / "run", true);
+    FAIL() << "a user's file would have been deleted";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("which no run writes"), std::string::npos) << e.what();
+  }
+  for (const char* kept : {"proj/config.yaml", "proj/thesis.tex", "run/my_estimate.tum",
+                           "run/notes/todo.txt", "run/metrics.json"}) {
+    EXPECT_TRUE(fs::exists(dir / kept)) << kept;
+  }
 }
 
 TEST(RunDirectoryTest, OtherFilesAreNeverDeletedEvenWithForce) {
