@@ -174,7 +174,7 @@ TEST(CliOutputDirectoryTest, AnEarlierRunIsReplacedOnlyWithForceAndNothingStaleS
   const std::string run = "run " + experiment.string() + " --quiet --out " + out.string();
   ASSERT_EQ(RunPlywood(run, dir).exit_code, 0);
   // Something an earlier run (of another version, or another experiment) left behind.
-  WriteFile(out / "stale.csv", "t,x\n");
+  WriteFile(out / "laser_hits.csv", "t,x\n");
   const std::string first_metrics = Slurp(out / "metrics.json");
   ASSERT_FALSE(first_metrics.empty());
 
@@ -183,12 +183,12 @@ TEST(CliOutputDirectoryTest, AnEarlierRunIsReplacedOnlyWithForceAndNothingStaleS
   EXPECT_TRUE(IsOneLine(refused.err)) << refused.err;
   EXPECT_NE(refused.err.find(out.string()), std::string::npos) << refused.err;
   EXPECT_NE(refused.err.find("--force"), std::string::npos) << refused.err;
-  EXPECT_TRUE(fs::exists(out / "stale.csv"));
+  EXPECT_TRUE(fs::exists(out / "laser_hits.csv"));
   EXPECT_EQ(Slurp(out / "metrics.json"), first_metrics) << "a refused run wrote results";
 
   const CliResult forced = RunPlywood(run + " --set duration_s=2 --force", dir);
   ASSERT_EQ(forced.exit_code, 0) << forced.err;
-  EXPECT_FALSE(fs::exists(out / "stale.csv")) << "a file of the earlier run survived";
+  EXPECT_FALSE(fs::exists(out / "laser_hits.csv")) << "a file of the earlier run survived";
   EXPECT_TRUE(fs::exists(out / "config.yaml"));
   EXPECT_NE(Slurp(out / "metrics.json"), first_metrics);
   EXPECT_NE(Slurp(out / "config.yaml").find("duration_s: 2"), std::string::npos);
