@@ -78,7 +78,8 @@ TEST(SweepCliTest, RunsEveryCellAndTabulatesThem) {
   const auto summary = eval::ParseCsv(Slurp(dir / "out" / "summary.csv"));
   ASSERT_EQ(summary.size(), 3u);
   EXPECT_EQ(summary[1][0], "3");
-  EXPECT_EQ(summary[1][3], "3");  // n
+  EXPECT_EQ(summary[0][1], "metric");  // output.snapshot has one value: it splits nothing
+  EXPECT_EQ(summary[1][2], "3");       // n
   EXPECT_NE(r.out.find("truth.distance_m"), std::string::npos);
 
   // A single cell reproduces `plywood run` with the same config and seed, byte for byte.

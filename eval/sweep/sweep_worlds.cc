@@ -72,7 +72,7 @@ std::vector<SweepWorld> Generated(const SweepSpec& spec, const GeneratedWorlds& 
 
 std::vector<SweepWorld> PrepareSweepWorlds(const SweepSpec& spec, const fs::path& out_dir) {
   std::vector<SweepWorld> worlds;
-  for (const auto& path : spec.world_files) worlds.push_back({path, ""});
+  for (const auto& path : spec.world_files) worlds.push_back({path, "", ""});
   for (const auto& generated : spec.generated) {
     for (SweepWorld& w : Generated(spec, generated, out_dir)) worlds.push_back(std::move(w));
   }
