@@ -1,8 +1,9 @@
-// plywood bench [--seconds S] [--world PATH]
+// plywood bench [--seconds S] [--world PATH] [--repeats N] [--min-wall S]
 
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <utility>
 
 #include "apps/command.h"
 #include "eval/bench/bench_experiment.h"
@@ -10,22 +11,51 @@
 namespace plywood::apps {
 namespace {
 
-void PrintFigures(const eval::BenchFigures& f) {
-  std::printf("plywood bench: P3-DX, LMS 200 (361 beams @ 10 Hz) + 16 sonars @ 10 Hz, %s, 1 core\n",
-              f.world.filename().c_str());
-  std::printf("%-28s %10.1f s\n", "simulated", f.cost.simulated_s);
-  std::printf("%-28s %10.3f s\n", "wall", f.cost.wall_s);
-  std::printf("%-28s %10.0f x\n", "real-time factor", f.cost.RealTimeFactor());
-  std::printf("%-28s %10.0f\n", "rays per wall second", f.rays_per_wall_s);
-  std::printf("%-28s %10.3f us\n", "physics step (incl. sensors)", f.physics_step_us);
-  std::printf("%-28s %10.3f us  (%d geoms)\n", "mj_ray per ray", f.rays.mj_ray_us_per_ray,
+double UsPerStep(double seconds, long steps) { return steps > 0 ? 1e6 * seconds / steps : 0.0; }
+
+void PrintFigures(const eval::BenchFigures& f, const eval::BenchOptions& o) {
+  std::printf(
+      "plywood bench: P3-DX, LMS 200 (361 beams @ 10 Hz) + 16 sonars @ 10 Hz, wall following, 1 "
+      "core; each figure the fastest of %d repetitions of >= %.1f s wall\n",
+      o.repeats, o.min_wall_s);
+  const eval::WorldSpeed& w = f.itemised;
+  const sim::StepPartTimes& p = w.parts;
+  std::printf("%s: %.0f x real time, %.1f s simulated in %.3f s wall, %ld steps, %d geoms\n",
+              w.label.c_str(), w.cost.RealTimeFactor(), w.cost.simulated_s, w.cost.wall_s,
+              w.cost.steps, w.geoms);
+  std::printf("  per step (us):\n");
+  const double timed =
+      p.physics_s + p.laser_s + p.sonar_s + p.controller_s + p.recording_s + p.other_s;
+  const std::pair<const char*, double> parts[] = {{"physics (mj_step)", p.physics_s},
+                                                  {"laser", p.laser_s},
+                                                  {"sonar", p.sonar_s},
+                                                  {"controller", p.controller_s},
+                                                  {"recording", p.recording_s},
+                                                  {"encoders, gyro, estimators", p.other_s},
+                                                  {"untimed (loop, timers)", w.cost.wall_s - timed},
+                                                  {"total", w.cost.wall_s}};
+  for (const auto& [name, seconds] : parts) {
+    std::printf("    %-28s %8.2f\n", name, UsPerStep(seconds, w.cost.steps));
+  }
+  std::printf("  %-30s %8.0f\n", "rays per wall second", w.cost.rays / w.cost.wall_s);
+  std::printf("real-time factor (no part timers):\n");
+  for (const eval::WorldSpeed& s : f.worlds) {
+    std::printf("  %-28s %8.0f x  (%.2f us/step, %d geoms)\n", s.label.c_str(),
+                s.cost.RealTimeFactor(), UsPerStep(s.cost.wall_s, s.cost.steps), s.geoms);
+  }
+  std::printf("%-30s %8.3f us  (%d geoms)\n", "mj_ray per ray", f.rays.mj_ray_us_per_ray,
               f.rays.world_geoms);
-  std::printf("%-28s %10.3f us\n", "grid caster per ray", f.rays.grid_us_per_ray);
+  std::printf("%-30s %8.3f us\n", "grid caster per ray", f.rays.grid_us_per_ray);
   std::printf("line extraction, 361-beam scan (%zu points), 1 core:\n", f.lines.scan_points);
   for (const eval::LineExtractorSpeed& e : f.lines.extractors) {
-    std::printf("  %-26s %10.0f scans/s  (%.1f lines per scan)\n", e.name.c_str(), e.scans_per_s,
+    std::printf("  %-28s %8.0f scans/s  (%.1f lines per scan)\n", e.name.c_str(), e.scans_per_s,
                 e.lines_per_scan);
   }
+  std::printf(
+      "plywood run experiments/default.yaml: %.3f s wall for %.1f s simulated (%.0f x, "
+      "outputs and snapshot included)\n",
+      f.default_run_wall_s, f.default_run_simulated_s,
+      f.default_run_simulated_s / f.default_run_wall_s);
 }
 
 }  // namespace
@@ -35,19 +65,32 @@ Command AddBenchCommand(CLI::App& app) {
   CLI::App* cli = app.add_subcommand(
       "bench",
       "Print the real-time factor and ray throughput of a P3-DX with an LMS 200 and 16 sonars "
-      "wall-following on one core, and the speed of every line extractor (figures only)");
+      "wall-following on one core (per-part costs per step; hall, office and a 3x3 tiled office), "
+      "the "
+      "ray casters, every line extractor and a default plywood run (figures only)");
   cli->add_option("--seconds", options->seconds, "simulated seconds of wall following")
       ->type_name("S")
       ->capture_default_str();
   cli->add_option("--world", options->world, "MJCF room to run in")
       ->type_name("PATH")
       ->capture_default_str();
-  cli->footer("Example:\n  plywood bench --seconds 30 --world worlds/hall.xml");
+  cli->add_option("--repeats", options->repeats, "repetitions per figure; the fastest is printed")
+      ->type_name("N")
+      ->capture_default_str();
+  cli->add_option("--min-wall", options->min_wall_s,
+                  "wall seconds each repetition runs at least (whole runs of --seconds)")
+      ->type_name("S")
+      ->capture_default_str();
+  cli->footer("Example:\n  plywood bench --seconds 30 --world worlds/hall.xml --repeats 5");
   return {cli, [options] {
             if (!std::isfinite(options->seconds)) {
               throw UsageError("bench: --seconds: must be a finite number");
             }
-            PrintFigures(eval::RunBench(*options));
+            if (options->repeats < 1) throw UsageError("bench: --repeats: must be >= 1");
+            if (!(options->min_wall_s >= 0.0) || !std::isfinite(options->min_wall_s)) {
+              throw UsageError("bench: --min-wall: must be a finite number >= 0");
+            }
+            PrintFigures(eval::RunBench(*options), *options);
             return 0;
           }};
 }

@@ -7,11 +7,41 @@
 
 #if PLYWOOD_HAS_OSMESA
 #include <GL/osmesa.h>
+#include <dlfcn.h>
 #endif
 
 namespace plywood::render {
 
 #if PLYWOOD_HAS_OSMESA
+
+namespace {
+
+// OSMesa, opened on the first snapshot rather than linked: it pulls in libLLVM, whose loading
+// would otherwise add to the start of every process, snapshot or not. RTLD_GLOBAL so that
+// MuJoCo's GL loader finds it among the loaded libraries, as it did when linked.
+struct OsMesa {
+  decltype(&OSMesaCreateContextExt) create = nullptr;
+  decltype(&OSMesaMakeCurrent) make_current = nullptr;
+  decltype(&OSMesaDestroyContext) destroy = nullptr;
+};
+
+const OsMesa& LoadOsMesa() {
+  static const OsMesa loaded = [] {
+    OsMesa f;
+    void* library = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_GLOBAL);
+    if (library == nullptr) library = dlopen("libOSMesa.so", RTLD_NOW | RTLD_GLOBAL);
+    if (library == nullptr) return f;
+    f.create = reinterpret_cast<decltype(f.create)>(dlsym(library, "OSMesaCreateContextExt"));
+    f.make_current =
+        reinterpret_cast<decltype(f.make_current)>(dlsym(library, "OSMesaMakeCurrent"));
+    f.destroy = reinterpret_cast<decltype(f.destroy)>(dlsym(library, "OSMesaDestroyContext"));
+    if (!f.create || !f.make_current || !f.destroy) return OsMesa{};
+    return f;
+  }();
+  return loaded;
+}
+
+}  // namespace
 
 struct OffscreenContext::Impl {
   OSMesaContext context = nullptr;
@@ -24,8 +54,12 @@ OffscreenContext::OffscreenContext(int width, int height)
     throw std::invalid_argument("width, height: must be > 0, got " + std::to_string(width) + " x " +
                                 std::to_string(height));
   }
+  const OsMesa& osmesa = LoadOsMesa();
+  if (osmesa.create == nullptr) {
+    throw std::runtime_error("OSMesa: cannot load libOSMesa.so.8");
+  }
   // 24-bit depth and 8-bit stencil, as MuJoCo's renderer expects.
-  impl_->context = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, nullptr);
+  impl_->context = osmesa.create(OSMESA_RGBA, 24, 8, 0, nullptr);
   if (impl_->context == nullptr) {
     throw std::runtime_error("OSMesa: OSMesaCreateContextExt failed");
   }
@@ -33,17 +67,18 @@ OffscreenContext::OffscreenContext(int width, int height)
   try {
     MakeCurrent();
   } catch (...) {
-    OSMesaDestroyContext(impl_->context);
+    osmesa.destroy(impl_->context);
     throw;
   }
 }
 
 OffscreenContext::~OffscreenContext() {
-  if (impl_ && impl_->context != nullptr) OSMesaDestroyContext(impl_->context);
+  if (impl_ && impl_->context != nullptr) LoadOsMesa().destroy(impl_->context);
 }
 
 void OffscreenContext::MakeCurrent() {
-  if (!OSMesaMakeCurrent(impl_->context, impl_->buffer.data(), GL_UNSIGNED_BYTE, width_, height_)) {
+  if (!LoadOsMesa().make_current(impl_->context, impl_->buffer.data(), GL_UNSIGNED_BYTE, width_,
+                                 height_)) {
     throw std::runtime_error("OSMesa: OSMesaMakeCurrent failed");
   }
 }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include "render/bitmap_font.h"
 
@@ -22,26 +24,32 @@ double DistanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
   return (p - (a + t * ab)).norm();
 }
 
-// Per-pixel coverage of one shape, so overlapping pieces of it blend once.
+// Per-pixel coverage of one shape, so overlapping pieces of it blend once. The buffer covers only
+// the shape's pixel box (every pixel within `reach_px` of [lo, hi], clipped to the image): drawing
+// costs what the shape covers, not the whole image.
 class CoverageMask {
  public:
-  explicit CoverageMask(const RgbImage& image)
-      : width_(image.width),
-        height_(image.height),
-        coverage_(static_cast<std::size_t>(image.width) * image.height, 0.0f) {}
+  CoverageMask(const RgbImage& image, const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
+               double reach_px)
+      : width_(image.width), height_(image.height) {
+    const PixelBox box = BoxNear(lo, hi, reach_px);
+    x0_ = box.x0;
+    y0_ = box.y0;
+    stride_ = std::max(0, box.x1 - box.x0 + 1);
+    const int rows = std::max(0, box.y1 - box.y0 + 1);
+    coverage_.assign(static_cast<std::size_t>(stride_) * rows, 0.0f);
+  }
 
-  // Visits the pixels whose centres lie within `reach_px` of the box [lo, hi].
+  // Visits the pixels whose centres lie within `reach_px` of the box [lo, hi], which must lie
+  // inside the box the mask was made for.
   template <typename F>
   void ForPixelsNear(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, double reach_px, F f) {
-    const int x0 = std::max(0, static_cast<int>(std::floor(lo.x() - reach_px)));
-    const int y0 = std::max(0, static_cast<int>(std::floor(lo.y() - reach_px)));
-    const int x1 = std::min(width_ - 1, static_cast<int>(std::ceil(hi.x() + reach_px)));
-    const int y1 = std::min(height_ - 1, static_cast<int>(std::ceil(hi.y() + reach_px)));
-    for (int y = y0; y <= y1; ++y) {
-      for (int x = x0; x <= x1; ++x) {
+    const PixelBox box = BoxNear(lo, hi, reach_px);
+    for (int y = box.y0; y <= box.y1; ++y) {
+      for (int x = box.x0; x <= box.x1; ++x) {
         const double c = f(Eigen::Vector2d(x + 0.5, y + 0.5));
         if (c <= 0.0) continue;
-        float& cell = coverage_[static_cast<std::size_t>(y) * width_ + x];
+        float& cell = coverage_[static_cast<std::size_t>(y - y0_) * stride_ + (x - x0_)];
         cell = std::max(cell, static_cast<float>(c));
         touched_x0_ = std::min(touched_x0_, x);
         touched_y0_ = std::min(touched_y0_, y);
@@ -54,14 +62,26 @@ class CoverageMask {
   void BlendInto(RgbImage& image, Rgb colour) const {
     for (int y = touched_y0_; y <= touched_y1_; ++y) {
       for (int x = touched_x0_; x <= touched_x1_; ++x) {
-        const float c = coverage_[static_cast<std::size_t>(y) * width_ + x];
+        const float c = coverage_[static_cast<std::size_t>(y - y0_) * stride_ + (x - x0_)];
         if (c > 0.0f) BlendPixel(image, x, y, colour, c);
       }
     }
   }
 
  private:
+  struct PixelBox {
+    int x0, y0, x1, y1;
+  };
+
+  PixelBox BoxNear(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, double reach_px) const {
+    return {std::max(0, static_cast<int>(std::floor(lo.x() - reach_px))),
+            std::max(0, static_cast<int>(std::floor(lo.y() - reach_px))),
+            std::min(width_ - 1, static_cast<int>(std::ceil(hi.x() + reach_px))),
+            std::min(height_ - 1, static_cast<int>(std::ceil(hi.y() + reach_px)))};
+  }
+
   int width_, height_;
+  int x0_ = 0, y0_ = 0, stride_ = 0;
   std::vector<float> coverage_;
   int touched_x0_ = 1 << 30, touched_y0_ = 1 << 30, touched_x1_ = -1, touched_y1_ = -1;
 };
@@ -80,7 +100,16 @@ void DrawPolylinePx(RgbImage& image, std::span<const Eigen::Vector2d> points_px,
                     double width_px) {
   if (points_px.empty() || image.width <= 0 || !(width_px > 0.0)) return;
   const double half = 0.5 * width_px;
-  CoverageMask mask(image);
+  // The pixel box of every drawable segment, so the mask is sized before drawing.
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector2d hi = -lo;
+  for (const Eigen::Vector2d& p : points_px) {
+    if (!p.allFinite()) continue;
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  if (!lo.allFinite()) return;
+  CoverageMask mask(image, lo, hi, half + 1.0);
   const std::size_t n_segments = points_px.size() == 1 ? 1 : points_px.size() - 1;
   for (std::size_t i = 0; i < n_segments; ++i) {
     const Eigen::Vector2d& a = points_px[i];
@@ -95,7 +124,7 @@ void DrawPolylinePx(RgbImage& image, std::span<const Eigen::Vector2d> points_px,
 
 void FillCirclePx(RgbImage& image, const Eigen::Vector2d& centre_px, double radius_px, Rgb colour) {
   if (image.width <= 0 || !(radius_px > 0.0) || !centre_px.allFinite()) return;
-  CoverageMask mask(image);
+  CoverageMask mask(image, centre_px, centre_px, radius_px + 1.0);
   mask.ForPixelsNear(centre_px, centre_px, radius_px + 1.0, [&](const Eigen::Vector2d& p) {
     return Coverage((p - centre_px).norm(), radius_px);
   });
@@ -108,7 +137,7 @@ void DrawCirclePx(RgbImage& image, const Eigen::Vector2d& centre_px, double radi
     return;
   }
   const double half = 0.5 * width_px;
-  CoverageMask mask(image);
+  CoverageMask mask(image, centre_px, centre_px, radius_px + half + 1.0);
   mask.ForPixelsNear(centre_px, centre_px, radius_px + half + 1.0, [&](const Eigen::Vector2d& p) {
     return Coverage(std::abs((p - centre_px).norm() - radius_px), half);
   });

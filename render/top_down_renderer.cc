@@ -123,6 +123,9 @@ TopDownRenderer::TopDownRenderer(const mjModel* m, const WorldBounds& bounds,
     copy->vis.headlight.specular[i] = 0.0f;
   }
   copy->vis.headlight.active = 1;
+  // No shadow map: mjr_makeContext would zero-fill the default 4096^2 one (most of a run's wall
+  // time), and a straight-down headlight casts no shadow the picture could show.
+  copy->vis.quality.shadowsize = 0;
 
   mjv_makeScene(copy, &gl_->scene, std::max(1000, 2 * copy->ngeom + 100));
   mjr_makeContext(copy, &gl_->con, mjFONTSCALE_100);

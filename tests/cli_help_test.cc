@@ -29,7 +29,7 @@ using testing::WriteFile;
 const std::map<std::string, std::vector<std::string>> kFlags = {
     {"run",
      {"EXPERIMENT", "--out", "--seed", "--set", "--quiet", "--no-snapshot", "--force", "--help"}},
-    {"bench", {"--seconds", "--world", "--help"}},
+    {"bench", {"--seconds", "--world", "--repeats", "--min-wall", "--help"}},
     {"replay", {"LOG", "--extractor", "--set", "--skip-bad", "--out", "--force", "--help"}},
     {"train",
      {"MODEL", "--out", "--rooms", "--test-rooms", "--poses", "--epochs", "--hidden", "--seed",
@@ -47,7 +47,7 @@ const std::map<std::string, std::vector<std::string>> kFlags = {
 // Defaults the help must show, beside the flag.
 const std::map<std::string, std::vector<std::string>> kDefaults = {
     {"run", {"runs/NAME-seedSEED"}},
-    {"bench", {"120", "worlds/office.xml"}},
+    {"bench", {"120", "worlds/office.xml", "3"}},
     {"replay", {"split_and_merge", "runs/replay-LOGFILE-EXTRACTOR"}},
     {"train", {"runs/sonar_net/sonar_net.txt", "60", "15", "25", "30", "16,16"}},
     {"score", {"0.5"}},
@@ -141,6 +141,8 @@ TEST(CliHelpTest, UsageErrorsAreOneLineNamingTheCulpritWithExitCode2) {
       {"run " + experiment.string() + " --out", "--out"},  // a flag without its value
       {"bench --seconds fast", "--seconds"},
       {"bench --seconds nan", "--seconds"},
+      {"bench --repeats 0", "--repeats"},
+      {"bench --min-wall -1", "--min-wall"},
       {"train sonar-net --epochs 0", "--epochs"},
       {"train sonar-net --rooms 2.5", "--rooms"},
       {"train sonar-net --hidden 16,x", "--hidden"},

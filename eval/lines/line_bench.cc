@@ -8,10 +8,7 @@
 #include "perception/lines/line_extractor_factory.h"
 
 namespace plywood::eval {
-namespace {
-
-// 361 beams over 180 deg at 0.5 deg from (0, 0), facing +x, inside the polygon `corners`.
-msgs::LaserScan RoomScan() {
+msgs::LaserScan LineBenchScan() {
   const std::vector<Eigen::Vector2d> corners{{-1.0, -1.2}, {3.0, -1.2}, {3.0, 0.8},
                                              {1.2, 0.8},   {1.2, 2.5},  {-1.0, 2.5}};
   msgs::LaserScan scan;
@@ -37,11 +34,9 @@ msgs::LaserScan RoomScan() {
   return scan;
 }
 
-}  // namespace
-
 LineExtractorBench MeasureLineExtractors(double seconds_per_extractor) {
   const perception::ScanPoints scan =
-      perception::MakeScanPoints(RoomScan(), perception::ScanFilter{});
+      perception::MakeScanPoints(LineBenchScan(), perception::ScanFilter{});
   LineExtractorBench bench;
   bench.scan_points = scan.size();
   for (const std::string& name : perception::LineExtractorNames()) {

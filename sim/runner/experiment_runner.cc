@@ -240,19 +240,28 @@ const robot::Controller* ExperimentRunner::controller() const { return parts_->c
 void ExperimentRunner::SampleSensors() {
   Parts& p = *parts_;
   const double t = scene_->time_s();
+  StepPartTimes* times = part_times_;
+  double* const other_s = times ? &times->other_s : nullptr;
   if (p.encoders && p.encoders->schedule.Due(t)) {
+    const PartTimer timer(other_s);
     record_.encoders.push_back(p.encoders->sensor.Sample(*scene_));
     for (auto& estimator : p.estimators) estimator->AddEncoders(record_.encoders.back());
   }
   if (p.gyro && p.gyro->schedule.Due(t)) {
+    const PartTimer timer(other_s);
     record_.gyro.push_back(p.gyro->sensor.Sample(*scene_));
     for (auto& estimator : p.estimators) estimator->AddGyro(record_.gyro.back());
   }
   if (p.bumpers && p.bumpers->schedule.Due(t)) {
+    const PartTimer timer(other_s);
     record_.bumpers.push_back(p.bumpers->sensor.Sample(*scene_));
   }
   if (p.laser && p.laser->schedule.Due(t)) {
-    p.laser->sensor.Measure(*scene_, *p.caster, &p.scan_scratch);
+    {
+      const PartTimer timer(times ? &times->laser_s : nullptr);
+      p.laser->sensor.Measure(*scene_, *p.caster, &p.scan_scratch);
+    }
+    const PartTimer timer(times ? &times->recording_s : nullptr);
     LaserRecord laser;
     laser.scan = p.scan_scratch.scan;
     laser.X_WR_truth = scene_->TruePose();
@@ -277,15 +286,23 @@ void ExperimentRunner::SampleSensors() {
     cost_.rays += p.rays_per_laser_scan;
   }
   if (p.sonar && p.sonar->schedule.Due(t)) {
-    record_.sonar.push_back(p.sonar->sensor.Measure(*scene_, *p.caster));
+    std::optional<msgs::SonarRing> ring;
+    {
+      const PartTimer timer(times ? &times->sonar_s : nullptr);
+      ring = p.sonar->sensor.Measure(*scene_, *p.caster);
+    }
+    const PartTimer timer(times ? &times->recording_s : nullptr);
+    record_.sonar.push_back(std::move(*ring));
     p.last_sonar = record_.sonar.back();
     cost_.rays += p.rays_per_sonar_ring;
   }
   if (p.ir_ring && p.ir_ring->schedule.Due(t)) {
+    const PartTimer timer(other_s);
     record_.ir_ring.push_back(p.ir_ring->sensor.Measure(*scene_, *p.caster));
     cost_.rays += p.rays_per_ir_ring;
   }
   if (p.ir_scanner && p.ir_scanner->schedule.Due(t)) {
+    const PartTimer timer(other_s);
     record_.ir_scanner.push_back(p.ir_scanner->sensor.Measure(*scene_, *p.caster).scan);
     cost_.rays += p.rays_per_ir_scan;
   }
@@ -308,6 +325,7 @@ void ExperimentRunner::Run(const Progress& progress) {
   for (long step = 0; step < total_steps; ++step) {
     SampleSensors();
     if (p.controller && p.control_schedule->Due(scene_->time_s())) {
+      const PartTimer timer(part_times_ ? &part_times_->controller_s : nullptr);
       robot::ControllerInput input;
       input.time_s = scene_->time_s();
       input.X_WR_estimate = p.steering ? p.steering->pose() : scene_->TruePose();
@@ -317,9 +335,15 @@ void ExperimentRunner::Run(const Progress& progress) {
       scene_->SetWheelSpeeds(p.controller->Update(input));
       if (p.controller->Finished() && !finished) finished = true;
     }
-    if (p.trajectory_schedule.Due(scene_->time_s())) record_trajectory();
+    if (p.trajectory_schedule.Due(scene_->time_s())) {
+      const PartTimer timer(part_times_ ? &part_times_->recording_s : nullptr);
+      record_trajectory();
+    }
     if (finished) break;
-    scene_->Step();
+    {
+      const PartTimer timer(part_times_ ? &part_times_->physics_s : nullptr);
+      scene_->Step();
+    }
     ++cost_.steps;
     const mjData* d = scene_->data();
     if (d->warning[mjWARN_BADQACC].number > 0 || !std::isfinite(d->qpos[0])) {

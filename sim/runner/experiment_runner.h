@@ -14,6 +14,7 @@
 #include "robot/control/controller.h"
 #include "sim/config/experiment_config.h"
 #include "sim/runner/metrics.h"
+#include "sim/runner/part_timer.h"
 #include "sim/world/ground_truth_walls.h"
 #include "sim/world/scene.h"
 
@@ -85,6 +86,8 @@ class ExperimentRunner {
   // The controller that drove the run (null for idle), e.g. to read an exploration map.
   const robot::Controller* controller() const;
   const RunCost& cost() const { return cost_; }
+  // Times each part of the step loop into `*times` from the next Run on (null: off, the default).
+  void ProfileStepParts(StepPartTimes* times) { part_times_ = times; }
   const Scene& scene() const { return *scene_; }
   Scene& mutable_scene() { return *scene_; }
   const ExperimentConfig& config() const { return config_; }
@@ -100,6 +103,7 @@ class ExperimentRunner {
   std::unique_ptr<Parts> parts_;
   RunRecord record_;
   RunCost cost_;
+  StepPartTimes* part_times_ = nullptr;
 };
 
 // Seed of one component, derived from the experiment seed and the component's name so that adding
