@@ -68,3 +68,29 @@ TEST(WorldsCliTest, BadInputNamesTheField) {
 
 }  // namespace
 }  // namespace plywood
+
+namespace plywood {
+namespace {
+
+TEST(WorldsCliTest, ASecondGenerationReplacesTheFirstAndNothingElse) {
+  namespace fs = std::filesystem;
+  const fs::path dir = testing::MakeTempDir("worlds_cli_again");
+  const std::string out = (dir / "out").string();
+  ASSERT_EQ(
+      testing::RunPlywood("worlds generate room --count 3 --seed 2 --out " + out, dir).exit_code,
+      0);
+  ASSERT_EQ(
+      testing::RunPlywood("worlds generate clutter --count 1 --seed 2 --out " + out, dir).exit_code,
+      0);
+  int xml = 0;
+  for (const auto& e : fs::directory_iterator(dir / "out")) xml += e.path().extension() == ".xml";
+  EXPECT_EQ(xml, 1) << "worlds of the earlier generation were left behind";
+  testing::WriteFile(dir / "out" / "notes.txt", "mine\n");
+  const auto r = testing::RunPlywood("worlds generate room --count 1 --seed 2 --out " + out, dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("notes.txt"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "out" / "notes.txt"));
+}
+
+}  // namespace
+}  // namespace plywood

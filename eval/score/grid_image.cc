@@ -12,7 +12,9 @@
 namespace plywood::eval {
 namespace {
 
-constexpr long kMaxPixels = 100'000'000;  // 10 km x 10 km at 1 m, 1 km x 1 km at 10 cm
+// 4000 x 4000: 200 m square at 5 cm, far beyond any room; bounds the decode to ~200 MB however
+// small a crafted file is.
+constexpr long kMaxPixels = 16'000'000;
 
 GridImage ReadPng(const std::filesystem::path& path) {
   const std::string file = path.string();
@@ -24,7 +26,7 @@ GridImage ReadPng(const std::filesystem::path& path) {
   }
   if (static_cast<long>(decoded.width) * decoded.height > kMaxPixels) {
     png_image_free(&decoded);
-    throw sim::ConfigError(file, "size", "more than 1e8 pixels");
+    throw sim::ConfigError(file, "size", "more than 1.6e7 pixels (4000 x 4000)");
   }
   // Sample values as stored: libpng hands 8-bit files over unchanged as 8-bit sRGB (alpha kept
   // separate) and 16-bit files as 16-bit "linear"; any other pairing applies a gamma curve, and
@@ -119,7 +121,7 @@ GridImage ReadPgm(const std::string& file, const std::string& bytes) {
   image.width = static_cast<int>(words.Number("width", 1, kMaxPixels));
   image.height = static_cast<int>(words.Number("height", 1, kMaxPixels));
   if (static_cast<long>(image.width) * image.height > kMaxPixels) {
-    words.Fail("height", "more than 1e8 pixels");
+    words.Fail("height", "more than 1.6e7 pixels (4000 x 4000)");
   }
   const long maxval = words.Number("maxval", 1, 65535);
   const std::size_t count = static_cast<std::size_t>(image.width) * image.height;

@@ -1,5 +1,6 @@
 #include "sim/world/generator/world_generator.h"
 
+#include <algorithm>
 #include <fstream>
 #include <stdexcept>
 #include <system_error>
@@ -67,6 +68,40 @@ std::string WorldIndexRow(const GeneratedWorld& world) {
          JsonNumber(world.rig_coverage) + "\n";
 }
 
+namespace {
+
+// An earlier generation in `dir` (its index.csv lists its worlds) is replaced as a whole, so a
+// smaller --count leaves no extra worlds behind; anything else in a non-empty folder is refused,
+// so a user's own files are never overwritten or mixed with worlds.
+void RemoveEarlierGeneration(const std::filesystem::path& dir) {
+  namespace fs = std::filesystem;
+  if (fs::is_empty(dir)) return;
+  std::ifstream index(dir / "index.csv");
+  std::string line;
+  if (!index || !std::getline(index, line) || line + "\n" != kWorldIndexHeader) {
+    throw std::invalid_argument("out: " + dir.string() +
+                                " holds files that are not a world generation (no index.csv); "
+                                "choose an empty or new folder");
+  }
+  std::vector<fs::path> generated{dir / "index.csv"};
+  while (std::getline(index, line)) {
+    const fs::path world = dir / line.substr(0, line.find(','));
+    for (const char* extension : {".xml", ".json", ".png"}) {
+      generated.push_back(fs::path(world).replace_extension(extension));
+    }
+  }
+  for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
+    if (std::find(generated.begin(), generated.end(), entry.path()) == generated.end()) {
+      throw std::invalid_argument("out: " + dir.string() + " holds " +
+                                  entry.path().filename().string() +
+                                  ", which no world generation wrote; choose another folder");
+    }
+  }
+  for (const fs::path& file : generated) fs::remove(file);
+}
+
+}  // namespace
+
 std::vector<GeneratedWorldFile> GenerateWorlds(const GenerateWorldsOptions& options) {
   options.Validate();
   std::error_code error;
@@ -75,6 +110,7 @@ std::vector<GeneratedWorldFile> GenerateWorlds(const GenerateWorldsOptions& opti
     throw std::invalid_argument("out: cannot create directory " + options.out_dir.string() +
                                 (error ? ": " + error.message() : ": a file is in the way"));
   }
+  RemoveEarlierGeneration(options.out_dir);
   std::vector<GeneratedWorldFile> files;
   std::string index = kWorldIndexHeader;
   for (int i = 0; i < options.count; ++i) {
