@@ -1,29 +1,21 @@
 #include "eval/bench/tiled_world.h"
 
-#include <fstream>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
 
 #include "sim/runner/format_number.h"
+#include "sim/runner/text_file.h"
 
 namespace plywood::eval {
-namespace {
-
-std::string ReadText(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path.string() + ": cannot read");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-}  // namespace
 
 std::string TiledWorldMjcf(const std::filesystem::path& world_xml, int tiles_x, int tiles_y,
                            double pitch_x_m, double pitch_y_m) {
-  const std::string text = ReadText(world_xml);
+  if (!std::filesystem::is_regular_file(world_xml)) {
+    throw std::runtime_error(world_xml.string() + ": cannot read");
+  }
+  const std::string text = sim::ReadTextFile(world_xml);
   const std::size_t open = text.find("<worldbody>");
   const std::size_t close = text.find("</worldbody>");
   if (open == std::string::npos || close == std::string::npos || close < open) {

@@ -2,7 +2,6 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <fstream>
 #include <stdexcept>
 
 #include "perception/lines/line_extractor_factory.h"
@@ -15,15 +14,10 @@
 #include "sim/runner/json_text.h"
 #include "sim/runner/metrics.h"
 #include "sim/runner/run_directory.h"
+#include "sim/runner/text_file.h"
 
 namespace plywood::eval {
 namespace {
-
-void WriteText(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream file(path, std::ios::binary);
-  file << text;
-  if (!file) throw std::runtime_error(path.string() + ": cannot write");
-}
 
 // The record of the replay, so its directory is recognisable as a run (sim::HoldsPlywoodRun).
 std::string ReplayConfigYaml(const LogReplayRequest& request, const std::string& name,
@@ -95,10 +89,11 @@ LogReplaySummary RunLogReplay(const LogReplayRequest& request) {
   const perception::ReplayResult& result = summary.result;
 
   std::filesystem::create_directories(summary.out_dir);
-  WriteText(summary.out_dir / "config.yaml",
-            ReplayConfigYaml(
-                request, DefaultReplayDirectory(request.log, request.extractor).filename().string(),
-                lines));
+  sim::WriteTextFile(
+      summary.out_dir / "config.yaml",
+      ReplayConfigYaml(request,
+                       DefaultReplayDirectory(request.log, request.extractor).filename().string(),
+                       lines));
   sim::Metrics metrics;
   metrics.Set("replay.extractor", request.extractor);
   metrics.Set("replay.scans", static_cast<double>(result.scans));
@@ -109,8 +104,8 @@ LogReplaySummary RunLogReplay(const LogReplayRequest& request) {
   metrics.Set("replay.rms_m", result.rays.RmsM());
   metrics.Set("replay.rays_per_line", result.RaysPerLine());
   metrics.Set("replay.lines_per_scan", result.LinesPerScan());
-  WriteText(summary.out_dir / "metrics.json", metrics.ToJson());
-  WriteText(
+  sim::WriteTextFile(summary.out_dir / "metrics.json", metrics.ToJson());
+  sim::WriteTextFile(
       summary.out_dir / "timing.json",
       sim::WriteJson(nlohmann::ordered_json{{"replay", {{"us_per_scan", result.UsPerScan()}}}},
                      {.layout = sim::JsonStyle::Layout::kOneLine}));

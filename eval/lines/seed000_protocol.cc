@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <stdexcept>
 
 #include "eval/lines/lines_csv.h"
@@ -12,15 +11,10 @@
 #include "render/png_image.h"
 #include "render/world_to_pixel.h"
 #include "sim/config/experiment_config.h"
+#include "sim/runner/text_file.h"
 
 namespace plywood::eval {
 namespace {
-
-void WriteText(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + path.string());
-}
 
 // Ground-truth faces (grey; observed ones black), the first scan pair's points (red) and the
 // first extractor's segments on it (blue), in the world frame (= the front sensor's frame).
@@ -133,11 +127,11 @@ int Seed000Protocol(const ProtocolContext& context) {
   for (auto& s : total) s.us_per_scan /= static_cast<double>(std::max(1L, total_scans));
   eval::SetLineMetrics(total, total_scans, metrics);
 
-  WriteText(out / "config.yaml", sim::ExperimentConfigToYaml(config));
-  WriteText(out / "metrics.json", metrics.ToJson());
-  WriteText(out / "rooms.csv", csv);
-  WriteText(out / "timing.json", eval::LineTimingJson(total));
-  WriteText(out / "walls.csv", walls_csv);
+  sim::WriteTextFile(out / "config.yaml", sim::ExperimentConfigToYaml(config));
+  sim::WriteTextFile(out / "metrics.json", metrics.ToJson());
+  sim::WriteTextFile(out / "rooms.csv", csv);
+  sim::WriteTextFile(out / "timing.json", eval::LineTimingJson(total));
+  sim::WriteTextFile(out / "walls.csv", walls_csv);
   WriteLinesCsv(out / "lines.csv", line_rows, /*with_room=*/true);
   if (!context.quiet) {
     std::printf("\nall rooms (%ld scan pairs)\n%-16s %7s %7s %9s %11s %9s %9s\n", total_scans,

@@ -2,21 +2,15 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
 #include "eval/odometry/umbmark_experiment.h"
 #include "sim/config/experiment_config.h"
 #include "sim/runner/run_writer.h"
+#include "sim/runner/text_file.h"
 
 namespace plywood::eval {
 namespace {
-
-void WriteText(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + path.string());
-}
 
 std::string RunsCsv(const eval::UmbmarkOutcome& outcome) {
   std::string csv = "stage,direction,run,error_x_m,error_y_m\n";
@@ -56,9 +50,9 @@ int UmbmarkProtocol(const ProtocolContext& context) {
                          }
                        });
   std::filesystem::create_directories(out);
-  WriteText(out / "config.yaml", sim::ExperimentConfigToYaml(config));
-  WriteText(out / "metrics.json", outcome.metrics.ToJson());
-  WriteText(out / "umbmark_runs.csv", RunsCsv(outcome));
+  sim::WriteTextFile(out / "config.yaml", sim::ExperimentConfigToYaml(config));
+  sim::WriteTextFile(out / "metrics.json", outcome.metrics.ToJson());
+  sim::WriteTextFile(out / "umbmark_runs.csv", RunsCsv(outcome));
   if (!context.quiet) {
     const auto& b = outcome.before.result;
     std::printf("\n%-34s %s (%d + %d squares of %.1f m, steered by %s)\n", "UMBmark",

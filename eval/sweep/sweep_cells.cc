@@ -4,10 +4,10 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
-#include <sstream>
 
 #include "sim/config/config_error.h"
 #include "sim/config/experiment_config.h"
+#include "sim/runner/text_file.h"
 #include "sim/world/mujoco_handles.h"
 
 namespace plywood::eval {
@@ -99,10 +99,7 @@ std::string CulpritField(const SweepSpec& spec, const SweepCell& cell,
 // the same wherever the sweep folder (and the worlds generated into it) lies.
 std::string IdentityText(const sim::ExperimentConfig& config) {
   std::string text = sim::ExperimentConfigToYaml(config);
-  std::ifstream in(config.world_path, std::ios::binary);
-  std::stringstream world;
-  world << in.rdbuf();
-  const std::string world_id = "world-content-" + StableHash(world.str());
+  const std::string world_id = "world-content-" + StableHash(sim::ReadTextFile(config.world_path));
   for (const std::string& path : {config.world_path.string(), config.world}) {
     if (path.empty()) continue;
     for (std::size_t at = text.find(path); at != std::string::npos;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -12,28 +11,12 @@
 #include "eval/sweep/sweep_csv.h"
 #include "sim/config/config_error.h"
 #include "sim/runner/metrics.h"
+#include "sim/runner/text_file.h"
 
 namespace plywood::eval {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string ReadText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-void WriteText(const fs::path& path, const std::string& text) {
-  const fs::path partial = path.string() + ".partial";
-  {
-    std::ofstream out(partial, std::ios::binary);
-    out << text;
-    if (!out) throw std::runtime_error("cannot write " + partial.string());
-  }
-  fs::rename(partial, path);
-}
 
 // metrics.json flattened to dotted keys; numbers as their shortest round-trip text.
 struct RunMetrics {
@@ -63,7 +46,7 @@ void Flatten(const nlohmann::json& node, const std::string& prefix, RunMetrics& 
 RunMetrics ReadRunMetrics(const fs::path& file) {
   RunMetrics metrics;
   try {
-    Flatten(nlohmann::json::parse(ReadText(file)), "", metrics);
+    Flatten(nlohmann::json::parse(sim::ReadTextFile(file)), "", metrics);
   } catch (const nlohmann::json::exception& e) {
     throw sim::ConfigError(file.string(), "", std::string("not valid JSON: ") + e.what());
   }
@@ -120,7 +103,7 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
   }
   nlohmann::json meta;
   try {
-    meta = nlohmann::json::parse(ReadText(meta_file));
+    meta = nlohmann::json::parse(sim::ReadTextFile(meta_file));
   } catch (const nlohmann::json::exception& e) {
     throw sim::ConfigError(meta_file.string(), "", std::string("not valid JSON: ") + e.what());
   }
@@ -130,7 +113,7 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
   const auto group_by = meta.value("group_by", std::vector<std::string>{});
   const bool several_experiments = meta.value("experiments", std::vector<std::string>{}).size() > 1;
   const bool profiles = meta.value("profiles", false);
-  const auto rows = ParseCsv(ReadText(manifest));
+  const auto rows = ParseCsv(sim::ReadTextFile(manifest));
   if (rows.empty() || rows[0].size() != 7 + axes.size()) {
     throw sim::ConfigError(manifest.string(), "", "header does not match sweep.json's axes");
   }
@@ -167,7 +150,7 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
       finished.push_back(std::move(done));
       ++outcome.done;
     } else if (fs::is_regular_file(failure)) {
-      std::istringstream lines(ReadText(failure));
+      std::istringstream lines(sim::ReadTextFile(failure));
       std::string code, error;
       std::getline(lines, code);
       std::getline(lines, error);
@@ -193,8 +176,8 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
     }
     results += CsvRow(fields);
   }
-  WriteText(out_dir / "results.csv", results);
-  WriteText(out_dir / "failures.csv", failures_csv);
+  sim::WriteTextFile(out_dir / "results.csv", results);
+  sim::WriteTextFile(out_dir / "failures.csv", failures_csv);
   if (!finished.empty()) {
     for (const std::string& metric : chosen) {
       if (metric_keys.count(metric)) continue;
@@ -282,7 +265,7 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
       table += "\n";
     }
   }
-  WriteText(out_dir / "summary.csv", summary);
+  sim::WriteTextFile(out_dir / "summary.csv", summary);
   if (print_table) {
     outcome.table = table;
   } else {

@@ -11,7 +11,6 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -21,6 +20,7 @@
 
 #include "eval/sweep/sweep_csv.h"
 #include "sim/config/config_error.h"
+#include "sim/runner/text_file.h"
 
 namespace plywood::eval {
 namespace {
@@ -28,29 +28,10 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-std::string ReadText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// Writes `text` under a temporary name and renames it into place, so a reader (or a resumed
-// sweep) never sees half a file.
-void WriteAtomically(const fs::path& path, const std::string& text) {
-  const fs::path partial = path.string() + ".partial-" + std::to_string(getpid());
-  {
-    std::ofstream out(partial, std::ios::binary);
-    out << text;
-    if (!out) throw std::runtime_error("cannot write " + partial.string());
-  }
-  fs::rename(partial, path);
-}
-
 // The last line a failed run printed that says what went wrong ("plywood: ..."), else its last
 // non-empty line.
 std::string ErrorLine(const fs::path& log) {
-  std::istringstream lines(ReadText(log));
+  std::istringstream lines(sim::ReadTextFile(log));
   std::string last, last_plywood;
   for (std::string line; std::getline(lines, line);) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -133,7 +114,7 @@ class Progress {
 std::map<std::string, std::string> InputHashes(const SweepSpec& spec) {
   std::map<std::string, std::string> hashes;
   for (const auto* files : {&spec.experiments, &spec.profiles, &spec.world_files}) {
-    for (const fs::path& file : *files) hashes[file.string()] = StableHash(ReadText(file));
+    for (const fs::path& file : *files) hashes[file.string()] = StableHash(sim::ReadTextFile(file));
   }
   return hashes;
 }
@@ -182,7 +163,7 @@ void PrepareSweepFolder(const SweepSpec& spec, const fs::path& out) {
                              "holds files that are not a sweep (no sweep.yaml); choose another "
                              "--out");
     }
-    if (fs::is_regular_file(copy) && ReadText(copy) != spec.text) {
+    if (fs::is_regular_file(copy) && sim::ReadTextFile(copy) != spec.text) {
       throw sim::ConfigError(out.string(), "",
                              "holds results of a different sweep (its sweep.yaml differs): choose "
                              "another --out");
@@ -210,7 +191,7 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
                         const SweepLayout& layout) {
   fs::create_directories(layout.out);
   const fs::path copy = layout.out / "sweep.yaml";
-  if (fs::exists(copy) && ReadText(copy) != spec.text) {
+  if (fs::exists(copy) && sim::ReadTextFile(copy) != spec.text) {
     throw sim::ConfigError(layout.out.string(), "",
                            "holds results of a different sweep (its sweep.yaml differs): choose "
                            "another --out");
@@ -253,10 +234,10 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
                     {"values", cell.values},
                     {"overrides", cell.overrides}});
   }
-  WriteAtomically(layout.out / "sweep.json", meta.dump(2) + "\n");
-  WriteAtomically(layout.out / "cells.json", full.dump(1) + "\n");
-  WriteAtomically(layout.out / "cells.csv", csv);
-  if (!fs::exists(copy)) WriteAtomically(copy, spec.text);
+  sim::WriteTextFile(layout.out / "sweep.json", meta.dump(2) + "\n");
+  sim::WriteTextFile(layout.out / "cells.json", full.dump(1) + "\n");
+  sim::WriteTextFile(layout.out / "cells.csv", csv);
+  if (!fs::exists(copy)) sim::WriteTextFile(copy, spec.text);
 }
 
 SweepRunOutcome RunSweepCells(const std::vector<SweepCell>& cells, const SweepLayout& layout,
@@ -321,7 +302,7 @@ SweepRunOutcome RunSweepCells(const std::vector<SweepCell>& cells, const SweepLa
       fs::remove_all(partial, ignored);
       std::string line = ErrorLine(layout.LogFile(cell->id));
       if (code == 0) line = "exited 0 without metrics.json";
-      WriteAtomically(layout.FailureFile(cell->id), std::to_string(code) + "\n" + line + "\n");
+      sim::WriteTextFile(layout.FailureFile(cell->id), std::to_string(code) + "\n" + line + "\n");
       ++failed;
     }
     progress.Report(done, failed, false);
@@ -336,11 +317,12 @@ std::optional<std::vector<SweepCell>> ReadSweepManifest(const SweepSpec& spec,
                                                         const SweepLayout& layout) {
   const fs::path copy = layout.out / "sweep.yaml";
   const fs::path cells_file = layout.out / "cells.json";
-  if (!fs::is_regular_file(copy) || ReadText(copy) != spec.text || !fs::is_regular_file(cells_file))
+  if (!fs::is_regular_file(copy) || sim::ReadTextFile(copy) != spec.text ||
+      !fs::is_regular_file(cells_file))
     return std::nullopt;
   std::vector<SweepCell> cells;
   try {
-    for (const auto& item : nlohmann::json::parse(ReadText(cells_file))) {
+    for (const auto& item : nlohmann::json::parse(sim::ReadTextFile(cells_file))) {
       SweepCell cell;
       cell.index = item.at("index").get<int>();
       cell.id = item.at("id").get<std::string>();

@@ -32,25 +32,39 @@ std::vector<std::string> Tokens(const std::string& line) {
   return tokens;
 }
 
+// A count field ("FLASER beam count"): a whole number in min..100000.
+std::size_t ParseCount(const std::string& token, const std::string& what, int min) {
+  const double value = ParseNumber(token, what.c_str());
+  if (value < min || value > 100000 || value != std::floor(value)) {
+    throw std::runtime_error(what + ": must be a whole number in " + std::to_string(min) +
+                             "..100000");
+  }
+  return static_cast<std::size_t>(value);
+}
+
+// n ranges from t[first]; a negative range is refused.
+std::vector<double> ParseRanges(const std::vector<std::string>& t, std::size_t first, std::size_t n,
+                                const std::string& kind) {
+  const std::string field = kind + " range";  // once per scan, not per beam
+  std::vector<double> ranges(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = ParseNumber(t[first + i], field.c_str());
+    if (r < 0.0) throw std::runtime_error(field + ": negative range " + t[first + i]);
+    ranges[i] = r;
+  }
+  return ranges;
+}
+
 void ParseFlaser(const std::vector<std::string>& t, CarmenLog* log) {
   if (t.size() < 2) throw std::runtime_error("FLASER: missing beam count");
-  const double n_value = ParseNumber(t[1], "FLASER beam count");
-  if (n_value < 1 || n_value > 100000 || n_value != std::floor(n_value)) {
-    throw std::runtime_error("FLASER beam count: must be a whole number in 1..100000");
-  }
-  const auto n = static_cast<std::size_t>(n_value);
+  const std::size_t n = ParseCount(t[1], "FLASER beam count", 1);
   // n ranges, then x y theta odom_x odom_y odom_theta ipc_timestamp hostname logger_timestamp.
   if (t.size() != 2 + n + 9) {
     throw std::runtime_error("FLASER: expected " + std::to_string(2 + n + 9) + " fields for " +
                              std::to_string(n) + " beams, got " + std::to_string(t.size()));
   }
   CarmenLaserRecord record;
-  record.scan.ranges_m.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double r = ParseNumber(t[2 + i], "FLASER range");
-    if (r < 0.0) throw std::runtime_error("FLASER range: negative range " + t[2 + i]);
-    record.scan.ranges_m[i] = r;
-  }
+  record.scan.ranges_m = ParseRanges(t, 2, n, "FLASER");
   const std::size_t p = 2 + n;
   record.X_WL = {ParseNumber(t[p], "FLASER x"), ParseNumber(t[p + 1], "FLASER y"),
                  ParseNumber(t[p + 2], "FLASER theta")};
@@ -70,17 +84,9 @@ void ParseFlaser(const std::vector<std::string>& t, CarmenLog* log) {
 // Unlike FLASER it carries the beams' start angle and spacing, so any fov reads back right.
 void ParseRobotLaser1(const std::vector<std::string>& t, CarmenLog* log) {
   if (t.size() < 9) throw std::runtime_error("ROBOTLASER1: missing fields before the ranges");
-  const double n_value = ParseNumber(t[8], "ROBOTLASER1 beam count");
-  if (n_value < 1 || n_value > 100000 || n_value != std::floor(n_value)) {
-    throw std::runtime_error("ROBOTLASER1 beam count: must be a whole number in 1..100000");
-  }
-  const auto n = static_cast<std::size_t>(n_value);
+  const std::size_t n = ParseCount(t[8], "ROBOTLASER1 beam count", 1);
   if (t.size() < 9 + n + 1) throw std::runtime_error("ROBOTLASER1: fewer ranges than announced");
-  const double m_value = ParseNumber(t[9 + n], "ROBOTLASER1 remission count");
-  if (m_value < 0 || m_value > 100000 || m_value != std::floor(m_value)) {
-    throw std::runtime_error("ROBOTLASER1 remission count: must be a whole number in 0..100000");
-  }
-  const auto m = static_cast<std::size_t>(m_value);
+  const std::size_t m = ParseCount(t[9 + n], "ROBOTLASER1 remission count", 0);
   const std::size_t p = 9 + n + 1 + m;
   if (t.size() != p + 14) {
     throw std::runtime_error("ROBOTLASER1: expected " + std::to_string(p + 14) + " fields for " +
@@ -94,12 +100,7 @@ void ParseRobotLaser1(const std::vector<std::string>& t, CarmenLog* log) {
   if (!(record.scan.range_max_m > 0.0)) {
     throw std::runtime_error("ROBOTLASER1 maximum_range: must be > 0, got " + t[5]);
   }
-  record.scan.ranges_m.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double r = ParseNumber(t[9 + i], "ROBOTLASER1 range");
-    if (r < 0.0) throw std::runtime_error("ROBOTLASER1 range: negative range " + t[9 + i]);
-    record.scan.ranges_m[i] = r;
-  }
+  record.scan.ranges_m = ParseRanges(t, 9, n, "ROBOTLASER1");
   record.X_WL = {ParseNumber(t[p], "ROBOTLASER1 laser_x"),
                  ParseNumber(t[p + 1], "ROBOTLASER1 laser_y"),
                  ParseNumber(t[p + 2], "ROBOTLASER1 laser_theta")};
