@@ -1,24 +1,16 @@
 #include "eval/sweep/sweep_csv.h"
 
+#include "eval/score/csv_table.h"
+
 namespace plywood::eval {
 
-std::string CsvRow(const std::vector<std::string>& fields) {
-  std::string row;
+std::string CsvLine(const std::vector<std::string>& fields) {
+  std::string line;
   for (std::size_t i = 0; i < fields.size(); ++i) {
-    if (i) row += ',';
-    const std::string& f = fields[i];
-    if (f.find_first_of(",\"\r\n") == std::string::npos) {
-      row += f;
-      continue;
-    }
-    row += '"';
-    for (char c : f) {
-      if (c == '"') row += '"';
-      row += c;
-    }
-    row += '"';
+    if (i) line += ',';
+    line += CsvField(fields[i]);
   }
-  return row + "\n";
+  return line + "\n";
 }
 
 std::vector<std::vector<std::string>> ParseCsv(const std::string& text) {

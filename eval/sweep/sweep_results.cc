@@ -129,7 +129,7 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
     for (const auto& a : axes) header.push_back(a);
     header.push_back("exit_code");
     header.push_back("error");
-    failures_csv = CsvRow(header);
+    failures_csv = CsvLine(header);
   }
   SweepCollectOutcome outcome;
   std::set<std::string> metric_keys;
@@ -156,7 +156,7 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
       std::getline(lines, error);
       cell.push_back(code);
       cell.push_back(error);
-      failures_csv += CsvRow(cell);
+      failures_csv += CsvLine(cell);
       ++outcome.failed;
     } else {
       ++outcome.missing;
@@ -167,14 +167,14 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
   std::vector<std::string> header{"id", "experiment", "world", "family", "profile", "seed"};
   for (const auto& a : axes) header.push_back(a);
   for (const auto& k : metric_keys) header.push_back(k);
-  std::string results = CsvRow(header);
+  std::string results = CsvLine(header);
   for (const Row& row : finished) {
     std::vector<std::string> fields = row.cell;
     for (const auto& k : metric_keys) {
       const auto it = row.metrics.text.find(k);
       fields.push_back(it == row.metrics.text.end() ? "" : it->second);
     }
-    results += CsvRow(fields);
+    results += CsvLine(fields);
   }
   sim::WriteTextFile(out_dir / "results.csv", results);
   sim::WriteTextFile(out_dir / "failures.csv", failures_csv);
@@ -234,7 +234,7 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
   std::vector<std::string> summary_header = group_columns;
   for (const char* c : {"metric", "n", "mean", "std", "ci95_low", "ci95_high", "min", "max"})
     summary_header.push_back(c);
-  std::string summary = CsvRow(summary_header);
+  std::string summary = CsvLine(summary_header);
   std::string table;
   for (const auto& metric : chosen) {
     table += "\n" + metric + "\n";
@@ -251,7 +251,7 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
       fields.push_back(std::to_string(s.n));
       for (double v : {s.mean, s.std, s.ci95_low, s.ci95_high, s.min, s.max})
         fields.push_back(s.n ? sim::FormatNumber(v) : "");
-      summary += CsvRow(fields);
+      summary += CsvLine(fields);
       std::string label;
       for (std::size_t i = 0; i < group.size(); ++i)
         label += (i ? ", " : "") + group_columns[i] + "=" + group[i];

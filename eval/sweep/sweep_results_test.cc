@@ -49,9 +49,9 @@ TEST(SweepResultsTest, ShardsPartitionTheCells) {
 
 TEST(SweepResultsTest, CsvQuotesAndParsesBack) {
   const std::vector<std::string> fields{"a", "b,c", "say \"hi\"", "two\nlines", ""};
-  const std::string row = CsvRow(fields);
+  const std::string row = CsvLine(fields);
   EXPECT_EQ(row, "a,\"b,c\",\"say \"\"hi\"\"\",\"two\nlines\",\n");
-  const auto parsed = ParseCsv(row + CsvRow({"1", "2", "3", "4", "5"}));
+  const auto parsed = ParseCsv(row + CsvLine({"1", "2", "3", "4", "5"}));
   ASSERT_EQ(parsed.size(), 2u);
   EXPECT_EQ(parsed[0], fields);
 }

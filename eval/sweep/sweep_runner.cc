@@ -214,13 +214,13 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
   std::vector<std::string> header{"index",  "id",      "experiment", "world",
                                   "family", "profile", "seed"};
   for (const auto& k : keys) header.push_back(k);
-  std::string csv = CsvRow(header);
+  std::string csv = CsvLine(header);
   for (const SweepCell& cell : cells) {
     std::vector<std::string> row{
         std::to_string(cell.index), cell.id, cell.experiment, cell.world, cell.family, cell.profile,
         std::to_string(cell.seed)};
     for (const auto& v : cell.values) row.push_back(v);
-    csv += CsvRow(row);
+    csv += CsvLine(row);
   }
   nlohmann::ordered_json full = nlohmann::ordered_json::array();
   for (const SweepCell& cell : cells) {
