@@ -60,9 +60,6 @@ function(plywood_add_folder_tests prefix)
     set(test_target "${prefix}.${name}")
     add_executable(${test_target} "${test_source}")
     target_link_libraries(${test_target} PRIVATE ${ARGN} plywood_test_support GTest::gtest GTest::gtest_main)
-    target_compile_definitions(${test_target} PRIVATE
-      PLYWOOD_SOURCE_ROOT="${PROJECT_SOURCE_DIR}"
-      PLYWOOD_BINARY_DIR="${PROJECT_BINARY_DIR}")
     add_test(NAME ${test_target} COMMAND ${test_target} WORKING_DIRECTORY "${PROJECT_BINARY_DIR}")
   endforeach()
 endfunction()

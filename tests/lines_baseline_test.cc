@@ -10,6 +10,7 @@
 #include <string>
 
 #include "eval/lines/seed000_rooms.h"
+#include "plywood_paths.h"
 #include "sim/config/experiment_config.h"
 
 namespace plywood {

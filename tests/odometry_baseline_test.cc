@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <string>
 
+#include "plywood_paths.h"
 #include "sim/config/experiment_config.h"
 #include "sim/runner/experiment_runner.h"
 

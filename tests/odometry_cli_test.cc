@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include "plywood_paths.h"
 #include "tests/support/cli_test_support.h"
 #include "tests/support/mujoco_test_support.h"
 

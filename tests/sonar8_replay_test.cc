@@ -13,6 +13,7 @@
 #include "perception/logs/sonar8_log.h"
 #include "perception/sonar_map/log_odds_grid.h"
 #include "perception/sonar_map/sonar_cell_model.h"
+#include "plywood_paths.h"
 #include "render/png_image.h"
 
 namespace plywood {

@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "eval/sweep/sweep_csv.h"
+#include "plywood_paths.h"
 #include "tests/support/cli_test_support.h"
 #include "tests/support/mujoco_test_support.h"
 

@@ -8,6 +8,7 @@
 
 #include <cstdio>
 
+#include "plywood_paths.h"
 #include "sim/config/config_error.h"
 
 namespace plywood::eval {

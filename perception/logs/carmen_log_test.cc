@@ -11,6 +11,8 @@
 #include <sstream>
 #include <utility>
 
+#include "plywood_paths.h"
+
 namespace plywood::perception {
 namespace {
 

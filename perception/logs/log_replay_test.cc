@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "perception/lines/line_extractor_factory.h"
+#include "plywood_paths.h"
 
 namespace plywood::perception {
 namespace {

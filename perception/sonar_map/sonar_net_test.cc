@@ -6,6 +6,8 @@
 #include <fstream>
 #include <random>
 
+#include "plywood_paths.h"
+
 namespace plywood::perception {
 namespace {
 

@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "plywood_paths.h"
 #include "sim/config/config_error.h"
 #include "sim/config/experiment_config.h"
 #include "sim/runner/experiment_runner.h"

@@ -3,6 +3,8 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "plywood_paths.h"
+
 namespace plywood::sim {
 
 std::filesystem::path DataRoot() {

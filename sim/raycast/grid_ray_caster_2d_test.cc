@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "plywood_paths.h"
 #include "sim/raycast/mujoco_ray_caster.h"
 #include "sim/world/mujoco_handles.h"
 #include "tests/support/ray_caster_test_support.h"

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "plywood_paths.h"
 #include "sim/world/mujoco_handles.h"
 
 namespace plywood::sim {

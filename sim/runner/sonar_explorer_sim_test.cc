@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "perception/sonar_map/sonar_explorer.h"
+#include "plywood_paths.h"
 #include "sim/config/config_error.h"
 #include "sim/config/experiment_config.h"
 #include "sim/runner/experiment_runner.h"

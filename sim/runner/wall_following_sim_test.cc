@@ -12,6 +12,7 @@
 #include <numbers>
 #include <string>
 
+#include "plywood_paths.h"
 #include "sim/config/experiment_config.h"
 #include "sim/runner/experiment_runner.h"
 #include "sim/world/ground_truth_walls.h"

@@ -6,6 +6,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "plywood_paths.h"
+
 namespace plywood::testing {
 
 std::string Slurp(const std::filesystem::path& path) {

@@ -2,6 +2,8 @@
 
 #include <fstream>
 
+#include "plywood_paths.h"
+
 namespace plywood::testing {
 
 std::filesystem::path SourceRoot() { return PLYWOOD_SOURCE_ROOT; }

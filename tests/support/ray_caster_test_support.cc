@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 #include <mujoco/mujoco.h>
 
+#include "plywood_paths.h"
+
 namespace plywood::testing {
 
 int CompiledWorld::Geom(const char* name) const {
