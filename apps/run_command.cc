@@ -8,7 +8,6 @@
 #include "apps/command.h"
 #include "eval/protocol.h"
 #include "sim/config/experiment_config.h"
-#include "sim/runner/run_directory.h"
 
 namespace plywood::apps {
 
@@ -49,20 +48,18 @@ Command AddRunCommand(CLI::App& app) {
       "  plywood run experiments/default.yaml\n"
       "  plywood run experiments/default.yaml --out runs/demo --seed 2 --set duration_s=30 "
       "--force");
-  return {
-      cli, [flags, seed] {
-        std::vector<std::string> overrides = flags->overrides;
-        if (seed->count() > 0) overrides.push_back("seed=" + flags->seed);
-        const sim::ExperimentConfig config =
-            sim::LoadExperimentConfig(flags->experiment, overrides);
-        const std::filesystem::path out_dir =
-            flags->out.empty() ? "runs/" + config.name + "-seed" + std::to_string(config.seed)
-                               : flags->out;
-        eval::FindProtocol(config);  // an unknown protocol must not cost an earlier run
-        sim::PrepareRunDirectory(out_dir, flags->force);
-        const bool snapshots = config.output.snapshot && !flags->no_snapshot;
-        return eval::RunProtocol(eval::ProtocolContext{config, out_dir, flags->quiet, snapshots});
-      }};
+  return {cli, [flags, seed] {
+            std::vector<std::string> overrides = flags->overrides;
+            if (seed->count() > 0) overrides.push_back("seed=" + flags->seed);
+            const sim::ExperimentConfig config =
+                sim::LoadExperimentConfig(flags->experiment, overrides);
+            const std::filesystem::path out_dir =
+                flags->out.empty() ? "runs/" + config.name + "-seed" + std::to_string(config.seed)
+                                   : flags->out;
+            const bool snapshots = config.output.snapshot && !flags->no_snapshot;
+            return eval::RunProtocol(
+                eval::ProtocolContext{config, out_dir, flags->quiet, snapshots, flags->force});
+          }};
 }
 
 }  // namespace plywood::apps

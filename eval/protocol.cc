@@ -1,11 +1,14 @@
 #include "eval/protocol.h"
 
+#include <cstdio>
+
 #include "eval/lines/seed000_protocol.h"
 #include "eval/lines/seed004_ransac_protocol.h"
 #include "eval/odometry/umbmark_protocol.h"
 #include "eval/odometry/weighted_gain_protocol.h"
 #include "eval/single_run_protocol.h"
 #include "sim/config/config_error.h"
+#include "sim/runner/run_directory.h"
 
 namespace plywood::eval {
 
@@ -36,7 +39,15 @@ const Protocol& FindProtocol(const sim::ExperimentConfig& config) {
 }
 
 int RunProtocol(const ProtocolContext& context) {
-  return FindProtocol(context.config).run(context);
+  const Protocol& protocol = FindProtocol(context.config);
+  sim::StagedRunDirectory staged(context.out_dir, context.force);
+  ProtocolContext inside = context;
+  inside.out_dir = staged.staging();
+  const int code = protocol.run(inside);
+  if (code != 0) return code;
+  staged.Commit();
+  if (!context.quiet) std::printf("%-34s %s\n", "results", context.out_dir.c_str());
+  return 0;
 }
 
 }  // namespace plywood::eval

@@ -16,6 +16,7 @@ struct ProtocolContext {
   std::filesystem::path out_dir;
   bool quiet = false;
   bool snapshots = true;
+  bool force = false;  // replace an earlier run in out_dir (sim::StagedRunDirectory)
 };
 
 // One way of running and scoring an experiment: the plain run ("single") or a paper's multi-run
@@ -34,7 +35,10 @@ const std::vector<Protocol>& Protocols();
 // The protocol named by config.protocol. @throws sim::ConfigError naming `protocol` when unknown.
 const Protocol& FindProtocol(const sim::ExperimentConfig& config);
 
-// Runs config.protocol with `context`.
+// Runs config.protocol with `context`: out_dir is checked first (sim::StagedRunDirectory, before
+// anything is simulated), the protocol writes into a staging folder beside it, and the folder is
+// renamed to out_dir with its completion marker only when the protocol returns 0. Prints the
+// results line unless quiet.
 int RunProtocol(const ProtocolContext& context);
 
 }  // namespace plywood::eval

@@ -35,7 +35,7 @@ std::vector<render::PathOverlay> TrajectoryOverlays(const sim::RunRecord& record
   return paths;
 }
 
-void PrintSummary(const sim::ExperimentRunner& runner, const std::string& out_dir) {
+void PrintSummary(const sim::ExperimentRunner& runner) {
   const sim::RunCost& cost = runner.cost();
   const sim::Metrics& m = runner.record().metrics;
   std::printf("\n%-34s %s\n", "experiment", runner.config().name.c_str());
@@ -60,7 +60,6 @@ void PrintSummary(const sim::ExperimentRunner& runner, const std::string& out_di
     std::printf("%-34s %.0f\n", "bumper contact samples",
                 m.Number("sensors.bumpers.contact_samples"));
   }
-  std::printf("%-34s %s\n", "results", out_dir.c_str());
 }
 
 }  // namespace
@@ -103,7 +102,7 @@ int SingleRunProtocol(const ProtocolContext& context) {
     std::ofstream(out_dir + "/timing.json") << eval::LineTimingJson(line_scores);
     WriteLinesCsv(context.out_dir / "lines.csv", LinesCsvRows(line_scores));
   }
-  if (!quiet) PrintSummary(runner, out_dir);
+  if (!quiet) PrintSummary(runner);
   if (!quiet) {
     for (const auto& s : line_scores) {
       std::printf(

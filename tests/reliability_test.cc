@@ -2,14 +2,25 @@
 // with one line `plywood: FILE: FIELD: what is wrong` and exit code 2, and write no results.
 
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "eval/sonar_map/sonar_ground_truth.h"
 #include "perception/logs/carmen_log.h"
+#include "plywood_paths.h"
+#include "sim/config/config_error.h"
+#include "sim/config/experiment_config.h"
+#include "sim/runner/experiment_runner.h"
 #include "tests/support/cli_test_support.h"
 #include "tests/support/mujoco_test_support.h"
 
@@ -217,6 +228,19 @@ TEST_F(ReliabilityTest, ReplayOfALogWithoutScansIsRefusedNamingTheFile) {
                 {"inf.log:1", "front_laser_max"});
 }
 
+TEST_F(ReliabilityTest, NanOrNegativeRangesInALogAreRefusedWithTheirLine) {
+  const fs::path dir = Dir();
+  const std::string tail = " 0 0 0 0 0 0 1 host 1\n";
+  const fs::path nan =
+      WriteFile(dir / "nan.log", "FLASER 3 1 2 3" + tail + "FLASER 3 1 nan 3" + tail);
+  ExpectOneLine(RunPlywood("replay " + nan.string() + " --out " + (dir / "r").string(), dir),
+                {"nan.log:2", "FLASER range", "not a finite number: 'nan'"});
+  const fs::path negative = WriteFile(dir / "negative.log", "FLASER 3 1 -2 3" + tail);
+  ExpectOneLine(RunPlywood("replay " + negative.string() + " --out " + (dir / "r").string(), dir),
+                {"negative.log:1", "FLASER range", "negative range -2"});
+  EXPECT_FALSE(fs::exists(dir / "r"));
+}
+
 TEST_F(ReliabilityTest, AWorldWithoutAFloorIsRefused) {
   const fs::path dir = Dir();
   const fs::path world = WriteFile(dir / "floorless.xml",
@@ -282,6 +306,180 @@ TEST_F(ReliabilityTest, AnUnreadableExperimentIsNotReportedAsMissing) {
   const CliResult result = RunPlywood("run " + folder.string() + " --quiet", dir);
   ExpectOneLine(result, {"folder.yaml", "not a regular file"});
   EXPECT_EQ(result.err.find("no such"), std::string::npos) << result.err;
+}
+
+// --- 7. Run directories are transactional ------------------------------------------------------
+
+// Output folders `plywood run` cannot write, each refused before anything is simulated: the run
+// asked for is 1e5 s (5e7 steps), so a refusal after simulating would time the test out.
+TEST_F(ReliabilityTest, OutputFoldersThatCannotBeWrittenAreRefusedBeforeSimulating) {
+  const fs::path dir = Dir();
+  const fs::path file = WriteFile(dir / "experiment.yaml", HallExperiment(0.0, 0.0));
+  const fs::path a_file = WriteFile(dir / "results.txt", "mine\n");
+  const std::vector<std::pair<fs::path, std::vector<std::string>>> cases = {
+      {a_file, {"results.txt", "exists and is not a directory"}},
+      {a_file / "run", {"results.txt/run", "cannot create the output folder", "Not a directory"}},
+      {dir / std::string(300, 'x'), {"cannot create the output folder", "File name too long"}},
+      // The name fits, the staging folder beside it (NAME.partial-PID) does not.
+      {dir / std::string(250, 'y'), {"cannot make the staging folder", "File name too long"}},
+      {"/sys/plywood_out", {"/sys/plywood_out", "cannot create the output folder"}},
+  };
+  for (const auto& [out, words] : cases) {
+    SCOPED_TRACE(out.string());
+    ExpectOneLine(
+        RunPlywood("run " + file.string() + " --quiet --set duration_s=1e5 --out " + out.string(),
+                   dir),
+        words);
+  }
+  EXPECT_EQ(Slurp(a_file), "mine\n");
+  EXPECT_FALSE(fs::exists(dir / std::string(250, 'y')));  // the empty target it made is gone
+}
+
+TEST_F(ReliabilityTest, AKilledRunIsNeverScoredAndTheNextRunCleansUp) {
+  const fs::path dir = Dir();
+  const fs::path file = WriteFile(dir / "experiment.yaml", HallExperiment(0.0, 0.0));
+  const fs::path out = dir / "out";
+  const fs::path plywood = fs::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    freopen("/dev/null", "w", stdout);
+    freopen("/dev/null", "w", stderr);
+    execl(plywood.c_str(), plywood.c_str(), "run", file.c_str(), "--quiet", "--set",
+          "duration_s=1e5", "--out", out.c_str(), static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  const fs::path staging = out.string() + ".partial-" + std::to_string(pid);
+  for (int i = 0; i < 6000 && !fs::exists(staging); ++i) usleep(10000);
+  ASSERT_TRUE(fs::exists(staging)) << "the run never started";
+  kill(pid, SIGKILL);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status));
+
+  const fs::path estimate = WriteFile(dir / "estimate.tum", "0 0 0 0 0 0 0 1\n");
+  const CliResult score =
+      RunPlywood("score trajectory " + out.string() + " " + estimate.string(), dir);
+  ExpectOneLine(score, {out.string() + ": not a finished run: no complete.json",
+                        "out.partial-" + std::to_string(pid) +
+                            " beside it is the partial output of a run that was killed"});
+  // The killed run's folder is no result: a new run takes its place without --force and removes
+  // what the killed one left.
+  const CliResult rerun =
+      RunPlywood("run " + file.string() + " --quiet --out " + out.string(), dir);
+  EXPECT_EQ(rerun.exit_code, 0) << rerun.err;
+  EXPECT_FALSE(fs::exists(staging));
+  EXPECT_TRUE(fs::is_regular_file(out / "complete.json"));
+  const CliResult scored = RunPlywood(
+      "score trajectory " + out.string() + " " + (out / "trajectory.encoder.tum").string(), dir);
+  // A robot that stands still has no drift per distance: scored, but refused (section 8).
+  ExpectOneLine(scored, {"trajectory.csv", "less than 1 cm"});
+}
+
+TEST_F(ReliabilityTest, ATruncatedFileMakesARunUnfinished) {
+  const fs::path dir = Dir();
+  const CliResult run = Run(HallExperiment(0.0, 0.0, "controller: {type: square_path}\n",
+                                           "{encoders: {}, laser: {rate_hz: 5}}"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const fs::path out = dir / "out";  // Run() wrote into this test's folder
+  const std::string log = Slurp(out / "laser.log");
+  ASSERT_GT(log.size(), 1000u);
+  WriteFile(out / "laser.log", log.substr(0, 1000));
+  const CliResult score = RunPlywood(
+      "score trajectory " + out.string() + " " + (out / "trajectory.encoder.tum").string(), dir);
+  ExpectOneLine(score, {"not a finished run: laser.log is 1000 bytes, complete.json says " +
+                        std::to_string(log.size())});
+}
+
+// --- 8. Scorers never report a number against empty ground truth -------------------------------
+
+TEST_F(ReliabilityTest, LinesWithNoWallInViewAreRefused) {
+  // The hall's walls are 4 m away; a 5 cm range cut leaves nothing to find.
+  ExpectRefused(HallExperiment(0.0, 0.0, "lines: {extractors: [split_and_merge]}\n",
+                               "{encoders: {}, laser: {}}"),
+                "--set lines.range_cut_m=0.05",
+                {"experiment.yaml", "lines", "no ground-truth wall was observable", "recall"});
+}
+
+TEST_F(ReliabilityTest, ARobotThatDoesNotTravelHasNoDriftPercent) {
+  const fs::path dir = Dir();
+  const CliResult run = Run(HallExperiment(0.0, 0.0));  // no controller: the robot stands
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string metrics = Slurp(dir / "out" / "metrics.json");
+  EXPECT_NE(metrics.find("\"drift_percent\": null"), std::string::npos) << metrics;
+  EXPECT_NE(metrics.find("\"final_error_m\": "), std::string::npos) << metrics;
+  const CliResult score = RunPlywood("score trajectory " + (dir / "out").string() + " " +
+                                         (dir / "out" / "trajectory.encoder.tum").string(),
+                                     dir);
+  ExpectOneLine(score, {(dir / "out" / "trajectory.csv").string(), "truth_x_m", "less than 1 cm",
+                        "drift_percent"});
+}
+
+TEST_F(ReliabilityTest, NoReachableFreeSpaceGivesNoMapScore) {
+  const fs::path dir = Dir();
+  const fs::path file = WriteFile(dir / "experiment.yaml", ExplorerExperiment(-0.8, -0.5));
+  const sim::ExperimentConfig config = sim::LoadExperimentConfig(file);
+  const sim::ExperimentRunner runner(config);
+  const auto truth = eval::MakeOccupancyTruth(runner.scene().model(), {-0.8, -0.5}, file.string());
+  const eval::OccupancyError all_free =
+      eval::ScoreOccupancy(*truth, [](const Eigen::Vector2d&) { return true; });
+  EXPECT_GT(all_free.AreaTotalM2(), 1.0);
+  // From inside obstacle_0 nothing is reachable: e would be 0 / 0 (it used to read 1).
+  try {
+    eval::MakeOccupancyTruth(runner.scene().model(), {0.3, 1.215}, file.string());
+    FAIL() << "a map was scored against no free space";
+  } catch (const sim::ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              file.string() +
+                  ": robot.spawn: (0.3, 1.215) is not in free space: no reachable area to score "
+                  "a map against");
+  }
+}
+
+// --- 9. CSV outputs ------------------------------------------------------------------------------
+
+// Every CSV of a run: one header row (no '#' line), every row as wide as the header, and times at
+// the timestep's precision (0.002 s: at most 3 decimals, never 0.09999999999999999).
+TEST_F(ReliabilityTest, CsvOutputsHaveOneHeaderRowAndTimesAtTheStepPrecision) {
+  const fs::path dir = Dir();
+  const std::string p3dx = HallExperiment(0.0, 0.0, "controller: {type: square_path}\n",
+                                          "{encoders: {}, gyro: {}, bumpers: {}, sonar: {}, "
+                                          "laser: {rate_hz: 5}}");
+  std::string magellan = ExplorerExperiment(-0.8, -0.5);
+  magellan.replace(magellan.find("sensors: {"), 10, "sensors: {ir_scanner: {}, ir_ring: {}, ");
+  int checked_times = 0;
+  for (const auto& [name, yaml] : {std::pair{"p3dx", p3dx}, std::pair{"magellan", magellan}}) {
+    const fs::path out = dir / name;
+    const fs::path file = WriteFile(dir / (std::string(name) + ".yaml"), yaml);
+    const CliResult run = RunPlywood(
+        "run " + file.string() + " --quiet --set duration_s=2 --out " + out.string(), dir);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    for (const auto& entry : fs::directory_iterator(out)) {
+      if (entry.path().extension() != ".csv") continue;
+      SCOPED_TRACE(entry.path().string());
+      std::istringstream lines(Slurp(entry.path()));
+      std::string header;
+      ASSERT_TRUE(std::getline(lines, header));
+      EXPECT_NE(header.front(), '#');
+      const auto fields = std::count(header.begin(), header.end(), ',');
+      const bool timed = header.rfind("time_s,", 0) == 0;
+      for (std::string row; std::getline(lines, row);) {
+        ASSERT_EQ(std::count(row.begin(), row.end(), ','), fields) << row;
+        if (!timed) continue;
+        const std::string time = row.substr(0, row.find(','));
+        const auto point = time.find('.');
+        EXPECT_TRUE(time.find('e') == std::string::npos &&
+                    (point == std::string::npos || time.size() - point - 1 <= 3))
+            << time;
+        ++checked_times;
+      }
+    }
+  }
+  EXPECT_GT(checked_times, 100);
+  EXPECT_EQ(Slurp(dir / "p3dx" / "laser_hits.csv").substr(0, 40),
+            "time_s,beam_0_segment,beam_1_segment,bea");
+  EXPECT_EQ(Slurp(dir / "magellan" / "ir_scanner.csv").substr(0, 61),
+            "time_s,angle_min_rad,angle_increment_rad,range_max_m,range_0_");
 }
 
 }  // namespace

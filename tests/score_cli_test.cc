@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include "sim/runner/run_directory.h"
 #include "tests/support/cli_test_support.h"
 #include "tests/support/metrics_json_test_support.h"
 #include "tests/support/mujoco_test_support.h"
@@ -168,10 +169,11 @@ TEST(ScoreCliTest, BadFilesFailWithOneLineNamingFileLineAndField) {
 TEST(ScoreCliTest, MissingRunFilesAndOtherProtocolsAreNamed) {
   const fs::path dir = testing::MakeTempDir("score_cli_missing");
   const fs::path tum = testing::WriteFile(dir / "e.tum", "0 0 0 0 0 0 0 1\n");
-  // A directory that is not a run.
+  // A directory that is not a (finished) run.
   auto r = RunPlywood("score trajectory " + dir.string() + " " + tum.string(), dir);
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(r.err.rfind("plywood: " + (dir / "trajectory.csv").string() + ": missing", 0), 0u)
+  EXPECT_EQ(r.err.rfind("plywood: " + dir.string() + ": not a finished run: no complete.json", 0),
+            0u)
       << r.err;
   // A run without a lines: section has no laser_scans.csv.
   const fs::path plain = dir / "plain";
@@ -179,6 +181,7 @@ TEST(ScoreCliTest, MissingRunFilesAndOtherProtocolsAreNamed) {
   for (const char* name : {"config.yaml", "walls.csv", "laser_hits.csv"}) {
     fs::copy_file(RunDir() / name, plain / name);
   }
+  sim::WriteCompletionRecord(plain);  // finished, as far as its marker goes
   r = RunPlywood("score lines " + plain.string() + " " + (RunDir() / "lines.csv").string(), dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err.rfind("plywood: " + (plain / "laser_scans.csv").string() + ": missing", 0), 0u)
@@ -188,6 +191,7 @@ TEST(ScoreCliTest, MissingRunFilesAndOtherProtocolsAreNamed) {
   fs::create_directories(rooms);
   fs::copy_file(testing::SourceRoot() / "experiments" / "seed000_rooms.yaml",
                 rooms / "config.yaml");
+  sim::WriteCompletionRecord(rooms);
   r = RunPlywood("score lines " + rooms.string() + " " + (RunDir() / "lines.csv").string(), dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("config.yaml: protocol: 'seed000_rooms' is a multi-run protocol"),

@@ -10,7 +10,6 @@
 #include "sim/config/experiment_config.h"
 #include "sim/config/robot_catalog.h"
 #include "sim/runner/format_number.h"
-#include "sim/runner/run_directory.h"
 
 namespace plywood::eval {
 namespace {
@@ -107,9 +106,8 @@ BenchFigures RunBench(const BenchOptions& options) {
       std::filesystem::temp_directory_path() / "plywood-bench-default-run";
   figures.default_run_wall_s = std::numeric_limits<double>::infinity();
   for (int r = 0; r < options.repeats; ++r) {
-    sim::PrepareRunDirectory(out_dir, true);
     const auto start = std::chrono::steady_clock::now();
-    RunProtocol(ProtocolContext{default_run, out_dir, true, default_run.output.snapshot});
+    RunProtocol(ProtocolContext{default_run, out_dir, true, default_run.output.snapshot, true});
     figures.default_run_wall_s =
         std::min(figures.default_run_wall_s,
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "perception/lines/line_extractor_factory.h"
+#include "sim/config/config_error.h"
 #include "sim/runner/json_text.h"
 
 namespace plywood::eval {
@@ -95,7 +96,15 @@ std::vector<ExtractorScore> ScoreExtractors(std::span<const TruthScan> scans,
 }
 
 void SetLineMetrics(std::span<const ExtractorScore> scores, long scans, sim::Metrics& metrics,
-                    const std::string& prefix) {
+                    const std::string& source_file, const std::string& prefix) {
+  // Observability is the truth's, the same for every extractor.
+  if (!scores.empty() && scores.front().score.observable == 0) {
+    throw sim::ConfigError(source_file, prefix,
+                           "no ground-truth wall was observable in any of the " +
+                               std::to_string(scans) +
+                               " laser scans (scoring.min_observed_rays returns within "
+                               "range_cut_m): recall is undefined, nothing to score against");
+  }
   metrics.Set(prefix + ".scans", static_cast<double>(scans));
   for (const ExtractorScore& s : scores) {
     const std::string key = prefix + "." + s.name + ".";
@@ -120,7 +129,8 @@ std::vector<ExtractorScore> AddLineMetrics(sim::ExperimentRunner& runner) {
     scans.push_back(MakeTruthScan(one, record.walls, config.range_cut_m));
   }
   std::vector<ExtractorScore> scores = ScoreExtractors(scans, config);
-  SetLineMetrics(scores, static_cast<long>(scans.size()), record.metrics);
+  SetLineMetrics(scores, static_cast<long>(scans.size()), record.metrics,
+                 runner.config().source_file);
   return scores;
 }
 

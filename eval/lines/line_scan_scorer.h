@@ -60,9 +60,11 @@ std::vector<ExtractorScore> ScoreExtractors(std::span<const TruthScan> scans,
                                             const sim::LinesConfig& config);
 
 // Adds lines.<extractor>.{recall, precision, sigma_r_m, sigma_alpha_deg, points_per_line,
-// lines_per_scan} and lines.scans to `metrics`.
+// lines_per_scan} and lines.scans to `metrics`. A scorer never reports a number against empty
+// ground truth: @throws sim::ConfigError naming `source_file` and `lines` when no ground-truth
+// wall was observable in any scan (recall would be 0 / 0).
 void SetLineMetrics(std::span<const ExtractorScore> scores, long scans, sim::Metrics& metrics,
-                    const std::string& prefix = "lines");
+                    const std::string& source_file, const std::string& prefix = "lines");
 
 // The post-run scorer of `lines:`: every laser scan of the run, scored with the config's
 // extractors; metrics into the run's record. Returns the scores (with timings) for printing, or

@@ -83,14 +83,14 @@ LogReplaySummary RunLogReplay(const LogReplayRequest& request) {
   LogReplaySummary summary;
   summary.out_dir = request.out_dir.empty() ? DefaultReplayDirectory(request.log, request.extractor)
                                             : request.out_dir;
-  sim::PrepareRunDirectory(summary.out_dir, request.force);
+  sim::StagedRunDirectory staged(summary.out_dir, request.force);
+  const std::filesystem::path& dir = staged.staging();
   summary.skipped_lines = log.skipped_lines;
   summary.result = perception::ReplayLog(log, *extractor);
   const perception::ReplayResult& result = summary.result;
 
-  std::filesystem::create_directories(summary.out_dir);
   sim::WriteTextFile(
-      summary.out_dir / "config.yaml",
+      dir / "config.yaml",
       ReplayConfigYaml(request,
                        DefaultReplayDirectory(request.log, request.extractor).filename().string(),
                        lines));
@@ -104,12 +104,13 @@ LogReplaySummary RunLogReplay(const LogReplayRequest& request) {
   metrics.Set("replay.rms_m", result.rays.RmsM());
   metrics.Set("replay.rays_per_line", result.RaysPerLine());
   metrics.Set("replay.lines_per_scan", result.LinesPerScan());
-  sim::WriteTextFile(summary.out_dir / "metrics.json", metrics.ToJson());
+  sim::WriteTextFile(dir / "metrics.json", metrics.ToJson());
   sim::WriteTextFile(
-      summary.out_dir / "timing.json",
+      dir / "timing.json",
       sim::WriteJson(nlohmann::ordered_json{{"replay", {{"us_per_scan", result.UsPerScan()}}}},
                      {.layout = sim::JsonStyle::Layout::kOneLine}));
-  WriteSegmentsPicture(log, result, summary.out_dir / "segments.png");
+  WriteSegmentsPicture(log, result, dir / "segments.png");
+  staged.Commit();
   return summary;
 }
 

@@ -16,7 +16,7 @@ struct LogReplayRequest {
   std::vector<std::string> overrides;
   bool skip_bad = false;          // skip and count malformed log lines instead of failing
   std::filesystem::path out_dir;  // empty: DefaultReplayDirectory(log, extractor)
-  bool force = false;             // replace an earlier run in out_dir (sim::PrepareRunDirectory)
+  bool force = false;             // replace an earlier run in out_dir (sim::StagedRunDirectory)
 };
 
 // What the replay found, for printing; the same figures are in DIR/metrics.json.
@@ -34,8 +34,9 @@ std::filesystem::path DefaultReplayDirectory(const std::filesystem::path& log,
 // DIR/config.yaml (the replay's log, extractor and resolved `lines:` options), metrics.json
 // (replay.{extractor, scans, skipped_lines, valid_rays, lines, rays_explained, rms_m,
 // rays_per_line, lines_per_scan}: deterministic figures only), timing.json (wall clock) and
-// segments.png (every segment placed by the log's poses). Every input is checked, then the output
-// directory, before anything is extracted.
+// segments.png (every segment placed by the log's poses), staged beside DIR and renamed into place
+// with its completion marker last (sim::StagedRunDirectory). Every input is checked, then the
+// output directory, before anything is extracted.
 // @throws sim::ConfigError or std::invalid_argument (one line: exit code 2) for a bad option, an
 // unknown extractor, a missing or malformed log or a refused output directory.
 LogReplaySummary RunLogReplay(const LogReplayRequest& request);

@@ -125,7 +125,7 @@ int Seed000Protocol(const ProtocolContext& context) {
     if (context.snapshots) WriteRoomPicture(result, lines, out / (stem + ".png"));
   }
   for (auto& s : total) s.us_per_scan /= static_cast<double>(std::max(1L, total_scans));
-  eval::SetLineMetrics(total, total_scans, metrics);
+  eval::SetLineMetrics(total, total_scans, metrics, config.source_file);
 
   sim::WriteTextFile(out / "config.yaml", sim::ExperimentConfigToYaml(config));
   sim::WriteTextFile(out / "metrics.json", metrics.ToJson());
@@ -141,7 +141,6 @@ int Seed000Protocol(const ProtocolContext& context) {
                   s.score.Precision(), s.score.SigmaRM(), s.score.SigmaAlphaDeg(),
                   s.score.PointsPerLine(), s.us_per_scan);
     }
-    std::printf("%-16s %s\n", "results", out.c_str());
   }
   return 0;
 }

@@ -151,7 +151,6 @@ int Seed004RansacProtocol(const ProtocolContext& context) {
   WriteLinesCsv(out / "lines.csv", line_rows);
   std::ofstream(out / "config.yaml") << sim::ExperimentConfigToYaml(context.config);
   std::ofstream(out / "metrics.json") << metrics.ToJson();
-  if (!context.quiet) std::printf("%-9s %s\n", "results", out.c_str());
   return 0;
 }
 

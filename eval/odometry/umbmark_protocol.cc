@@ -77,7 +77,6 @@ int UmbmarkProtocol(const ProtocolContext& context) {
       std::printf("%-34s %.4f m (%.1fx smaller)\n", "E_max,syst after", a.e_max_syst_m,
                   a.e_max_syst_m > 0 ? b.e_max_syst_m / a.e_max_syst_m : 0.0);
     }
-    std::printf("%-34s %s\n", "results", out.c_str());
   }
   return 0;
 }

@@ -34,7 +34,7 @@ struct CsvTable {
 
 struct CsvReadOptions {
   bool header = true;         // the first row names the columns; every row must have as many fields
-  bool comments = false;      // lines starting with '#' are skipped (Plywood's laser_hits.csv)
+  bool comments = false;      // lines starting with '#' are skipped (files made by other tools)
   bool rows_required = true;  // a file with no rows (after the header) is an error
 };
 

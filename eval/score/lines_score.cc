@@ -45,7 +45,7 @@ ScoreReport ScoreLinesFile(const std::filesystem::path& run_dir, const std::file
   }
 
   ScoreReport report;
-  SetLineMetrics(scores, scans, report.metrics);
+  SetLineMetrics(scores, scans, report.metrics, (run_dir / "laser_scans.csv").string());
   char line[512];
   std::snprintf(line, sizeof(line), "%-18s %s: %ld laser scans, range cut %s m\n", "run",
                 run_dir.c_str(), scans, sim::FormatNumber(run.lines.range_cut_m).c_str());

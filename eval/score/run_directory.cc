@@ -2,14 +2,13 @@
 
 #include "eval/score/csv_table.h"
 #include "sim/config/config_error.h"
+#include "sim/runner/run_directory.h"
 
 namespace plywood::eval {
 
 std::filesystem::path RunFile(const std::filesystem::path& run_dir, const std::string& name,
                               const std::string& why) {
-  if (!std::filesystem::is_directory(run_dir)) {
-    throw sim::ConfigError(run_dir.string(), "", "not a directory (give a run's --out folder)");
-  }
+  sim::RequireFinishedRun(run_dir);  // a killed or failed run is never scored
   const std::filesystem::path path = run_dir / name;
   if (!std::filesystem::is_regular_file(path)) {
     throw sim::ConfigError(path.string(), "", "missing (" + why + ")");

@@ -11,7 +11,7 @@ namespace plywood::eval {
 // The files of a finished run (docs/run_outputs.md) that the file scorers compare with.
 
 // DIR/NAME, which must exist. @throws sim::ConfigError "DIR/NAME: missing (WHY)", or naming DIR
-// when it is not a directory.
+// when it is not a finished run (sim::RequireFinishedRun: killed, failed, truncated).
 std::filesystem::path RunFile(const std::filesystem::path& run_dir, const std::string& name,
                               const std::string& why);
 

@@ -15,8 +15,7 @@ RunLaserScans LoadRunLaserScans(const std::filesystem::path& run_dir) {
   const sim::GroundTruthWalls walls =
       ReadWallsCsv(RunFile(run_dir, "walls.csv", "the run's ground-truth wall segments"));
   const CsvTable scans = ReadCsv(RunFile(run_dir, "laser_scans.csv", kWhy));
-  const CsvTable hits =
-      ReadCsv(RunFile(run_dir, "laser_hits.csv", kWhy), {.header = false, .comments = true});
+  const CsvTable hits = ReadCsv(RunFile(run_dir, "laser_hits.csv", kWhy));
 
   const char* kColumns[] = {"time_s",           "sensor_x_m",    "sensor_y_m",
                             "sensor_theta_rad", "angle_min_rad", "angle_increment_rad",
@@ -35,6 +34,17 @@ RunLaserScans LoadRunLaserScans(const std::filesystem::path& run_dir) {
                            "missing: no beams");
   }
   const std::size_t beams = scans.header.size() - fixed;
+  for (std::size_t c = 0; c < hits.header.size() || c < beams + 1; ++c) {
+    const std::string expected = c == 0 ? "time_s" : "beam_" + std::to_string(c - 1) + "_segment";
+    if (c >= hits.header.size() || c > beams || hits.header[c] != expected) {
+      throw sim::ConfigError(hits.file + ":" + std::to_string(hits.header_line),
+                             c < hits.header.size() ? hits.header[c] : expected,
+                             "expected the header time_s,beam_0_segment,..,beam_" +
+                                 std::to_string(beams - 1) +
+                                 "_segment (one column per beam of "
+                                 "laser_scans.csv)");
+    }
+  }
   if (hits.rows.size() != scans.rows.size()) {
     throw sim::ConfigError(hits.file, "",
                            std::to_string(hits.rows.size()) + " scans, but laser_scans.csv has " +
@@ -56,22 +66,14 @@ RunLaserScans LoadRunLaserScans(const std::filesystem::path& run_dir) {
     for (std::size_t i = 0; i < beams; ++i) {
       scan.ranges_m.push_back(scans.Number(row, fixed + i, scans.header[fixed + i]));
     }
-    const CsvRow& hit_row = hits.rows[k];
-    if (hit_row.fields.size() != beams + 1) {
-      hits.Fail(hit_row,
-                hit_row.fields.size() < beams + 1
-                    ? "beam " + std::to_string(hit_row.fields.size() - 1)
-                    : "line",
-                "wrong column count: " + std::to_string(hit_row.fields.size()) +
-                    " fields, expected time_s and " + std::to_string(beams) + " beams");
-    }
+    const CsvRow& hit_row = hits.rows[k];  // as many fields as the header (ReadCsv)
     if (hits.Number(hit_row, 0, "time_s") != scan.time_s) {
       hits.Fail(hit_row, "time_s",
                 "does not match laser_scans.csv's scan " + std::to_string(k) + " at " +
                     sim::FormatNumber(scan.time_s) + " s");
     }
     for (std::size_t i = 0; i < beams; ++i) {
-      const std::string field = "beam " + std::to_string(i);
+      const std::string& field = hits.header[i + 1];
       const long id = hits.Integer(hit_row, i + 1, field);
       if (id < -1 || id >= static_cast<long>(walls.segments.size())) {
         hits.Fail(hit_row, field,

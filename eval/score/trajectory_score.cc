@@ -92,6 +92,13 @@ ScoreReport ScoreTrajectoryFile(const std::filesystem::path& run_dir,
 
   ScoreReport report;
   const double distance = robot::ScoreTrajectory(truth, truth).distance_travelled_m;
+  if (!(distance >= robot::kMinDriftDistanceM)) {
+    // A scorer never reports a number against empty ground truth (drift_percent divides by it).
+    throw sim::ConfigError((run_dir / "trajectory.csv").string(), "truth_x_m, truth_y_m",
+                           "the ground truth travels " + sim::FormatNumber(distance) +
+                               " m, less than 1 cm: drift_percent (per distance travelled) is "
+                               "undefined, nothing to score against");
+  }
   report.metrics.Set("truth.distance_m", distance);
   char line[512];
   std::snprintf(line, sizeof(line), "%-18s %s: %zu samples, %s to %s, %.3f m travelled\n", "run",

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include "sim/config/config_error.h"
+#include "sim/runner/format_number.h"
+
 namespace plywood::eval {
 
 bool ReachableSpace::IsFree(const Eigen::Vector2d& p_W) const {
@@ -36,7 +39,8 @@ ReachableSpace ComputeReachableSpace(const sim::OccupancyRaster& raster,
 }
 
 std::unique_ptr<OccupancyTruth> MakeOccupancyTruth(const mjModel* model,
-                                                   const Eigen::Vector2d& start_W) {
+                                                   const Eigen::Vector2d& start_W,
+                                                   const std::string& spawn_source) {
   auto truth = std::make_unique<OccupancyTruth>();
   sim::OccupancyRasterOptions options;
   options.resolution_m = 0.01;
@@ -52,6 +56,12 @@ std::unique_ptr<OccupancyTruth> MakeOccupancyTruth(const mjModel* model,
         truth->y0 = std::min(truth->y0, iy);
         truth->y1 = std::max(truth->y1, iy);
       }
+  if (truth->x1 < truth->x0) {
+    throw sim::ConfigError(spawn_source, "robot.spawn",
+                           "(" + sim::FormatNumber(start_W.x()) + ", " +
+                               sim::FormatNumber(start_W.y()) +
+                               ") is not in free space: no reachable area to score a map against");
+  }
   return truth;
 }
 

@@ -4,7 +4,9 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "sim/world/occupancy_raster.h"
@@ -35,9 +37,13 @@ struct OccupancyTruth {
   }
 };
 
-// @throws std::invalid_argument when the model has no static geometry to rasterise.
+// A scorer never reports a number against empty ground truth:
+// @throws sim::ConfigError naming `spawn_source` (the experiment or the run's config.yaml) and
+// robot.spawn when no free space is reachable from `start_W` (e would be 0 / 0), and
+// std::invalid_argument when the model has no static geometry to rasterise.
 std::unique_ptr<OccupancyTruth> MakeOccupancyTruth(const mjModel* model,
-                                                   const Eigen::Vector2d& start_W);
+                                                   const Eigen::Vector2d& start_W,
+                                                   const std::string& spawn_source);
 
 // A map's occupancy error e = A_e / A_tot: A_tot the reachable free area, A_e the area of the
 // scored box whose free / not-free label differs from the map's, sampled at the truth's cell
@@ -46,7 +52,9 @@ struct OccupancyError {
   double total_cells = 0.0;
   double error_cells = 0.0;
   double cell_area_m2 = 0.0;
-  double Error() const { return total_cells > 0 ? error_cells / total_cells : 1.0; }
+  double Error() const {  // NaN (JSON null) without free space; MakeOccupancyTruth refuses that
+    return total_cells > 0 ? error_cells / total_cells : std::numeric_limits<double>::quiet_NaN();
+  }
   double AreaTotalM2() const { return total_cells * cell_area_m2; }
   double AreaErrorM2() const { return error_cells * cell_area_m2; }
 };

@@ -44,7 +44,8 @@ bool AddSonarMapMetrics(sim::ExperimentRunner& runner) {
   const auto* explorer = dynamic_cast<const perception::SonarExplorer*>(runner.controller());
   if (explorer == nullptr) return false;
   const auto& spawn = runner.config().spawn;
-  const auto truth = MakeOccupancyTruth(runner.scene().model(), {spawn.x_m, spawn.y_m});
+  const auto truth = MakeOccupancyTruth(runner.scene().model(), {spawn.x_m, spawn.y_m},
+                                        runner.config().source_file);
   const perception::CognitiveMap map = explorer->Map();
   const OccupancyError map_error =
       ScoreOccupancy(*truth, [&](const Eigen::Vector2d& p) { return MapFree(map, p); });
@@ -78,7 +79,8 @@ void WriteSonarMapPictures(const sim::ExperimentRunner& runner, const std::strin
   const auto* explorer = dynamic_cast<const perception::SonarExplorer*>(runner.controller());
   if (explorer == nullptr) return;
   const auto& spawn = runner.config().spawn;
-  const auto truth = MakeOccupancyTruth(runner.scene().model(), {spawn.x_m, spawn.y_m});
+  const auto truth = MakeOccupancyTruth(runner.scene().model(), {spawn.x_m, spawn.y_m},
+                                        runner.config().source_file);
   const perception::CognitiveMap map = explorer->Map();
   // 1 px per cm, the room's box plus 0.3 m on every side.
   const int margin = 30;

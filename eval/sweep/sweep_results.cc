@@ -11,6 +11,7 @@
 #include "eval/sweep/sweep_csv.h"
 #include "sim/config/config_error.h"
 #include "sim/runner/metrics.h"
+#include "sim/runner/run_directory.h"
 #include "sim/runner/text_file.h"
 
 namespace plywood::eval {
@@ -144,7 +145,7 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
     std::vector<std::string> cell(row.begin() + 1, row.end());
     const fs::path run = out_dir / "runs" / id;
     const fs::path failure = out_dir / "failures" / (id + ".txt");
-    if (fs::is_regular_file(run / "metrics.json")) {
+    if (sim::WhyNotAFinishedRun(run).empty()) {  // a run without its marker never counts
       Row done{cell, ReadRunMetrics(run / "metrics.json")};
       for (const auto& [key, text] : done.metrics.text) metric_keys.insert(key);
       finished.push_back(std::move(done));

@@ -20,6 +20,7 @@
 
 #include "eval/sweep/sweep_csv.h"
 #include "sim/config/config_error.h"
+#include "sim/runner/run_directory.h"
 #include "sim/runner/text_file.h"
 
 namespace plywood::eval {
@@ -260,10 +261,11 @@ SweepRunOutcome RunSweepCells(const std::vector<SweepCell>& cells, const SweepLa
       if (entry.path().filename().string().rfind(cell.id + ".", 0) == 0)
         fs::remove_all(entry.path());
     }
-    if (fs::is_directory(layout.RunDir(cell.id))) {
+    if (sim::WhyNotAFinishedRun(layout.RunDir(cell.id)).empty()) {
       ++outcome.already_done;
       ++done;
     } else {
+      fs::remove_all(layout.RunDir(cell.id));  // the sweep's own folder: no finished run there
       todo.push_back(&cell);
     }
   }
@@ -293,7 +295,8 @@ SweepRunOutcome RunSweepCells(const std::vector<SweepCell>& cells, const SweepLa
     running.erase(it);
     ++outcome.ran;
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    if (code == 0 && fs::is_regular_file(partial / "metrics.json")) {
+    const std::string unfinished = code == 0 ? sim::WhyNotAFinishedRun(partial) : "";
+    if (code == 0 && unfinished.empty()) {
       fs::rename(partial, layout.RunDir(cell->id));  // the run counts from here on
       fs::remove(layout.FailureFile(cell->id));
       ++done;
@@ -301,7 +304,7 @@ SweepRunOutcome RunSweepCells(const std::vector<SweepCell>& cells, const SweepLa
       std::error_code ignored;
       fs::remove_all(partial, ignored);
       std::string line = ErrorLine(layout.LogFile(cell->id));
-      if (code == 0) line = "exited 0 without metrics.json";
+      if (code == 0) line = "exited 0 without a finished run: " + unfinished;
       sim::WriteTextFile(layout.FailureFile(cell->id), std::to_string(code) + "\n" + line + "\n");
       ++failed;
     }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "msgs/shortest_number.h"
+#include "robot/odometry/trajectory_metrics.h"
 
 namespace plywood::robot {
 
@@ -50,7 +51,10 @@ GainSearchResult SearchWeightedGains(const OdometryGeometry& geometry,
   if (run.encoders.empty() || run.gyro.empty()) {
     throw std::invalid_argument("run: needs encoder and gyro messages");
   }
-  if (!(run.distance_m > 0.0)) throw std::invalid_argument("run: distance_m must be > 0");
+  if (!(run.distance_m >= kMinDriftDistanceM)) {
+    throw std::invalid_argument("run: distance_m: drift is undefined below 1 cm of travel, got " +
+                                msgs::ShortestNumber(run.distance_m) + " m");
+  }
   const int n =
       static_cast<int>(std::floor((grid.max_gain - grid.min_gain) / grid.step + 1e-9)) + 1;
   GainSearchResult result;

@@ -1,6 +1,7 @@
 #include "robot/odometry/trajectory_metrics.h"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -25,9 +26,9 @@ TrajectoryErrors ScoreTrajectory(const std::vector<msgs::Pose2D>& truth,
   const msgs::Pose2D& e = estimate.back();
   errors.final_error_m = std::hypot(e.x_m - t.x_m, e.y_m - t.y_m);
   errors.heading_error_deg = msgs::WrapAngle(e.theta_rad - t.theta_rad) * 180.0 / std::numbers::pi;
-  errors.drift_percent = errors.distance_travelled_m > 0.0
+  errors.drift_percent = errors.distance_travelled_m >= kMinDriftDistanceM
                              ? 100.0 * errors.final_error_m / errors.distance_travelled_m
-                             : 0.0;
+                             : std::numeric_limits<double>::quiet_NaN();
   errors.ate_rms_m = std::sqrt(sum_squared / static_cast<double>(truth.size()));
   return errors;
 }

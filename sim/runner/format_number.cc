@@ -24,4 +24,15 @@ std::string FormatFixed(double value, int decimals) {
   return text;
 }
 
+double TimeAtStepPrecision(double time_s, double timestep_s) {
+  const auto read_back = [](const std::string& text) {
+    double value = 0.0;
+    std::from_chars(text.data(), text.data() + text.size(), value);
+    return value;
+  };
+  int decimals = 0;
+  while (decimals < 9 && read_back(FormatFixed(timestep_s, decimals)) != timestep_s) ++decimals;
+  return std::isfinite(time_s) ? read_back(FormatFixed(time_s, decimals)) : time_s;
+}
+
 }  // namespace plywood::sim

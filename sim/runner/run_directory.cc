@@ -1,22 +1,31 @@
 #include "sim/runner/run_directory.h"
 
+#include <signal.h>
+#include <unistd.h>
+
 #include <array>
+#include <cerrno>
 #include <fstream>
-#include <string>
+#include <map>
+#include <nlohmann/json.hpp>
 #include <string_view>
 
 #include "sim/config/config_error.h"
+#include "sim/runner/json_text.h"
+#include "sim/runner/text_file.h"
 
 namespace plywood::sim {
 namespace {
 
 namespace fs = std::filesystem;
 
+constexpr const char* kStagingInfix = ".partial-";
+
 // Every file name a run or a protocol writes (docs/run_outputs.md), and the patterns of the ones
 // named after something (trajectory.<estimator>.tum, <room>.png, cloud_<name>.png). --force
 // removes these and nothing else.
 bool IsRunOutputFile(const std::string& name) {
-  static constexpr std::array<std::string_view, 24> kNames = {
+  static constexpr std::array<std::string_view, 25> kNames = {
       "config.yaml",        "metrics.json",       "timing.json",
       "cognitive_map.json", "trajectory.csv",     "walls.csv",
       "laser.log",          "laser_hits.csv",     "laser_scans.csv",
@@ -24,7 +33,8 @@ bool IsRunOutputFile(const std::string& name) {
       "ir_scanner.csv",     "encoders.csv",       "gyro.csv",
       "bumpers.csv",        "rooms.csv",          "umbmark_runs.csv",
       "snapshot.png",       "occupancy_grid.png", "occupancy_partitions.png",
-      "segments.png",       "lines_truth.csv",    "lines_odometry.csv"};
+      "segments.png",       "lines_truth.csv",    "lines_odometry.csv",
+      kRunCompleteFile};
   for (std::string_view known : kNames) {
     if (name == known) return true;
   }
@@ -49,6 +59,43 @@ fs::path FirstForeignEntry(const fs::path& dir) {
   return {};
 }
 
+// `path` absolute and without a trailing '/' ("runs/x/" and "runs/x" are one target).
+fs::path Normalised(const fs::path& path) {
+  fs::path p = fs::absolute(path).lexically_normal();
+  if (!p.has_filename() && p.has_parent_path()) p = p.parent_path();
+  return p;
+}
+
+// The staging folders of runs into `target` (TARGET.partial-PID), with the PID of each.
+std::map<fs::path, long> StagingFolders(const fs::path& target) {
+  std::map<fs::path, long> found;
+  const std::string prefix = target.filename().string() + kStagingInfix;
+  std::error_code error;
+  for (fs::directory_iterator it(target.parent_path(), error), end; !error && it != end;
+       it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (!name.starts_with(prefix) || !it->is_directory()) continue;
+    const std::string pid = name.substr(prefix.size());
+    if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+    found[it->path()] = std::stol(pid);
+  }
+  return found;
+}
+
+bool ProcessIsGone(long pid) { return kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH; }
+
+// complete.json: every file under `dir` but timing.json, by path relative to `dir`, with its size.
+std::string CompletionRecord(const fs::path& dir) {
+  nlohmann::json files = nlohmann::json::object();  // sorted by path: the same bytes every time
+  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(dir)) {
+    if (!entry.is_regular_file()) continue;
+    const std::string name = entry.path().lexically_relative(dir).generic_string();
+    if (name == "timing.json" || name == kRunCompleteFile) continue;
+    files[name] = entry.file_size();
+  }
+  return WriteJson(nlohmann::json{{"files", files}});
+}
+
 }  // namespace
 
 bool HoldsPlywoodRun(const fs::path& dir) {
@@ -58,42 +105,143 @@ bool HoldsPlywoodRun(const fs::path& dir) {
          fs::is_regular_file(dir / "metrics.json");
 }
 
-void PrepareRunDirectory(const fs::path& dir, bool force) {
+std::string WhyNotAFinishedRun(const fs::path& dir) {
+  // Where runs into `dir` that did not finish left their output (looked up only when needed: a
+  // sweep checks thousands of finished runs in one folder).
+  const auto interrupted = [&dir] {
+    std::string where;
+    for (const auto& [folder, pid] : StagingFolders(Normalised(dir))) {
+      where = "; " + folder.filename().string() + " beside it is the partial output of a run " +
+              (ProcessIsGone(pid) ? "that was killed" : "still running");
+    }
+    return where;
+  };
   std::error_code error;
-  const fs::file_status status = fs::status(dir, error);
+  if (!fs::is_directory(dir, error)) {
+    return (fs::exists(dir, error) ? "not a directory" : "no such directory") + interrupted();
+  }
+  const fs::path marker = dir / kRunCompleteFile;
+  if (!fs::is_regular_file(marker, error)) {
+    return std::string("no ") + kRunCompleteFile +
+           " (the run that wrote it did not finish: killed, failed or still running)" +
+           interrupted();
+  }
+  const nlohmann::json record = nlohmann::json::parse(ReadTextFile(marker), nullptr, false);
+  if (!record.is_object() || !record.contains("files") || !record["files"].is_object()) {
+    return std::string(kRunCompleteFile) + " is not a completion record";
+  }
+  for (const auto& [name, size] : record["files"].items()) {
+    const fs::path file = dir / name;
+    if (!fs::is_regular_file(file, error)) return name + " is missing (listed in complete.json)";
+    if (!size.is_number_unsigned() || fs::file_size(file, error) != size.get<std::uintmax_t>()) {
+      return name + " is " + std::to_string(fs::file_size(file, error)) +
+             " bytes, complete.json says " + size.dump() + " (truncated or changed after the run)";
+    }
+  }
+  return "";
+}
+
+void RequireFinishedRun(const fs::path& dir) {
+  const std::string why = WhyNotAFinishedRun(dir);
+  if (!why.empty()) throw ConfigError(dir.string(), "", "not a finished run: " + why);
+}
+
+StagedRunDirectory::StagedRunDirectory(const fs::path& target, bool force)
+    : given_(target), target_(Normalised(target)) {
+  std::error_code error;
+  const fs::file_status status = fs::status(target_, error);
   if (!fs::exists(status)) {
     // Made now, so an unwritable place is refused before anything is simulated.
-    fs::create_directories(dir, error);
+    fs::create_directories(target_, error);
     if (error) {
-      throw ConfigError(dir.string(), "", "cannot create the output folder: " + error.message());
+      throw ConfigError(given_.string(), "", "cannot create the output folder: " + error.message());
     }
-    fs::remove(dir, error);
-    return;
+    created_target_ = true;
+  } else if (!fs::is_directory(status)) {
+    throw ConfigError(given_.string(), "", "exists and is not a directory; choose another --out");
+  } else if (!fs::is_empty(target_)) {
+    if (!HoldsPlywoodRun(target_)) {
+      throw ConfigError(given_.string(), "",
+                        "holds files that are not a Plywood run (no config.yaml and "
+                        "metrics.json); choose another --out (--force never deletes them)");
+    }
+    if (!force) {
+      throw ConfigError(given_.string(), "",
+                        "already holds an earlier run; add --force to replace it, or choose "
+                        "another --out");
+    }
+    const fs::path foreign = FirstForeignEntry(target_);
+    if (!foreign.empty()) {
+      throw ConfigError(given_.string(), "",
+                        "holds an earlier run and also " +
+                            foreign.lexically_relative(target_).string() +
+                            ", which no run writes; --force deletes only a run's own files: move "
+                            "it away or choose another --out");
+    }
+    replace_ = true;
   }
-  if (!fs::is_directory(status)) {
-    throw ConfigError(dir.string(), "", "exists and is not a directory; choose another --out");
+  // What killed runs into this target left behind (their own files only).
+  for (const auto& [folder, pid] : StagingFolders(target_)) {
+    if (ProcessIsGone(pid) && FirstForeignEntry(folder).empty()) fs::remove_all(folder, error);
   }
-  if (fs::is_empty(dir)) return;
-  if (!HoldsPlywoodRun(dir)) {
-    throw ConfigError(dir.string(), "",
-                      "holds files that are not a Plywood run (no config.yaml and metrics.json); "
-                      "choose another --out (--force never deletes them)");
+  staging_ = target_;
+  staging_ += kStagingInfix + std::to_string(getpid());
+  fs::remove_all(staging_, error);
+  if (!fs::create_directory(staging_, error) || error) {
+    const std::string why = error ? error.message() : "it exists";
+    if (created_target_) fs::remove(target_, error);
+    throw ConfigError(given_.string(), "",
+                      "cannot make the staging folder " + staging_.filename().string() +
+                          " beside it (a run is written there and renamed into place): " + why);
   }
-  if (!force) {
-    throw ConfigError(dir.string(), "",
-                      "already holds an earlier run; add --force to replace it, or choose another "
-                      "--out");
+}
+
+StagedRunDirectory::~StagedRunDirectory() {
+  if (committed_) return;
+  std::error_code error;
+  fs::remove_all(staging_, error);
+  if (created_target_ && fs::is_empty(target_, error)) fs::remove(target_, error);
+}
+
+void WriteCompletionRecord(const fs::path& dir) {
+  WriteTextFile(dir / kRunCompleteFile, CompletionRecord(dir));
+}
+
+void StagedRunDirectory::Commit() {
+  WriteCompletionRecord(staging_);
+  std::error_code error;
+  if (replace_) {
+    // The earlier run is moved aside, the new one renamed in, then the earlier one deleted: at
+    // no moment does the target hold a mixture of the two.
+    if (!HoldsPlywoodRun(target_) || !FirstForeignEntry(target_).empty()) {
+      committed_ = true;
+      throw ConfigError(given_.string(), "",
+                        "changed while the run was going (it now holds files no run writes); the "
+                        "results are in " +
+                            staging_.string());
+    }
+    fs::path old = target_;
+    old += ".replaced-" + std::to_string(getpid());
+    fs::rename(target_, old, error);
+    if (!error) fs::rename(staging_, target_, error);
+    if (error) {
+      committed_ = true;
+      throw ConfigError(given_.string(), "",
+                        "cannot replace the earlier run: " + error.message() +
+                            "; the new results are in " + staging_.string());
+    }
+    fs::remove_all(old, error);
+  } else {
+    fs::rename(staging_, target_, error);  // onto the empty target
+    if (error) {
+      committed_ = true;
+      throw ConfigError(given_.string(), "",
+                        "cannot move the finished run into place (" + error.message() +
+                            ": did another run finish there meanwhile?); the results are in " +
+                            staging_.string());
+    }
   }
-  const fs::path foreign = FirstForeignEntry(dir);
-  if (!foreign.empty()) {
-    throw ConfigError(dir.string(), "",
-                      "holds an earlier run and also " + foreign.lexically_relative(dir).string() +
-                          ", which no run writes; --force deletes only a run's own files: move it "
-                          "away or choose another --out");
-  }
-  for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
-    fs::remove_all(entry.path());
-  }
+  committed_ = true;
 }
 
 }  // namespace plywood::sim

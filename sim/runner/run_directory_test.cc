@@ -1,10 +1,12 @@
 #include "sim/runner/run_directory.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <fstream>
 
 #include "sim/config/config_error.h"
+#include "sim/runner/text_file.h"
 #include "tests/support/mujoco_test_support.h"
 
 namespace plywood::sim {
@@ -14,33 +16,81 @@ namespace fs = std::filesystem;
 using testing::MakeTempDir;
 using testing::WriteFile;
 
-TEST(RunDirectoryTest, AbsentOrEmptyDirectoriesAreReadyAsTheyAre) {
-  const fs::path dir = MakeTempDir("run_directory_empty");
-  EXPECT_NO_THROW(PrepareRunDirectory(dir / "absent", false));
-  EXPECT_FALSE(fs::exists(dir / "absent"));
-  EXPECT_NO_THROW(PrepareRunDirectory(dir, false));
+// What a run writes, in `staged`, for the tests below.
+void WriteSmallRun(const fs::path& dir, const std::string& name) {
+  WriteFile(dir / "config.yaml", "name: " + name + "\nseed: 1\n");
+  WriteFile(dir / "metrics.json", "{}\n");
 }
 
-TEST(RunDirectoryTest, AnEarlierRunIsReplacedOnlyWithForce) {
+TEST(RunDirectoryTest, AnAbsentTargetIsMadeEmptyAndFilledOnlyOnCommit) {
+  const fs::path dir = MakeTempDir("run_directory_absent");
+  {
+    StagedRunDirectory staged(dir / "run/", false);  // a trailing '/' names the same folder
+    EXPECT_TRUE(fs::is_directory(dir / "run"));
+    EXPECT_TRUE(fs::is_empty(dir / "run"));
+    EXPECT_EQ(staged.staging(), dir / ("run.partial-" + std::to_string(getpid())));
+    WriteSmallRun(staged.staging(), "small");
+    EXPECT_NE(WhyNotAFinishedRun(dir / "run").find("no complete.json"), std::string::npos);
+    staged.Commit();
+  }
+  EXPECT_EQ(WhyNotAFinishedRun(dir / "run"), "");
+  EXPECT_FALSE(fs::exists(dir / ("run.partial-" + std::to_string(getpid()))));
+  EXPECT_EQ(ReadTextFile(dir / "run" / kRunCompleteFile),
+            "{\n  \"files\": {\n    \"config.yaml\": 20,\n    \"metrics.json\": 3\n  }\n}\n");
+}
+
+TEST(RunDirectoryTest, AnUncommittedRunLeavesNothingBehind) {
+  const fs::path dir = MakeTempDir("run_directory_uncommitted");
+  {
+    StagedRunDirectory staged(dir / "run", false);
+    WriteSmallRun(staged.staging(), "small");
+  }  // a run that threw: no staging folder, no empty target
+  EXPECT_TRUE(fs::is_empty(dir));
+}
+
+TEST(RunDirectoryTest, ATruncatedOrMissingFileIsNotAFinishedRun) {
+  const fs::path dir = MakeTempDir("run_directory_truncated");
+  WriteSmallRun(dir, "small");
+  WriteFile(dir / "laser.log", "FLASER 3 1 2 3\n");
+  WriteCompletionRecord(dir);
+  EXPECT_EQ(WhyNotAFinishedRun(dir), "");
+  WriteFile(dir / "laser.log", "FLASER 3");
+  EXPECT_EQ(WhyNotAFinishedRun(dir),
+            "laser.log is 8 bytes, complete.json says 15 (truncated or changed after the run)");
+  fs::remove(dir / "laser.log");
+  EXPECT_EQ(WhyNotAFinishedRun(dir), "laser.log is missing (listed in complete.json)");
+  WriteFile(dir / kRunCompleteFile, "{\"files\": ");
+  EXPECT_EQ(WhyNotAFinishedRun(dir), "complete.json is not a completion record");
+  EXPECT_THROW(RequireFinishedRun(dir), ConfigError);
+  EXPECT_EQ(WhyNotAFinishedRun(dir / "absent"), "no such directory");
+}
+
+TEST(RunDirectoryTest, AnEarlierRunIsReplacedOnlyWithForceAndOnlyOnCommit) {
   const fs::path dir = MakeTempDir("run_directory_earlier");
-  WriteFile(dir / "config.yaml", "name: small\nseed: 1\n");
-  WriteFile(dir / "metrics.json", "{}\n");
+  WriteSmallRun(dir, "small");
   WriteFile(dir / "laser_hits.csv", "1,2\n");  // an earlier run's file the new one may not write
   WriteFile(dir / "trajectory.ekf.tum", "0 0 0 0 0 0 0 1\n");
   WriteFile(dir / "before" / "cw_1" / "metrics.json", "{}\n");
   EXPECT_TRUE(HoldsPlywoodRun(dir));
   try {
-    PrepareRunDirectory(dir, false);
+    StagedRunDirectory staged(dir, false);
     FAIL() << "an earlier run was accepted without --force";
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find(dir.string() + ": already holds an earlier run"),
               std::string::npos)
         << e.what();
   }
-  EXPECT_TRUE(fs::exists(dir / "laser_hits.csv"));
-  PrepareRunDirectory(dir, true);
-  EXPECT_TRUE(fs::is_directory(dir));
-  EXPECT_TRUE(fs::is_empty(dir));
+  {
+    StagedRunDirectory staged(dir, true);
+    WriteSmallRun(staged.staging(), "new");
+    // Until the new run commits, the earlier one is whole.
+    EXPECT_TRUE(fs::exists(dir / "laser_hits.csv"));
+    staged.Commit();
+  }
+  EXPECT_FALSE(fs::exists(dir / "laser_hits.csv")) << "a file of the earlier run survived";
+  EXPECT_FALSE(fs::exists(dir / "before"));
+  EXPECT_EQ(ReadTextFile(dir / "config.yaml"), "name: new\nseed: 1\n");
+  EXPECT_EQ(WhyNotAFinishedRun(dir), "");
 }
 
 TEST(RunDirectoryTest, ForceRefusesARunFolderThatAlsoHoldsAUsersFiles) {
@@ -50,13 +100,12 @@ TEST(RunDirectoryTest, ForceRefusesARunFolderThatAlsoHoldsAUsersFiles) {
   WriteFile(dir / "proj" / "config.yaml", "name: mine\nseed: 1\n");
   WriteFile(dir / "proj" / "thesis.tex", "x\n");
   EXPECT_FALSE(HoldsPlywoodRun(dir / "proj"));  // no metrics.json: not a run
-  EXPECT_THROW(PrepareRunDirectory(dir / "proj", true), ConfigError);
-  WriteFile(dir / "run" / "config.yaml", "name: small\nseed: 1\n");
-  WriteFile(dir / "run" / "metrics.json", "{}\n");
+  EXPECT_THROW(StagedRunDirectory(dir / "proj", true), ConfigError);
+  WriteSmallRun(dir / "run", "small");
   WriteFile(dir / "run" / "my_estimate.tum", "0 0 0 0 0 0 0 1\n");
   WriteFile(dir / "run" / "notes" / "todo.txt", "score it\n");
   try {
-    PrepareRunDirectory(dir / "run", true);
+    StagedRunDirectory staged(dir / "run", true);
     FAIL() << "a user's file would have been deleted";
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("which no run writes"), std::string::npos) << e.what();
@@ -75,13 +124,29 @@ TEST(RunDirectoryTest, OtherFilesAreNeverDeletedEvenWithForce) {
   for (const fs::path& d : {dir, dir / "other"}) {
     SCOPED_TRACE(d.string());
     EXPECT_FALSE(HoldsPlywoodRun(d));
-    EXPECT_THROW(PrepareRunDirectory(d, true), ConfigError);
+    EXPECT_THROW(StagedRunDirectory(d, true), ConfigError);
   }
   EXPECT_TRUE(fs::exists(dir / "thesis.tex"));
   EXPECT_TRUE(fs::exists(dir / "other" / "config.yaml"));
   // A file where the directory should be.
-  EXPECT_THROW(PrepareRunDirectory(dir / "thesis.tex", true), ConfigError);
+  EXPECT_THROW(StagedRunDirectory(dir / "thesis.tex", true), ConfigError);
   EXPECT_TRUE(fs::exists(dir / "thesis.tex"));
+}
+
+TEST(RunDirectoryTest, PartialOutputOfAKilledRunIsNamedAndThenCleanedUp) {
+  const fs::path dir = MakeTempDir("run_directory_killed");
+  // What `kill -9` leaves: the empty target and the staging folder of a process that is gone.
+  fs::create_directories(dir / "run");
+  const long gone = 999999999;  // above any pid_max
+  WriteSmallRun(dir / ("run.partial-" + std::to_string(gone)), "small");
+  const std::string why = WhyNotAFinishedRun(dir / "run");
+  EXPECT_NE(why.find("no complete.json"), std::string::npos) << why;
+  EXPECT_NE(why.find("run.partial-999999999 beside it is the partial output of a run that was "
+                     "killed"),
+            std::string::npos)
+      << why;
+  { StagedRunDirectory staged(dir / "run", false); }
+  EXPECT_FALSE(fs::exists(dir / ("run.partial-" + std::to_string(gone))));
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "sim/runner/run_writer.h"
 
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <stdexcept>
 
@@ -34,14 +35,15 @@ class OutputFile {
 
 std::string N(double value) { return FormatNumber(value); }
 
-void WriteRing(std::ostream& out, const std::vector<msgs::RangeRing>& rings) {
+void WriteRing(std::ostream& out, const std::vector<msgs::RangeRing>& rings,
+               const std::function<std::string(double)>& T) {
   // time_s, then one column per transducer: the range, or empty for no echo.
   out << "time_s";
   const std::size_t count = rings.empty() ? 0 : rings.front().readings.size();
   for (std::size_t i = 0; i < count; ++i) out << ",range_" << i << "_m";
   out << '\n';
   for (const auto& ring : rings) {
-    out << N(ring.time_s);
+    out << T(ring.time_s);
     for (const auto& reading : ring.readings) {
       out << ',';
       if (reading.echo) out << N(reading.range_m);
@@ -56,6 +58,10 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
                                          const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
   std::vector<std::string> written;
+  // Times at the timestep's precision ("0.1", not the clock's running sum 0.10000000000000007).
+  const double timestep_s = config.physics.timestep_s;
+  const auto time = [timestep_s](double t) { return TimeAtStepPrecision(t, timestep_s); };
+  const auto T = [&time](double t) { return FormatNumber(time(t)); };
   OutputFile(dir, "config.yaml", &written).out() << ExperimentConfigToYaml(config);
   {
     OutputFile file(dir, "trajectory.csv", &written);
@@ -66,7 +72,7 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
     }
     out << '\n';
     for (const auto& sample : record.trajectory) {
-      out << N(sample.time_s) << ',' << N(sample.truth.x_m) << ',' << N(sample.truth.y_m) << ','
+      out << T(sample.time_s) << ',' << N(sample.truth.x_m) << ',' << N(sample.truth.y_m) << ','
           << N(sample.truth.theta_rad);
       for (const auto& e : sample.estimates) {
         out << ',' << N(e.x_m) << ',' << N(e.y_m) << ',' << N(e.theta_rad);
@@ -81,7 +87,7 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
     file.out() << "# " << name
                << ": timestamp tx ty tz qx qy qz qw (TUM); heading = 2 atan2(qz, qw) exactly\n";
     for (const auto& sample : record.trajectory) {
-      perception::WriteTumPose(file.out(), sample.time_s,
+      perception::WriteTumPose(file.out(), time(sample.time_s),
                                e == 0 ? sample.truth : sample.estimates[e - 1]);
     }
   }
@@ -126,9 +132,14 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
   const bool lines_truth = config.sensors.laser && config.lines.given;
   if (config.sensors.laser && (config.output.sensor_logs || lines_truth)) {
     OutputFile hits(dir, "laser_hits.csv", &written);
-    hits.out() << "# time_s, then per beam the ground-truth segment it hit (walls.csv), -1 none\n";
+    // time_s, then per beam the walls.csv segment it hit (-1: none).
+    hits.out() << "time_s";
+    const std::size_t beams =
+        record.laser.empty() ? 0 : record.laser.front().hit_segment_ids.size();
+    for (std::size_t i = 0; i < beams; ++i) hits.out() << ",beam_" << i << "_segment";
+    hits.out() << '\n';
     for (const auto& laser : record.laser) {
-      hits.out() << N(laser.scan.time_s);
+      hits.out() << T(laser.scan.time_s);
       for (int id : laser.hit_segment_ids) hits.out() << ',' << id;
       hits.out() << '\n';
     }
@@ -143,7 +154,7 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
     for (const auto& laser : record.laser) {
       const msgs::LaserScan& scan = laser.scan;
       const msgs::Pose2D X_WS = laser.X_WR_truth * scan.X_RS;
-      file.out() << N(scan.time_s) << ',' << N(X_WS.x_m) << ',' << N(X_WS.y_m) << ','
+      file.out() << T(scan.time_s) << ',' << N(X_WS.x_m) << ',' << N(X_WS.y_m) << ','
                  << N(X_WS.theta_rad) << ',' << N(scan.angle_min_rad) << ','
                  << N(scan.angle_increment_rad) << ',' << N(scan.range_min_m) << ','
                  << N(scan.range_max_m);
@@ -152,15 +163,20 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
     }
   }
   if (!config.output.sensor_logs) return written;
-  if (config.sensors.sonar) WriteRing(OutputFile(dir, "sonar.csv", &written).out(), record.sonar);
+  if (config.sensors.sonar)
+    WriteRing(OutputFile(dir, "sonar.csv", &written).out(), record.sonar, T);
   if (config.sensors.ir_ring) {
-    WriteRing(OutputFile(dir, "ir_ring.csv", &written).out(), record.ir_ring);
+    WriteRing(OutputFile(dir, "ir_ring.csv", &written).out(), record.ir_ring, T);
   }
   if (config.sensors.ir_scanner) {
     OutputFile file(dir, "ir_scanner.csv", &written);
-    file.out() << "# time_s, angle_min_rad, angle_increment_rad, range_max_m, then ranges_m\n";
+    file.out() << "time_s,angle_min_rad,angle_increment_rad,range_max_m";
+    const std::size_t beams =
+        record.ir_scanner.empty() ? 0 : record.ir_scanner.front().ranges_m.size();
+    for (std::size_t i = 0; i < beams; ++i) file.out() << ",range_" << i << "_m";
+    file.out() << '\n';
     for (const auto& scan : record.ir_scanner) {
-      file.out() << N(scan.time_s) << ',' << N(scan.angle_min_rad) << ','
+      file.out() << T(scan.time_s) << ',' << N(scan.angle_min_rad) << ','
                  << N(scan.angle_increment_rad) << ',' << N(scan.range_max_m);
       for (double r : scan.ranges_m) file.out() << ',' << N(r);
       file.out() << '\n';
@@ -170,20 +186,20 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
     OutputFile file(dir, "encoders.csv", &written);
     file.out() << "time_s,left_ticks,right_ticks\n";
     for (const auto& e : record.encoders) {
-      file.out() << N(e.time_s) << ',' << e.left_ticks << ',' << e.right_ticks << '\n';
+      file.out() << T(e.time_s) << ',' << e.left_ticks << ',' << e.right_ticks << '\n';
     }
   }
   if (config.sensors.gyro) {
     OutputFile file(dir, "gyro.csv", &written);
     file.out() << "time_s,yaw_rate_rad_s\n";
     for (const auto& g : record.gyro)
-      file.out() << N(g.time_s) << ',' << N(g.yaw_rate_rad_s) << '\n';
+      file.out() << T(g.time_s) << ',' << N(g.yaw_rate_rad_s) << '\n';
   }
   if (config.sensors.bumpers) {
     OutputFile file(dir, "bumpers.csv", &written);
     file.out() << "time_s,pressed_panels\n";
     for (const auto& b : record.bumpers) {
-      file.out() << N(b.time_s) << ',';
+      file.out() << T(b.time_s) << ',';
       bool first = true;
       for (std::size_t i = 0; i < b.pressed.size(); ++i) {
         if (!b.pressed[i]) continue;
