@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "sim/config/experiment_config.h"
+#include "sim/runner/run_observer.h"
 
 namespace plywood::eval {
 
@@ -16,6 +17,9 @@ struct ProtocolContext {
   std::filesystem::path out_dir;
   bool quiet = false;
   bool snapshots = true;
+  // Watches the run step by step (viewer, video); only the single-run protocol takes one (see
+  // RequireObservableProtocol). Not owned; null: none.
+  sim::RunObserver* observer = nullptr;
 };
 
 // One way of running and scoring an experiment: the plain run ("single") or a paper's multi-run
@@ -33,6 +37,10 @@ const std::vector<Protocol>& Protocols();
 
 // The protocol named by config.protocol. @throws sim::ConfigError naming `protocol` when unknown.
 const Protocol& FindProtocol(const sim::ExperimentConfig& config);
+
+// @throws sim::ConfigError naming `protocol` when config.protocol cannot show its run to an
+// observer (`what`, e.g. "the viewer", names who asked).
+void RequireObservableProtocol(const sim::ExperimentConfig& config, const std::string& what);
 
 // Runs config.protocol with `context`.
 int RunProtocol(const ProtocolContext& context);
