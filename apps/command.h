@@ -27,5 +27,6 @@ Command AddTrainCommand(CLI::App& app);
 Command AddScoreCommand(CLI::App& app);
 Command AddSweepCommand(CLI::App& app);
 Command AddWorldsCommand(CLI::App& app);
+Command AddViewCommand(CLI::App& app);
 
 }  // namespace plywood::apps

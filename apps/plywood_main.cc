@@ -68,7 +68,7 @@ int Main(int argc, char** argv) {
   app.footer(kFooter);
   const std::vector<Command> commands = {
       AddRunCommand(app),   AddBenchCommand(app), AddReplayCommand(app), AddScoreCommand(app),
-      AddSweepCommand(app), AddTrainCommand(app), AddWorldsCommand(app)};
+      AddSweepCommand(app), AddTrainCommand(app), AddWorldsCommand(app), AddViewCommand(app)};
   for (const Command& command : commands) command.cli->allow_extras();
 
   if (argc < 2) {

@@ -57,8 +57,11 @@ Command AddRunCommand(CLI::App& app) {
                 flags->out.empty() ? "runs/" + config.name + "-seed" + std::to_string(config.seed)
                                    : flags->out;
             const bool snapshots = config.output.snapshot && !flags->no_snapshot;
-            return eval::RunProtocol(
-                eval::ProtocolContext{config, out_dir, flags->quiet, snapshots, flags->force});
+            return eval::RunProtocol(eval::ProtocolContext{.config = config,
+                                                           .out_dir = out_dir,
+                                                           .quiet = flags->quiet,
+                                                           .snapshots = snapshots,
+                                                           .force = flags->force});
           }};
 }
 

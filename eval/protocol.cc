@@ -38,7 +38,16 @@ const Protocol& FindProtocol(const sim::ExperimentConfig& config) {
                          "unknown protocol '" + config.protocol + "' (known: " + known + ")");
 }
 
+void RequireObservableProtocol(const sim::ExperimentConfig& config, const std::string& what) {
+  if (FindProtocol(config).name != "single") {
+    throw sim::ConfigError(config.source_file, "protocol",
+                           what + " shows single runs only, not protocol '" + config.protocol +
+                               "' (its runs are separate experiments)");
+  }
+}
+
 int RunProtocol(const ProtocolContext& context) {
+  if (context.observer) RequireObservableProtocol(context.config, "an observer");
   const Protocol& protocol = FindProtocol(context.config);
   sim::StagedRunDirectory staged(context.out_dir, context.force);
   ProtocolContext inside = context;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "sim/config/experiment_config.h"
+#include "sim/runner/run_observer.h"
 
 namespace plywood::eval {
 
@@ -17,6 +18,9 @@ struct ProtocolContext {
   bool quiet = false;
   bool snapshots = true;
   bool force = false;  // replace an earlier run in out_dir (sim::StagedRunDirectory)
+  // Watches the run step by step (viewer, video); only the single-run protocol takes one (see
+  // RequireObservableProtocol). Not owned; null: none.
+  sim::RunObserver* observer = nullptr;
 };
 
 // One way of running and scoring an experiment: the plain run ("single") or a paper's multi-run
@@ -34,6 +38,10 @@ const std::vector<Protocol>& Protocols();
 
 // The protocol named by config.protocol. @throws sim::ConfigError naming `protocol` when unknown.
 const Protocol& FindProtocol(const sim::ExperimentConfig& config);
+
+// @throws sim::ConfigError naming `protocol` when config.protocol cannot show its run to an
+// observer (`what`, e.g. "the viewer", names who asked).
+void RequireObservableProtocol(const sim::ExperimentConfig& config, const std::string& what);
 
 // Runs config.protocol with `context`: out_dir is checked first (sim::StagedRunDirectory, before
 // anything is simulated), the protocol writes into a staging folder beside it, and the folder is

@@ -70,6 +70,7 @@ int SingleRunProtocol(const ProtocolContext& context) {
   const bool quiet = context.quiet;
   const bool snapshots = context.snapshots;
   sim::ExperimentRunner runner(config);
+  runner.SetObserver(context.observer);
   // A live progress bar on a terminal; in logs (CI, batch) a line every 10 %.
   const bool terminal = isatty(fileno(stderr));
   int last_decile = 0;

@@ -7,6 +7,7 @@
 
 #include "render/geom_footprint.h"
 #include "render/offscreen_context.h"
+#include "render/scale_bar.h"
 
 namespace plywood::render {
 namespace {
@@ -64,6 +65,9 @@ Snapshot RenderSnapshot(const mjModel* m, mjData* d, const std::vector<PathOverl
   if (!drawn) {
     snapshot.picture = RenderTopDownSoftware(m, d, bounds, options.view);
     snapshot.backend = SnapshotBackend::kSoftware;
+  }
+  if (options.scale_bar) {
+    DrawScaleBarAndAxes(snapshot.picture.image, snapshot.picture.world_to_pixel);
   }
   DrawPaths(snapshot.picture.image, snapshot.picture.world_to_pixel, paths);
   if (options.legend) {

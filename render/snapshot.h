@@ -16,6 +16,7 @@ struct SnapshotOptions {
   bool legend = true;       // a legend box for the labelled paths
   Corner legend_corner = Corner::kTopRight;
   int legend_text_scale = 2;
+  bool scale_bar = true;   // a scale bar (bottom left) and the world axes at the origin
   bool use_opengl = true;  // false: always draw in software (deterministic pixels)
 
   // @throws std::invalid_argument whose message starts with the offending field's name.

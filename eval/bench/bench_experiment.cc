@@ -107,7 +107,11 @@ BenchFigures RunBench(const BenchOptions& options) {
   figures.default_run_wall_s = std::numeric_limits<double>::infinity();
   for (int r = 0; r < options.repeats; ++r) {
     const auto start = std::chrono::steady_clock::now();
-    RunProtocol(ProtocolContext{default_run, out_dir, true, default_run.output.snapshot, true});
+    RunProtocol(ProtocolContext{.config = default_run,
+                                .out_dir = out_dir,
+                                .quiet = true,
+                                .snapshots = default_run.output.snapshot,
+                                .force = true});
     figures.default_run_wall_s =
         std::min(figures.default_run_wall_s,
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());

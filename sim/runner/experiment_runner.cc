@@ -322,9 +322,16 @@ void ExperimentRunner::Run(const Progress& progress) {
   };
   // Step k integrates [k dt, (k+1) dt]; the run covers [0, duration] in whole steps.
   const long total_steps = std::lround(std::ceil(duration / dt - 1e-9));
-  for (long step = 0; step < total_steps; ++step) {
+  bool overridden = false;
+  bool stopped = observer_ && !observer_->AfterStep(*this);
+  for (long step = 0; step < total_steps && !stopped; ++step) {
     SampleSensors();
-    if (p.controller && p.control_schedule->Due(scene_->time_s())) {
+    const std::optional<msgs::WheelSpeedCommand> override =
+        observer_ ? observer_->WheelOverride() : std::nullopt;
+    if (override) {
+      wheel_command_ = *override;
+      scene_->SetWheelSpeeds(wheel_command_);
+    } else if (p.controller && p.control_schedule->Due(scene_->time_s())) {
       const PartTimer timer(part_times_ ? &part_times_->controller_s : nullptr);
       robot::ControllerInput input;
       input.time_s = scene_->time_s();
@@ -332,9 +339,15 @@ void ExperimentRunner::Run(const Progress& progress) {
       input.sonar = p.last_sonar ? &*p.last_sonar : nullptr;
       input.laser = p.last_laser ? &*p.last_laser : nullptr;
       input.bumpers = record_.bumpers.empty() ? nullptr : &record_.bumpers.back();
-      scene_->SetWheelSpeeds(p.controller->Update(input));
+      wheel_command_ = p.controller->Update(input);
+      scene_->SetWheelSpeeds(wheel_command_);
       if (p.controller->Finished() && !finished) finished = true;
+    } else if (overridden && !p.controller) {
+      // Handed back to no controller (idle): the robot stops rather than keep the last keys.
+      wheel_command_ = {};
+      scene_->SetWheelSpeeds(wheel_command_);
     }
+    overridden = override.has_value();
     if (p.trajectory_schedule.Due(scene_->time_s())) {
       const PartTimer timer(part_times_ ? &part_times_->recording_s : nullptr);
       record_trajectory();
@@ -354,6 +367,7 @@ void ExperimentRunner::Run(const Progress& progress) {
       progress(scene_->time_s() / duration, scene_->time_s());
       next_progress_s += 1.0;
     }
+    if (observer_ && !observer_->AfterStep(*this)) stopped = true;
   }
   // The final state always closes the trajectory, so scores use the true end point.
   if (record_.trajectory.empty() || record_.trajectory.back().time_s != scene_->time_s()) {
@@ -364,6 +378,7 @@ void ExperimentRunner::Run(const Progress& progress) {
   cost_.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   record_.metrics.Set("run.controller_finished", finished ? 1.0 : 0.0);
   Score();
+  if (observer_) observer_->RunFinished(*this);
 }
 
 void ExperimentRunner::Score() {

@@ -15,6 +15,7 @@
 #include "sim/config/experiment_config.h"
 #include "sim/runner/metrics.h"
 #include "sim/runner/part_timer.h"
+#include "sim/runner/run_observer.h"
 #include "sim/world/ground_truth_walls.h"
 #include "sim/world/scene.h"
 
@@ -88,6 +89,10 @@ class ExperimentRunner {
   const RunCost& cost() const { return cost_; }
   // Times each part of the step loop into `*times` from the next Run on (null: off, the default).
   void ProfileStepParts(StepPartTimes* times) { part_times_ = times; }
+  // Shows every step of the next Run to `observer` (null: none, the default). Not owned.
+  void SetObserver(RunObserver* observer) { observer_ = observer; }
+  // The latest wheel command the controller (or a teleoperating observer) gave.
+  const msgs::WheelSpeedCommand& wheel_command() const { return wheel_command_; }
   const Scene& scene() const { return *scene_; }
   Scene& mutable_scene() { return *scene_; }
   const ExperimentConfig& config() const { return config_; }
@@ -104,6 +109,8 @@ class ExperimentRunner {
   RunRecord record_;
   RunCost cost_;
   StepPartTimes* part_times_ = nullptr;
+  RunObserver* observer_ = nullptr;
+  msgs::WheelSpeedCommand wheel_command_;
 };
 
 // Seed of one component, derived from the experiment seed and the component's name so that adding

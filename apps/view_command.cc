@@ -1,0 +1,204 @@
+// plywood view EXPERIMENT.yaml [--seed N] [--set KEY.PATH=VALUE]... [--out DIR] [--force]
+//                              [--speed 1|10|max] [--paused] [--exit-at-end] [--screenshot PNG]
+//                              [--size WxH] [--no-panel] [--quiet]
+// plywood view RUN_DIR [--time T] [--screenshot PNG] [--size WxH]
+// plywood view --bench [EXPERIMENT.yaml] [--bench-seconds S]
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "apps/command.h"
+#include "eval/protocol.h"
+#include "plywood_paths.h"
+#include "render/png_image.h"
+#include "sim/config/experiment_config.h"
+#include "sim/runner/run_directory.h"
+
+#if PLYWOOD_HAS_VIEWER
+#include "viewer/live_viewer.h"
+#include "viewer/run_replay.h"
+#endif
+
+namespace plywood::apps {
+namespace {
+
+#if PLYWOOD_HAS_VIEWER
+struct ViewFlags {
+  std::string target;
+  std::string out;
+  std::string seed;
+  std::vector<std::string> overrides;
+  std::string speed = "1";
+  std::string size = "1280x800";
+  std::string screenshot;
+  double time_s = -1.0;
+  double bench_seconds = 10.0;
+  bool paused = false;
+  bool exit_at_end = false;
+  bool no_panel = false;
+  bool quiet = false;
+  bool force = false;
+  bool bench = false;
+};
+
+viewer::WindowOptions WindowOf(const ViewFlags& flags) {
+  viewer::WindowOptions window;
+  if (std::sscanf(flags.size.c_str(), "%dx%d", &window.width_px, &window.height_px) != 2) {
+    throw UsageError("--size: expected WIDTHxHEIGHT, got '" + flags.size + "'");
+  }
+  try {
+    window.Validate();
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--size: ") + e.what());
+  }
+  window.panel = !flags.no_panel;
+  return window;
+}
+
+viewer::Speed SpeedOf(const std::string& text) {
+  if (text == "1") return viewer::Speed::kRealTime;
+  if (text == "10") return viewer::Speed::kTenTimes;
+  if (text == "max") return viewer::Speed::kUnlimited;
+  throw UsageError("--speed: expected 1, 10 or max, got '" + text + "'");
+}
+
+int Replay(const ViewFlags& flags) {
+  viewer::ReplayViewer replay(viewer::LoadRunReplay(flags.target), WindowOf(flags));
+  if (flags.screenshot.empty()) {
+    if (flags.time_s >= 0.0) replay.controls().set_paused(true);
+    if (flags.time_s >= 0.0) replay.ShowAt(flags.time_s);
+    replay.Run();
+    return 0;
+  }
+  replay.window().SetCapture(true);
+  replay.ShowAt(flags.time_s >= 0.0 ? flags.time_s : 0.0);
+  render::WritePng(replay.window().Screenshot(), flags.screenshot);
+  if (!flags.quiet)
+    std::printf("wrote %s (t = %.3f s)\n", flags.screenshot.c_str(), replay.time_s());
+  return 0;
+}
+
+// Frames per second of the live viewer at 1x with every overlay on, without writing a run.
+int Bench(const ViewFlags& flags, const sim::ExperimentConfig& loaded) {
+  sim::ExperimentConfig config = loaded;
+  config.duration_s = flags.bench_seconds;
+  sim::ExperimentRunner runner(config);
+  viewer::LiveViewerOptions options;
+  options.window = WindowOf(flags);
+  options.max_fps = 0.0;  // draw at every chance: the figure is what the machine can draw
+  viewer::LiveViewer live(options);
+  live.Open(runner);
+  live.controls().SetAllOverlays(true);
+  runner.SetObserver(&live);
+  const auto start = std::chrono::steady_clock::now();
+  runner.Run();
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("%-28s %s (%s)\n", "viewer bench", config.name.c_str(),
+              config.world_path.filename().c_str());
+  std::printf("%-28s %.2f s simulated in %.2f s wall at 1x, every overlay on, %dx%d\n", "run",
+              runner.scene().time_s(), wall_s, options.window.width_px, options.window.height_px);
+  std::printf("%-28s %.1f frames/s (%ld frames)\n", "frames drawn", live.frames_drawn() / wall_s,
+              live.frames_drawn());
+  return 0;
+}
+
+int Live(const ViewFlags& flags, const sim::ExperimentConfig& config) {
+  eval::RequireObservableProtocol(config, "plywood view");
+  const std::filesystem::path out_dir =
+      flags.out.empty() ? "runs/" + config.name + "-seed" + std::to_string(config.seed) : flags.out;
+  viewer::LiveViewerOptions options;
+  options.window = WindowOf(flags);
+  options.speed = SpeedOf(flags.speed);
+  options.start_paused = flags.paused;
+  options.final_screenshot = flags.screenshot;
+  options.hold_at_end = !flags.exit_at_end;
+  viewer::LiveViewer live(options);
+  const bool snapshots = config.output.snapshot;
+  const eval::ProtocolContext context{.config = config,
+                                      .out_dir = out_dir,
+                                      .quiet = flags.quiet,
+                                      .snapshots = snapshots,
+                                      .force = flags.force,
+                                      .observer = &live};
+  // The viewer runs the run exactly as `plywood run` does: same protocol, same writers.
+  const int code = eval::RunProtocol(context);
+  if (!flags.screenshot.empty() && !flags.quiet)
+    std::printf("wrote %s\n", flags.screenshot.c_str());
+  return code;
+}
+#endif
+
+}  // namespace
+
+Command AddViewCommand(CLI::App& app) {
+  CLI::App* cli = app.add_subcommand(
+      "view", "Watch an experiment run live (or replay a finished run) in a window");
+#if PLYWOOD_HAS_VIEWER
+  auto flags = std::make_shared<ViewFlags>();
+  cli->add_option("TARGET", flags->target,
+                  "experiment YAML file to run live, or a run directory to replay");
+  cli->add_option("--out", flags->out, "results directory of the live run (as plywood run)")
+      ->type_name("DIR")
+      ->default_str("runs/NAME-seedSEED");
+  CLI::Option* seed =
+      cli->add_option("--seed", flags->seed, "seed of every random draw")->type_name("N");
+  cli->add_option("--set", flags->overrides, "override one key of the experiment (repeatable)")
+      ->type_name("KEY.PATH=VALUE")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  cli->add_flag("--force", flags->force, "replace an earlier run in --out");
+  cli->add_option("--speed", flags->speed, "1 (real time), 10, or max")->default_str("1");
+  cli->add_flag("--paused", flags->paused, "start paused (Space resumes, N steps)");
+  cli->add_flag("--exit-at-end", flags->exit_at_end,
+                "close the window when the run ends (otherwise it stays until closed; the results "
+                "are written then)");
+  cli->add_option("--screenshot", flags->screenshot,
+                  "write the final frame (replay: the frame at --time) as PNG and close")
+      ->type_name("PNG");
+  cli->add_option("--time", flags->time_s, "replay: start at this simulated time")->type_name("S");
+  cli->add_option("--size", flags->size, "window size")->type_name("WxH")->default_str("1280x800");
+  cli->add_flag("--no-panel", flags->no_panel, "no Dear ImGui panel");
+  cli->add_flag("--quiet", flags->quiet, "no progress and no summary");
+  cli->add_flag("--bench", flags->bench,
+                "frames/s at 1x with every overlay on (default experiment: the office); writes "
+                "no run");
+  cli->add_option("--bench-seconds", flags->bench_seconds, "simulated seconds of --bench")
+      ->check(CLI::Range(1.0, 600.0))
+      ->default_str("10");
+  cli->footer(
+      "Keys: F1 help, Space pause, N step, 1/2/3 speed, arrows drive (H hands back), L S I P E M "
+      "B\n"
+      "overlays, T/F top-down/follow camera, V record video. Mouse: orbit, pan (right), zoom.\n"
+      "Examples:\n"
+      "  plywood view experiments/default.yaml\n"
+      "  plywood view runs/default-seed1 --time 30\n"
+      "  plywood view --bench");
+  return {cli, [flags, seed] {
+            if (flags->bench && flags->target.empty()) {
+              flags->target = std::string(PLYWOOD_SOURCE_ROOT) + "/experiments/default.yaml";
+            }
+            if (flags->target.empty()) throw UsageError("view: TARGET is required");
+            if (std::filesystem::is_directory(flags->target)) return Replay(*flags);
+            std::vector<std::string> overrides = flags->overrides;
+            if (seed->count() > 0) overrides.push_back("seed=" + flags->seed);
+            const sim::ExperimentConfig config =
+                sim::LoadExperimentConfig(flags->target, overrides);
+            return flags->bench ? Bench(*flags, config) : Live(*flags, config);
+          }};
+#else
+  cli->allow_extras();
+  return {cli, [] {
+            throw UsageError(
+                "view: this build has no viewer (configure with GLFW and OpenGL found and "
+                "-DPLYWOOD_VIEWER=ON)");
+            return 2;
+          }};
+#endif
+}
+
+}  // namespace plywood::apps

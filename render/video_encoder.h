@@ -1,0 +1,44 @@
+#pragma once
+
+#include <sys/types.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "render/png_image.h"
+
+namespace plywood::render {
+
+// Encodes RGB frames into an H.264 MP4 through Debian's `ffmpeg` executable, fed raw frames on a
+// pipe (no libav* linking; ffmpeg found on PATH). Every frame must have the size of the first;
+// odd sizes are padded by one black row / column (yuv420p needs even sizes).
+class VideoEncoder {
+ public:
+  // @throws std::invalid_argument when fps is not in [1, 240]; std::runtime_error naming `path`
+  // when ffmpeg cannot be started.
+  VideoEncoder(const std::filesystem::path& path, double fps);
+  // Finishes the file if Close was not called (errors then go to stderr).
+  ~VideoEncoder();
+  VideoEncoder(const VideoEncoder&) = delete;
+  VideoEncoder& operator=(const VideoEncoder&) = delete;
+
+  // @throws std::runtime_error when the size changes or ffmpeg stopped reading.
+  void AddFrame(const RgbImage& frame);
+  // Waits for ffmpeg. @throws std::runtime_error naming the path when it failed.
+  void Close();
+
+  long frames() const { return frames_; }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  void Start(int width, int height);
+
+  std::filesystem::path path_;
+  double fps_;
+  int width_ = 0, height_ = 0;
+  long frames_ = 0;
+  pid_t pid_ = -1;
+  int pipe_fd_ = -1;
+};
+
+}  // namespace plywood::render

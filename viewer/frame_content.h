@@ -1,0 +1,60 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "msgs/pose2d.h"
+#include "msgs/range_ring.h"
+
+namespace plywood::viewer {
+
+// The latest laser scan, placed in the world.
+struct LaserView {
+  msgs::Pose2D X_WS;  // sensor pose
+  double height_m = 0.0;
+  double range_max_m = 0.0;
+  std::vector<double> angles_rad;  // in the sensor frame
+  std::vector<double> ranges_m;    // >= range_max_m: no return
+};
+
+// What one range reading means, from the simulator's view of the same axis.
+enum class RingReadingKind {
+  kEcho,          // an echo near the true range along the axis
+  kSpecularMiss,  // no echo although a wall is within range (the pulse glanced off)
+  kMultipath,     // an echo much farther than the nearest surface on the axis
+  kNothing,       // no echo and nothing within range
+};
+
+// The latest sonar or IR ring, placed in the world.
+struct RingView {
+  msgs::Pose2D X_WR;  // robot pose when the ring was read
+  double height_m = 0.0;
+  double half_angle_rad = 0.0;  // cone half-angle (0: a single beam)
+  msgs::RangeRing ring;
+  std::vector<RingReadingKind> kinds;  // one per reading
+};
+
+struct PathView {
+  std::string label;
+  std::vector<Eigen::Vector2d> points_W;
+  float rgba[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+};
+
+struct SegmentView {
+  Eigen::Vector2d a_W, b_W;
+  bool matched = false;  // matched a ground-truth wall
+};
+
+// Everything the overlays draw in one frame; the live viewer and the replay both fill it.
+struct FrameContent {
+  double time_s = 0.0;
+  std::optional<LaserView> laser;
+  std::optional<RingView> sonar;
+  std::optional<RingView> ir;
+  std::vector<PathView> paths;  // ground truth first
+  std::vector<SegmentView> lines;
+};
+
+}  // namespace plywood::viewer

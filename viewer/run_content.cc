@@ -1,0 +1,138 @@
+#include "viewer/run_content.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "eval/lines/line_scan_scorer.h"
+#include "render/overlay.h"
+
+namespace plywood::viewer {
+namespace {
+
+constexpr double kDegToRad = std::numbers::pi / 180.0;
+
+double SiteHeight(const sim::Scene& scene, const std::string& name, double fallback) {
+  const std::optional<int> site = scene.FindSite(name);
+  return site ? scene.SiteHeightM(*site) : fallback;
+}
+
+PathView Path(const std::string& label, render::Rgb colour) {
+  PathView path;
+  path.label = label;
+  path.rgba[0] = colour.r / 255.0f;
+  path.rgba[1] = colour.g / 255.0f;
+  path.rgba[2] = colour.b / 255.0f;
+  return path;
+}
+
+// The lines the experiment's first extractor finds in `record`, in the world frame.
+std::vector<SegmentView> ExtractLines(const sim::ExperimentRunner& runner,
+                                      const sim::LaserRecord& record) {
+  sim::LinesConfig lines = runner.config().lines;
+  if (lines.extractors.empty()) return {};
+  lines.extractors.resize(1);
+  const sim::LaserRecord* records[] = {&record};
+  const eval::TruthScan scan =
+      eval::MakeTruthScan(records, runner.record().walls, lines.range_cut_m);
+  const std::vector<eval::ExtractorScore> scores =
+      eval::ScoreExtractors(std::span<const eval::TruthScan>(&scan, 1), lines);
+  std::vector<SegmentView> out;
+  if (scores.empty() || scores.front().scans.empty()) return out;
+  const eval::ScanLines& found = scores.front().scans.front();
+  const msgs::Pose2D X_WS = record.X_WR_truth * record.scan.X_RS;
+  const auto to_world = [&](const Eigen::Vector2d& p_S) {
+    const msgs::Pose2D p = X_WS * msgs::Pose2D{p_S.x(), p_S.y(), 0.0};
+    return Eigen::Vector2d(p.x_m, p.y_m);
+  };
+  for (std::size_t i = 0; i < found.segments.size(); ++i) {
+    out.push_back({to_world(found.segments[i].start), to_world(found.segments[i].end),
+                   found.matched_truth[i] >= 0});
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<RingReadingKind> ClassifyRing(const sim::Scene& scene, const msgs::Pose2D& X_WR,
+                                          double height_m, const msgs::RangeRing& ring) {
+  mjtByte groups[mjNGROUP];
+  for (int i = 0; i < mjNGROUP; ++i) groups[i] = i != sim::Scene::kRobotGeomGroup;
+  std::vector<RingReadingKind> kinds;
+  for (const msgs::RangeReading& r : ring.readings) {
+    const msgs::Pose2D X_WS = X_WR * r.X_RS;
+    const mjtNum origin[3] = {X_WS.x_m, X_WS.y_m, height_m};
+    const mjtNum direction[3] = {std::cos(X_WS.theta_rad), std::sin(X_WS.theta_rad), 0.0};
+    int geom = -1;
+    const double truth =
+        mj_ray(scene.model(), scene.data(), origin, direction, groups, 1, -1, &geom);
+    const bool wall_in_range = geom >= 0 && truth >= 0.0 && truth < ring.range_max_m;
+    // Off-axis surfaces inside the cone legitimately echo nearer than the axis ray.
+    const double tolerance = std::max(0.15, 0.1 * truth);
+    if (r.echo) {
+      kinds.push_back(!wall_in_range || r.range_m > truth + tolerance ? RingReadingKind::kMultipath
+                                                                      : RingReadingKind::kEcho);
+    } else {
+      kinds.push_back(wall_in_range ? RingReadingKind::kSpecularMiss : RingReadingKind::kNothing);
+    }
+  }
+  return kinds;
+}
+
+RunContent::RunContent(const sim::ExperimentRunner& runner) {
+  const sim::Scene& scene = runner.scene();
+  laser_height_m_ = SiteHeight(scene, "laser", 0.3);
+  sonar_height_m_ = SiteHeight(scene, "sonar_0", 0.2);
+  ir_height_m_ = SiteHeight(scene, "ir_0", 0.1);
+  content_.paths.push_back(Path("ground truth", render::colours::kBlack));
+  const auto& names = runner.record().estimator_names;
+  for (std::size_t e = 0; e < names.size(); ++e) {
+    content_.paths.push_back(
+        Path(names[e], render::colours::kPalette[e % std::size(render::colours::kPalette)]));
+  }
+}
+
+const FrameContent& RunContent::Update(const sim::ExperimentRunner& runner) {
+  const sim::RunRecord& record = runner.record();
+  const sim::ExperimentConfig& config = runner.config();
+  content_.time_s = runner.scene().time_s();
+  for (; trajectory_seen_ < record.trajectory.size(); ++trajectory_seen_) {
+    const sim::TrajectorySample& s = record.trajectory[trajectory_seen_];
+    content_.paths[0].points_W.emplace_back(s.truth.x_m, s.truth.y_m);
+    for (std::size_t e = 0; e < s.estimates.size(); ++e) {
+      content_.paths[e + 1].points_W.emplace_back(s.estimates[e].x_m, s.estimates[e].y_m);
+    }
+  }
+  if (record.laser.size() != laser_seen_ && !record.laser.empty()) {
+    laser_seen_ = record.laser.size();
+    const sim::LaserRecord& last = record.laser.back();
+    LaserView view;
+    view.X_WS = last.X_WR_truth * last.scan.X_RS;
+    view.height_m = laser_height_m_;
+    view.range_max_m = last.scan.range_max_m;
+    view.ranges_m = last.scan.ranges_m;
+    for (std::size_t i = 0; i < last.scan.ranges_m.size(); ++i) {
+      view.angles_rad.push_back(last.scan.BeamAngleRad(i));
+    }
+    content_.laser = std::move(view);
+    if (config.lines.given) content_.lines = ExtractLines(runner, last);
+  }
+  // Rings carry no pose: they were read during the step just taken, at about the current pose.
+  const msgs::Pose2D X_WR = runner.scene().TruePose();
+  if (record.sonar.size() != sonar_seen_ && !record.sonar.empty()) {
+    sonar_seen_ = record.sonar.size();
+    RingView view{X_WR,
+                  sonar_height_m_,
+                  config.sensors.sonar->beam_half_angle_deg * kDegToRad,
+                  record.sonar.back(),
+                  {}};
+    view.kinds = ClassifyRing(runner.scene(), X_WR, sonar_height_m_, view.ring);
+    content_.sonar = std::move(view);
+  }
+  if (record.ir_ring.size() != ir_seen_ && !record.ir_ring.empty()) {
+    ir_seen_ = record.ir_ring.size();
+    content_.ir = RingView{X_WR, ir_height_m_, 0.0, record.ir_ring.back(), {}};
+  }
+  return content_;
+}
+
+}  // namespace plywood::viewer

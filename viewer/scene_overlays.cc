@@ -1,0 +1,147 @@
+#include "viewer/scene_overlays.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "render/scale_bar.h"
+
+namespace plywood::viewer {
+namespace {
+
+// Appends geoms to a scene until it is full.
+class GeomSink {
+ public:
+  explicit GeomSink(mjvScene& scene) : scene_(scene) {}
+
+  void Line(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const float rgba[4],
+            double width_px) {
+    mjvGeom* g = Next(rgba);
+    if (g == nullptr) return;
+    mjv_makeConnector(g, mjGEOM_LINE, width_px, a.x(), a.y(), a.z(), b.x(), b.y(), b.z());
+  }
+  void Label(const Eigen::Vector3d& p, const char* text, const float rgba[4]) {
+    mjvGeom* g = Next(rgba);
+    if (g == nullptr) return;
+    const mjtNum size[3] = {0.05, 0.05, 0.05};
+    const mjtNum pos[3] = {p.x(), p.y(), p.z()};
+    mjv_initGeom(g, mjGEOM_LABEL, size, pos, nullptr, rgba);
+    std::snprintf(g->label, sizeof(g->label), "%s", text);
+  }
+
+ private:
+  mjvGeom* Next(const float rgba[4]) {
+    if (scene_.ngeom >= scene_.maxgeom) return nullptr;
+    mjvGeom* g = &scene_.geoms[scene_.ngeom++];
+    mjv_initGeom(g, mjGEOM_NONE, nullptr, nullptr, nullptr, rgba);
+    g->category = mjCAT_DECOR;
+    g->objtype = mjOBJ_UNKNOWN;
+    g->objid = -1;
+    g->emission = 1.0f;  // overlays keep their colour whatever the lighting
+    g->specular = 0.0f;
+    return g;
+  }
+  mjvScene& scene_;
+};
+
+Eigen::Vector3d At(const Eigen::Vector2d& p, double z) { return {p.x(), p.y(), z}; }
+
+Eigen::Vector2d Along(const msgs::Pose2D& X, double angle_rad, double range_m) {
+  const double a = X.theta_rad + angle_rad;
+  return {X.x_m + range_m * std::cos(a), X.y_m + range_m * std::sin(a)};
+}
+
+const float* KindColour(RingReadingKind kind) {
+  switch (kind) {
+    case RingReadingKind::kEcho:
+      return overlay_colours::kEcho;
+    case RingReadingKind::kSpecularMiss:
+      return overlay_colours::kSpecularMiss;
+    case RingReadingKind::kMultipath:
+      return overlay_colours::kMultipath;
+    case RingReadingKind::kNothing:
+      return overlay_colours::kNothing;
+  }
+  return overlay_colours::kNothing;
+}
+
+// A cone as its two edges and an arc at the reading's range (range_max without an echo).
+void AddRing(GeomSink& sink, const RingView& view, const float* single_colour) {
+  for (std::size_t i = 0; i < view.ring.readings.size(); ++i) {
+    const msgs::RangeReading& r = view.ring.readings[i];
+    const msgs::Pose2D X_WS = view.X_WR * r.X_RS;
+    const float* colour = single_colour ? single_colour : KindColour(view.kinds[i]);
+    const double range = r.echo ? r.range_m : view.ring.range_max_m;
+    const Eigen::Vector2d origin(X_WS.x_m, X_WS.y_m);
+    if (view.half_angle_rad <= 0.0) {
+      if (r.echo)
+        sink.Line(At(origin, view.height_m), At(Along(X_WS, 0, range), view.height_m), colour, 2.0);
+      continue;
+    }
+    constexpr int kArcSegments = 6;
+    Eigen::Vector2d previous = Along(X_WS, -view.half_angle_rad, range);
+    sink.Line(At(origin, view.height_m), At(previous, view.height_m), colour, 1.0);
+    for (int k = 1; k <= kArcSegments; ++k) {
+      const double a = -view.half_angle_rad + 2.0 * view.half_angle_rad * k / kArcSegments;
+      const Eigen::Vector2d p = Along(X_WS, a, range);
+      sink.Line(At(previous, view.height_m), At(p, view.height_m), colour, 2.0);
+      previous = p;
+    }
+    sink.Line(At(origin, view.height_m), At(previous, view.height_m), colour, 1.0);
+  }
+}
+
+}  // namespace
+
+void AddOverlays(mjvScene& scene, const FrameContent& content, const ViewControls& controls,
+                 const render::WorldBounds& world) {
+  GeomSink sink(scene);
+  constexpr double kFloorZ = 0.01;  // just above the floor, under everything else
+  if (controls.overlay(Overlay::kScaleBar)) {
+    // Axes at the world origin and a scale bar along the bottom-left corner of the world.
+    const double length = render::NiceScaleLengthM(std::max(world.width_m(), world.height_m()));
+    const float red[4] = {0.9f, 0.1f, 0.1f, 1.0f}, green[4] = {0.1f, 0.7f, 0.1f, 1.0f};
+    sink.Line({0, 0, kFloorZ}, {length, 0, kFloorZ}, red, 3.0);
+    sink.Line({0, 0, kFloorZ}, {0, length, kFloorZ}, green, 3.0);
+    sink.Label({length, 0, kFloorZ}, "x", red);
+    sink.Label({0, length, kFloorZ}, "y", green);
+    const Eigen::Vector2d start(world.x_min_m + 0.2, world.y_min_m + 0.2);
+    sink.Line(At(start, kFloorZ), At(start + Eigen::Vector2d(length, 0), kFloorZ),
+              overlay_colours::kScaleBar, 4.0);
+    char text[32];
+    std::snprintf(text, sizeof(text), "%g m", length);
+    sink.Label(At(start + Eigen::Vector2d(0, 0.15), kFloorZ), text, overlay_colours::kScaleBar);
+  }
+  if (controls.overlay(Overlay::kPaths)) {
+    for (const PathView& path : content.paths) {
+      // Long runs are thinned to keep the frame cheap; the last point is always drawn.
+      const std::size_t stride = 1 + path.points_W.size() / 2000;
+      for (std::size_t i = stride; i < path.points_W.size() + stride - 1; i += stride) {
+        const std::size_t j = std::min(i, path.points_W.size() - 1);
+        sink.Line(At(path.points_W[i - stride], kFloorZ + 0.01),
+                  At(path.points_W[j], kFloorZ + 0.01), path.rgba, 2.5);
+      }
+    }
+  }
+  if (controls.overlay(Overlay::kLaser) && content.laser) {
+    const LaserView& l = *content.laser;
+    const Eigen::Vector2d origin(l.X_WS.x_m, l.X_WS.y_m);
+    for (std::size_t i = 0; i < l.ranges_m.size(); ++i) {
+      if (!(l.ranges_m[i] < l.range_max_m)) continue;
+      sink.Line(At(origin, l.height_m),
+                At(Along(l.X_WS, l.angles_rad[i], l.ranges_m[i]), l.height_m),
+                overlay_colours::kLaserBeam, 1.0);
+    }
+  }
+  if (controls.overlay(Overlay::kSonar) && content.sonar) AddRing(sink, *content.sonar, nullptr);
+  if (controls.overlay(Overlay::kIr) && content.ir) {
+    AddRing(sink, *content.ir, overlay_colours::kIr);
+  }
+  if (controls.overlay(Overlay::kLines)) {
+    for (const SegmentView& s : content.lines) {
+      sink.Line(At(s.a_W, 0.5), At(s.b_W, 0.5),
+                s.matched ? overlay_colours::kMatchedLine : overlay_colours::kUnmatchedLine, 4.0);
+    }
+  }
+}
+
+}  // namespace plywood::viewer

@@ -1,0 +1,29 @@
+#pragma once
+
+#include <mujoco/mujoco.h>
+
+#include "render/world_to_pixel.h"
+#include "viewer/frame_content.h"
+#include "viewer/view_controls.h"
+
+namespace plywood::viewer {
+
+// Colours of the overlays (RGBA), shared with the help text and the tests.
+namespace overlay_colours {
+inline constexpr float kLaserBeam[4] = {1.0f, 0.85f, 0.0f, 1.0f};
+inline constexpr float kEcho[4] = {0.1f, 0.8f, 0.2f, 1.0f};
+inline constexpr float kSpecularMiss[4] = {1.0f, 0.5f, 0.0f, 1.0f};
+inline constexpr float kMultipath[4] = {0.9f, 0.1f, 0.9f, 1.0f};
+inline constexpr float kNothing[4] = {0.5f, 0.5f, 0.5f, 0.5f};
+inline constexpr float kIr[4] = {0.9f, 0.1f, 0.1f, 1.0f};
+inline constexpr float kMatchedLine[4] = {0.0f, 0.9f, 0.0f, 1.0f};
+inline constexpr float kUnmatchedLine[4] = {0.95f, 0.0f, 0.0f, 1.0f};
+inline constexpr float kScaleBar[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+}  // namespace overlay_colours
+
+// Appends the overlays `controls` has on to `scene` as unlit line geoms (stops quietly when the
+// scene is full). `world` bounds the floor for the scale bar and axes.
+void AddOverlays(mjvScene& scene, const FrameContent& content, const ViewControls& controls,
+                 const render::WorldBounds& world);
+
+}  // namespace plywood::viewer

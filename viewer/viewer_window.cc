@@ -1,0 +1,301 @@
+#include "viewer/viewer_window.h"
+
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "render/geom_footprint.h"
+#include "render/image_ops.h"
+#include "render/top_down_renderer.h"
+#include "sim/world/mujoco_handles.h"
+#include "sim/world/scene.h"
+
+#if PLYWOOD_HAS_IMGUI
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl2.h>
+#endif
+
+namespace plywood::viewer {
+namespace {
+
+constexpr int kSceneGeoms = 20000;  // the world, the robot and every overlay line
+
+// GLFW keeps one global error callback; its last message explains a failed glfwInit / window.
+std::string& LastGlfwError() {
+  static std::string message;
+  return message;
+}
+
+}  // namespace
+
+void WindowOptions::Validate() const {
+  const auto check = [](const char* field, int value) {
+    if (value < 64 || value > 8192) {
+      throw std::invalid_argument(std::string(field) + ": must be in [64, 8192], got " +
+                                  std::to_string(value));
+    }
+  };
+  check("width_px", width_px);
+  check("height_px", height_px);
+}
+
+struct ViewerWindow::Impl {
+  GLFWwindow* window = nullptr;
+  sim::MjModelPtr model;
+  mjvScene scene;
+  mjrContext con;
+  mjvOption option;
+  mjvCamera camera;
+  mjvGLCamera top_down_camera{};
+  render::WorldToPixel top_down_map;
+  render::WorldBounds world_bounds;
+  double z_top_m = 0.0;
+  bool imgui = false;
+  // Mouse state for orbit / pan / zoom.
+  bool left = false, right = false, middle = false;
+  double last_x = 0.0, last_y = 0.0;
+  ViewerWindow* owner = nullptr;
+
+  Impl() {
+    mjv_defaultScene(&scene);
+    mjr_defaultContext(&con);
+    mjv_defaultOption(&option);
+    mjv_defaultCamera(&camera);
+  }
+};
+
+ViewerWindow::ViewerWindow(const mjModel* m, const WindowOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  options.Validate();
+  Impl& g = *impl_;
+  g.owner = this;
+  glfwSetErrorCallback([](int, const char* message) { LastGlfwError() = message; });
+  if (!glfwInit()) throw std::runtime_error("viewer: cannot start GLFW: " + LastGlfwError());
+  glfwWindowHint(GLFW_SAMPLES, 0);
+  glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+  g.window = glfwCreateWindow(options.width_px, options.height_px, options.title.c_str(), nullptr,
+                              nullptr);
+  if (g.window == nullptr) {
+    glfwTerminate();
+    throw std::runtime_error("viewer: cannot open a window: " + LastGlfwError());
+  }
+  glfwMakeContextCurrent(g.window);
+  glfwSwapInterval(0);  // the run paces itself; vsync would cap "as fast as possible"
+  glfwSetWindowUserPointer(g.window, this);
+
+  g.model.reset(mj_copyModel(nullptr, m));
+  mjModel* copy = g.model.get();
+  for (int i = 0; i < 3; ++i) {
+    copy->vis.headlight.ambient[i] = 0.3f;
+    copy->vis.headlight.diffuse[i] = 0.5f;
+    copy->vis.headlight.specular[i] = 0.0f;
+  }
+  copy->vis.headlight.active = 1;
+  copy->vis.quality.shadowsize = 0;  // see TopDownRenderer: a shadow map costs more than it shows
+  mjv_makeScene(copy, &g.scene, kSceneGeoms);
+  mjr_makeContext(copy, &g.con, mjFONTSCALE_150);
+  mjr_setBuffer(mjFB_WINDOW, &g.con);
+  g.scene.flags[mjRND_SKYBOX] = 0;
+  g.scene.flags[mjRND_REFLECTION] = 0;
+  for (int i = 0; i < mjNGROUP; ++i) g.option.sitegroup[i] = 0;  // sensor sites clutter the view
+  g.option.geomgroup[sim::Scene::kRobotGeomGroup] = 1;           // hidden by MuJoCo's default
+
+  const render::StaticExtent extent = render::StaticGeometryExtent(copy);
+  g.world_bounds = extent.bounds.Padded(0.5);
+  g.z_top_m = extent.z_max_m;
+
+  glfwSetKeyCallback(g.window, [](GLFWwindow* w, int key, int, int action, int mods) {
+    auto* self = static_cast<ViewerWindow*>(glfwGetWindowUserPointer(w));
+#if PLYWOOD_HAS_IMGUI
+    if (self->impl_->imgui && ImGui::GetIO().WantCaptureKeyboard) return;
+#endif
+    self->HandleKey(key, action, mods);
+  });
+  glfwSetMouseButtonCallback(g.window, [](GLFWwindow* w, int, int, int) {
+    auto* self = static_cast<ViewerWindow*>(glfwGetWindowUserPointer(w));
+    Impl& i = *self->impl_;
+#if PLYWOOD_HAS_IMGUI
+    if (i.imgui && ImGui::GetIO().WantCaptureMouse) return;
+#endif
+    i.left = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+    i.right = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+    i.middle = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
+    glfwGetCursorPos(w, &i.last_x, &i.last_y);
+  });
+  glfwSetCursorPosCallback(g.window, [](GLFWwindow* w, double x, double y) {
+    auto* self = static_cast<ViewerWindow*>(glfwGetWindowUserPointer(w));
+    Impl& i = *self->impl_;
+    if (!i.left && !i.right && !i.middle) return;
+    const double dx = x - i.last_x, dy = y - i.last_y;
+    i.last_x = x;
+    i.last_y = y;
+    int width = 1, height = 1;
+    glfwGetWindowSize(w, &width, &height);
+    const bool shift = glfwGetKey(w, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
+                       glfwGetKey(w, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
+    const mjtMouse action = i.right  ? (shift ? mjMOUSE_MOVE_H : mjMOUSE_MOVE_V)
+                            : i.left ? (shift ? mjMOUSE_ROTATE_H : mjMOUSE_ROTATE_V)
+                                     : mjMOUSE_ZOOM;
+    // Dragging leaves the exact top-down projection for the free camera it approximates.
+    if (self->preset_ == CameraPreset::kTopDown) self->preset_ = CameraPreset::kFree;
+    mjv_moveCamera(i.model.get(), action, dx / height, dy / height, &i.scene, &i.camera);
+  });
+  glfwSetScrollCallback(g.window, [](GLFWwindow* w, double, double dy) {
+    auto* self = static_cast<ViewerWindow*>(glfwGetWindowUserPointer(w));
+    Impl& i = *self->impl_;
+#if PLYWOOD_HAS_IMGUI
+    if (i.imgui && ImGui::GetIO().WantCaptureMouse) return;
+#endif
+    if (self->preset_ == CameraPreset::kTopDown) self->preset_ = CameraPreset::kFree;
+    mjv_moveCamera(i.model.get(), mjMOUSE_ZOOM, 0.0, -0.05 * dy, &i.scene, &i.camera);
+  });
+
+#if PLYWOOD_HAS_IMGUI
+  if (options.panel) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini in the user's directory
+    // After our callbacks: the backend chains to them.
+    ImGui_ImplGlfw_InitForOpenGL(g.window, true);
+    ImGui_ImplOpenGL2_Init();
+    g.imgui = true;
+  }
+#endif
+  SetPreset(CameraPreset::kTopDown);
+}
+
+ViewerWindow::~ViewerWindow() {
+  Impl& g = *impl_;
+  glfwMakeContextCurrent(g.window);
+#if PLYWOOD_HAS_IMGUI
+  if (g.imgui) {
+    ImGui_ImplOpenGL2_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+#endif
+  mjr_freeContext(&g.con);
+  mjv_freeScene(&g.scene);
+  glfwDestroyWindow(g.window);
+  glfwTerminate();
+}
+
+void ViewerWindow::HandleKey(int key, int action, int mods) {
+  if (action == GLFW_PRESS && key == GLFW_KEY_T) SetPreset(CameraPreset::kTopDown);
+  if (key_handler_) key_handler_(key, action, mods);
+}
+
+void ViewerWindow::PollEvents() { glfwPollEvents(); }
+
+bool ViewerWindow::CloseRequested() const { return glfwWindowShouldClose(impl_->window); }
+
+int ViewerWindow::framebuffer_width() const {
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(impl_->window, &width, &height);
+  return width;
+}
+
+int ViewerWindow::framebuffer_height() const {
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(impl_->window, &width, &height);
+  return height;
+}
+
+void ViewerWindow::SetPreset(CameraPreset preset, int follow_body_id) {
+  Impl& g = *impl_;
+  preset_ = preset;
+  const render::WorldBounds& b = g.world_bounds;
+  if (preset == CameraPreset::kFollow) {
+    g.camera.type = mjCAMERA_TRACKING;
+    g.camera.trackbodyid = follow_body_id;
+    g.camera.distance = 4.0;
+    g.camera.elevation = -35.0;
+    g.camera.azimuth = 180.0;
+    return;
+  }
+  // Top-down (and the free camera it starts from): looking straight down on the world's centre.
+  g.camera.type = mjCAMERA_FREE;
+  g.camera.lookat[0] = b.centre().x();
+  g.camera.lookat[1] = b.centre().y();
+  g.camera.lookat[2] = 0.0;
+  g.camera.azimuth = 90.0;
+  g.camera.elevation = -89.9;
+  g.camera.distance = 1.2 * std::max(b.width_m(), b.height_m());
+}
+
+mjvScene& ViewerWindow::BeginFrame(mjData* d) {
+  Impl& g = *impl_;
+  glfwMakeContextCurrent(g.window);
+  mjv_updateScene(g.model.get(), d, &g.option, nullptr, &g.camera, mjCAT_ALL, &g.scene);
+  if (preset_ == CameraPreset::kTopDown) {
+    // The world framed exactly in the window, as TopDownRenderer frames a snapshot.
+    const int width = std::max(1, framebuffer_width()), height = std::max(1, framebuffer_height());
+    const render::WorldBounds& b = g.world_bounds;
+    render::TopDownFrame frame;
+    frame.width_px = width;
+    frame.height_px = height;
+    const double pixels_per_m = std::min(width / b.width_m(), height / b.height_m());
+    const Eigen::Vector2d half(0.5 * width / pixels_per_m, 0.5 * height / pixels_per_m);
+    frame.shown = {b.centre().x() - half.x(), b.centre().x() + half.x(), b.centre().y() - half.y(),
+                   b.centre().y() + half.y()};
+    frame.world_to_pixel = {pixels_per_m, frame.shown.x_min_m, frame.shown.y_max_m};
+    const double camera_height_m = render::TopDownCameraHeightM(std::max(width, height), g.z_top_m);
+    g.top_down_camera = render::MakeTopDownGlCamera(frame, camera_height_m, g.z_top_m);
+    g.top_down_map = render::FloorMappingOf(g.top_down_camera, width, height);
+    g.scene.camera[0] = g.top_down_camera;
+    g.scene.camera[1] = g.top_down_camera;
+  }
+  return g.scene;
+}
+
+void ViewerWindow::Finish(const std::string& top_left, const std::string& bottom_right,
+                          const std::function<void()>& panel) {
+  Impl& g = *impl_;
+  const mjrRect viewport{0, 0, framebuffer_width(), framebuffer_height()};
+  mjr_render(viewport, &g.scene, &g.con);
+  // mjr_overlay takes two columns; each block line is "title\tvalue".
+  const auto text = [&](int grid, const std::string& block) {
+    if (block.empty()) return;
+    std::string titles, values;
+    std::size_t start = 0;
+    while (start < block.size()) {
+      std::size_t end = block.find('\n', start);
+      if (end == std::string::npos) end = block.size();
+      const std::string line = block.substr(start, end - start);
+      const std::size_t tab = line.find('\t');
+      const std::string separator = start == 0 ? "" : "\n";
+      titles += separator + line.substr(0, tab);
+      values += separator + (tab == std::string::npos ? "" : line.substr(tab + 1));
+      start = end + 1;
+    }
+    mjr_overlay(mjFONT_NORMAL, grid, viewport, titles.c_str(), values.c_str(), &g.con);
+  };
+  text(mjGRID_TOPLEFT, top_left);
+  text(mjGRID_BOTTOMRIGHT, bottom_right);
+#if PLYWOOD_HAS_IMGUI
+  if (g.imgui && panel) {
+    ImGui_ImplOpenGL2_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    panel();
+    ImGui::Render();
+    ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
+  }
+#else
+  (void)panel;
+#endif
+  if (capture_) {
+    std::vector<std::uint8_t> rgb(static_cast<std::size_t>(viewport.width) * viewport.height * 3);
+    mjr_readPixels(rgb.data(), nullptr, viewport, &g.con);
+    captured_ = render::FromBottomUpRows(rgb, viewport.width, viewport.height);
+  }
+  glfwSwapBuffers(g.window);
+}
+
+render::WorldToPixel ViewerWindow::TopDownMapping() const { return impl_->top_down_map; }
+
+}  // namespace plywood::viewer
