@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 // named after something (trajectory.<estimator>.tum, <room>.png, cloud_<name>.png). --force
 // removes these and nothing else.
 bool IsRunOutputFile(const std::string& name) {
-  static constexpr std::array<std::string_view, 24> kNames = {
+  static constexpr std::array<std::string_view, 25> kNames = {
       "config.yaml",        "metrics.json",       "timing.json",
       "cognitive_map.json", "trajectory.csv",     "walls.csv",
       "laser.log",          "laser_hits.csv",     "laser_scans.csv",
@@ -24,7 +24,8 @@ bool IsRunOutputFile(const std::string& name) {
       "ir_scanner.csv",     "encoders.csv",       "gyro.csv",
       "bumpers.csv",        "rooms.csv",          "umbmark_runs.csv",
       "snapshot.png",       "occupancy_grid.png", "occupancy_partitions.png",
-      "segments.png",       "lines_truth.csv",    "lines_odometry.csv"};
+      "segments.png",       "lines_truth.csv",    "lines_odometry.csv",
+      "geometric_map.json"};
   for (std::string_view known : kNames) {
     if (name == known) return true;
   }

@@ -159,7 +159,8 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
   if (config.sensors.ir_scanner) {
     OutputFile file(dir, "ir_scanner.csv", &written);
     file.out() << "# time_s, angle_min_rad, angle_increment_rad, range_max_m, then ranges_m\n";
-    for (const auto& scan : record.ir_scanner) {
+    for (const auto& ir : record.ir_scanner) {
+      const msgs::LaserScan& scan = ir.scan;
       file.out() << N(scan.time_s) << ',' << N(scan.angle_min_rad) << ','
                  << N(scan.angle_increment_rad) << ',' << N(scan.range_max_m);
       for (double r : scan.ranges_m) file.out() << ',' << N(r);
