@@ -204,6 +204,9 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
     config.odometry.enabled = {"encoder"};
   }
   if (top.Has("lines")) ReadLinesConfig(top.Child("lines"), config.lines);
+  if (top.Has("geometric_map")) {
+    ReadGeometricMapConfig(top.Child("geometric_map"), config.geometric_map);
+  }
   ReadOptions(top.Child("output"), config.output);
   top.Finish();
   return config;
@@ -256,6 +259,9 @@ std::string ExperimentConfigToYaml(const ExperimentConfig& const_config) {
   root["sensors"] = WriteSensorSuiteConfig(config.sensors);
   root["odometry"] = WriteOdometryConfig(config.odometry);
   if (config.lines.given) root["lines"] = WriteLinesConfig(config.lines);
+  if (config.geometric_map.given) {
+    root["geometric_map"] = WriteGeometricMapConfig(config.geometric_map);
+  }
   root["output"] = WriteOptions(config.output);
   YAML::Emitter out;
   out << root;

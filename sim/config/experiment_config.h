@@ -9,6 +9,7 @@
 
 #include "robot/drive/diff_drive_spec.h"
 #include "sim/config/controller_config.h"
+#include "sim/config/geometric_map_config.h"
 #include "sim/config/lines_config.h"
 #include "sim/config/odometry_config.h"
 #include "sim/config/sensor_suite_config.h"
@@ -63,6 +64,7 @@ struct ExperimentConfig {
   SensorSuiteConfig sensors;
   OdometryConfig odometry;
   LinesConfig lines;  // post-run line-extraction scoring (docs/lines.md)
+  GeometricMapConfig geometric_map;  // post-run seed 003 map (docs/geometric_map.md)
   OutputOptions output;
 };
 

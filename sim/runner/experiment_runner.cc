@@ -81,6 +81,10 @@ void RequireControllerSensors(const ExperimentConfig& config) {
          laser ? "laser" : "sonar");
   }
   if (c.type == "sonar_explorer") need(s.sonar.has_value(), "controller.type", "sonar");
+  if (config.geometric_map.given && !s.ir_scanner) {
+    throw ConfigError(config.source_file, "geometric_map",
+                      "seed 003's map needs sensors.ir_scanner, which is off");
+  }
 }
 
 }  // namespace
@@ -224,8 +228,12 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
   p.trajectory_schedule = SensorSchedule(config.output.trajectory_rate_hz);
 
   GroundTruthOptions truth_options;
-  if (p.laser)
+  if (p.laser) {
     truth_options.height_m = scene_->SitePoseInWorld(p.laser->sensor.site_id()).translation().z();
+  } else if (p.ir_scanner) {
+    truth_options.height_m =
+        scene_->SitePoseInWorld(p.ir_scanner->sensor.site_id()).translation().z();
+  }
   record_.walls = ExtractGroundTruthWalls(scene_->model(), truth_options);
   p.segments_of_geom.resize(scene_->model()->ngeom);
   for (std::size_t i = 0; i < record_.walls.segments.size(); ++i) {
@@ -236,6 +244,29 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
 ExperimentRunner::~ExperimentRunner() = default;
 
 const robot::Controller* ExperimentRunner::controller() const { return parts_->controller.get(); }
+
+LaserRecord ExperimentRunner::MakeScanRecord(int site_id) const {
+  const Parts& p = *parts_;
+  LaserRecord record;
+  record.scan = p.scan_scratch.scan;
+  record.X_WR_truth = scene_->TruePose();
+  // The log's odometry pose: the steering estimate, else the first estimator, else truth.
+  record.X_WR_odometry = p.steering             ? p.steering->pose()
+                         : p.estimators.empty() ? record.X_WR_truth
+                                                : p.estimators.front()->pose();
+  record.hit_geom_ids = p.scan_scratch.hit_geom_ids;
+  record.hit_segment_ids.assign(record.scan.ranges_m.size(), -1);
+  const Eigen::Vector2d origin_W = scene_->SitePoseInWorld(site_id).translation().head<2>();
+  const double heading_W = (record.X_WR_truth * record.scan.X_RS).theta_rad;
+  for (std::size_t i = 0; i < record.scan.ranges_m.size(); ++i) {
+    if (record.hit_geom_ids[i] < 0) continue;
+    const double angle = heading_W + record.scan.BeamAngleRad(i);
+    record.hit_segment_ids[i] =
+        HitSegment(record_.walls, p.segments_of_geom[record.hit_geom_ids[i]], origin_W,
+                   {std::cos(angle), std::sin(angle)});
+  }
+  return record;
+}
 
 void ExperimentRunner::SampleSensors() {
   Parts& p = *parts_;
@@ -262,25 +293,7 @@ void ExperimentRunner::SampleSensors() {
       p.laser->sensor.Measure(*scene_, *p.caster, &p.scan_scratch);
     }
     const PartTimer timer(times ? &times->recording_s : nullptr);
-    LaserRecord laser;
-    laser.scan = p.scan_scratch.scan;
-    laser.X_WR_truth = scene_->TruePose();
-    // The log's odometry pose: the steering estimate, else the first estimator, else truth.
-    laser.X_WR_odometry = p.steering             ? p.steering->pose()
-                          : p.estimators.empty() ? laser.X_WR_truth
-                                                 : p.estimators.front()->pose();
-    laser.hit_geom_ids = p.scan_scratch.hit_geom_ids;
-    laser.hit_segment_ids.assign(laser.scan.ranges_m.size(), -1);
-    const Eigen::Vector2d origin_W =
-        scene_->SitePoseInWorld(p.laser->sensor.site_id()).translation().head<2>();
-    const double heading_W = (laser.X_WR_truth * laser.scan.X_RS).theta_rad;
-    for (std::size_t i = 0; i < laser.scan.ranges_m.size(); ++i) {
-      if (laser.hit_geom_ids[i] < 0) continue;
-      const double angle = heading_W + laser.scan.BeamAngleRad(i);
-      laser.hit_segment_ids[i] =
-          HitSegment(record_.walls, p.segments_of_geom[laser.hit_geom_ids[i]], origin_W,
-                     {std::cos(angle), std::sin(angle)});
-    }
+    LaserRecord laser = MakeScanRecord(p.laser->sensor.site_id());
     p.last_laser = laser.scan;
     record_.laser.push_back(std::move(laser));
     cost_.rays += p.rays_per_laser_scan;
@@ -303,7 +316,8 @@ void ExperimentRunner::SampleSensors() {
   }
   if (p.ir_scanner && p.ir_scanner->schedule.Due(t)) {
     const PartTimer timer(other_s);
-    record_.ir_scanner.push_back(p.ir_scanner->sensor.Measure(*scene_, *p.caster).scan);
+    p.ir_scanner->sensor.Measure(*scene_, *p.caster, &p.scan_scratch);
+    record_.ir_scanner.push_back(MakeScanRecord(p.ir_scanner->sensor.site_id()));
     cost_.rays += p.rays_per_ir_scan;
   }
 }

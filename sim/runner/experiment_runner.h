@@ -45,11 +45,13 @@ struct RunRecord {
   std::vector<LaserRecord> laser;
   std::vector<msgs::SonarRing> sonar;
   std::vector<msgs::IrRing> ir_ring;
-  std::vector<msgs::LaserScan> ir_scanner;
+  std::vector<LaserRecord> ir_scanner;  // the same record for the rotating IR head
   std::vector<msgs::WheelEncoders> encoders;
   std::vector<msgs::GyroRate> gyro;
   std::vector<msgs::Bumpers> bumpers;
-  GroundTruthWalls walls;  // at the laser's height when there is a laser, else all heights
+  // At the laser's height when there is a laser, else at the IR scanner's when there is one, else
+  // all heights.
+  GroundTruthWalls walls;
   Metrics metrics;
 };
 
@@ -101,6 +103,8 @@ class ExperimentRunner {
   struct Parts;
 
   void SampleSensors();
+  // The record of the scan in parts_->scan_scratch, taken from the sensor site `site_id`.
+  LaserRecord MakeScanRecord(int site_id) const;
   void Score();
 
   ExperimentConfig config_;

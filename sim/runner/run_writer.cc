@@ -172,10 +172,11 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
     OutputFile file(dir, "ir_scanner.csv", &written);
     file.out() << "time_s,angle_min_rad,angle_increment_rad,range_max_m";
     const std::size_t beams =
-        record.ir_scanner.empty() ? 0 : record.ir_scanner.front().ranges_m.size();
+        record.ir_scanner.empty() ? 0 : record.ir_scanner.front().scan.ranges_m.size();
     for (std::size_t i = 0; i < beams; ++i) file.out() << ",range_" << i << "_m";
     file.out() << '\n';
-    for (const auto& scan : record.ir_scanner) {
+    for (const auto& ir : record.ir_scanner) {
+      const msgs::LaserScan& scan = ir.scan;
       file.out() << T(scan.time_s) << ',' << N(scan.angle_min_rad) << ','
                  << N(scan.angle_increment_rad) << ',' << N(scan.range_max_m);
       for (double r : scan.ranges_m) file.out() << ',' << N(r);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "sim/config/require_field.h"
 
@@ -30,11 +31,24 @@ int IrScannerOptions::BeamCount() const {
   return std::abs(fov_deg - 360.0) < 1e-9 ? steps : steps + 1;
 }
 
+std::vector<char> IrInvisibleGeoms(const mjModel* model) {
+  std::vector<char> invisible(model->ngeom, 0);
+  const std::string prefix = kIrInvisiblePrefix;
+  for (int g = 0; g < model->ngeom; ++g) {
+    const int material = model->geom_matid[g];
+    if (material < 0) continue;
+    const char* name = mj_id2name(model, mjOBJ_MATERIAL, material);
+    invisible[g] = name != nullptr && std::string(name).rfind(prefix, 0) == 0;
+  }
+  return invisible;
+}
+
 IrScannerSensor::IrScannerSensor(const Scene& scene, const std::string& site_name,
                                  const IrScannerOptions& options, std::uint64_t seed)
     : options_((options.Validate(), options)),
       geometry_(scene, site_name, "the IR scanner", -options_.fov_deg / 2.0,
                 options_.resolution_deg, options_.BeamCount()),
+      invisible_(IrInvisibleGeoms(scene.model())),
       rng_(seed) {}
 
 ScanMeasurement IrScannerSensor::Measure(const Scene& scene, const RayCaster& caster) {
@@ -44,7 +58,7 @@ ScanMeasurement IrScannerSensor::Measure(const Scene& scene, const RayCaster& ca
 }
 
 void IrScannerSensor::Measure(const Scene& scene, const RayCaster& caster, ScanMeasurement* out) {
-  geometry_.Cast(scene, caster, options_.range_min_m, options_.range_max_m, out);
+  geometry_.Cast(scene, caster, options_.range_min_m, options_.range_max_m, out, &invisible_);
   if (options_.noise_free) return;
 
   const int n = geometry_.beam_count();

@@ -19,7 +19,10 @@ namespace plywood::sim {
 // turn has no repeated beam (beam i at -fov_deg/2 + i * resolution_deg); a partial fov includes
 // both ends. The head is treated as sampling a whole turn at one instant (no motion skew). An
 // outlier replaces a beam's range with one uniform in [range_min_m, range_max_m), whatever the beam
-// hit; beams that hit nothing within range_max_m report range_max_m.
+// hit; beams that hit nothing within range_max_m report range_max_m. Geoms whose material name
+// starts with "ir_invisible" (glass, matt black panels: worlds/README.md) do not reflect the
+// emitter's light: the beam passes them and reports what lies behind, while the sonar still hears
+// them.
 struct IrScannerOptions {
   double fov_deg = 360.0;
   double resolution_deg = 1.8;
@@ -34,6 +37,12 @@ struct IrScannerOptions {
   void Validate() const;
   int BeamCount() const;
 };
+
+// Material-name prefix that makes a geom invisible to the IR scanner.
+inline constexpr char kIrInvisiblePrefix[] = "ir_invisible";
+
+// Per geom id: 1 when its material's name starts with kIrInvisiblePrefix.
+std::vector<char> IrInvisibleGeoms(const mjModel* model);
 
 class IrScannerSensor {
  public:
@@ -51,10 +60,12 @@ class IrScannerSensor {
   void Measure(const Scene& scene, const RayCaster& caster, ScanMeasurement* out);
 
   const IrScannerOptions& options() const { return options_; }
+  int site_id() const { return geometry_.site().id; }
 
  private:
   const IrScannerOptions options_;
   const PlanarScan geometry_;
+  const std::vector<char> invisible_;  // by geom id
   std::mt19937_64 rng_;
 };
 

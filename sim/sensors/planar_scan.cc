@@ -20,7 +20,8 @@ PlanarScan::PlanarScan(const Scene& scene, const std::string& site_name, const s
       dirs_S_(PlanarDirections(EvenAnglesRad(angle_min_deg, angle_increment_deg, beam_count))) {}
 
 void PlanarScan::Cast(const Scene& scene, const RayCaster& caster, double range_min_m,
-                      double range_max_m, ScanMeasurement* out) const {
+                      double range_max_m, ScanMeasurement* out,
+                      const std::vector<char>* see_through) const {
   const int n = beam_count();
   msgs::LaserScan& scan = out->scan;
   scan.time_s = scene.time_s();
@@ -38,8 +39,21 @@ void PlanarScan::Cast(const Scene& scene, const RayCaster& caster, double range_
   double* ranges_m = scan.ranges_m.data();
   int* geom_ids = out->hit_geom_ids.data();
   RayHit hit;
+  const auto seen = [&](const RayHit& h) {
+    return see_through == nullptr || h.geom_id < 0 ||
+           h.geom_id >= static_cast<int>(see_through->size()) || !(*see_through)[h.geom_id];
+  };
   for (int i = 0; i < n; ++i) {
-    if (caster.Cast(p_WS, R_WS * dirs_S_[i], range_max_m, &hit) && hit.distance_m < range_max_m) {
+    const Eigen::Vector3d dir_W = R_WS * dirs_S_[i];
+    bool found = caster.Cast(p_WS, dir_W, range_max_m, &hit) && hit.distance_m < range_max_m;
+    // Past see-through geoms: recast from just beyond each face (a box's far face comes next).
+    for (int pass = 0; found && !seen(hit) && pass < 16; ++pass) {
+      const double offset = hit.distance_m + 1e-6;
+      found = caster.Cast(p_WS + offset * dir_W, dir_W, range_max_m - offset, &hit) &&
+              offset + hit.distance_m < range_max_m;
+      hit.distance_m += offset;
+    }
+    if (found && seen(hit)) {
       ranges_m[i] = hit.distance_m;
       geom_ids[i] = hit.geom_id;
     } else {

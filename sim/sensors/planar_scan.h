@@ -27,8 +27,10 @@ class PlanarScan {
   // Fills `out` at the scene's current state: stamp, beam angles, range limits, X_RS, and for each
   // beam the distance to the first hit closer than range_max_m with its geom id, or range_max_m
   // and -1 when there is none. Reuses out's buffers (no allocation after the first call).
+  // `see_through` (by geom id; null: none) lists geoms the beam passes through, as an IR beam
+  // passes a glass panel: the beam goes on from the far side of such a hit.
   void Cast(const Scene& scene, const RayCaster& caster, double range_min_m, double range_max_m,
-            ScanMeasurement* out) const;
+            ScanMeasurement* out, const std::vector<char>* see_through = nullptr) const;
 
   const SensorSite& site() const { return site_; }
   int beam_count() const { return static_cast<int>(dirs_S_.size()); }

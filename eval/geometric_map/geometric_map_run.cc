@@ -1,0 +1,273 @@
+#include "eval/geometric_map/geometric_map_run.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <numbers>
+
+#include "perception/lines/line_scoring.h"
+#include "render/overlay.h"
+#include "render/png_image.h"
+#include "render/world_to_pixel.h"
+#include "sim/runner/json_text.h"
+#include "sim/runner/text_file.h"
+#include "sim/sensors/ir_scanner_sensor.h"
+#include "sim/world/occupancy_raster.h"
+
+namespace plywood::eval {
+namespace {
+
+using Json = nlohmann::ordered_json;
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+
+double SegmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
+                       const Eigen::Vector2d& b) {
+  const Eigen::Vector2d ab = b - a;
+  const double t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-18), 0.0, 1.0);
+  return (a + t * ab - p).norm();
+}
+
+// Final and mean heading (deg) and position (m) errors of `estimate` against `truth`.
+void AddPoseErrors(const std::vector<msgs::Pose2D>& truth, const std::vector<msgs::Pose2D>& estimate,
+                   const std::string& key, sim::Metrics& m) {
+  double heading_sum = 0.0, position_sum = 0.0, heading = 0.0, position = 0.0;
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    heading = std::abs(msgs::WrapAngle(estimate[i].theta_rad - truth[i].theta_rad)) * kRadToDeg;
+    position = std::hypot(estimate[i].x_m - truth[i].x_m, estimate[i].y_m - truth[i].y_m);
+    heading_sum += heading;
+    position_sum += position;
+  }
+  const double n = std::max<double>(1.0, static_cast<double>(truth.size()));
+  m.Set(key + "final_heading_error_deg", heading);
+  m.Set(key + "final_position_error_m", position);
+  m.Set(key + "mean_heading_error_deg", heading_sum / n);
+  m.Set(key + "mean_position_error_m", position_sum / n);
+}
+
+// Centre and radius of each small object of the world (cylinders up to 0.3 m radius, boxes whose
+// faces are all at most 0.7 m), by geom id.
+std::vector<std::pair<int, std::pair<Eigen::Vector2d, double>>> SmallObjects(
+    const sim::GroundTruthWalls& walls) {
+  std::vector<std::pair<int, std::pair<Eigen::Vector2d, double>>> objects;
+  for (const auto& c : walls.circles) {
+    if (c.radius_m <= 0.3) objects.push_back({c.geom_id, {c.centre, c.radius_m}});
+  }
+  std::map<int, std::vector<const sim::WallSegment*>> faces;
+  for (const auto& s : walls.segments) faces[s.geom_id].push_back(&s);
+  for (const auto& [geom, list] : faces) {
+    Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+    double longest = 0.0;
+    for (const auto* s : list) {
+      centre += s->a / static_cast<double>(list.size());
+      longest = std::max(longest, s->LengthM());
+    }
+    if (longest <= 0.7) objects.push_back({geom, {centre, (list[0]->a - centre).norm()}});
+  }
+  return objects;
+}
+
+}  // namespace
+
+GeometricMapRun BuildGeometricMap(const sim::RunRecord& record,
+                                  const sim::GeometricMapConfig& config) {
+  perception::GeometricMapper mapper(config.options);
+  GeometricMapRun run;
+  std::size_t next_sonar = 0;
+  for (const sim::LaserRecord& ir : record.ir_scanner) {
+    // The sonar ring nearest in time.
+    while (next_sonar + 1 < record.sonar.size() &&
+           std::abs(record.sonar[next_sonar + 1].time_s - ir.scan.time_s) <=
+               std::abs(record.sonar[next_sonar].time_s - ir.scan.time_s)) {
+      ++next_sonar;
+    }
+    const msgs::RangeRing* sonar =
+        next_sonar < record.sonar.size() &&
+                std::abs(record.sonar[next_sonar].time_s - ir.scan.time_s) <= config.max_sonar_age_s
+            ? &record.sonar[next_sonar]
+            : nullptr;
+    run.corrected.push_back(mapper.AddScan(ir.scan, sonar, ir.X_WR_odometry));
+    run.truth.push_back(ir.X_WR_truth);
+    run.odometry.push_back(ir.X_WR_odometry);
+  }
+  run.map = mapper.map();
+  run.scans = static_cast<long>(record.ir_scanner.size());
+  run.points_seen = mapper.points_seen();
+  run.sonar_points = mapper.sonar_points();
+  return run;
+}
+
+bool AddGeometricMapMetrics(sim::ExperimentRunner& runner, GeometricMapRun* run) {
+  const sim::GeometricMapConfig& config = runner.config().geometric_map;
+  if (!config.given) return false;
+  sim::RunRecord& record = runner.mutable_record();
+  *run = BuildGeometricMap(record, config);
+  const sim::GroundTruthWalls& walls = record.walls;
+
+  // Faces the IR scanner observed: the most beams that hit each in one scan.
+  std::vector<perception::TruthSegment> truth(walls.segments.size());
+  std::map<int, int> geom_hits;  // most beams on each geom in one scan
+  for (std::size_t k = 0; k < walls.segments.size(); ++k) {
+    truth[k].a = walls.segments[k].a;
+    truth[k].b = walls.segments[k].b;
+  }
+  for (const sim::LaserRecord& ir : record.ir_scanner) {
+    std::map<int, int> face_count, geom_count;
+    for (std::size_t i = 0; i < ir.hit_segment_ids.size(); ++i) {
+      if (ir.hit_segment_ids[i] >= 0) ++face_count[ir.hit_segment_ids[i]];
+      if (ir.hit_geom_ids[i] >= 0) ++geom_count[ir.hit_geom_ids[i]];
+    }
+    for (const auto& [k, n] : face_count) truth[k].observed_rays = std::max(truth[k].observed_rays, n);
+    for (const auto& [g, n] : geom_count) geom_hits[g] = std::max(geom_hits[g], n);
+  }
+  std::vector<perception::LineSegment> real;
+  long pseudo = 0;
+  for (const auto& s : run->map.segments()) {
+    if (s.pseudo) {
+      ++pseudo;
+    } else {
+      real.push_back(s.line);
+    }
+  }
+  // The line-matching rule of line_scoring.h, in the world frame, over the whole map at once.
+  const perception::LineScore score =
+      perception::ScoreScan(real, truth, run->points_seen, config.scoring);
+  const std::vector<char> invisible = sim::IrInvisibleGeoms(runner.scene().model());
+  std::map<int, bool> invisible_mapped;
+  for (const auto& s : walls.segments) {
+    if (s.geom_id >= 0 && invisible[s.geom_id]) invisible_mapped[s.geom_id] = false;
+  }
+  double endpoint_error = 0.0;
+  long endpoints = 0;
+  for (const auto& s : real) {
+    const int k = perception::MatchSegment(s, truth, config.scoring);
+    if (k < 0) continue;
+    endpoint_error += SegmentDistance(s.start, truth[k].a, truth[k].b) +
+                      SegmentDistance(s.end, truth[k].a, truth[k].b);
+    endpoints += 2;
+    const int geom = walls.segments[k].geom_id;
+    if (invisible_mapped.count(geom)) invisible_mapped[geom] = true;
+  }
+  long panels_mapped = 0;
+  for (const auto& [geom, mapped] : invisible_mapped) panels_mapped += mapped;
+
+  // Small objects the IR saw with enough beams to make a cluster, and those a cluster covers.
+  long objects_seen = 0, objects_found = 0;
+  const int min_points = config.options.segmentation.min_cluster_points;
+  for (const auto& [geom, shape] : SmallObjects(walls)) {
+    const auto hits = geom_hits.find(geom);
+    if (hits == geom_hits.end() || hits->second < min_points) continue;
+    ++objects_seen;
+    for (const auto& c : run->map.clusters()) {
+      if (c.box.exteriorDistance(shape.first) <= shape.second + 0.1) {
+        ++objects_found;
+        break;
+      }
+    }
+  }
+
+  sim::Metrics& m = record.metrics;
+  const std::string key = "geometric_map.";
+  m.Set(key + "scans", static_cast<double>(run->scans));
+  m.Set(key + "points_seen", static_cast<double>(run->points_seen));
+  m.Set(key + "sonar_points", static_cast<double>(run->sonar_points));
+  m.Set(key + "segments", static_cast<double>(real.size()));
+  m.Set(key + "pseudo_segments", static_cast<double>(pseudo));
+  m.Set(key + "clusters", static_cast<double>(run->map.clusters().size()));
+  m.Set(key + "observed_walls", static_cast<double>(score.observable));
+  m.Set(key + "recall", score.Recall());
+  m.Set(key + "precision", score.Precision());
+  m.Set(key + "orientation_error_deg", score.SigmaAlphaDeg());
+  m.Set(key + "distance_error_m", score.SigmaRM());
+  m.Set(key + "endpoint_error_m", endpoints ? endpoint_error / endpoints : 0.0);
+  m.Set(key + "small_objects_observed", static_cast<double>(objects_seen));
+  m.Set(key + "cluster_recall",
+        objects_seen ? static_cast<double>(objects_found) / objects_seen : 1.0);
+  m.Set(key + "ir_invisible_geoms", static_cast<double>(invisible_mapped.size()));
+  m.Set(key + "ir_invisible_mapped", static_cast<double>(panels_mapped));
+  AddPoseErrors(run->truth, run->corrected, key + "pose.corrected.", m);
+  AddPoseErrors(run->truth, run->odometry, key + "pose.odometry.", m);
+  return true;
+}
+
+void WriteGeometricMapJson(const GeometricMapRun& run, const std::string& out_dir) {
+  const auto point = [](const Eigen::Vector2d& p) { return Json::array({p.x(), p.y()}); };
+  Json json = Json::object();
+  Json segments = Json::array();
+  for (const auto& s : run.map.segments()) {
+    segments.push_back({{"start", point(s.line.start)},
+                        {"end", point(s.line.end)},
+                        {"tag", s.pseudo ? "pseudo" : "real"},
+                        {"points", s.line.num_points},
+                        {"inliers", s.inliers}});
+  }
+  Json clusters = Json::array();
+  for (const auto& c : run.map.clusters()) {
+    clusters.push_back({{"min", point(c.box.min())}, {"max", point(c.box.max())}, {"points", c.points}});
+  }
+  Json poses = Json::array();
+  for (const auto& p : run.corrected) poses.push_back(Json::array({p.x_m, p.y_m, p.theta_rad}));
+  json["segments"] = segments;
+  json["clusters"] = clusters;
+  json["corrected_poses"] = poses;
+  std::filesystem::create_directories(out_dir);
+  sim::WriteTextFile(std::filesystem::path(out_dir) / "geometric_map.json", sim::WriteJson(json));
+}
+
+void WriteGeometricMapPicture(const sim::ExperimentRunner& runner, const GeometricMapRun& run,
+                              const std::string& out_dir) {
+  const sim::RunRecord& record = runner.record();
+  const mjModel* model = runner.scene().model();
+  sim::OccupancyRasterOptions raster_options;
+  raster_options.resolution_m = 0.02;
+  const int site = mj_name2id(model, mjOBJ_SITE, "ir_scanner");
+  if (site >= 0) raster_options.height_m = runner.scene().data()->site_xpos[3 * site + 2];
+  const sim::OccupancyRaster raster = sim::RasteriseOccupancy(model, raster_options);
+  render::WorldBounds bounds = render::WorldBounds::Empty();
+  bounds.Extend(raster.origin_xy);
+  bounds.Extend(raster.origin_xy + raster.resolution_m * Eigen::Vector2d(raster.width, raster.height));
+  const render::TopDownFrame frame = render::FrameBounds(bounds.Padded(0.2), 1600);
+  const render::WorldToPixel& map = frame.world_to_pixel;
+  render::RgbImage image(frame.width_px, frame.height_px);
+  render::Fill(image, render::colours::kWhite);
+  for (int y = 0; y < frame.height_px; ++y) {
+    for (int x = 0; x < frame.width_px; ++x) {
+      const auto cell = raster.CellAt(map.ToWorld({x + 0.5, y + 0.5}));
+      if (cell && raster.IsOccupied(cell->x(), cell->y())) {
+        render::BlendPixel(image, x, y, {200, 200, 200});
+      }
+    }
+  }
+  const std::vector<char> invisible = sim::IrInvisibleGeoms(model);
+  for (const auto& s : record.walls.segments) {
+    if (s.geom_id >= 0 && invisible[s.geom_id]) {
+      render::DrawSegment(image, map, s.a, s.b, {120, 190, 240}, 4.0);
+    }
+  }
+  std::vector<Eigen::Vector2d> path;
+  for (const auto& p : run.truth) path.emplace_back(p.x_m, p.y_m);
+  render::DrawPolyline(image, map, path, {90, 90, 90}, 1.0);
+  for (const auto& s : run.map.segments()) {
+    if (!s.pseudo) {
+      render::DrawSegment(image, map, s.line.start, s.line.end, render::colours::kRed, 2.5);
+      continue;
+    }
+    // Dashes of 10 cm every 20 cm.
+    const Eigen::Vector2d d = s.line.end - s.line.start;
+    const double length = d.norm();
+    for (double t = 0.0; t < length; t += 0.2) {
+      render::DrawSegment(image, map, s.line.start + d * (t / length),
+                          s.line.start + d * (std::min(t + 0.1, length) / length),
+                          render::colours::kOrange, 1.5);
+    }
+  }
+  for (const auto& c : run.map.clusters()) {
+    const Eigen::Vector2d a = c.box.min(), b = c.box.max();
+    const std::vector<Eigen::Vector2d> box = {a, {b.x(), a.y()}, b, {a.x(), b.y()}, a};
+    render::DrawPolyline(image, map, box, render::colours::kGreen, 2.0);
+  }
+  std::filesystem::create_directories(out_dir);
+  render::WritePng(image, std::filesystem::path(out_dir) / "geometric_map.png");
+}
+
+}  // namespace plywood::eval

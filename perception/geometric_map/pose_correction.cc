@@ -1,0 +1,166 @@
+#include "perception/geometric_map/pose_correction.h"
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <numbers>
+
+#include "perception/geometric_map/option_checks.h"
+
+namespace plywood::perception {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kDegToRad = kPi / 180.0;
+
+Eigen::Vector2d ToWorld(const msgs::Pose2D& X_WR, const Eigen::Vector2d& p_R) {
+  const double c = std::cos(X_WR.theta_rad), s = std::sin(X_WR.theta_rad);
+  return {X_WR.x_m + c * p_R.x() - s * p_R.y(), X_WR.y_m + s * p_R.x() + c * p_R.y()};
+}
+
+// Offset of the maximum of three samples at -1, 0, +1 from the middle one (a parabola's vertex).
+double ParabolaPeak(double left, double middle, double right) {
+  const double denominator = left - 2.0 * middle + right;
+  return denominator < 0.0 ? 0.5 * (left - right) / denominator : 0.0;
+}
+
+// The shift k in [-window, window] maximising sum_b a(b) * b(b + k), refined to a fraction of a
+// bin; ties go to the smallest |k|.
+double BestShift(const std::function<double(int)>& correlation, int window) {
+  int best = 0;
+  double best_value = correlation(0);
+  for (int m = 1; m <= window; ++m) {
+    for (int k : {-m, m}) {
+      const double v = correlation(k);
+      if (v > best_value) best_value = v, best = k;
+    }
+  }
+  if (best_value <= 0.0 || std::abs(best) == window) return best;
+  return best + ParabolaPeak(correlation(best - 1), best_value, correlation(best + 1));
+}
+
+}  // namespace
+
+void PoseCorrectionOptions::Validate() const {
+  RequireOption(max_heading_step_deg > 0.0 && max_heading_step_deg <= 45.0,
+                "max_heading_step_deg", "must be in (0, 45]", max_heading_step_deg);
+  RequireOption(max_shift_m > 0.0 && max_shift_m <= 2.0, "max_shift_m", "must be in (0, 2]",
+                max_shift_m);
+  RequireOption(position_bin_m >= 0.002 && position_bin_m <= 0.5, "position_bin_m",
+                "must be in [0.002, 0.5]", position_bin_m);
+  RequireOption(max_shift_m / position_bin_m <= 1000.0, "max_shift_m",
+                "must be at most 1000 position bins", max_shift_m);
+  RequireOption(min_virtual_lines >= 1 && min_virtual_lines <= 100000, "min_virtual_lines",
+                "must be in [1, 100000]", min_virtual_lines);
+  RequireOption(min_peak_votes >= 1 && min_peak_votes <= 100000, "min_peak_votes",
+                "must be in [1, 100000]", min_peak_votes);
+  RequireOption(reference_scans >= 1 && reference_scans <= 1000, "reference_scans",
+                "must be in [1, 1000]", reference_scans);
+}
+
+HistogramPoseCorrector::HistogramPoseCorrector(const HistogramOptions& histograms,
+                                               const PoseCorrectionOptions& options)
+    : histogram_options_(histograms), options_(options) {}
+
+double HistogramPoseCorrector::HeadingCorrection(std::span<const RangePoint> points_R,
+                                                 double heading_rad) const {
+  const AngleHistogram scan = MakeAngleHistogram(points_R, histogram_options_, heading_rad);
+  const int bins = static_cast<int>(scan.votes.size());
+  const double bin_rad = kPi / bins;
+  const int window = static_cast<int>(std::ceil(options_.max_heading_step_deg * kDegToRad / bin_rad));
+  const auto correlation = [&](int k) {
+    double sum = 0.0;
+    for (int b = 0; b < bins; ++b) sum += scan.votes[b] * map_angle_votes_[((b + k) % bins + bins) % bins];
+    return sum;
+  };
+  double delta = BestShift(correlation, window) * bin_rad;
+  // Below the bin size: the mean direction (4-fold, so square walls count too) of the scan's
+  // virtual lines near the map's main direction, against that direction.
+  double c4 = 0.0, s4 = 0.0;
+  int near = 0;
+  for (double a : scan.directions_rad) {
+    const double residual = std::remainder(a + delta - map_alpha_rad_, kPi / 2.0);
+    if (std::abs(residual) > 2.0 * bin_rad) continue;
+    c4 += std::cos(4.0 * residual);
+    s4 += std::sin(4.0 * residual);
+    ++near;
+  }
+  if (near >= options_.min_peak_votes) delta -= 0.25 * std::atan2(s4, c4);
+  return delta;
+}
+
+bool HistogramPoseCorrector::AxisShift(const std::vector<double>& scan, const Eigen::Vector2d& axis,
+                                       const Eigen::Vector2d& robot_W, double* shift_m) const {
+  const double bin = options_.position_bin_m;
+  const auto bin_of = [&](double c) { return static_cast<long>(std::floor(c / bin)); };
+  std::map<long, double> scan_votes, reference_votes;
+  for (double c : scan) scan_votes[bin_of(c)] += 1.0;
+  double strongest = 0.0;
+  for (const auto& [b, v] : scan_votes) {
+    const auto at = [&](long k) {
+      const auto it = scan_votes.find(k);
+      return it == scan_votes.end() ? 0.0 : it->second;
+    };
+    strongest = std::max(strongest, at(b - 1) + v + at(b + 1));
+  }
+  if (strongest < options_.min_peak_votes) return false;
+  const double reach = options_.max_shift_m + 10.0;
+  for (const auto& points : recent_points_W_) {
+    for (const Eigen::Vector2d& p : points) {
+      if ((p - robot_W).squaredNorm() < reach * reach) reference_votes[bin_of(p.dot(axis))] += 1.0;
+    }
+  }
+  const int window = static_cast<int>(std::ceil(options_.max_shift_m / bin));
+  const auto correlation = [&](int k) {
+    double sum = 0.0;
+    for (const auto& [b, v] : scan_votes) {
+      const auto it = reference_votes.find(b + k);
+      if (it != reference_votes.end()) sum += v * it->second;
+    }
+    return sum;
+  };
+  *shift_m = BestShift(correlation, window) * bin;
+  return true;
+}
+
+msgs::Pose2D HistogramPoseCorrector::Correct(const msgs::Pose2D& X_OR,
+                                             std::span<const RangePoint> points_R) {
+  msgs::Pose2D X_WR = X_WO_ * X_OR;
+  const AngleHistogram predicted = MakeAngleHistogram(points_R, histogram_options_, X_WR.theta_rad);
+  if (predicted.TotalVotes() < options_.min_virtual_lines) return X_WR;
+  if (has_reference_ && options_.heading) {
+    X_WR.theta_rad = msgs::WrapAngle(X_WR.theta_rad + HeadingCorrection(points_R, X_WR.theta_rad));
+  }
+  std::vector<Eigen::Vector2d> points_W;
+  for (const RangePoint& p : points_R) points_W.push_back(ToWorld(X_WR, p.p_R));
+  if (has_reference_ && options_.position) {
+    const Eigen::Vector2d u(std::cos(map_alpha_rad_), std::sin(map_alpha_rad_)), v(-u.y(), u.x());
+    const Eigen::Vector2d robot_W(X_WR.x_m, X_WR.y_m);
+    Eigen::Vector2d move = Eigen::Vector2d::Zero();
+    for (const Eigen::Vector2d& axis : {u, v}) {
+      std::vector<double> coordinates;
+      for (const Eigen::Vector2d& p : points_W) coordinates.push_back(p.dot(axis));
+      double shift = 0.0;
+      if (AxisShift(coordinates, axis, robot_W, &shift)) move += shift * axis;
+    }
+    X_WR.x_m += move.x();
+    X_WR.y_m += move.y();
+    for (Eigen::Vector2d& p : points_W) p += move;
+  }
+  // The corrected scan joins the reference.
+  const AngleHistogram corrected = MakeAngleHistogram(points_R, histogram_options_, X_WR.theta_rad);
+  if (!has_reference_) {
+    map_angle_votes_.assign(corrected.votes.size(), 0.0);
+    map_alpha_rad_ = corrected.MainDirectionRad();
+    has_reference_ = true;
+  }
+  for (std::size_t b = 0; b < corrected.votes.size(); ++b) map_angle_votes_[b] += corrected.votes[b];
+  recent_points_W_.push_back(std::move(points_W));
+  while (static_cast<int>(recent_points_W_.size()) > options_.reference_scans) {
+    recent_points_W_.pop_front();
+  }
+  X_WO_ = X_WR * X_OR.Inverse();
+  return X_WR;
+}
+
+}  // namespace plywood::perception

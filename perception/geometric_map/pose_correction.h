@@ -1,0 +1,70 @@
+#pragma once
+
+#include <deque>
+#include <span>
+#include <vector>
+
+#include "msgs/pose2d.h"
+#include "perception/geometric_map/range_fusion.h"
+#include "perception/geometric_map/scan_histograms.h"
+
+namespace plywood::perception {
+
+// Seed 003 says the histograms "are meant to correct pose errors" and leaves the algorithm open.
+// This one correlates, as the paper suggests:
+//  - heading: the scan's angle histogram, voted in the map frame at the predicted heading, is
+//    cross-correlated with the map's angle histogram (the sum over all corrected scans, which does
+//    not depend on where the robot is); the best shift within +-max_heading_step_deg corrects the
+//    heading, then the mean direction of the scan's virtual lines within two bins of the map's
+//    main direction or square to it (if min_peak_votes of them) refines it below the bin size;
+//  - position: in the map's main frame (the first scan's alpha_max), the scan's X and Y distance
+//    histograms (bins of histograms.distance_bin_m) are cross-correlated with those of the last
+//    reference_scans corrected scans within reach; the best shift within +-max_shift_m corrects
+//    x and y (bins of position_bin_m). An axis whose scan histogram has no bin with min_peak_votes points (no wall across
+//    it, e.g. along a corridor) is left alone.
+// The correction is kept as a transform X_WO from the odometry frame to the map frame, so the
+// odometry keeps integrating undisturbed. The heading is anchored to the whole map, so its error
+// stays bounded by the histogram resolution; the position is anchored to recent scans only, so
+// it can still drift, more slowly than odometry. Scans with fewer than min_virtual_lines votes are
+// not corrected (and not used as reference).
+struct PoseCorrectionOptions {
+  bool heading = true;
+  bool position = true;
+  double max_heading_step_deg = 3.0;
+  double max_shift_m = 0.1;
+  double position_bin_m = 0.02;
+  int min_virtual_lines = 30;
+  int min_peak_votes = 10;
+  int reference_scans = 10;
+
+  // @throws std::invalid_argument starting with the field's name.
+  void Validate() const;
+};
+
+class HistogramPoseCorrector {
+ public:
+  HistogramPoseCorrector(const HistogramOptions& histograms, const PoseCorrectionOptions& options);
+
+  // The corrected map-frame pose of a scan taken at odometry pose X_OR; `points_R` in the robot
+  // frame, beam order. Updates the correction and the reference histograms.
+  msgs::Pose2D Correct(const msgs::Pose2D& X_OR, std::span<const RangePoint> points_R);
+
+  // The current odometry-to-map correction.
+  const msgs::Pose2D& X_WO() const { return X_WO_; }
+
+ private:
+  double HeadingCorrection(std::span<const RangePoint> points_R, double heading_rad) const;
+  // Shift (m) that best aligns `scan` coordinates with the reference's along axis `axis`.
+  bool AxisShift(const std::vector<double>& scan, const Eigen::Vector2d& axis,
+                 const Eigen::Vector2d& robot_W, double* shift_m) const;
+
+  HistogramOptions histogram_options_;
+  PoseCorrectionOptions options_;
+  msgs::Pose2D X_WO_;
+  std::vector<double> map_angle_votes_;
+  bool has_reference_ = false;
+  double map_alpha_rad_ = 0.0;
+  std::deque<std::vector<Eigen::Vector2d>> recent_points_W_;
+};
+
+}  // namespace plywood::perception

@@ -1,0 +1,59 @@
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "msgs/pose2d.h"
+#include "perception/geometric_map/map_features.h"
+#include "perception/geometric_map/range_fusion.h"
+#include "perception/lines/split_and_merge_extractor.h"
+#include "perception/lines/tls_line_fit.h"
+
+namespace plywood::perception {
+
+// Seed 003's segmentation and fit of one scan:
+// 1. break the scan (in beam order, the turn closed at its widest gap) where consecutive points
+//    are farther apart than dist_max_m; groups of fewer than min_line_points become clusters
+//    (groups of fewer than min_cluster_points, a lone outlier, are dropped);
+// 2. split each group by iterative end-point fit where the farthest point is more than r_min_m
+//    from the chord;
+// 3. fit each piece of at least min_line_points in normal form (the modal filter by default, or
+//    total least squares); its inliers are the points within inlier_distance_m of the line; a
+//    piece with fewer than min_inlier_fraction inliers has low confidence and is not a line;
+// 4. endpoints: where two fitted pieces of one group meet, the intersection of their lines (when it
+//    lies within max_intersection_shift_m of the shared point, else the projections); elsewhere
+//    the projection of the first / last point;
+// 5. a group that gave no line (a column, a table leg, clutter) becomes a cluster.
+// Defaults are assumptions: 0.15 m breaks at doorways, posts and behind obstacles while 1.8 deg
+// steps at 3 m are 9.4 cm; r_min 3 cm is 6 IR noise sigmas.
+struct SegmentationOptions {
+  double dist_max_m = 0.15;
+  int min_line_points = 8;
+  int min_cluster_points = 3;
+  double r_min_m = 0.03;
+  LineFitMethod fit = LineFitMethod::kModal;
+  ModalFitOptions modal;
+  double inlier_distance_m = 0.02;
+  double min_inlier_fraction = 0.7;
+  double max_intersection_shift_m = 0.15;
+
+  // @throws std::invalid_argument starting with the field's name.
+  void Validate() const;
+};
+
+struct ScanFeatures {
+  std::vector<MapSegment> segments;  // real, in the map frame
+  std::vector<MapCluster> clusters;  // in the map frame
+};
+
+// The lines and clusters of one scan's points (robot frame, beam order, from FuseRanges) seen from
+// pose X_WR, in the map frame W. `beam_count` is the scan's number of beams (to close a full
+// turn; 0: the scan is not a full turn).
+ScanFeatures ExtractScanFeatures(std::span<const RangePoint> points_R, int beam_count,
+                                 const msgs::Pose2D& X_WR, const SegmentationOptions& options);
+
+// The fit of points[indices] by `options.fit`, with its inliers (the confidence record).
+MapSegment FitMapSegment(std::span<const Eigen::Vector2d> points, std::span<const int> indices,
+                         const SegmentationOptions& options);
+
+}  // namespace plywood::perception
