@@ -86,6 +86,10 @@ void RequireCleanError(const std::exception& error, const std::string& source) {
   Require(message.find('\n') == std::string::npos, "an error of several lines: " + message);
   Require(message.find(source) != std::string::npos,
           "an error that does not name " + source + ": " + message);
+  // FUZZ_REPLAY_VERBOSE=1 shows which seeds are refused (a seed should mostly load).
+  if (const char* verbose = std::getenv("FUZZ_REPLAY_VERBOSE"); verbose && *verbose == '1') {
+    std::fprintf(stderr, "%s: refused: %s\n", CurrentInput().c_str(), message.c_str());
+  }
 }
 
 void SetCurrentInput(const std::string& name) { CurrentInput() = name; }

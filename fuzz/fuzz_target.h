@@ -30,7 +30,10 @@ FuzzTarget FindFuzzTarget(const std::string& name);
     return 0;                                                                         \
   }
 #else
-#define PLYWOOD_FUZZ_TARGET(name, function)                  \
-  [[maybe_unused]] static const bool function##_registered = \
-      ::plywood::fuzz::RegisterFuzzTarget(name, function);
+// One target per file: the registration lives in the file's anonymous namespace.
+#define PLYWOOD_FUZZ_TARGET(name, function)                \
+  namespace {                                              \
+  [[maybe_unused]] const bool kFuzzTargetRegistered =      \
+      ::plywood::fuzz::RegisterFuzzTarget(name, function); \
+  }
 #endif
