@@ -1,0 +1,32 @@
+# Sanitizer builds. -DPLYWOOD_SANITIZE=ON (scripts/sanitize): every target with AddressSanitizer
+# and UndefinedBehaviorSanitizer, float-cast-overflow included (GCC's `undefined` leaves it out);
+# the first finding aborts the process, so a finding fails its test. -DPLYWOOD_FUZZ=ON
+# (scripts/fuzz, clang only): the same sanitizers plus libFuzzer's coverage instrumentation on
+# every library, so the fuzz/ harnesses find memory errors and UB, not only crashes.
+set(PLYWOOD_SANITIZERS address,undefined,float-cast-overflow)
+if(PLYWOOD_SANITIZE OR PLYWOOD_FUZZ)
+  add_compile_options(-fsanitize=${PLYWOOD_SANITIZERS} -fno-sanitize-recover=all
+                      -fno-omit-frame-pointer)
+  add_link_options(-fsanitize=${PLYWOOD_SANITIZERS})
+endif()
+if(PLYWOOD_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "PLYWOOD_FUZZ needs clang's libFuzzer: configure with "
+                        "CC=clang CXX=clang++ (scripts/fuzz does)")
+  endif()
+  add_compile_options(-fsanitize=fuzzer-no-link)
+endif()
+
+# Every test of a sanitizer build runs with these options (ctest reads the file before the tests),
+# so plain `ctest` in the build folder is the sanitizer run, child processes included. Leak
+# suppressions cover third-party libraries only, each justified in cmake/lsan_suppressions.txt.
+if(PLYWOOD_SANITIZE)
+  set(suppressions "${CMAKE_CURRENT_LIST_DIR}/lsan_suppressions.txt")
+  set(environment_file "${PROJECT_BINARY_DIR}/sanitizer_environment.cmake")
+  file(WRITE "${environment_file}"
+       "set(ENV{ASAN_OPTIONS} \"detect_leaks=1:strict_string_checks=1:check_initialization_order=1\")\n"
+       "set(ENV{LSAN_OPTIONS} \"suppressions=${suppressions}:print_suppressions=0\")\n"
+       "set(ENV{UBSAN_OPTIONS} \"print_stacktrace=1:halt_on_error=1\")\n")
+  set_property(DIRECTORY "${PROJECT_SOURCE_DIR}" APPEND PROPERTY TEST_INCLUDE_FILES
+                                                                 "${environment_file}")
+endif()
