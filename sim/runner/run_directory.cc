@@ -25,7 +25,7 @@ constexpr const char* kStagingInfix = ".partial-";
 // named after something (trajectory.<estimator>.tum, <room>.png, cloud_<name>.png). --force
 // removes these and nothing else.
 bool IsRunOutputFile(const std::string& name) {
-  static constexpr std::array<std::string_view, 25> kNames = {
+  static constexpr std::string_view kNames[] = {
       "config.yaml",        "metrics.json",       "timing.json",
       "cognitive_map.json", "trajectory.csv",     "walls.csv",
       "laser.log",          "laser_hits.csv",     "laser_scans.csv",
