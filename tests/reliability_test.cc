@@ -297,6 +297,10 @@ TEST_F(ReliabilityTest, RobotAndControllerLimitsArePrintedInShortestForm) {
   ExpectOneLine(wall, {"controller.max_wall_range_m", "got 1e-08"});
   const CliResult drive = Run(HallExperiment(0.0, 0.0), "--set robot.nominal.track_m=-1e-9");
   ExpectOneLine(drive, {"robot.nominal.track_m", "got -1e-09"});
+  // Used to read "got -1.000000".
+  const CliResult script =
+      Run(HallExperiment(0.0, 0.0, "controller: {type: wheel_script, segments: [[-1, 1, 1]]}\n"));
+  ExpectOneLine(script, {"controller.segments[0].duration_s", "got -1\n"});
 }
 
 TEST_F(ReliabilityTest, AnUnreadableExperimentIsNotReportedAsMissing) {

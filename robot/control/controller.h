@@ -9,6 +9,7 @@
 #include "msgs/laser_scan.h"
 #include "msgs/pose2d.h"
 #include "msgs/range_ring.h"
+#include "msgs/shortest_number.h"
 #include "msgs/wheel_speed_command.h"
 
 namespace plywood::robot {
@@ -62,14 +63,14 @@ namespace internal {
 inline void RequirePositive(const std::string& field, double value) {
   if (!std::isfinite(value) || value <= 0.0) {
     throw std::invalid_argument(field + ": must be a finite number > 0, got " +
-                                std::to_string(value));
+                                msgs::ShortestNumber(value));
   }
 }
 
 inline void RequireNonNegative(const std::string& field, double value) {
   if (!std::isfinite(value) || value < 0.0) {
     throw std::invalid_argument(field + ": must be a finite number >= 0, got " +
-                                std::to_string(value));
+                                msgs::ShortestNumber(value));
   }
 }
 

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/shortest_number.h"
+
 namespace plywood::robot {
 namespace {
 
@@ -49,13 +51,14 @@ SquarePathController::SquarePathController(const DiffDriveSpec& spec,
   options_.Validate();
   const double max_rim_m_s = spec_.max_wheel_speed_rad_s * spec_.wheel_radius_m;
   if (options_.speed_m_s > max_rim_m_s) {
-    throw std::invalid_argument("speed_m_s: " + std::to_string(options_.speed_m_s) +
+    throw std::invalid_argument("speed_m_s: " + msgs::ShortestNumber(options_.speed_m_s) +
                                 " needs more than max_wheel_speed_rad_s allows (" +
-                                std::to_string(max_rim_m_s) + " m/s)");
+                                msgs::ShortestNumber(max_rim_m_s) + " m/s)");
   }
   if (options_.turn_rate_rad_s * spec_.track_m / 2.0 > max_rim_m_s) {
-    throw std::invalid_argument("turn_rate_rad_s: " + std::to_string(options_.turn_rate_rad_s) +
-                                " needs more than max_wheel_speed_rad_s allows");
+    throw std::invalid_argument(
+        "turn_rate_rad_s: " + msgs::ShortestNumber(options_.turn_rate_rad_s) +
+        " needs more than max_wheel_speed_rad_s allows");
   }
 }
 

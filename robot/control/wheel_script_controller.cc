@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/shortest_number.h"
+
 namespace plywood::robot {
 namespace {
 
@@ -41,9 +43,9 @@ WheelScriptController::WheelScriptController(const DiffDriveSpec& spec,
     for (const auto& [member, value] : {std::pair{"left_rad_s", segment.left_rad_s},
                                         std::pair{"right_rad_s", segment.right_rad_s}}) {
       if (std::abs(value) > spec.max_wheel_speed_rad_s) {
-        throw std::invalid_argument(SegmentField(i, member) + ": |" + std::to_string(value) +
+        throw std::invalid_argument(SegmentField(i, member) + ": |" + msgs::ShortestNumber(value) +
                                     "| exceeds max_wheel_speed_rad_s " +
-                                    std::to_string(spec.max_wheel_speed_rad_s));
+                                    msgs::ShortestNumber(spec.max_wheel_speed_rad_s));
       }
     }
     end_s += segment.duration_s;

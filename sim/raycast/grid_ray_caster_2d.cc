@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/shortest_number.h"
 #include "sim/raycast/mujoco_ray_caster.h"
 #include "sim/raycast/surface_normal.h"
 
@@ -68,7 +69,8 @@ inline double SmallestRoot(double a, double b, double c) {
 
 void GridRayCaster2DOptions::Validate() const {
   if (!(cell_size_m > 0.0) || !std::isfinite(cell_size_m)) {
-    throw std::invalid_argument("cell_size_m: must be > 0, got " + std::to_string(cell_size_m));
+    throw std::invalid_argument("cell_size_m: must be > 0, got " +
+                                msgs::ShortestNumber(cell_size_m));
   }
   if (max_cells < 1) {
     throw std::invalid_argument("max_cells: must be >= 1, got " + std::to_string(max_cells));

@@ -15,6 +15,21 @@ TEST(FormatNumberTest, ShortestRoundTrip) {
   EXPECT_EQ(std::stod(FormatNumber(1.0 / 3.0)), 1.0 / 3.0);
 }
 
+TEST(FormatNumberTest, TimesAtTheTimestepsPrecision) {
+  // A clock that sums its steps drifts off the decimal grid; written times stay on it.
+  double clock = 0.0;
+  for (int step = 0; step < 50; ++step) clock += 0.002;
+  ASSERT_NE(clock, 0.1);
+  EXPECT_EQ(FormatNumber(TimeAtStepPrecision(clock, 0.002)), "0.1");
+  double tenths = 0.0;
+  for (int step = 0; step < 3; ++step) tenths += 0.1;
+  EXPECT_EQ(FormatNumber(TimeAtStepPrecision(tenths, 0.1)), "0.3");  // not 0.30000000000000004
+  EXPECT_EQ(FormatNumber(TimeAtStepPrecision(1.23456789e-4, 1e-7)), "0.0001235");
+  // A timestep with no short decimal form: nanoseconds.
+  EXPECT_EQ(FormatNumber(TimeAtStepPrecision(2.0 / 3.0, 1.0 / 3.0)), "0.666666667");
+  EXPECT_EQ(FormatNumber(TimeAtStepPrecision(NAN, 0.002)), "null");
+}
+
 TEST(MetricsTest, NestsDottedKeysInSortedOrder) {
   Metrics metrics;
   metrics.Set("run.steps", 10.0);

@@ -210,6 +210,7 @@ void WriteCompletionRecord(const fs::path& dir) {
 void StagedRunDirectory::Commit() {
   WriteCompletionRecord(staging_);
   std::error_code error;
+  if (replace_ && fs::is_empty(target_, error)) replace_ = false;  // emptied meanwhile
   if (replace_) {
     // The earlier run is moved aside, the new one renamed in, then the earlier one deleted: at
     // no moment does the target hold a mixture of the two.

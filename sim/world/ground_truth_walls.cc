@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "msgs/shortest_number.h"
+
 namespace plywood::sim {
 namespace {
 
@@ -109,7 +111,7 @@ void AddBoxFaces(const UprightGeom& box, std::vector<WallSegment>* segments) {
 
 void GroundTruthOptions::Validate() const {
   if (height_m && !std::isfinite(*height_m)) {
-    throw std::invalid_argument("height_m: must be finite, got " + std::to_string(*height_m));
+    throw std::invalid_argument("height_m: must be finite, got " + msgs::ShortestNumber(*height_m));
   }
   if (excluded_geom_group < -1 || excluded_geom_group >= mjNGROUP) {
     throw std::invalid_argument("excluded_geom_group: must be -1 (none) or a group in [0, " +
@@ -118,7 +120,7 @@ void GroundTruthOptions::Validate() const {
   }
   if (!(max_tilt_rad >= 0.0) || !(max_tilt_rad < std::numbers::pi / 2.0)) {
     throw std::invalid_argument("max_tilt_rad: must be in [0, pi/2), got " +
-                                std::to_string(max_tilt_rad));
+                                msgs::ShortestNumber(max_tilt_rad));
   }
 }
 

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/shortest_number.h"
+
 namespace plywood::sim {
 namespace {
 
@@ -27,10 +29,10 @@ int CellsToCover(double extent_m, double resolution_m) {
 void OccupancyRasterOptions::Validate() const {
   if (!(resolution_m > 0.0) || !std::isfinite(resolution_m)) {
     throw std::invalid_argument("resolution_m: must be a finite number > 0, got " +
-                                std::to_string(resolution_m));
+                                msgs::ShortestNumber(resolution_m));
   }
   if (!std::isfinite(height_m)) {
-    throw std::invalid_argument("height_m: must be finite, got " + std::to_string(height_m));
+    throw std::invalid_argument("height_m: must be finite, got " + msgs::ShortestNumber(height_m));
   }
   if (supersamples < 1 || supersamples > 8) {
     throw std::invalid_argument("supersamples: must be in [1, 8], got " +
