@@ -61,5 +61,8 @@ function(plywood_add_folder_tests prefix)
     add_executable(${test_target} "${test_source}")
     target_link_libraries(${test_target} PRIVATE ${ARGN} plywood_test_support GTest::gtest GTest::gtest_main)
     add_test(NAME ${test_target} COMMAND ${test_target} WORKING_DIRECTORY "${PROJECT_BINARY_DIR}")
+    # Labelled by layer, so a subset runs by label (ctest -L perception; scripts/sanitize --ci).
+    set_tests_properties(${test_target} PROPERTIES LABELS ${prefix})
+    set_property(GLOBAL APPEND PROPERTY PLYWOOD_TEST_TARGETS_${prefix} ${test_target})
   endforeach()
 endfunction()

@@ -30,3 +30,18 @@ if(PLYWOOD_SANITIZE)
   set_property(DIRECTORY "${PROJECT_SOURCE_DIR}" APPEND PROPERTY TEST_INCLUDE_FILES
                                                                  "${environment_file}")
 endif()
+
+# `sanitize_ci`: what scripts/sanitize --ci builds and runs (labels msgs, robot, perception, fuzz):
+# the hardware-side unit tests, i.e. the code that runs on a real robot, and every fuzz corpus
+# through every parser. Call after every folder is added.
+function(plywood_add_sanitize_ci_target)
+  if(NOT PLYWOOD_BUILD_TESTS)
+    return()
+  endif()
+  add_custom_target(sanitize_ci)
+  foreach(layer msgs robot perception)
+    get_property(targets GLOBAL PROPERTY PLYWOOD_TEST_TARGETS_${layer})
+    add_dependencies(sanitize_ci ${targets})
+  endforeach()
+  add_dependencies(sanitize_ci fuzz_replay)
+endfunction()
