@@ -49,7 +49,8 @@ function(plywood_add_folder_library target)
 endfunction()
 
 # Registers every *_test.cc in the current folder and its subfolders as its own test executable
-# <prefix>.<name> linked to `libs`.
+# <prefix>.<name> linked to `libs` (simulator-side folders add plywood_test_support, which needs
+# the simulator; hardware-side tests build with their own layers alone).
 function(plywood_add_folder_tests prefix)
   if(NOT PLYWOOD_BUILD_TESTS)
     return()
@@ -59,7 +60,10 @@ function(plywood_add_folder_tests prefix)
     get_filename_component(name "${test_source}" NAME_WE)
     set(test_target "${prefix}.${name}")
     add_executable(${test_target} "${test_source}")
-    target_link_libraries(${test_target} PRIVATE ${ARGN} plywood_test_support GTest::gtest GTest::gtest_main)
+    target_link_libraries(${test_target} PRIVATE ${ARGN} GTest::gtest GTest::gtest_main)
     add_test(NAME ${test_target} COMMAND ${test_target} WORKING_DIRECTORY "${PROJECT_BINARY_DIR}")
+    # Labelled by layer, so a subset runs by label (ctest -L perception; scripts/sanitize --ci).
+    set_tests_properties(${test_target} PROPERTIES LABELS ${prefix})
+    set_property(GLOBAL APPEND PROPERTY PLYWOOD_TEST_TARGETS_${prefix} ${test_target})
   endforeach()
 endfunction()

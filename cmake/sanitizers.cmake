@@ -30,3 +30,19 @@ if(PLYWOOD_SANITIZE)
   set_property(DIRECTORY "${PROJECT_SOURCE_DIR}" APPEND PROPERTY TEST_INCLUDE_FILES
                                                                  "${environment_file}")
 endif()
+
+# `sanitize_ci`: what scripts/sanitize --ci builds and runs (ctest labels msgs, robot, perception):
+# the hardware layers' unit tests, i.e. the code that runs on a real robot, and the corpora of the
+# perception/ parsers. It needs no simulator library, which keeps it inside the CI budget (see
+# docs/sanitizers.md). Call after every folder is added.
+function(plywood_add_sanitize_ci_target)
+  if(NOT PLYWOOD_BUILD_TESTS OR PLYWOOD_FUZZ)
+    return()
+  endif()
+  add_custom_target(sanitize_ci)
+  foreach(layer msgs robot perception)
+    get_property(targets GLOBAL PROPERTY PLYWOOD_TEST_TARGETS_${layer})
+    add_dependencies(sanitize_ci ${targets})
+  endforeach()
+  add_dependencies(sanitize_ci fuzz_replay_perception)
+endfunction()

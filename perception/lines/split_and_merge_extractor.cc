@@ -151,10 +151,12 @@ std::vector<LineSegment> SplitAndMergeExtractor::Extract(const ScanPoints& scan)
         continue;
       }
       if (options_.skip_single_outliers) {
-        const auto near_chord = [&](int k) {
-          return k < lo || k > hi || ChordDistance(a, b, p[group[k]]) < 0.5 * threshold;
+        // Bounds passed in: clang 14 cannot capture structured bindings (a C++20 addition).
+        const auto near_chord = [&](int k, int first, int last) {
+          return k < first || k > last || ChordDistance(a, b, p[group[k]]) < 0.5 * threshold;
         };
-        if (worst - 1 >= lo && worst + 1 <= hi && near_chord(worst - 1) && near_chord(worst + 1)) {
+        if (worst - 1 >= lo && worst + 1 <= hi && near_chord(worst - 1, lo, hi) &&
+            near_chord(worst + 1, lo, hi)) {
           outlier[worst] = 1;
           stack.push_back({lo, hi});
           continue;

@@ -7,8 +7,11 @@
 namespace plywood::perception {
 
 std::optional<double> ParseFiniteNumber(std::string_view text) {
-  // from_chars rejects a leading '+', which hand-written files do use.
-  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  // from_chars rejects a leading '+', which hand-written files do use; one sign, not "+-5".
+  if (!text.empty() && text.front() == '+') {
+    text.remove_prefix(1);
+    if (!text.empty() && text.front() == '-') return std::nullopt;
+  }
   double value = 0.0;
   const char* end = text.data() + text.size();
   const auto [ptr, error] = std::from_chars(text.data(), end, value);

@@ -19,5 +19,12 @@ TEST(ParseFiniteNumberTest, RejectsEverythingElse) {
   }
 }
 
+// Found by fuzz/parse_number_fuzz.cc: stripping the '+' once left "-0" (and "-5") to from_chars.
+TEST(ParseFiniteNumberTest, RejectsTwoSigns) {
+  for (const char* bad : {"+-0", "+-5", "++5", "-+5"}) {
+    EXPECT_FALSE(ParseFiniteNumber(bad).has_value()) << "'" << bad << "'";
+  }
+}
+
 }  // namespace
 }  // namespace plywood::perception

@@ -114,9 +114,10 @@ void ReadOdometryConfig(YamlFields fields, const robot::DiffDriveSpec& nominal,
   fields.Finish();
   // Build each registered estimator once now, so a bad or unknown option is reported before the
   // run.
-  for (const auto& [name, options] : config.registered) {
-    CheckPluginBuild(fields.Child(name), [&] {
-      robot::MakeRegistered(*registered.Find(name), options,
+  // An iterator, not a structured binding: clang 14 cannot capture bindings in a lambda.
+  for (const auto& entry : config.registered) {
+    CheckPluginBuild(fields.Child(entry.first), [&] {
+      robot::MakeRegistered(*registered.Find(entry.first), entry.second,
                             robot::CalibratedGeometry(nominal, config.calibration), msgs::Pose2D{});
     });
   }
