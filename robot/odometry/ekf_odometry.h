@@ -33,8 +33,8 @@ struct EkfOdometryOptions {
   // Prior (1 sigma) on the drive's systematic errors left after `odometry.calibration`: the wheel
   // diameter ratio E_d and the track ratio E_b (Borenstein & Feng 1996 measured up to ~1 % and
   // ~5 % on uncalibrated robots). Both are filter states; 0 pins a ratio at 1.
-  double wheel_diameter_ratio_sigma = 0.005;
-  double track_ratio_sigma = 0.03;
+  double wheel_diameter_ratio_sigma = 0.001;
+  double track_ratio_sigma = 0.005;
   // Zero-velocity update: over an encoder interval in which neither wheel moved by a tick the
   // robot stands still, and its heading change is measured as 0 with this sigma (rad), far
   // tighter than one tick over the track, so stops pin the gyro bias.

@@ -167,7 +167,9 @@ TEST(EkfOdometryTest, StopsPinTheBiasSoAStraightRunRecoversTheWheelDiameterRatio
   // the encoders see a steady right turn of 0.3 * 0.01 / 0.4 = 0.0075 rad/s that a bias-only filter
   // would take for gyro bias. The 2 s stops show the bias is 0, so the filter must put it into E_d.
   const double e_d = 1.01;
-  EkfOdometry ekf(NominalGeometry(), {.increments = {}, .gyro_bias_sigma_rad_s = 0.01}, {});
+  EkfOdometry ekf(
+      NominalGeometry(),
+      {.increments = {}, .gyro_bias_sigma_rad_s = 0.01, .wheel_diameter_ratio_sigma = 0.02}, {});
   EncoderOdometry encoder(NominalGeometry(), EncoderOdometryOptions{}, {});
   double true_theta = 0.0;
   DrivePhases({{8.0, 0.3, 0.0}, {2.0, 0.0, 0.0}}, 120.0, 0.0, 0.0, {.e_d = e_d},
@@ -219,7 +221,8 @@ TEST(EkfOdometryTest, LeftAndRightTurnsSeparateTheTrackRatioFromTheBias) {
   // stops: squares of 90 deg spot turns, alternately left and right. The bias shifts both turns
   // the same way, E_b scales them with their sign, so both are recovered.
   const double e_b = 1.03, bias = 0.005;
-  EkfOdometry ekf(NominalGeometry(), {.increments = {}, .gyro_bias_sigma_rad_s = 0.05}, {});
+  EkfOdometry ekf(NominalGeometry(),
+                  {.increments = {}, .gyro_bias_sigma_rad_s = 0.05, .track_ratio_sigma = 0.05}, {});
   double true_theta = 0.0;
   const double w = (kPi / 2.0) / 3.0;
   DrivePhases({{6.0, 0.3, 0.0}, {3.0, 0.0, w}, {6.0, 0.3, 0.0}, {3.0, 0.0, -w}}, 180.0, bias, 0.0,

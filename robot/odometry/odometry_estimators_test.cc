@@ -237,6 +237,18 @@ TEST(OdometryEstimatorsTest, OptionsRejectBadValuesNamingTheField) {
               EkfOdometryOptions{.increments = {}, .gyro_noise_rad_s = 0}.Validate();
             }).rfind("gyro_noise_rad_s:", 0),
             0u);
+  EXPECT_EQ(message([] {
+              EkfOdometryOptions{.increments = {}, .gyro_gain = 0}.Validate();
+            }).rfind("gyro_gain:", 0),
+            0u);
+  EXPECT_EQ(message([] {
+              EkfOdometryOptions{.increments = {}, .track_ratio_sigma = 0.5}.Validate();
+            }).rfind("track_ratio_sigma:", 0),
+            0u);
+  EXPECT_EQ(message([] {
+              EkfOdometryOptions{.increments = {}, .zero_velocity_turn_sigma_rad = 0}.Validate();
+            }).rfind("zero_velocity_turn_sigma_rad:", 0),
+            0u);
   EXPECT_EQ(
       message([] { OdometryCalibration{.track_ratio = 3}.Validate(); }).rfind("track_ratio:", 0),
       0u);
