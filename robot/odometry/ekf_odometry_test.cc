@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <utility>
 #include <vector>
 
 #include "robot/odometry/encoder_odometry.h"
@@ -65,36 +66,14 @@ void DrivePhases(const std::vector<Phase>& phases, double duration_s, double bia
   }
 }
 
-// A kinematic robot (r = 0.1 m, b = 0.4 m, 1000 ticks/rev) driving 10 s legs at 0.2 m/s with
-// 90 deg spot turns in 4 s and 2 s stops, at 10 Hz, its gyro reading true rate + bias + noise.
-// `true_track_m` may differ from the 0.4 m the odometry believes.
+// 10 s legs at 0.2 m/s with 90 deg spot turns in 4 s between 2 s stops; `true_track_m` may differ
+// from the 0.4 m the odometry believes.
 template <typename Visitor>
 void DriveSquares(double duration_s, double bias_rad_s, double noise_rad_s, double true_track_m,
                   Visitor&& visit) {
-  std::mt19937_64 rng(7);
-  std::normal_distribution<double> normal(0.0, 1.0);
-  const double dt = 0.1, r = 0.1;
-  double left_rad = 0.0, right_rad = 0.0, theta = 0.0;
-  double w_prev = 0.0;  // the gyro reports the mean rate of the interval that just ended
-  for (int k = 0; k * dt <= duration_s; ++k) {
-    const double t = k * dt;
-    const double phase = std::fmod(t, 18.0);
-    double v = 0.0, w = 0.0;
-    if (phase < 10.0) {
-      v = 0.2;
-    } else if (phase >= 12.0 && phase < 16.0) {
-      w = (kPi / 2.0) / 4.0;
-    }
-    const double ticks_per_rad = 1000.0 / (2.0 * kPi);
-    visit(msgs::WheelEncoders{t, std::llround(std::floor(left_rad * ticks_per_rad)),
-                              std::llround(std::floor(right_rad * ticks_per_rad))},
-          msgs::GyroRate{t, w_prev + bias_rad_s + noise_rad_s * normal(rng)}, theta);
-    // Advance one interval at constant (v, w) (true kinematics with the true track).
-    left_rad += (v - w * true_track_m / 2.0) * dt / r;
-    right_rad += (v + w * true_track_m / 2.0) * dt / r;
-    theta += w * dt;
-    w_prev = w;
-  }
+  DrivePhases({{10.0, 0.2, 0.0}, {2.0, 0.0, 0.0}, {4.0, 0.0, (kPi / 2.0) / 4.0}, {2.0, 0.0, 0.0}},
+              duration_s, bias_rad_s, noise_rad_s, {.track_m = true_track_m},
+              std::forward<Visitor>(visit));
 }
 
 TEST(EkfOdometryTest, BiasConvergesToAnInjectedConstantBias) {
