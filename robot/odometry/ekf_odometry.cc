@@ -4,6 +4,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "msgs/shortest_number.h"
 #include "robot/drive/diff_drive_kinematics.h"
@@ -25,28 +26,54 @@ void RequirePositive(const char* field, double value) {
   }
 }
 
-enum Index { kX = 0, kY = 1, kTheta = 2, kBias = 3, kThetaPrev = 4 };
+enum Index {
+  kX = 0,
+  kY = 1,
+  kTheta = 2,
+  kBias = 3,
+  kWheelRatio = 4,
+  kTrackRatio = 5,
+  kThetaPrev = 6
+};
 
 }  // namespace
 
 void EkfOdometryOptions::Validate() const {
   increments.Validate();
   RequirePositive("gyro_noise_rad_s", gyro_noise_rad_s);
+  if (!std::isfinite(gyro_gain) || gyro_gain < 0.5 || gyro_gain > 2.0) {
+    throw std::invalid_argument("gyro_gain: must be in [0.5, 2], got " +
+                                msgs::ShortestNumber(gyro_gain));
+  }
   RequireNonNegative("gyro_scale_sigma", gyro_scale_sigma);
   RequireNonNegative("gyro_bias_sigma_rad_s", gyro_bias_sigma_rad_s);
   RequireNonNegative("gyro_bias_random_walk_rad_s_per_sqrt_s",
                      gyro_bias_random_walk_rad_s_per_sqrt_s);
   RequireNonNegative("wheel_slip_sigma", wheel_slip_sigma);
   RequireNonNegative("encoder_turn_sigma", encoder_turn_sigma);
+  RequirePositive("zero_velocity_turn_sigma_rad", zero_velocity_turn_sigma_rad);
+  // A ratio's prior must leave it well inside (0, 2): the measurement divides by E_d + 1.
+  for (const auto& [field, value] :
+       {std::pair{"wheel_diameter_ratio_sigma", wheel_diameter_ratio_sigma},
+        std::pair{"track_ratio_sigma", track_ratio_sigma}}) {
+    if (!std::isfinite(value) || value < 0.0 || value > 0.2) {
+      throw std::invalid_argument(std::string(field) + ": must be in [0, 0.2], got " +
+                                  msgs::ShortestNumber(value));
+    }
+  }
 }
 
 EkfOdometry::EkfOdometry(const OdometryGeometry& geometry, const EkfOdometryOptions& options,
                          const msgs::Pose2D& X_WR_initial)
     : options_((options.Validate(), options)),
       source_(geometry, options.increments, /*uses_gyro=*/true) {
-  state_ << X_WR_initial.x_m, X_WR_initial.y_m, X_WR_initial.theta_rad, 0.0, X_WR_initial.theta_rad;
+  state_ << X_WR_initial.x_m, X_WR_initial.y_m, X_WR_initial.theta_rad, 0.0, 1.0, 1.0,
+      X_WR_initial.theta_rad;
   covariance_.setZero();
   covariance_(kBias, kBias) = options_.gyro_bias_sigma_rad_s * options_.gyro_bias_sigma_rad_s;
+  covariance_(kWheelRatio, kWheelRatio) =
+      options_.wheel_diameter_ratio_sigma * options_.wheel_diameter_ratio_sigma;
+  covariance_(kTrackRatio, kTrackRatio) = options_.track_ratio_sigma * options_.track_ratio_sigma;
 }
 
 void EkfOdometry::AddEncoders(const msgs::WheelEncoders& encoders) {
@@ -70,8 +97,8 @@ msgs::Pose2D EkfOdometry::pose() const {
 double EkfOdometry::bias_sigma_rad_s() const { return std::sqrt(covariance_(kBias, kBias)); }
 
 void EkfOdometry::Step(const OdometryIncrement& increment) {
-  using Matrix5 = Eigen::Matrix<double, 5, 5>;
-  using Vector5 = Eigen::Matrix<double, 5, 1>;
+  using Matrix7 = Eigen::Matrix<double, 7, 7>;
+  using Vector7 = Eigen::Matrix<double, 7, 1>;
   const double dt = increment.end_s - increment.start_s;
   if (!(dt > 0.0)) return;
 
@@ -84,7 +111,7 @@ void EkfOdometry::Step(const OdometryIncrement& increment) {
   // Prediction: encoder distance, bias-corrected gyro heading change.
   const double ds = increment.ds_m;
   // The raw gyro angle: a dead band before removing the bias would hide the bias itself.
-  const double dtheta = increment.dtheta_gyro_raw_rad - state_(kBias) * dt;
+  const double dtheta = options_.gyro_gain * increment.dtheta_gyro_raw_rad - state_(kBias) * dt;
   const double mid = state_(kTheta) + dtheta / 2.0;
   const double c = std::cos(mid), s = std::sin(mid);
   double chord = ds;
@@ -95,7 +122,7 @@ void EkfOdometry::Step(const OdometryIncrement& increment) {
   state_(kY) += chord * s;
   state_(kTheta) += dtheta;
 
-  Matrix5 F = Matrix5::Identity();
+  Matrix7 F = Matrix7::Identity();
   F(kX, kTheta) = -chord * s;
   F(kY, kTheta) = chord * c;
   F(kX, kBias) = chord * s * dt / 2.0;
@@ -110,35 +137,46 @@ void EkfOdometry::Step(const OdometryIncrement& increment) {
   const double q_ds =
       std::pow(options_.wheel_slip_sigma, 2) *
       (increment.left_m * increment.left_m + increment.right_m * increment.right_m) / 4.0;
-  Vector5 g_gyro = Vector5::Zero();
-  g_gyro << -chord * s / 2.0, chord * c / 2.0, 1.0, 0.0, 0.0;
-  Vector5 g_ds = Vector5::Zero();
-  g_ds << c, s, 0.0, 0.0, 0.0;
-  Matrix5 Q = q_gyro * g_gyro * g_gyro.transpose() + q_ds * g_ds * g_ds.transpose();
+  Vector7 g_gyro = Vector7::Zero();
+  g_gyro << -chord * s / 2.0, chord * c / 2.0, 1.0, 0.0, 0.0, 0.0, 0.0;
+  Vector7 g_ds = Vector7::Zero();
+  g_ds << c, s, 0.0, 0.0, 0.0, 0.0, 0.0;
+  Matrix7 Q = q_gyro * g_gyro * g_gyro.transpose() + q_ds * g_ds * g_ds.transpose();
   Q(kBias, kBias) += std::pow(options_.gyro_bias_random_walk_rad_s_per_sqrt_s, 2) * dt;
   covariance_ = F * covariance_ * F.transpose() + Q;
 
-  // Measurement: the encoders' heading change over the interval, theta - theta_prev. Its noise is
-  // the two wheels' independent slip over the track plus the track uncertainty times the turn;
-  // quantisation (one tick over the track) keeps it from vanishing at rest.
+  // Measurement: the encoders' heading change over the interval, predicted from theta - theta_prev
+  // through the drive's error model (see the class comment). Its noise is the two wheels'
+  // independent slip over the track plus a white share of the turn and quantisation (one tick over
+  // the track). When no wheel moved, the robot stands still: the zero-velocity update, whose noise
+  // is not quantisation (nothing turned) but zero_velocity_turn_sigma_rad.
   const OdometryGeometry& g = source_.geometry();
   const double tick_m = 2.0 * std::numbers::pi * (g.left_wheel_radius_m + g.right_wheel_radius_m) /
                         2.0 / g.ticks_per_rev;
+  const bool stands_still = increment.left_m == 0.0 && increment.right_m == 0.0;
   const double r_encoder =
-      std::pow(options_.wheel_slip_sigma, 2) *
-          (increment.left_m * increment.left_m + increment.right_m * increment.right_m) /
-          (g.track_m * g.track_m) +
-      std::pow(options_.encoder_turn_sigma * increment.dtheta_encoder_rad, 2) +
-      2.0 * std::pow(tick_m / g.track_m, 2) / 12.0;
-  Eigen::Matrix<double, 1, 5> H = Eigen::Matrix<double, 1, 5>::Zero();
-  H(kTheta) = 1.0;
-  H(kThetaPrev) = -1.0;
-  const double innovation = increment.dtheta_encoder_rad - (state_(kTheta) - state_(kThetaPrev));
+      stands_still
+          ? std::pow(options_.zero_velocity_turn_sigma_rad, 2)
+          : std::pow(options_.wheel_slip_sigma, 2) *
+                    (increment.left_m * increment.left_m + increment.right_m * increment.right_m) /
+                    (g.track_m * g.track_m) +
+                std::pow(options_.encoder_turn_sigma * increment.dtheta_encoder_rad, 2) +
+                2.0 * std::pow(tick_m / g.track_m, 2) / 12.0;
+  const double turn = state_(kTheta) - state_(kThetaPrev);
+  const double e_d = state_(kWheelRatio), e_b = state_(kTrackRatio);
+  const double travel_over_track = 2.0 * ds / g.track_m;
+  Eigen::Matrix<double, 1, 7> H = Eigen::Matrix<double, 1, 7>::Zero();
+  H(kTheta) = e_b;
+  H(kThetaPrev) = -e_b;
+  H(kTrackRatio) = turn;
+  H(kWheelRatio) = -travel_over_track * 2.0 / ((e_d + 1.0) * (e_d + 1.0));
+  const double predicted = e_b * turn - travel_over_track * (e_d - 1.0) / (e_d + 1.0);
+  const double innovation = increment.dtheta_encoder_rad - predicted;
   const double innovation_variance = (H * covariance_ * H.transpose())(0, 0) + r_encoder;
-  const Vector5 gain = covariance_ * H.transpose() / innovation_variance;
+  const Vector7 gain = covariance_ * H.transpose() / innovation_variance;
   state_ += gain * innovation;
   // Joseph form keeps the covariance symmetric and positive over very long runs.
-  const Matrix5 I_KH = Matrix5::Identity() - gain * H;
+  const Matrix7 I_KH = Matrix7::Identity() - gain * H;
   covariance_ = I_KH * covariance_ * I_KH.transpose() + gain * r_encoder * gain.transpose();
 }
 

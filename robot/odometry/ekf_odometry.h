@@ -15,29 +15,48 @@ struct EkfOdometryOptions {
   IncrementOptions increments;
   // White noise of one gyro sample (rad/s, 1 sigma).
   double gyro_noise_rad_s = 0.002;
-  // Relative error of the gyro's heading change (scale factor uncertainty, 1 sigma).
-  double gyro_scale_sigma = 0.005;
+  // The gyro's scale-factor correction, multiplied into every heading change: a calibration of the
+  // robot (like `gyro.gain`), found once on a calibration run with ground truth
+  // (docs/odometry.md). Without an outside reference the filter cannot learn it: it only sees
+  // the gyro's turns against the encoders', whose scale E_b is itself a state.
+  double gyro_gain = 1.0;
+  // Relative error of the gyro's heading change left after that calibration (1 sigma).
+  double gyro_scale_sigma = 0.001;
   // Prior on the gyro's turn-on bias (rad/s, 1 sigma) and its random walk.
   double gyro_bias_sigma_rad_s = 0.01;
   double gyro_bias_random_walk_rad_s_per_sqrt_s = 1e-4;
   // Relative error of each wheel's travel (slip, tyre compression; 1 sigma).
   double wheel_slip_sigma = 0.005;
-  // Relative error of an encoder heading change (the effective track differs from the nominal one
-  // by this much, 1 sigma): what makes encoders poor at spot turns and good on straight legs.
-  double encoder_turn_sigma = 0.02;
+  // Relative white error of an encoder heading change beyond the systematic track ratio (uneven
+  // floor, tyre contact patch; 1 sigma).
+  double encoder_turn_sigma = 0.005;
+  // Prior (1 sigma) on the drive's systematic errors left after `odometry.calibration`: the wheel
+  // diameter ratio E_d and the track ratio E_b (Borenstein & Feng 1996 measured up to ~1 % and
+  // ~5 % on uncalibrated robots). Both are filter states; 0 pins a ratio at 1.
+  double wheel_diameter_ratio_sigma = 0.001;
+  double track_ratio_sigma = 0.005;
+  // Zero-velocity update: over an encoder interval in which neither wheel moved by a tick the
+  // robot stands still, and its heading change is measured as 0 with this sigma (rad), far
+  // tighter than one tick over the track, so stops pin the gyro bias.
+  double zero_velocity_turn_sigma_rad = 1e-5;
 
   // @throws std::invalid_argument naming the offending field.
   void Validate() const;
 };
 
-// An extended Kalman filter fusing wheel encoders and a yaw-rate gyro, with the gyro bias as a
-// state. State s = [x, y, theta, b, theta_prev]: the prediction integrates the encoder distance and
-// the bias-corrected gyro heading change (midpoint rule); the encoder heading change
-// theta - theta_prev is then a measurement of the same interval (stochastic cloning, Roumeliotis &
-// Burdick 2002, keeps the increment measurement consistent). On straight legs the encoders'
-// near-zero heading change makes the gyro bias observable; in turns, where the encoders' error
-// grows with the turn (encoder_turn_sigma), the gyro dominates. This is the usual "gyrodometry"
-// division of labour (Borenstein & Feng 1996, "Gyrodometry") done by a filter instead of a switch.
+// An extended Kalman filter fusing wheel encoders and a yaw-rate gyro that estimates what makes
+// each sensor wrong: the gyro bias b and the drive's wheel diameter ratio E_d and track ratio E_b.
+// State s = [x, y, theta, b, E_d, E_b, theta_prev]: the prediction integrates the encoder distance
+// and the bias-corrected gyro heading change; the encoder heading change of the same interval is
+// then a measurement of theta - theta_prev (stochastic cloning, Roumeliotis & Burdick 2002):
+//   z_enc = E_b (theta - theta_prev) - (2 ds / b) (E_d - 1) / (E_d + 1),
+// the UMBmark error model (a robot with D_R / D_L = E_d and track E_b b turns by
+// (d_R c_R - d_L c_L) / (E_b b)). Why E_d must be a state: on a straight leg at constant speed an
+// unmodelled E_d makes the encoders turn at a steady rate, which a bias-only filter cannot tell
+// from gyro bias. Bias acts per second and E_d per metre, so stops, spot turns (ds = 0) and speed
+// changes separate them; left and right turns separate E_b (odd in the turn) from the bias. When
+// neither wheel moved over an interval the robot stands still (zero-velocity update): the heading
+// change is zero up to the gyro's noise, which pins the bias alone.
 class EkfOdometry final : public OdometryEstimator {
  public:
   // @throws std::invalid_argument when `options` or `geometry` is invalid.
@@ -51,6 +70,9 @@ class EkfOdometry final : public OdometryEstimator {
   // The estimated gyro bias (rad/s) and its standard deviation.
   double bias_rad_s() const { return state_(3); }
   double bias_sigma_rad_s() const;
+  // The estimated residual drive errors, relative to the calibrated geometry (1 = none).
+  double wheel_diameter_ratio() const { return state_(4); }
+  double track_ratio() const { return state_(5); }
 
  private:
   void Drain();
@@ -58,8 +80,8 @@ class EkfOdometry final : public OdometryEstimator {
 
   EkfOdometryOptions options_;
   IncrementSource source_;
-  Eigen::Matrix<double, 5, 1> state_;
-  Eigen::Matrix<double, 5, 5> covariance_;
+  Eigen::Matrix<double, 7, 1> state_;
+  Eigen::Matrix<double, 7, 7> covariance_;
 };
 
 }  // namespace plywood::robot

@@ -1,5 +1,6 @@
-// The EKF's gyro-bias state converges to an injected constant bias, and the filter's heading then
-// beats both sensors alone when the encoders' track is off and the gyro is biased.
+// The EKF's states converge to injected errors with closed-form values: a constant gyro bias, a
+// wheel diameter ratio E_d, a track ratio E_b, the bias alone from a stop (zero-velocity update);
+// and the filter's heading then beats both sensors alone.
 
 #include "robot/odometry/ekf_odometry.h"
 
@@ -8,6 +9,8 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "robot/odometry/encoder_odometry.h"
 #include "robot/odometry/gyro_odometry.h"
@@ -17,36 +20,60 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-// A kinematic robot (r = 0.1 m, b = 0.4 m, 1000 ticks/rev) driving 10 s legs at 0.2 m/s with
-// 90 deg spot turns in 4 s and 2 s stops, at 10 Hz, its gyro reading true rate + bias + noise.
-// `true_track_m` may differ from the 0.4 m the odometry believes.
+// One phase of a scripted drive: forward speed and yaw rate held for a duration.
+struct Phase {
+  double duration_s;
+  double v_m_s;
+  double w_rad_s;
+};
+
+// The drive the robot really has: mean wheel radius 0.1 m, right/left diameter ratio e_d,
+// track (the odometry believes 0.4 m and equal wheels).
+struct TrueDrive {
+  double e_d = 1.0;
+  double track_m = 0.4;
+};
+
+// A kinematic robot (1000 ticks/rev) running `phases` in a loop for duration_s at 10 Hz; its gyro
+// reads the true rate + bias + noise (the mean rate of the interval that just ended).
 template <typename Visitor>
-void DriveSquares(double duration_s, double bias_rad_s, double noise_rad_s, double true_track_m,
-                  Visitor&& visit) {
+void DrivePhases(const std::vector<Phase>& phases, double duration_s, double bias_rad_s,
+                 double noise_rad_s, const TrueDrive& drive, Visitor&& visit) {
   std::mt19937_64 rng(7);
   std::normal_distribution<double> normal(0.0, 1.0);
-  const double dt = 0.1, r = 0.1;
-  double left_rad = 0.0, right_rad = 0.0, theta = 0.0;
-  double w_prev = 0.0;  // the gyro reports the mean rate of the interval that just ended
+  const double dt = 0.1;
+  const double r_left = 0.1 * 2.0 / (drive.e_d + 1.0), r_right = r_left * drive.e_d;
+  double cycle_s = 0.0;
+  for (const Phase& p : phases) cycle_s += p.duration_s;
+  double left_rad = 0.0, right_rad = 0.0, theta = 0.0, w_prev = 0.0;
   for (int k = 0; k * dt <= duration_s; ++k) {
     const double t = k * dt;
-    const double phase = std::fmod(t, 18.0);
-    double v = 0.0, w = 0.0;
-    if (phase < 10.0) {
-      v = 0.2;
-    } else if (phase >= 12.0 && phase < 16.0) {
-      w = (kPi / 2.0) / 4.0;
+    double phase_t = std::fmod(t + 1e-9, cycle_s);
+    Phase now = phases.front();
+    for (const Phase& p : phases) {
+      now = p;
+      if (phase_t < p.duration_s) break;
+      phase_t -= p.duration_s;
     }
     const double ticks_per_rad = 1000.0 / (2.0 * kPi);
     visit(msgs::WheelEncoders{t, std::llround(std::floor(left_rad * ticks_per_rad)),
                               std::llround(std::floor(right_rad * ticks_per_rad))},
           msgs::GyroRate{t, w_prev + bias_rad_s + noise_rad_s * normal(rng)}, theta);
-    // Advance one interval at constant (v, w) (true kinematics with the true track).
-    left_rad += (v - w * true_track_m / 2.0) * dt / r;
-    right_rad += (v + w * true_track_m / 2.0) * dt / r;
-    theta += w * dt;
-    w_prev = w;
+    left_rad += (now.v_m_s - now.w_rad_s * drive.track_m / 2.0) * dt / r_left;
+    right_rad += (now.v_m_s + now.w_rad_s * drive.track_m / 2.0) * dt / r_right;
+    theta += now.w_rad_s * dt;
+    w_prev = now.w_rad_s;
   }
+}
+
+// 10 s legs at 0.2 m/s with 90 deg spot turns in 4 s between 2 s stops; `true_track_m` may differ
+// from the 0.4 m the odometry believes.
+template <typename Visitor>
+void DriveSquares(double duration_s, double bias_rad_s, double noise_rad_s, double true_track_m,
+                  Visitor&& visit) {
+  DrivePhases({{10.0, 0.2, 0.0}, {2.0, 0.0, 0.0}, {4.0, 0.0, (kPi / 2.0) / 4.0}, {2.0, 0.0, 0.0}},
+              duration_s, bias_rad_s, noise_rad_s, {.track_m = true_track_m},
+              std::forward<Visitor>(visit));
 }
 
 TEST(EkfOdometryTest, BiasConvergesToAnInjectedConstantBias) {
@@ -105,6 +132,89 @@ TEST(EkfOdometryTest, TrustsTheGyroInTurnsWhenTheTrackIsWrong) {
   const double ekf_error = std::abs(msgs::WrapAngle(ekf.pose().theta_rad - true_theta));
   EXPECT_GT(encoder_error, 0.15);  // four turns of 2.7 deg
   EXPECT_LT(ekf_error, encoder_error / 4.0);
+}
+
+OdometryGeometry NominalGeometry() {
+  return {.left_wheel_radius_m = 0.1,
+          .right_wheel_radius_m = 0.1,
+          .track_m = 0.4,
+          .ticks_per_rev = 1000};
+}
+
+TEST(EkfOdometryTest, StopsPinTheBiasSoAStraightRunRecoversTheWheelDiameterRatio) {
+  // A perfect gyro (no bias, no noise) and right wheels 1 % larger: on the 0.3 m/s straight legs
+  // the encoders see a steady right turn of 0.3 * 0.01 / 0.4 = 0.0075 rad/s that a bias-only filter
+  // would take for gyro bias. The 2 s stops show the bias is 0, so the filter must put it into E_d.
+  const double e_d = 1.01;
+  EkfOdometry ekf(
+      NominalGeometry(),
+      {.increments = {}, .gyro_bias_sigma_rad_s = 0.01, .wheel_diameter_ratio_sigma = 0.02}, {});
+  EncoderOdometry encoder(NominalGeometry(), EncoderOdometryOptions{}, {});
+  double true_theta = 0.0;
+  DrivePhases({{8.0, 0.3, 0.0}, {2.0, 0.0, 0.0}}, 120.0, 0.0, 0.0, {.e_d = e_d},
+              [&](const msgs::WheelEncoders& e, const msgs::GyroRate& w, double theta) {
+                ekf.AddEncoders(e);
+                ekf.AddGyro(w);
+                encoder.AddEncoders(e);
+                true_theta = theta;
+              });
+  EXPECT_NEAR(ekf.wheel_diameter_ratio(), e_d, 2e-4);
+  EXPECT_NEAR(ekf.bias_rad_s(), 0.0, 2e-5);
+  EXPECT_NEAR(ekf.track_ratio(), 1.0, 1e-3);  // no turn: little to learn about the track
+  // 96 s of driving at 0.0075 rad/s: the encoders are 0.72 rad off; the filter's error is what the
+  // first leg cost before the first stop told bias from E_d.
+  EXPECT_NEAR(msgs::WrapAngle(encoder.pose().theta_rad - true_theta), -0.72, 0.01);
+  EXPECT_LT(std::abs(msgs::WrapAngle(ekf.pose().theta_rad - true_theta)), 5e-3);
+}
+
+TEST(EkfOdometryTest, ZeroVelocityUpdateRemovesAKnownBias) {
+  // Standing still for 10 s with a 0.01 rad/s bias and no noise: the wheels do not move, so the
+  // heading change is zero and the gyro's whole reading is bias. The filter must learn it, keep the
+  // heading at 0, and carry the bias into the drive that follows.
+  const double bias = 0.01;
+  EkfOdometry ekf(NominalGeometry(), {.increments = {}, .gyro_bias_sigma_rad_s = 0.05}, {});
+  GyroOdometry gyro(NominalGeometry(), {}, {});
+  double bias_after_stop = 0.0, theta_after_stop = 0.0;
+  double true_theta = 0.0;
+  DrivePhases({{10.0, 0.0, 0.0}, {10.0, 0.3, 0.0}}, 20.0, bias, 0.0, {},
+              [&](const msgs::WheelEncoders& e, const msgs::GyroRate& w, double theta) {
+                ekf.AddEncoders(e);
+                ekf.AddGyro(w);
+                gyro.AddEncoders(e);
+                gyro.AddGyro(w);
+                true_theta = theta;
+                if (std::abs(e.time_s - 10.0) < 1e-9) {
+                  bias_after_stop = ekf.bias_rad_s();
+                  theta_after_stop = ekf.pose().theta_rad;
+                }
+              });
+  EXPECT_NEAR(bias_after_stop, bias, 1e-5);
+  EXPECT_NEAR(theta_after_stop, 0.0, 1e-3);
+  // The gyro alone integrates 20 s of bias: 0.2 rad; the filter stays on the true heading.
+  EXPECT_NEAR(gyro.pose().theta_rad - true_theta, 0.2, 1e-3);
+  EXPECT_LT(std::abs(ekf.pose().theta_rad - true_theta), 1e-3);
+}
+
+TEST(EkfOdometryTest, LeftAndRightTurnsSeparateTheTrackRatioFromTheBias) {
+  // The real track is 3 % wider, the gyro exact but biased by 0.005 rad/s, and the robot never
+  // stops: squares of 90 deg spot turns, alternately left and right. The bias shifts both turns
+  // the same way, E_b scales them with their sign, so both are recovered.
+  const double e_b = 1.03, bias = 0.005;
+  EkfOdometry ekf(NominalGeometry(),
+                  {.increments = {}, .gyro_bias_sigma_rad_s = 0.05, .track_ratio_sigma = 0.05}, {});
+  double true_theta = 0.0;
+  const double w = (kPi / 2.0) / 3.0;
+  DrivePhases({{6.0, 0.3, 0.0}, {3.0, 0.0, w}, {6.0, 0.3, 0.0}, {3.0, 0.0, -w}}, 180.0, bias, 0.0,
+              {.track_m = 0.4 * e_b},
+              [&](const msgs::WheelEncoders& e, const msgs::GyroRate& g, double theta) {
+                ekf.AddEncoders(e);
+                ekf.AddGyro(g);
+                true_theta = theta;
+              });
+  EXPECT_NEAR(ekf.track_ratio(), e_b, 1e-3);
+  EXPECT_NEAR(ekf.bias_rad_s(), bias, 5e-5);
+  EXPECT_NEAR(ekf.wheel_diameter_ratio(), 1.0, 1e-4);
+  EXPECT_LT(std::abs(msgs::WrapAngle(ekf.pose().theta_rad - true_theta)), 5e-3);
 }
 
 }  // namespace

@@ -98,7 +98,8 @@ TEST(OdometryEstimatorsTest, ConstantCurvatureArcIsExactWithArcIntegration) {
       const msgs::Pose2D pose = estimator->pose();
       EXPECT_NEAR(pose.x_m, radius * std::sin(theta), 1e-9) << e.name << " gyro x" << gyro_rate;
       EXPECT_NEAR(pose.y_m, radius * (1.0 - std::cos(theta)), 1e-9) << e.name;
-      EXPECT_NEAR(pose.theta_rad, msgs::WrapAngle(theta), 1e-9) << e.name;
+      // theta is pi here: compare the wrapped difference, not two values either side of the cut.
+      EXPECT_NEAR(msgs::WrapAngle(pose.theta_rad - theta), 0.0, 1e-9) << e.name;
     }
   }
 }
@@ -235,6 +236,18 @@ TEST(OdometryEstimatorsTest, OptionsRejectBadValuesNamingTheField) {
   EXPECT_EQ(message([] {
               EkfOdometryOptions{.increments = {}, .gyro_noise_rad_s = 0}.Validate();
             }).rfind("gyro_noise_rad_s:", 0),
+            0u);
+  EXPECT_EQ(message([] {
+              EkfOdometryOptions{.increments = {}, .gyro_gain = 0}.Validate();
+            }).rfind("gyro_gain:", 0),
+            0u);
+  EXPECT_EQ(message([] {
+              EkfOdometryOptions{.increments = {}, .track_ratio_sigma = 0.5}.Validate();
+            }).rfind("track_ratio_sigma:", 0),
+            0u);
+  EXPECT_EQ(message([] {
+              EkfOdometryOptions{.increments = {}, .zero_velocity_turn_sigma_rad = 0}.Validate();
+            }).rfind("zero_velocity_turn_sigma_rad:", 0),
             0u);
   EXPECT_EQ(
       message([] { OdometryCalibration{.track_ratio = 3}.Validate(); }).rfind("track_ratio:", 0),

@@ -53,11 +53,15 @@ template <typename A>
 void VisitFields(A& a, robot::EkfOdometryOptions& o) {
   VisitFields(a, o.increments);
   a("gyro_noise_rad_s", o.gyro_noise_rad_s);
+  a("gyro_gain", o.gyro_gain);
   a("gyro_scale_sigma", o.gyro_scale_sigma);
   a("gyro_bias_sigma_rad_s", o.gyro_bias_sigma_rad_s);
   a("gyro_bias_random_walk_rad_s_per_sqrt_s", o.gyro_bias_random_walk_rad_s_per_sqrt_s);
   a("wheel_slip_sigma", o.wheel_slip_sigma);
   a("encoder_turn_sigma", o.encoder_turn_sigma);
+  a("wheel_diameter_ratio_sigma", o.wheel_diameter_ratio_sigma);
+  a("track_ratio_sigma", o.track_ratio_sigma);
+  a("zero_velocity_turn_sigma_rad", o.zero_velocity_turn_sigma_rad);
 }
 
 namespace {
