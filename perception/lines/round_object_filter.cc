@@ -8,6 +8,7 @@
 
 #include "msgs/shortest_number.h"
 #include "perception/lines/circle_fit.h"
+#include "perception/lines/end_point_fit.h"
 #include "perception/lines/tls_line_fit.h"
 
 namespace plywood::perception {
@@ -177,6 +178,27 @@ void RemoveRoundObjects(std::span<const Eigen::Vector2d> points, double noise_si
     ++out;
   }
   lines->resize(out);
+}
+
+std::vector<char> RoundObjectPoints(const ScanPoints& scan, const BreakpointOptions& breakpoints,
+                                    double split_threshold_m, const RoundObjectOptions& options) {
+  std::vector<char> round(scan.size(), 0);
+  if (!options.reject_round_objects) return round;
+  for (const std::vector<int>& group : SplitAtBreakpoints(scan, breakpoints)) {
+    if (static_cast<int>(group.size()) < options.min_round_points) continue;
+    std::vector<std::vector<int>> pieces =
+        SplitByEndPointFit(scan.points, group, split_threshold_m, /*skip_single_outliers=*/true);
+    const std::vector<std::vector<int>> before = pieces;
+    RemoveRoundObjects(scan.points, breakpoints.sigma_m, options, &pieces);
+    if (pieces.size() == before.size()) continue;
+    // Every point of the group not on a kept piece was on a round object's piece.
+    std::vector<char> kept(scan.size(), 0);
+    for (const auto& piece : pieces)
+      for (int i : piece) kept[i] = 1;
+    for (const auto& piece : before)
+      for (int i : piece) round[i] = !kept[i];
+  }
+  return round;
 }
 
 }  // namespace plywood::perception

@@ -4,6 +4,9 @@
 #include <span>
 #include <vector>
 
+#include "perception/lines/line_extractor.h"
+#include "perception/lines/scan_points.h"
+
 namespace plywood::perception {
 
 // Round objects (columns, table legs, bins) have no line to give, yet an ordered extractor cuts
@@ -36,5 +39,12 @@ struct RoundObjectOptions {
 // object seen from outside. `noise_sigma_m` is the range noise of one point.
 void RemoveRoundObjects(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
                         const RoundObjectOptions& options, std::vector<std::vector<int>>* lines);
+
+// The same stage for extractors that look for lines among all of a scan's points (RANSAC, Hough):
+// the scan's breakpoint groups, each cut by the end-point fit at split_threshold_m
+// (end_point_fit.h), then RemoveRoundObjects on each group's pieces. Returns per point whether it
+// lies on a round object (all zero when options.reject_round_objects is false).
+std::vector<char> RoundObjectPoints(const ScanPoints& scan, const BreakpointOptions& breakpoints,
+                                    double split_threshold_m, const RoundObjectOptions& options);
 
 }  // namespace plywood::perception
