@@ -22,7 +22,7 @@ struct HoughOptions {
   double distance_threshold_m = 0.03;
   double max_gap_m = 0.3;
   int min_points = 5;
-  double min_length_m = 0.0;
+  double min_length_m = 0.06;  // as split_and_merge: chords across a table leg are not walls
   int max_lines = 100;
   // On an ordered scan (Extract): runs are also cut where neighbours along the line are not
   // neighbours in the scan or have an opening between them (SplitRunsInScan, with

@@ -24,7 +24,7 @@ struct RansacOptions {
   int min_inliers = 8;
   double max_gap_m = 0.3;
   int min_points = 5;
-  double min_length_m = 0.0;
+  double min_length_m = 0.06;  // as split_and_merge: chords across a table leg are not walls
   int max_lines = 100;
   std::uint64_t seed = 4;
   // On an ordered scan (Extract): runs are also cut where neighbours along the line are not

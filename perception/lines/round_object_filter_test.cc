@@ -73,7 +73,7 @@ TEST(RoundObjectFilterTest, NoisyColumnsGoAndABoxCornerStays) {
   EXPECT_EQ(faces, 2);
 }
 
-TEST(RoundObjectFilterTest, SingleLinesAndArcsAroundTheSensorStay) {
+TEST(RoundObjectFilterTest, ArcsAroundTheSensorAndStraightChordsStay) {
   // Points on a circle of radius 0.4 m around the sensor (a curved wall seen from inside), cut in
   // two "lines": never an object.
   std::vector<Eigen::Vector2d> points;
@@ -103,11 +103,20 @@ TEST(RoundObjectFilterTest, SingleLinesAndArcsAroundTheSensorStay) {
   RemoveRoundObjects(far_side, 0.01, any_arc, &copy);
   EXPECT_EQ(copy.size(), 2u);
 
-  // A single line is never dropped, however round its points.
-  std::vector<std::vector<int>> one{{}};
-  for (int k = 0; k < 20; ++k) one[0].push_back(k);
-  RemoveRoundObjects(points, 0.01, any_arc, &one);
-  EXPECT_EQ(one.size(), 1u);
+  // A single line that is its whole group (a thin column's one chord) goes when round over
+  // >= 100 deg; a straight one (a box face) stays.
+  std::vector<Eigen::Vector2d> column, face;
+  for (int k = 0; k < 7; ++k) {
+    const double a = kPi - 1.2 + 2.4 * k / 6.0;  // 137 deg of a 5 cm column 1.5 m away
+    column.push_back(Eigen::Vector2d(1.5, 0.0) + 0.05 * Eigen::Vector2d(std::cos(a), std::sin(a)));
+    face.push_back(Eigen::Vector2d(1.45, -0.05 + 0.1 * k / 6.0));
+  }
+  std::vector<std::vector<int>> one{{0, 1, 2, 3, 4, 5, 6}};
+  std::vector<std::vector<int>> copy_one = one;
+  RemoveRoundObjects(face, 0.01, {}, &copy_one);
+  EXPECT_EQ(copy_one.size(), 1u);
+  RemoveRoundObjects(column, 0.01, {}, &one);
+  EXPECT_TRUE(one.empty()) << "a thin column's single chord";
 }
 
 TEST(RoundObjectFilterTest, BadOptionsAreRejectedByField) {
