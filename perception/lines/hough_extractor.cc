@@ -66,8 +66,11 @@ std::vector<LineSegment> HoughExtractor::Extract(const ScanPoints& scan) const {
     }
   };
   // Points on round objects never vote.
-  std::vector<char> removed = RoundObjectPoints(
-      scan, options_.breakpoints, options_.distance_threshold_m, options_.round_objects);
+  const bool ordered = scan.HasScanOrder();
+  std::vector<char> removed =
+      ordered ? RoundObjectPoints(scan, options_.breakpoints, options_.distance_threshold_m,
+                                  options_.round_objects)
+              : std::vector<char>(n, 0);
   for (int i = 0; i < n; ++i)
     if (!removed[i]) vote(i, 1);
   const double tol = options_.distance_threshold_m;
@@ -97,8 +100,11 @@ std::vector<LineSegment> HoughExtractor::Extract(const ScanPoints& scan) const {
       votes[cell] = 0;  // a cell voted by points that now all belong to earlier lines
       continue;
     }
-    for (const std::vector<int>& run : SplitRunsInScan(scan, inliers, alpha, options_.max_gap_m,
-                                                       options_.breakpoints.max_missing_beams)) {
+    const std::vector<std::vector<int>> runs =
+        ordered ? SplitRunsInScan(scan, inliers, alpha, options_.max_gap_m,
+                                  options_.breakpoints.max_missing_beams)
+                : SplitRunsAlongLine(p, inliers, alpha, options_.max_gap_m);
+    for (const std::vector<int>& run : runs) {
       if (static_cast<int>(run.size()) < options_.min_points) continue;
       LineSegment s = FitSegmentTrimmed(p, run);
       if (s.LengthM() < options_.min_length_m) continue;

@@ -29,7 +29,7 @@ RansacExtractor::RansacExtractor(const RansacOptions& options) : options_(option
 }
 
 std::vector<LineSegment> RansacExtractor::Extract(const ScanPoints& scan) const {
-  return ExtractImpl(scan.points, &scan, nullptr);
+  return ExtractImpl(scan.points, scan.HasScanOrder() ? &scan : nullptr, nullptr);
 }
 
 std::vector<LineSegment> RansacExtractor::ExtractFromPoints(
