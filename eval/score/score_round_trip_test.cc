@@ -146,11 +146,15 @@ TEST(ScoreRoundTripTest, OwnLinesCsvScoresExactlyItsMetrics) {
 }
 
 TEST(ScoreRoundTripTest, EndpointsAloneGiveTheSameRecallAndPrecision) {
-  // Only scan, extractor and the endpoints: the line through them replaces the fitted normal form.
+  // Only scan, extractor, the endpoints and the points used (the match rule's direction tolerance
+  // depends on them): the line through the endpoints replaces the fitted normal form.
   const CsvTable full = ReadCsv(RunDir() / "lines.csv");
-  std::string text = "scan,extractor,x1_m,y1_m,x2_m,y2_m\n";
+  const int points = full.Column("points");
+  ASSERT_GE(points, 0);
+  std::string text = "scan,extractor,x1_m,y1_m,x2_m,y2_m,points\n";
   for (const CsvRow& row : full.rows) {
-    for (int c = 0; c < 6; ++c) text += row.fields[c] + (c < 5 ? "," : "\n");
+    for (int c = 0; c < 6; ++c) text += row.fields[c] + ",";
+    text += row.fields[points] + "\n";
   }
   const fs::path file =
       testing::WriteFile(testing::MakeTempDir("score_endpoints") / "endpoints.csv", text);

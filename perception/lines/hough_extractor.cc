@@ -28,6 +28,8 @@ void HoughOptions::Validate() const {
   if (min_points < 2) throw std::invalid_argument("min_points: must be >= 2");
   if (!(min_length_m >= 0.0)) throw std::invalid_argument("min_length_m: must be >= 0");
   if (max_lines < 1) throw std::invalid_argument("max_lines: must be >= 1");
+  breakpoints.Validate();
+  round_objects.Validate();
 }
 
 HoughExtractor::HoughExtractor(const HoughOptions& options) : options_(options) {
@@ -63,8 +65,14 @@ std::vector<LineSegment> HoughExtractor::Extract(const ScanPoints& scan) const {
       votes[static_cast<std::size_t>(t) * rhos + k] += delta;
     }
   };
-  for (int i = 0; i < n; ++i) vote(i, 1);
-  std::vector<char> removed(n, 0);
+  // Points on round objects never vote.
+  const bool ordered = scan.HasScanOrder();
+  std::vector<char> removed =
+      ordered ? RoundObjectPoints(scan, options_.breakpoints, options_.distance_threshold_m,
+                                  options_.round_objects)
+              : std::vector<char>(n, 0);
+  for (int i = 0; i < n; ++i)
+    if (!removed[i]) vote(i, 1);
   const double tol = options_.distance_threshold_m;
   for (int round = 0; round < options_.max_lines; ++round) {
     const auto peak = std::max_element(votes.begin(), votes.end());
@@ -92,7 +100,11 @@ std::vector<LineSegment> HoughExtractor::Extract(const ScanPoints& scan) const {
       votes[cell] = 0;  // a cell voted by points that now all belong to earlier lines
       continue;
     }
-    for (const std::vector<int>& run : SplitRunsAlongLine(p, inliers, alpha, options_.max_gap_m)) {
+    const std::vector<std::vector<int>> runs =
+        ordered ? SplitRunsInScan(scan, inliers, alpha, options_.max_gap_m,
+                                  options_.breakpoints.max_missing_beams)
+                : SplitRunsAlongLine(p, inliers, alpha, options_.max_gap_m);
+    for (const std::vector<int>& run : runs) {
       if (static_cast<int>(run.size()) < options_.min_points) continue;
       LineSegment s = FitSegmentTrimmed(p, run);
       if (s.LengthM() < options_.min_length_m) continue;

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "perception/lines/line_extractor.h"
+#include "perception/lines/round_object_filter.h"
 
 namespace plywood::perception {
 
@@ -21,8 +22,14 @@ struct HoughOptions {
   double distance_threshold_m = 0.03;
   double max_gap_m = 0.3;
   int min_points = 5;
-  double min_length_m = 0.0;
+  double min_length_m = 0.06;  // as split_and_merge: chords across a table leg are not walls
   int max_lines = 100;
+  // On an ordered scan (Extract): runs are also cut where neighbours along the line are not
+  // neighbours in the scan or have an opening between them (SplitRunsInScan, with
+  // breakpoints.max_missing_beams), and points on round objects are left out before the search
+  // (RoundObjectPoints: breakpoint groups cut by the end-point fit at distance_threshold_m).
+  BreakpointOptions breakpoints;
+  RoundObjectOptions round_objects;
 
   void Validate() const;
 };

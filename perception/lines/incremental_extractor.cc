@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "msgs/shortest_number.h"
+#include "perception/lines/corner_refinement.h"
 #include "perception/lines/tls_line_fit.h"
 
 namespace plywood::perception {
@@ -78,6 +79,7 @@ std::vector<LineSegment> IncrementalExtractor::Extract(const ScanPoints& scan) c
       merged.push_back(std::move(line));
     }
     RemoveRoundObjects(p, options_.breakpoints.sigma_m, options_.round_objects, &merged);
+    RefineCorners(p, group, scan.closed && n == static_cast<int>(p.size()), &merged);
     for (const auto& line : merged) {
       if (static_cast<int>(line.size()) < options_.filter.min_points) continue;
       LineSegment s = FitSegmentTrimmed(p, line);

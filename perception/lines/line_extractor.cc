@@ -23,6 +23,14 @@ void BreakpointOptions::Validate() const {
   if (!(sigma_m >= 0.0)) {
     throw std::invalid_argument("sigma_m: must be >= 0, got " + msgs::ShortestNumber(sigma_m));
   }
+  ValidateMaxMissingBeams(max_missing_beams);
+}
+
+void ValidateMaxMissingBeams(int max_missing_beams) {
+  if (max_missing_beams < 0) {
+    throw std::invalid_argument("max_missing_beams: must be >= 0, got " +
+                                std::to_string(max_missing_beams));
+  }
 }
 
 std::vector<std::vector<int>> SplitAtBreakpoints(const ScanPoints& scan,
@@ -42,8 +50,10 @@ std::vector<std::vector<int>> SplitAtBreakpoints(const ScanPoints& scan,
         std::min(scan.range_m[i], scan.range_m[j]) * ratio * steps + 3.0 * options.sigma_m;
     return std::min(options.max_m, std::max(options.min_m, d));
   };
+  // i before j in scan order.
   const auto near = [&](int i, int j) {
-    return (scan.points[i] - scan.points[j]).norm() <= threshold(i, j);
+    return !OpeningBetween(scan, i, j, options.max_missing_beams) &&
+           (scan.points[i] - scan.points[j]).norm() <= threshold(i, j);
   };
   // For a closed scan start at a breakpoint so no wall is cut at the seam.
   int start = 0;
@@ -116,6 +126,32 @@ std::vector<std::vector<int>> SplitRunsAlongLine(std::span<const Eigen::Vector2d
   for (std::size_t k = 0; k < keyed.size(); ++k) {
     if (k == 0 || keyed[k].first - keyed[k - 1].first > max_gap_m) runs.emplace_back();
     runs.back().push_back(keyed[k].second);
+  }
+  return runs;
+}
+
+std::vector<std::vector<int>> SplitRunsInScan(const ScanPoints& scan, std::vector<int> indices,
+                                              double alpha_rad, double max_gap_m,
+                                              int max_missing_beams) {
+  const int n = static_cast<int>(scan.size());
+  // Whether a and b are at most one point apart in scan order with no opening on the way.
+  const auto scan_neighbours = [&](int a, int b) {
+    int first = std::min(a, b), last = std::max(a, b);
+    if (scan.closed && last - first > n - last + first) std::swap(first, last);  // via the seam
+    const int steps = (last - first + n) % n;
+    if (steps < 1 || steps > 2) return false;
+    for (int k = first; k != last; k = (k + 1) % n) {
+      if (OpeningBetween(scan, k, (k + 1) % n, max_missing_beams)) return false;
+    }
+    return true;
+  };
+  std::vector<std::vector<int>> runs;
+  for (std::vector<int>& run :
+       SplitRunsAlongLine(scan.points, std::move(indices), alpha_rad, max_gap_m)) {
+    for (std::size_t k = 0; k < run.size(); ++k) {
+      if (k == 0 || !scan_neighbours(run[k - 1], run[k])) runs.emplace_back();
+      runs.back().push_back(run[k]);
+    }
   }
   return runs;
 }

@@ -21,7 +21,10 @@ class LineExtractor {
 };
 
 // Breaking an ordered scan into groups of neighbouring points (shared by the ordered extractors).
-// Two consecutive points belong to different groups when they are farther apart than
+// Two consecutive points belong to different groups when more than max_missing_beams beams
+// between them gave no usable return (nothing was seen there: an opening seen past the range
+// cut cannot be told from a wall, whatever its width -- the one break rule every extractor
+// shares, see OpeningBetween), or when they are farther apart than
 // min(max_m, max(min_m, r * sin(dphi) / sin(lambda - dphi) + 3 sigma)) -- the adaptive breakpoint
 // of Borges & Aldon ("Line extraction in 2D range images for mobile robotics", JIRS 2004), kept
 // below max_m so a doorway (0.8 m and wider) always breaks a wall.
@@ -33,9 +36,20 @@ struct BreakpointOptions {
   // A single point far from both neighbours, whose neighbours are close to each other, is an
   // outlier (a dust speck, a mixed pixel): dropped instead of breaking the group.
   bool drop_lone_outliers = true;
+  // 1: a single dropout (the LMS 200 drops ~0.2 % of its beams) does not cut a wall.
+  int max_missing_beams = 1;
 
   void Validate() const;
 };
+
+// @throws std::invalid_argument("max_missing_beams: ...") when negative.
+void ValidateMaxMissingBeams(int max_missing_beams);
+
+// The shared break rule: whether more than max_missing_beams beams between point i and the next
+// point j in scan order gave no usable return.
+inline bool OpeningBetween(const ScanPoints& scan, int i, int j, int max_missing_beams) {
+  return scan.MissingBeams(i, j) > max_missing_beams;
+}
 
 // Groups of point indices (each in scan order; for a closed scan a group may wrap past the end).
 std::vector<std::vector<int>> SplitAtBreakpoints(const ScanPoints& scan,
@@ -53,5 +67,14 @@ struct SegmentFilterOptions {
 std::vector<std::vector<int>> SplitRunsAlongLine(std::span<const Eigen::Vector2d> points,
                                                  std::vector<int> indices, double alpha_rad,
                                                  double max_gap_m);
+
+// The same on an ordered scan, where a line's points are also neighbours in scan order (a wall
+// is seen at bearings that grow along it): runs are also cut where two neighbours along the line
+// are more than one point apart in the scan (the run would bridge other things seen between
+// them, e.g. where the infinite line crosses another wall) or have an opening between them
+// (OpeningBetween).
+std::vector<std::vector<int>> SplitRunsInScan(const ScanPoints& scan, std::vector<int> indices,
+                                              double alpha_rad, double max_gap_m,
+                                              int max_missing_beams);
 
 }  // namespace plywood::perception

@@ -158,20 +158,58 @@ TEST(LineExtractorsTest, ADoorwayIsNeverBridged) {
   }
 }
 
+// A segment from `start` to `end` with `points` points and its normal form, as an extractor gives.
+LineSegment SegmentThrough(const Eigen::Vector2d& start, const Eigen::Vector2d& end, int points) {
+  LineSegment s;
+  s.start = start;
+  s.end = end;
+  s.num_points = points;
+  const Eigen::Vector2d d = (end - start).normalized();
+  CanonicalNormalForm(std::atan2(-d.x(), d.y()), Eigen::Vector2d(d.y(), -d.x()).dot(start),
+                      &s.alpha_rad, &s.r_m);
+  return s;
+}
+
 TEST(LineScoringTest, GateAndOverlapAreApplied) {
   const std::vector<TruthSegment> truth{{{2, -1}, {2, 1}, 20}};
-  LineSegment s;
-  s.alpha_rad = 0.0;
-  s.r_m = 2.04;
-  s.start = {2.04, -0.5};
-  s.end = {2.04, 0.5};
-  EXPECT_EQ(MatchSegment(s, truth, {}), 0);
-  s.r_m = 2.06;  // beyond 5 cm
-  EXPECT_EQ(MatchSegment(s, truth, {}), -1);
-  s.r_m = 2.0;
-  s.start = {2.0, 0.8};  // only 0.2 of 1.2 m overlaps
-  s.end = {2.0, 2.0};
-  EXPECT_EQ(MatchSegment(s, truth, {}), -1);
+  EXPECT_EQ(MatchSegment(SegmentThrough({2.04, -0.5}, {2.04, 0.5}, 50), truth, {}), 0);
+  // One endpoint beyond 5 cm.
+  EXPECT_EQ(MatchSegment(SegmentThrough({2.0, -0.5}, {2.06, 0.5}, 50), truth, {}), -1);
+  // Only 0.2 of 1.2 m overlaps.
+  EXPECT_EQ(MatchSegment(SegmentThrough({2.0, 0.8}, {2.0, 2.0}, 50), truth, {}), -1);
+}
+
+TEST(LineScoringTest, ShortSegmentFarFromThePerpendicularFootMatches) {
+  // Issue 13's lever arm: a 0.4 m piece of the wall x = 2, 1.7 m from the foot of the
+  // perpendicular from the sensor, turned by 1.9 deg about its middle. Its endpoints lie within
+  // 7 mm of the wall, but the normal form's r differs by 5.6 cm: the old r gate refused it.
+  const std::vector<TruthSegment> truth{{{2, -3}, {2, 3}, 20}};
+  const double turn = 1.9 * std::numbers::pi / 180.0;
+  const Eigen::Vector2d middle(2.0, 1.7), half(-0.2 * std::sin(turn), 0.2 * std::cos(turn));
+  const LineSegment s = SegmentThrough(middle - half, middle + half, 20);
+  double d_alpha = 0, d_r = 0;
+  ASSERT_EQ(MatchSegment(s, truth, {}, &d_alpha, &d_r), 0);
+  EXPECT_GT(std::abs(d_r), 0.05);  // Nguyen's d_r is still reported as it is
+  // A short box face (0.1 m, 6 points) 8 deg off: 1 cm noise allows about 20 deg over 0.1 m.
+  const std::vector<TruthSegment> box{{{1, 0}, {1, 0.1}, 6}};
+  const double tilt = 8.0 * std::numbers::pi / 180.0;
+  const Eigen::Vector2d c(1.0, 0.05), h(-0.05 * std::sin(tilt), 0.05 * std::cos(tilt));
+  EXPECT_EQ(MatchSegment(SegmentThrough(c - h, c + h, 6), box, {}), 0);
+  // The same face with noise-free points allows 5 deg only.
+  LineScoringOptions exact;
+  exact.range_noise_sigma_m = 0.0;
+  EXPECT_EQ(MatchSegment(SegmentThrough(c - h, c + h, 6), box, exact), -1);
+  // A long segment crossing the wall at 30 deg never matches, however near its middle lies.
+  EXPECT_EQ(MatchSegment(SegmentThrough({1.9, -0.17}, {2.1, 0.17}, 40), truth, {}), -1);
+}
+
+TEST(LineScoringTest, DirectionToleranceShrinksWithLengthAndPoints) {
+  const LineScoringOptions options;
+  const double deg = std::numbers::pi / 180.0;
+  EXPECT_NEAR(DirectionToleranceRad(2.0, 100, options), 5.0 * deg, 1e-12);  // the floor
+  // Two points 0.1 m apart: sigma_theta = sqrt(2) * 1 cm / 0.1 m.
+  EXPECT_NEAR(DirectionToleranceRad(0.1, 2, options), 3.0 * std::sqrt(2.0) * 0.1, 1e-12);
+  EXPECT_LT(DirectionToleranceRad(0.1, 10, options), DirectionToleranceRad(0.1, 4, options));
 }
 
 TEST(RayExplanationTest, DistanceIsToTheSegmentNotTheLine) {

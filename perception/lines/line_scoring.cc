@@ -11,8 +11,18 @@
 namespace plywood::perception {
 
 void LineScoringOptions::Validate() const {
-  if (!(max_alpha_diff_deg > 0.0)) throw std::invalid_argument("max_alpha_diff_deg: must be > 0");
-  if (!(max_r_diff_m > 0.0)) throw std::invalid_argument("max_r_diff_m: must be > 0");
+  if (!(max_endpoint_distance_m > 0.0)) {
+    throw std::invalid_argument("max_endpoint_distance_m: must be > 0");
+  }
+  if (!(max_alpha_diff_deg > 0.0 && max_alpha_diff_deg < 90.0)) {
+    throw std::invalid_argument("max_alpha_diff_deg: must be in (0, 90)");
+  }
+  if (!(range_noise_sigma_m >= 0.0 && range_noise_sigma_m <= 1.0)) {
+    throw std::invalid_argument("range_noise_sigma_m: must be in [0, 1]");
+  }
+  if (!(direction_sigmas >= 0.0 && direction_sigmas <= 10.0)) {
+    throw std::invalid_argument("direction_sigmas: must be in [0, 10]");
+  }
   if (!(min_overlap_fraction >= 0.0 && min_overlap_fraction <= 1.0)) {
     throw std::invalid_argument("min_overlap_fraction: must be in [0, 1]");
   }
@@ -53,39 +63,64 @@ void NormalFormDifference(double alpha_1, double r_1, double alpha_2, double r_2
   }
 }
 
+double DirectionToleranceRad(double length_m, int num_points, const LineScoringOptions& options) {
+  const double floor = options.max_alpha_diff_deg * std::numbers::pi / 180.0;
+  const double n = std::max(2, num_points);
+  const double spread_m2 = length_m * length_m * n * (n + 1.0) / (12.0 * (n - 1.0));
+  if (!(spread_m2 > 0.0)) return std::numbers::pi / 2.0;
+  const double sigma_theta = options.range_noise_sigma_m / std::sqrt(spread_m2);
+  return std::min(std::numbers::pi / 2.0, std::max(floor, options.direction_sigmas * sigma_theta));
+}
+
+std::optional<FaceMatch> MatchFace(const LineSegment& segment, const TruthSegment& face,
+                                   const LineScoringOptions& options) {
+  const Eigen::Vector2d ab = face.b - face.a;
+  const double length = ab.norm();
+  if (length < 1e-9) return std::nullopt;
+  const Eigen::Vector2d u = ab / length;
+  const Eigen::Vector2d n(u.y(), -u.x());
+  FaceMatch match;
+  // (1) Both endpoints near the face's line.
+  match.endpoint_distance_m =
+      std::max(std::abs(n.dot(segment.start - face.a)), std::abs(n.dot(segment.end - face.a)));
+  if (match.endpoint_distance_m > options.max_endpoint_distance_m) return std::nullopt;
+  // (2) Direction, within what the segment's length and points allow.
+  const Eigen::Vector2d d = segment.end - segment.start;
+  const double segment_length = d.norm();
+  match.angle_rad = segment_length > 1e-12
+                        ? std::atan2(std::abs(d.x() * u.y() - d.y() * u.x()), std::abs(d.dot(u)))
+                        : 0.0;
+  match.angle_tolerance_rad = DirectionToleranceRad(segment_length, segment.num_points, options);
+  if (match.angle_rad > match.angle_tolerance_rad) return std::nullopt;
+  // (3) Overlap of the segment's projection with the face [0, length].
+  const double s0 = (segment.start - face.a).dot(u), s1 = (segment.end - face.a).dot(u);
+  const double lo = std::min(s0, s1), hi = std::max(s0, s1);
+  const double overlap = std::min(hi, length) - std::max(lo, 0.0);
+  if (overlap < 0.0 || overlap < options.min_overlap_fraction * (hi - lo)) return std::nullopt;
+  double alpha = 0, r = 0;
+  CanonicalNormalForm(std::atan2(n.y(), n.x()), n.dot(face.a), &alpha, &r);
+  NormalFormDifference(segment.alpha_rad, segment.r_m, alpha, r, &match.d_alpha_rad, &match.d_r_m);
+  return match;
+}
+
 int MatchSegment(const LineSegment& segment, std::span<const TruthSegment> truth,
                  const LineScoringOptions& options, double* d_alpha_out, double* d_r_out) {
-  const double max_alpha = options.max_alpha_diff_deg * std::numbers::pi / 180.0;
   int best = -1;
   double best_cost = 0.0;
   bool best_observed = false;
   for (std::size_t k = 0; k < truth.size(); ++k) {
-    const TruthSegment& t = truth[k];
-    const Eigen::Vector2d ab = t.b - t.a;
-    const double length = ab.norm();
-    if (length < 1e-9) continue;
-    const Eigen::Vector2d u = ab / length;
-    const Eigen::Vector2d n(u.y(), -u.x());
-    double alpha = 0, r = 0;
-    CanonicalNormalForm(std::atan2(n.y(), n.x()), n.dot(t.a), &alpha, &r);
-    double d_alpha = 0, d_r = 0;
-    NormalFormDifference(segment.alpha_rad, segment.r_m, alpha, r, &d_alpha, &d_r);
-    if (std::abs(d_alpha) > max_alpha || std::abs(d_r) > options.max_r_diff_m) continue;
-    // Overlap of the extracted segment's projection with [0, length].
-    const double s0 = (segment.start - t.a).dot(u), s1 = (segment.end - t.a).dot(u);
-    const double lo = std::min(s0, s1), hi = std::max(s0, s1);
-    const double overlap = std::min(hi, length) - std::max(lo, 0.0);
-    const double needed = options.min_overlap_fraction * (hi - lo);
-    if (overlap < needed || overlap < 0.0) continue;
-    const double cost = std::abs(d_alpha) / max_alpha + std::abs(d_r) / options.max_r_diff_m;
-    const bool observed = t.observed_rays > 0;
+    const std::optional<FaceMatch> match = MatchFace(segment, truth[k], options);
+    if (!match) continue;
+    const double cost = match->endpoint_distance_m / options.max_endpoint_distance_m +
+                        match->angle_rad / match->angle_tolerance_rad;
+    const bool observed = truth[k].observed_rays > 0;
     if (best < 0 || (observed && !best_observed) ||
         (observed == best_observed && cost < best_cost)) {
       best = static_cast<int>(k);
       best_cost = cost;
       best_observed = observed;
-      if (d_alpha_out) *d_alpha_out = d_alpha;
-      if (d_r_out) *d_r_out = d_r;
+      if (d_alpha_out) *d_alpha_out = match->d_alpha_rad;
+      if (d_r_out) *d_r_out = match->d_r_m;
     }
   }
   return best;

@@ -22,6 +22,7 @@ void PolarNeighbourOptions::Validate() const {
   if (min_points < 2) {
     throw std::invalid_argument("min_points: must be >= 2, got " + std::to_string(min_points));
   }
+  ValidateMaxMissingBeams(max_missing_beams);
 }
 
 PolarNeighbourExtractor::PolarNeighbourExtractor(const PolarNeighbourOptions& options)
@@ -41,7 +42,11 @@ std::vector<LineSegment> PolarNeighbourExtractor::Extract(const ScanPoints& scan
   const double max_d = options_.max_point_distance_m;
   const double max_alpha = options_.max_alpha_diff_deg * std::numbers::pi / 180.0;
   const bool closed = scan.closed;
-  const auto close = [&](int a, int b) { return (p[used[a]] - p[used[b]]).norm() <= max_d; };
+  // a before b in scan order.
+  const auto close = [&](int a, int b) {
+    return (p[used[a]] - p[used[b]]).norm() <= max_d &&
+           !OpeningBetween(scan, used[a], used[b], options_.max_missing_beams);
+  };
   // Local line of each point from itself and its close neighbours (two points at a chain's end).
   std::vector<double> alpha(n, 0.0), r(n, 0.0);
   std::vector<char> has_line(n, 0);
@@ -51,7 +56,7 @@ std::vector<LineSegment> PolarNeighbourExtractor::Extract(const ScanPoints& scan
     const int previous = k > 0 ? k - 1 : (closed ? n - 1 : -1);
     const int next = k + 1 < n ? k + 1 : (closed ? 0 : -1);
     if (previous >= 0 && previous != k && close(previous, k)) m.Add(p[used[previous]]);
-    if (next >= 0 && next != k && next != previous && close(next, k)) m.Add(p[used[next]]);
+    if (next >= 0 && next != k && next != previous && close(k, next)) m.Add(p[used[next]]);
     if (m.count() < 2) continue;
     m.Fit(&alpha[k], &r[k]);
     has_line[k] = 1;

@@ -18,6 +18,9 @@ struct PolarNeighbourOptions {
   double max_r_diff_m = 0.15;
   double max_range_m = 4.0;
   int min_points = 4;
+  // The shared break rule (line_extractor.h OpeningBetween): points with more beams than this
+  // between them without a usable return are never chained.
+  int max_missing_beams = 1;
 
   void Validate() const;
 };

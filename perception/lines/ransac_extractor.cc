@@ -20,6 +20,8 @@ void RansacOptions::Validate() const {
   if (min_points < 2) throw std::invalid_argument("min_points: must be >= 2");
   if (!(min_length_m >= 0.0)) throw std::invalid_argument("min_length_m: must be >= 0");
   if (max_lines < 1) throw std::invalid_argument("max_lines: must be >= 1");
+  breakpoints.Validate();
+  round_objects.Validate();
 }
 
 RansacExtractor::RansacExtractor(const RansacOptions& options) : options_(options) {
@@ -27,15 +29,26 @@ RansacExtractor::RansacExtractor(const RansacOptions& options) : options_(option
 }
 
 std::vector<LineSegment> RansacExtractor::Extract(const ScanPoints& scan) const {
-  return ExtractFromPoints(scan.points);
+  return ExtractImpl(scan.points, scan.HasScanOrder() ? &scan : nullptr, nullptr);
 }
 
 std::vector<LineSegment> RansacExtractor::ExtractFromPoints(
     std::span<const Eigen::Vector2d> points, std::vector<std::vector<int>>* inliers_out) const {
+  return ExtractImpl(points, nullptr, inliers_out);
+}
+
+std::vector<LineSegment> RansacExtractor::ExtractImpl(
+    std::span<const Eigen::Vector2d> points, const ScanPoints* scan,
+    std::vector<std::vector<int>>* inliers_out) const {
   std::vector<LineSegment> out;
   std::mt19937_64 rng(options_.seed);
-  std::vector<int> remaining(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) remaining[i] = static_cast<int>(i);
+  const std::vector<char> round =
+      scan != nullptr ? RoundObjectPoints(*scan, options_.breakpoints,
+                                          options_.distance_threshold_m, options_.round_objects)
+                      : std::vector<char>(points.size(), 0);
+  std::vector<int> remaining;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (!round[i]) remaining.push_back(static_cast<int>(i));
   const double tol = options_.distance_threshold_m;
   std::vector<int> inliers;
   std::vector<char> taken(points.size(), 0);
@@ -76,8 +89,11 @@ std::vector<LineSegment> RansacExtractor::ExtractFromPoints(
       for (int i : remaining)
         if (std::abs(best_n.dot(points[i]) - best_c) <= tol) inliers.push_back(i);
     }
-    for (const std::vector<int>& run :
-         SplitRunsAlongLine(points, inliers, alpha, options_.max_gap_m)) {
+    const std::vector<std::vector<int>> runs =
+        scan != nullptr ? SplitRunsInScan(*scan, inliers, alpha, options_.max_gap_m,
+                                          options_.breakpoints.max_missing_beams)
+                        : SplitRunsAlongLine(points, inliers, alpha, options_.max_gap_m);
+    for (const std::vector<int>& run : runs) {
       if (static_cast<int>(run.size()) < options_.min_points) continue;
       LineSegment s = FitSegmentTrimmed(points, run);
       if (s.LengthM() < options_.min_length_m) continue;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "perception/lines/line_extractor.h"
+#include "perception/lines/round_object_filter.h"
 
 namespace plywood::perception {
 
@@ -23,9 +24,15 @@ struct RansacOptions {
   int min_inliers = 8;
   double max_gap_m = 0.3;
   int min_points = 5;
-  double min_length_m = 0.0;
+  double min_length_m = 0.06;  // as split_and_merge: chords across a table leg are not walls
   int max_lines = 100;
   std::uint64_t seed = 4;
+  // On an ordered scan (Extract): runs are also cut where neighbours along the line are not
+  // neighbours in the scan or have an opening between them (SplitRunsInScan, with
+  // breakpoints.max_missing_beams), and points on round objects are left out before the search
+  // (RoundObjectPoints: breakpoint groups cut by the end-point fit at distance_threshold_m).
+  BreakpointOptions breakpoints;
+  RoundObjectOptions round_objects;
 
   void Validate() const;
 };
@@ -42,6 +49,11 @@ class RansacExtractor final : public LineExtractor {
       std::vector<std::vector<int>>* inliers = nullptr) const;
 
  private:
+  // `scan` (optional) gives the points' scan order.
+  std::vector<LineSegment> ExtractImpl(std::span<const Eigen::Vector2d> points,
+                                       const ScanPoints* scan,
+                                       std::vector<std::vector<int>>* inliers) const;
+
   const RansacOptions options_;
 };
 

@@ -8,6 +8,7 @@
 
 #include "msgs/shortest_number.h"
 #include "perception/lines/circle_fit.h"
+#include "perception/lines/end_point_fit.h"
 #include "perception/lines/tls_line_fit.h"
 
 namespace plywood::perception {
@@ -18,6 +19,10 @@ constexpr double kMinKeptFraction = 0.8;
 constexpr double kNoiseLevelSigmas = 1.5;
 constexpr double kChiSquarePerParameter = 3.0;
 constexpr double kMinBulgeSigmas = 3.0;
+// A thin column (r 3-10 cm) gives one chord of 5-10 points whose bulge is 1-3 noise sigmas; a
+// circle has 3 parameters, so 5 points leave it 2 degrees of freedom.
+constexpr int kMinChordPoints = 5;
+constexpr double kMinChordBulgeSigmas = 1.5;
 
 // Whether lines[first..last] (inclusive) are one round object.
 bool IsRoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
@@ -26,7 +31,9 @@ bool IsRoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
   std::vector<int> run;
   for (int k = first; k <= last; ++k) run.insert(run.end(), lines[k].begin(), lines[k].end());
   const int total = static_cast<int>(run.size());
-  if (total < options.min_round_points) return false;
+  const bool chord = first == last;  // a single free-standing line (the whole group)
+  const int min_points = chord ? kMinChordPoints : options.min_round_points;
+  if (total < min_points) return false;
   // Cheap test first: the near side of a round object bulges towards the sensor, beyond the
   // chord between the run's ends; straight walls and concave corners do not (most runs).
   {
@@ -42,7 +49,7 @@ bool IsRoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
     const double r_max = options.max_round_radius_m;
     if (half_chord >= r_max) return false;
     const double min_sagitta = r_max - std::sqrt(r_max * r_max - half_chord * half_chord);
-    const double noise_m = kMinBulgeSigmas * noise_sigma_m;
+    const double noise_m = (chord ? kMinChordBulgeSigmas : kMinBulgeSigmas) * noise_sigma_m;
     if (bulge_m < std::max(noise_m, min_sagitta - noise_m)) return false;
   }
   std::optional<CircleFit> circle = FitCircle(points, run);
@@ -58,8 +65,7 @@ bool IsRoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
     is_kept[j] = !off_circle(run[j]);
     if (is_kept[j]) kept.push_back(run[j]);
   }
-  if (kept.size() < kMinKeptFraction * total ||
-      static_cast<int>(kept.size()) < options.min_round_points) {
+  if (kept.size() < kMinKeptFraction * total || static_cast<int>(kept.size()) < min_points) {
     return false;
   }
   if (static_cast<int>(kept.size()) < total) {
@@ -153,8 +159,10 @@ void RemoveRoundObjects(std::span<const Eigen::Vector2d> points, double noise_si
       ++first;
       continue;
     }
-    // The longest round run starting here.
-    int round_last = -1;
+    // The longest round run starting here; a single line only when it is the whole group (both
+    // its ends are breaks: a free-standing thin column gives one chord).
+    int round_last =
+        count == 1 && IsRoundRun(points, noise_sigma_m, options, *lines, first, first) ? first : -1;
     Eigen::Vector2d lo = box_lo[first], hi = box_hi[first];
     for (int last = first + 1; last < count; ++last) {
       if ((*lines)[last].empty()) break;
@@ -177,6 +185,27 @@ void RemoveRoundObjects(std::span<const Eigen::Vector2d> points, double noise_si
     ++out;
   }
   lines->resize(out);
+}
+
+std::vector<char> RoundObjectPoints(const ScanPoints& scan, const BreakpointOptions& breakpoints,
+                                    double split_threshold_m, const RoundObjectOptions& options) {
+  std::vector<char> round(scan.size(), 0);
+  if (!options.reject_round_objects) return round;
+  for (const std::vector<int>& group : SplitAtBreakpoints(scan, breakpoints)) {
+    if (static_cast<int>(group.size()) < options.min_round_points) continue;
+    std::vector<std::vector<int>> pieces =
+        SplitByEndPointFit(scan.points, group, split_threshold_m, /*skip_single_outliers=*/true);
+    const std::vector<std::vector<int>> before = pieces;
+    RemoveRoundObjects(scan.points, breakpoints.sigma_m, options, &pieces);
+    if (pieces.size() == before.size()) continue;
+    // Every point of the group not on a kept piece was on a round object's piece.
+    std::vector<char> kept(scan.size(), 0);
+    for (const auto& piece : pieces)
+      for (int i : piece) kept[i] = 1;
+    for (const auto& piece : before)
+      for (int i : piece) round[i] = !kept[i];
+  }
+  return round;
 }
 
 }  // namespace plywood::perception

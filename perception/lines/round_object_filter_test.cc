@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "perception/lines/scan_points.h"
+#include "perception/lines/scan_scene_test_support.h"
 #include "perception/lines/split_and_merge_extractor.h"
 
 namespace plywood::perception {
@@ -15,47 +16,8 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-struct Disc {
-  Eigen::Vector2d centre;
-  double radius_m;
-};
-
-// A closed 720-beam scan (0.5 deg, two back-to-back LMS 200) from the origin of polygons
-// (each a closed chain of corners) and discs, with Gaussian range noise.
-ScanPoints ScanScene(const std::vector<std::vector<Eigen::Vector2d>>& polygons,
-                     const std::vector<Disc>& discs, double noise_m = 0.0) {
-  msgs::LaserScan scan;
-  scan.angle_min_rad = -kPi;
-  scan.angle_increment_rad = kPi / 360.0;
-  scan.range_max_m = 20.0;
-  std::mt19937_64 rng(11);
-  std::normal_distribution<double> noise(0.0, noise_m);
-  for (int i = 0; i < 720; ++i) {
-    const double a = scan.BeamAngleRad(i);
-    const Eigen::Vector2d d(std::cos(a), std::sin(a));
-    double best = 20.0;
-    for (const auto& corners : polygons) {
-      for (std::size_t k = 0; k < corners.size(); ++k) {
-        const Eigen::Vector2d p = corners[k], e = corners[(k + 1) % corners.size()] - p;
-        const double den = d.x() * e.y() - d.y() * e.x();
-        if (std::abs(den) < 1e-12) continue;
-        const double t = (p.x() * e.y() - p.y() * e.x()) / den;
-        const double u = (p.x() * d.y() - p.y() * d.x()) / den;
-        if (t > 0 && u >= 0 && u <= 1) best = std::min(best, t);
-      }
-    }
-    for (const Disc& disc : discs) {
-      const double along = disc.centre.dot(d);
-      const double off_sq = disc.centre.squaredNorm() - along * along;
-      const double r_sq = disc.radius_m * disc.radius_m;
-      if (off_sq <= r_sq && along > 0) best = std::min(best, along - std::sqrt(r_sq - off_sq));
-    }
-    scan.ranges_m.push_back(best + (noise_m > 0 ? noise(rng) : 0.0));
-  }
-  ScanPoints points = MakeScanPoints(scan, ScanFilter{});
-  points.closed = true;
-  return points;
-}
+using testing::Disc;
+using testing::ScanScene;
 
 const std::vector<Eigen::Vector2d> kRoom{{-2.5, -2.0}, {3.5, -2.0}, {3.5, 3.0}, {-2.5, 3.0}};
 
@@ -111,7 +73,7 @@ TEST(RoundObjectFilterTest, NoisyColumnsGoAndABoxCornerStays) {
   EXPECT_EQ(faces, 2);
 }
 
-TEST(RoundObjectFilterTest, SingleLinesAndArcsAroundTheSensorStay) {
+TEST(RoundObjectFilterTest, ArcsAroundTheSensorAndStraightChordsStay) {
   // Points on a circle of radius 0.4 m around the sensor (a curved wall seen from inside), cut in
   // two "lines": never an object.
   std::vector<Eigen::Vector2d> points;
@@ -141,11 +103,20 @@ TEST(RoundObjectFilterTest, SingleLinesAndArcsAroundTheSensorStay) {
   RemoveRoundObjects(far_side, 0.01, any_arc, &copy);
   EXPECT_EQ(copy.size(), 2u);
 
-  // A single line is never dropped, however round its points.
-  std::vector<std::vector<int>> one{{}};
-  for (int k = 0; k < 20; ++k) one[0].push_back(k);
-  RemoveRoundObjects(points, 0.01, any_arc, &one);
-  EXPECT_EQ(one.size(), 1u);
+  // A single line that is its whole group (a thin column's one chord) goes when round over
+  // >= 100 deg; a straight one (a box face) stays.
+  std::vector<Eigen::Vector2d> column, face;
+  for (int k = 0; k < 7; ++k) {
+    const double a = kPi - 1.2 + 2.4 * k / 6.0;  // 137 deg of a 5 cm column 1.5 m away
+    column.push_back(Eigen::Vector2d(1.5, 0.0) + 0.05 * Eigen::Vector2d(std::cos(a), std::sin(a)));
+    face.push_back(Eigen::Vector2d(1.45, -0.05 + 0.1 * k / 6.0));
+  }
+  std::vector<std::vector<int>> one{{0, 1, 2, 3, 4, 5, 6}};
+  std::vector<std::vector<int>> copy_one = one;
+  RemoveRoundObjects(face, 0.01, {}, &copy_one);
+  EXPECT_EQ(copy_one.size(), 1u);
+  RemoveRoundObjects(column, 0.01, {}, &one);
+  EXPECT_TRUE(one.empty()) << "a thin column's single chord";
 }
 
 TEST(RoundObjectFilterTest, BadOptionsAreRejectedByField) {

@@ -1,5 +1,6 @@
 #include "perception/lines/scan_points.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -11,6 +12,15 @@ void ScanPoints::Add(double r, double bearing, int beam) {
   bearing_rad.push_back(bearing);
   points.emplace_back(r * std::cos(bearing), r * std::sin(bearing));
   beam_index.push_back(beam);
+}
+
+int ScanPoints::MissingBeams(int i, int j) const {
+  int steps = beam_index[j] - beam_index[i];
+  if (steps <= 0 && closed && angle_increment_rad != 0.0) {
+    // Past the seam: the beams of a full turn.
+    steps += static_cast<int>(std::lround(2.0 * std::numbers::pi / std::abs(angle_increment_rad)));
+  }
+  return std::max(0, steps - 1);
 }
 
 ScanPoints MakeScanPoints(const msgs::LaserScan& scan, const ScanFilter& filter) {

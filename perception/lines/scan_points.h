@@ -22,7 +22,14 @@ struct ScanPoints {
 
   std::size_t size() const { return points.size(); }
   bool empty() const { return points.empty(); }
+  // Whether the polar view and beam indices go with the points (filled by Add), not bare points.
+  bool HasScanOrder() const {
+    return range_m.size() == points.size() && beam_index.size() == points.size();
+  }
   void Add(double range_m, double bearing_rad, int beam);
+  // Beams without a usable return between point i and the next point j in scan order (past the
+  // seam of a closed scan too): no return, a dropout, or a return filtered out (range cut).
+  int MissingBeams(int i, int j) const;
 };
 
 // Which returns become points: range_min_m < r < range_max_m (strict on both sides, so ranges

@@ -18,8 +18,8 @@ class YamlFields;
 //   lines:
 //     extractors: [split_and_merge, ransac]   # default: all, built-in and registered
 //     range_cut_m: 8                          # only returns at most this far are used
-//     scoring: {max_alpha_diff_deg: 5, max_r_diff_m: 0.05, min_overlap_fraction: 0.5,
-//               min_observed_rays: 5}
+//     scoring: {max_endpoint_distance_m: 0.05, max_alpha_diff_deg: 5, range_noise_sigma_m: 0.01,
+//               direction_sigmas: 3, min_overlap_fraction: 0.5, min_observed_rays: 5}
 //     split_and_merge: {split_threshold_m: 0.04, breakpoints: {max_m: 0.5}, ...}
 //     my_extractor: {min_points: 6}           # a registered one's options (docs/plugins.md)
 // Without the section no line scoring runs.

@@ -22,6 +22,7 @@ void VisitFields(A& a, BreakpointOptions& o) {
   a("lambda_deg", o.lambda_deg);
   a("sigma_m", o.sigma_m);
   a("drop_lone_outliers", o.drop_lone_outliers);
+  a("max_missing_beams", o.max_missing_beams);
 }
 
 // The segment filter's fields sit flat beside each extractor's own.
@@ -53,6 +54,7 @@ void VisitFields(A& a, PolarNeighbourOptions& o) {
   a("max_r_diff_m", o.max_r_diff_m);
   a("max_range_m", o.max_range_m);
   a("min_points", o.min_points);
+  a("max_missing_beams", o.max_missing_beams);
 }
 
 template <typename A>
@@ -87,6 +89,8 @@ void VisitFields(A& a, RansacOptions& o) {
   a("min_length_m", o.min_length_m);
   a("max_lines", o.max_lines);
   a("seed", o.seed);
+  a.Nested("breakpoints", o.breakpoints);
+  VisitFields(a, o.round_objects);
 }
 
 template <typename A>
@@ -99,12 +103,16 @@ void VisitFields(A& a, HoughOptions& o) {
   a("min_points", o.min_points);
   a("min_length_m", o.min_length_m);
   a("max_lines", o.max_lines);
+  a.Nested("breakpoints", o.breakpoints);
+  VisitFields(a, o.round_objects);
 }
 
 template <typename A>
 void VisitFields(A& a, LineScoringOptions& o) {
+  a("max_endpoint_distance_m", o.max_endpoint_distance_m);
   a("max_alpha_diff_deg", o.max_alpha_diff_deg);
-  a("max_r_diff_m", o.max_r_diff_m);
+  a("range_noise_sigma_m", o.range_noise_sigma_m);
+  a("direction_sigmas", o.direction_sigmas);
   a("min_overlap_fraction", o.min_overlap_fraction);
   a("min_observed_rays", o.min_observed_rays);
 }
