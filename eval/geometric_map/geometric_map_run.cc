@@ -29,8 +29,9 @@ double SegmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
 }
 
 // Final and mean heading (deg) and position (m) errors of `estimate` against `truth`.
-void AddPoseErrors(const std::vector<msgs::Pose2D>& truth, const std::vector<msgs::Pose2D>& estimate,
-                   const std::string& key, sim::Metrics& m) {
+void AddPoseErrors(const std::vector<msgs::Pose2D>& truth,
+                   const std::vector<msgs::Pose2D>& estimate, const std::string& key,
+                   sim::Metrics& m) {
   double heading_sum = 0.0, position_sum = 0.0, heading = 0.0, position = 0.0;
   for (std::size_t i = 0; i < truth.size(); ++i) {
     heading = std::abs(msgs::WrapAngle(estimate[i].theta_rad - truth[i].theta_rad)) * kRadToDeg;
@@ -117,7 +118,8 @@ bool AddGeometricMapMetrics(sim::ExperimentRunner& runner, GeometricMapRun* run)
       if (ir.hit_segment_ids[i] >= 0) ++face_count[ir.hit_segment_ids[i]];
       if (ir.hit_geom_ids[i] >= 0) ++geom_count[ir.hit_geom_ids[i]];
     }
-    for (const auto& [k, n] : face_count) truth[k].observed_rays = std::max(truth[k].observed_rays, n);
+    for (const auto& [k, n] : face_count)
+      truth[k].observed_rays = std::max(truth[k].observed_rays, n);
     for (const auto& [g, n] : geom_count) geom_hits[g] = std::max(geom_hits[g], n);
   }
   std::vector<perception::LineSegment> real;  // confirmed real segments: what the map claims
@@ -224,14 +226,17 @@ void WriteGeometricMapJson(const GeometricMapRun& run, const std::string& out_di
   for (const auto& s : run.map.segments()) {
     segments.push_back({{"start", point(s.line.start)},
                         {"end", point(s.line.end)},
-                        {"tag", s.pseudo ? "pseudo" : run.map.Confirmed(s) ? "real" : "unconfirmed"},
+                        {"tag", s.pseudo               ? "pseudo"
+                                : run.map.Confirmed(s) ? "real"
+                                                       : "unconfirmed"},
                         {"points", s.line.num_points},
                         {"inliers", s.inliers},
                         {"observations", s.observations}});
   }
   Json clusters = Json::array();
   for (const auto& c : run.map.clusters()) {
-    clusters.push_back({{"min", point(c.box.min())}, {"max", point(c.box.max())}, {"points", c.points}});
+    clusters.push_back(
+        {{"min", point(c.box.min())}, {"max", point(c.box.max())}, {"points", c.points}});
   }
   Json poses = Json::array();
   for (const auto& p : run.corrected) poses.push_back(Json::array({p.x_m, p.y_m, p.theta_rad}));
@@ -253,7 +258,8 @@ void WriteGeometricMapPicture(const sim::ExperimentRunner& runner, const Geometr
   const sim::OccupancyRaster raster = sim::RasteriseOccupancy(model, raster_options);
   render::WorldBounds bounds = render::WorldBounds::Empty();
   bounds.Extend(raster.origin_xy);
-  bounds.Extend(raster.origin_xy + raster.resolution_m * Eigen::Vector2d(raster.width, raster.height));
+  bounds.Extend(raster.origin_xy +
+                raster.resolution_m * Eigen::Vector2d(raster.width, raster.height));
   const render::TopDownFrame frame = render::FrameBounds(bounds.Padded(0.2), 1600);
   const render::WorldToPixel& map = frame.world_to_pixel;
   render::RgbImage image(frame.width_px, frame.height_px);

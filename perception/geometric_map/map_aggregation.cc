@@ -97,9 +97,8 @@ MapSegment GeometricMap::Merge(const MapSegment& a, const MapSegment& b) const {
   const double wa = std::max(1, a.line.num_points), wb = std::max(1, b.line.num_points);
   const double ta = Direction(a), tb = ta + msgs::WrapAngle(Direction(b) - ta);
   const double theta = (wa * ta + wb * tb) / (wa + wb);
-  const Eigen::Vector2d centre = (wa * 0.5 * (a.line.start + a.line.end) +
-                                  wb * 0.5 * (b.line.start + b.line.end)) /
-                                 (wa + wb);
+  const Eigen::Vector2d centre =
+      (wa * 0.5 * (a.line.start + a.line.end) + wb * 0.5 * (b.line.start + b.line.end)) / (wa + wb);
   MapSegment merged;
   merged.line = Spanning(theta, centre, {a.line.start, a.line.end, b.line.start, b.line.end});
   merged.line.num_points = a.line.num_points + b.line.num_points;

@@ -16,14 +16,14 @@ namespace plywood::perception {
 // midpoints and spans the outermost endpoints. 'real' wins over 'pseudo': a pseudo side later
 // seen for real becomes the real segment (its extent only bounded what had been seen). A merged
 // segment is tried again against the rest until nothing merges. Clusters merge when their boxes,
-// grown by cluster_inflate_m, intersect and their union stays within max_cluster_size_m. A real segment counts as confirmed once segments of at
-// least min_observations scans merged into it: a sonar echo placed square to a transducer that
-// heard it off-axis gives a line each scan at a different offset, which never merges, while a true
-// surface is seen again and again. A side of a new largest frame removes the pseudo segments lying
-// inside that frame or on its sides within 2 cm (the area was seen since).
-// Defaults are assumptions: 5 deg and 6 cm accept one wall seen from two poses with a few
-// centimetres of pose error and refuse parallel walls a door frame apart; the gap stays well below
-// a 0.9 m door, so a wall is not bridged across a doorway.
+// grown by cluster_inflate_m, intersect and their union stays within max_cluster_size_m. A real
+// segment counts as confirmed once segments of at least min_observations scans merged into it: a
+// sonar echo placed square to a transducer that heard it off-axis gives a line each scan at a
+// different offset, which never merges, while a true surface is seen again and again. A side of a
+// new largest frame removes the pseudo segments lying inside that frame or on its sides within 2 cm
+// (the area was seen since). Defaults are assumptions: 5 deg and 6 cm accept one wall seen from two
+// poses with a few centimetres of pose error and refuse parallel walls a door frame apart; the gap
+// stays well below a 0.9 m door, so a wall is not bridged across a doorway.
 struct AggregationOptions {
   double inflate_m = 0.1;
   double max_angle_diff_deg = 5.0;

@@ -42,8 +42,8 @@ double BestShift(const std::function<double(int)>& correlation, int window) {
 }  // namespace
 
 void PoseCorrectionOptions::Validate() const {
-  RequireOption(max_heading_step_deg > 0.0 && max_heading_step_deg <= 45.0,
-                "max_heading_step_deg", "must be in (0, 45]", max_heading_step_deg);
+  RequireOption(max_heading_step_deg > 0.0 && max_heading_step_deg <= 45.0, "max_heading_step_deg",
+                "must be in (0, 45]", max_heading_step_deg);
   RequireOption(refine_window_deg >= 0.0 && refine_window_deg <= 45.0, "refine_window_deg",
                 "must be in [0, 45]", refine_window_deg);
   RequireOption(max_shift_m > 0.0 && max_shift_m <= 2.0, "max_shift_m", "must be in (0, 2]",
@@ -70,10 +70,12 @@ double HistogramPoseCorrector::HeadingCorrection(std::span<const RangePoint> poi
   const AngleHistogram scan = MakeAngleHistogram(points_R, histogram_options_, heading_rad);
   const int bins = static_cast<int>(scan.votes.size());
   const double bin_rad = kPi / bins;
-  const int window = static_cast<int>(std::ceil(options_.max_heading_step_deg * kDegToRad / bin_rad));
+  const int window =
+      static_cast<int>(std::ceil(options_.max_heading_step_deg * kDegToRad / bin_rad));
   const auto correlation = [&](int k) {
     double sum = 0.0;
-    for (int b = 0; b < bins; ++b) sum += scan.votes[b] * map_angle_votes_[((b + k) % bins + bins) % bins];
+    for (int b = 0; b < bins; ++b)
+      sum += scan.votes[b] * map_angle_votes_[((b + k) % bins + bins) % bins];
     return sum;
   };
   double delta = BestShift(correlation, window) * bin_rad;
@@ -133,7 +135,8 @@ msgs::Pose2D HistogramPoseCorrector::Correct(const msgs::Pose2D& X_OR,
   const AngleHistogram predicted = MakeAngleHistogram(points_R, histogram_options_, X_WR.theta_rad);
   if (predicted.TotalVotes() < options_.min_virtual_lines) return X_WR;
   if (has_reference_ && options_.heading) {
-    X_WR.theta_rad = msgs::WrapAngle(X_WR.theta_rad + HeadingCorrection(points_R, lines_R, X_WR.theta_rad));
+    X_WR.theta_rad =
+        msgs::WrapAngle(X_WR.theta_rad + HeadingCorrection(points_R, lines_R, X_WR.theta_rad));
   }
   std::vector<Eigen::Vector2d> points_W;
   for (const RangePoint& p : points_R) points_W.push_back(ToWorld(X_WR, p.p_R));
@@ -169,7 +172,8 @@ msgs::Pose2D HistogramPoseCorrector::Correct(const msgs::Pose2D& X_OR,
     if (weight >= options_.min_peak_votes) map_alpha_rad_ += weighted / weight;
     has_reference_ = true;
   }
-  for (std::size_t b = 0; b < corrected.votes.size(); ++b) map_angle_votes_[b] += corrected.votes[b];
+  for (std::size_t b = 0; b < corrected.votes.size(); ++b)
+    map_angle_votes_[b] += corrected.votes[b];
   recent_points_W_.push_back(std::move(points_W));
   while (static_cast<int>(recent_points_W_.size()) > options_.reference_scans) {
     recent_points_W_.pop_front();

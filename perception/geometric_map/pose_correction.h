@@ -5,9 +5,9 @@
 #include <vector>
 
 #include "msgs/pose2d.h"
-#include "perception/lines/line_segment.h"
 #include "perception/geometric_map/range_fusion.h"
 #include "perception/geometric_map/scan_histograms.h"
+#include "perception/lines/line_segment.h"
 
 namespace plywood::perception {
 
@@ -22,8 +22,8 @@ namespace plywood::perception {
 //  - position: in the map's main frame (the first scan's alpha_max), the scan's X and Y distance
 //    histograms (bins of histograms.distance_bin_m) are cross-correlated with those of the last
 //    reference_scans corrected scans within reach; the best shift within +-max_shift_m corrects
-//    x and y (bins of position_bin_m). An axis whose scan histogram has no bin with min_peak_votes points (no wall across
-//    it, e.g. along a corridor) is left alone.
+//    x and y (bins of position_bin_m). An axis whose scan histogram has no bin with min_peak_votes
+//    points (no wall across it, e.g. along a corridor) is left alone.
 // The correction is kept as a transform X_WO from the odometry frame to the map frame, so the
 // odometry keeps integrating undisturbed. The heading is anchored to the whole map, so its error
 // stays bounded by the histogram resolution; the position is anchored to recent scans only, so
@@ -60,8 +60,8 @@ class HistogramPoseCorrector {
   const msgs::Pose2D& X_WO() const { return X_WO_; }
 
  private:
-  double HeadingCorrection(std::span<const RangePoint> points_R, std::span<const LineSegment> lines_R,
-                           double heading_rad) const;
+  double HeadingCorrection(std::span<const RangePoint> points_R,
+                           std::span<const LineSegment> lines_R, double heading_rad) const;
   // Shift (m) that best aligns `scan` coordinates with the reference's along axis `axis`.
   bool AxisShift(const std::vector<double>& scan, const Eigen::Vector2d& axis,
                  const Eigen::Vector2d& robot_W, double* shift_m) const;

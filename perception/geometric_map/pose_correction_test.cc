@@ -13,8 +13,8 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 
 // An L-shaped room with a box in it, for scans that differ from pose to pose.
 std::vector<test::Wall> Room() {
-  std::vector<test::Wall> walls = {{{-3, -2}, {3, -2}}, {{3, -2}, {3, 0.5}},  {{3, 0.5}, {1, 0.5}},
-                                   {{1, 0.5}, {1, 2}},  {{1, 2}, {-3, 2}},    {{-3, 2}, {-3, -2}}};
+  std::vector<test::Wall> walls = {{{-3, -2}, {3, -2}}, {{3, -2}, {3, 0.5}}, {{3, 0.5}, {1, 0.5}},
+                                   {{1, 0.5}, {1, 2}},  {{1, 2}, {-3, 2}},   {{-3, 2}, {-3, -2}}};
   for (const auto& w : test::Rectangle(-1.2, -0.6, -0.8, -0.2)) walls.push_back(w);
   return walls;
 }

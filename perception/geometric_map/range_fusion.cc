@@ -41,8 +41,7 @@ void FusionOptions::Validate() const {
   RequireOption(sonar_half_angle_deg > 0.0 && sonar_half_angle_deg <= 45.0, "sonar_half_angle_deg",
                 "must be in (0, 45]", sonar_half_angle_deg);
   RequireOption(fill_half_angle_deg > 0.0 && fill_half_angle_deg <= sonar_half_angle_deg,
-                "fill_half_angle_deg", "must be in (0, sonar_half_angle_deg]",
-                fill_half_angle_deg);
+                "fill_half_angle_deg", "must be in (0, sonar_half_angle_deg]", fill_half_angle_deg);
   RequireOption(sonar_max_range_m > 0.0 && sonar_max_range_m <= 20.0, "sonar_max_range_m",
                 "must be in (0, 20]", sonar_max_range_m);
 }
@@ -103,8 +102,8 @@ std::vector<RangePoint> FuseRanges(const msgs::LaserScan& ir, const msgs::RangeR
         if (v.dot(axis) < cos_fill * v.norm()) continue;
         // Where the IR could not have seen anything (beyond its reach) its silence is no evidence.
         if (options.source == RangeSource::kFused && t >= ir.range_max_m - options.tau_m) continue;
-        if (t < range[i] - options.tau_m || (options.source == RangeSource::kSonarOnly &&
-                                             t < range[i])) {
+        if (t < range[i] - options.tau_m ||
+            (options.source == RangeSource::kSonarOnly && t < range[i])) {
           range[i] = t;
           from_sonar[i] = 1;
         }

@@ -27,8 +27,8 @@ void SplitAtFarthest(std::span<const Eigen::Vector2d> points, int first, int las
   double worst = r_min_m;
   for (int k = first + 1; k < last; ++k) {
     const Eigen::Vector2d v = points[k] - a;
-    const double d = length > 1e-12 ? std::abs(chord.x() * v.y() - chord.y() * v.x()) / length
-                                     : v.norm();
+    const double d =
+        length > 1e-12 ? std::abs(chord.x() * v.y() - chord.y() * v.x()) / length : v.norm();
     if (d > worst) worst = d, farthest = k;
   }
   if (farthest < 0) {
