@@ -23,7 +23,9 @@ std::vector<test::Wall> Room() {
 // of x per scan. Exact scans: the corrected heading stays within 0.02 deg of the truth and the
 // position within 3 cm (2 cm histogram bins), while the odometry ends 11.6 deg and 0.29 m off.
 TEST(PoseCorrectionTest, HistogramsRemoveOdometryDrift) {
-  HistogramPoseCorrector corrector({}, {});
+  PoseCorrectionOptions both;
+  both.position = true;  // off by default (docs/geometric_map.md), exercised here
+  HistogramPoseCorrector corrector({}, both);
   FusionOptions ir_only;
   ir_only.source = RangeSource::kIrOnly;
   const int scans = 30;
