@@ -58,15 +58,17 @@ void PrintSummary(const sim::ExperimentRunner& runner) {
         m.Number("occupancy.explored") > 0.0 ? "" : " (time limit before the map was complete)");
   }
   if (m.values().count("geometric_map.recall")) {
-    std::printf("%-34s recall %.3f, precision %.3f, endpoint error %.3f m, %.0f segments, %.0f "
-                "clusters, IR-invisible %.0f/%.0f\n",
-                "geometric map (seed 003)", m.Number("geometric_map.recall"),
-                m.Number("geometric_map.precision"), m.Number("geometric_map.endpoint_error_m"),
-                m.Number("geometric_map.segments"), m.Number("geometric_map.clusters"),
-                m.Number("geometric_map.ir_invisible_mapped"),
-                m.Number("geometric_map.ir_invisible_geoms"));
+    std::printf(
+        "%-34s recall %.3f, precision %.3f, endpoint error %.3f m, %.0f segments, %.0f "
+        "clusters, IR-invisible %.0f/%.0f\n",
+        "geometric map (seed 003)", m.Number("geometric_map.recall"),
+        m.Number("geometric_map.precision"), m.Number("geometric_map.endpoint_error_m"),
+        m.Number("geometric_map.segments"), m.Number("geometric_map.clusters"),
+        m.Number("geometric_map.ir_invisible_mapped"),
+        m.Number("geometric_map.ir_invisible_geoms"));
     std::printf("%-34s corrected %.2f deg / %.3f m, odometry %.2f deg / %.3f m (final)\n",
-                "geometric map pose error", m.Number("geometric_map.pose.corrected.final_heading_error_deg"),
+                "geometric map pose error",
+                m.Number("geometric_map.pose.corrected.final_heading_error_deg"),
                 m.Number("geometric_map.pose.corrected.final_position_error_m"),
                 m.Number("geometric_map.pose.odometry.final_heading_error_deg"),
                 m.Number("geometric_map.pose.odometry.final_position_error_m"));
@@ -102,7 +104,7 @@ int SingleRunProtocol(const ProtocolContext& context) {
   });
   if (!quiet && terminal) std::fprintf(stderr, "\r%60s\r", "");
 
-  AddSonarMapMetrics(runner);  // seed 001 map scores, if the sonar explorer drove
+  AddSonarMapMetrics(runner);     // seed 001 map scores, if the sonar explorer drove
   GeometricMapRun geometric_map;  // seed 003's map, with a geometric_map: section
   const bool has_geometric_map = AddGeometricMapMetrics(runner, &geometric_map);
   // Line extraction scores (lines: section); wall-clock time per scan goes to timing.json only.

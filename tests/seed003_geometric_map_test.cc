@@ -22,7 +22,7 @@ using testing::Slurp;
 using testing::SourceRoot;
 
 // Runs `plywood run` on the shipped IR-panel experiment, cut short, into dir/name.
-int Run(const fs::path& dir, const std::string& name, int seed, const std::string& extra = "") {
+int RunPanels(const fs::path& dir, const std::string& name, int seed, const std::string& extra = "") {
   const fs::path binary = fs::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood";
   const fs::path experiment = SourceRoot() / "experiments" / "seed003_ir_panels.yaml";
   const std::string command = binary.string() + " run " + experiment.string() + " --out " +
@@ -35,9 +35,9 @@ int Run(const fs::path& dir, const std::string& name, int seed, const std::strin
 
 TEST(Seed003GeometricMapTest, SameSeedGivesIdenticalMapBytes) {
   const fs::path dir = MakeTempDir("seed003_determinism");
-  ASSERT_EQ(Run(dir, "a", 1), 0) << Slurp(dir / "a.log");
-  ASSERT_EQ(Run(dir, "b", 1), 0) << Slurp(dir / "b.log");
-  ASSERT_EQ(Run(dir, "c", 2), 0) << Slurp(dir / "c.log");
+  ASSERT_EQ(RunPanels(dir, "a", 1), 0) << Slurp(dir / "a.log");
+  ASSERT_EQ(RunPanels(dir, "b", 1), 0) << Slurp(dir / "b.log");
+  ASSERT_EQ(RunPanels(dir, "c", 2), 0) << Slurp(dir / "c.log");
   const std::string metrics = Slurp(dir / "a" / "metrics.json");
   ASSERT_NE(metrics.find("\"geometric_map\""), std::string::npos) << metrics;
   EXPECT_EQ(metrics, Slurp(dir / "b" / "metrics.json"));
@@ -67,7 +67,7 @@ TEST(Seed003GeometricMapTest, BadOptionsExitTwoNamingTheField) {
   for (const auto& c : cases) {
     SCOPED_TRACE(c.set);
     const std::string name = "bad" + std::to_string(k++);
-    EXPECT_EQ(Run(dir, name, 1, std::string("--set ") + c.set), 2);
+    EXPECT_EQ(RunPanels(dir, name, 1, std::string("--set ") + c.set), 2);
     const std::string log = Slurp(dir / (name + ".log"));
     EXPECT_NE(log.find(c.field), std::string::npos) << log;
     EXPECT_EQ(log.find('\n'), log.size() - 1) << "not one line: " << log;

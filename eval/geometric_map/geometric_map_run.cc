@@ -29,8 +29,9 @@ double SegmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
 }
 
 // Final and mean heading (deg) and position (m) errors of `estimate` against `truth`.
-void AddPoseErrors(const std::vector<msgs::Pose2D>& truth, const std::vector<msgs::Pose2D>& estimate,
-                   const std::string& key, sim::Metrics& m) {
+void AddPoseErrors(const std::vector<msgs::Pose2D>& truth,
+                   const std::vector<msgs::Pose2D>& estimate, const std::string& key,
+                   sim::Metrics& m) {
   double heading_sum = 0.0, position_sum = 0.0, heading = 0.0, position = 0.0;
   for (std::size_t i = 0; i < truth.size(); ++i) {
     heading = std::abs(msgs::WrapAngle(estimate[i].theta_rad - truth[i].theta_rad)) * kRadToDeg;
@@ -117,36 +118,60 @@ bool AddGeometricMapMetrics(sim::ExperimentRunner& runner, GeometricMapRun* run)
       if (ir.hit_segment_ids[i] >= 0) ++face_count[ir.hit_segment_ids[i]];
       if (ir.hit_geom_ids[i] >= 0) ++geom_count[ir.hit_geom_ids[i]];
     }
-    for (const auto& [k, n] : face_count) truth[k].observed_rays = std::max(truth[k].observed_rays, n);
+    for (const auto& [k, n] : face_count)
+      truth[k].observed_rays = std::max(truth[k].observed_rays, n);
     for (const auto& [g, n] : geom_count) geom_hits[g] = std::max(geom_hits[g], n);
   }
-  std::vector<perception::LineSegment> real;
-  long pseudo = 0;
+  std::vector<perception::LineSegment> real;  // confirmed real segments: what the map claims
+  long pseudo = 0, unconfirmed = 0;
   for (const auto& s : run->map.segments()) {
     if (s.pseudo) {
       ++pseudo;
-    } else {
+    } else if (run->map.Confirmed(s)) {
       real.push_back(s.line);
+    } else {
+      ++unconfirmed;
     }
   }
-  // The line-matching rule of line_scoring.h, in the world frame, over the whole map at once.
-  const perception::LineScore score =
-      perception::ScoreScan(real, truth, run->points_seen, config.scoring);
   const std::vector<char> invisible = sim::IrInvisibleGeoms(runner.scene().model());
   std::map<int, bool> invisible_mapped;
   for (const auto& s : walls.segments) {
     if (s.geom_id >= 0 && invisible[s.geom_id]) invisible_mapped[s.geom_id] = false;
   }
-  double endpoint_error = 0.0;
-  long endpoints = 0;
-  for (const auto& s : real) {
-    const int k = perception::MatchSegment(s, truth, config.scoring);
+  // The line-matching rule of line_scoring.h, applied in a frame centred on each map segment's
+  // midpoint: the rule compares normal forms, whose r in the world frame would turn a 0.1 deg
+  // tilt into centimetres 7 m from the origin and confuse the two faces of a partition.
+  std::vector<char> face_matched(truth.size(), 0);
+  long matched_segments = 0;
+  double endpoint_error = 0.0, sum_d_alpha_sq = 0.0;
+  for (const auto& segment : real) {
+    const Eigen::Vector2d centre = 0.5 * (segment.start + segment.end);
+    perception::LineSegment local = segment;
+    local.start -= centre;
+    local.end -= centre;
+    const Eigen::Vector2d d = (local.end - local.start).normalized();
+    perception::CanonicalNormalForm(std::atan2(-d.x(), d.y()), 0.0, &local.alpha_rad, &local.r_m);
+    std::vector<perception::TruthSegment> truth_local = truth;
+    for (auto& t : truth_local) {
+      t.a -= centre;
+      t.b -= centre;
+    }
+    double d_alpha = 0.0;
+    const int k = perception::MatchSegment(local, truth_local, config.scoring, &d_alpha);
     if (k < 0) continue;
-    endpoint_error += SegmentDistance(s.start, truth[k].a, truth[k].b) +
-                      SegmentDistance(s.end, truth[k].a, truth[k].b);
-    endpoints += 2;
+    ++matched_segments;
+    face_matched[k] = 1;
+    sum_d_alpha_sq += d_alpha * d_alpha;
+    endpoint_error += SegmentDistance(segment.start, truth[k].a, truth[k].b) +
+                      SegmentDistance(segment.end, truth[k].a, truth[k].b);
     const int geom = walls.segments[k].geom_id;
     if (invisible_mapped.count(geom)) invisible_mapped[geom] = true;
+  }
+  long observable = 0, observable_matched = 0;
+  for (std::size_t k = 0; k < truth.size(); ++k) {
+    if (truth[k].observed_rays < config.scoring.min_observed_rays) continue;
+    ++observable;
+    observable_matched += face_matched[k];
   }
   long panels_mapped = 0;
   for (const auto& [geom, mapped] : invisible_mapped) panels_mapped += mapped;
@@ -173,13 +198,17 @@ bool AddGeometricMapMetrics(sim::ExperimentRunner& runner, GeometricMapRun* run)
   m.Set(key + "sonar_points", static_cast<double>(run->sonar_points));
   m.Set(key + "segments", static_cast<double>(real.size()));
   m.Set(key + "pseudo_segments", static_cast<double>(pseudo));
+  m.Set(key + "unconfirmed_segments", static_cast<double>(unconfirmed));
+  m.Set(key + "points_per_segment",
+        real.empty() ? 0.0 : static_cast<double>(run->points_seen) / real.size());
   m.Set(key + "clusters", static_cast<double>(run->map.clusters().size()));
-  m.Set(key + "observed_walls", static_cast<double>(score.observable));
-  m.Set(key + "recall", score.Recall());
-  m.Set(key + "precision", score.Precision());
-  m.Set(key + "orientation_error_deg", score.SigmaAlphaDeg());
-  m.Set(key + "distance_error_m", score.SigmaRM());
-  m.Set(key + "endpoint_error_m", endpoints ? endpoint_error / endpoints : 0.0);
+  m.Set(key + "observed_walls", static_cast<double>(observable));
+  m.Set(key + "recall", observable ? static_cast<double>(observable_matched) / observable : 1.0);
+  m.Set(key + "precision",
+        real.empty() ? 1.0 : static_cast<double>(matched_segments) / real.size());
+  m.Set(key + "orientation_error_deg",
+        matched_segments ? std::sqrt(sum_d_alpha_sq / matched_segments) * kRadToDeg : 0.0);
+  m.Set(key + "endpoint_error_m", matched_segments ? endpoint_error / (2 * matched_segments) : 0.0);
   m.Set(key + "small_objects_observed", static_cast<double>(objects_seen));
   m.Set(key + "cluster_recall",
         objects_seen ? static_cast<double>(objects_found) / objects_seen : 1.0);
@@ -197,13 +226,17 @@ void WriteGeometricMapJson(const GeometricMapRun& run, const std::string& out_di
   for (const auto& s : run.map.segments()) {
     segments.push_back({{"start", point(s.line.start)},
                         {"end", point(s.line.end)},
-                        {"tag", s.pseudo ? "pseudo" : "real"},
+                        {"tag", s.pseudo               ? "pseudo"
+                                : run.map.Confirmed(s) ? "real"
+                                                       : "unconfirmed"},
                         {"points", s.line.num_points},
-                        {"inliers", s.inliers}});
+                        {"inliers", s.inliers},
+                        {"observations", s.observations}});
   }
   Json clusters = Json::array();
   for (const auto& c : run.map.clusters()) {
-    clusters.push_back({{"min", point(c.box.min())}, {"max", point(c.box.max())}, {"points", c.points}});
+    clusters.push_back(
+        {{"min", point(c.box.min())}, {"max", point(c.box.max())}, {"points", c.points}});
   }
   Json poses = Json::array();
   for (const auto& p : run.corrected) poses.push_back(Json::array({p.x_m, p.y_m, p.theta_rad}));
@@ -225,7 +258,8 @@ void WriteGeometricMapPicture(const sim::ExperimentRunner& runner, const Geometr
   const sim::OccupancyRaster raster = sim::RasteriseOccupancy(model, raster_options);
   render::WorldBounds bounds = render::WorldBounds::Empty();
   bounds.Extend(raster.origin_xy);
-  bounds.Extend(raster.origin_xy + raster.resolution_m * Eigen::Vector2d(raster.width, raster.height));
+  bounds.Extend(raster.origin_xy +
+                raster.resolution_m * Eigen::Vector2d(raster.width, raster.height));
   const render::TopDownFrame frame = render::FrameBounds(bounds.Padded(0.2), 1600);
   const render::WorldToPixel& map = frame.world_to_pixel;
   render::RgbImage image(frame.width_px, frame.height_px);
@@ -248,10 +282,11 @@ void WriteGeometricMapPicture(const sim::ExperimentRunner& runner, const Geometr
   for (const auto& p : run.truth) path.emplace_back(p.x_m, p.y_m);
   render::DrawPolyline(image, map, path, {90, 90, 90}, 1.0);
   for (const auto& s : run.map.segments()) {
-    if (!s.pseudo) {
+    if (run.map.Confirmed(s)) {
       render::DrawSegment(image, map, s.line.start, s.line.end, render::colours::kRed, 2.5);
       continue;
     }
+    if (!s.pseudo) continue;  // unconfirmed: in the JSON only
     // Dashes of 10 cm every 20 cm.
     const Eigen::Vector2d d = s.line.end - s.line.start;
     const double length = d.norm();

@@ -15,7 +15,7 @@ struct GeometricMapRun {
   perception::GeometricMap map;
   long scans = 0;
   long points_seen = 0;
-  long sonar_points = 0;  // points whose range came from the sonar
+  long sonar_points = 0;                                 // points whose range came from the sonar
   std::vector<msgs::Pose2D> truth, odometry, corrected;  // per IR scan
 };
 

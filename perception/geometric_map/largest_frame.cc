@@ -18,7 +18,9 @@ std::array<Eigen::Vector2d, 2> LargestFrame::SideCorners(int side) const {
   const std::array<Eigen::Vector2d, 4> c = {Eigen::Vector2d(xp, yn), Eigen::Vector2d(xp, yp),
                                             Eigen::Vector2d(xn, yp), Eigen::Vector2d(xn, yn)};
   const Eigen::Vector2d u(std::cos(alpha_rad), std::sin(alpha_rad)), v(-u.y(), u.x());
-  const auto turn = [&](const Eigen::Vector2d& p) { return Eigen::Vector2d(p.x() * u + p.y() * v); };
+  const auto turn = [&](const Eigen::Vector2d& p) {
+    return Eigen::Vector2d(p.x() * u + p.y() * v);
+  };
   return {turn(c[side]), turn(c[(side + 1) % 4])};
 }
 

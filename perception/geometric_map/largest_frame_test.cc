@@ -20,9 +20,8 @@ LargestFrame FrameOf(const std::vector<test::Wall>& walls) {
 // A dead end open to -x: walls at x = 1.5 and y = 1.0, -0.8 reaching 5 m back, beyond the 3 m
 // reach. Three real sides at their distances, the open one pseudo at d_max.
 TEST(LargestFrameTest, OpenSideIsPseudoAtDMax) {
-  const LargestFrame f = FrameOf({{{1.5, -0.8}, {1.5, 1.0}},
-                                  {{-5.0, 1.0}, {1.5, 1.0}},
-                                  {{-5.0, -0.8}, {1.5, -0.8}}});
+  const LargestFrame f =
+      FrameOf({{{1.5, -0.8}, {1.5, 1.0}}, {{-5.0, 1.0}, {1.5, 1.0}}, {{-5.0, -0.8}, {1.5, -0.8}}});
   EXPECT_NEAR(f.alpha_rad, 0.0, 1e-9);
   EXPECT_NEAR(f.distance_m[0], 1.5, 1e-9);  // +x
   EXPECT_NEAR(f.distance_m[1], 1.0, 1e-9);  // +y

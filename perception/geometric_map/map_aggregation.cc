@@ -59,6 +59,10 @@ void AggregationOptions::Validate() const {
   RequireOption(max_endpoint_distance_m > 0.0 && max_endpoint_distance_m <= 2.0,
                 "max_endpoint_distance_m", "must be in (0, 2]", max_endpoint_distance_m);
   RequireOption(max_gap_m >= 0.0 && max_gap_m <= 5.0, "max_gap_m", "must be in [0, 5]", max_gap_m);
+  RequireOption(max_cluster_size_m > 0.0 && max_cluster_size_m <= 10.0, "max_cluster_size_m",
+                "must be in (0, 10]", max_cluster_size_m);
+  RequireOption(min_observations >= 1 && min_observations <= 1000, "min_observations",
+                "must be in [1, 1000]", min_observations);
   RequireOption(cluster_inflate_m >= 0.0 && cluster_inflate_m <= 5.0, "cluster_inflate_m",
                 "must be in [0, 5]", cluster_inflate_m);
 }
@@ -85,17 +89,21 @@ bool GeometricMap::Mergeable(const MapSegment& a, const MapSegment& b) const {
 }
 
 MapSegment GeometricMap::Merge(const MapSegment& a, const MapSegment& b) const {
-  if (a.pseudo != b.pseudo) return a.pseudo ? b : a;
+  if (a.pseudo != b.pseudo) {
+    MapSegment real = a.pseudo ? b : a;
+    real.observations = a.observations + b.observations;
+    return real;
+  }
   const double wa = std::max(1, a.line.num_points), wb = std::max(1, b.line.num_points);
   const double ta = Direction(a), tb = ta + msgs::WrapAngle(Direction(b) - ta);
   const double theta = (wa * ta + wb * tb) / (wa + wb);
-  const Eigen::Vector2d centre = (wa * 0.5 * (a.line.start + a.line.end) +
-                                  wb * 0.5 * (b.line.start + b.line.end)) /
-                                 (wa + wb);
+  const Eigen::Vector2d centre =
+      (wa * 0.5 * (a.line.start + a.line.end) + wb * 0.5 * (b.line.start + b.line.end)) / (wa + wb);
   MapSegment merged;
   merged.line = Spanning(theta, centre, {a.line.start, a.line.end, b.line.start, b.line.end});
   merged.line.num_points = a.line.num_points + b.line.num_points;
   merged.inliers = a.inliers + b.inliers;
+  merged.observations = a.observations + b.observations;
   merged.pseudo = a.pseudo;
   return merged;
 }
@@ -112,6 +120,21 @@ void GeometricMap::AddSegment(const MapSegment& segment) {
   segments_.push_back(current);
 }
 
+void GeometricMap::RemovePseudoInside(const std::vector<Eigen::Vector2d>& corners_W) {
+  const auto inside = [&](const Eigen::Vector2d& p) {
+    for (std::size_t k = 0; k < corners_W.size(); ++k) {
+      const Eigen::Vector2d a = corners_W[k], b = corners_W[(k + 1) % corners_W.size()];
+      const Eigen::Vector2d ab = b - a, ap = p - a;
+      // Sides of successive frames often coincide (the same wall bounds both): on a side counts.
+      if (ab.x() * ap.y() - ab.y() * ap.x() < -0.02 * ab.norm()) return false;
+    }
+    return true;
+  };
+  std::erase_if(segments_, [&](const MapSegment& s) {
+    return s.pseudo && inside(s.line.start) && inside(s.line.end);
+  });
+}
+
 void GeometricMap::AddCluster(const MapCluster& cluster) {
   MapCluster current = cluster;
   const auto grown = [&](const Eigen::AlignedBox2d& b) {
@@ -120,7 +143,11 @@ void GeometricMap::AddCluster(const MapCluster& cluster) {
   };
   for (;;) {
     std::size_t k = 0;
-    while (k < clusters_.size() && !grown(clusters_[k].box).intersects(grown(current.box))) ++k;
+    const auto merges = [&](const MapCluster& other) {
+      return grown(other.box).intersects(grown(current.box)) &&
+             other.box.merged(current.box).sizes().maxCoeff() <= options_.max_cluster_size_m;
+    };
+    while (k < clusters_.size() && !merges(clusters_[k])) ++k;
     if (k == clusters_.size()) break;
     current.box.extend(clusters_[k].box);
     current.points += clusters_[k].points;

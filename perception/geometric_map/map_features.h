@@ -14,6 +14,7 @@ struct MapSegment {
   LineSegment line;
   bool pseudo = false;
   int inliers = 0;
+  int observations = 1;  // scans whose segments merged into this one
 
   double InlierFraction() const {
     return line.num_points > 0 ? static_cast<double>(inliers) / line.num_points : 0.0;

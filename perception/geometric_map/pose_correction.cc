@@ -42,8 +42,10 @@ double BestShift(const std::function<double(int)>& correlation, int window) {
 }  // namespace
 
 void PoseCorrectionOptions::Validate() const {
-  RequireOption(max_heading_step_deg > 0.0 && max_heading_step_deg <= 45.0,
-                "max_heading_step_deg", "must be in (0, 45]", max_heading_step_deg);
+  RequireOption(max_heading_step_deg > 0.0 && max_heading_step_deg <= 45.0, "max_heading_step_deg",
+                "must be in (0, 45]", max_heading_step_deg);
+  RequireOption(refine_window_deg >= 0.0 && refine_window_deg <= 45.0, "refine_window_deg",
+                "must be in [0, 45]", refine_window_deg);
   RequireOption(max_shift_m > 0.0 && max_shift_m <= 2.0, "max_shift_m", "must be in (0, 2]",
                 max_shift_m);
   RequireOption(position_bin_m >= 0.002 && position_bin_m <= 0.5, "position_bin_m",
@@ -63,29 +65,32 @@ HistogramPoseCorrector::HistogramPoseCorrector(const HistogramOptions& histogram
     : histogram_options_(histograms), options_(options) {}
 
 double HistogramPoseCorrector::HeadingCorrection(std::span<const RangePoint> points_R,
+                                                 std::span<const LineSegment> lines_R,
                                                  double heading_rad) const {
   const AngleHistogram scan = MakeAngleHistogram(points_R, histogram_options_, heading_rad);
   const int bins = static_cast<int>(scan.votes.size());
   const double bin_rad = kPi / bins;
-  const int window = static_cast<int>(std::ceil(options_.max_heading_step_deg * kDegToRad / bin_rad));
+  const int window =
+      static_cast<int>(std::ceil(options_.max_heading_step_deg * kDegToRad / bin_rad));
   const auto correlation = [&](int k) {
     double sum = 0.0;
-    for (int b = 0; b < bins; ++b) sum += scan.votes[b] * map_angle_votes_[((b + k) % bins + bins) % bins];
+    for (int b = 0; b < bins; ++b)
+      sum += scan.votes[b] * map_angle_votes_[((b + k) % bins + bins) % bins];
     return sum;
   };
   double delta = BestShift(correlation, window) * bin_rad;
-  // Below the bin size: the mean direction (4-fold, so square walls count too) of the scan's
-  // virtual lines near the map's main direction, against that direction.
-  double c4 = 0.0, s4 = 0.0;
-  int near = 0;
-  for (double a : scan.directions_rad) {
-    const double residual = std::remainder(a + delta - map_alpha_rad_, kPi / 2.0);
-    if (std::abs(residual) > 2.0 * bin_rad) continue;
-    c4 += std::cos(4.0 * residual);
-    s4 += std::sin(4.0 * residual);
-    ++near;
+  // Below the bin size: the fitted lines parallel or square to the map's main direction.
+  const double refine_window = options_.refine_window_deg * kDegToRad;
+  double weighted = 0.0, weight = 0.0;
+  for (const LineSegment& line : lines_R) {
+    const Eigen::Vector2d d = line.end - line.start;
+    const double direction = std::atan2(d.y(), d.x()) + heading_rad + delta;
+    const double residual = std::remainder(direction - map_alpha_rad_, kPi / 2.0);
+    if (std::abs(residual) > refine_window) continue;
+    weighted += line.num_points * residual;
+    weight += line.num_points;
   }
-  if (near >= options_.min_peak_votes) delta -= 0.25 * std::atan2(s4, c4);
+  if (weight >= options_.min_peak_votes) delta -= weighted / weight;
   return delta;
 }
 
@@ -124,12 +129,14 @@ bool HistogramPoseCorrector::AxisShift(const std::vector<double>& scan, const Ei
 }
 
 msgs::Pose2D HistogramPoseCorrector::Correct(const msgs::Pose2D& X_OR,
-                                             std::span<const RangePoint> points_R) {
+                                             std::span<const RangePoint> points_R,
+                                             std::span<const LineSegment> lines_R) {
   msgs::Pose2D X_WR = X_WO_ * X_OR;
   const AngleHistogram predicted = MakeAngleHistogram(points_R, histogram_options_, X_WR.theta_rad);
   if (predicted.TotalVotes() < options_.min_virtual_lines) return X_WR;
   if (has_reference_ && options_.heading) {
-    X_WR.theta_rad = msgs::WrapAngle(X_WR.theta_rad + HeadingCorrection(points_R, X_WR.theta_rad));
+    X_WR.theta_rad =
+        msgs::WrapAngle(X_WR.theta_rad + HeadingCorrection(points_R, lines_R, X_WR.theta_rad));
   }
   std::vector<Eigen::Vector2d> points_W;
   for (const RangePoint& p : points_R) points_W.push_back(ToWorld(X_WR, p.p_R));
@@ -151,10 +158,22 @@ msgs::Pose2D HistogramPoseCorrector::Correct(const msgs::Pose2D& X_OR,
   const AngleHistogram corrected = MakeAngleHistogram(points_R, histogram_options_, X_WR.theta_rad);
   if (!has_reference_) {
     map_angle_votes_.assign(corrected.votes.size(), 0.0);
+    // alpha_max, refined on the fitted lines as the heading is (HeadingCorrection).
     map_alpha_rad_ = corrected.MainDirectionRad();
+    double weighted = 0.0, weight = 0.0;
+    for (const LineSegment& line : lines_R) {
+      const Eigen::Vector2d d = line.end - line.start;
+      const double residual =
+          std::remainder(std::atan2(d.y(), d.x()) + X_WR.theta_rad - map_alpha_rad_, kPi / 2.0);
+      if (std::abs(residual) > options_.refine_window_deg * kDegToRad) continue;
+      weighted += line.num_points * residual;
+      weight += line.num_points;
+    }
+    if (weight >= options_.min_peak_votes) map_alpha_rad_ += weighted / weight;
     has_reference_ = true;
   }
-  for (std::size_t b = 0; b < corrected.votes.size(); ++b) map_angle_votes_[b] += corrected.votes[b];
+  for (std::size_t b = 0; b < corrected.votes.size(); ++b)
+    map_angle_votes_[b] += corrected.votes[b];
   recent_points_W_.push_back(std::move(points_W));
   while (static_cast<int>(recent_points_W_.size()) > options_.reference_scans) {
     recent_points_W_.pop_front();

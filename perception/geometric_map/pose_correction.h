@@ -7,6 +7,7 @@
 #include "msgs/pose2d.h"
 #include "perception/geometric_map/range_fusion.h"
 #include "perception/geometric_map/scan_histograms.h"
+#include "perception/lines/line_segment.h"
 
 namespace plywood::perception {
 
@@ -15,13 +16,14 @@ namespace plywood::perception {
 //  - heading: the scan's angle histogram, voted in the map frame at the predicted heading, is
 //    cross-correlated with the map's angle histogram (the sum over all corrected scans, which does
 //    not depend on where the robot is); the best shift within +-max_heading_step_deg corrects the
-//    heading, then the mean direction of the scan's virtual lines within two bins of the map's
-//    main direction or square to it (if min_peak_votes of them) refines it below the bin size;
+//    heading, then the points-weighted mean direction of the scan's fitted lines within
+//    refine_window_deg of the map's main direction or square to it refines it below the bin size
+//    (the virtual lines are too short for that: 5 mm noise tilts a 14 cm one by 3 deg);
 //  - position: in the map's main frame (the first scan's alpha_max), the scan's X and Y distance
 //    histograms (bins of histograms.distance_bin_m) are cross-correlated with those of the last
 //    reference_scans corrected scans within reach; the best shift within +-max_shift_m corrects
-//    x and y (bins of position_bin_m). An axis whose scan histogram has no bin with min_peak_votes points (no wall across
-//    it, e.g. along a corridor) is left alone.
+//    x and y (bins of position_bin_m). An axis whose scan histogram has no bin with min_peak_votes
+//    points (no wall across it, e.g. along a corridor) is left alone.
 // The correction is kept as a transform X_WO from the odometry frame to the map frame, so the
 // odometry keeps integrating undisturbed. The heading is anchored to the whole map, so its error
 // stays bounded by the histogram resolution; the position is anchored to recent scans only, so
@@ -29,8 +31,11 @@ namespace plywood::perception {
 // not corrected (and not used as reference).
 struct PoseCorrectionOptions {
   bool heading = true;
-  bool position = true;
+  // Off by default: over the office and generated rooms it made the map worse (its 2 cm bins and
+  // corridors without a wall across let it wander; docs/geometric_map.md).
+  bool position = false;
   double max_heading_step_deg = 3.0;
+  double refine_window_deg = 2.0;
   double max_shift_m = 0.1;
   double position_bin_m = 0.02;
   int min_virtual_lines = 30;
@@ -46,14 +51,17 @@ class HistogramPoseCorrector {
   HistogramPoseCorrector(const HistogramOptions& histograms, const PoseCorrectionOptions& options);
 
   // The corrected map-frame pose of a scan taken at odometry pose X_OR; `points_R` in the robot
-  // frame, beam order. Updates the correction and the reference histograms.
-  msgs::Pose2D Correct(const msgs::Pose2D& X_OR, std::span<const RangePoint> points_R);
+  // frame, beam order, `lines_R` the lines fitted to them (robot frame). Updates the correction
+  // and the reference histograms.
+  msgs::Pose2D Correct(const msgs::Pose2D& X_OR, std::span<const RangePoint> points_R,
+                       std::span<const LineSegment> lines_R = {});
 
   // The current odometry-to-map correction.
   const msgs::Pose2D& X_WO() const { return X_WO_; }
 
  private:
-  double HeadingCorrection(std::span<const RangePoint> points_R, double heading_rad) const;
+  double HeadingCorrection(std::span<const RangePoint> points_R,
+                           std::span<const LineSegment> lines_R, double heading_rad) const;
   // Shift (m) that best aligns `scan` coordinates with the reference's along axis `axis`.
   bool AxisShift(const std::vector<double>& scan, const Eigen::Vector2d& axis,
                  const Eigen::Vector2d& robot_W, double* shift_m) const;

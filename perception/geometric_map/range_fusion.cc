@@ -41,8 +41,7 @@ void FusionOptions::Validate() const {
   RequireOption(sonar_half_angle_deg > 0.0 && sonar_half_angle_deg <= 45.0, "sonar_half_angle_deg",
                 "must be in (0, 45]", sonar_half_angle_deg);
   RequireOption(fill_half_angle_deg > 0.0 && fill_half_angle_deg <= sonar_half_angle_deg,
-                "fill_half_angle_deg", "must be in (0, sonar_half_angle_deg]",
-                fill_half_angle_deg);
+                "fill_half_angle_deg", "must be in (0, sonar_half_angle_deg]", fill_half_angle_deg);
   RequireOption(sonar_max_range_m > 0.0 && sonar_max_range_m <= 20.0, "sonar_max_range_m",
                 "must be in (0, 20]", sonar_max_range_m);
 }
@@ -63,7 +62,12 @@ std::vector<RangePoint> FuseRanges(const msgs::LaserScan& ir, const msgs::RangeR
     const double cos_fill = std::cos(options.fill_half_angle_deg * kDegToRad);
     // Echoes are judged against the IR alone, so the order of the transducers does not matter.
     const std::vector<double> ir_range = range;
-    for (const msgs::RangeReading& reading : sonar->readings) {
+    const auto& readings = sonar->readings;
+    const int count = static_cast<int>(readings.size());
+    // Unexplained echoes: nearer than the IR's surface in their cone (or the IR saw nothing).
+    std::vector<char> unexplained(count, 0);
+    for (int j = 0; j < count; ++j) {
+      const msgs::RangeReading& reading = readings[j];
       if (!reading.echo || reading.range_m > options.sonar_max_range_m) continue;
       const Eigen::Vector2d s(reading.X_RS.x_m, reading.X_RS.y_m);
       const Eigen::Vector2d axis = Direction(reading.X_RS.theta_rad);
@@ -74,7 +78,20 @@ std::vector<RangePoint> FuseRanges(const msgs::LaserScan& ir, const msgs::RangeR
         const double d = v.norm();
         if (d > 0.0 && v.dot(axis) >= cos_cone * d) d_ir = std::min(d_ir, d);
       }
-      if (reading.range_m >= d_ir - options.tau_m) continue;  // farther, or the IR's surface
+      unexplained[j] = reading.range_m < d_ir - options.tau_m;
+    }
+    for (int j = 0; j < count; ++j) {
+      if (!unexplained[j]) continue;
+      const msgs::RangeReading& reading = readings[j];
+      // A surface heard by neighbouring transducers is nearest along the one most square to it;
+      // the others heard it off-axis, and squaring the surface to their axes would tilt it.
+      const auto nearer = [&](int k) {
+        k = (k + count) % count;
+        return k != j && unexplained[k] && readings[k].range_m < reading.range_m;
+      };
+      if (count > 2 && (nearer(j - 1) || nearer(j + 1))) continue;
+      const Eigen::Vector2d s(reading.X_RS.x_m, reading.X_RS.y_m);
+      const Eigen::Vector2d axis = Direction(reading.X_RS.theta_rad);
       // An obstacle the IR missed: the surface square to the axis at the echo's range.
       for (int i = 0; i < n; ++i) {
         const double along = dir[i].dot(axis);
@@ -83,8 +100,10 @@ std::vector<RangePoint> FuseRanges(const msgs::LaserScan& ir, const msgs::RangeR
         if (t <= 0.0) continue;
         const Eigen::Vector2d v = origin + t * dir[i] - s;
         if (v.dot(axis) < cos_fill * v.norm()) continue;
-        if (t < range[i] - options.tau_m || (options.source == RangeSource::kSonarOnly &&
-                                             t < range[i])) {
+        // Where the IR could not have seen anything (beyond its reach) its silence is no evidence.
+        if (options.source == RangeSource::kFused && t >= ir.range_max_m - options.tau_m) continue;
+        if (t < range[i] - options.tau_m ||
+            (options.source == RangeSource::kSonarOnly && t < range[i])) {
           range[i] = t;
           from_sonar[i] = 1;
         }

@@ -19,20 +19,24 @@ RangeSource ParseRangeSource(const std::string& text);
 // scanner is accurate but blind to dark or glass-like surfaces; the sonar hears them but cannot
 // tell where in its wide cone the echo came from. For each sonar echo:
 //   d_ir = the distance from the transducer of the nearest IR point inside its cone;
-//   echo farther than d_ir + tau_m   -> the sonar saw past the IR's surface (or multipath): ignored;
-//   echo within tau_m of d_ir        -> the IR saw the same surface, more precisely: IR kept;
-//   echo nearer than d_ir - tau_m    -> an obstacle the IR missed: sonar used.
-// A used echo is taken to come from a surface square to the transducer's axis (a smooth surface
-// only echoes back when it nearly faces the transducer), so the IR beams whose ray meets that
-// surface within fill_half_angle_deg of the axis get the range of the meeting point when it is
-// nearer than their own. Defaults are assumptions (the paper gives no numbers): tau 0.1 m is about
-// 10 sonar noise sigmas at 1 m; the cone is the Polaroid transducer's +-15 deg; echoes beyond the
+//   echo farther than d_ir + tau_m   -> the sonar saw past the IR's surface (or multipath):
+//   ignored; echo within tau_m of d_ir        -> the IR saw the same surface, more precisely: IR
+//   kept; echo nearer than d_ir - tau_m    -> an obstacle the IR missed: sonar used.
+// Of neighbouring transducers (adjacent in the ring's order) with such echoes only the nearest is
+// used: a flat surface is nearest along the transducer most square to it, the others heard it
+// off-axis. A used echo is taken to come from a surface square to the transducer's axis (a smooth
+// surface only echoes back when it nearly faces the transducer), so the IR beams whose ray meets
+// that surface within fill_half_angle_deg of the axis get the range of the meeting point when it is
+// nearer than their own, and within the IR's reach (beyond it the IR's silence says nothing).
+// Defaults are assumptions (the paper gives no numbers): tau 0.1 m is about
+// 10 sonar noise sigmas at 1 m; the cone is the Polaroid transducer's +-15 deg; +-10 deg fills
+// about 10 IR beams at 1 m, enough for a line (segmentation.min_line_points); echoes beyond the
 // IR's 3 m reach are not used, because there the IR cannot say anything about them.
 struct FusionOptions {
   RangeSource source = RangeSource::kFused;
   double tau_m = 0.1;
   double sonar_half_angle_deg = 15.0;
-  double fill_half_angle_deg = 7.5;
+  double fill_half_angle_deg = 10.0;
   double sonar_max_range_m = 3.0;
 
   // @throws std::invalid_argument starting with the field's name.

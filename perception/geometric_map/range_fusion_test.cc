@@ -58,14 +58,14 @@ TEST_F(RangeFusionTest, SonarNearerReplacesTheIrAroundItsAxis) {
     if (fused[i].from_sonar) {
       ++replaced;
       EXPECT_NEAR(fused[i].p_R.x(), 1.2, 1e-12);  // on the surface square to the axis
-      // Within 7.5 deg of the axis seen from the transducer.
-      EXPECT_LE(std::abs(fused[i].p_R.y()), std::tan(7.5 * std::numbers::pi / 180.0) + 1e-12);
+      // Within 10 deg (fill_half_angle_deg) of the axis seen from the transducer.
+      EXPECT_LE(std::abs(fused[i].p_R.y()), std::tan(10.0 * std::numbers::pi / 180.0) + 1e-12);
     } else {
       EXPECT_EQ(fused[i].p_R, ir_only[i].p_R);
     }
   }
-  // Beams at 0, +-1.8, +-3.6, +-5.4 deg (their points 1.0 m from the transducer subtend less).
-  EXPECT_EQ(replaced, 7);
+  // Beams at 0, +-1.8, ..., +-7.2 deg (their points 1.0 m from the transducer subtend less).
+  EXPECT_EQ(replaced, 9);
 }
 
 TEST_F(RangeFusionTest, SingleSourceModes) {
@@ -76,12 +76,12 @@ TEST_F(RangeFusionTest, SingleSourceModes) {
   FusionOptions sonar_only;
   sonar_only.source = RangeSource::kSonarOnly;
   const std::vector<RangePoint> points = FuseRanges(ir, &sonar, sonar_only);
-  ASSERT_EQ(points.size(), 7u);
+  ASSERT_EQ(points.size(), 9u);
   for (const RangePoint& p : points) EXPECT_TRUE(p.from_sonar);
   // A sonar echo 1.8 m out (the wall itself) gives the wall's points in sonar-only mode.
   const msgs::RangeRing wall_echo = Sonar(1.8);
   const std::vector<RangePoint> wall = FuseRanges(ir, &wall_echo, sonar_only);
-  ASSERT_EQ(wall.size(), 7u);
+  ASSERT_EQ(wall.size(), 11u);  // beams within 9 deg: 1.8 tan(10 deg) at 2 m
   for (const RangePoint& p : wall) EXPECT_NEAR(p.p_R.x(), 2.0, 1e-12);
 }
 

@@ -27,8 +27,8 @@ void SplitAtFarthest(std::span<const Eigen::Vector2d> points, int first, int las
   double worst = r_min_m;
   for (int k = first + 1; k < last; ++k) {
     const Eigen::Vector2d v = points[k] - a;
-    const double d = length > 1e-12 ? std::abs(chord.x() * v.y() - chord.y() * v.x()) / length
-                                     : v.norm();
+    const double d =
+        length > 1e-12 ? std::abs(chord.x() * v.y() - chord.y() * v.x()) / length : v.norm();
     if (d > worst) worst = d, farthest = k;
   }
   if (farthest < 0) {
@@ -53,6 +53,8 @@ void SegmentationOptions::Validate() const {
                 "must be in [3, 10000]", min_line_points);
   RequireOption(min_cluster_points >= 1 && min_cluster_points <= min_line_points,
                 "min_cluster_points", "must be in [1, min_line_points]", min_cluster_points);
+  RequireOption(max_cluster_size_m > 0.0 && max_cluster_size_m <= 10.0, "max_cluster_size_m",
+                "must be in (0, 10]", max_cluster_size_m);
   RequireOption(r_min_m > 0.0 && r_min_m <= 1.0, "r_min_m", "must be in (0, 1]", r_min_m);
   modal.Validate();
   RequireOption(inlier_distance_m > 0.0 && inlier_distance_m <= 1.0, "inlier_distance_m",
@@ -68,9 +70,20 @@ MapSegment FitMapSegment(std::span<const Eigen::Vector2d> points, std::span<cons
   MapSegment s;
   s.line = options.fit == LineFitMethod::kModal ? FitSegmentModal(points, indices, options.modal)
                                                 : FitSegmentTls(points, indices);
+  std::vector<int> inliers;
   for (int i : indices) {
-    s.inliers += std::abs(s.line.SignedLineDistance(points[i])) <= options.inlier_distance_m;
+    if (std::abs(s.line.SignedLineDistance(points[i])) <= options.inlier_distance_m) {
+      inliers.push_back(i);
+    }
   }
+  s.inliers = static_cast<int>(inliers.size());
+  // The modal filter's direction is the mean of pair directions inside its mode bins: with range
+  // noise that truncated mean leans towards the bins' grid (tenths of a degree). Its inliers,
+  // refitted by least squares, give the unbiased line.
+  if (options.fit == LineFitMethod::kModal && inliers.size() >= 2) {
+    s.line = FitSegmentTls(points, inliers);
+  }
+  s.line.num_points = static_cast<int>(indices.size());
   return s;
 }
 
@@ -96,7 +109,7 @@ ScanFeatures ExtractScanFeatures(std::span<const RangePoint> points_R, int beam_
     MapCluster c;
     for (int k = first; k <= last; ++k) c.box.extend(p[k]);
     c.points = last - first + 1;
-    features.clusters.push_back(c);
+    if (c.box.sizes().maxCoeff() <= options.max_cluster_size_m) features.clusters.push_back(c);
   };
   int first = 0;
   for (int k = 1; k <= n; ++k) {

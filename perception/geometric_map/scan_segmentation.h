@@ -19,17 +19,21 @@ namespace plywood::perception {
 //    from the chord;
 // 3. fit each piece of at least min_line_points in normal form (the modal filter by default, or
 //    total least squares); its inliers are the points within inlier_distance_m of the line; a
-//    piece with fewer than min_inlier_fraction inliers has low confidence and is not a line;
+//    piece with fewer than min_inlier_fraction inliers has low confidence and is not a line; the
+//    modal filter's inliers are refitted by total least squares (its own direction, a truncated
+//    mean of noisy pair directions, leans towards its bin grid by tenths of a degree);
 // 4. endpoints: where two fitted pieces of one group meet, the intersection of their lines (when it
 //    lies within max_intersection_shift_m of the shared point, else the projections); elsewhere
 //    the projection of the first / last point;
-// 5. a group that gave no line (a column, a table leg, clutter) becomes a cluster.
+// 5. a group that gave no line (a column, a table leg, clutter) becomes a cluster when its points
+//    fit in a box of max_cluster_size_m (larger ones are clutter and dropped).
 // Defaults are assumptions: 0.15 m breaks at doorways, posts and behind obstacles while 1.8 deg
 // steps at 3 m are 9.4 cm; r_min 3 cm is 6 IR noise sigmas.
 struct SegmentationOptions {
   double dist_max_m = 0.15;
   int min_line_points = 8;
   int min_cluster_points = 3;
+  double max_cluster_size_m = 0.8;
   double r_min_m = 0.03;
   LineFitMethod fit = LineFitMethod::kModal;
   ModalFitOptions modal;

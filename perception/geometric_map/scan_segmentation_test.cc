@@ -20,7 +20,8 @@ TEST(ScanSegmentationTest, ModalFitIgnoresTwentyPercentOutliersLeastSquaresDoesN
   std::vector<Eigen::Vector2d> points;
   std::vector<int> indices;
   for (int k = 0; k < 50; ++k) {
-    points.push_back(origin + 0.02 * k * d + (k % 5 == 2 ? Eigen::Vector2d(0.3 * n) : Eigen::Vector2d::Zero()));
+    points.push_back(origin + 0.02 * k * d +
+                     (k % 5 == 2 ? Eigen::Vector2d(0.3 * n) : Eigen::Vector2d::Zero()));
     indices.push_back(k);
   }
   double true_alpha = 0, true_r = 0;
@@ -42,9 +43,8 @@ TEST(ScanSegmentationTest, ModalFitIgnoresTwentyPercentOutliersLeastSquaresDoesN
 // at the corner (the intersection of their fits: within 1 mm, as the split point next to the
 // corner takes part in a fit), and the post as a cluster.
 TEST(ScanSegmentationTest, CornerBecomesTwoLinesMeetingAtTheIntersectionPostACluster) {
-  const std::vector<test::Wall> walls = {{{1.5, -3.0}, {1.5, 1.0}},
-                                         {{1.5, 1.0}, {-3.0, 1.0}},
-                                         {{-0.05, -0.95}, {0.05, -0.95}}};
+  const std::vector<test::Wall> walls = {
+      {{1.5, -3.0}, {1.5, 1.0}}, {{1.5, 1.0}, {-3.0, 1.0}}, {{-0.05, -0.95}, {0.05, -0.95}}};
   const msgs::Pose2D X_WR{0.5, -0.25, 0.3};  // the map frame differs from the robot's
   const msgs::Pose2D X_RW = X_WR.Inverse();
   // The same walls in the robot frame, scanned from its origin.

@@ -63,7 +63,7 @@ struct ExperimentConfig {
   ControllerConfig controller;
   SensorSuiteConfig sensors;
   OdometryConfig odometry;
-  LinesConfig lines;  // post-run line-extraction scoring (docs/lines.md)
+  LinesConfig lines;                 // post-run line-extraction scoring (docs/lines.md)
   GeometricMapConfig geometric_map;  // post-run seed 003 map (docs/geometric_map.md)
   OutputOptions output;
 };

@@ -40,6 +40,7 @@ void VisitFields(A& a, PoseCorrectionOptions& o) {
   a("heading", o.heading);
   a("position", o.position);
   a("max_heading_step_deg", o.max_heading_step_deg);
+  a("refine_window_deg", o.refine_window_deg);
   a("max_shift_m", o.max_shift_m);
   a("position_bin_m", o.position_bin_m);
   a("min_virtual_lines", o.min_virtual_lines);
@@ -52,6 +53,7 @@ void VisitFields(A& a, SegmentationOptions& o) {
   a("dist_max_m", o.dist_max_m);
   a("min_line_points", o.min_line_points);
   a("min_cluster_points", o.min_cluster_points);
+  a("max_cluster_size_m", o.max_cluster_size_m);
   a("r_min_m", o.r_min_m);
   a.Enum(
       "fit", o.fit, [](auto f) { return ToString(f); },
@@ -69,6 +71,8 @@ void VisitFields(A& a, AggregationOptions& o) {
   a("max_endpoint_distance_m", o.max_endpoint_distance_m);
   a("max_gap_m", o.max_gap_m);
   a("cluster_inflate_m", o.cluster_inflate_m);
+  a("max_cluster_size_m", o.max_cluster_size_m);
+  a("min_observations", o.min_observations);
 }
 
 }  // namespace plywood::perception

@@ -34,7 +34,7 @@ bool IsRunOutputFile(const std::string& name) {
       "bumpers.csv",        "rooms.csv",          "umbmark_runs.csv",
       "snapshot.png",       "occupancy_grid.png", "occupancy_partitions.png",
       "segments.png",       "lines_truth.csv",    "lines_odometry.csv",
-      "geometric_map.json", kRunCompleteFile};
+      "geometric_map.json", "geometric_map.png",  kRunCompleteFile};
   for (std::string_view known : kNames) {
     if (name == known) return true;
   }

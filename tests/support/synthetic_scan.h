@@ -47,7 +47,9 @@ inline msgs::LaserScan SyntheticScan(const std::vector<Wall>& walls, const msgs:
 // The four sides of the rectangle [x0, x1] x [y0, y1] turned by `theta` about the origin.
 inline std::vector<Wall> Rectangle(double x0, double y0, double x1, double y1, double theta = 0.0) {
   const double c = std::cos(theta), s = std::sin(theta);
-  const auto turn = [&](double x, double y) { return Eigen::Vector2d(c * x - s * y, s * x + c * y); };
+  const auto turn = [&](double x, double y) {
+    return Eigen::Vector2d(c * x - s * y, s * x + c * y);
+  };
   const Eigen::Vector2d p0 = turn(x0, y0), p1 = turn(x1, y0), p2 = turn(x1, y1), p3 = turn(x0, y1);
   return {{p0, p1}, {p1, p2}, {p2, p3}, {p3, p0}};
 }
