@@ -61,35 +61,35 @@ Command AddRunCommand(CLI::App& app) {
       "  plywood run experiments/default.yaml --out runs/demo --seed 2 --set duration_s=30 "
       "--force\n"
       "  plywood run experiments/default.yaml --set duration_s=20 --video default.mp4");
-  return {
-      cli, [flags, seed] {
-        std::vector<std::string> overrides = flags->overrides;
-        if (seed->count() > 0) overrides.push_back("seed=" + flags->seed);
-        const sim::ExperimentConfig config =
-            sim::LoadExperimentConfig(flags->experiment, overrides);
-        const std::filesystem::path out_dir =
-            flags->out.empty() ? "runs/" + config.name + "-seed" + std::to_string(config.seed)
-                               : flags->out;
-        eval::FindProtocol(config);  // an unknown protocol must not cost an earlier run
-        std::unique_ptr<render::VideoRecorder> video;
-        if (!flags->video.empty()) {
-          if (std::filesystem::path(flags->video).extension() != ".mp4") {
-            throw UsageError("--video: expected a file name ending in .mp4, got '" +
-                             flags->video + "'");
-          }
-          eval::RequireObservableProtocol(config, "--video");
-          video = std::make_unique<render::VideoRecorder>(
-              flags->video, render::VideoOptions{.fps = flags->video_fps});
-        }
-        sim::PrepareRunDirectory(out_dir, flags->force);
-        const bool snapshots = config.output.snapshot && !flags->no_snapshot;
-        const int code = eval::RunProtocol(
-            eval::ProtocolContext{config, out_dir, flags->quiet, snapshots, video.get()});
-        if (video && !flags->quiet) {
-          std::printf("%-34s %s (%ld frames)\n", "video", flags->video.c_str(), video->frames());
-        }
-        return code;
-      }};
+  return {cli, [flags, seed] {
+            std::vector<std::string> overrides = flags->overrides;
+            if (seed->count() > 0) overrides.push_back("seed=" + flags->seed);
+            const sim::ExperimentConfig config =
+                sim::LoadExperimentConfig(flags->experiment, overrides);
+            const std::filesystem::path out_dir =
+                flags->out.empty() ? "runs/" + config.name + "-seed" + std::to_string(config.seed)
+                                   : flags->out;
+            eval::FindProtocol(config);  // an unknown protocol must not cost an earlier run
+            std::unique_ptr<render::VideoRecorder> video;
+            if (!flags->video.empty()) {
+              if (std::filesystem::path(flags->video).extension() != ".mp4") {
+                throw UsageError("--video: expected a file name ending in .mp4, got '" +
+                                 flags->video + "'");
+              }
+              eval::RequireObservableProtocol(config, "--video");
+              video = std::make_unique<render::VideoRecorder>(
+                  flags->video, render::VideoOptions{.fps = flags->video_fps});
+            }
+            sim::PrepareRunDirectory(out_dir, flags->force);
+            const bool snapshots = config.output.snapshot && !flags->no_snapshot;
+            const int code = eval::RunProtocol(
+                eval::ProtocolContext{config, out_dir, flags->quiet, snapshots, video.get()});
+            if (video && !flags->quiet) {
+              std::printf("%-34s %s (%ld frames)\n", "video", flags->video.c_str(),
+                          video->frames());
+            }
+            return code;
+          }};
 }
 
 }  // namespace plywood::apps

@@ -11,8 +11,8 @@
 namespace plywood::render {
 
 struct VideoOptions {
-  double fps = 10.0;          // frames per simulated second, in [1, 60]
-  int longer_side_px = 640;   // frame size along the world's longer side, in [64, 4096]
+  double fps = 10.0;         // frames per simulated second, in [1, 60]
+  int longer_side_px = 640;  // frame size along the world's longer side, in [64, 4096]
 
   // @throws std::invalid_argument whose message starts with the offending field's name.
   void Validate() const;

@@ -53,10 +53,10 @@ TEST(VideoCliTest, RunWritesAnMp4WithTheExpectedFramesAndSize) {
 
 TEST(VideoCliTest, RefusesAFileThatIsNotMp4) {
   const std::filesystem::path dir = MakeTempDir("video_cli_bad");
-  const testing::CliResult result = RunPlywood(
-      "run " + (SourceRoot() / "experiments/default.yaml").string() + " --video out.avi --out " +
-          (dir / "run").string(),
-      dir);
+  const testing::CliResult result =
+      RunPlywood("run " + (SourceRoot() / "experiments/default.yaml").string() +
+                     " --video out.avi --out " + (dir / "run").string(),
+                 dir);
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.err.find("--video"), std::string::npos) << result.err;
 }

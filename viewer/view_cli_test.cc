@@ -25,15 +25,16 @@ TEST_F(ViewCliTest, AnUntouchedViewedRunWritesTheSameBytesAsPlywoodRun) {
   const std::filesystem::path dir = MakeTempDir("view_cli_identity");
   const std::string experiment = (SourceRoot() / "experiments/default.yaml").string();
   const std::string common = experiment + " --seed 3 --set duration_s=6 --quiet";
-  const testing::CliResult viewed = RunPlywood(
-      "view " + common + " --speed max --exit-at-end --size 320x240 --out " +
-          (dir / "viewed").string(),
-      dir);
+  const testing::CliResult viewed =
+      RunPlywood("view " + common + " --speed max --exit-at-end --size 320x240 --out " +
+                     (dir / "viewed").string(),
+                 dir);
   ASSERT_EQ(viewed.exit_code, 0) << viewed.err;
-  const testing::CliResult run = RunPlywood("run " + common + " --out " + (dir / "run").string(), dir);
+  const testing::CliResult run =
+      RunPlywood("run " + common + " --out " + (dir / "run").string(), dir);
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  for (const char* file : {"metrics.json", "trajectory.csv", "laser.log", "sonar.csv",
-                           "config.yaml"}) {
+  for (const char* file :
+       {"metrics.json", "trajectory.csv", "laser.log", "sonar.csv", "config.yaml"}) {
     const std::string expected = Slurp(dir / "run" / file);
     EXPECT_FALSE(expected.empty()) << file;
     EXPECT_EQ(Slurp(dir / "viewed" / file), expected) << file;
@@ -43,11 +44,11 @@ TEST_F(ViewCliTest, AnUntouchedViewedRunWritesTheSameBytesAsPlywoodRun) {
 // The command that made docs/viewer.png (README): the office after 20 s, every overlay on.
 TEST_F(ViewCliTest, ScreenshotCommandOfTheReadme) {
   const std::filesystem::path dir = MakeTempDir("view_cli_screenshot");
-  const testing::CliResult result = RunPlywood(
-      "view " + (SourceRoot() / "experiments/default.yaml").string() +
-          " --set duration_s=20 --speed max --size 960x600 --quiet --out " +
-          (dir / "run").string() + " --screenshot " + (dir / "viewer.png").string(),
-      dir);
+  const testing::CliResult result =
+      RunPlywood("view " + (SourceRoot() / "experiments/default.yaml").string() +
+                     " --set duration_s=20 --speed max --size 960x600 --quiet --out " +
+                     (dir / "run").string() + " --screenshot " + (dir / "viewer.png").string(),
+                 dir);
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const render::RgbImage picture = render::ReadPng(dir / "viewer.png");
   EXPECT_EQ(picture.width, 960);
