@@ -1,12 +1,15 @@
 // plywood run EXPERIMENT.yaml [--out DIR] [--seed N] [--set KEY.PATH=VALUE]... [--quiet]
-//                             [--no-snapshot] [--force]
+//                             [--no-snapshot] [--force] [--video OUT.mp4 [--video-fps N]]
 
+#include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "apps/command.h"
 #include "eval/protocol.h"
+#include "render/video_recorder.h"
 #include "sim/config/experiment_config.h"
 
 namespace plywood::apps {
@@ -20,6 +23,8 @@ Command AddRunCommand(CLI::App& app) {
     bool quiet = false;
     bool no_snapshot = false;
     bool force = false;
+    std::string video;
+    double video_fps = 10.0;
   };
   auto flags = std::make_shared<Flags>();
   CLI::App* cli = app.add_subcommand(
@@ -43,11 +48,18 @@ Command AddRunCommand(CLI::App& app) {
   cli->add_flag("--force", flags->force,
                 "replace an earlier run in --out (a directory with its config.yaml and "
                 "metrics.json); refused if it holds any file a run does not write");
+  cli->add_option("--video", flags->video,
+                  "also record the run as an MP4 (top-down, offscreen; needs ffmpeg)")
+      ->type_name("OUT.mp4");
+  cli->add_option("--video-fps", flags->video_fps, "video frames per simulated second")
+      ->check(CLI::Range(1.0, 60.0))
+      ->default_str("10");
   cli->footer(
       "Examples:\n"
       "  plywood run experiments/default.yaml\n"
       "  plywood run experiments/default.yaml --out runs/demo --seed 2 --set duration_s=30 "
-      "--force");
+      "--force\n"
+      "  plywood run experiments/default.yaml --set duration_s=20 --video default.mp4");
   return {cli, [flags, seed] {
             std::vector<std::string> overrides = flags->overrides;
             if (seed->count() > 0) overrides.push_back("seed=" + flags->seed);
@@ -56,12 +68,29 @@ Command AddRunCommand(CLI::App& app) {
             const std::filesystem::path out_dir =
                 flags->out.empty() ? "runs/" + config.name + "-seed" + std::to_string(config.seed)
                                    : flags->out;
+            eval::FindProtocol(config);  // an unknown protocol must not cost an earlier run
+            std::unique_ptr<render::VideoRecorder> video;
+            if (!flags->video.empty()) {
+              if (std::filesystem::path(flags->video).extension() != ".mp4") {
+                throw UsageError("--video: expected a file name ending in .mp4, got '" +
+                                 flags->video + "'");
+              }
+              eval::RequireObservableProtocol(config, "--video");
+              video = std::make_unique<render::VideoRecorder>(
+                  flags->video, render::VideoOptions{.fps = flags->video_fps});
+            }
             const bool snapshots = config.output.snapshot && !flags->no_snapshot;
-            return eval::RunProtocol(eval::ProtocolContext{.config = config,
-                                                           .out_dir = out_dir,
-                                                           .quiet = flags->quiet,
-                                                           .snapshots = snapshots,
-                                                           .force = flags->force});
+            const int code = eval::RunProtocol(eval::ProtocolContext{.config = config,
+                                                                     .out_dir = out_dir,
+                                                                     .quiet = flags->quiet,
+                                                                     .snapshots = snapshots,
+                                                                     .force = flags->force,
+                                                                     .observer = video.get()});
+            if (video && !flags->quiet) {
+              std::printf("%-34s %s (%ld frames)\n", "video", flags->video.c_str(),
+                          video->frames());
+            }
+            return code;
           }};
 }
 

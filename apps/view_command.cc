@@ -90,6 +90,7 @@ int Bench(const ViewFlags& flags, const sim::ExperimentConfig& loaded) {
   viewer::LiveViewerOptions options;
   options.window = WindowOf(flags);
   options.max_fps = 0.0;  // draw at every chance: the figure is what the machine can draw
+  options.hold_at_end = false;
   viewer::LiveViewer live(options);
   live.Open(runner);
   live.controls().SetAllOverlays(true);

@@ -47,6 +47,17 @@ struct SegmentView {
   bool matched = false;  // matched a ground-truth wall
 };
 
+// Seed 001's cognitive map as the sonar explorer holds it (its odometry frame, which starts at the
+// spawn's world pose, so it overlays the world).
+struct MapView {
+  struct Box {
+    Eigen::Vector2d min_W, max_W;
+    bool free = true;
+  };
+  std::vector<Box> partitions;
+  std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> graph_arcs;  // centre -> door -> centre
+};
+
 // Everything the overlays draw in one frame; the live viewer and the replay both fill it.
 struct FrameContent {
   double time_s = 0.0;
@@ -55,6 +66,7 @@ struct FrameContent {
   std::optional<RingView> ir;
   std::vector<PathView> paths;  // ground truth first
   std::vector<SegmentView> lines;
+  std::optional<MapView> map;
 };
 
 }  // namespace plywood::viewer

@@ -71,11 +71,12 @@ bool LiveViewer::AfterStep(const sim::ExperimentRunner& runner) {
   if (closed_) return false;
   const double t = runner.scene().time_s();
   const double min_frame_s = options_.max_fps > 0.0 ? 1.0 / options_.max_fps : 0.0;
-  // A frame is due after 1 / max_fps, and never before as long as the last frame took, so that
-  // a slow renderer (software GL) takes at most half of the time from the run.
-  const auto frame_due = [&] {
+  // A frame is due after 1 / max_fps. While the run must keep up (unlimited speed, or behind the
+  // wall clock) also not before as long as the last frame took, so that a slow renderer (software
+  // GL) takes at most half of the time from the run.
+  const auto frame_due = [&](bool run_waits) {
     const double since_s = std::chrono::duration<double>(Clock::now() - last_frame_end_).count();
-    return since_s >= std::max(min_frame_s, last_frame_cost_s_);
+    return since_s >= (run_waits ? min_frame_s : std::max(min_frame_s, last_frame_cost_s_));
   };
   for (;;) {
     window_->PollEvents();
@@ -87,7 +88,7 @@ bool LiveViewer::AfterStep(const sim::ExperimentRunner& runner) {
     const double factor = controls_->SpeedFactor();
     if (controls_->paused()) {
       if (controls_->TakeStepRequest()) break;
-      if (frame_due()) Draw(runner);
+      if (frame_due(true)) Draw(runner);
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
       anchor_factor_ = -1.0;  // re-anchor the pacing when the run resumes
       continue;
@@ -102,13 +103,13 @@ bool LiveViewer::AfterStep(const sim::ExperimentRunner& runner) {
                            std::chrono::duration<double>(Clock::now() - anchor_wall_).count();
     if (ahead_s <= 0.0) break;
     // Ahead of the wall clock: draw while waiting (the frames/s --bench reports), else sleep.
-    if (frame_due()) {
+    if (frame_due(true)) {
       Draw(runner);
     } else {
       std::this_thread::sleep_for(std::chrono::duration<double>(std::min(ahead_s, 0.002)));
     }
   }
-  if (frame_due()) Draw(runner);
+  if (frame_due(false)) Draw(runner);
   return true;
 }
 

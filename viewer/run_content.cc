@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "eval/lines/line_scan_scorer.h"
+#include "perception/sonar_map/sonar_explorer.h"
 #include "render/overlay.h"
 
 namespace plywood::viewer {
@@ -49,6 +50,23 @@ std::vector<SegmentView> ExtractLines(const sim::ExperimentRunner& runner,
                    found.matched_truth[i] >= 0});
   }
   return out;
+}
+
+// The explorer's cognitive map now (partitions, and the graph's arcs through their doors).
+MapView ExplorerMap(const perception::SonarExplorer& explorer) {
+  const perception::CognitiveMap map = explorer.Map();
+  MapView view;
+  const auto& partitions = map.partitions.partitions();
+  for (const perception::Partition& p : partitions) {
+    view.partitions.push_back(
+        {{p.rect.x0, p.rect.y0}, {p.rect.x1, p.rect.y1}, p.label == perception::Label::kFree});
+  }
+  for (const perception::Adjacency& arc : map.graph.arcs) {
+    const Eigen::Vector2d door = 0.5 * (arc.door_a + arc.door_b);
+    view.graph_arcs.emplace_back(partitions[arc.a].rect.Centre(), door);
+    view.graph_arcs.emplace_back(door, partitions[arc.b].rect.Centre());
+  }
+  return view;
 }
 
 }  // namespace
@@ -127,6 +145,12 @@ const FrameContent& RunContent::Update(const sim::ExperimentRunner& runner) {
                   {}};
     view.kinds = ClassifyRing(runner.scene(), X_WR, sonar_height_m_, view.ring);
     content_.sonar = std::move(view);
+  }
+  // Seed 001's map, rebuilt from the explorer's grid once per simulated second (it is not free).
+  const auto* explorer = dynamic_cast<const perception::SonarExplorer*>(runner.controller());
+  if (explorer && content_.time_s >= next_map_s_) {
+    next_map_s_ = content_.time_s + 1.0;
+    content_.map = ExplorerMap(*explorer);
   }
   if (record.ir_ring.size() != ir_seen_ && !record.ir_ring.empty()) {
     ir_seen_ = record.ir_ring.size();

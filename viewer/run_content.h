@@ -18,6 +18,7 @@ class RunContent {
   double laser_height_m_ = 0.0;
   double sonar_height_m_ = 0.0;
   double ir_height_m_ = 0.0;
+  double next_map_s_ = 0.0;
   std::size_t laser_seen_ = 0, sonar_seen_ = 0, ir_seen_ = 0, trajectory_seen_ = 0;
 };
 

@@ -136,6 +136,21 @@ void AddOverlays(mjvScene& scene, const FrameContent& content, const ViewControl
   if (controls.overlay(Overlay::kIr) && content.ir) {
     AddRing(sink, *content.ir, overlay_colours::kIr);
   }
+  if (controls.overlay(Overlay::kMap) && content.map) {
+    constexpr double kMapZ = 0.02;
+    for (const MapView::Box& box : content.map->partitions) {
+      const Eigen::Vector2d corners[] = {
+          box.min_W, {box.max_W.x(), box.min_W.y()}, box.max_W, {box.min_W.x(), box.max_W.y()}};
+      const float* colour =
+          box.free ? overlay_colours::kFreePartition : overlay_colours::kObstaclePartition;
+      for (int k = 0; k < 4; ++k) {
+        sink.Line(At(corners[k], kMapZ), At(corners[(k + 1) % 4], kMapZ), colour, 1.5);
+      }
+    }
+    for (const auto& [a, b] : content.map->graph_arcs) {
+      sink.Line(At(a, kMapZ + 0.01), At(b, kMapZ + 0.01), overlay_colours::kGraphArc, 3.0);
+    }
+  }
   if (controls.overlay(Overlay::kLines)) {
     for (const SegmentView& s : content.lines) {
       sink.Line(At(s.a_W, 0.5), At(s.b_W, 0.5),

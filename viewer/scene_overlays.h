@@ -18,6 +18,9 @@ inline constexpr float kNothing[4] = {0.5f, 0.5f, 0.5f, 0.5f};
 inline constexpr float kIr[4] = {0.9f, 0.1f, 0.1f, 1.0f};
 inline constexpr float kMatchedLine[4] = {0.0f, 0.9f, 0.0f, 1.0f};
 inline constexpr float kUnmatchedLine[4] = {0.95f, 0.0f, 0.0f, 1.0f};
+inline constexpr float kFreePartition[4] = {0.0f, 0.75f, 0.85f, 1.0f};
+inline constexpr float kObstaclePartition[4] = {0.2f, 0.2f, 0.2f, 1.0f};
+inline constexpr float kGraphArc[4] = {0.1f, 0.3f, 0.95f, 1.0f};
 inline constexpr float kScaleBar[4] = {0.0f, 0.0f, 0.0f, 1.0f};
 }  // namespace overlay_colours
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -132,6 +133,7 @@ TEST_F(ViewerTest, HoldingTheUpArrowDrivesTheRobotForwardByTheExpectedDistance) 
   runner.Run();
   const double expected_m = 0.4 * (3.5 - 0.5);
   const double moved_m = runner.scene().TruePose().x_m - script.x_at_press();
+  std::printf("teleop: moved %.4f m, expected %.4f m\n", moved_m, expected_m);
   EXPECT_NEAR(moved_m, expected_m, 0.05 * expected_m);
   EXPECT_NEAR(runner.scene().TruePose().y_m, 0.0, 0.05);
   // Before the press the idle robot stood still.

@@ -1,0 +1,65 @@
+// `plywood run --video`: a playable MP4 with one frame per 1 / fps of simulated time from t = 0.
+// Exits 77 (a visible skip in ctest) where ffmpeg / ffprobe are not installed.
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "tests/support/cli_test_support.h"
+#include "tests/support/mujoco_test_support.h"
+
+namespace plywood {
+namespace {
+
+using testing::MakeTempDir;
+using testing::RunPlywood;
+using testing::Slurp;
+using testing::SourceRoot;
+
+TEST(VideoCliTest, RunWritesAnMp4WithTheExpectedFramesAndSize) {
+  if (std::system("ffprobe -version > /dev/null 2>&1") != 0 ||
+      std::system("ffmpeg -version > /dev/null 2>&1") != 0) {
+    std::printf("SKIPPED: ffmpeg / ffprobe not installed (Debian package ffmpeg)\n");
+    std::exit(77);
+  }
+  const std::filesystem::path dir = MakeTempDir("video_cli");
+  const std::filesystem::path video = dir / "run.mp4";
+  const testing::CliResult result =
+      RunPlywood("run " + (SourceRoot() / "experiments/default.yaml").string() +
+                     " --set duration_s=2.5 --quiet --no-snapshot --video " + video.string() +
+                     " --video-fps 8 --out " + (dir / "run").string(),
+                 dir);
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const std::filesystem::path probe = dir / "probe.txt";
+  ASSERT_EQ(std::system(("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+                         "stream=codec_name,width,height,nb_read_frames -of csv=p=0 " +
+                         video.string() + " > " + probe.string())
+                            .c_str()),
+            0);
+  // floor(2.5 s x 8) + 1 frames; 640 px along the office's longer side (x), its height even.
+  char codec[16] = {};
+  int width = 0, height = 0, frames = 0;
+  ASSERT_EQ(std::sscanf(Slurp(probe).c_str(), "%15[^,],%d,%d,%d", codec, &width, &height, &frames),
+            4)
+      << Slurp(probe);
+  EXPECT_STREQ(codec, "h264");
+  EXPECT_EQ(frames, 21);
+  EXPECT_EQ(width, 640);
+  EXPECT_EQ(height % 2, 0);
+  EXPECT_GT(height, 300);
+  EXPECT_LT(height, 640);
+}
+
+TEST(VideoCliTest, RefusesAFileThatIsNotMp4) {
+  const std::filesystem::path dir = MakeTempDir("video_cli_bad");
+  const testing::CliResult result =
+      RunPlywood("run " + (SourceRoot() / "experiments/default.yaml").string() +
+                     " --video out.avi --out " + (dir / "run").string(),
+                 dir);
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find("--video"), std::string::npos) << result.err;
+}
+
+}  // namespace
+}  // namespace plywood
