@@ -20,8 +20,8 @@ class YamlFields;
 //     segmentation: {dist_max_m: 0.15, r_min_m: 0.03, fit: modal}
 //     aggregation: {max_angle_diff_deg: 5, max_endpoint_distance_m: 0.06}
 //     max_sonar_age_s: 0.1
-//     scoring: {max_alpha_diff_deg: 5, max_r_diff_m: 0.05, min_overlap_fraction: 0.5,
-//               min_observed_rays: 5}
+//     scoring: {max_endpoint_distance_m: 0.05, max_alpha_diff_deg: 5, range_noise_sigma_m: 0.01,
+//               direction_sigmas: 3, min_overlap_fraction: 0.5, min_observed_rays: 5}
 // Without the section no map is built.
 struct GeometricMapConfig {
   bool given = false;
