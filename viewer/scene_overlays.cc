@@ -4,43 +4,35 @@
 #include <cstdio>
 
 #include "render/scale_bar.h"
+#include "viewer/polyline_thinning.h"
 
 namespace plywood::viewer {
 namespace {
 
-// Appends geoms to a scene until it is full.
+// Sends overlay lines to the batch and labels to the scene (until the scene is full).
 class GeomSink {
  public:
-  explicit GeomSink(mjvScene& scene) : scene_(scene) {}
+  GeomSink(mjvScene& scene, OverlayLines& lines) : scene_(scene), lines_(lines) {}
 
   void Line(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const float rgba[4],
             double width_px) {
-    mjvGeom* g = Next(rgba);
-    if (g == nullptr) return;
-    mjv_makeConnector(g, mjGEOM_LINE, width_px, a.x(), a.y(), a.z(), b.x(), b.y(), b.z());
+    lines_.Add(a, b, rgba, width_px);
   }
   void Label(const Eigen::Vector3d& p, const char* text, const float rgba[4]) {
-    mjvGeom* g = Next(rgba);
-    if (g == nullptr) return;
+    if (scene_.ngeom >= scene_.maxgeom) return;
+    mjvGeom* g = &scene_.geoms[scene_.ngeom++];
     const mjtNum size[3] = {0.05, 0.05, 0.05};
     const mjtNum pos[3] = {p.x(), p.y(), p.z()};
     mjv_initGeom(g, mjGEOM_LABEL, size, pos, nullptr, rgba);
+    g->category = mjCAT_DECOR;
+    g->objtype = mjOBJ_UNKNOWN;
+    g->objid = -1;
     std::snprintf(g->label, sizeof(g->label), "%s", text);
   }
 
  private:
-  mjvGeom* Next(const float rgba[4]) {
-    if (scene_.ngeom >= scene_.maxgeom) return nullptr;
-    mjvGeom* g = &scene_.geoms[scene_.ngeom++];
-    mjv_initGeom(g, mjGEOM_NONE, nullptr, nullptr, nullptr, rgba);
-    g->category = mjCAT_DECOR;
-    g->objtype = mjOBJ_UNKNOWN;
-    g->objid = -1;
-    g->emission = 1.0f;  // overlays keep their colour whatever the lighting
-    g->specular = 0.0f;
-    return g;
-  }
   mjvScene& scene_;
+  OverlayLines& lines_;
 };
 
 Eigen::Vector3d At(const Eigen::Vector2d& p, double z) { return {p.x(), p.y(), z}; }
@@ -92,9 +84,9 @@ void AddRing(GeomSink& sink, const RingView& view, const float* single_colour) {
 
 }  // namespace
 
-void AddOverlays(mjvScene& scene, const FrameContent& content, const ViewControls& controls,
-                 const render::WorldBounds& world) {
-  GeomSink sink(scene);
+void AddOverlays(mjvScene& scene, OverlayLines& lines, const FrameContent& content,
+                 const ViewControls& controls, const render::WorldBounds& world) {
+  GeomSink sink(scene, lines);
   constexpr double kFloorZ = 0.01;  // just above the floor, under everything else
   if (controls.overlay(Overlay::kScaleBar)) {
     // Axes at the world origin and a scale bar along the bottom-left corner of the world.
@@ -112,13 +104,11 @@ void AddOverlays(mjvScene& scene, const FrameContent& content, const ViewControl
     sink.Label(At(start + Eigen::Vector2d(0, 0.15), kFloorZ), text, overlay_colours::kScaleBar);
   }
   if (controls.overlay(Overlay::kPaths)) {
+    constexpr double kPathToleranceM = 0.005;  // below a pixel at any useful zoom
     for (const PathView& path : content.paths) {
-      // Long runs are thinned to keep the frame cheap; the last point is always drawn.
-      const std::size_t stride = 1 + path.points_W.size() / 2000;
-      for (std::size_t i = stride; i < path.points_W.size() + stride - 1; i += stride) {
-        const std::size_t j = std::min(i, path.points_W.size() - 1);
-        sink.Line(At(path.points_W[i - stride], kFloorZ + 0.01),
-                  At(path.points_W[j], kFloorZ + 0.01), path.rgba, 2.5);
+      const std::vector<Eigen::Vector2d> drawn = ThinPolyline(path.points_W, kPathToleranceM);
+      for (std::size_t i = 1; i < drawn.size(); ++i) {
+        sink.Line(At(drawn[i - 1], kFloorZ + 0.01), At(drawn[i], kFloorZ + 0.01), path.rgba, 2.5);
       }
     }
   }

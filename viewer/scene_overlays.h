@@ -4,6 +4,7 @@
 
 #include "render/world_to_pixel.h"
 #include "viewer/frame_content.h"
+#include "viewer/overlay_lines.h"
 #include "viewer/view_controls.h"
 
 namespace plywood::viewer {
@@ -24,9 +25,9 @@ inline constexpr float kGraphArc[4] = {0.1f, 0.3f, 0.95f, 1.0f};
 inline constexpr float kScaleBar[4] = {0.0f, 0.0f, 0.0f, 1.0f};
 }  // namespace overlay_colours
 
-// Appends the overlays `controls` has on to `scene` as unlit line geoms (stops quietly when the
-// scene is full). `world` bounds the floor for the scale bar and axes.
-void AddOverlays(mjvScene& scene, const FrameContent& content, const ViewControls& controls,
-                 const render::WorldBounds& world);
+// Adds the overlays `controls` has on: their lines to `lines`, their text labels to `scene` (as
+// label geoms, until the scene is full). `world` bounds the floor for the scale bar and axes.
+void AddOverlays(mjvScene& scene, OverlayLines& lines, const FrameContent& content,
+                 const ViewControls& controls, const render::WorldBounds& world);
 
 }  // namespace plywood::viewer

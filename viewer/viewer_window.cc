@@ -22,9 +22,35 @@
 namespace plywood::viewer {
 namespace {
 
-constexpr int kSceneGeoms = 20000;  // the world, the robot and every overlay line
+constexpr double kFloorGridM = 0.5;  // rendering grid of planes, see the constructor
+constexpr int kSceneGeoms = 20000;   // the world, the robot and every overlay line
 
 // GLFW keeps one global error callback; its last message explains a failed glfwInit / window.
+// Draws `lines` with the projection and modelview mjr_render left for the scene's camera (its
+// text labels are drawn with them too), as MuJoCo draws a line geom: unlit, depth-tested. Widths
+// are 1.5x the requested pixels, as wide as MuJoCo 2.2.2 drew the same lines as geoms in this
+// window (compared on the README's screenshot), so the overlays look as they did.
+void DrawOverlayLines(const OverlayLines& lines, float context_line_width) {
+  constexpr float kAsMujocoDrewThem = 1.5f;
+  if (lines.batches().empty()) return;
+  glDisable(GL_LIGHTING);
+  glDisable(GL_TEXTURE_2D);
+  glEnable(GL_DEPTH_TEST);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glEnableClientState(GL_VERTEX_ARRAY);
+  for (const OverlayLines::Batch& batch : lines.batches()) {
+    glLineWidth(kAsMujocoDrewThem * batch.width_px * context_line_width);
+    glColor4fv(batch.rgba.data());
+    glVertexPointer(3, GL_FLOAT, 0, batch.xyz.data());
+    glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(batch.xyz.size() / 3));
+  }
+  glDisableClientState(GL_VERTEX_ARRAY);
+  glDisable(GL_BLEND);
+  glLineWidth(context_line_width);
+  glEnable(GL_LIGHTING);
+}
+
 std::string& LastGlfwError() {
   static std::string message;
   return message;
@@ -96,9 +122,29 @@ ViewerWindow::ViewerWindow(const mjModel* m, const WindowOptions& options)
   }
   copy->vis.headlight.active = 1;
   copy->vis.quality.shadowsize = 0;  // see TopDownRenderer: a shadow map costs more than it shows
+  // Software GL (llvmpipe under Xvfb, the usual case on a lab server) spends most of a frame on
+  // vertices: a plane is drawn as quads of its grid spacing (0.05 m in the shipped worlds: 75,000
+  // quads for the office floor) and round geoms with 28 x 16 facets. Lighting is per vertex and
+  // every shipped light is directional, so a 0.5 m floor grid shades the same; 16 x 8 facets
+  // still look round at the robot's size.
+  for (int i = 0; i < copy->ngeom; ++i) {
+    if (copy->geom_type[i] == mjGEOM_PLANE) {
+      copy->geom_size[3 * i + 2] = std::max<mjtNum>(copy->geom_size[3 * i + 2], kFloorGridM);
+    }
+  }
+  copy->vis.quality.numslices = std::min(copy->vis.quality.numslices, 16);
+  copy->vis.quality.numstacks = std::min(copy->vis.quality.numstacks, 8);
   mjv_makeScene(copy, &g.scene, kSceneGeoms);
   mjr_makeContext(copy, &g.con, mjFONTSCALE_150);
   mjr_setBuffer(mjFB_WINDOW, &g.con);
+  // Bilinear instead of MuJoCo's trilinear (mipmapped) filtering: a third less per-pixel work in
+  // software GL, and the floor's checker is drawn near one texel per pixel anyway.
+  for (int i = 0; i < g.con.ntexture; ++i) {
+    if (g.con.textureType[i] != mjTEXTURE_2D) continue;
+    glBindTexture(GL_TEXTURE_2D, g.con.texture[i]);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  }
+  glBindTexture(GL_TEXTURE_2D, 0);
   g.scene.flags[mjRND_SKYBOX] = 0;
   g.scene.flags[mjRND_REFLECTION] = 0;
   for (int i = 0; i < mjNGROUP; ++i) g.option.sitegroup[i] = 0;  // sensor sites clutter the view
@@ -230,6 +276,7 @@ void ViewerWindow::SetPreset(CameraPreset preset, int follow_body_id) {
 mjvScene& ViewerWindow::BeginFrame(mjData* d) {
   Impl& g = *impl_;
   glfwMakeContextCurrent(g.window);
+  overlay_lines_.Clear();
   mjv_updateScene(g.model.get(), d, &g.option, nullptr, &g.camera, mjCAT_ALL, &g.scene);
   if (preset_ == CameraPreset::kTopDown) {
     // The world framed exactly in the window, as TopDownRenderer frames a snapshot.
@@ -257,6 +304,7 @@ void ViewerWindow::Finish(const std::string& top_left, const std::string& bottom
   Impl& g = *impl_;
   const mjrRect viewport{0, 0, framebuffer_width(), framebuffer_height()};
   mjr_render(viewport, &g.scene, &g.con);
+  DrawOverlayLines(overlay_lines_, g.con.lineWidth);
   // mjr_overlay takes two columns; each block line is "title\tvalue".
   const auto text = [&](int grid, const std::string& block) {
     if (block.empty()) return;
