@@ -58,6 +58,25 @@ struct MapView {
   std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> graph_arcs;  // centre -> door -> centre
 };
 
+// Seed 001's occupancy grid: the explorer's cell probabilities (its odometry frame, as MapView).
+struct GridView {
+  Eigen::Vector2d cell_00_centre_W = Eigen::Vector2d::Zero();
+  double cell_m = 0.05;
+  int width = 0, height = 0;
+  std::vector<float> occupied_p;  // row-major from cell (0, 0), x fastest
+};
+
+// Seed 003's geometric map as far as it is built (the map frame: the odometry frame at the first
+// scan, which starts at the spawn's world pose).
+struct GeometricMapView {
+  struct Segment {
+    Eigen::Vector2d a_W, b_W;
+    bool pseudo = false;  // a side of the largest frame nobody has seen yet
+  };
+  std::vector<Segment> segments;  // confirmed real and pseudo ones, as geometric_map.png
+  std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> clusters;  // min, max corners
+};
+
 // Everything the overlays draw in one frame; the live viewer and the replay both fill it.
 struct FrameContent {
   double time_s = 0.0;
@@ -67,6 +86,8 @@ struct FrameContent {
   std::vector<PathView> paths;  // ground truth first
   std::vector<SegmentView> lines;
   std::optional<MapView> map;
+  std::optional<GridView> grid;
+  std::optional<GeometricMapView> geometric_map;
 };
 
 }  // namespace plywood::viewer

@@ -123,7 +123,7 @@ void LiveViewer::DrawFrame(mjData* d, const FrameContent& content, const std::st
   const Clock::time_point start = Clock::now();
   ++frames_;
   mjvScene& scene = window_->BeginFrame(d);
-  AddOverlays(scene, window_->overlay_lines(), content, *controls_, world_);
+  AddOverlays(scene, window_->overlay_primitives(), content, *controls_, world_);
 
   std::string clock;
   if (controls_->overlay(Overlay::kScaleBar)) {

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "eval/lines/line_scan_scorer.h"
+#include "perception/geometric_map/geometric_mapper.h"
 #include "perception/sonar_map/sonar_explorer.h"
 #include "render/overlay.h"
 
@@ -69,6 +70,35 @@ MapView ExplorerMap(const perception::SonarExplorer& explorer) {
   return view;
 }
 
+// The explorer's occupancy grid now.
+GridView ExplorerGrid(const perception::SonarExplorer& explorer) {
+  const perception::LogOddsGrid& grid = explorer.grid();
+  GridView view;
+  view.cell_00_centre_W = grid.CellCentre(0, 0);
+  view.cell_m = grid.resolution_m();
+  view.width = grid.width();
+  view.height = grid.height();
+  view.occupied_p.reserve(static_cast<std::size_t>(view.width) * view.height);
+  for (int iy = 0; iy < view.height; ++iy) {
+    for (int ix = 0; ix < view.width; ++ix) {
+      view.occupied_p.push_back(static_cast<float>(grid.Probability(ix, iy)));
+    }
+  }
+  return view;
+}
+
+GeometricMapView MapSegments(const perception::GeometricMap& map) {
+  GeometricMapView view;
+  for (const perception::MapSegment& s : map.segments()) {
+    // What geometric_map.png shows: confirmed real segments and pseudo ones.
+    if (s.pseudo || map.Confirmed(s)) view.segments.push_back({s.line.start, s.line.end, s.pseudo});
+  }
+  for (const perception::MapCluster& c : map.clusters()) {
+    view.clusters.emplace_back(c.box.min(), c.box.max());
+  }
+  return view;
+}
+
 }  // namespace
 
 std::vector<RingReadingKind> ClassifyRing(const sim::Scene& scene, const msgs::Pose2D& X_WR,
@@ -102,6 +132,10 @@ RunContent::RunContent(const sim::ExperimentRunner& runner) {
   sonar_height_m_ = SiteHeight(scene, "sonar_0", 0.2);
   ir_height_m_ = SiteHeight(scene, "ir_0", 0.1);
   content_.paths.push_back(Path("ground truth", render::colours::kBlack));
+  if (runner.config().geometric_map.given) {
+    geometric_mapper_ =
+        std::make_unique<perception::GeometricMapper>(runner.config().geometric_map.options);
+  }
   const auto& names = runner.record().estimator_names;
   for (std::size_t e = 0; e < names.size(); ++e) {
     content_.paths.push_back(
@@ -151,6 +185,31 @@ const FrameContent& RunContent::Update(const sim::ExperimentRunner& runner) {
   if (explorer && content_.time_s >= next_map_s_) {
     next_map_s_ = content_.time_s + 1.0;
     content_.map = ExplorerMap(*explorer);
+    content_.grid = ExplorerGrid(*explorer);
+  }
+  // Seed 003's map, grown scan by scan as eval/geometric_map builds it after the run: each IR scan
+  // with the sonar ring nearest in time, once every ring that could be nearest has been read.
+  if (geometric_mapper_ && record.ir_scanner.size() != ir_scans_seen_) {
+    const double max_age_s = config.geometric_map.max_sonar_age_s;
+    const bool ended = content_.time_s >= config.duration_s - 1e-9;
+    bool added = false;
+    for (; ir_scans_seen_ < record.ir_scanner.size(); ++ir_scans_seen_) {
+      const sim::LaserRecord& ir = record.ir_scanner[ir_scans_seen_];
+      if (!ended && content_.time_s < ir.scan.time_s + max_age_s) break;
+      while (next_sonar_ + 1 < record.sonar.size() &&
+             std::abs(record.sonar[next_sonar_ + 1].time_s - ir.scan.time_s) <=
+                 std::abs(record.sonar[next_sonar_].time_s - ir.scan.time_s)) {
+        ++next_sonar_;
+      }
+      const msgs::RangeRing* sonar =
+          next_sonar_ < record.sonar.size() &&
+                  std::abs(record.sonar[next_sonar_].time_s - ir.scan.time_s) <= max_age_s
+              ? &record.sonar[next_sonar_]
+              : nullptr;
+      geometric_mapper_->AddScan(ir.scan, sonar, ir.X_WR_odometry);
+      added = true;
+    }
+    if (added) content_.geometric_map = MapSegments(geometric_mapper_->map());
   }
   if (record.ir_ring.size() != ir_seen_ && !record.ir_ring.empty()) {
     ir_seen_ = record.ir_ring.size();

@@ -1,5 +1,8 @@
 #pragma once
 
+#include <memory>
+
+#include "perception/geometric_map/geometric_mapper.h"
 #include "sim/runner/experiment_runner.h"
 #include "viewer/frame_content.h"
 
@@ -20,6 +23,8 @@ class RunContent {
   double ir_height_m_ = 0.0;
   double next_map_s_ = 0.0;
   std::size_t laser_seen_ = 0, sonar_seen_ = 0, ir_seen_ = 0, trajectory_seen_ = 0;
+  std::size_t ir_scans_seen_ = 0, next_sonar_ = 0;
+  std::unique_ptr<perception::GeometricMapper> geometric_mapper_;  // seed 003 runs only
 };
 
 // What each reading of `ring` (read at robot pose X_WR) means, judged by a ray along its axis in

@@ -191,7 +191,7 @@ void ReplayViewer::ShowAt(double t_s) {
   scene_->PlaceRobot(PoseAt(data_.trajectories.front(), time_s_));
   const FrameContent content = ContentAt(time_s_);
   mjvScene& scene = window_->BeginFrame(scene_->mutable_data());
-  AddOverlays(scene, window_->overlay_lines(), content, *controls_, world_);
+  AddOverlays(scene, window_->overlay_primitives(), content, *controls_, world_);
   char clock[160];
   std::snprintf(clock, sizeof(clock), "replay\t%s\nsimulated time\t%.2f / %.2f s%s",
                 data_.config.name.c_str(), time_s_, data_.end_s(),

@@ -1,5 +1,6 @@
 #include "viewer/scene_overlays.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -12,11 +13,15 @@ namespace {
 // Sends overlay lines to the batch and labels to the scene (until the scene is full).
 class GeomSink {
  public:
-  GeomSink(mjvScene& scene, OverlayLines& lines) : scene_(scene), lines_(lines) {}
+  GeomSink(mjvScene& scene, OverlayPrimitives& lines) : scene_(scene), lines_(lines) {}
 
   void Line(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const float rgba[4],
             double width_px) {
     lines_.Add(a, b, rgba, width_px);
+  }
+  void Rectangle(const Eigen::Vector2d& min, const Eigen::Vector2d& max, double z,
+                 const float rgba[4]) {
+    lines_.AddRectangle(min, max, z, rgba);
   }
   void Label(const Eigen::Vector3d& p, const char* text, const float rgba[4]) {
     if (scene_.ngeom >= scene_.maxgeom) return;
@@ -32,7 +37,7 @@ class GeomSink {
 
  private:
   mjvScene& scene_;
-  OverlayLines& lines_;
+  OverlayPrimitives& lines_;
 };
 
 Eigen::Vector3d At(const Eigen::Vector2d& p, double z) { return {p.x(), p.y(), z}; }
@@ -84,7 +89,7 @@ void AddRing(GeomSink& sink, const RingView& view, const float* single_colour) {
 
 }  // namespace
 
-void AddOverlays(mjvScene& scene, OverlayLines& lines, const FrameContent& content,
+void AddOverlays(mjvScene& scene, OverlayPrimitives& lines, const FrameContent& content,
                  const ViewControls& controls, const render::WorldBounds& world) {
   GeomSink sink(scene, lines);
   constexpr double kFloorZ = 0.01;  // just above the floor, under everything else
@@ -139,6 +144,45 @@ void AddOverlays(mjvScene& scene, OverlayLines& lines, const FrameContent& conte
     }
     for (const auto& [a, b] : content.map->graph_arcs) {
       sink.Line(At(a, kMapZ + 0.01), At(b, kMapZ + 0.01), overlay_colours::kGraphArc, 3.0);
+    }
+  }
+  if (controls.overlay(Overlay::kGrid) && content.grid) {
+    // Cells the grid has an opinion on; unknown ones (p near 0.5) let the floor show.
+    const GridView& grid = *content.grid;
+    const Eigen::Vector2d half(0.5 * grid.cell_m, 0.5 * grid.cell_m);
+    for (int iy = 0; iy < grid.height; ++iy) {
+      for (int ix = 0; ix < grid.width; ++ix) {
+        const float p = grid.occupied_p[static_cast<std::size_t>(iy) * grid.width + ix];
+        if (std::abs(p - 0.5f) < 0.1f) continue;
+        const Eigen::Vector2d centre =
+            grid.cell_00_centre_W + grid.cell_m * Eigen::Vector2d(ix, iy);
+        sink.Rectangle(centre - half, centre + half, kFloorZ + 0.005,
+                       p > 0.5f ? overlay_colours::kOccupiedCell : overlay_colours::kFreeCell);
+      }
+    }
+  }
+  if (controls.overlay(Overlay::kMap) && content.geometric_map) {
+    constexpr double kMapZ = 0.03;
+    for (const GeometricMapView::Segment& s : content.geometric_map->segments) {
+      if (!s.pseudo) {
+        sink.Line(At(s.a_W, kMapZ), At(s.b_W, kMapZ), overlay_colours::kRealSegment, 3.0);
+        continue;
+      }
+      // Dashes of 10 cm every 20 cm, as geometric_map.png.
+      const Eigen::Vector2d d = s.b_W - s.a_W;
+      const double length = d.norm();
+      for (double t = 0.0; t < length; t += 0.2) {
+        sink.Line(At(s.a_W + d * (t / length), kMapZ),
+                  At(s.a_W + d * (std::min(t + 0.1, length) / length), kMapZ),
+                  overlay_colours::kPseudoSegment, 2.0);
+      }
+    }
+    for (const auto& [a, b] : content.geometric_map->clusters) {
+      const Eigen::Vector2d corners[] = {a, {b.x(), a.y()}, b, {a.x(), b.y()}};
+      for (int k = 0; k < 4; ++k) {
+        sink.Line(At(corners[k], kMapZ), At(corners[(k + 1) % 4], kMapZ), overlay_colours::kCluster,
+                  2.0);
+      }
     }
   }
   if (controls.overlay(Overlay::kLines)) {

@@ -4,7 +4,7 @@
 
 #include "render/world_to_pixel.h"
 #include "viewer/frame_content.h"
-#include "viewer/overlay_lines.h"
+#include "viewer/overlay_primitives.h"
 #include "viewer/view_controls.h"
 
 namespace plywood::viewer {
@@ -23,11 +23,17 @@ inline constexpr float kFreePartition[4] = {0.0f, 0.75f, 0.85f, 1.0f};
 inline constexpr float kObstaclePartition[4] = {0.2f, 0.2f, 0.2f, 1.0f};
 inline constexpr float kGraphArc[4] = {0.1f, 0.3f, 0.95f, 1.0f};
 inline constexpr float kScaleBar[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+inline constexpr float kOccupiedCell[4] = {0.1f, 0.1f, 0.1f, 0.55f};
+inline constexpr float kFreeCell[4] = {1.0f, 1.0f, 1.0f, 0.35f};
+// Seed 003's map, in geometric_map.png's colours.
+inline constexpr float kRealSegment[4] = {0.9f, 0.1f, 0.1f, 1.0f};
+inline constexpr float kPseudoSegment[4] = {1.0f, 0.55f, 0.0f, 1.0f};
+inline constexpr float kCluster[4] = {0.0f, 0.7f, 0.0f, 1.0f};
 }  // namespace overlay_colours
 
 // Adds the overlays `controls` has on: their lines to `lines`, their text labels to `scene` (as
 // label geoms, until the scene is full). `world` bounds the floor for the scale bar and axes.
-void AddOverlays(mjvScene& scene, OverlayLines& lines, const FrameContent& content,
+void AddOverlays(mjvScene& scene, OverlayPrimitives& lines, const FrameContent& content,
                  const ViewControls& controls, const render::WorldBounds& world);
 
 }  // namespace plywood::viewer

@@ -95,6 +95,9 @@ void ViewControls::HandleKey(int key, int action) {
     case GLFW_KEY_M:
       toggle(Overlay::kMap);
       break;
+    case GLFW_KEY_G:
+      toggle(Overlay::kGrid);
+      break;
     case GLFW_KEY_B:
       toggle(Overlay::kScaleBar);
       break;
@@ -144,7 +147,8 @@ std::string ViewControls::HelpText() {
          "L S I\tlaser, sonar, IR overlays\n"
          "P\tground-truth path and odometry estimates\n"
          "E\textracted lines (matched green, unmatched red)\n"
-         "M\tseed 001 map: partitions and graph\n"
+         "M\tmaps: seed 001 partitions and graph, seed 003 segments\n"
+         "G\tseed 001 occupancy grid (dark occupied, light free)\n"
          "B\tscale bar and clock\n"
          "T F\ttop-down / follow camera\n"
          "V\tstart / stop recording video\n"

@@ -16,7 +16,8 @@ enum class Overlay {
   kIr,        // IR ring beams and IR scanner points
   kPaths,     // ground-truth path and every odometry estimate
   kLines,     // lines extracted from the latest scan: matched green, unmatched red
-  kMap,       // seed 001's occupancy partitions and graph (sonar explorer runs)
+  kMap,       // seed 001's partitions and graph (sonar explorer runs), seed 003's geometric map
+  kGrid,      // seed 001's occupancy grid cells (sonar explorer runs)
   kScaleBar,  // scale bar and simulated clock
   kCount
 };

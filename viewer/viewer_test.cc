@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -90,6 +91,37 @@ TEST_F(ViewerTest, ScreenshotShowsTheRobotAtItsGroundTruthPoseAndTheLaserOnlyWhe
   const render::RgbImage laser = render::ReadPng(dir / "laser.png");
   // 361 beams of up to 8 m: thousands of pixels; the robot itself stays drawn under them.
   EXPECT_GT(CountColour(laser, overlay_colours::kLaserBeam), 1000);
+}
+
+long DifferingPixels(const render::RgbImage& a, const render::RgbImage& b) {
+  long n = 0;
+  for (int y = 0; y < a.height; ++y) {
+    for (int x = 0; x < a.width; ++x) n += std::memcmp(a.At(x, y), b.At(x, y), 3) != 0;
+  }
+  return n;
+}
+
+TEST_F(ViewerTest, SeedOnesGridAndMapAreDrawnOnlyWhenOn) {
+  sim::ExperimentRunner runner(sim::LoadExperimentConfig(
+      SourceRoot() / "experiments/seed001_room_1.yaml", {"duration_s=6"}));
+  LiveViewer live(TestViewer());
+  live.Open(runner);
+  runner.SetObserver(&live);
+  runner.Run();
+  const std::filesystem::path dir = MakeTempDir("viewer_grid");
+  live.controls().SetAllOverlays(false);
+  live.WriteFinalScreenshot(dir / "plain.png");
+  live.WriteFinalScreenshot(dir / "plain_again.png");
+  live.controls().set_overlay(Overlay::kGrid, true);
+  live.WriteFinalScreenshot(dir / "grid.png");
+  live.controls().set_overlay(Overlay::kGrid, false);
+  live.controls().set_overlay(Overlay::kMap, true);
+  live.WriteFinalScreenshot(dir / "map.png");
+  const render::RgbImage plain = render::ReadPng(dir / "plain.png");
+  EXPECT_EQ(DifferingPixels(plain, render::ReadPng(dir / "plain_again.png")), 0);
+  // The room is 3 x 3.5 m in a 480 x 320 window: thousands of cells, tens of partition edges.
+  EXPECT_GT(DifferingPixels(plain, render::ReadPng(dir / "grid.png")), 5000);
+  EXPECT_GT(DifferingPixels(plain, render::ReadPng(dir / "map.png")), 300);
 }
 
 // Holds the up arrow from press_s to release_s through the window's key entry point (the one

@@ -25,25 +25,33 @@ namespace {
 constexpr double kFloorGridM = 0.5;  // rendering grid of planes, see the constructor
 constexpr int kSceneGeoms = 20000;   // the world, the robot and every overlay line
 
-// GLFW keeps one global error callback; its last message explains a failed glfwInit / window.
-// Draws `lines` with the projection and modelview mjr_render left for the scene's camera (its
-// text labels are drawn with them too), as MuJoCo draws a line geom: unlit, depth-tested. Widths
-// are 1.5x the requested pixels, as wide as MuJoCo 2.2.2 drew the same lines as geoms in this
-// window (compared on the README's screenshot), so the overlays look as they did.
-void DrawOverlayLines(const OverlayLines& lines, float context_line_width) {
+// Draws `overlays` with the projection and modelview mjr_render left for the scene's camera (its
+// text labels are drawn with them too), as MuJoCo draws a line geom: unlit, depth-tested. Line
+// widths are 1.5x the requested pixels, as wide as MuJoCo 2.2.2 drew the same lines as geoms in
+// this window (compared on the README's screenshot), so the overlays look as they did.
+void DrawOverlayPrimitives(const OverlayPrimitives& overlays, float context_line_width) {
   constexpr float kAsMujocoDrewThem = 1.5f;
-  if (lines.batches().empty()) return;
+  if (overlays.batches().empty()) return;
   glDisable(GL_LIGHTING);
   glDisable(GL_TEXTURE_2D);
   glEnable(GL_DEPTH_TEST);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   glEnableClientState(GL_VERTEX_ARRAY);
-  for (const OverlayLines::Batch& batch : lines.batches()) {
-    glLineWidth(kAsMujocoDrewThem * batch.width_px * context_line_width);
-    glColor4fv(batch.rgba.data());
-    glVertexPointer(3, GL_FLOAT, 0, batch.xyz.data());
-    glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(batch.xyz.size() / 3));
+  // Filled areas first, under the lines.
+  for (const auto kind : {OverlayPrimitives::Kind::kQuads, OverlayPrimitives::Kind::kLines}) {
+    for (const OverlayPrimitives::Batch& batch : overlays.batches()) {
+      if (batch.kind != kind) continue;
+      glColor4fv(batch.rgba.data());
+      glVertexPointer(3, GL_FLOAT, 0, batch.xyz.data());
+      const auto vertices = static_cast<GLsizei>(batch.xyz.size() / 3);
+      if (kind == OverlayPrimitives::Kind::kQuads) {
+        glDrawArrays(GL_QUADS, 0, vertices);
+      } else {
+        glLineWidth(kAsMujocoDrewThem * batch.width_px * context_line_width);
+        glDrawArrays(GL_LINES, 0, vertices);
+      }
+    }
   }
   glDisableClientState(GL_VERTEX_ARRAY);
   glDisable(GL_BLEND);
@@ -51,6 +59,7 @@ void DrawOverlayLines(const OverlayLines& lines, float context_line_width) {
   glEnable(GL_LIGHTING);
 }
 
+// GLFW keeps one global error callback; its last message explains a failed glfwInit / window.
 std::string& LastGlfwError() {
   static std::string message;
   return message;
@@ -276,7 +285,7 @@ void ViewerWindow::SetPreset(CameraPreset preset, int follow_body_id) {
 mjvScene& ViewerWindow::BeginFrame(mjData* d) {
   Impl& g = *impl_;
   glfwMakeContextCurrent(g.window);
-  overlay_lines_.Clear();
+  overlay_primitives_.Clear();
   mjv_updateScene(g.model.get(), d, &g.option, nullptr, &g.camera, mjCAT_ALL, &g.scene);
   if (preset_ == CameraPreset::kTopDown) {
     // The world framed exactly in the window, as TopDownRenderer frames a snapshot.
@@ -304,7 +313,7 @@ void ViewerWindow::Finish(const std::string& top_left, const std::string& bottom
   Impl& g = *impl_;
   const mjrRect viewport{0, 0, framebuffer_width(), framebuffer_height()};
   mjr_render(viewport, &g.scene, &g.con);
-  DrawOverlayLines(overlay_lines_, g.con.lineWidth);
+  DrawOverlayPrimitives(overlay_primitives_, g.con.lineWidth);
   // mjr_overlay takes two columns; each block line is "title\tvalue".
   const auto text = [&](int grid, const std::string& block) {
     if (block.empty()) return;

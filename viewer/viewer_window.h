@@ -8,7 +8,7 @@
 
 #include "render/png_image.h"
 #include "render/world_to_pixel.h"
-#include "viewer/overlay_lines.h"
+#include "viewer/overlay_primitives.h"
 
 namespace plywood::viewer {
 
@@ -54,11 +54,11 @@ class ViewerWindow {
   CameraPreset preset() const { return preset_; }
 
   // Builds the frame's 3D scene from `d`; the caller may add geoms to the returned scene (up to its
-  // maxgeom) and lines to overlay_lines() before Finish.
+  // maxgeom) and lines to overlay_primitives() before Finish.
   mjvScene& BeginFrame(mjData* d);
   // Lines drawn over the scene at Finish, depth-tested against it, without lighting; cleared by
   // BeginFrame.
-  OverlayLines& overlay_lines() { return overlay_lines_; }
+  OverlayPrimitives& overlay_primitives() { return overlay_primitives_; }
   // Renders the scene, then `top_left` and `bottom_right` text (tab-separated "title\tvalue" lines,
   // empty: none), then the panel drawn by `panel` (Dear ImGui calls; ignored without Dear ImGui),
   // and shows the frame.
@@ -78,7 +78,7 @@ class ViewerWindow {
   struct Impl;
   std::unique_ptr<Impl> impl_;
   KeyHandler key_handler_;
-  OverlayLines overlay_lines_;
+  OverlayPrimitives overlay_primitives_;
   CameraPreset preset_ = CameraPreset::kTopDown;
   bool capture_ = false;
   render::RgbImage captured_;
