@@ -18,6 +18,7 @@
 #include "sim/runner/run_directory.h"
 #include "sim/sensors/sonar_sensor.h"
 #include "viewer/run_content.h"
+#include "viewer/run_maps_file.h"
 #include "viewer/scene_overlays.h"
 
 #if PLYWOOD_HAS_IMGUI
@@ -85,6 +86,12 @@ RunReplayData LoadRunReplay(const std::filesystem::path& run_dir) {
   }
   if (std::filesystem::exists(run_dir / "sonar.csv") && data.config.sensors.sonar) {
     data.sonar = ReadSonarCsv(run_dir / "sonar.csv", data.config.sensors.sonar->range_max_m);
+  }
+  if (std::filesystem::exists(run_dir / "cognitive_map.json")) {
+    data.map = ReadCognitiveMapFile(run_dir / "cognitive_map.json");
+  }
+  if (std::filesystem::exists(run_dir / "geometric_map.json")) {
+    data.geometric_map = ReadGeometricMapFile(run_dir / "geometric_map.json");
   }
   return data;
 }
@@ -183,6 +190,9 @@ FrameContent ReplayViewer::ContentAt(double t_s) const {
     view.kinds = ClassifyRing(*scene_, X_WR, sonar_height_m_, view.ring);
     content.sonar = std::move(view);
   }
+  // The files hold the final maps only: shown whole at any time.
+  content.map = data_.map;
+  content.geometric_map = data_.geometric_map;
   return content;
 }
 

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "eval/score/trajectory_file.h"
@@ -27,6 +28,9 @@ struct RunReplayData {
   };
   std::vector<Scan> laser;             // from laser.log, when the run wrote it
   std::vector<msgs::RangeRing> sonar;  // from sonar.csv (X_RS filled from the robot model)
+  // The final maps, when the run made them (cognitive_map.json, geometric_map.json).
+  std::optional<MapView> map;
+  std::optional<GeometricMapView> geometric_map;
 
   double start_s() const;
   double end_s() const;
@@ -34,7 +38,8 @@ struct RunReplayData {
 
 // Reads `run_dir`. Refuses a directory that is not a complete single run: config.yaml missing or
 // bad, a multi-run protocol's directory, metrics.json missing (the run did not finish), a missing
-// or bad trajectory.csv; laser.log and sonar.csv are optional, but checked when present.
+// or bad trajectory.csv; laser.log, sonar.csv and the map files are optional, but checked when
+// present.
 // @throws sim::ConfigError naming the file (and line, field).
 RunReplayData LoadRunReplay(const std::filesystem::path& run_dir);
 
