@@ -13,6 +13,8 @@ namespace plywood::apps {
 struct Command {
   CLI::App* cli = nullptr;
   std::function<int()> run;
+  // Runs whatever follows the command's name (a command this build lacks, which only says so).
+  bool takes_any_arguments = false;
 };
 
 // Bad command-line usage found after parsing: one line, exit code 2.

@@ -52,7 +52,7 @@ void CheckFirstArgument(const std::vector<Command>& commands, const std::string&
 // Each command takes only its own flags and positionals: the first stray word is named.
 void RejectExtras(const Command& command) {
   const std::vector<std::string> extras = command.cli->remaining();
-  if (extras.empty()) return;
+  if (extras.empty() || command.takes_any_arguments) return;
   const std::string where = command.cli->get_name() + ": ";
   if (extras.front().starts_with('-')) {
     throw UsageError(where + "unknown option " + extras.front() + SeeHelp(where));

@@ -192,13 +192,16 @@ Command AddViewCommand(CLI::App& app) {
             return flags->bench ? Bench(*flags, config) : Live(*flags, config);
           }};
 #else
-  cli->allow_extras();
-  return {cli, [] {
+  // Whatever follows `view` (an experiment, a run directory, any flag) gets the same one line.
+  cli->prefix_command();
+  return {cli,
+          [] {
             throw UsageError(
                 "view: this build has no viewer (configure with GLFW and OpenGL found and "
                 "-DPLYWOOD_VIEWER=ON)");
             return 2;
-          }};
+          },
+          /*takes_any_arguments=*/true};
 #endif
 }
 
