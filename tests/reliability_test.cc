@@ -153,6 +153,12 @@ TEST_F(ReliabilityTest, SonarExplorerWithoutSonarIsRefused) {
                 {"controller.type", "sensors.sonar"});
 }
 
+TEST_F(ReliabilityTest, LineExtractionWithTheLaserOffIsRefused) {
+  // Used to run with exit 0 and no line metrics at all.
+  ExpectRefused(HallExperiment(0.0, 0.0, "lines: {extractors: [split_and_merge]}\n"), "",
+                {"experiment.yaml", "lines", "sensors.laser"});
+}
+
 TEST_F(ReliabilityTest, GyroEstimatorWithoutTheGyroIsRefused) {
   ExpectRefused(HallExperiment(0.0, 0.0, "odometry: {fused: {}}\n"), "",
                 {"odometry.fused", "sensors.gyro"});

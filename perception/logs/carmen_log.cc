@@ -240,7 +240,8 @@ CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptio
 bool IsFlaserScan(const msgs::LaserScan& scan) { return FlaserCanCarry(scan); }
 
 void WriteCarmenLaser(std::ostream& out, const CarmenLaserRecord& record) {
-  char number[64];
+  // Room for any double in %.3f (DBL_MAX has 309 digits before the point): never truncated.
+  char number[400];
   const auto put = [&](double v, const char* format) {
     std::snprintf(number, sizeof(number), format, v);
     out << ' ' << number;

@@ -84,6 +84,22 @@ TEST(CarmenLogTest, WriteThenReadRoundTrips) {
   EXPECT_DOUBLE_EQ(log.lasers[0].scan.time_s, 3.5);
 }
 
+TEST(CarmenLogTest, HugeCoordinatesAreWrittenWholeNotTruncated) {
+  // A 64-byte buffer cut %.6f of 1e200 to its first 63 digits: a different number, silently.
+  CarmenLaserRecord record;
+  record.scan.ranges_m = {0.5, 1.25, 8.0};
+  record.scan.range_max_m = 8.0;
+  record.X_WL = {1e200, -3e150, 0.25};
+  record.X_WR_odom = {-1e200, 2.0, 0.2};
+  std::ostringstream out;
+  WriteCarmenLaser(out, record);
+  const CarmenLog log = ReadCarmenLog(WriteTemp("huge.log", out.str()));
+  ASSERT_EQ(log.lasers.size(), 1u);
+  EXPECT_DOUBLE_EQ(log.lasers[0].X_WL.x_m, 1e200);
+  EXPECT_DOUBLE_EQ(log.lasers[0].X_WL.y_m, -3e150);
+  EXPECT_DOUBLE_EQ(log.lasers[0].X_WR_odom.x_m, -1e200);
+}
+
 // Issue 18: a scan of fov != 180 deg written as FLASER was read back spread over 180 deg.
 TEST(CarmenLogTest, ANarrowScanRoundTripsWithItsOwnBeamAngles) {
   CarmenLaserRecord record;

@@ -190,15 +190,18 @@ SonarNet SonarNet::FromText(const std::string& text, const std::string& source) 
   }
   {
     auto s = next_line("p_clamp");
-    std::string key;
-    if (!(s >> key >> net.p_clamp) || key != "p_clamp" || !(net.p_clamp > 0.0 && net.p_clamp < 0.5))
+    std::string key, value, extra;
+    const bool read = static_cast<bool>(s >> key >> value) && !(s >> extra);
+    const std::optional<double> p = read ? ParseFiniteNumber(value) : std::nullopt;
+    if (!p || key != "p_clamp" || !(*p > 0.0 && *p < 0.5))
       Fail(source, line_no, "expected 'p_clamp P' with 0 < P < 0.5");
+    net.p_clamp = *p;
   }
   int layers = 0;
   {
     auto s = next_line("layers");
-    std::string key;
-    if (!(s >> key >> layers) || key != "layers" || layers < 1 || layers > 8)
+    std::string key, extra;
+    if (!(s >> key >> layers) || key != "layers" || layers < 1 || layers > 8 || (s >> extra))
       Fail(source, line_no, "expected 'layers N' with 1 <= N <= 8");
   }
   long expected_in = 5;

@@ -83,6 +83,13 @@ TEST(SonarNetTest, CorruptedFilesGiveOneLineErrorsWithLineNumbers) {
   EXPECT_EQ(message(Corrupt(good, 5, "1 2 3")).rfind("w.txt: line 5: expected 6 numbers", 0), 0u);
   EXPECT_EQ(message(Corrupt(good, 5, "1 2 3 4 5 nan")).rfind("w.txt: line 5: 'nan'", 0), 0u);
   EXPECT_EQ(message(Corrupt(good, 4, "layer 4 7")).rfind("w.txt: line 4: layer 0 takes 7", 0), 0u);
+  // Trailing text after the header numbers used to be ignored (p_clamp was read with >>).
+  EXPECT_EQ(message(Corrupt(good, 2, "p_clamp 0.02x")).rfind("w.txt: line 2: expected 'p_clamp", 0),
+            0u);
+  EXPECT_EQ(message(Corrupt(good, 2, "p_clamp 0.02 7")).rfind("w.txt: line 2: expected", 0), 0u);
+  EXPECT_EQ(message(Corrupt(good, 2, "p_clamp inf")).rfind("w.txt: line 2: expected", 0), 0u);
+  EXPECT_EQ(message(Corrupt(good, 3, "layers 2 more")).rfind("w.txt: line 3: expected 'layers", 0),
+            0u);
   EXPECT_EQ(message(good.substr(0, good.size() / 2)).find("w.txt: line"), 0u);
   EXPECT_EQ(message(""), "w.txt: line 1: unexpected end of file, expected header");
   EXPECT_THROW(SonarNet::Load("/nonexistent/weights.txt"), std::runtime_error);

@@ -85,6 +85,10 @@ void RequireControllerSensors(const ExperimentConfig& config) {
     throw ConfigError(config.source_file, "geometric_map",
                       "seed 003's map needs sensors.ir_scanner, which is off");
   }
+  if (config.lines.given && !s.laser) {
+    throw ConfigError(config.source_file, "lines",
+                      "line extraction scores the laser's scans, but sensors.laser is off");
+  }
 }
 
 }  // namespace
