@@ -32,7 +32,7 @@ struct EkfOdometryOptions {
   double encoder_turn_sigma = 0.005;
   // Prior (1 sigma) on the drive's systematic errors left after `odometry.calibration`: the wheel
   // diameter ratio E_d and the track ratio E_b (Borenstein & Feng 1996 measured up to ~1 % and
-  // ~5 % on uncalibrated robots). Both are filter states; 0 pins a ratio at 1.
+  // ~5 % on uncalibrated robots). Both are filter states; 0 pins a ratio at its prior.
   double wheel_diameter_ratio_sigma = 0.001;
   double track_ratio_sigma = 0.005;
   // Prior means of E_d and E_b, relative to `odometry.calibration` (1: the calibration is right).

@@ -171,8 +171,8 @@ TEST(EkfOdometryTest, ACalibratedWheelDiameterPriorSplitsBiasFromEdWithoutStops)
   // Straight at 0.3 m/s, never stopping, right wheels 1 % larger and a 0.005 rad/s gyro bias: the
   // encoders see a steady turn of -(2 v / b)(E_d - 1)/(E_d + 1) = -0.00746 rad/s, the gyro +0.005.
   // Bias acts per second and E_d per metre, so at constant speed nothing but the prior splits the
-  // 0.01246 rad/s disagreement. A prior at the UMBmark value puts it all into the bias; a prior at
-  // 1 puts it all there too, and the heading follows the encoders' false turn.
+  // 0.01246 rad/s disagreement. With E_d held near the UMBmark value the bias state gets the true
+  // bias; held near 1 it gets the whole disagreement, and the heading follows the encoders' turn.
   const double e_d = 1.01, bias = 0.005;
   const double encoder_turn_rate = -(2.0 * 0.3 / 0.4) * (e_d - 1.0) / (e_d + 1.0);
   const auto run = [&](double prior) {
