@@ -52,6 +52,14 @@ void EkfOdometryOptions::Validate() const {
   RequireNonNegative("wheel_slip_sigma", wheel_slip_sigma);
   RequireNonNegative("encoder_turn_sigma", encoder_turn_sigma);
   RequirePositive("zero_velocity_turn_sigma_rad", zero_velocity_turn_sigma_rad);
+  for (const auto& [field, value] :
+       {std::pair{"wheel_diameter_ratio_prior", wheel_diameter_ratio_prior},
+        std::pair{"track_ratio_prior", track_ratio_prior}}) {
+    if (!std::isfinite(value) || value < 0.8 || value > 1.2) {
+      throw std::invalid_argument(std::string(field) + ": must be in [0.8, 1.2], got " +
+                                  msgs::ShortestNumber(value));
+    }
+  }
   // A ratio's prior must leave it well inside (0, 2): the measurement divides by E_d + 1.
   for (const auto& [field, value] :
        {std::pair{"wheel_diameter_ratio_sigma", wheel_diameter_ratio_sigma},
@@ -67,8 +75,8 @@ EkfOdometry::EkfOdometry(const OdometryGeometry& geometry, const EkfOdometryOpti
                          const msgs::Pose2D& X_WR_initial)
     : options_((options.Validate(), options)),
       source_(geometry, options.increments, /*uses_gyro=*/true) {
-  state_ << X_WR_initial.x_m, X_WR_initial.y_m, X_WR_initial.theta_rad, 0.0, 1.0, 1.0,
-      X_WR_initial.theta_rad;
+  state_ << X_WR_initial.x_m, X_WR_initial.y_m, X_WR_initial.theta_rad, 0.0,
+      options_.wheel_diameter_ratio_prior, options_.track_ratio_prior, X_WR_initial.theta_rad;
   covariance_.setZero();
   covariance_(kBias, kBias) = options_.gyro_bias_sigma_rad_s * options_.gyro_bias_sigma_rad_s;
   covariance_(kWheelRatio, kWheelRatio) =

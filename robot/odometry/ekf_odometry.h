@@ -32,9 +32,16 @@ struct EkfOdometryOptions {
   double encoder_turn_sigma = 0.005;
   // Prior (1 sigma) on the drive's systematic errors left after `odometry.calibration`: the wheel
   // diameter ratio E_d and the track ratio E_b (Borenstein & Feng 1996 measured up to ~1 % and
-  // ~5 % on uncalibrated robots). Both are filter states; 0 pins a ratio at 1.
+  // ~5 % on uncalibrated robots). Both are filter states; 0 pins a ratio at its prior.
   double wheel_diameter_ratio_sigma = 0.001;
   double track_ratio_sigma = 0.005;
+  // Prior means of E_d and E_b, relative to `odometry.calibration` (1: the calibration is right).
+  // A UMBmark run of the same robot measures them (umbmark.ed / umbmark.eb) without changing the
+  // geometry the other estimators use. Why they matter: on a run without stops that turns one way
+  // only, bias, E_d and E_b are one unknown and the prior decides how the filter splits it.
+  // In [0.8, 1.2].
+  double wheel_diameter_ratio_prior = 1.0;
+  double track_ratio_prior = 1.0;
   // Zero-velocity update: over an encoder interval in which neither wheel moved by a tick the
   // robot stands still, and its heading change is measured as 0 with this sigma (rad), far
   // tighter than one tick over the track, so stops pin the gyro bias.

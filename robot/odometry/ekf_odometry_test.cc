@@ -167,6 +167,38 @@ TEST(EkfOdometryTest, StopsPinTheBiasSoAStraightRunRecoversTheWheelDiameterRatio
   EXPECT_LT(std::abs(msgs::WrapAngle(ekf.pose().theta_rad - true_theta)), 5e-3);
 }
 
+TEST(EkfOdometryTest, ACalibratedWheelDiameterPriorSplitsBiasFromEdWithoutStops) {
+  // Straight at 0.3 m/s, never stopping, right wheels 1 % larger and a 0.005 rad/s gyro bias: the
+  // encoders see a steady turn of -(2 v / b)(E_d - 1)/(E_d + 1) = -0.00746 rad/s, the gyro +0.005.
+  // Bias acts per second and E_d per metre, so at constant speed nothing but the prior splits the
+  // 0.01246 rad/s disagreement. With E_d held near the UMBmark value the bias state gets the true
+  // bias; held near 1 it gets the whole disagreement, and the heading follows the encoders' turn.
+  const double e_d = 1.01, bias = 0.005;
+  const double encoder_turn_rate = -(2.0 * 0.3 / 0.4) * (e_d - 1.0) / (e_d + 1.0);
+  const auto run = [&](double prior) {
+    EkfOdometry ekf(NominalGeometry(),
+                    {.increments = {},
+                     .gyro_bias_sigma_rad_s = 0.05,
+                     .wheel_diameter_ratio_sigma = 1e-4,
+                     .wheel_diameter_ratio_prior = prior},
+                    {});
+    double true_theta = 0.0;
+    DrivePhases({{60.0, 0.3, 0.0}}, 60.0, bias, 0.0, {.e_d = e_d},
+                [&](const msgs::WheelEncoders& e, const msgs::GyroRate& w, double theta) {
+                  ekf.AddEncoders(e);
+                  ekf.AddGyro(w);
+                  true_theta = theta;
+                });
+    return std::pair{ekf.bias_rad_s(), msgs::WrapAngle(ekf.pose().theta_rad - true_theta)};
+  };
+  const auto [calibrated_bias, calibrated_error] = run(e_d);
+  EXPECT_NEAR(calibrated_bias, bias, 2e-4);
+  EXPECT_LT(std::abs(calibrated_error), 0.01);
+  const auto [uncalibrated_bias, uncalibrated_error] = run(1.0);
+  EXPECT_NEAR(uncalibrated_bias, bias - encoder_turn_rate, 5e-4);
+  EXPECT_NEAR(uncalibrated_error, encoder_turn_rate * 60.0, 0.03);  // -0.45 rad
+}
+
 TEST(EkfOdometryTest, ZeroVelocityUpdateRemovesAKnownBias) {
   // Standing still for 10 s with a 0.01 rad/s bias and no noise: the wheels do not move, so the
   // heading change is zero and the gyro's whole reading is bias. The filter must learn it, keep the

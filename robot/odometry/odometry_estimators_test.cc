@@ -250,6 +250,15 @@ TEST(OdometryEstimatorsTest, OptionsRejectBadValuesNamingTheField) {
             }).rfind("zero_velocity_turn_sigma_rad:", 0),
             0u);
   EXPECT_EQ(
+      message([] {
+        EkfOdometryOptions{.increments = {}, .wheel_diameter_ratio_prior = std::nan("")}.Validate();
+      }).rfind("wheel_diameter_ratio_prior:", 0),
+      0u);
+  EXPECT_EQ(message([] {
+              EkfOdometryOptions{.increments = {}, .track_ratio_prior = 1.5}.Validate();
+            }).rfind("track_ratio_prior:", 0),
+            0u);
+  EXPECT_EQ(
       message([] { OdometryCalibration{.track_ratio = 3}.Validate(); }).rfind("track_ratio:", 0),
       0u);
   EXPECT_EQ(ParseIntegration("arc"), Integration::kArc);

@@ -61,6 +61,8 @@ void VisitFields(A& a, robot::EkfOdometryOptions& o) {
   a("encoder_turn_sigma", o.encoder_turn_sigma);
   a("wheel_diameter_ratio_sigma", o.wheel_diameter_ratio_sigma);
   a("track_ratio_sigma", o.track_ratio_sigma);
+  a("wheel_diameter_ratio_prior", o.wheel_diameter_ratio_prior);
+  a("track_ratio_prior", o.track_ratio_prior);
   a("zero_velocity_turn_sigma_rad", o.zero_velocity_turn_sigma_rad);
 }
 
