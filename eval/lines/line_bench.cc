@@ -6,6 +6,7 @@
 #include <random>
 
 #include "perception/lines/line_extractor_factory.h"
+#include "perception/lines/ray_polygon.h"
 
 namespace plywood::eval {
 msgs::LaserScan LineBenchScan() {
@@ -20,15 +21,7 @@ msgs::LaserScan LineBenchScan() {
   for (int i = 0; i < 361; ++i) {
     const double a = scan.BeamAngleRad(i);
     const Eigen::Vector2d d(std::cos(a), std::sin(a));
-    double best = 8.0;
-    for (std::size_t k = 0; k < corners.size(); ++k) {
-      const Eigen::Vector2d p = corners[k], e = corners[(k + 1) % corners.size()] - p;
-      const double den = d.x() * e.y() - d.y() * e.x();
-      if (std::abs(den) < 1e-12) continue;
-      const double t = (p.x() * e.y() - p.y() * e.x()) / den;
-      const double u = (p.x() * d.y() - p.y() * d.x()) / den;
-      if (t > 0 && u >= 0 && u <= 1) best = std::min(best, t);
-    }
+    const double best = perception::RayToPolygonM(d, corners, 8.0);
     scan.ranges_m.push_back(best + noise(rng));
   }
   return scan;

@@ -145,5 +145,38 @@ TEST(ExtractorDefectsTest, AShortFaceAtACornerKeepsItsOwnPoints) {
   }
 }
 
+TEST(ExtractorDefectsTest, AColumnSeenWholeIsRoundEvenWhenItsFittedArcIsShort) {
+  // A free-standing column of r = 0.1 m 2 m away (its own breakpoint group, about 12 points in two
+  // chords, 1 cm noise): the noise inflates the fitted circle (R 0.12-0.14 m), whose centre moves
+  // back, so the sampled arc on it falls under 100 deg and the two chords stayed as lines. A
+  // multi-line group that one circle explains with every point on it is a round object seen
+  // whole, whatever its fitted arc. A small box seen corner-on beside it (two 0.15 m faces, a
+  // circle fits it only with points trimmed) keeps its faces. (incremental still keeps 4 chords in
+  // 20 scans here: its lines do not cover the group the same way; not fixed yet.)
+  const testing::Disc column{{0.0, 2.0}, 0.1};
+  const Eigen::Vector2d box_centre(2.0, 0.3);
+  std::vector<Eigen::Vector2d> box;
+  for (int k = 0; k < 4; ++k) {
+    const double a = k * kPi / 2.0 + std::atan2(box_centre.y(), box_centre.x());
+    box.push_back(box_centre + 0.106 * Eigen::Vector2d(std::cos(a), std::sin(a)));
+  }
+  std::vector<TruthSegment> box_faces;
+  for (std::size_t k = 0; k < box.size(); ++k) box_faces.push_back({box[k], box[(k + 1) % 4], 6});
+  const std::vector<Eigen::Vector2d> room{{-3.5, -3.0}, {3.5, -3.0}, {3.5, 3.5}, {-3.5, 3.5}};
+  // Box faces found in 20 scans before the change (split_and_merge 30, RANSAC 15): none lost.
+  for (const auto& [name, box_faces_before] :
+       std::vector<std::pair<const char*, int>>{{"split_and_merge", 30}, {"ransac", 15}}) {
+    int column_lines = 0, box_faces_found = 0;
+    for (unsigned seed = 1; seed <= 20; ++seed) {
+      const ScanPoints scan = testing::ScanScene({room, box}, {column}, 0.01, 20.0, seed);
+      const std::vector<LineSegment> lines = MakeLineExtractor(name)->Extract(scan);
+      column_lines += LinesNear(lines, column.centre, column.radius_m + 0.05);
+      for (const LineSegment& s : lines) box_faces_found += MatchSegment(s, box_faces, {}) >= 0;
+    }
+    EXPECT_EQ(column_lines, 0) << name;  // 5 of 20 scans kept a chord before
+    EXPECT_GE(box_faces_found, box_faces_before) << name;
+  }
+}
+
 }  // namespace
 }  // namespace plywood::perception

@@ -9,6 +9,7 @@
 #include "perception/lines/line_extractor_factory.h"
 #include "perception/lines/line_scoring.h"
 #include "perception/lines/ray_explanation.h"
+#include "perception/lines/ray_polygon.h"
 #include "perception/lines/tls_line_fit.h"
 
 namespace plywood::perception {
@@ -28,16 +29,7 @@ ScanPoints ScanPolygon(const std::vector<Eigen::Vector2d>& corners, int beams = 
   for (int i = 0; i < beams; ++i) {
     const double a = scan.BeamAngleRad(i);
     const Eigen::Vector2d d(std::cos(a), std::sin(a));
-    double best = 20.0;
-    for (std::size_t k = 0; k < corners.size(); ++k) {
-      const Eigen::Vector2d p = corners[k], q = corners[(k + 1) % corners.size()];
-      const Eigen::Vector2d e = q - p;
-      const double den = d.x() * e.y() - d.y() * e.x();
-      if (std::abs(den) < 1e-12) continue;
-      const double t = (p.x() * e.y() - p.y() * e.x()) / den;
-      const double u = (p.x() * d.y() - p.y() * d.x()) / den;
-      if (t > 0 && u >= 0 && u <= 1) best = std::min(best, t);
-    }
+    const double best = RayToPolygonM(d, corners, 20.0);
     scan.ranges_m.push_back(best + (noise_m > 0 ? noise(rng) : 0.0));
   }
   if (outlier_beam >= 0) scan.ranges_m[outlier_beam] += outlier_m;

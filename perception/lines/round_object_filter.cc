@@ -28,6 +28,8 @@ constexpr double kMinChordBulgeSigmas = 1.5;
 bool IsRoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
                 const RoundObjectOptions& options, const std::vector<std::vector<int>>& lines,
                 int first, int last) {
+  // Both ends of the run are breaks: the object is seen whole, its own silhouette.
+  const bool whole_group = first == 0 && last == static_cast<int>(lines.size()) - 1;
   std::vector<int> run;
   for (int k = first; k <= last; ++k) run.insert(run.end(), lines[k].begin(), lines[k].end());
   const int total = static_cast<int>(run.size());
@@ -92,7 +94,13 @@ bool IsRoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
   for (std::size_t k = 1; k < angles.size(); ++k) {
     largest_gap = std::max(largest_gap, angles[k] - angles[k - 1]);
   }
-  if ((2.0 * M_PI - largest_gap) * 180.0 / M_PI < options.min_round_arc_deg) return false;
+  // A small column seen whole can show less: noise inflates the fitted circle (a r = 0.1 m
+  // column 2 m away, 12 points, fits R 0.12-0.14 m) and moves its centre back, so the samples
+  // cover 60-100 deg of it. Such a whole group of >= 2 lines is round when every point lies on
+  // the circle; a single line (one more parameter buys a flat box face a circle too often) or a
+  // circle that needed trimming (a small box seen corner-on) still needs the full arc.
+  const bool short_arc = (2.0 * M_PI - largest_gap) * 180.0 / M_PI < options.min_round_arc_deg;
+  if (short_arc && (!whole_group || chord || static_cast<int>(kept.size()) < total)) return false;
 
   // The run's lines refitted to the kept points.
   const int line_count = last - first + 1;

@@ -22,6 +22,8 @@ namespace plywood::perception {
 //       variance over degrees of freedom, the lines refitted to the same points; or
 //   (b) at the noise level (RMS <= 1.5 sigma) with the lines' gain within what their extra
 //       parameters buy from noise (3 sigma^2 each): few points let two chords fit the noise.
+// A run that is the whole group (>= 2 lines, both ends breaks: an object seen whole) needs no
+// min_round_arc_deg when no point had to be trimmed: noise shrinks a small column's fitted arc.
 // Noise-free polygons keep their edges (their lines fit exactly, a circle cannot). A single line
 // is dropped only when it is its whole breakpoint group (a thin column's one chord), with >= 5
 // points and a bulge of >= 1.5 sigma; it costs the real CARMEN logs ~0.01 of explained rays

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "msgs/laser_scan.h"
+#include "perception/lines/ray_polygon.h"
 #include "perception/lines/scan_points.h"
 
 namespace plywood::perception::testing {
@@ -36,16 +37,7 @@ inline ScanPoints ScanScene(const std::vector<std::vector<Eigen::Vector2d>>& pol
     const double a = scan.BeamAngleRad(i);
     const Eigen::Vector2d d(std::cos(a), std::sin(a));
     double best = range_max_m;
-    for (const auto& corners : polygons) {
-      for (std::size_t k = 0; k < corners.size(); ++k) {
-        const Eigen::Vector2d p = corners[k], e = corners[(k + 1) % corners.size()] - p;
-        const double den = d.x() * e.y() - d.y() * e.x();
-        if (std::abs(den) < 1e-12) continue;
-        const double t = (p.x() * e.y() - p.y() * e.x()) / den;
-        const double u = (p.x() * d.y() - p.y() * d.x()) / den;
-        if (t > 0 && u >= 0 && u <= 1) best = std::min(best, t);
-      }
-    }
+    for (const auto& corners : polygons) best = RayToPolygonM(d, corners, best);
     for (const Disc& disc : discs) {
       const double along = disc.centre.dot(d);
       const double off_sq = disc.centre.squaredNorm() - along * along;
