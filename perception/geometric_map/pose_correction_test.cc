@@ -24,9 +24,7 @@ std::vector<test::Wall> Room() {
 // of x per scan. Exact scans: the corrected heading stays within 0.05 deg of the truth and the
 // position within 3 cm (2 cm histogram bins), while the odometry ends 11.6 deg and 0.29 m off.
 TEST(PoseCorrectionTest, HistogramsRemoveOdometryDrift) {
-  PoseCorrectionOptions both;
-  both.position = true;  // off by default (docs/geometric_map.md), exercised here
-  HistogramPoseCorrector corrector({}, both);
+  HistogramPoseCorrector corrector({}, {});  // heading and position
   FusionOptions ir_only;
   ir_only.source = RangeSource::kIrOnly;
   const int scans = 30;
@@ -44,6 +42,24 @@ TEST(PoseCorrectionTest, HistogramsRemoveOdometryDrift) {
         << "scan " << k;
     EXPECT_LT(std::hypot(corrected.x_m - truth.x_m, corrected.y_m - truth.y_m), 0.03)
         << "scan " << k;
+  }
+}
+
+// Along a corridor with no wall across it within the scanner's reach, exact odometry stays
+// exact: the points of the side walls, denser behind the robot where earlier scans saw them, do
+// not vote on the shift along the corridor (they pulled it back by up to max_shift_m a scan).
+TEST(PoseCorrectionTest, CorridorSideWallsDoNotPullThePositionBack) {
+  HistogramPoseCorrector corrector({}, {});
+  FusionOptions ir_only;
+  ir_only.source = RangeSource::kIrOnly;
+  const std::vector<test::Wall> corridor = {{{-20, -1}, {20, -1}}, {{20, 1}, {-20, 1}}};
+  for (int k = 0; k < 30; ++k) {
+    const msgs::Pose2D truth{0.15 * k, 0.5, 0.0};  // 0.5 m from a wall: dense points near it
+    const std::vector<RangePoint> points =
+        FuseRanges(test::SyntheticScan(corridor, truth, 720, 3.0), nullptr, ir_only);
+    const msgs::Pose2D corrected = corrector.Correct(truth, points);
+    EXPECT_NEAR(corrected.x_m, truth.x_m, 1e-9) << "scan " << k;
+    EXPECT_NEAR(corrected.y_m, truth.y_m, 0.01) << "scan " << k;
   }
 }
 
