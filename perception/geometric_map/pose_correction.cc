@@ -1,5 +1,6 @@
 #include "perception/geometric_map/pose_correction.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -12,6 +13,8 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kDegToRad = kPi / 180.0;
+// Beyond 45 deg the map's walls, square to each other, look alike.
+constexpr double kMaxHeadingWindowRad = kPi / 4.0;
 
 Eigen::Vector2d ToWorld(const msgs::Pose2D& X_WR, const Eigen::Vector2d& p_R) {
   const double c = std::cos(X_WR.theta_rad), s = std::sin(X_WR.theta_rad);
@@ -66,12 +69,11 @@ HistogramPoseCorrector::HistogramPoseCorrector(const HistogramOptions& histogram
 
 double HistogramPoseCorrector::HeadingCorrection(std::span<const RangePoint> points_R,
                                                  std::span<const LineSegment> lines_R,
-                                                 double heading_rad) const {
+                                                 double heading_rad, double window_rad) const {
   const AngleHistogram scan = MakeAngleHistogram(points_R, histogram_options_, heading_rad);
   const int bins = static_cast<int>(scan.votes.size());
   const double bin_rad = kPi / bins;
-  const int window =
-      static_cast<int>(std::ceil(options_.max_heading_step_deg * kDegToRad / bin_rad));
+  const int window = static_cast<int>(std::ceil(window_rad / bin_rad));
   const auto correlation = [&](int k) {
     double sum = 0.0;
     for (int b = 0; b < bins; ++b)
@@ -138,8 +140,13 @@ msgs::Pose2D HistogramPoseCorrector::Correct(const msgs::Pose2D& X_OR,
   const AngleHistogram predicted = MakeAngleHistogram(points_R, histogram_options_, X_WR.theta_rad);
   if (predicted.TotalVotes() < options_.min_virtual_lines) return X_WR;
   if (has_reference_ && options_.heading) {
-    X_WR.theta_rad =
-        msgs::WrapAngle(X_WR.theta_rad + HeadingCorrection(points_R, lines_R, X_WR.theta_rad));
+    // The odometry's heading error since the last scan is at most what it turned (a wheel
+    // spinning against a wall turns it 20 deg in half a second while the robot stands still).
+    const double turned = std::abs(msgs::WrapAngle(X_OR.theta_rad - last_odometry_theta_rad_));
+    const double window =
+        std::min(options_.max_heading_step_deg * kDegToRad + turned, kMaxHeadingWindowRad);
+    X_WR.theta_rad = msgs::WrapAngle(X_WR.theta_rad +
+                                     HeadingCorrection(points_R, lines_R, X_WR.theta_rad, window));
   }
   // The first scan sets the map's main direction (its heading is the map frame's).
   if (!has_reference_) {
@@ -199,6 +206,7 @@ msgs::Pose2D HistogramPoseCorrector::Correct(const msgs::Pose2D& X_OR,
     recent_points_W_.pop_front();
   }
   X_WO_ = X_WR * X_OR.Inverse();
+  last_odometry_theta_rad_ = X_OR.theta_rad;
   return X_WR;
 }
 

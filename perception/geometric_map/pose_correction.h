@@ -15,8 +15,9 @@ namespace plywood::perception {
 // This one correlates, as the paper suggests:
 //  - heading: the scan's angle histogram, voted in the map frame at the predicted heading, is
 //    cross-correlated with the map's angle histogram (the sum over all corrected scans, which does
-//    not depend on where the robot is); the best shift within +-max_heading_step_deg corrects the
-//    heading, then the points-weighted mean direction of the scan's fitted lines within
+//    not depend on where the robot is); the best shift within +-(max_heading_step_deg + the
+//    odometry's turn since the last scan, at most 45 deg) corrects the heading, then the
+//    points-weighted mean direction of the scan's fitted lines within
 //    refine_window_deg of the map's main direction or square to it refines it below the bin size
 //    (the virtual lines are too short for that: 5 mm noise tilts a 14 cm one by 3 deg);
 //  - position: in the map's main frame (the first scan's alpha_max), the scan's X and Y distance
@@ -63,7 +64,8 @@ class HistogramPoseCorrector {
 
  private:
   double HeadingCorrection(std::span<const RangePoint> points_R,
-                           std::span<const LineSegment> lines_R, double heading_rad) const;
+                           std::span<const LineSegment> lines_R, double heading_rad,
+                           double window_rad) const;
   // A point of a wall across axis 0 (the map's main direction) or axis 1 (square to it).
   struct AxisPoint {
     Eigen::Vector2d p_W;
@@ -80,6 +82,7 @@ class HistogramPoseCorrector {
   std::vector<double> map_angle_votes_;
   bool has_reference_ = false;
   double map_alpha_rad_ = 0.0;
+  double last_odometry_theta_rad_ = 0.0;  // of the last scan that joined the reference
   std::deque<std::vector<AxisPoint>> recent_points_W_;
 };
 
