@@ -105,21 +105,32 @@ bool AddGeometricMapMetrics(sim::ExperimentRunner& runner, GeometricMapRun* run)
   *run = BuildGeometricMap(record, config);
   const sim::GroundTruthWalls& walls = record.walls;
 
-  // Faces the IR scanner observed: the most beams that hit each in one scan.
-  std::vector<perception::TruthSegment> truth(walls.segments.size());
-  std::map<int, int> geom_hits;  // most beams on each geom in one scan
-  for (std::size_t k = 0; k < walls.segments.size(); ++k) {
-    truth[k].a = walls.segments[k].a;
-    truth[k].b = walls.segments[k].b;
+  // Wall surfaces the IR scanner observed. Hit by min_observed_rays beams in one scan is the
+  // line-extraction issue's rule; the map, by its own definition, can only show a surface hit by
+  // min_line_points beams (a line of one scan) in min_observations scans (a confirmed segment):
+  // recall counts those, recall_single_scan the former.
+  const int line_rays =
+      std::max(config.scoring.min_observed_rays, config.options.segmentation.min_line_points);
+  run->faces = JoinCollinearFaces(walls.segments, config.options.segmentation.dist_max_m);
+  std::vector<int> face_of(walls.segments.size());
+  std::vector<int> line_scans(run->faces.size(), 0);  // scans with line_rays beams on the face
+  std::vector<perception::TruthSegment> truth(run->faces.size());
+  for (std::size_t f = 0; f < run->faces.size(); ++f) {
+    truth[f].a = run->faces[f].a;
+    truth[f].b = run->faces[f].b;
+    for (int k : run->faces[f].members) face_of[k] = static_cast<int>(f);
   }
+  std::map<int, int> geom_hits;  // most beams on each geom in one scan
   for (const sim::LaserRecord& ir : record.ir_scanner) {
     std::map<int, int> face_count, geom_count;
     for (std::size_t i = 0; i < ir.hit_segment_ids.size(); ++i) {
-      if (ir.hit_segment_ids[i] >= 0) ++face_count[ir.hit_segment_ids[i]];
+      if (ir.hit_segment_ids[i] >= 0) ++face_count[face_of[ir.hit_segment_ids[i]]];
       if (ir.hit_geom_ids[i] >= 0) ++geom_count[ir.hit_geom_ids[i]];
     }
-    for (const auto& [k, n] : face_count)
-      truth[k].observed_rays = std::max(truth[k].observed_rays, n);
+    for (const auto& [f, n] : face_count) {
+      truth[f].observed_rays = std::max(truth[f].observed_rays, n);
+      line_scans[f] += n >= line_rays;
+    }
     for (const auto& [g, n] : geom_count) geom_hits[g] = std::max(geom_hits[g], n);
   }
   std::vector<perception::LineSegment> real;  // confirmed real segments: what the map claims
@@ -140,39 +151,58 @@ bool AddGeometricMapMetrics(sim::ExperimentRunner& runner, GeometricMapRun* run)
   }
   // The line-matching rule of line_scoring.h, applied in a frame centred on each map segment's
   // midpoint: the rule compares normal forms, whose r in the world frame would turn a 0.1 deg
-  // tilt into centimetres 7 m from the origin and confuse the two faces of a partition.
+  // tilt into centimetres 7 m from the origin. A surface is seen only from its outside, and the
+  // two faces of an 18 mm partition lie within the rule's 5 cm of each other: only surfaces
+  // facing the segment's observer (on its left) are candidates.
   std::vector<char> face_matched(truth.size(), 0);
   long matched_segments = 0;
   double endpoint_error = 0.0, sum_d_alpha_sq = 0.0;
   for (const auto& segment : real) {
     const Eigen::Vector2d centre = 0.5 * (segment.start + segment.end);
+    const Eigen::Vector2d d = segment.end - segment.start;
+    const Eigen::Vector2d observer_side(-d.y(), d.x());
     perception::LineSegment local = segment;
     local.start -= centre;
     local.end -= centre;
-    const Eigen::Vector2d d = (local.end - local.start).normalized();
     perception::CanonicalNormalForm(std::atan2(-d.x(), d.y()), 0.0, &local.alpha_rad, &local.r_m);
-    std::vector<perception::TruthSegment> truth_local = truth;
-    for (auto& t : truth_local) {
+    std::vector<perception::TruthSegment> facing;
+    std::vector<int> facing_index;
+    for (std::size_t k = 0; k < truth.size(); ++k) {
+      const Eigen::Vector2d f = truth[k].b - truth[k].a;
+      if (Eigen::Vector2d(f.y(), -f.x()).dot(observer_side) <= 0.0) continue;
+      perception::TruthSegment t = truth[k];
       t.a -= centre;
       t.b -= centre;
+      facing.push_back(t);
+      facing_index.push_back(static_cast<int>(k));
     }
     double d_alpha = 0.0;
-    const int k = perception::MatchSegment(local, truth_local, config.scoring, &d_alpha);
-    if (k < 0) continue;
+    const int match = perception::MatchSegment(local, facing, config.scoring, &d_alpha);
+    if (match < 0) continue;
+    const int k = facing_index[match];
     ++matched_segments;
     face_matched[k] = 1;
     sum_d_alpha_sq += d_alpha * d_alpha;
     endpoint_error += SegmentDistance(segment.start, truth[k].a, truth[k].b) +
                       SegmentDistance(segment.end, truth[k].a, truth[k].b);
-    const int geom = walls.segments[k].geom_id;
-    if (invisible_mapped.count(geom)) invisible_mapped[geom] = true;
+    for (int member : run->faces[k].members) {
+      const int geom = walls.segments[member].geom_id;
+      if (invisible_mapped.count(geom)) invisible_mapped[geom] = true;
+    }
   }
-  long observable = 0, observable_matched = 0;
+  long observable = 0, observable_matched = 0, glimpsed = 0, glimpsed_matched = 0;
+  run->face_observed_rays.clear();
   for (std::size_t k = 0; k < truth.size(); ++k) {
+    run->face_observed_rays.push_back(truth[k].observed_rays);
     if (truth[k].observed_rays < config.scoring.min_observed_rays) continue;
+    ++glimpsed;
+    glimpsed_matched += face_matched[k];
+    if (line_scans[k] < config.options.aggregation.min_observations) continue;
     ++observable;
     observable_matched += face_matched[k];
   }
+  run->face_line_scans = line_scans;
+  run->face_matched = face_matched;
   long panels_mapped = 0;
   for (const auto& [geom, mapped] : invisible_mapped) panels_mapped += mapped;
 
@@ -204,6 +234,9 @@ bool AddGeometricMapMetrics(sim::ExperimentRunner& runner, GeometricMapRun* run)
   m.Set(key + "clusters", static_cast<double>(run->map.clusters().size()));
   m.Set(key + "observed_walls", static_cast<double>(observable));
   m.Set(key + "recall", observable ? static_cast<double>(observable_matched) / observable : 1.0);
+  m.Set(key + "glimpsed_walls", static_cast<double>(glimpsed));
+  m.Set(key + "recall_single_scan",
+        glimpsed ? static_cast<double>(glimpsed_matched) / glimpsed : 1.0);
   m.Set(key + "precision",
         real.empty() ? 1.0 : static_cast<double>(matched_segments) / real.size());
   m.Set(key + "orientation_error_deg",
@@ -240,7 +273,19 @@ void WriteGeometricMapJson(const GeometricMapRun& run, const std::string& out_di
   }
   Json poses = Json::array();
   for (const auto& p : run.corrected) poses.push_back(Json::array({p.x_m, p.y_m, p.theta_rad}));
+  // The wall surfaces the IR scanner hit (joined faces, walls.csv's segments), matched or not.
+  Json faces = Json::array();
+  for (std::size_t k = 0; k < run.face_observed_rays.size(); ++k) {
+    if (run.face_observed_rays[k] == 0) continue;
+    faces.push_back({{"a", point(run.faces[k].a)},
+                     {"b", point(run.faces[k].b)},
+                     {"walls_csv_segments", run.faces[k].members},
+                     {"observed_rays", run.face_observed_rays[k]},
+                     {"line_scans", run.face_line_scans[k]},
+                     {"matched", run.face_matched[k] != 0}});
+  }
   json["segments"] = segments;
+  json["faces"] = faces;
   json["clusters"] = clusters;
   json["corrected_poses"] = poses;
   std::filesystem::create_directories(out_dir);

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "eval/geometric_map/joined_faces.h"
 #include "msgs/pose2d.h"
 #include "perception/geometric_map/geometric_mapper.h"
 #include "sim/config/geometric_map_config.h"
@@ -17,6 +18,13 @@ struct GeometricMapRun {
   long points_seen = 0;
   long sonar_points = 0;                                 // points whose range came from the sonar
   std::vector<msgs::Pose2D> truth, odometry, corrected;  // per IR scan
+  // The scored wall surfaces (joined_faces.h), filled by AddGeometricMapMetrics: the most IR beams
+  // that hit each in one scan, the scans whose beams on it were enough for a line, and whether a
+  // confirmed real segment matched it.
+  std::vector<JoinedFace> faces;
+  std::vector<int> face_observed_rays;
+  std::vector<int> face_line_scans;
+  std::vector<char> face_matched;
 };
 
 // Feeds every IR scan of `record` (with the sonar ring nearest in time, if within
@@ -27,8 +35,12 @@ GeometricMapRun BuildGeometricMap(const sim::RunRecord& record,
 // When the experiment has a geometric_map: section: builds the map and adds geometric_map.*
 // metrics (docs/geometric_map.md) to the run's record; returns false (nothing done) otherwise.
 // Walls are scored with the line-matching rule of perception/lines/line_scoring.h, in the map
-// (world) frame, against the faces the IR scanner observed (hit by at least
-// scoring.min_observed_rays beams in one scan, at the true pose).
+// (world) frame, against the wall surfaces (collinear faces joined across gaps the segmentation
+// does not break at, joined_faces.h) the IR scanner observed at the true pose: recall counts
+// those hit by max(scoring.min_observed_rays, segmentation.min_line_points) beams in each of
+// aggregation.min_observations scans (what a confirmed segment needs), recall_single_scan those
+// hit by scoring.min_observed_rays beams in one scan. A segment, directed with its observer on
+// the left, is matched only with surfaces facing that observer.
 // @throws sim::ConfigError when the section is given but sensors.ir_scanner is off.
 bool AddGeometricMapMetrics(sim::ExperimentRunner& runner, GeometricMapRun* run);
 

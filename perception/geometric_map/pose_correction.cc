@@ -1,5 +1,6 @@
 #include "perception/geometric_map/pose_correction.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -12,6 +13,8 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kDegToRad = kPi / 180.0;
+// Beyond 45 deg the map's walls, square to each other, look alike.
+constexpr double kMaxHeadingWindowRad = kPi / 4.0;
 
 Eigen::Vector2d ToWorld(const msgs::Pose2D& X_WR, const Eigen::Vector2d& p_R) {
   const double c = std::cos(X_WR.theta_rad), s = std::sin(X_WR.theta_rad);
@@ -66,12 +69,11 @@ HistogramPoseCorrector::HistogramPoseCorrector(const HistogramOptions& histogram
 
 double HistogramPoseCorrector::HeadingCorrection(std::span<const RangePoint> points_R,
                                                  std::span<const LineSegment> lines_R,
-                                                 double heading_rad) const {
+                                                 double heading_rad, double window_rad) const {
   const AngleHistogram scan = MakeAngleHistogram(points_R, histogram_options_, heading_rad);
   const int bins = static_cast<int>(scan.votes.size());
   const double bin_rad = kPi / bins;
-  const int window =
-      static_cast<int>(std::ceil(options_.max_heading_step_deg * kDegToRad / bin_rad));
+  const int window = static_cast<int>(std::ceil(window_rad / bin_rad));
   const auto correlation = [&](int k) {
     double sum = 0.0;
     for (int b = 0; b < bins; ++b)
@@ -94,8 +96,9 @@ double HistogramPoseCorrector::HeadingCorrection(std::span<const RangePoint> poi
   return delta;
 }
 
-bool HistogramPoseCorrector::AxisShift(const std::vector<double>& scan, const Eigen::Vector2d& axis,
-                                       const Eigen::Vector2d& robot_W, double* shift_m) const {
+bool HistogramPoseCorrector::AxisShift(const std::vector<double>& scan, int axis_index,
+                                       const Eigen::Vector2d& axis, const Eigen::Vector2d& robot_W,
+                                       double* shift_m) const {
   const double bin = options_.position_bin_m;
   const auto bin_of = [&](double c) { return static_cast<long>(std::floor(c / bin)); };
   std::map<long, double> scan_votes, reference_votes;
@@ -111,8 +114,10 @@ bool HistogramPoseCorrector::AxisShift(const std::vector<double>& scan, const Ei
   if (strongest < options_.min_peak_votes) return false;
   const double reach = options_.max_shift_m + 10.0;
   for (const auto& points : recent_points_W_) {
-    for (const Eigen::Vector2d& p : points) {
-      if ((p - robot_W).squaredNorm() < reach * reach) reference_votes[bin_of(p.dot(axis))] += 1.0;
+    for (const AxisPoint& p : points) {
+      if (p.axis == axis_index && (p.p_W - robot_W).squaredNorm() < reach * reach) {
+        reference_votes[bin_of(p.p_W.dot(axis))] += 1.0;
+      }
     }
   }
   const int window = static_cast<int>(std::ceil(options_.max_shift_m / bin));
@@ -135,31 +140,19 @@ msgs::Pose2D HistogramPoseCorrector::Correct(const msgs::Pose2D& X_OR,
   const AngleHistogram predicted = MakeAngleHistogram(points_R, histogram_options_, X_WR.theta_rad);
   if (predicted.TotalVotes() < options_.min_virtual_lines) return X_WR;
   if (has_reference_ && options_.heading) {
-    X_WR.theta_rad =
-        msgs::WrapAngle(X_WR.theta_rad + HeadingCorrection(points_R, lines_R, X_WR.theta_rad));
+    // The odometry's heading error since the last scan is at most what it turned (a wheel
+    // spinning against a wall turns it 20 deg in half a second while the robot stands still).
+    const double turned = std::abs(msgs::WrapAngle(X_OR.theta_rad - last_odometry_theta_rad_));
+    const double window =
+        std::min(options_.max_heading_step_deg * kDegToRad + turned, kMaxHeadingWindowRad);
+    X_WR.theta_rad = msgs::WrapAngle(X_WR.theta_rad +
+                                     HeadingCorrection(points_R, lines_R, X_WR.theta_rad, window));
   }
-  std::vector<Eigen::Vector2d> points_W;
-  for (const RangePoint& p : points_R) points_W.push_back(ToWorld(X_WR, p.p_R));
-  if (has_reference_ && options_.position) {
-    const Eigen::Vector2d u(std::cos(map_alpha_rad_), std::sin(map_alpha_rad_)), v(-u.y(), u.x());
-    const Eigen::Vector2d robot_W(X_WR.x_m, X_WR.y_m);
-    Eigen::Vector2d move = Eigen::Vector2d::Zero();
-    for (const Eigen::Vector2d& axis : {u, v}) {
-      std::vector<double> coordinates;
-      for (const Eigen::Vector2d& p : points_W) coordinates.push_back(p.dot(axis));
-      double shift = 0.0;
-      if (AxisShift(coordinates, axis, robot_W, &shift)) move += shift * axis;
-    }
-    X_WR.x_m += move.x();
-    X_WR.y_m += move.y();
-    for (Eigen::Vector2d& p : points_W) p += move;
-  }
-  // The corrected scan joins the reference.
-  const AngleHistogram corrected = MakeAngleHistogram(points_R, histogram_options_, X_WR.theta_rad);
+  // The first scan sets the map's main direction (its heading is the map frame's).
   if (!has_reference_) {
-    map_angle_votes_.assign(corrected.votes.size(), 0.0);
+    map_angle_votes_.assign(predicted.votes.size(), 0.0);
     // alpha_max, refined on the fitted lines as the heading is (HeadingCorrection).
-    map_alpha_rad_ = corrected.MainDirectionRad();
+    map_alpha_rad_ = predicted.MainDirectionRad();
     double weighted = 0.0, weight = 0.0;
     for (const LineSegment& line : lines_R) {
       const Eigen::Vector2d d = line.end - line.start;
@@ -170,8 +163,42 @@ msgs::Pose2D HistogramPoseCorrector::Correct(const msgs::Pose2D& X_OR,
       weight += line.num_points;
     }
     if (weight >= options_.min_peak_votes) map_alpha_rad_ += weighted / weight;
-    has_reference_ = true;
   }
+  // The points on walls across each axis of the map's main frame (their virtual line square to
+  // it): a wall along the axis has no distance there, and its points, denser on the side already
+  // seen, would pull the shift back along the robot's path.
+  const Eigen::Vector2d u(std::cos(map_alpha_rad_), std::sin(map_alpha_rad_)), v(-u.y(), u.x());
+  std::vector<AxisPoint> points_W;
+  const double max_tilt = histogram_options_.max_wall_tilt_deg * kDegToRad;
+  for (const VirtualLine& line : MakeVirtualLines(points_R, histogram_options_)) {
+    const double direction = line.direction_rad + X_WR.theta_rad;
+    for (int axis = 0; axis < 2; ++axis) {
+      // Square to u (axis 0) is along v, at map_alpha + pi/2.
+      const double across = map_alpha_rad_ + (axis == 0 ? kPi / 2.0 : 0.0);
+      if (std::abs(std::remainder(direction - across, kPi)) <= max_tilt) {
+        points_W.push_back({ToWorld(X_WR, points_R[line.first].p_R), axis});
+      }
+    }
+  }
+  if (has_reference_ && options_.position) {
+    const Eigen::Vector2d robot_W(X_WR.x_m, X_WR.y_m);
+    Eigen::Vector2d move = Eigen::Vector2d::Zero();
+    for (int axis = 0; axis < 2; ++axis) {
+      const Eigen::Vector2d& direction = axis == 0 ? u : v;
+      std::vector<double> coordinates;
+      for (const AxisPoint& p : points_W) {
+        if (p.axis == axis) coordinates.push_back(p.p_W.dot(direction));
+      }
+      double shift = 0.0;
+      if (AxisShift(coordinates, axis, direction, robot_W, &shift)) move += shift * direction;
+    }
+    X_WR.x_m += move.x();
+    X_WR.y_m += move.y();
+    for (AxisPoint& p : points_W) p.p_W += move;
+  }
+  // The corrected scan joins the reference.
+  has_reference_ = true;
+  const AngleHistogram corrected = MakeAngleHistogram(points_R, histogram_options_, X_WR.theta_rad);
   for (std::size_t b = 0; b < corrected.votes.size(); ++b)
     map_angle_votes_[b] += corrected.votes[b];
   recent_points_W_.push_back(std::move(points_W));
@@ -179,6 +206,7 @@ msgs::Pose2D HistogramPoseCorrector::Correct(const msgs::Pose2D& X_OR,
     recent_points_W_.pop_front();
   }
   X_WO_ = X_WR * X_OR.Inverse();
+  last_odometry_theta_rad_ = X_OR.theta_rad;
   return X_WR;
 }
 

@@ -15,15 +15,19 @@ namespace plywood::perception {
 // This one correlates, as the paper suggests:
 //  - heading: the scan's angle histogram, voted in the map frame at the predicted heading, is
 //    cross-correlated with the map's angle histogram (the sum over all corrected scans, which does
-//    not depend on where the robot is); the best shift within +-max_heading_step_deg corrects the
-//    heading, then the points-weighted mean direction of the scan's fitted lines within
+//    not depend on where the robot is); the best shift within +-(max_heading_step_deg + the
+//    odometry's turn since the last scan, at most 45 deg) corrects the heading, then the
+//    points-weighted mean direction of the scan's fitted lines within
 //    refine_window_deg of the map's main direction or square to it refines it below the bin size
 //    (the virtual lines are too short for that: 5 mm noise tilts a 14 cm one by 3 deg);
 //  - position: in the map's main frame (the first scan's alpha_max), the scan's X and Y distance
-//    histograms (bins of histograms.distance_bin_m) are cross-correlated with those of the last
-//    reference_scans corrected scans within reach; the best shift within +-max_shift_m corrects
-//    x and y (bins of position_bin_m). An axis whose scan histogram has no bin with min_peak_votes
-//    points (no wall across it, e.g. along a corridor) is left alone.
+//    histograms are cross-correlated with those of the last reference_scans corrected scans within
+//    reach; the best shift within +-max_shift_m corrects x and y (bins of position_bin_m). As in
+//    the paper's distance histograms, a point votes on an axis only when its virtual line is within
+//    histograms.max_wall_tilt_deg of square to it: the points of a wall along the axis, denser
+//    behind the robot where earlier scans saw it, would otherwise pull every shift back along the
+//    path. An axis whose scan histogram has no three neighbouring bins with min_peak_votes points
+//    (no wall across it, e.g. along a corridor) is left alone.
 // The correction is kept as a transform X_WO from the odometry frame to the map frame, so the
 // odometry keeps integrating undisturbed. The heading is anchored to the whole map, so its error
 // stays bounded by the histogram resolution; the position is anchored to recent scans only, so
@@ -31,9 +35,8 @@ namespace plywood::perception {
 // not corrected (and not used as reference).
 struct PoseCorrectionOptions {
   bool heading = true;
-  // Off by default: over the office and generated rooms it made the map worse (its 2 cm bins and
-  // corridors without a wall across let it wander; docs/geometric_map.md).
-  bool position = false;
+  // Helps over the office and the generated rooms (docs/geometric_map.md, "Pose correction").
+  bool position = true;
   double max_heading_step_deg = 3.0;
   double refine_window_deg = 2.0;
   double max_shift_m = 0.1;
@@ -61,9 +64,16 @@ class HistogramPoseCorrector {
 
  private:
   double HeadingCorrection(std::span<const RangePoint> points_R,
-                           std::span<const LineSegment> lines_R, double heading_rad) const;
-  // Shift (m) that best aligns `scan` coordinates with the reference's along axis `axis`.
-  bool AxisShift(const std::vector<double>& scan, const Eigen::Vector2d& axis,
+                           std::span<const LineSegment> lines_R, double heading_rad,
+                           double window_rad) const;
+  // A point of a wall across axis 0 (the map's main direction) or axis 1 (square to it).
+  struct AxisPoint {
+    Eigen::Vector2d p_W;
+    int axis = 0;
+  };
+  // Shift (m) that best aligns `scan` coordinates along `axis` (number axis_index) with the
+  // reference's.
+  bool AxisShift(const std::vector<double>& scan, int axis_index, const Eigen::Vector2d& axis,
                  const Eigen::Vector2d& robot_W, double* shift_m) const;
 
   HistogramOptions histogram_options_;
@@ -72,7 +82,8 @@ class HistogramPoseCorrector {
   std::vector<double> map_angle_votes_;
   bool has_reference_ = false;
   double map_alpha_rad_ = 0.0;
-  std::deque<std::vector<Eigen::Vector2d>> recent_points_W_;
+  double last_odometry_theta_rad_ = 0.0;  // of the last scan that joined the reference
+  std::deque<std::vector<AxisPoint>> recent_points_W_;
 };
 
 }  // namespace plywood::perception

@@ -24,9 +24,7 @@ std::vector<test::Wall> Room() {
 // of x per scan. Exact scans: the corrected heading stays within 0.05 deg of the truth and the
 // position within 3 cm (2 cm histogram bins), while the odometry ends 11.6 deg and 0.29 m off.
 TEST(PoseCorrectionTest, HistogramsRemoveOdometryDrift) {
-  PoseCorrectionOptions both;
-  both.position = true;  // off by default (docs/geometric_map.md), exercised here
-  HistogramPoseCorrector corrector({}, both);
+  HistogramPoseCorrector corrector({}, {});  // heading and position
   FusionOptions ir_only;
   ir_only.source = RangeSource::kIrOnly;
   const int scans = 30;
@@ -43,6 +41,46 @@ TEST(PoseCorrectionTest, HistogramsRemoveOdometryDrift) {
     EXPECT_LT(std::abs(msgs::WrapAngle(corrected.theta_rad - truth.theta_rad)), 0.05 * kDeg)
         << "scan " << k;
     EXPECT_LT(std::hypot(corrected.x_m - truth.x_m, corrected.y_m - truth.y_m), 0.03)
+        << "scan " << k;
+  }
+}
+
+// Along a corridor with no wall across it within the scanner's reach, exact odometry stays
+// exact: the points of the side walls, denser behind the robot where earlier scans saw them, do
+// not vote on the shift along the corridor (they pulled it back by up to max_shift_m a scan).
+TEST(PoseCorrectionTest, CorridorSideWallsDoNotPullThePositionBack) {
+  HistogramPoseCorrector corrector({}, {});
+  FusionOptions ir_only;
+  ir_only.source = RangeSource::kIrOnly;
+  const std::vector<test::Wall> corridor = {{{-20, -1}, {20, -1}}, {{20, 1}, {-20, 1}}};
+  for (int k = 0; k < 30; ++k) {
+    const msgs::Pose2D truth{0.15 * k, 0.5, 0.0};  // 0.5 m from a wall: dense points near it
+    const std::vector<RangePoint> points =
+        FuseRanges(test::SyntheticScan(corridor, truth, 720, 3.0), nullptr, ir_only);
+    const msgs::Pose2D corrected = corrector.Correct(truth, points);
+    EXPECT_NEAR(corrected.x_m, truth.x_m, 1e-9) << "scan " << k;
+    EXPECT_NEAR(corrected.y_m, truth.y_m, 0.01) << "scan " << k;
+  }
+}
+
+// A wheel spinning against a wall: the odometry's heading jumps 20 deg in one scan while the robot
+// stands still. The heading window grows with the turn the odometry reports, so the correction
+// finds the truth again (a fixed 3 deg window stays 17 deg off).
+TEST(PoseCorrectionTest, HeadingJumpOfAJammedWheelIsCorrected) {
+  HistogramPoseCorrector corrector({}, {});
+  FusionOptions ir_only;
+  ir_only.source = RangeSource::kIrOnly;
+  for (int k = 0; k < 6; ++k) {
+    const msgs::Pose2D truth{-2.0, -0.9, 0.1};
+    const msgs::Pose2D odometry{truth.x_m, truth.y_m, truth.theta_rad + (k >= 3 ? 20 * kDeg : 0.0)};
+    const std::vector<RangePoint> points =
+        FuseRanges(test::SyntheticScan(Room(), truth, 200, 3.0), nullptr, ir_only);
+    std::vector<LineSegment> lines_R;
+    for (const MapSegment& s : ExtractScanFeatures(points, 200, {}, {}).segments) {
+      lines_R.push_back(s.line);
+    }
+    const msgs::Pose2D corrected = corrector.Correct(odometry, points, lines_R);
+    EXPECT_LT(std::abs(msgs::WrapAngle(corrected.theta_rad - truth.theta_rad)), 0.05 * kDeg)
         << "scan " << k;
   }
 }

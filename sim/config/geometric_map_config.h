@@ -16,7 +16,7 @@ class YamlFields;
 //     fusion: {source: fused, tau_m: 0.1}         # source: fused | ir | sonar
 //     histograms: {gamma_beams: 3, angle_bin_deg: 1}
 //     frame: {d_max_m: 3}
-//     correction: {heading: true, position: false}
+//     correction: {heading: true, position: true}
 //     segmentation: {dist_max_m: 0.15, r_min_m: 0.03, fit: modal}
 //     aggregation: {max_angle_diff_deg: 5, max_endpoint_distance_m: 0.06}
 //     max_sonar_age_s: 0.1
