@@ -37,6 +37,18 @@ bool CanCollide(const mjModel* m, int g1, int g2) {
 
 }  // namespace
 
+bool NearContactPairs::Within(const Footprint& f, double x, double y, double reach_m) {
+  const double dx = x - f.cx, dy = y - f.cy;
+  if (!f.rectangle) {
+    const double limit = f.radius + reach_m;
+    return dx * dx + dy * dy <= limit * limit;
+  }
+  // The rectangle's own axes: x along (ux, uy), y along (-uy, ux).
+  const double ex = std::max(0.0, std::abs(dx * f.ux + dy * f.uy) - f.half_x);
+  const double ey = std::max(0.0, std::abs(-dx * f.uy + dy * f.ux) - f.half_y);
+  return ex * ex + ey * ey <= reach_m * reach_m;
+}
+
 NearContactPairs::NearContactPairs(mjModel* model, const mjData* data, int robot_base_body)
     : model_(model) {
   mjModel* m = model;
@@ -75,6 +87,7 @@ NearContactPairs::NearContactPairs(mjModel* model, const mjData* data, int robot
   // Each candidate pair with the parameters MuJoCo's dynamic search would give its contacts.
   pairs_of_world_geom_.resize(m->ngeom);
   geom_box_.assign(4 * static_cast<size_t>(m->ngeom), 0.0);
+  footprints_.assign(m->ngeom, Footprint{});
   std::vector<int> gridded;
   for (int w = 0; w < m->ngeom; ++w) {
     if (in_robot(w) || !collides(w)) continue;
@@ -132,12 +145,34 @@ NearContactPairs::NearContactPairs(mjModel* model, const mjData* data, int robot
       always_.push_back(w);  // planes, height fields, moving bodies
       continue;
     }
+    // Footprint on the floor: the exact rectangle of an upright box, the disc of an upright
+    // cylinder, else the bounding disc; grown by the geom's margin.
     const mjtNum* c = data->geom_xpos + 3 * w;
-    const double grown = radius + m->geom_margin[w];
-    geom_box_[4 * w] = c[0] - grown;
-    geom_box_[4 * w + 1] = c[1] - grown;
-    geom_box_[4 * w + 2] = c[0] + grown;
-    geom_box_[4 * w + 3] = c[1] + grown;
+    const mjtNum* R = data->geom_xmat + 9 * w;
+    const mjtNum* size = m->geom_size + 3 * w;
+    const bool upright = R[2] == 0 && R[5] == 0;
+    Footprint& f = footprints_[w];
+    f.cx = c[0];
+    f.cy = c[1];
+    f.radius = radius + m->geom_margin[w];
+    double half_x = f.radius, half_y = f.radius;
+    if (upright && m->geom_type[w] == mjGEOM_BOX) {
+      f.rectangle = true;
+      f.ux = R[0];
+      f.uy = R[3];
+      f.half_x = size[0] + m->geom_margin[w];
+      f.half_y = size[1] + m->geom_margin[w];
+      f.radius = 0.0;
+      half_x = std::abs(R[0]) * f.half_x + std::abs(R[1]) * f.half_y;
+      half_y = std::abs(R[3]) * f.half_x + std::abs(R[4]) * f.half_y;
+    } else if (upright && m->geom_type[w] == mjGEOM_CYLINDER) {
+      f.radius = size[0] + m->geom_margin[w];
+      half_x = half_y = f.radius;
+    }
+    geom_box_[4 * w] = c[0] - half_x;
+    geom_box_[4 * w + 1] = c[1] - half_y;
+    geom_box_[4 * w + 2] = c[0] + half_x;
+    geom_box_[4 * w + 3] = c[1] + half_y;
     gridded.push_back(w);
   }
 
@@ -223,12 +258,7 @@ NearContactPairs::Active NearContactPairs::Activate(const mjData* data) {
           const int w = static_cast<int>(cell_items_[k]);
           if (stamp_[w] == stamp_now_) continue;
           stamp_[w] = stamp_now_;
-          const double* b = &geom_box_[4 * w];
-          if (b[0] > x + reach_m_ || b[2] < x - reach_m_ || b[1] > y + reach_m_ ||
-              b[3] < y - reach_m_) {
-            continue;
-          }
-          near_.push_back(w);
+          if (Within(footprints_[w], x, y, reach_m_)) near_.push_back(w);
         }
       }
     }

@@ -13,7 +13,7 @@ namespace plywood::sim {
 // each other, 2.7x the office's physics; zeroing the robot's contype does not stop the enumeration
 // either). Instead, while MuJoCo runs, its dynamic search is off (opt.collision = mjCOL_PAIR) and
 // the robot gets explicit <pair>s with just the world geoms near it: a uniform 2-D grid of the
-// static geoms' bounding circles, queried with the robot's bounding circle before each mj_step /
+// static geoms' footprints, queried with the robot's bounding circle before each mj_step /
 // mj_forward. A world with moving bodies keeps MuJoCo's own search. Pair parameters are what
 // MuJoCo's dynamic rule would give (priority, else max condim and friction and solmix-weighted
 // solref/solimp; larger margin and gap), and the pairs go in the order the dynamic search visits
@@ -57,6 +57,15 @@ class NearContactPairs {
     int dim;
     mjtNum friction[5], solref[mjNREF], solimp[mjNIMP], margin, gap;
   };
+  // A static geom's footprint on the floor, grown by its margin.
+  struct Footprint {
+    double cx = 0.0, cy = 0.0;
+    bool rectangle = false;
+    double ux = 1.0, uy = 0.0, half_x = 0.0, half_y = 0.0;  // rectangle: x axis and half sizes
+    double radius = 0.0;                                    // else: a disc
+  };
+  // True when a disc of radius reach_m about (x, y) meets the footprint.
+  static bool Within(const Footprint& f, double x, double y, double reach_m);
   void Restore();
   void WritePair(int slot, const PairParameters& p);
 
@@ -72,7 +81,8 @@ class NearContactPairs {
   double x0_ = 0.0, y0_ = 0.0, cell_m_ = 1.0;
   int nx_ = 0, ny_ = 0;
   std::vector<std::uint32_t> cell_begin_, cell_items_;
-  std::vector<double> geom_box_;  // x_lo, y_lo, x_hi, y_hi per world geom
+  std::vector<double> geom_box_;  // footprint bounds per world geom: x_lo, y_lo, x_hi, y_hi
+  std::vector<Footprint> footprints_;
   std::vector<std::uint32_t> stamp_;
   std::uint32_t stamp_now_ = 0;
   // Scratch and the placeholder pair restored into used slots.
