@@ -74,7 +74,7 @@ class NearContactPairs {
   double reach_m_ = 0.0;          // robot bounding circle about the base origin, margins included
   std::vector<int> robot_geoms_;  // collidable, by id
   // Candidate pairs of each world geom (in dynamic-search order within the geom), and the world
-  // geoms always paired (planes, height fields, meshes, moving bodies).
+  // geoms always paired (no bounding radius: planes, height fields; or on moving bodies).
   std::vector<std::vector<PairParameters>> pairs_of_world_geom_;
   std::vector<int> always_;
   // Uniform grid over the static geoms' bounding squares: cell -> world geoms (CSR).
