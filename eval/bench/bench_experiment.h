@@ -36,6 +36,8 @@ struct BenchFigures {
   // experiments/default.yaml through the plain run protocol, outputs and snapshot included.
   double default_run_wall_s = 0.0;
   double default_run_simulated_s = 0.0;
+  // The same experiment's simulation alone (ExperimentRunner::Run: no outputs, no snapshot).
+  double default_run_simulation_wall_s = 0.0;
 };
 
 // Runs a P3-DX with a 361-beam LMS 200 at 10 Hz and 16 sonars at 10 Hz, wall-following on one

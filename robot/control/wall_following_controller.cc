@@ -34,6 +34,18 @@ double FoldLineAngle(double angle_rad) {
   return a;
 }
 
+// Beyond this range from the centre of rotation a remembered point changes nothing: it is no side
+// point (max_wall_range_m), and as a front point it would lie further ahead than
+// front_clearance_m + distance_m, where the lane counts as clear and the speed is not reduced, just
+// as with no point at all. Padded so rounding in the squared-distance test cannot matter.
+double RelevantRange(const WallFollowingOptions& o) {
+  const double clear_m = o.front_clearance_m + o.distance_m;
+  const double cos_front = std::cos(o.front_window_rad);
+  if (!(cos_front > 1e-3)) return std::numeric_limits<double>::infinity();
+  const double front_m = std::max(std::hypot(clear_m, o.lane_half_width_m), clear_m / cos_front);
+  return std::max(o.max_wall_range_m, front_m) * (1.0 + 1e-6) + 1e-6;
+}
+
 }  // namespace
 
 std::string_view ToString(WallSide side) { return side == WallSide::kLeft ? "left" : "right"; }
@@ -94,7 +106,10 @@ void WallFollowingOptions::Validate() const {
 
 WallFollowingController::WallFollowingController(const DiffDriveSpec& spec,
                                                  const WallFollowingOptions& options)
-    : spec_(spec), options_(options), side_sign_(options.side == WallSide::kLeft ? 1.0 : -1.0) {
+    : spec_(spec),
+      options_(options),
+      side_sign_(options.side == WallSide::kLeft ? 1.0 : -1.0),
+      relevant_range_m_(RelevantRange(options)) {
   spec_.Validate();
   options_.Validate();
 }
@@ -142,27 +157,38 @@ void WallFollowingController::Remember(const ControllerInput& input) {
   }
 }
 
-void WallFollowingController::CollectPoints(const msgs::Pose2D& X_WR, std::vector<Point>* side,
-                                            std::vector<Point>* front) const {
-  // Hot loop over up to a few thousand points: rotate by hand and compare bearings through their
-  // cosines, no trigonometry per point.
+double WallFollowingController::CollectPoints(const msgs::Pose2D& X_WR,
+                                              std::vector<Point>* side) const {
+  // Hot loop over up to a few thousand points at the control rate: rotate by hand, compare bearings
+  // through their cosines, skip the points too far away to matter before any of that, and take a
+  // point's range (std::hypot) only when a test needs it. Every test on a point that is not skipped
+  // is the same arithmetic as before, so the wall fit and the commands do not change.
   const double c = std::cos(X_WR.theta_rad), s = std::sin(X_WR.theta_rad);
   const double cos_side = std::cos(options_.side_window_rad);
   const double cos_front = std::cos(options_.front_window_rad);
   const double newest_s = last_reading_time_s_.value_or(0.0);
+  const double oldest_side_s = newest_s - options_.wall_memory_s - kTimeSlackS;
+  const double reach_squared = relevant_range_m_ * relevant_range_m_;
+  double ahead_m = std::numeric_limits<double>::infinity();
   for (const StampedPoint& stamped : memory_) {
     const double dx = stamped.p_W.x_m - X_WR.x_m, dy = stamped.p_W.y_m - X_WR.y_m;
+    if (dx * dx + dy * dy > reach_squared) continue;
     const Point p{c * dx + s * dy, -s * dx + c * dy};
-    const double range_m = std::hypot(p.x_m, p.y_m);
-    if (side_sign_ * p.y_m >= range_m * cos_side && range_m <= options_.max_wall_range_m &&
-        stamped.time_s >= newest_s - options_.wall_memory_s - kTimeSlackS) {
+    double range_m = -1.0;
+    const auto range = [&] {
+      if (range_m < 0.0) range_m = std::hypot(p.x_m, p.y_m);
+      return range_m;
+    };
+    if (stamped.time_s >= oldest_side_s && side_sign_ * p.y_m >= range() * cos_side &&
+        range() <= options_.max_wall_range_m) {
       side->push_back(p);
     }
-    if (p.x_m > 0.0 &&
-        (std::abs(p.y_m) <= options_.lane_half_width_m || p.x_m >= range_m * cos_front)) {
-      front->push_back(p);
+    if (p.x_m > 0.0 && p.x_m < ahead_m &&
+        (std::abs(p.y_m) <= options_.lane_half_width_m || p.x_m >= range() * cos_front)) {
+      ahead_m = p.x_m;
     }
   }
+  return ahead_m;
 }
 
 std::optional<WallFollowingController::WallEstimate> WallFollowingController::FitWall(
@@ -234,12 +260,9 @@ msgs::WheelSpeedCommand WallFollowingController::Update(const ControllerInput& i
   }
 
   Remember(input);
-  std::vector<Point> side, front;
-  CollectPoints(input.X_WR_estimate, &side, &front);
-  wall_ = FitWall(side, input.X_WR_estimate.theta_rad);
-
-  double ahead_m = std::numeric_limits<double>::infinity();
-  for (const Point& p : front) ahead_m = std::min(ahead_m, p.x_m);
+  side_scratch_.clear();
+  const double ahead_m = CollectPoints(input.X_WR_estimate, &side_scratch_);
+  wall_ = FitWall(side_scratch_, input.X_WR_estimate.theta_rad);
   // Hysteresis: once blocked, keep turning until the way ahead is clear by a further distance_m
   // and the side sees a wall roughly parallel (or none), else the wall being left behind pulls the
   // robot straight back into the corner. Clutter (a wardrobe in a corner, table legs) may never

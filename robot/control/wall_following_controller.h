@@ -101,19 +101,21 @@ class WallFollowingController final : public Controller {
   void Remember(const ControllerInput& input);
   void AddPoint(const msgs::Pose2D& X_WR, const msgs::Pose2D& X_RS, double beam_rad, double range_m,
                 double time_s);
-  // Remembered points in the robot frame, split into side (wall) and front (obstacle) sets.
-  void CollectPoints(const msgs::Pose2D& X_WR, std::vector<Point>* side,
-                     std::vector<Point>* front) const;
+  // Appends the remembered side (wall) points in the robot frame to `side`; returns how far ahead
+  // the nearest point in the lane or the front window is (infinity: none that matters).
+  double CollectPoints(const msgs::Pose2D& X_WR, std::vector<Point>* side) const;
   std::optional<WallEstimate> FitWall(const std::vector<Point>& side, double theta_estimate_rad);
 
   const DiffDriveSpec spec_;
   const WallFollowingOptions options_;
-  const double side_sign_;  // +1 left, -1 right
+  const double side_sign_;         // +1 left, -1 right
+  const double relevant_range_m_;  // remembered points further away change nothing
   std::optional<double> start_time_s_;
   std::optional<double> last_time_s_;
   std::optional<double> wall_heading_W_rad_;  // last fitted wall direction in the estimate frame
   std::optional<WallEstimate> wall_;
   std::vector<StampedPoint> memory_;  // oldest first
+  std::vector<Point> side_scratch_;   // CollectPoints' output, kept to reuse its allocation
   std::optional<double> last_reading_time_s_;
   double speed_m_s_ = 0.0;
   double arc_turned_rad_ = 0.0;  // heading change of the arc since the wall went out of view

@@ -75,12 +75,17 @@ void GridRayCaster2DOptions::Validate() const {
   if (max_cells < 1) {
     throw std::invalid_argument("max_cells: must be >= 1, got " + std::to_string(max_cells));
   }
+  if (!(level_tolerance_rad >= 0.0 && level_tolerance_rad <= 0.01)) {
+    throw std::invalid_argument("level_tolerance_rad: must be in [0, 0.01], got " +
+                                msgs::ShortestNumber(level_tolerance_rad));
+  }
 }
 
 GridRayCaster2D::GridRayCaster2D(const mjModel* model, const mjData* data,
                                  const GridRayCaster2DOptions& options)
     : model_(model), data_(data) {
   options.Validate();
+  level_tolerance_ = std::tan(options.level_tolerance_rad);
 
   std::vector<Aabb> boxes;
   for (int g = 0; g < model->ngeom; ++g) {
@@ -247,8 +252,13 @@ double GridRayCaster2D::IntersectFallback(int g, const double* o, const double* 
   }
 }
 
-bool GridRayCaster2D::Cast(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W,
+bool GridRayCaster2D::Cast(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& given_dir_W,
                            double max_range_m, RayHit* hit) const {
+  Eigen::Vector3d dir_W = given_dir_W;
+  if (dir_W.z() != 0.0 && std::abs(dir_W.z()) <= level_tolerance_ * dir_W.head<2>().norm()) {
+    dir_W.z() = 0.0;
+    dir_W.normalize();
+  }
   const double* o = origin_W.data();
   const double* v = dir_W.data();
   const bool horizontal = v[2] == 0.0;

@@ -37,6 +37,11 @@ TEST(GridRayCaster2DTest, OptionsValidate) {
   options = GridRayCaster2DOptions();
   options.max_cells = 0;
   EXPECT_THROW(options.Validate(), std::invalid_argument);
+  for (const double tolerance : {-1e-3, 0.02, std::nan("")}) {
+    options = GridRayCaster2DOptions();
+    options.level_tolerance_rad = tolerance;
+    EXPECT_THROW(options.Validate(), std::invalid_argument) << tolerance;
+  }
 }
 
 TEST(GridRayCaster2DTest, StaticWorldNeedsNoMujocoCallsForHorizontalRays) {
@@ -251,6 +256,42 @@ TEST_P(RandomWorldTest, TiltedAndSteepRaysMatchMjRay) {
   }
   Compare(reference, grid, {1, 1, 2}, {0, 0, -1}, 8.0, &c);  // straight down
   EXPECT_EQ(c.mismatches, 0) << c.first_mismatch;
+}
+
+TEST_P(RandomWorldTest, NearlyLevelRaysAreCastLevel) {
+  const CompiledWorld w = Compile(RandomWorld(8, 60));
+  GridRayCaster2DOptions options;
+  options.cell_size_m = GetParam();
+  options.level_tolerance_rad = 1e-3;
+  const MujocoRayCaster reference(w.model.get(), w.data.get());
+  const GridRayCaster2D grid(w.model.get(), w.data.get(), options);
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> ux(-12, 12), uy(-9, 9), uz(0.01, 2.6), yaw(-M_PI, M_PI),
+      tilt(-0.99e-3, 0.99e-3);
+  int hits = 0, same = 0, close = 0;
+  for (int i = 0; i < 4000; ++i) {
+    const double a = yaw(rng), p = tilt(rng);
+    const Eigen::Vector3d origin(ux(rng), uy(rng), uz(rng));
+    const Eigen::Vector3d dir(std::cos(p) * std::cos(a), std::cos(p) * std::sin(a), std::sin(p));
+    const Eigen::Vector3d level_dir = Eigen::Vector3d(dir.x(), dir.y(), 0.0).normalized();
+    // Bit for bit what mj_ray gives for the level ray from the same origin ...
+    RayHit tilted_hit, level_hit;
+    const bool hit = grid.Cast(origin, dir, 8.0, &tilted_hit);
+    ASSERT_EQ(hit, reference.Cast(origin, level_dir, 8.0, &level_hit)) << i;
+    if (!hit) continue;
+    ++hits;
+    same +=
+        tilted_hit.distance_m == level_hit.distance_m && tilted_hit.geom_id == level_hit.geom_id;
+    // ... and, on the vertical faces of upright walls, what the tilted ray meets within 1 - cos.
+    RayHit exact;
+    if (reference.Cast(origin, dir, 8.0, &exact) && exact.geom_id == level_hit.geom_id &&
+        std::abs(level_hit.normal_W.z()) < 1e-12) {
+      close += std::abs(exact.distance_m * std::cos(p) - level_hit.distance_m) < 1e-9;
+    }
+  }
+  EXPECT_EQ(same, hits);
+  EXPECT_GT(hits, 1500);
+  EXPECT_GT(close, hits / 2);
 }
 
 INSTANTIATE_TEST_SUITE_P(CellSizes, RandomWorldTest, ::testing::Values(0.13, 0.5, 2.0));

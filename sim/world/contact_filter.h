@@ -14,6 +14,10 @@ namespace plywood::sim {
 // (its broad phase works per body and the world is one body), so this runs ~350 times a step and
 // is kept lean: the geometric test runs first, with early exits.
 //
+// Scene now gives the robot explicit pairs with the geoms near it (NearContactPairs) and turns
+// MuJoCo's dynamic search off while stepping, so this filter serves the fallback cases (worlds with
+// moving bodies, a crowd of geoms beyond the pair capacity) and any mj_forward outside Scene.
+//
 // Installed process-wide as mjcb_contactfilter by InstallTightContactFilter(); stateless, so
 // several models and threads can share it.
 int TightContactFilter(const mjModel* m, mjData* d, int geom1, int geom2);

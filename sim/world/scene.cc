@@ -25,14 +25,23 @@ double CylinderBoundingRadius(double radius, double half_length) {
 
 }  // namespace
 
-std::string ComposeSceneMjcf(const std::filesystem::path& world,
-                             const std::filesystem::path& robot) {
+std::string ComposeSceneMjcf(const std::filesystem::path& world, const std::filesystem::path& robot,
+                             int placeholder_pairs) {
   // The composed file "lives" in the world's folder so the world's own relative includes, meshes
   // and textures resolve as they would if the user loaded it directly.
   const std::filesystem::path robot_relative =
       std::filesystem::relative(robot, world.parent_path());
-  return "<mujoco model=\"plywood_scene\">\n  <include file=\"" + world.filename().string() +
-         "\"/>\n  <include file=\"" + robot_relative.string() + "\"/>\n</mujoco>\n";
+  std::string text = "<mujoco model=\"plywood_scene\">\n  <include file=\"" +
+                     world.filename().string() + "\"/>\n  <include file=\"" +
+                     robot_relative.string() + "\"/>\n";
+  if (placeholder_pairs > 0) {
+    text += "  <contact>\n";
+    for (int i = 0; i < placeholder_pairs; ++i) {
+      text += "    <pair geom1=\"left_wheel_tire\" geom2=\"right_wheel_tire\"/>\n";
+    }
+    text += "  </contact>\n";
+  }
+  return text + "</mujoco>\n";
 }
 
 Scene::Scene(const SceneOptions& options) : options_(options) {
@@ -45,13 +54,22 @@ Scene::Scene(const SceneOptions& options) : options_(options) {
   }
   const fs::path world = fs::absolute(options.world_mjcf).lexically_normal();
   const fs::path robot = fs::absolute(options.robot_mjcf).lexically_normal();
+  const std::string virtual_path = (world.parent_path() / "__plywood_scene__.xml").string();
   try {
-    model_ = LoadModelFromString(ComposeSceneMjcf(world, robot),
-                                 (world.parent_path() / "__plywood_scene__.xml").string());
-  } catch (const std::exception& e) {
-    throw ConfigError(options.world_mjcf.string(), "",
-                      std::string("does not compile with robot ") + options.robot_mjcf.string() +
-                          ": " + e.what());
+    model_ = LoadModelFromString(ComposeSceneMjcf(world, robot, NearContactPairs::kCapacity),
+                                 virtual_path);
+  } catch (const std::exception&) {
+    // Most likely a robot without the tires the placeholder pairs name: compiled without them, the
+    // checks below say what is missing.
+  }
+  if (!model_) {
+    try {
+      model_ = LoadModelFromString(ComposeSceneMjcf(world, robot), virtual_path);
+    } catch (const std::exception& e) {
+      throw ConfigError(options.world_mjcf.string(), "",
+                        std::string("does not compile with robot ") + options.robot_mjcf.string() +
+                            ": " + e.what());
+    }
   }
   if (!(options.timestep_s > 0.0) || !std::isfinite(options.timestep_s)) {
     throw std::invalid_argument("timestep_s: must be a finite number > 0");
@@ -87,7 +105,15 @@ Scene::Scene(const SceneOptions& options) : options_(options) {
   InstallTightContactFilter();
   data_.reset(mj_makeData(model_.get()));
   mj_resetData(model_.get(), data_.get());
-  mj_forward(model_.get(), data_.get());
+  MakeNearContactPairs();
+  WithNearPairs([&] { mj_forward(model_.get(), data_.get()); });
+}
+
+void Scene::MakeNearContactPairs() {
+  near_pairs_.reset();
+  if (model_->npair != NearContactPairs::kCapacity) return;  // the files bring pairs of their own
+  mj_kinematics(model_.get(), data_.get());
+  near_pairs_ = std::make_unique<NearContactPairs>(model_.get(), data_.get(), base_body_);
 }
 
 msgs::Pose2D Scene::TruePose() const {
@@ -117,7 +143,7 @@ void Scene::PlaceRobot(const msgs::Pose2D& X_WR) {
   q[4] = 0.0;
   q[5] = 0.0;
   q[6] = std::sin(X_WR.theta_rad / 2);
-  mj_forward(model_.get(), data_.get());
+  WithNearPairs([&] { mj_forward(model_.get(), data_.get()); });
 }
 
 void Scene::SetWheelSpeeds(const msgs::WheelSpeedCommand& command) {
@@ -125,7 +151,9 @@ void Scene::SetWheelSpeeds(const msgs::WheelSpeedCommand& command) {
   data_->ctrl[right_motor_] = command.right_rad_s;
 }
 
-void Scene::Step() { mj_step(model_.get(), data_.get()); }
+void Scene::Step() {
+  WithNearPairs([&] { mj_step(model_.get(), data_.get()); });
+}
 
 WheelGeometry Scene::wheel_geometry() const {
   return {model_->geom_size[3 * left_tire_], model_->geom_size[3 * right_tire_],
@@ -157,7 +185,8 @@ void Scene::SetWheelGeometry(const WheelGeometry& geometry) {
   reshape(right_wheel_body_, right_tire_, geometry.right_radius_m,
           centre_y - geometry.track_m / 2.0);
   mj_resetData(m, data_.get());
-  mj_forward(m, data_.get());
+  MakeNearContactPairs();  // the robot's bounding circle follows its wheels
+  WithNearPairs([&] { mj_forward(m, data_.get()); });
 }
 
 std::optional<int> Scene::FindSite(const std::string& name) const {

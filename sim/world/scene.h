@@ -2,12 +2,14 @@
 
 #include <Eigen/Geometry>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 
 #include "msgs/pose2d.h"
 #include "msgs/wheel_speed_command.h"
 #include "sim/world/mujoco_handles.h"
+#include "sim/world/near_contact_pairs.h"
 
 namespace plywood::sim {
 
@@ -80,6 +82,15 @@ class Scene {
   const std::filesystem::path& robot_path() const { return options_.robot_mjcf; }
 
  private:
+  void MakeNearContactPairs();
+  // Runs MuJoCo with the robot's near contact pairs in place (when the model has them).
+  template <typename Call>
+  void WithNearPairs(Call call) {
+    if (!near_pairs_) return call();
+    const NearContactPairs::Active active = near_pairs_->Activate(data_.get());
+    call();
+  }
+
   SceneOptions options_;
   MjModelPtr model_;
   MjDataPtr data_;
@@ -89,10 +100,12 @@ class Scene {
   int left_wheel_qpos_ = -1, right_wheel_qpos_ = -1;
   int left_motor_ = -1, right_motor_ = -1;
   int left_tire_ = -1, right_tire_ = -1;
+  std::unique_ptr<NearContactPairs> near_pairs_;
 };
 
-// The MJCF text that includes `world` and `robot` into one model (exposed for tests).
-std::string ComposeSceneMjcf(const std::filesystem::path& world,
-                             const std::filesystem::path& robot);
+// The MJCF text that includes `world` and `robot` into one model (exposed for tests), with
+// `placeholder_pairs` inert contact pairs between the robot's tires for NearContactPairs to reuse.
+std::string ComposeSceneMjcf(const std::filesystem::path& world, const std::filesystem::path& robot,
+                             int placeholder_pairs = 0);
 
 }  // namespace plywood::sim
