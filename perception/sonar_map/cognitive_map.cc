@@ -309,13 +309,14 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
       int occupied_cells = 0;
       for (const auto& c : cells) occupied_cells += is_occ(c.x(), c.y());
       if (occupied_cells < options.min_obstacle_cells) continue;
+      // Rows and columns are judged full with the unknown inside, which fills them.
+      if (options.obstacle_min_fill > 0.0) cells = TrimThinEnds(cells, options.obstacle_min_fill);
       // The blob's unknown cells join the faces heard, but the space never seen between an
       // obstacle and a wall is no part of the obstacle: its sides come from the faces alone.
       if (options.obstacle_from_faces)
         cells.erase(std::remove_if(cells.begin(), cells.end(),
                                    [&](const Eigen::Vector2i& c) { return !is_occ(c.x(), c.y()); }),
                     cells.end());
-      if (options.obstacle_min_fill > 0.0) cells = TrimThinEnds(cells, options.obstacle_min_fill);
       constexpr int kMaxSplitDepth = 3;
       for (const auto& piece :
            SplitIntoRectangles(cells, options.obstacle_split_saving, kMaxSplitDepth)) {
