@@ -353,8 +353,8 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
         // Obstacle sides are short: fit with a band as wide as the blob so every point counts.
         const double wide = 10.0;
         // The sonar hears an obstacle's faces, never its inside, and seldom all of a face: the
-        // blob's extent (faces plus the unknown inside) is the obstacle. A fit would average a
-        // face with the edge of the unknown inside where part of that face went unheard.
+        // piece's extent is the obstacle. A fit would average a face with the edge of the
+        // unknown inside where part of that face went unheard.
         Rect r{extreme(w, true), extreme(s, true), extreme(e, false), extreme(n, false)};
         if (options.fit_obstacle_sides) {
           r.x0 = FitSide(w, res, wide, sigma, 2).value_or(r.x0);
