@@ -37,6 +37,8 @@ TEST(SonarMapBaselineTest, MapErrorDoesNotWorsen) {
     EXPECT_LE(score.error, goal) << name;
     EXPECT_LE(score.grid_error, entry.second["grid_error"].as<double>() + margin) << name;
     EXPECT_EQ(score.contacts, 0.0) << name;
+    // Exploration ends because nothing is left to visit, not on a time limit.
+    EXPECT_EQ(score.end_reason, "map_complete") << name;
   }
 }
 

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <string>
 
 #include "eval/sonar_map/cognitive_map_json.h"
 #include "eval/sonar_map/sonar_ground_truth.h"
@@ -62,6 +63,11 @@ bool AddSonarMapMetrics(sim::ExperimentRunner& runner) {
   m.Set("occupancy.negative_experience", static_cast<double>(map.negative.size()));
   m.Set("occupancy.rings", static_cast<double>(explorer->rings_integrated()));
   m.Set("occupancy.explored", explorer->Finished() ? 1.0 : 0.0);
+  // map_complete: nothing left to visit; time_limit: explore_max_s; run_ended: the experiment's
+  // duration ran out first.
+  m.Set("exploration.end_reason",
+        explorer->Finished() ? explorer->end_reason() : std::string("run_ended"));
+  if (explorer->Finished()) m.Set("exploration.end_time_s", explorer->end_time_s());
   return true;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -79,6 +80,74 @@ std::vector<Eigen::Vector2i> TrimThinEnds(const std::vector<Eigen::Vector2i>& ce
   return kept;
 }
 
+namespace {
+
+long ExtentArea(const std::vector<Eigen::Vector2i>& cells) {
+  if (cells.empty()) return 0;
+  Eigen::Vector2i lo = cells.front(), hi = cells.front();
+  for (const Eigen::Vector2i& c : cells) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
+  return static_cast<long>(hi.x() - lo.x() + 1) * (hi.y() - lo.y() + 1);
+}
+
+// The best cut along one axis (0: between columns, 1: between rows): the coordinate the upper
+// side starts at and the summed extent area of both sides.
+std::pair<int, long> BestCut(const std::vector<Eigen::Vector2i>& cells, int axis) {
+  const int other = 1 - axis;
+  std::map<int, std::pair<int, int>> span;  // key along `axis` -> min/max along the other
+  for (const Eigen::Vector2i& c : cells) {
+    auto it = span.try_emplace(c[axis], c[other], c[other]).first;
+    it->second.first = std::min(it->second.first, c[other]);
+    it->second.second = std::max(it->second.second, c[other]);
+  }
+  std::vector<std::pair<int, std::pair<int, int>>> keys(span.begin(), span.end());
+  const std::size_t n = keys.size();
+  std::pair<int, long> best{0, std::numeric_limits<long>::max()};
+  if (n < 2) return best;
+  // Extent areas of keys[0..k] and keys[k..n-1] (the keys between are inside either extent).
+  std::vector<long> low(n), high(n);
+  int lo = keys[0].second.first, hi = keys[0].second.second;
+  for (std::size_t k = 0; k < n; ++k) {
+    lo = std::min(lo, keys[k].second.first), hi = std::max(hi, keys[k].second.second);
+    low[k] = static_cast<long>(keys[k].first - keys[0].first + 1) * (hi - lo + 1);
+  }
+  lo = keys[n - 1].second.first, hi = keys[n - 1].second.second;
+  for (std::size_t k = n; k-- > 0;) {
+    lo = std::min(lo, keys[k].second.first), hi = std::max(hi, keys[k].second.second);
+    high[k] = static_cast<long>(keys[n - 1].first - keys[k].first + 1) * (hi - lo + 1);
+  }
+  for (std::size_t k = 0; k + 1 < n; ++k)
+    if (low[k] + high[k + 1] < best.second) best = {keys[k + 1].first, low[k] + high[k + 1]};
+  return best;
+}
+
+void Split(const std::vector<Eigen::Vector2i>& cells, double saving, int depth,
+           std::vector<std::vector<Eigen::Vector2i>>& pieces) {
+  const long area = ExtentArea(cells);
+  if (depth > 0) {
+    const auto by_column = BestCut(cells, 0), by_row = BestCut(cells, 1);
+    const int axis = by_row.second < by_column.second ? 1 : 0;
+    const auto& cut = axis == 0 ? by_column : by_row;
+    if (cut.second < area && cut.second <= (1.0 - saving) * static_cast<double>(area)) {
+      std::vector<Eigen::Vector2i> below, above;
+      for (const Eigen::Vector2i& c : cells) (c[axis] < cut.first ? below : above).push_back(c);
+      Split(below, saving, depth - 1, pieces);
+      Split(above, saving, depth - 1, pieces);
+      return;
+    }
+  }
+  pieces.push_back(cells);
+}
+
+}  // namespace
+
+std::vector<std::vector<Eigen::Vector2i>> SplitIntoRectangles(
+    const std::vector<Eigen::Vector2i>& cells, double saving, int max_depth) {
+  std::vector<std::vector<Eigen::Vector2i>> pieces;
+  if (cells.empty()) return pieces;
+  Split(cells, saving, max_depth, pieces);
+  return pieces;
+}
+
 void CognitiveMapOptions::Validate() const {
   if (!(eps > 0.0 && eps < 0.5)) throw std::invalid_argument("eps: must be in (0, 0.5)");
   if (!(snap_distance_m >= 0.0)) throw std::invalid_argument("snap_distance_m: must be >= 0");
@@ -98,6 +167,8 @@ void CognitiveMapOptions::Validate() const {
     throw std::invalid_argument("side_free_overrun_m: must be >= 0");
   if (!(obstacle_min_fill >= 0.0 && obstacle_min_fill <= 1.0))
     throw std::invalid_argument("obstacle_min_fill: must be in [0, 1]");
+  if (!(obstacle_split_saving >= 0.0 && obstacle_split_saving <= 1.0))
+    throw std::invalid_argument("obstacle_split_saving: must be in [0, 1]");
 }
 
 CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& inside,
@@ -211,6 +282,7 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
   };
   int next_id = 0;
   std::vector<Rect> blobs;
+  std::vector<int> blob_of;  // the blob each piece was cut from
   for (int iy = 0; iy < H; ++iy)
     for (int ix = 0; ix < W; ++ix) {
       // Obstacle blobs are the cells never seen free (their inside stays unknown) that touch
@@ -237,51 +309,67 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
       int occupied_cells = 0;
       for (const auto& c : cells) occupied_cells += is_occ(c.x(), c.y());
       if (occupied_cells < options.min_obstacle_cells) continue;
+      // Rows and columns are judged full with the unknown inside, which fills them.
       if (options.obstacle_min_fill > 0.0) cells = TrimThinEnds(cells, options.obstacle_min_fill);
-      // Per row the extreme cells give west/east boundary points, per column south/north.
-      std::map<int, std::pair<int, int>> rows, cols;
-      for (const auto& c : cells) {
-        auto r = rows.try_emplace(c.y(), c.x(), c.x()).first;
-        r->second.first = std::min(r->second.first, c.x());
-        r->second.second = std::max(r->second.second, c.x());
-        auto k = cols.try_emplace(c.x(), c.y(), c.y()).first;
-        k->second.first = std::min(k->second.first, c.y());
-        k->second.second = std::max(k->second.second, c.y());
+      // The blob's unknown cells join the faces heard, but the space never seen between an
+      // obstacle and a wall is no part of the obstacle: its sides come from the faces alone.
+      if (options.obstacle_from_faces)
+        cells.erase(std::remove_if(cells.begin(), cells.end(),
+                                   [&](const Eigen::Vector2i& c) { return !is_occ(c.x(), c.y()); }),
+                    cells.end());
+      constexpr int kMaxSplitDepth = 3;
+      for (const auto& piece :
+           SplitIntoRectangles(cells, options.obstacle_split_saving, kMaxSplitDepth)) {
+        int piece_occupied = 0;
+        for (const auto& c : piece) piece_occupied += is_occ(c.x(), c.y());
+        // A piece nothing was heard in is space never seen, not an obstacle.
+        if (piece_occupied < options.min_obstacle_cells) continue;
+        // Per row the extreme cells give west/east boundary points, per column south/north.
+        std::map<int, std::pair<int, int>> rows, cols;
+        for (const auto& c : piece) {
+          auto r = rows.try_emplace(c.y(), c.x(), c.x()).first;
+          r->second.first = std::min(r->second.first, c.x());
+          r->second.second = std::max(r->second.second, c.x());
+          auto k = cols.try_emplace(c.x(), c.y(), c.y()).first;
+          k->second.first = std::min(k->second.first, c.y());
+          k->second.second = std::max(k->second.second, c.y());
+        }
+        std::vector<Eigen::Vector2d> w, e, s, n;
+        for (const auto& [iy2, ext] : rows) {
+          const double y = grid.CellCentre(0, iy2).y();
+          w.emplace_back(grid.CellCentre(ext.first, 0).x() - 0.5 * res, y);
+          e.emplace_back(grid.CellCentre(ext.second, 0).x() + 0.5 * res, y);
+        }
+        for (const auto& [ix2, ext] : cols) {
+          const double x = grid.CellCentre(ix2, 0).x();
+          s.emplace_back(grid.CellCentre(0, ext.first).y() - 0.5 * res, x);
+          n.emplace_back(grid.CellCentre(0, ext.second).y() + 0.5 * res, x);
+        }
+        auto extreme = [](const std::vector<Eigen::Vector2d>& pts, bool low) {
+          double v = pts.front().x();
+          for (const auto& p : pts) v = low ? std::min(v, p.x()) : std::max(v, p.x());
+          return v;
+        };
+        // Obstacle sides are short: fit with a band as wide as the blob so every point counts.
+        const double wide = 10.0;
+        // The sonar hears an obstacle's faces, never its inside, and seldom all of a face: the
+        // piece's extent is the obstacle. A fit would average a face with the edge of the
+        // unknown inside where part of that face went unheard.
+        Rect r{extreme(w, true), extreme(s, true), extreme(e, false), extreme(n, false)};
+        if (options.fit_obstacle_sides) {
+          r.x0 = FitSide(w, res, wide, sigma, 2).value_or(r.x0);
+          r.x1 = FitSide(e, res, wide, sigma, 2).value_or(r.x1);
+          r.y0 = FitSide(s, res, wide, sigma, 2).value_or(r.y0);
+          r.y1 = FitSide(n, res, wide, sigma, 2).value_or(r.y1);
+        }
+        r.x0 = std::max(r.x0, map.room.x0);
+        r.x1 = std::min(r.x1, map.room.x1);
+        r.y0 = std::max(r.y0, map.room.y0);
+        r.y1 = std::min(r.y1, map.room.y1);
+        if (r.x1 - r.x0 < res || r.y1 - r.y0 < res) continue;
+        blobs.push_back(r);
+        blob_of.push_back(next_id);
       }
-      std::vector<Eigen::Vector2d> w, e, s, n;
-      for (const auto& [iy2, ext] : rows) {
-        const double y = grid.CellCentre(0, iy2).y();
-        w.emplace_back(grid.CellCentre(ext.first, 0).x() - 0.5 * res, y);
-        e.emplace_back(grid.CellCentre(ext.second, 0).x() + 0.5 * res, y);
-      }
-      for (const auto& [ix2, ext] : cols) {
-        const double x = grid.CellCentre(ix2, 0).x();
-        s.emplace_back(grid.CellCentre(0, ext.first).y() - 0.5 * res, x);
-        n.emplace_back(grid.CellCentre(0, ext.second).y() + 0.5 * res, x);
-      }
-      auto extreme = [](const std::vector<Eigen::Vector2d>& pts, bool low) {
-        double v = pts.front().x();
-        for (const auto& p : pts) v = low ? std::min(v, p.x()) : std::max(v, p.x());
-        return v;
-      };
-      // Obstacle sides are short: fit with a band as wide as the blob so every point counts.
-      const double wide = 10.0;
-      // The sonar hears an obstacle's faces, never its inside, and seldom all of a face: the
-      // blob's extent (faces plus the unknown inside) is the obstacle. A fit would average a
-      // face with the edge of the unknown inside where part of that face went unheard.
-      Rect r{extreme(w, true), extreme(s, true), extreme(e, false), extreme(n, false)};
-      if (options.fit_obstacle_sides) {
-        r.x0 = FitSide(w, res, wide, sigma, 2).value_or(r.x0);
-        r.x1 = FitSide(e, res, wide, sigma, 2).value_or(r.x1);
-        r.y0 = FitSide(s, res, wide, sigma, 2).value_or(r.y0);
-        r.y1 = FitSide(n, res, wide, sigma, 2).value_or(r.y1);
-      }
-      r.x0 = std::max(r.x0, map.room.x0);
-      r.x1 = std::min(r.x1, map.room.x1);
-      r.y0 = std::max(r.y0, map.room.y0);
-      r.y1 = std::min(r.y1, map.room.y1);
-      if (r.x1 - r.x0 < res || r.y1 - r.y0 < res) continue;
-      blobs.push_back(r);
     }
   // Pieces closer than obstacle_join_m to each other or to a room side are one obstacle against
   // it: the sonar splits a face it hears at the edge of its range, and the robot cannot drive
@@ -291,6 +379,8 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
     merged = false;
     for (std::size_t i = 0; i < blobs.size() && !merged; ++i)
       for (std::size_t j = i + 1; j < blobs.size() && !merged; ++j) {
+        // Pieces of one blob were cut apart on purpose.
+        if (blob_of[i] == blob_of[j]) continue;
         const Rect& a = blobs[i];
         const Rect& b = blobs[j];
         const double gap_x = std::max(a.x0, b.x0) - std::min(a.x1, b.x1);
@@ -299,6 +389,7 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
         blobs[i] = {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1),
                     std::max(a.y1, b.y1)};
         blobs.erase(blobs.begin() + static_cast<std::ptrdiff_t>(j));
+        blob_of.erase(blob_of.begin() + static_cast<std::ptrdiff_t>(j));
         merged = true;
       }
   }

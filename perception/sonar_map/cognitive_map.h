@@ -24,6 +24,10 @@ struct CognitiveMapOptions {
   double obstacle_free_p = 0.3;
   // Obstacle pieces closer than this to each other or to a room side are joined to them.
   double obstacle_join_m = 0.3;
+  // The rectangles span the blob's occupied cells (the faces heard) only, not the unknown cells
+  // the blob grew over: a box's unheard inside lies between its faces anyway, while the unseen
+  // gap between a box and a wall made the box reach the wall.
+  bool obstacle_from_faces = true;
   // Obstacle sides: the blob's extent (false) or a chi-square fit of its extreme cells (true).
   bool fit_obstacle_sides = false;
   // The extent spans only the outermost rows (columns) the blob fills to at least this fraction of
@@ -31,6 +35,10 @@ struct CognitiveMapOptions {
   // taper along the wall, while a box, whose inside the sonar never sees free, fills every row.
   // 0 keeps the whole blob.
   double obstacle_min_fill = 0.3;
+  // A blob is cut in two (up to three times, so into at most 8 rectangles) where the two pieces'
+  // extents cover at least this fraction less area than the blob's: an L-shaped pair of boxes, or a
+  // box with the unseen strip along a wall beside it, is no rectangle. 1 never cuts.
+  double obstacle_split_saving = 0.25;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
 };
@@ -53,6 +61,13 @@ struct CognitiveMap {
 // few. Empty input gives empty output.
 std::vector<Eigen::Vector2i> TrimThinEnds(const std::vector<Eigen::Vector2i>& cells,
                                           double min_fill);
+
+// The cells of a blob as rectangular pieces: cut at the row or column that most shrinks the
+// summed extents of the two sides, while that saves at least `saving` of the extent's area (and
+// anything at all), at most `max_depth` times deep. Every cell is in exactly one piece; one piece
+// when no cut saves enough.
+std::vector<std::vector<Eigen::Vector2i>> SplitIntoRectangles(
+    const std::vector<Eigen::Vector2i>& cells, double saving, int max_depth);
 
 // `inside`: a point known to be free inside the room (the start pose). Sides without enough
 // boundary points fall back to the outermost cell the grid has seen free.

@@ -289,6 +289,54 @@ TEST(CognitiveMapTest, CornerEchoWedgeBelowAnObstacleIsNotPartOfIt) {
   ExpectTilesTheRoom(map);
 }
 
+TEST(SplitIntoRectanglesTest, CutsAnLIntoItsTwoArmsAndLeavesARectangleWhole) {
+  // Arms 20 x 6 (rows 0-5) and 6 x 14 (rows 6-19): either cut leaves extents of 204 cells
+  // against the L's 400, a saving of 0.49.
+  std::vector<Eigen::Vector2i> l_shape = Block(0, 0, 19, 5);
+  const std::vector<Eigen::Vector2i> arm = Block(0, 6, 5, 19);
+  l_shape.insert(l_shape.end(), arm.begin(), arm.end());
+  const auto pieces = SplitIntoRectangles(l_shape, 0.25, 3);
+  ASSERT_EQ(pieces.size(), 2u);
+  std::vector<Eigen::Vector2i> all;
+  for (const auto& piece : pieces) {
+    all.insert(all.end(), piece.begin(), piece.end());
+    // Each piece fills its extent: it is a rectangle.
+    Eigen::Vector2i lo = piece.front(), hi = piece.front();
+    for (const auto& c : piece) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
+    EXPECT_EQ(static_cast<long>(piece.size()), (hi - lo + Eigen::Vector2i::Ones()).prod());
+  }
+  EXPECT_EQ(Sorted(all), Sorted(l_shape));
+  // Asking for more than the 0.49 saving, or no depth, keeps the L whole.
+  EXPECT_EQ(SplitIntoRectangles(l_shape, 0.6, 3).size(), 1u);
+  EXPECT_EQ(SplitIntoRectangles(l_shape, 0.25, 0).size(), 1u);
+  // A rectangle is one piece even when any saving would do.
+  EXPECT_EQ(SplitIntoRectangles(Block(0, 0, 9, 4), 0.0, 3).size(), 1u);
+  EXPECT_TRUE(SplitIntoRectangles({}, 0.25, 3).empty());
+}
+
+TEST(CognitiveMapTest, LShapedPairIsTwoRectanglesNotItsExtent) {
+  // Two butted boxes: 1.0 x 0.3 m and 0.3 x 0.7 m on top of its west end.
+  const Rect long_arm{1.50, 1.00, 2.50, 1.30}, short_arm{1.50, 1.30, 1.80, 2.00};
+  const CognitiveMap map = BuildCognitiveMap(Room({long_arm, short_arm}), kInside, {});
+  ASSERT_EQ(map.obstacles.size(), 2u);
+  // Cut along either arm's edge: together the pieces cover exactly the L.
+  EXPECT_NEAR(TotalArea(map.obstacles), long_arm.Area() + short_arm.Area(), kTol);
+  for (const Rect& o : map.obstacles)
+    for (const Eigen::Vector2d& p :
+         {Eigen::Vector2d(o.x0 + 0.01, o.y0 + 0.01), Eigen::Vector2d(o.x1 - 0.01, o.y1 - 0.01)})
+      EXPECT_TRUE(long_arm.Contains(p) || short_arm.Contains(p)) << p.transpose();
+  // The concave corner is free.
+  const int corner = map.partitions.Find({2.2, 1.7});
+  ASSERT_GE(corner, 0);
+  EXPECT_EQ(map.partitions.partitions()[corner].label, Label::kFree);
+  ExpectTilesTheRoom(map);
+  CognitiveMapOptions whole;
+  whole.obstacle_split_saving = 1.0;
+  const CognitiveMap extent = BuildCognitiveMap(Room({long_arm, short_arm}), kInside, whole);
+  ASSERT_EQ(extent.obstacles.size(), 1u);
+  ExpectRectNear(extent.obstacles[0], {1.50, 1.00, 2.50, 2.00});
+}
+
 void ExpectThrowsNaming(const CognitiveMapOptions& options, const std::string& field) {
   try {
     options.Validate();
@@ -310,6 +358,11 @@ TEST(CognitiveMapTest, InvalidJoinDistanceOrFillThrowsNamingTheField) {
     CognitiveMapOptions options;
     options.obstacle_min_fill = fill;
     ExpectThrowsNaming(options, "obstacle_min_fill");
+  }
+  for (const double saving : {-0.1, 1.1, std::numeric_limits<double>::quiet_NaN()}) {
+    CognitiveMapOptions options;
+    options.obstacle_split_saving = saving;
+    ExpectThrowsNaming(options, "obstacle_split_saving");
   }
   // BuildCognitiveMap validates too.
   CognitiveMapOptions options;

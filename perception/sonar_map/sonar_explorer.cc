@@ -88,6 +88,12 @@ void SonarExplorerOptions::Validate() const {
   if (!(robot_radius_m + front_margin_m < path_clearance_m))
     throw std::invalid_argument(
         "front_margin_m: robot_radius_m + front_margin_m must be < path_clearance_m");
+  if (!(narrow_clearance_m > robot_radius_m + front_margin_m &&
+        narrow_clearance_m <= path_clearance_m))
+    throw std::invalid_argument(
+        "narrow_clearance_m: must be > robot_radius_m + front_margin_m and <= path_clearance_m, "
+        "got " +
+        msgs::ShortestNumber(narrow_clearance_m));
   RequireInRange("frontier_view_m", frontier_view_m, 0.01, 10.0);
   RequireNonNegative("frontier_wall_band_m", frontier_wall_band_m);
   if (!(frontier_view_m > waypoint_tolerance_m))
@@ -250,11 +256,11 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
     // when none is left either. Standing on a frontier goal already (the robot came to rest a few
     // centimetres past where it marked one) is arriving there: look from here and from the centre
     // of the robot's cell, which the goal test measures from; then no goal is left in that cell.
-    std::optional<std::vector<Eigen::Vector2d>> frontier = PlanToFrontier(planning, here);
+    std::optional<std::vector<Eigen::Vector2d>> frontier = PlanToAnyFrontier(planning, here);
     if (frontier && frontier->empty()) {
       MarkLooked(here);
       MarkLooked(grid_.CellCentre(cell.x(), cell.y()));
-      frontier = PlanToFrontier(planning, here);
+      frontier = PlanToAnyFrontier(planning, here);
     }
     if (frontier && !frontier->empty()) {
       path_ = std::move(*frontier);
@@ -262,8 +268,14 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
       target_partition_ = -1;
       return;
     }
-    finished_ = true;
+    Finish("map_complete", time_s);
   }
+}
+
+void SonarExplorer::Finish(const char* reason, double time_s) {
+  finished_ = true;
+  end_reason_ = reason;
+  end_time_s_ = time_s;
 }
 
 void SonarExplorer::MarkLooked(const Eigen::Vector2d& at) {
@@ -311,8 +323,11 @@ SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here
     }
   const std::vector<char> near = Dilate(occupied, W, H, options_.path_clearance_m / res);
   const std::vector<char> near_heard = Dilate(heard, W, H, options_.path_clearance_m / res);
-  out.safe.assign(occupied.size(), 0);
-  out.safe_from_heard.assign(occupied.size(), 0);
+  const std::vector<char> narrow = Dilate(occupied, W, H, options_.narrow_clearance_m / res);
+  const std::vector<char> narrow_heard = Dilate(heard, W, H, options_.narrow_clearance_m / res);
+  for (auto* mask :
+       {&out.safe, &out.safe_from_heard, &out.narrow_safe, &out.narrow_safe_from_heard})
+    mask->assign(occupied.size(), 0);
   for (int iy = 0; iy < H; ++iy)
     for (int ix = 0; ix < W; ++ix) {
       const std::size_t i = static_cast<std::size_t>(iy) * W + ix;
@@ -322,6 +337,8 @@ SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here
                           (grid_.CellCentre(ix, iy) - here).norm() < options_.path_clearance_m;
       out.safe[i] = !near[i] || escape;
       out.safe_from_heard[i] = !near_heard[i] || escape;
+      out.narrow_safe[i] = !narrow[i] || escape;
+      out.narrow_safe_from_heard[i] = !narrow_heard[i] || escape;
     }
   return out;
 }
@@ -365,23 +382,42 @@ std::vector<Eigen::Vector2d> SonarExplorer::SafePathTo(const PlanningCells& plan
   // shortest way over the grid cells that do, inside the room as fitted.
   std::vector<Eigen::Vector2d> path = PlanPath(map.partitions, map.graph, here, target);
   if (!path.empty() && LegsClear(planning, here, path)) return path;
+  path = CellPathTo(planning.safe, map.room, here, target);
+  if (path.empty()) path = CellPathTo(planning.narrow_safe, map.room, here, target);
+  return path;
+}
+
+std::vector<Eigen::Vector2d> SonarExplorer::CellPathTo(const std::vector<char>& safe,
+                                                       const Rect& room,
+                                                       const Eigen::Vector2d& here,
+                                                       const Eigen::Vector2d& target) const {
   const int W = grid_.width(), H = grid_.height();
-  std::vector<char> traversable(planning.safe.size(), 0), goal(planning.safe.size(), 0);
+  std::vector<char> traversable(safe.size(), 0), goal(safe.size(), 0);
   for (int iy = 0; iy < H; ++iy)
     for (int ix = 0; ix < W; ++ix) {
       const std::size_t i = static_cast<std::size_t>(iy) * W + ix;
-      traversable[i] = planning.safe[i] && map.room.Contains(grid_.CellCentre(ix, iy));
+      traversable[i] = safe[i] && room.Contains(grid_.CellCentre(ix, iy));
     }
   const Eigen::Vector2i t = grid_.CellAt(target);
   if (t.x() < 0) return {};
   goal[static_cast<std::size_t>(t.y()) * W + t.x()] = 1;
-  path = CellPath(traversable, goal, here).value_or(std::vector<Eigen::Vector2d>{});
+  std::vector<Eigen::Vector2d> path =
+      CellPath(traversable, goal, here).value_or(std::vector<Eigen::Vector2d>{});
   if (!path.empty()) path.back() = target;
   return path;
 }
 
-std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToFrontier(
+std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToAnyFrontier(
     const PlanningCells& planning, const Eigen::Vector2d& here) const {
+  std::optional<std::vector<Eigen::Vector2d>> path =
+      PlanToFrontier(planning, planning.safe_from_heard, here);
+  if (!path) path = PlanToFrontier(planning, planning.narrow_safe_from_heard, here);
+  return path;
+}
+
+std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToFrontier(
+    const PlanningCells& planning, const std::vector<char>& safe_from_heard,
+    const Eigen::Vector2d& here) const {
   const int W = grid_.width(), H = grid_.height();
   const double res = grid_.resolution_m();
   // Unknown cells next to an occupied one are the edge of a wall the sonar has heard, not space
@@ -404,7 +440,7 @@ std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToFrontier(
   for (int iy = 0; iy < H; ++iy)
     for (int ix = 0; ix < W; ++ix) {
       const std::size_t i = static_cast<std::size_t>(iy) * W + ix;
-      traversable[i] = planning.safe_from_heard[i] && planning.cells.cells[i] == CellState::kFree;
+      traversable[i] = safe_from_heard[i] && planning.cells.cells[i] == CellState::kFree;
       goal[i] = near_frontier[i] && traversable[i] && !Abandoned(grid_.CellCentre(ix, iy));
     }
   return CellPath(traversable, goal, here);
@@ -478,7 +514,7 @@ msgs::WheelSpeedCommand SonarExplorer::Explore(const robot::ControllerInput& inp
   const msgs::Pose2D& X_WR = input.X_WR_estimate;
   if (!explore_start_s_) explore_start_s_ = input.time_s;
   if (input.time_s - *explore_start_s_ > options_.explore_max_s) {
-    finished_ = true;
+    Finish("time_limit", input.time_s);
     return {};
   }
   if (input.time_s - last_replan_s_ >= options_.replan_period_s || path_.empty()) {

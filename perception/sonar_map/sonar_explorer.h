@@ -59,6 +59,11 @@ struct SonarExplorerOptions {
   // Every path keeps its centre this far from occupied cells and fitted obstacles: the seed's x/y
   // moves when they do, otherwise the shortest way over the grid cells that do.
   double path_clearance_m = 0.45;
+  // When nothing is reachable that way, paths may pass this close instead: a passage between two
+  // obstacles (or an obstacle and a wall) narrower than 2 path_clearance_m but wide enough for the
+  // robot is driven through rather than left unexplored. Between robot_radius_m + front_margin_m
+  // and path_clearance_m.
+  double narrow_clearance_m = 0.3;
   double stop_range_m = 0.3;  // a front echo closer than this aborts the move (into D)
   // Half-width of that corridor beyond the body. It is narrower than path_clearance_m, so that a
   // planned path is not blocked by the cells that shaped it.
@@ -94,6 +99,11 @@ class SonarExplorer final : public robot::Controller {
 
   msgs::WheelSpeedCommand Update(const robot::ControllerInput& input) override;
   bool Finished() const override { return finished_; }
+  // Why exploration ended: "map_complete" (no place and no frontier left that the robot can
+  // reach), "time_limit" (explore_max_s), or "" while it goes on.
+  const std::string& end_reason() const { return end_reason_; }
+  // Controller time at which it ended (negative while it goes on).
+  double end_time_s() const { return end_time_s_; }
 
   const LogOddsGrid& grid() const { return grid_; }
   // The map abstracted from the grid now (plus the failed moves in D).
@@ -118,6 +128,9 @@ class SonarExplorer final : public robot::Controller {
     CellMap cells;
     std::vector<char> safe;
     std::vector<char> safe_from_heard;
+    // The same with narrow_clearance_m.
+    std::vector<char> narrow_safe;
+    std::vector<char> narrow_safe_from_heard;
   };
   PlanningCells Planning(const Eigen::Vector2d& here, const std::vector<Rect>& obstacles) const;
   // Waypoints after the robot along the shortest traversable cell path to a goal cell: empty when
@@ -130,10 +143,19 @@ class SonarExplorer final : public robot::Controller {
   std::vector<Eigen::Vector2d> SafePathTo(const PlanningCells& planning, const CognitiveMap& map,
                                           const Eigen::Vector2d& here,
                                           const Eigen::Vector2d& target) const;
-  // Path (waypoints after the robot) to the nearest frontier not yet looked at: empty when the
-  // robot stands on a goal already, nullopt when no frontier is left or none can be reached.
-  std::optional<std::vector<Eigen::Vector2d>> PlanToFrontier(const PlanningCells& planning,
-                                                             const Eigen::Vector2d& here) const;
+  // The shortest way over the `safe` cells inside the fitted room; empty when there is none.
+  std::vector<Eigen::Vector2d> CellPathTo(const std::vector<char>& safe, const Rect& room,
+                                          const Eigen::Vector2d& here,
+                                          const Eigen::Vector2d& target) const;
+  // Path (waypoints after the robot) to the nearest frontier not yet looked at over the free
+  // `safe_from_heard` cells: empty when the robot stands on a goal already, nullopt when no
+  // frontier is left or none can be reached.
+  std::optional<std::vector<Eigen::Vector2d>> PlanToFrontier(
+      const PlanningCells& planning, const std::vector<char>& safe_from_heard,
+      const Eigen::Vector2d& here) const;
+  // PlanToFrontier with path_clearance_m, else with narrow_clearance_m.
+  std::optional<std::vector<Eigen::Vector2d>> PlanToAnyFrontier(const PlanningCells& planning,
+                                                                const Eigen::Vector2d& here) const;
   // While a bump panel is pressed, and for bump_back_off_s after: the command backing away.
   std::optional<msgs::WheelSpeedCommand> ReactToBump(const robot::ControllerInput& input);
   // Whether an occupied grid cell lies in the corridor the body sweeps within stop_range_m.
@@ -173,6 +195,9 @@ class SonarExplorer final : public robot::Controller {
   std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> failed_moves_;  // from, to points
   std::vector<Eigen::Vector2d> abandoned_;  // final targets of blocked moves: never tried again
   bool finished_ = false;
+  std::string end_reason_;
+  double end_time_s_ = -1.0;
+  void Finish(const char* reason, double time_s);
   msgs::WheelSpeedCommand command_;  // last command sent
   double last_command_s_ = -1.0;
 };

@@ -249,6 +249,17 @@ TEST(SonarExplorerTest, PathClearanceNotBeyondTheRobotThrowsNamingPathClearance)
   ExpectThrowsNaming(options, "path_clearance_m");
 }
 
+TEST(SonarExplorerTest, NarrowClearanceOutsideFrontCorridorToPathClearanceThrowsNamingIt) {
+  SonarExplorerOptions options = ClassicalOptions();
+  // The front corridor's half-width (0.25 m): a narrow path would be blocked by what shaped it.
+  options.narrow_clearance_m = options.robot_radius_m + options.front_margin_m;
+  ExpectThrowsNaming(options, "narrow_clearance_m");
+  options.narrow_clearance_m = options.path_clearance_m + 0.01;
+  ExpectThrowsNaming(options, "narrow_clearance_m");
+  options.narrow_clearance_m = options.path_clearance_m;
+  EXPECT_NO_THROW(MakeExplorer(options));
+}
+
 TEST(SonarExplorerTest, NonPositiveWheelAccelerationThrowsNamingTheField) {
   SonarExplorerOptions options = ClassicalOptions();
   options.max_wheel_accel_rad_s2 = 0.0;

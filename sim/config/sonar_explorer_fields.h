@@ -26,6 +26,8 @@ void VisitFields(A& a, perception::SonarExplorerOptions& o) {
   a("obstacle_free_p", o.map.obstacle_free_p);
   a("fit_obstacle_sides", o.map.fit_obstacle_sides);
   a("obstacle_min_fill", o.map.obstacle_min_fill);
+  a("obstacle_split_saving", o.map.obstacle_split_saving);
+  a("obstacle_from_faces", o.map.obstacle_from_faces);
   a("wall_distance_m", o.wall_distance_m);
   a("perimeter_turn_rad", o.perimeter_turn_rad);
   a("perimeter_max_s", o.perimeter_max_s);
@@ -50,6 +52,7 @@ void VisitFields(A& a, perception::SonarExplorerOptions& o) {
   a("frontier_min_cells", o.frontier_min_cells);
   a("robot_radius_m", o.robot_radius_m);
   a("path_clearance_m", o.path_clearance_m);
+  a("narrow_clearance_m", o.narrow_clearance_m);
   a("frontier_view_m", o.frontier_view_m);
   a("frontier_wall_band_m", o.frontier_wall_band_m);
 }

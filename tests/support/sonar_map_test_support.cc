@@ -19,6 +19,7 @@ void Run(const std::string& experiment, const std::filesystem::path& out,
   score->error = metrics["occupancy"]["error"].as<double>();
   score->grid_error = metrics["occupancy"]["grid_error"].as<double>();
   score->contacts = metrics["sensors"]["bumpers"]["contact_samples"].as<double>();
+  score->end_reason = metrics["exploration"]["end_reason"].as<std::string>();
 }
 
 }  // namespace

@@ -10,6 +10,7 @@ struct SonarMapScore {
   double error = 0.0;       // occupancy.error: e of the partition map
   double grid_error = 0.0;  // occupancy.grid_error
   double contacts = 0.0;    // sensors.bumpers.contact_samples
+  std::string end_reason;   // exploration.end_reason
 };
 
 // Runs `plywood run experiments/<experiment> --quiet --out <out> <extra_args>` (the run's stdout
