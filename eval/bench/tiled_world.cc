@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "perception/logs/regular_file.h"
 #include "sim/runner/format_number.h"
 #include "sim/runner/text_file.h"
 
@@ -12,7 +13,7 @@ namespace plywood::eval {
 
 std::string TiledWorldMjcf(const std::filesystem::path& world_xml, int tiles_x, int tiles_y,
                            double pitch_x_m, double pitch_y_m) {
-  if (!std::filesystem::is_regular_file(world_xml)) {
+  if (!perception::IsRegularFile(world_xml)) {
     throw std::runtime_error(world_xml.string() + ": cannot read");
   }
   const std::string text = sim::ReadTextFile(world_xml);

@@ -6,6 +6,7 @@
 
 #include "perception/lines/line_extractor_factory.h"
 #include "perception/logs/carmen_log.h"
+#include "perception/logs/regular_file.h"
 #include "render/overlay.h"
 #include "render/png_image.h"
 #include "render/world_to_pixel.h"
@@ -69,7 +70,7 @@ LogReplaySummary RunLogReplay(const LogReplayRequest& request) {
   sim::LinesConfig lines;
   sim::ReadLinesConfig(sim::YamlFields(lines_node, "--set", ""), lines);
   const auto extractor = perception::MakeLineExtractor(request.extractor, lines.options);
-  if (!std::filesystem::is_regular_file(request.log)) {
+  if (!perception::IsRegularFile(request.log)) {
     throw std::invalid_argument(request.log.string() + ": no such log file");
   }
   perception::CarmenReadOptions read_options;

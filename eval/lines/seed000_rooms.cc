@@ -2,6 +2,7 @@
 
 #include <numbers>
 
+#include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
 #include "sim/config/robot_catalog.h"
 #include "sim/config/yaml_fields.h"
@@ -13,11 +14,11 @@ std::filesystem::path ResolveWorld(const std::string& text, const sim::Experimen
                                    const sim::YamlFields& fields, const std::string& key) {
   const std::filesystem::path given(text);
   if (given.is_absolute()) {
-    if (std::filesystem::is_regular_file(given)) return given.lexically_normal();
+    if (perception::IsRegularFile(given)) return given.lexically_normal();
   } else {
     const auto base = std::filesystem::absolute(config.source_file).parent_path();
     for (const auto& root : {base, sim::DataRoot()}) {
-      if (std::filesystem::is_regular_file(root / given)) return (root / given).lexically_normal();
+      if (perception::IsRegularFile(root / given)) return (root / given).lexically_normal();
     }
   }
   fields.Fail(key, "no such file: " + text);

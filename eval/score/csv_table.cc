@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "perception/logs/parse_number.h"
+#include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
 
 namespace plywood::eval {
@@ -52,7 +53,7 @@ long CsvTable::Integer(const CsvRow& row, std::size_t column, const std::string&
 CsvTable ReadCsv(const std::filesystem::path& path, const CsvReadOptions& options) {
   CsvTable table;
   table.file = path.string();
-  if (!std::filesystem::is_regular_file(path)) {
+  if (!perception::IsRegularFile(path)) {
     throw sim::ConfigError(table.file, "", "no such file");
   }
   std::ifstream in(path, std::ios::binary);

@@ -7,6 +7,7 @@
 #include <iterator>
 #include <string>
 
+#include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
 
 namespace plywood::eval {
@@ -161,7 +162,7 @@ GridImage ReadPgm(const std::string& file, const std::string& bytes) {
 
 GridImage ReadGridImage(const std::filesystem::path& path) {
   const std::string file = path.string();
-  if (!std::filesystem::is_regular_file(path)) throw sim::ConfigError(file, "", "no such file");
+  if (!perception::IsRegularFile(path)) throw sim::ConfigError(file, "", "no such file");
   std::ifstream in(path, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (bytes.empty()) throw sim::ConfigError(file, "", "empty file");

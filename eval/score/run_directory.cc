@@ -1,6 +1,7 @@
 #include "eval/score/run_directory.h"
 
 #include "eval/score/csv_table.h"
+#include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
 #include "sim/runner/run_directory.h"
 
@@ -10,7 +11,7 @@ std::filesystem::path RunFile(const std::filesystem::path& run_dir, const std::s
                               const std::string& why) {
   sim::RequireFinishedRun(run_dir);  // a killed or failed run is never scored
   const std::filesystem::path path = run_dir / name;
-  if (!std::filesystem::is_regular_file(path)) {
+  if (!perception::IsRegularFile(path)) {
     throw sim::ConfigError(path.string(), "", "missing (" + why + ")");
   }
   return path;

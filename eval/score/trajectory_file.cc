@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "eval/score/csv_table.h"
+#include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
 #include "sim/runner/metrics.h"
 
@@ -68,7 +69,7 @@ std::vector<NamedTrajectory> ReadPlywoodCsv(const std::filesystem::path& path) {
 
 std::vector<NamedTrajectory> ReadTrajectoryFile(const std::filesystem::path& path,
                                                 const std::string& tum_name) {
-  if (!std::filesystem::is_regular_file(path)) {
+  if (!perception::IsRegularFile(path)) {
     throw sim::ConfigError(path.string(), "", "no such file");
   }
   if (IsPlywoodCsv(path)) return ReadPlywoodCsv(path);

@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
 #include "sim/config/robot_catalog.h"
 #include "sim/config/yaml_fields.h"
@@ -24,12 +25,12 @@ fs::path ResolveFile(const std::string& text, const fs::path& base_dir,
                      const sim::YamlFields& fields, const std::string& key) {
   const fs::path given(text);
   if (given.is_absolute()) {
-    if (!fs::is_regular_file(given)) fields.Fail(key, "no such file: " + text);
+    if (!perception::IsRegularFile(given)) fields.Fail(key, "no such file: " + text);
     return given.lexically_normal();
   }
   for (const fs::path& base : {base_dir, sim::DataRoot()}) {
     const fs::path candidate = (base / given).lexically_normal();
-    if (fs::is_regular_file(candidate)) return candidate;
+    if (perception::IsRegularFile(candidate)) return candidate;
   }
   fields.Fail(key, "no such file: " + text + " (looked in " + base_dir.string() + " and " +
                        sim::DataRoot().string() + ")");
@@ -212,7 +213,7 @@ SweepSpec LoadSweepSpec(const fs::path& path) {
   SweepSpec spec;
   spec.source_file = path.string();
   std::ifstream in(path, std::ios::binary);
-  if (!fs::is_regular_file(path) || !in) {
+  if (!perception::IsRegularFile(path) || !in) {
     throw sim::ConfigError(path.string(), "", "no such sweep file (or not readable)");
   }
   std::stringstream text;

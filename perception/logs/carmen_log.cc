@@ -12,6 +12,7 @@
 #include <stdexcept>
 
 #include "perception/logs/parse_number.h"
+#include "perception/logs/regular_file.h"
 
 namespace plywood::perception {
 namespace {
@@ -186,7 +187,7 @@ bool ParseCarmenLine(const std::string& line, CarmenLog* log) {
 }
 
 CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptions& options) {
-  if (!std::filesystem::is_regular_file(path)) {
+  if (!IsRegularFile(path)) {
     throw std::runtime_error(path.string() + ": no such log file");
   }
   CarmenLog log;
@@ -232,7 +233,14 @@ CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptio
     }
   }
   for (auto& record : log.lasers) {
-    if (record.scan.range_max_m == 0.0) record.scan.range_max_m = range_max;
+    if (record.scan.range_max_m != 0.0) continue;
+    // Every range 0 and no PARAM: nothing says how far the scanner sees (found by fuzzing).
+    if (!(range_max > 0.0)) {
+      throw std::runtime_error(path.string() + ":" + std::to_string(record.line_number) +
+                               ": the maximum range is unknown: no PARAM front_laser_max and no "
+                               "positive range in the log");
+    }
+    record.scan.range_max_m = range_max;
   }
   return log;
 }

@@ -151,6 +151,23 @@ TEST(CarmenLogTest, AnInfiniteOrNonPositiveFrontLaserMaxIsRefusedWithItsLine) {
   }
 }
 
+TEST(CarmenLogTest, AllZeroRangesWithoutAParamLeaveTheMaximumRangeUnknownAndAreRefused) {
+  // Found by fuzzing: the largest range in the log stood in for the maximum, and was 0.
+  const auto path = WriteTemp("zeros.log", Flaser("0 0 0", 3));
+  try {
+    ReadCarmenLog(path);
+    ADD_FAILURE() << "a log whose maximum range is unknown was read";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("zeros.log:1: the maximum range is unknown"),
+              std::string::npos)
+        << e.what();
+  }
+  // With the PARAM the same scan is fine: every beam a no-return.
+  const auto with_param =
+      WriteTemp("zeros_param.log", "PARAM front_laser_max 8\n" + Flaser("0 0 0", 3));
+  EXPECT_EQ(ReadCarmenLog(with_param).lasers.front().scan.range_max_m, 8.0);
+}
+
 TEST(CarmenLogTest, ALogWithoutAUsableScanIsRefused) {
   std::string random_bytes;
   std::uint32_t state = 12345;

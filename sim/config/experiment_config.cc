@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "perception/logs/regular_file.h"
 #include "sim/config/config_archive.h"
 #include "sim/config/config_error.h"
 #include "sim/config/config_fields.h"
@@ -25,12 +26,12 @@ std::filesystem::path ResolvePath(const std::string& text, const std::filesystem
                                   const YamlFields& fields, const std::string& key) {
   const std::filesystem::path given(text);
   if (given.is_absolute()) {
-    if (!std::filesystem::is_regular_file(given)) fields.Fail(key, "no such file: " + text);
+    if (!perception::IsRegularFile(given)) fields.Fail(key, "no such file: " + text);
     return given.lexically_normal();
   }
   for (const auto& base : {base_dir, DataRoot()}) {
     const std::filesystem::path candidate = (base / given).lexically_normal();
-    if (std::filesystem::is_regular_file(candidate)) return candidate;
+    if (perception::IsRegularFile(candidate)) return candidate;
   }
   fields.Fail(key, "no such file: " + text + " (looked in " + base_dir.string() + " and " +
                        DataRoot().string() + ")");

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
 #include "sim/world/contact_filter.h"
 
@@ -48,7 +49,7 @@ Scene::Scene(const SceneOptions& options) : options_(options) {
   namespace fs = std::filesystem;
   for (const auto& [path, field] :
        {std::pair{options.world_mjcf, "world"}, std::pair{options.robot_mjcf, "robot"}}) {
-    if (!fs::is_regular_file(path)) {
+    if (!perception::IsRegularFile(path)) {
       throw ConfigError(path.string(), "", std::string("no such ") + field + " MJCF file");
     }
   }
