@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "eval/geometric_map/geometric_map_run.h"
 #include "eval/lines/line_scan_scorer.h"
 #include "perception/geometric_map/geometric_mapper.h"
 #include "perception/sonar_map/sonar_explorer.h"
@@ -196,16 +197,8 @@ const FrameContent& RunContent::Update(const sim::ExperimentRunner& runner) {
     for (; ir_scans_seen_ < record.ir_scanner.size(); ++ir_scans_seen_) {
       const sim::LaserRecord& ir = record.ir_scanner[ir_scans_seen_];
       if (!ended && content_.time_s < ir.scan.time_s + max_age_s) break;
-      while (next_sonar_ + 1 < record.sonar.size() &&
-             std::abs(record.sonar[next_sonar_ + 1].time_s - ir.scan.time_s) <=
-                 std::abs(record.sonar[next_sonar_].time_s - ir.scan.time_s)) {
-        ++next_sonar_;
-      }
       const msgs::RangeRing* sonar =
-          next_sonar_ < record.sonar.size() &&
-                  std::abs(record.sonar[next_sonar_].time_s - ir.scan.time_s) <= max_age_s
-              ? &record.sonar[next_sonar_]
-              : nullptr;
+          eval::NearestSonarRing(record.sonar, ir.scan.time_s, max_age_s, &next_sonar_);
       geometric_mapper_->AddScan(ir.scan, sonar, ir.X_WR_odometry);
       added = true;
     }

@@ -70,23 +70,24 @@ std::vector<std::pair<int, std::pair<Eigen::Vector2d, double>>> SmallObjects(
 
 }  // namespace
 
+const msgs::RangeRing* NearestSonarRing(const std::vector<msgs::RangeRing>& rings, double time_s,
+                                        double max_age_s, std::size_t* cursor) {
+  std::size_t& i = *cursor;
+  while (i + 1 < rings.size() &&
+         std::abs(rings[i + 1].time_s - time_s) <= std::abs(rings[i].time_s - time_s)) {
+    ++i;
+  }
+  return i < rings.size() && std::abs(rings[i].time_s - time_s) <= max_age_s ? &rings[i] : nullptr;
+}
+
 GeometricMapRun BuildGeometricMap(const sim::RunRecord& record,
                                   const sim::GeometricMapConfig& config) {
   perception::GeometricMapper mapper(config.options);
   GeometricMapRun run;
   std::size_t next_sonar = 0;
   for (const sim::LaserRecord& ir : record.ir_scanner) {
-    // The sonar ring nearest in time.
-    while (next_sonar + 1 < record.sonar.size() &&
-           std::abs(record.sonar[next_sonar + 1].time_s - ir.scan.time_s) <=
-               std::abs(record.sonar[next_sonar].time_s - ir.scan.time_s)) {
-      ++next_sonar;
-    }
     const msgs::RangeRing* sonar =
-        next_sonar < record.sonar.size() &&
-                std::abs(record.sonar[next_sonar].time_s - ir.scan.time_s) <= config.max_sonar_age_s
-            ? &record.sonar[next_sonar]
-            : nullptr;
+        NearestSonarRing(record.sonar, ir.scan.time_s, config.max_sonar_age_s, &next_sonar);
     run.corrected.push_back(mapper.AddScan(ir.scan, sonar, ir.X_WR_odometry));
     run.truth.push_back(ir.X_WR_truth);
     run.odometry.push_back(ir.X_WR_odometry);

@@ -27,6 +27,11 @@ struct GeometricMapRun {
   std::vector<char> face_matched;
 };
 
+// The ring of `rings` (in time order) nearest in time to `time_s`, or null when it is more than
+// max_age_s away. `cursor` remembers where the search stopped: call with non-decreasing times.
+const msgs::RangeRing* NearestSonarRing(const std::vector<msgs::RangeRing>& rings, double time_s,
+                                        double max_age_s, std::size_t* cursor);
+
 // Feeds every IR scan of `record` (with the sonar ring nearest in time, if within
 // config.max_sonar_age_s) at its odometry pose to a perception::GeometricMapper.
 GeometricMapRun BuildGeometricMap(const sim::RunRecord& record,
