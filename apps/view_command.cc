@@ -86,6 +86,12 @@ int Replay(const ViewFlags& flags) {
 int Bench(const ViewFlags& flags, const sim::ExperimentConfig& loaded) {
   sim::ExperimentConfig config = loaded;
   config.duration_s = flags.bench_seconds;
+  // Every overlay on means something to draw in each: without a `lines:` section the extracted
+  // lines overlay would be empty, so the bench extracts lines with split_and_merge.
+  if (!config.lines.given && config.sensors.laser) {
+    config.lines.given = true;
+    config.lines.extractors = {"split_and_merge"};
+  }
   sim::ExperimentRunner runner(config);
   viewer::LiveViewerOptions options;
   options.window = WindowOf(flags);
