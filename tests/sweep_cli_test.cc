@@ -253,6 +253,104 @@ TEST(SweepCliTest, KillNineAndResumeGivesTheSameResultsWithoutRedoingRuns) {
   EXPECT_TRUE(fs::is_empty(out / "runs" / ".partial"));
 }
 
+// The time complete.json of each finished run was written: a run made again gets a new one.
+std::map<std::string, fs::file_time_type> RunMarkTimes(const fs::path& out) {
+  std::map<std::string, fs::file_time_type> times;
+  for (const auto& [id, inode] : FinishedRuns(out)) {
+    times[id] = fs::last_write_time(out / "runs" / id / "complete.json");
+  }
+  return times;
+}
+
+// Replaces the value of `"plywood_build_id": "..."` in a JSON file with `id`.
+void SetRecordedBuild(const fs::path& file, const std::string& id) {
+  std::string text = Slurp(file);
+  const std::string key = "\"plywood_build_id\": \"";
+  const std::size_t at = text.find(key);
+  ASSERT_NE(at, std::string::npos) << file << " records no build";
+  const std::size_t from = at + key.size();
+  text.replace(from, text.find('"', from) - from, id);
+  WriteFile(file, text);
+}
+
+TEST(SweepCliTest, ResultsOfAnotherBuildOrOfChangedInputsAreNeverKept) {
+  const fs::path dir = MakeTempDir("SweepStale");
+  // The experiment is a copy, so the test can change it.
+  const fs::path experiment =
+      WriteFile(dir / "default.yaml", Slurp(SourceRoot() / "experiments/default.yaml"));
+  std::string text = SmallSweep();
+  text.replace(text.find(SourceRoot().string() + "/experiments/default.yaml"),
+               (SourceRoot() / "experiments/default.yaml").string().size(), experiment.string());
+  const fs::path sweep = WriteFile(dir / "small.yaml", text);
+  const fs::path out = dir / "out";
+  const std::string command = "sweep " + sweep.string() + " --out " + out.string();
+  ASSERT_EQ(RunPlywood(command + " --quiet", dir).exit_code, 0);
+  const std::string results = Slurp(out / "results.csv");
+  const auto first = RunMarkTimes(out);
+  ASSERT_EQ(first.size(), 6u);
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));  // file times must be able to move
+
+  // Resuming with the same build and inputs keeps every run.
+  ASSERT_EQ(RunPlywood(command + " --quiet", dir).exit_code, 0);
+  EXPECT_EQ(RunMarkTimes(out), first);
+
+  // One run made by another build: not counted by --collect, made again by the sweep, alone.
+  const std::string odd = first.begin()->first;
+  SetRecordedBuild(out / "runs" / odd / "complete.json", "0123456789abcdef");
+  const auto collected = RunPlywood("sweep --collect " + out.string(), dir);
+  EXPECT_EQ(collected.exit_code, 1);
+  EXPECT_NE(collected.out.find("5 of 6 runs finished"), std::string::npos) << collected.out;
+  EXPECT_NE(collected.out.find("another plywood build"), std::string::npos) << collected.out;
+  ASSERT_EQ(RunPlywood(command + " --quiet", dir).exit_code, 0);
+  auto now = RunMarkTimes(out);
+  for (const auto& [id, time] : first) {
+    if (id == odd) {
+      EXPECT_NE(now.at(id), time) << id << " was kept";
+    } else {
+      EXPECT_EQ(now.at(id), time) << id << " was made again";
+    }
+  }
+  EXPECT_EQ(Slurp(out / "results.csv"), results);
+
+  // The whole sweep run by another build: started again from scratch, the same results.
+  const auto before_rebuild = RunMarkTimes(out);
+  SetRecordedBuild(out / "sweep.json", "0123456789abcdef");
+  auto r = RunPlywood(command, dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("another plywood build (build id 0123456789ab"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("starting again"), std::string::npos) << r.err;
+  now = RunMarkTimes(out);
+  for (const auto& [id, time] : before_rebuild) EXPECT_NE(now.at(id), time) << id << " was kept";
+  EXPECT_EQ(Slurp(out / "results.csv"), results);
+
+  // An edited experiment: expanded again; cells whose resolved config changed run anew (all six
+  // here: the edit is a key every cell inherits), and the table follows the edit.
+  const auto before_edit = RunMarkTimes(out);
+  WriteFile(experiment, Slurp(experiment) + "odometry:\n  gyro: {}\n");
+  r = RunPlywood(command, dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find(experiment.string() + " changed since the sweep was expanded"),
+            std::string::npos)
+      << r.err;
+  now = RunMarkTimes(out);
+  EXPECT_EQ(now.size(), 12u);  // the six earlier runs stay in runs/ but no table reads them
+  int kept = 0;
+  for (const auto& [id, time] : before_edit) kept += now.at(id) == time;
+  EXPECT_EQ(kept, 6);
+  const auto edited = eval::ParseCsv(Slurp(out / "results.csv"));
+  ASSERT_EQ(edited.size(), 7u);
+  for (const auto& [id, time] : before_edit) {
+    for (const auto& row : edited) EXPECT_NE(row[0], id) << "an earlier run is in the table";
+  }
+
+  // A shard never starts a shared folder again (other shards may be running in it).
+  SetRecordedBuild(out / "sweep.json", "0123456789abcdef");
+  r = RunPlywood(command + " --shard 0/2", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("run the whole sweep once"), std::string::npos) << r.err;
+  EXPECT_EQ(RunMarkTimes(out).size(), 12u);
+}
+
 TEST(SweepCliTest, ASecondSweepIntoARunningOnesDirectoryIsRefused) {
   const fs::path dir = MakeTempDir("SweepLocked");
   const fs::path sweep = WriteFile(dir / "small.yaml", SmallSweep());

@@ -46,16 +46,21 @@ int Collect(const fs::path& out_dir, bool quiet) {
   Plot(out_dir, quiet);
   if (!quiet) {
     std::printf("%s", outcome.table.c_str());
-    std::printf("\n%-12s %d of %d runs finished, %d failed, %d not run\n", "sweep", outcome.done,
+    std::printf("\n%-12s %d of %d runs finished, %d failed, %d not run", "sweep", outcome.done,
                 outcome.cells, outcome.failed, outcome.missing);
+    if (outcome.other_build > 0) {
+      std::printf(" (%d of them finished by another plywood build: run the sweep to redo them)",
+                  outcome.other_build);
+    }
+    std::printf("\n");
     std::printf("%-12s %s (results.csv, summary.csv, failures.csv, plots/)\n", "results",
                 out_dir.c_str());
   }
   return outcome.done == outcome.cells ? 0 : 1;
 }
 
-std::vector<SweepCell> Cells(const SweepSpec& spec, const SweepLayout& layout) {
-  if (auto cells = ReadSweepManifest(spec, layout)) return *cells;
+std::vector<SweepCell> Cells(const SweepSpec& spec, const SweepLayout& layout, bool quiet) {
+  if (auto cells = ReadSweepManifest(spec, layout, quiet)) return *cells;
   CheckSweepOverrides(spec);  // before generating worlds: bad input leaves nothing behind
   const std::vector<SweepWorld> worlds = PrepareSweepWorlds(spec, layout.out);
   std::vector<SweepCell> cells = ExpandCells(spec, worlds);
@@ -72,7 +77,8 @@ int RunSweep(const SweepInvocation& invocation) {
   const SweepLayout layout{out};
   PrepareSweepFolder(spec, out);
   const SweepFolderLock lock(out, invocation.shard_index, invocation.shard_count, invocation.quiet);
-  const std::vector<SweepCell> cells = Cells(spec, layout);
+  StartAgainIfStale(layout, invocation.shard_count > 1, invocation.quiet);
+  const std::vector<SweepCell> cells = Cells(spec, layout, invocation.quiet);
   if (!invocation.quiet && invocation.shard_count == 1) {
     std::fprintf(stderr, "plywood sweep: %s: %zu runs into %s\n", spec.name.c_str(), cells.size(),
                  out.c_str());

@@ -10,6 +10,7 @@
 
 #include "eval/sweep/sweep_csv.h"
 #include "sim/config/config_error.h"
+#include "sim/runner/build_id.h"
 #include "sim/runner/metrics.h"
 #include "sim/runner/run_directory.h"
 #include "sim/runner/text_file.h"
@@ -108,6 +109,7 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
   } catch (const nlohmann::json::exception& e) {
     throw sim::ConfigError(meta_file.string(), "", std::string("not valid JSON: ") + e.what());
   }
+  const std::string sweep_build = meta.value("plywood_build_id", std::string());
   const auto axes = meta.value("axes", std::vector<std::string>{});
   auto chosen = meta.value("metrics", std::vector<std::string>{});
   const bool print_table = !chosen.empty();  // hundreds of metrics would drown the screen
@@ -145,7 +147,10 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
     std::vector<std::string> cell(row.begin() + 1, row.end());
     const fs::path run = out_dir / "runs" / id;
     const fs::path failure = out_dir / "failures" / (id + ".txt");
-    if (sim::WhyNotAFinishedRun(run).empty()) {  // a run without its marker never counts
+    // A run without its marker never counts, nor one another build made (sweep.json names the
+    // build that ran the sweep; an old sweep.json without it accepts any).
+    if (sim::WhyNotAFinishedRun(run).empty() &&
+        (sweep_build.empty() || sim::RunBuildId(run) == sweep_build)) {
       Row done{cell, ReadRunMetrics(run / "metrics.json")};
       for (const auto& [key, text] : done.metrics.text) metric_keys.insert(key);
       finished.push_back(std::move(done));
@@ -160,6 +165,7 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
       failures_csv += CsvLine(cell);
       ++outcome.failed;
     } else {
+      if (sim::WhyNotAFinishedRun(run).empty()) ++outcome.other_build;
       ++outcome.missing;
     }
   }

@@ -26,8 +26,9 @@ struct SweepCollectOutcome {
   int cells = 0;
   int done = 0;
   int failed = 0;
-  int missing = 0;    // neither finished nor failed (not run yet, or another shard's)
-  std::string table;  // the printed summary
+  int missing = 0;      // neither finished nor failed (not run yet, or another shard's)
+  int other_build = 0;  // of `missing`: finished by another plywood build than the sweep's
+  std::string table;    // the printed summary
 };
 
 // Reads a sweep directory (its cells.csv and sweep.json, every finished run's metrics.json and

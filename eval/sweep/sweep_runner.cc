@@ -20,6 +20,7 @@
 
 #include "eval/sweep/sweep_csv.h"
 #include "sim/config/config_error.h"
+#include "sim/runner/build_id.h"
 #include "sim/runner/run_directory.h"
 #include "sim/runner/text_file.h"
 
@@ -211,6 +212,7 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
   meta["group_by"] = spec.group_by;
   meta["cells"] = cells.size();
   meta["inputs"] = InputHashes(spec);
+  meta["plywood_build_id"] = sim::ProgramBuildId();
 
   std::vector<std::string> header{"index",  "id",      "experiment", "world",
                                   "family", "profile", "seed"};
@@ -261,7 +263,8 @@ SweepRunOutcome RunSweepCells(const std::vector<SweepCell>& cells, const SweepLa
       if (entry.path().filename().string().rfind(cell.id + ".", 0) == 0)
         fs::remove_all(entry.path());
     }
-    if (sim::WhyNotAFinishedRun(layout.RunDir(cell.id)).empty()) {
+    if (sim::WhyNotAFinishedRun(layout.RunDir(cell.id)).empty() &&
+        sim::RunBuildId(layout.RunDir(cell.id)) == sim::ProgramBuildId()) {
       ++outcome.already_done;
       ++done;
     } else {
@@ -316,13 +319,66 @@ SweepRunOutcome RunSweepCells(const std::vector<SweepCell>& cells, const SweepLa
   return outcome;
 }
 
+std::string WhySweepIsStale(const SweepLayout& layout) {
+  const fs::path meta_file = layout.out / "sweep.json";
+  if (!fs::is_regular_file(meta_file)) return "";  // nothing expanded yet
+  const nlohmann::json meta = nlohmann::json::parse(sim::ReadTextFile(meta_file), nullptr, false);
+  if (!meta.is_object()) return "its sweep.json is damaged";
+  const std::string build = meta.value("plywood_build_id", std::string());
+  if (build != sim::ProgramBuildId()) {
+    return "it was run by another plywood build (build id " +
+           (build.empty() ? std::string("unrecorded") : build.substr(0, 12)) + ", this one " +
+           sim::ProgramBuildId().substr(0, 12) + ")";
+  }
+  return "";
+}
+
+void StartAgainIfStale(const SweepLayout& layout, bool shard, bool quiet) {
+  const std::string why = WhySweepIsStale(layout);
+  if (why.empty()) return;
+  if (shard) {
+    // Other shards may be running in the folder: only a whole sweep may start it again.
+    throw sim::ConfigError(layout.out.string(), "",
+                           why + "; run the whole sweep once (it starts again) before its shards");
+  }
+  if (!quiet) {
+    std::fprintf(stderr, "plywood sweep: %s: %s; its results no longer hold: starting again\n",
+                 layout.out.c_str(), why.c_str());
+  }
+  // Everything but the sweep file and the locks is made from them again (worlds included: the
+  // generator may have changed too).
+  for (const auto& entry : fs::directory_iterator(layout.out)) {
+    const std::string name = entry.path().filename().string();
+    if (name == "sweep.yaml" || name.ends_with(".lock")) continue;
+    fs::remove_all(entry.path());
+  }
+}
+
 std::optional<std::vector<SweepCell>> ReadSweepManifest(const SweepSpec& spec,
-                                                        const SweepLayout& layout) {
+                                                        const SweepLayout& layout, bool quiet) {
   const fs::path copy = layout.out / "sweep.yaml";
   const fs::path cells_file = layout.out / "cells.json";
   if (!fs::is_regular_file(copy) || sim::ReadTextFile(copy) != spec.text ||
       !fs::is_regular_file(cells_file))
     return std::nullopt;
+  // An edited experiment, profile or world: expand again (a cell's id is the hash of its resolved
+  // config and world, so unchanged cells keep their runs and changed ones run anew).
+  const nlohmann::json meta =
+      nlohmann::json::parse(sim::ReadTextFile(layout.out / "sweep.json"), nullptr, false);
+  if (!meta.is_object()) return std::nullopt;
+  const auto recorded = meta.value("inputs", std::map<std::string, std::string>{});
+  for (const auto& [file, hash] : InputHashes(spec)) {
+    const auto it = recorded.find(file);
+    if (it == recorded.end() || it->second != hash) {
+      if (!quiet) {
+        std::fprintf(stderr,
+                     "plywood sweep: %s changed since the sweep was expanded: expanding it "
+                     "again (cells it changed run anew)\n",
+                     file.c_str());
+      }
+      return std::nullopt;
+    }
+  }
   std::vector<SweepCell> cells;
   try {
     for (const auto& item : nlohmann::json::parse(sim::ReadTextFile(cells_file))) {

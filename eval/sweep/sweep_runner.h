@@ -83,9 +83,19 @@ class SweepFolderLock {
 void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cells,
                         const SweepLayout& layout);
 
-// The cells written by WriteSweepManifest when OUT holds this very sweep (same sweep.yaml bytes),
-// so Slurm tasks and resumed sweeps need not expand and check every cell again.
+// Empty when `layout.out` holds nothing yet or results this program can resume from; otherwise
+// why not, as one phrase: another plywood build ran it (ProgramBuildId differs).
+std::string WhySweepIsStale(const SweepLayout& layout);
+
+// When the folder is stale, says why and removes everything but sweep.yaml and the locks (runs,
+// generated worlds, tables), so the sweep starts again; a shard (other shards may be running) is
+// refused instead. @throws sim::ConfigError naming the folder for a stale folder of a shard.
+void StartAgainIfStale(const SweepLayout& layout, bool shard, bool quiet);
+
+// The cells written by WriteSweepManifest when OUT holds this very sweep (same sweep.yaml bytes)
+// made from the same input files (experiments, profiles, worlds: else says so unless `quiet`), so
+// Slurm tasks and resumed sweeps need not expand and check every cell again.
 std::optional<std::vector<SweepCell>> ReadSweepManifest(const SweepSpec& spec,
-                                                        const SweepLayout& layout);
+                                                        const SweepLayout& layout, bool quiet);
 
 }  // namespace plywood::eval

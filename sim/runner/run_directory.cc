@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "sim/config/config_error.h"
+#include "sim/runner/build_id.h"
 #include "sim/runner/json_text.h"
 #include "sim/runner/text_file.h"
 
@@ -93,7 +94,10 @@ std::string CompletionRecord(const fs::path& dir) {
     if (name == "timing.json" || name == kRunCompleteFile) continue;
     files[name] = entry.file_size();
   }
-  return WriteJson(nlohmann::json{{"files", files}});
+  nlohmann::json record{{"files", files}};
+  // Which code made the run, so a sweep never mixes runs of different builds.
+  if (!ProgramBuildId().empty()) record["plywood_build_id"] = ProgramBuildId();
+  return WriteJson(record);
 }
 
 }  // namespace

@@ -7,7 +7,8 @@ namespace plywood::sim {
 
 // The completion marker of a run directory: written last, just before the directory is renamed
 // into place, listing every file of the run with its size in bytes (timing.json, which holds
-// wall-clock figures, is left out so that equal runs give equal bytes).
+// wall-clock figures, is left out so that equal runs give equal bytes), and the build ID of the
+// plywood program that made it (sim/runner/build_id.h).
 inline constexpr const char* kRunCompleteFile = "complete.json";
 
 // Whether `dir` holds an earlier Plywood run, finished or not: its config.yaml starts with
