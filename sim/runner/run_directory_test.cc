@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "sim/config/config_error.h"
+#include "sim/runner/build_id.h"
 #include "sim/runner/text_file.h"
 #include "tests/support/mujoco_test_support.h"
 
@@ -36,7 +37,9 @@ TEST(RunDirectoryTest, AnAbsentTargetIsMadeEmptyAndFilledOnlyOnCommit) {
   EXPECT_EQ(WhyNotAFinishedRun(dir / "run"), "");
   EXPECT_FALSE(fs::exists(dir / ("run.partial-" + std::to_string(getpid()))));
   EXPECT_EQ(ReadTextFile(dir / "run" / kRunCompleteFile),
-            "{\n  \"files\": {\n    \"config.yaml\": 20,\n    \"metrics.json\": 3\n  }\n}\n");
+            "{\n  \"files\": {\n    \"config.yaml\": 20,\n    \"metrics.json\": 3\n  },\n"
+            "  \"plywood_build_id\": \"" +
+                ProgramBuildId() + "\"\n}\n");
 }
 
 TEST(RunDirectoryTest, AnUncommittedRunLeavesNothingBehind) {
