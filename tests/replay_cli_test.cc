@@ -75,6 +75,10 @@ TEST(ReplayCliTest, ExtractorOptionsAreSetByKeyAndBadKeysAreNamed) {
       RunPlywood("replay " + log.string() + " --out " + (dir / "a").string(), dir);
   ASSERT_EQ(defaults.exit_code, 0) << defaults.err;
   EXPECT_NE(Slurp(dir / "a" / "metrics.json").find("\"lines\": 3"), std::string::npos);
+  // Per scan: the wall seen head-on (|bearing| < 75.5 deg: 151 valid rays), one line explaining
+  // every ray.
+  EXPECT_EQ(Slurp(dir / "a" / "scans.csv"),
+            "scan,valid_rays,explained,lines\n0,151,151,1\n1,151,151,1\n2,151,151,1\n");
   const Result strict =
       RunPlywood("replay " + log.string() + " --set split_and_merge.min_points=200 --out " +
                      (dir / "b").string(),

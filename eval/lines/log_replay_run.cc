@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <stdexcept>
+#include <string>
 
 #include "perception/lines/line_extractor_factory.h"
 #include "perception/logs/carmen_log.h"
@@ -110,6 +111,13 @@ LogReplaySummary RunLogReplay(const LogReplayRequest& request) {
       dir / "timing.json",
       sim::WriteJson(nlohmann::ordered_json{{"replay", {{"us_per_scan", result.UsPerScan()}}}},
                      {.layout = sim::JsonStyle::Layout::kOneLine}));
+  std::string scans = "scan,valid_rays,explained,lines\n";
+  for (std::size_t k = 0; k < result.per_scan.size(); ++k) {
+    const perception::ReplayResult::Scan& scan = result.per_scan[k];
+    scans += std::to_string(k) + "," + std::to_string(scan.valid_rays) + "," +
+             std::to_string(scan.explained) + "," + std::to_string(scan.lines) + "\n";
+  }
+  sim::WriteTextFile(dir / "scans.csv", scans);
   WriteSegmentsPicture(log, result, dir / "segments.png");
   staged.Commit();
   return summary;

@@ -33,10 +33,11 @@ std::filesystem::path DefaultReplayDirectory(const std::filesystem::path& log,
 // Runs the extractor on every scan of the log and scores it (perception::ReplayLog): writes
 // DIR/config.yaml (the replay's log, extractor and resolved `lines:` options), metrics.json
 // (replay.{extractor, scans, skipped_lines, valid_rays, lines, rays_explained, rms_m,
-// rays_per_line, lines_per_scan}: deterministic figures only), timing.json (wall clock) and
-// segments.png (every segment placed by the log's poses), staged beside DIR and renamed into place
-// with its completion marker last (sim::StagedRunDirectory). Every input is checked, then the
-// output directory, before anything is extracted.
+// rays_per_line, lines_per_scan}: deterministic figures only), scans.csv (per scan in log order:
+// valid rays, explained rays, lines; to compare two versions scan by scan), timing.json (wall
+// clock) and segments.png (every segment placed by the log's poses), staged beside DIR and renamed
+// into place with its completion marker last (sim::StagedRunDirectory). Every input is checked,
+// then the output directory, before anything is extracted.
 // @throws sim::ConfigError or std::invalid_argument (one line: exit code 2) for a bad option, an
 // unknown extractor, a missing or malformed log or a refused output directory.
 LogReplaySummary RunLogReplay(const LogReplayRequest& request);

@@ -16,7 +16,11 @@ ReplayResult ReplayLog(const CarmenLog& log, const LineExtractor& extractor, boo
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     ++result.scans;
     result.lines += static_cast<long>(lines.size());
-    result.rays.Add(ExplainRays(scan.points, lines));
+    const RayExplanation explained = ExplainRays(scan.points, lines);
+    result.rays.Add(explained);
+    result.per_scan.push_back({.valid_rays = explained.rays,
+                               .explained = explained.explained,
+                               .lines = static_cast<int>(lines.size())});
     if (!keep_segments) continue;
     const msgs::Pose2D& X = record.X_WL;
     const double c = std::cos(X.theta_rad), s = std::sin(X.theta_rad);

@@ -13,7 +13,15 @@ namespace plywood::perception {
 // are those with 0.05 m < r < M - 0.2 m, M the log's maximum range (PARAM front_laser_max, else
 // the largest range in the log, which marks "no return").
 struct ReplayResult {
+  // One scan's figures, in log order (scans.csv): to compare two versions scan by scan.
+  struct Scan {
+    long valid_rays = 0;
+    long explained = 0;
+    int lines = 0;
+  };
+
   RayExplanation rays;
+  std::vector<Scan> per_scan;
   long scans = 0;
   long lines = 0;
   double extract_wall_s = 0.0;  // time spent in Extract (wall clock; never in metrics.json)

@@ -34,6 +34,15 @@ TEST_P(RealLogTest, SplitAndMergeExplainsTheRealScans) {
   EXPECT_GE(result.rays.Fraction(), GetParam().min_explained) << GetParam().file;
   EXPECT_GE(result.RaysPerLine(), 15.0) << GetParam().file;
   EXPECT_LT(result.rays.RmsM(), 0.03) << GetParam().file;
+  // The per-scan figures (scans.csv) add up to the totals.
+  ASSERT_EQ(static_cast<long>(result.per_scan.size()), result.scans);
+  long rays = 0, explained = 0, lines = 0;
+  for (const ReplayResult::Scan& scan : result.per_scan) {
+    rays += scan.valid_rays, explained += scan.explained, lines += scan.lines;
+  }
+  EXPECT_EQ(rays, result.rays.rays);
+  EXPECT_EQ(explained, result.rays.explained);
+  EXPECT_EQ(lines, result.lines);
 }
 
 INSTANTIATE_TEST_SUITE_P(Carmen, RealLogTest,

@@ -35,7 +35,8 @@ bool IsRunOutputFile(const std::string& name) {
       "bumpers.csv",        "rooms.csv",          "umbmark_runs.csv",
       "snapshot.png",       "occupancy_grid.png", "occupancy_partitions.png",
       "segments.png",       "lines_truth.csv",    "lines_odometry.csv",
-      "geometric_map.json", "geometric_map.png",  kRunCompleteFile};
+      "geometric_map.json", "geometric_map.png",  "scans.csv",
+      kRunCompleteFile};
   for (std::string_view known : kNames) {
     if (name == known) return true;
   }
