@@ -1,0 +1,106 @@
+#!/usr/bin/python3
+"""What an extractor's false lines are, over a lines sweep (docs/lines.md): every segment of every
+run's lines.csv with no matched face, placed in the world by the rig pose in the run's config.yaml
+and sorted into causes by the world's round things (columns and table legs, from the world XML):
+  chord r<0.1 / chord r>=0.1   both endpoints within 4 cm of one round thing's surface
+  radial                       within 20 deg of the line of sight (an edge, its mixed pixels and
+                               what lies behind)
+  near round thing             an endpoint within 0.3 m of a round thing's surface
+  other
+Usage: scripts/false_lines.py SWEEP_DIR [EXTRACTOR] [--list]   (default split_and_merge)
+--list prints one row per false line: cause, run id, scan, points, length m, angle to the line of
+sight deg, nearest round thing (name, radius m, endpoint distance m).
+"""
+import collections
+import csv
+import math
+import os
+import re
+import sys
+
+
+def round_things(world_xml):
+    """(name, x, y, radius) of every cylinder geom (columns, table legs)."""
+    things = []
+    for geom in re.finditer(r"<geom\b[^>]*>", open(world_xml).read()):
+        tag = geom.group(0)
+        name = re.search(r'name="([^"]*)"', tag)
+        pos = re.search(r'pos="(\S+) (\S+)', tag)
+        size = re.search(r'size="(\S+)', tag)
+        is_cylinder = 'type="cylinder"' in tag or 'class="table_leg"' in tag
+        if is_cylinder and name and pos and size:
+            things.append((name.group(1), float(pos.group(1)), float(pos.group(2)),
+                           float(size.group(1))))
+    return things
+
+
+def rig_pose(config_text):
+    world = re.search(r"^world: (.*)$", config_text, re.M).group(1)
+    spawn = re.search(r"spawn:\n\s+x_m: (\S+)\n\s+y_m: (\S+)\n\s+theta_deg: (\S+)", config_text)
+    return world, float(spawn.group(1)), float(spawn.group(2)), math.radians(float(spawn.group(3)))
+
+
+def main(sweep_dir, extractor, listing):
+    causes = collections.Counter()
+    total = false = 0
+    rows = []
+    runs_dir = os.path.join(sweep_dir, "runs")
+    for run in sorted(os.listdir(runs_dir)):
+        path = os.path.join(runs_dir, run)
+        if run.startswith(".") or not os.path.exists(os.path.join(path, "lines.csv")):
+            continue
+        world, sx, sy, theta = rig_pose(open(os.path.join(path, "config.yaml")).read())
+        things = round_things(world)
+        c, s = math.cos(theta), math.sin(theta)
+
+        def to_world(x, y):
+            return (sx + c * x - s * y, sy + s * x + c * y)
+
+        with open(os.path.join(path, "lines.csv"), newline="") as f:
+            for row in csv.DictReader(f):
+                if row["extractor"] != extractor:
+                    continue
+                total += 1
+                if row["truth_segment"] != "":
+                    continue
+                false += 1
+                a = (float(row["x1_m"]), float(row["y1_m"]))
+                b = (float(row["x2_m"]), float(row["y2_m"]))
+                length = math.dist(a, b)
+                mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+                cross = abs(mid[0] * (b[1] - a[1]) - mid[1] * (b[0] - a[0]))
+                to_sight = math.degrees(math.asin(min(1.0, cross / (math.hypot(*mid) * length
+                                                                     + 1e-12))))
+                wa, wb = to_world(*a), to_world(*b)
+                nearest = None
+                for name, x, y, radius in things:
+                    off = max(abs(math.dist(wa, (x, y)) - radius),
+                              abs(math.dist(wb, (x, y)) - radius))
+                    if nearest is None or off < nearest[2]:
+                        nearest = (name, radius, off)
+                if nearest and nearest[2] < 0.04:
+                    cause = "chord r<0.1" if nearest[1] < 0.1 else "chord r>=0.1"
+                elif to_sight < 20.0:
+                    cause = "radial"
+                elif nearest and nearest[2] < 0.3:
+                    cause = "near round thing"
+                else:
+                    cause = "other"
+                causes[cause] += 1
+                rows.append((cause, run, row["scan"], row["points"], f"{length:.3f}",
+                             f"{to_sight:.1f}",
+                             f"{nearest[0]} {nearest[1]} {nearest[2]:.3f}" if nearest else "-"))
+    print(f"{extractor}: {total} lines, {false} false (pooled precision "
+          f"{1 - false / max(total, 1):.3f})")
+    for cause, count in causes.most_common():
+        print(f"  {cause}: {count}")
+    if listing:
+        for r in sorted(rows):
+            print(*r)
+
+
+if __name__ == "__main__":
+    args = [a for a in sys.argv[1:] if a != "--list"]
+    if not args:
+        sys.exit(__doc__)
+    main(args[0], args[1] if len(args) > 1 else "split_and_merge", "--list" in sys.argv)
