@@ -20,13 +20,13 @@ namespace plywood::perception {
 // segment counts as confirmed once segments of at least min_observations scans merged into it: a
 // sonar echo placed square to a transducer that heard it off-axis gives a line each scan at a
 // different offset, which never merges, while a true surface is seen again and again; and when the
-// curvature its scans' pieces show together does not make it a small round object
-// (round_objects: a column's chords too faint to tell in one scan, merged from nearby poses). A
-// side of a
-// new largest frame removes the pseudo segments lying inside that frame or on its sides within 2 cm
-// (the area was seen since). Defaults are assumptions: 5 deg and 6 cm accept one wall seen from two
-// poses with a few centimetres of pose error and refuse parallel walls a door frame apart; the gap
-// stays well below a 0.9 m door, so a wall is not bridged across a doorway.
+// curvature its scans' pieces show together (inverse-variance mean) does not make it a small round
+// object (round_objects: a column's chords too faint to tell in one scan, merged from nearby
+// poses). A side of a new largest frame removes the pseudo segments lying inside that frame or on
+// its sides within 2 cm (the area was seen since). Defaults are assumptions: 5 deg and 6 cm accept
+// one wall seen from two poses with a few centimetres of pose error and refuse parallel walls a
+// door frame apart; the gap stays well below a 0.9 m door, so a wall is not bridged across a
+// doorway.
 struct AggregationOptions {
   double inflate_m = 0.1;
   double max_angle_diff_deg = 5.0;

@@ -22,8 +22,11 @@ namespace plywood::perception {
 //    piece with fewer than min_inlier_fraction inliers has low confidence and is not a line; the
 //    modal filter's inliers are refitted by total least squares (its own direction, a truncated
 //    mean of noisy pair directions, leans towards its bin grid by tenths of a degree);
-// 4. a piece whose inliers bend towards the observer like a small round object (a chord of a
-//    column, round_objects) is not a line: its points become a cluster;
+// 4. round small objects are not lines (round_objects, piece_curvature.h): the pieces of a group
+//    that one small circle seen from outside explains (a column seen whole: the line extractors'
+//    test, round_object_filter.h), and a piece whose inliers bend towards the observer
+//    significantly, with a small implied radius (a chord of a column); their points become
+//    clusters. The observer is X_WR's position (the Magellan's scanner is at its centre);
 // 5. endpoints: where two fitted pieces of one group meet, the intersection of their lines (when it
 //    lies within max_intersection_shift_m of the shared point, else the projections); elsewhere
 //    the projection of the first / last point;
