@@ -22,7 +22,8 @@ using testing::Slurp;
 using testing::SourceRoot;
 
 // Runs `plywood run` on the shipped IR-panel experiment, cut short, into dir/name.
-int RunPanels(const fs::path& dir, const std::string& name, int seed, const std::string& extra = "") {
+int RunPanels(const fs::path& dir, const std::string& name, int seed,
+              const std::string& extra = "") {
   const fs::path binary = fs::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood";
   const fs::path experiment = SourceRoot() / "experiments" / "seed003_ir_panels.yaml";
   const std::string command = binary.string() + " run " + experiment.string() + " --out " +
@@ -62,6 +63,8 @@ TEST(Seed003GeometricMapTest, BadOptionsExitTwoNamingTheField) {
       {"geometric_map.histograms.distance_bin_m=0", "geometric_map.histograms.distance_bin_m"},
       {"geometric_map.fusion.tau_m=.nan", "geometric_map.fusion.tau_m"},
       {"geometric_map.fusion.source=laser", "geometric_map.fusion.source"},
+      {"geometric_map.segmentation.round_objects.min_sigmas=-1",
+       "geometric_map.segmentation.round_objects.min_sigmas"},
   };
   int k = 0;
   for (const auto& c : cases) {

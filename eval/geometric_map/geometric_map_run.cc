@@ -258,14 +258,20 @@ void WriteGeometricMapJson(const GeometricMapRun& run, const std::string& out_di
   Json json = Json::object();
   Json segments = Json::array();
   for (const auto& s : run.map.segments()) {
-    segments.push_back({{"start", point(s.line.start)},
-                        {"end", point(s.line.end)},
-                        {"tag", s.pseudo               ? "pseudo"
-                                : run.map.Confirmed(s) ? "real"
-                                                       : "unconfirmed"},
-                        {"points", s.line.num_points},
-                        {"inliers", s.inliers},
-                        {"observations", s.observations}});
+    Json segment = {{"start", point(s.line.start)},
+                    {"end", point(s.line.end)},
+                    {"tag", s.pseudo               ? "pseudo"
+                            : run.map.Confirmed(s) ? "real"
+                                                   : "unconfirmed"},
+                    {"points", s.line.num_points},
+                    {"inliers", s.inliers},
+                    {"observations", s.observations}};
+    // Why a segment seen often enough is not real: its scans' pieces bend like a small object.
+    if (std::isfinite(s.curvature.sigma_per_m)) {
+      segment["curvature_per_m"] = s.curvature.curvature_per_m;
+      segment["curvature_sigma_per_m"] = s.curvature.sigma_per_m;
+    }
+    segments.push_back(segment);
   }
   Json clusters = Json::array();
   for (const auto& c : run.map.clusters()) {

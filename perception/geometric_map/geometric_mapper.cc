@@ -27,7 +27,7 @@ void GeometricMapOptions::Validate() const {
 GeometricMapper::GeometricMapper(const GeometricMapOptions& options)
     : options_((options.Validate(), options)),
       corrector_(options.histograms, options.correction),
-      map_(options.aggregation) {}
+      map_(options.aggregation, options.segmentation.round_objects) {}
 
 msgs::Pose2D GeometricMapper::AddScan(const msgs::LaserScan& ir, const msgs::RangeRing* sonar,
                                       const msgs::Pose2D& X_OR) {

@@ -67,7 +67,9 @@ void AggregationOptions::Validate() const {
                 "must be in [0, 5]", cluster_inflate_m);
 }
 
-GeometricMap::GeometricMap(const AggregationOptions& options) : options_(options) {}
+GeometricMap::GeometricMap(const AggregationOptions& options,
+                           const RoundPieceOptions& round_objects)
+    : options_(options), round_objects_(round_objects) {}
 
 bool GeometricMap::Mergeable(const MapSegment& a, const MapSegment& b) const {
   if (!Box(a, options_.inflate_m).intersects(Box(b, options_.inflate_m))) return false;
@@ -104,6 +106,7 @@ MapSegment GeometricMap::Merge(const MapSegment& a, const MapSegment& b) const {
   merged.line.num_points = a.line.num_points + b.line.num_points;
   merged.inliers = a.inliers + b.inliers;
   merged.observations = a.observations + b.observations;
+  merged.curvature = a.curvature.Combined(b.curvature);
   merged.pseudo = a.pseudo;
   return merged;
 }

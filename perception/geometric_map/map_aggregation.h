@@ -19,11 +19,14 @@ namespace plywood::perception {
 // grown by cluster_inflate_m, intersect and their union stays within max_cluster_size_m. A real
 // segment counts as confirmed once segments of at least min_observations scans merged into it: a
 // sonar echo placed square to a transducer that heard it off-axis gives a line each scan at a
-// different offset, which never merges, while a true surface is seen again and again. A side of a
-// new largest frame removes the pseudo segments lying inside that frame or on its sides within 2 cm
-// (the area was seen since). Defaults are assumptions: 5 deg and 6 cm accept one wall seen from two
-// poses with a few centimetres of pose error and refuse parallel walls a door frame apart; the gap
-// stays well below a 0.9 m door, so a wall is not bridged across a doorway.
+// different offset, which never merges, while a true surface is seen again and again; and when the
+// curvature its scans' pieces show together (inverse-variance mean) does not make it a small round
+// object (round_objects: a column's chords too faint to tell in one scan, merged from nearby
+// poses). A side of a new largest frame removes the pseudo segments lying inside that frame or on
+// its sides within 2 cm (the area was seen since). Defaults are assumptions: 5 deg and 6 cm accept
+// one wall seen from two poses with a few centimetres of pose error and refuse parallel walls a
+// door frame apart; the gap stays well below a 0.9 m door, so a wall is not bridged across a
+// doorway.
 struct AggregationOptions {
   double inflate_m = 0.1;
   double max_angle_diff_deg = 5.0;
@@ -39,7 +42,8 @@ struct AggregationOptions {
 
 class GeometricMap {
  public:
-  explicit GeometricMap(const AggregationOptions& options = {});
+  explicit GeometricMap(const AggregationOptions& options = {},
+                        const RoundPieceOptions& round_objects = {});
 
   void AddSegment(const MapSegment& segment);
   void AddCluster(const MapCluster& cluster);
@@ -50,7 +54,8 @@ class GeometricMap {
   // Every segment: real (confirmed or not) and pseudo.
   const std::vector<MapSegment>& segments() const { return segments_; }
   bool Confirmed(const MapSegment& s) const {
-    return !s.pseudo && s.observations >= options_.min_observations;
+    return !s.pseudo && s.observations >= options_.min_observations &&
+           !round_objects_.IsRound(s.curvature);
   }
   const std::vector<MapCluster>& clusters() const { return clusters_; }
   // Whether `a` and `b` pass the acceptance test (for tests and diagnostics).
@@ -60,6 +65,7 @@ class GeometricMap {
   MapSegment Merge(const MapSegment& a, const MapSegment& b) const;
 
   AggregationOptions options_;
+  RoundPieceOptions round_objects_;
   std::vector<MapSegment> segments_;
   std::vector<MapCluster> clusters_;
 };

@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 
+#include "perception/geometric_map/piece_curvature.h"
 #include "perception/lines/line_segment.h"
 
 namespace plywood::perception {
@@ -15,6 +16,8 @@ struct MapSegment {
   bool pseudo = false;
   int inliers = 0;
   int observations = 1;  // scans whose segments merged into this one
+  // How the points bend (a round object's chords do), combined over the merged scans.
+  PieceCurvature curvature;
 
   double InlierFraction() const {
     return line.num_points > 0 ? static_cast<double>(inliers) / line.num_points : 0.0;

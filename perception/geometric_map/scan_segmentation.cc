@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "perception/geometric_map/option_checks.h"
+#include "perception/lines/round_object_filter.h"
 
 namespace plywood::perception {
 namespace {
@@ -39,6 +40,29 @@ void SplitAtFarthest(std::span<const Eigen::Vector2d> points, int first, int las
   SplitAtFarthest(points, farthest, last, r_min_m, pieces);
 }
 
+// Per piece of one group: whether it belongs to a run of pieces that one small circle seen from
+// outside explains (the line extractors' round-object test, round_object_filter.h: a column seen
+// whole, its arc cut into chords). `points` relative to the observer.
+std::vector<char> WholeRoundPieces(std::span<const Eigen::Vector2d> points,
+                                   const std::vector<std::pair<int, int>>& pieces,
+                                   const RoundPieceOptions& options) {
+  std::vector<std::vector<int>> runs;
+  for (const auto& [a, b] : pieces) {
+    runs.emplace_back(b - a + 1);
+    for (int j = a; j <= b; ++j) runs.back()[j - a] = j;
+  }
+  RoundObjectOptions circle;
+  circle.max_round_radius_m = options.max_object_radius_m;
+  circle.reject_round_objects = options.max_object_radius_m > 0.0;
+  std::vector<std::vector<int>> kept = runs;
+  RemoveRoundObjects(points, options.noise_floor_m, circle, &kept);
+  std::vector<char> round(pieces.size(), 1);
+  for (std::size_t i = 0, k = 0; i < runs.size() && k < kept.size(); ++i) {
+    if (runs[i] == kept[k]) round[i] = 0, ++k;
+  }
+  return round;
+}
+
 Eigen::Vector2d ToMap(const msgs::Pose2D& X_WR, const Eigen::Vector2d& p_R) {
   const double c = std::cos(X_WR.theta_rad), s = std::sin(X_WR.theta_rad);
   return {X_WR.x_m + c * p_R.x() - s * p_R.y(), X_WR.y_m + s * p_R.x() + c * p_R.y()};
@@ -63,10 +87,11 @@ void SegmentationOptions::Validate() const {
                 "must be in [0, 1]", min_inlier_fraction);
   RequireOption(max_intersection_shift_m >= 0.0 && max_intersection_shift_m <= 5.0,
                 "max_intersection_shift_m", "must be in [0, 5]", max_intersection_shift_m);
+  round_objects.Validate();
 }
 
 MapSegment FitMapSegment(std::span<const Eigen::Vector2d> points, std::span<const int> indices,
-                         const SegmentationOptions& options) {
+                         const SegmentationOptions& options, std::vector<int>* inliers_out) {
   MapSegment s;
   s.line = options.fit == LineFitMethod::kModal ? FitSegmentModal(points, indices, options.modal)
                                                 : FitSegmentTls(points, indices);
@@ -84,6 +109,7 @@ MapSegment FitMapSegment(std::span<const Eigen::Vector2d> points, std::span<cons
     s.line = FitSegmentTls(points, inliers);
   }
   s.line.num_points = static_cast<int>(indices.size());
+  if (inliers_out != nullptr) *inliers_out = std::move(inliers);
   return s;
 }
 
@@ -104,6 +130,9 @@ ScanFeatures ExtractScanFeatures(std::span<const RangePoint> points_R, int beam_
   std::vector<Eigen::Vector2d> p(n);
   for (int k = 0; k < n; ++k) p[k] = ToMap(X_WR, points_R[(start + k) % n].p_R);
 
+  const Eigen::Vector2d observer(X_WR.x_m, X_WR.y_m);
+  std::vector<Eigen::Vector2d> p_seen(n);  // relative to the observer
+  for (int k = 0; k < n; ++k) p_seen[k] = p[k] - observer;
   const auto add_cluster = [&](int first, int last) {
     if (last - first + 1 < options.min_cluster_points) return;
     MapCluster c;
@@ -122,15 +151,28 @@ ScanFeatures ExtractScanFeatures(std::span<const RangePoint> points_R, int beam_
     }
     std::vector<std::pair<int, int>> pieces;
     SplitAtFarthest(p, first, last, options.r_min_m, &pieces);
+    const std::vector<char> on_circle = WholeRoundPieces(p_seen, pieces, options.round_objects);
     std::vector<MapSegment> lines;
     std::vector<int> line_piece;  // index into pieces of each line
+    std::vector<std::pair<int, int>> round_pieces;
     for (std::size_t i = 0; i < pieces.size(); ++i) {
       const auto [a, b] = pieces[i];
       if (b - a + 1 < options.min_line_points) continue;
+      if (on_circle[i]) {
+        round_pieces.emplace_back(a, b);
+        continue;
+      }
       std::vector<int> indices(b - a + 1);
       for (int j = a; j <= b; ++j) indices[j - a] = j;
-      MapSegment s = FitMapSegment(p, indices, options);
+      std::vector<int> inliers;
+      MapSegment s = FitMapSegment(p, indices, options, &inliers);
       if (s.InlierFraction() < options.min_inlier_fraction) continue;
+      s.curvature = FitPieceCurvature(p, inliers, s.line.start, s.line.end, observer,
+                                      options.round_objects.noise_floor_m);
+      if (options.round_objects.IsRound(s.curvature)) {
+        round_pieces.emplace_back(a, b);
+        continue;
+      }
       lines.push_back(s);
       line_piece.push_back(static_cast<int>(i));
     }
@@ -145,7 +187,11 @@ ScanFeatures ExtractScanFeatures(std::span<const RangePoint> points_R, int beam_
         lines[i + 1].line.start = corner;
       }
     }
-    if (lines.empty()) add_cluster(first, last);
+    if (lines.empty()) {
+      add_cluster(first, last);
+    } else {
+      for (const auto& [a, b] : round_pieces) add_cluster(a, b);
+    }
     features.segments.insert(features.segments.end(), lines.begin(), lines.end());
     first = k;
   }

@@ -22,10 +22,15 @@ namespace plywood::perception {
 //    piece with fewer than min_inlier_fraction inliers has low confidence and is not a line; the
 //    modal filter's inliers are refitted by total least squares (its own direction, a truncated
 //    mean of noisy pair directions, leans towards its bin grid by tenths of a degree);
-// 4. endpoints: where two fitted pieces of one group meet, the intersection of their lines (when it
+// 4. round small objects are not lines (round_objects, piece_curvature.h): the pieces of a group
+//    that one small circle seen from outside explains (a column seen whole: the line extractors'
+//    test, round_object_filter.h), and a piece whose inliers bend towards the observer
+//    significantly, with a small implied radius (a chord of a column); their points become
+//    clusters. The observer is X_WR's position (the Magellan's scanner is at its centre);
+// 5. endpoints: where two fitted pieces of one group meet, the intersection of their lines (when it
 //    lies within max_intersection_shift_m of the shared point, else the projections); elsewhere
 //    the projection of the first / last point;
-// 5. a group that gave no line (a column, a table leg, clutter) becomes a cluster when its points
+// 6. a group that gave no line (a column, a table leg, clutter) becomes a cluster when its points
 //    fit in a box of max_cluster_size_m (larger ones are clutter and dropped).
 // Defaults are assumptions: 0.15 m breaks at doorways, posts and behind obstacles while 1.8 deg
 // steps at 3 m are 9.4 cm; r_min 3 cm is 6 IR noise sigmas.
@@ -40,6 +45,7 @@ struct SegmentationOptions {
   double inlier_distance_m = 0.02;
   double min_inlier_fraction = 0.7;
   double max_intersection_shift_m = 0.15;
+  RoundPieceOptions round_objects;
 
   // @throws std::invalid_argument starting with the field's name.
   void Validate() const;
@@ -56,8 +62,9 @@ struct ScanFeatures {
 ScanFeatures ExtractScanFeatures(std::span<const RangePoint> points_R, int beam_count,
                                  const msgs::Pose2D& X_WR, const SegmentationOptions& options);
 
-// The fit of points[indices] by `options.fit`, with its inliers (the confidence record).
+// The fit of points[indices] by `options.fit`, with its inliers (the confidence record; their
+// indices in `inliers` when not null).
 MapSegment FitMapSegment(std::span<const Eigen::Vector2d> points, std::span<const int> indices,
-                         const SegmentationOptions& options);
+                         const SegmentationOptions& options, std::vector<int>* inliers = nullptr);
 
 }  // namespace plywood::perception

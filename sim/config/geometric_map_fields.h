@@ -49,6 +49,13 @@ void VisitFields(A& a, PoseCorrectionOptions& o) {
 }
 
 template <typename A>
+void VisitFields(A& a, RoundPieceOptions& o) {
+  a("max_object_radius_m", o.max_object_radius_m);
+  a("min_sigmas", o.min_sigmas);
+  a("noise_floor_m", o.noise_floor_m);
+}
+
+template <typename A>
 void VisitFields(A& a, SegmentationOptions& o) {
   a("dist_max_m", o.dist_max_m);
   a("min_line_points", o.min_line_points);
@@ -62,6 +69,7 @@ void VisitFields(A& a, SegmentationOptions& o) {
   a("inlier_distance_m", o.inlier_distance_m);
   a("min_inlier_fraction", o.min_inlier_fraction);
   a("max_intersection_shift_m", o.max_intersection_shift_m);
+  a.Nested("round_objects", o.round_objects);
 }
 
 template <typename A>
