@@ -108,13 +108,16 @@ TopDownRenderer::TopDownRenderer(const mjModel* m, const WorldBounds& bounds,
   if (!kHasOffscreenRendering) {
     throw std::runtime_error("offscreen rendering: this build has no OSMesa");
   }
-  gl_ = std::make_unique<Gl>(frame_.width_px, frame_.height_px);
+  // Buffers for any framing at this picture size (Reframe): the longer side is always
+  // longer_side_px, either way round. Pixels inside the viewport do not depend on the buffer size.
+  const int capacity_px = options_.longer_side_px;
+  gl_ = std::make_unique<Gl>(capacity_px, capacity_px);
   gl_->model.reset(mj_copyModel(nullptr, m));
   if (!gl_->model) throw std::runtime_error("offscreen rendering: mj_copyModel failed");
   mjModel* copy = gl_->model.get();
   // The offscreen buffer is sized from the model (default 640 x 480): raise it to the picture.
-  copy->vis.global.offwidth = std::max(copy->vis.global.offwidth, frame_.width_px);
-  copy->vis.global.offheight = std::max(copy->vis.global.offheight, frame_.height_px);
+  copy->vis.global.offwidth = std::max(copy->vis.global.offwidth, capacity_px);
+  copy->vis.global.offheight = std::max(copy->vis.global.offheight, capacity_px);
   // A headlight straight down with ambient + diffuse = 0.8: alone it shows upward faces at 80% of
   // their colour, leaving headroom for the world's own lights before colours saturate.
   for (int i = 0; i < 3; ++i) {
@@ -134,11 +137,10 @@ TopDownRenderer::TopDownRenderer(const mjModel* m, const WorldBounds& bounds,
     throw std::runtime_error("offscreen rendering: MuJoCo could not bind its offscreen buffer");
   }
   const mjrRect max_viewport = mjr_maxViewport(&gl_->con);
-  if (max_viewport.width < frame_.width_px || max_viewport.height < frame_.height_px) {
+  if (max_viewport.width < capacity_px || max_viewport.height < capacity_px) {
     throw std::runtime_error("offscreen rendering: buffer " + std::to_string(max_viewport.width) +
                              " x " + std::to_string(max_viewport.height) + " is smaller than " +
-                             std::to_string(frame_.width_px) + " x " +
-                             std::to_string(frame_.height_px));
+                             std::to_string(capacity_px) + " x " + std::to_string(capacity_px));
   }
   gl_->scene.flags[mjRND_SKYBOX] = 0;
   gl_->scene.flags[mjRND_FOG] = 0;
@@ -150,11 +152,18 @@ TopDownRenderer::TopDownRenderer(const mjModel* m, const WorldBounds& bounds,
     gl_->option.geomgroup[i] = (i <= 2) || (options_.show_robot && i == kRobotGeomGroup);
     gl_->option.sitegroup[i] = 0;  // sensor sites would clutter the map
   }
+  gl_->z_top_m = StaticGeometryExtent(copy).z_max_m;
+  Aim();
+}
 
-  const StaticExtent extent = StaticGeometryExtent(copy);
-  gl_->z_top_m = extent.z_max_m;
-  const double height_m = TopDownCameraHeightM(options_.longer_side_px, extent.z_max_m);
-  gl_->gl_camera = MakeTopDownGlCamera(frame_, height_m, extent.z_max_m);
+void TopDownRenderer::Reframe(const WorldBounds& bounds) {
+  frame_ = FrameFor(bounds, options_);
+  Aim();
+}
+
+void TopDownRenderer::Aim() {
+  const double height_m = TopDownCameraHeightM(options_.longer_side_px, gl_->z_top_m);
+  gl_->gl_camera = MakeTopDownGlCamera(frame_, height_m, gl_->z_top_m);
   // The abstract camera only places the headlight (mjv_updateScene derives it from this camera);
   // the GL camera above replaces the projection it would produce.
   mjv_defaultCamera(&gl_->camera);
@@ -171,14 +180,31 @@ TopDownRenderer::TopDownRenderer(const mjModel* m, const WorldBounds& bounds,
 
 TopDownRenderer::~TopDownRenderer() = default;
 
-TopDownImage TopDownRenderer::Render(mjData* d) {
+void TopDownRenderer::Draw(mjData* d, const mjrRect& viewport) {
   gl_->context.MakeCurrent();
   mjr_setBuffer(mjFB_OFFSCREEN, &gl_->con);
   mjv_updateScene(gl_->model.get(), d, &gl_->option, nullptr, &gl_->camera, mjCAT_ALL, &gl_->scene);
   gl_->scene.camera[0] = gl_->gl_camera;
   gl_->scene.camera[1] = gl_->gl_camera;
-  const mjrRect viewport{0, 0, frame_.width_px, frame_.height_px};
   mjr_render(viewport, &gl_->scene, &gl_->con);
+}
+
+void TopDownRenderer::WarmUp(mjData* d) {
+  // One llvmpipe tile (64 x 64): rasterising the whole picture would cost about as much as the
+  // compilation this is for, and the shaders do not depend on the viewport.
+  const mjrRect viewport{0, 0, std::min(64, frame_.width_px), std::min(64, frame_.height_px)};
+  Draw(d, viewport);
+  // Reading back compiles the multisample resolve and the pixel conversion.
+  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(viewport.width) * viewport.height * 3);
+  mjr_readPixels(rgb.data(), nullptr, viewport, &gl_->con);
+  if (const int error = mjr_getError(); error != 0) {
+    throw std::runtime_error("offscreen rendering: OpenGL error " + std::to_string(error));
+  }
+}
+
+TopDownImage TopDownRenderer::Render(mjData* d) {
+  const mjrRect viewport{0, 0, frame_.width_px, frame_.height_px};
+  Draw(d, viewport);
   std::vector<std::uint8_t> rgb(static_cast<std::size_t>(frame_.width_px) * frame_.height_px * 3);
   mjr_readPixels(rgb.data(), nullptr, viewport, &gl_->con);
   if (const int error = mjr_getError(); error != 0) {
