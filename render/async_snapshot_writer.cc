@@ -85,7 +85,12 @@ void AsyncSnapshotWriter::Work() {
     bool drawn = false;
     if (renderer) {
       try {
-        renderer->Reframe(bounds);
+        // The buffers were sized for the static geometry's picture; paths beyond it can need
+        // bigger ones (a new context, compiled afresh).
+        if (!renderer->Reframe(bounds)) {
+          renderer.reset();
+          renderer = std::make_unique<TopDownRenderer>(model_.get(), bounds, options_.view);
+        }
         snapshot = {renderer->Render(request.data.get()), SnapshotBackend::kOpenGl};
         drawn = true;
       } catch (const std::runtime_error& e) {

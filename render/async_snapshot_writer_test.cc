@@ -37,11 +37,18 @@ std::string FileBytes(const std::filesystem::path& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-// A path leaving the room to the south-west, so the final framing is not the static one the
-// writer's renderer was made with.
+// A path leaving the room to the south-west: the final framing is not the static one the
+// writer's renderer was made with, but its picture fits the renderer's buffers (reframed).
 std::vector<PathOverlay> PathsBeyondTheRoom() {
   PathOverlay truth{"ground truth", {}, colours::kBlack, 3.0};
   for (int i = 0; i <= 20; ++i) truth.points_W.push_back({-1.0 - 0.15 * i, -0.5 - 0.1 * i});
+  return {truth};
+}
+
+// A path far to the south: the picture turns taller than the buffers (a new renderer).
+std::vector<PathOverlay> PathsFarSouth() {
+  PathOverlay truth{"ground truth", {}, colours::kBlack, 3.0};
+  for (int i = 0; i <= 20; ++i) truth.points_W.push_back({-1.0, -0.5 - 0.3 * i});
   return {truth};
 }
 
@@ -63,18 +70,17 @@ class AsyncSnapshotWriterTest : public ::testing::Test {
     mj_forward(m_.get(), d_.get());
   }
   // The same picture through WriteSnapshot, and the writer's, as file bytes.
-  void ExpectSameBytesAsWriteSnapshot() {
+  void ExpectSameBytesAsWriteSnapshot(const std::vector<PathOverlay>& paths) {
     AsyncSnapshotWriter writer(m_.get(), options_);
     MoveRobot();
-    writer.Write(d_.get(), PathsBeyondTheRoom(), dir_ / "async.png");
+    writer.Write(d_.get(), paths, dir_ / "async.png");
     const mjtNum x = d_->qpos[0];
     d_->qpos[0] = 5.0;  // Write copied the state: changing it now must not show
     mj_forward(m_.get(), d_.get());
     const SnapshotBackend backend = writer.Finish();
     d_->qpos[0] = x;
     mj_forward(m_.get(), d_.get());
-    EXPECT_EQ(WriteSnapshot(m_.get(), d_.get(), PathsBeyondTheRoom(), dir_ / "sync.png", options_),
-              backend);
+    EXPECT_EQ(WriteSnapshot(m_.get(), d_.get(), paths, dir_ / "sync.png", options_), backend);
     const std::string bytes = FileBytes(dir_ / "async.png");
     EXPECT_GT(bytes.size(), 1000u);
     EXPECT_TRUE(bytes == FileBytes(dir_ / "sync.png"));
@@ -88,12 +94,13 @@ class AsyncSnapshotWriterTest : public ::testing::Test {
 
 TEST_F(AsyncSnapshotWriterTest, OpenGlPngIsByteIdenticalToWriteSnapshot) {
   if (!OffscreenRenderingAvailable()) GTEST_SKIP() << "no offscreen OpenGL context here";
-  ExpectSameBytesAsWriteSnapshot();
+  ExpectSameBytesAsWriteSnapshot(PathsBeyondTheRoom());
+  ExpectSameBytesAsWriteSnapshot(PathsFarSouth());
 }
 
 TEST_F(AsyncSnapshotWriterTest, SoftwarePngIsByteIdenticalToWriteSnapshot) {
   options_.use_opengl = false;
-  ExpectSameBytesAsWriteSnapshot();
+  ExpectSameBytesAsWriteSnapshot(PathsBeyondTheRoom());
 }
 
 TEST_F(AsyncSnapshotWriterTest, UnwritablePathFailsInFinishNamingIt) {

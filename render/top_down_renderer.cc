@@ -108,16 +108,13 @@ TopDownRenderer::TopDownRenderer(const mjModel* m, const WorldBounds& bounds,
   if (!kHasOffscreenRendering) {
     throw std::runtime_error("offscreen rendering: this build has no OSMesa");
   }
-  // Buffers for any framing at this picture size (Reframe): the longer side is always
-  // longer_side_px, either way round. Pixels inside the viewport do not depend on the buffer size.
-  const int capacity_px = options_.longer_side_px;
-  gl_ = std::make_unique<Gl>(capacity_px, capacity_px);
+  gl_ = std::make_unique<Gl>(frame_.width_px, frame_.height_px);
   gl_->model.reset(mj_copyModel(nullptr, m));
   if (!gl_->model) throw std::runtime_error("offscreen rendering: mj_copyModel failed");
   mjModel* copy = gl_->model.get();
   // The offscreen buffer is sized from the model (default 640 x 480): raise it to the picture.
-  copy->vis.global.offwidth = std::max(copy->vis.global.offwidth, capacity_px);
-  copy->vis.global.offheight = std::max(copy->vis.global.offheight, capacity_px);
+  copy->vis.global.offwidth = std::max(copy->vis.global.offwidth, frame_.width_px);
+  copy->vis.global.offheight = std::max(copy->vis.global.offheight, frame_.height_px);
   // A headlight straight down with ambient + diffuse = 0.8: alone it shows upward faces at 80% of
   // their colour, leaving headroom for the world's own lights before colours saturate.
   for (int i = 0; i < 3; ++i) {
@@ -137,10 +134,11 @@ TopDownRenderer::TopDownRenderer(const mjModel* m, const WorldBounds& bounds,
     throw std::runtime_error("offscreen rendering: MuJoCo could not bind its offscreen buffer");
   }
   const mjrRect max_viewport = mjr_maxViewport(&gl_->con);
-  if (max_viewport.width < capacity_px || max_viewport.height < capacity_px) {
+  if (max_viewport.width < frame_.width_px || max_viewport.height < frame_.height_px) {
     throw std::runtime_error("offscreen rendering: buffer " + std::to_string(max_viewport.width) +
                              " x " + std::to_string(max_viewport.height) + " is smaller than " +
-                             std::to_string(capacity_px) + " x " + std::to_string(capacity_px));
+                             std::to_string(frame_.width_px) + " x " +
+                             std::to_string(frame_.height_px));
   }
   gl_->scene.flags[mjRND_SKYBOX] = 0;
   gl_->scene.flags[mjRND_FOG] = 0;
@@ -156,9 +154,16 @@ TopDownRenderer::TopDownRenderer(const mjModel* m, const WorldBounds& bounds,
   Aim();
 }
 
-void TopDownRenderer::Reframe(const WorldBounds& bounds) {
-  frame_ = FrameFor(bounds, options_);
+bool TopDownRenderer::Reframe(const WorldBounds& bounds) {
+  const TopDownFrame frame = FrameFor(bounds, options_);
+  const mjrRect max_viewport = mjr_maxViewport(&gl_->con);
+  if (frame.width_px > max_viewport.width || frame.height_px > max_viewport.height ||
+      frame.width_px > gl_->context.width() || frame.height_px > gl_->context.height()) {
+    return false;
+  }
+  frame_ = frame;
   Aim();
+  return true;
 }
 
 void TopDownRenderer::Aim() {

@@ -63,8 +63,9 @@ class TopDownRenderer {
   void WarmUp(mjData* d);
 
   // Frames `bounds` instead (same options), keeping the GL context and its compiled shaders.
-  // @throws std::invalid_argument on bad bounds.
-  void Reframe(const WorldBounds& bounds);
+  // Returns false, changing nothing, when that picture is larger than the buffers made for the
+  // first framing (make a new renderer then). @throws std::invalid_argument on bad bounds.
+  [[nodiscard]] bool Reframe(const WorldBounds& bounds);
 
   const TopDownFrame& frame() const { return frame_; }
 
