@@ -99,12 +99,7 @@ void AsyncSnapshotWriter::Work() {
       renderer.reset();  // frees the GL context before the overlays and the PNG
     }
     if (!drawn) {
-      snapshot =
-          options_.use_opengl
-              ? SoftwareSnapshot(model_.get(), request.data.get(), bounds, options_, why_software)
-              : Snapshot{
-                    RenderTopDownSoftware(model_.get(), request.data.get(), bounds, options_.view),
-                    SnapshotBackend::kSoftware};
+      snapshot = SoftwareSnapshot(model_.get(), request.data.get(), bounds, options_, why_software);
     }
     DrawSnapshotOverlays(&snapshot, request.paths, options_);
     WritePng(snapshot.picture.image, request.path);

@@ -49,7 +49,7 @@ WorldBounds SnapshotBounds(const mjModel* m, const std::vector<PathOverlay>& pat
 
 Snapshot SoftwareSnapshot(const mjModel* m, const mjData* d, const WorldBounds& bounds,
                           const SnapshotOptions& options, const std::string& why) {
-  WarnSoftwareFallbackOnce(why);
+  if (options.use_opengl) WarnSoftwareFallbackOnce(why);
   return {RenderTopDownSoftware(m, d, bounds, options.view), SnapshotBackend::kSoftware};
 }
 
@@ -90,13 +90,7 @@ Snapshot RenderSnapshot(const mjModel* m, mjData* d, const std::vector<PathOverl
       why = e.what();
     }
   }
-  if (!drawn) {
-    if (options.use_opengl) {
-      snapshot = SoftwareSnapshot(m, d, bounds, options, why);
-    } else {
-      snapshot = {RenderTopDownSoftware(m, d, bounds, options.view), SnapshotBackend::kSoftware};
-    }
-  }
+  if (!drawn) snapshot = SoftwareSnapshot(m, d, bounds, options, why);
   DrawSnapshotOverlays(&snapshot, paths, options);
   return snapshot;
 }

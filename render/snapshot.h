@@ -46,7 +46,7 @@ WorldBounds SnapshotBounds(const mjModel* m, const std::vector<PathOverlay>& pat
                            const SnapshotOptions& options);
 // - why OpenGL cannot draw it (empty: it can try, or options.use_opengl is false);
 std::string WhyNoOpenGl(const SnapshotOptions& options);
-// - the software picture, saying once per process on stderr that GL was wanted but `why` not;
+// - the software picture; when options.use_opengl, says once per process on stderr why not GL;
 Snapshot SoftwareSnapshot(const mjModel* m, const mjData* d, const WorldBounds& bounds,
                           const SnapshotOptions& options, const std::string& why);
 // - the scale bar, the paths and their legend drawn over the picture.
