@@ -4,14 +4,15 @@
 
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <string>
 
 #include "eval/geometric_map/geometric_map_run.h"
 #include "eval/lines/line_scan_scorer.h"
 #include "eval/lines/lines_csv.h"
 #include "eval/sonar_map/sonar_map_scorer.h"
+#include "render/async_snapshot_writer.h"
 #include "render/overlay.h"
-#include "render/snapshot.h"
 #include "sim/runner/experiment_runner.h"
 #include "sim/runner/run_writer.h"
 
@@ -88,6 +89,14 @@ int SingleRunProtocol(const ProtocolContext& context) {
   const bool snapshots = context.snapshots;
   sim::ExperimentRunner runner(config);
   runner.SetObserver(context.observer);
+  render::SnapshotOptions snapshot_options;
+  snapshot_options.view.longer_side_px = config.output.snapshot_size_px;
+  // The snapshot's renderer gets ready on its own thread while the run goes on; with an observer
+  // (viewer, video) drawing on this thread meanwhile, it starts after the run instead.
+  std::optional<render::AsyncSnapshotWriter> snapshot;
+  if (snapshots && context.observer == nullptr) {
+    snapshot.emplace(runner.scene().model(), snapshot_options);
+  }
   // A live progress bar on a terminal; in logs (CI, batch) a line every 10 %.
   const bool terminal = isatty(fileno(stderr));
   int last_decile = 0;
@@ -104,6 +113,12 @@ int SingleRunProtocol(const ProtocolContext& context) {
   });
   if (!quiet && terminal) std::fprintf(stderr, "\r%60s\r", "");
 
+  if (snapshots) {
+    if (!snapshot) snapshot.emplace(runner.scene().model(), snapshot_options);
+    snapshot->Write(runner.scene().data(), TrajectoryOverlays(runner.record()),
+                    out_dir + "/snapshot.png");
+  }
+
   AddSonarMapMetrics(runner);     // seed 001 map scores, if the sonar explorer drove
   GeometricMapRun geometric_map;  // seed 003's map, with a geometric_map: section
   const bool has_geometric_map = AddGeometricMapMetrics(runner, &geometric_map);
@@ -116,12 +131,7 @@ int SingleRunProtocol(const ProtocolContext& context) {
     WriteGeometricMapJson(geometric_map, out_dir);
     if (snapshots) WriteGeometricMapPicture(runner, geometric_map, out_dir);
   }
-  if (snapshots) {
-    render::SnapshotOptions options;
-    options.view.longer_side_px = config.output.snapshot_size_px;
-    render::WriteSnapshot(runner.scene().model(), runner.mutable_scene().mutable_data(),
-                          TrajectoryOverlays(runner.record()), out_dir + "/snapshot.png", options);
-  }
+  if (snapshot) snapshot->Finish();
   if (!line_scores.empty()) {
     std::ofstream(out_dir + "/timing.json") << eval::LineTimingJson(line_scores);
     WriteLinesCsv(context.out_dir / "lines.csv", LinesCsvRows(line_scores));

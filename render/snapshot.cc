@@ -34,9 +34,8 @@ void SnapshotOptions::Validate() const {
   }
 }
 
-Snapshot RenderSnapshot(const mjModel* m, mjData* d, const std::vector<PathOverlay>& paths,
-                        const SnapshotOptions& options) {
-  options.Validate();
+WorldBounds SnapshotBounds(const mjModel* m, const std::vector<PathOverlay>& paths,
+                           const SnapshotOptions& options) {
   WorldBounds bounds = StaticGeometryExtent(m).bounds;
   if (options.frame_paths) {
     for (const PathOverlay& path : paths) {
@@ -45,35 +44,54 @@ Snapshot RenderSnapshot(const mjModel* m, mjData* d, const std::vector<PathOverl
       }
     }
   }
-  Snapshot snapshot;
-  bool drawn = false;
-  if (options.use_opengl) {
-    if (!OffscreenRenderingAvailable()) {
-      WarnSoftwareFallbackOnce(kHasOffscreenRendering ? "no OSMesa context"
-                                                      : "built without OSMesa");
-    } else {
-      try {
-        TopDownRenderer renderer(m, bounds, options.view);
-        snapshot.picture = renderer.Render(d);
-        snapshot.backend = SnapshotBackend::kOpenGl;
-        drawn = true;
-      } catch (const std::runtime_error& e) {
-        WarnSoftwareFallbackOnce(e.what());
-      }
-    }
+  return bounds;
+}
+
+Snapshot SoftwareSnapshot(const mjModel* m, const mjData* d, const WorldBounds& bounds,
+                          const SnapshotOptions& options, const std::string& why) {
+  if (options.use_opengl) WarnSoftwareFallbackOnce(why);
+  return {RenderTopDownSoftware(m, d, bounds, options.view), SnapshotBackend::kSoftware};
+}
+
+std::string WhyNoOpenGl(const SnapshotOptions& options) {
+  if (!options.use_opengl) return "";
+  if (!OffscreenRenderingAvailable()) {
+    return kHasOffscreenRendering ? "no OSMesa context" : "built without OSMesa";
   }
-  if (!drawn) {
-    snapshot.picture = RenderTopDownSoftware(m, d, bounds, options.view);
-    snapshot.backend = SnapshotBackend::kSoftware;
-  }
+  return "";
+}
+
+void DrawSnapshotOverlays(Snapshot* snapshot, const std::vector<PathOverlay>& paths,
+                          const SnapshotOptions& options) {
   if (options.scale_bar) {
-    DrawScaleBarAndAxes(snapshot.picture.image, snapshot.picture.world_to_pixel);
+    DrawScaleBarAndAxes(snapshot->picture.image, snapshot->picture.world_to_pixel);
   }
-  DrawPaths(snapshot.picture.image, snapshot.picture.world_to_pixel, paths);
+  DrawPaths(snapshot->picture.image, snapshot->picture.world_to_pixel, paths);
   if (options.legend) {
-    DrawLegend(snapshot.picture.image, LegendFor(paths), options.legend_corner,
+    DrawLegend(snapshot->picture.image, LegendFor(paths), options.legend_corner,
                options.legend_text_scale);
   }
+}
+
+Snapshot RenderSnapshot(const mjModel* m, mjData* d, const std::vector<PathOverlay>& paths,
+                        const SnapshotOptions& options) {
+  options.Validate();
+  const WorldBounds bounds = SnapshotBounds(m, paths, options);
+  Snapshot snapshot;
+  bool drawn = false;
+  std::string why = WhyNoOpenGl(options);
+  if (options.use_opengl && why.empty()) {
+    try {
+      TopDownRenderer renderer(m, bounds, options.view);
+      snapshot.picture = renderer.Render(d);
+      snapshot.backend = SnapshotBackend::kOpenGl;
+      drawn = true;
+    } catch (const std::runtime_error& e) {
+      why = e.what();
+    }
+  }
+  if (!drawn) snapshot = SoftwareSnapshot(m, d, bounds, options, why);
+  DrawSnapshotOverlays(&snapshot, paths, options);
   return snapshot;
 }
 

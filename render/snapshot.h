@@ -3,6 +3,7 @@
 #include <mujoco/mujoco.h>
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "render/overlay.h"
@@ -37,6 +38,20 @@ struct Snapshot {
 // @throws std::invalid_argument on bad options.
 Snapshot RenderSnapshot(const mjModel* m, mjData* d, const std::vector<PathOverlay>& paths,
                         const SnapshotOptions& options = {});
+
+// RenderSnapshot's steps, for callers that keep their own renderer (AsyncSnapshotWriter), so the
+// pictures cannot differ:
+// - the floor rectangle framed: the static geometry, widened to the paths with frame_paths;
+WorldBounds SnapshotBounds(const mjModel* m, const std::vector<PathOverlay>& paths,
+                           const SnapshotOptions& options);
+// - why OpenGL cannot draw it (empty: it can try, or options.use_opengl is false);
+std::string WhyNoOpenGl(const SnapshotOptions& options);
+// - the software picture; when options.use_opengl, says once per process on stderr why not GL;
+Snapshot SoftwareSnapshot(const mjModel* m, const mjData* d, const WorldBounds& bounds,
+                          const SnapshotOptions& options, const std::string& why);
+// - the scale bar, the paths and their legend drawn over the picture.
+void DrawSnapshotOverlays(Snapshot* snapshot, const std::vector<PathOverlay>& paths,
+                          const SnapshotOptions& options);
 
 // RenderSnapshot, then writes the PNG to `path`. Returns which renderer drew it.
 // @throws std::invalid_argument on bad options, std::runtime_error naming `path` when writing

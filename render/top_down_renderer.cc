@@ -150,11 +150,25 @@ TopDownRenderer::TopDownRenderer(const mjModel* m, const WorldBounds& bounds,
     gl_->option.geomgroup[i] = (i <= 2) || (options_.show_robot && i == kRobotGeomGroup);
     gl_->option.sitegroup[i] = 0;  // sensor sites would clutter the map
   }
+  gl_->z_top_m = StaticGeometryExtent(copy).z_max_m;
+  Aim();
+}
 
-  const StaticExtent extent = StaticGeometryExtent(copy);
-  gl_->z_top_m = extent.z_max_m;
-  const double height_m = TopDownCameraHeightM(options_.longer_side_px, extent.z_max_m);
-  gl_->gl_camera = MakeTopDownGlCamera(frame_, height_m, extent.z_max_m);
+bool TopDownRenderer::Reframe(const WorldBounds& bounds) {
+  const TopDownFrame frame = FrameFor(bounds, options_);
+  const mjrRect max_viewport = mjr_maxViewport(&gl_->con);
+  if (frame.width_px > max_viewport.width || frame.height_px > max_viewport.height ||
+      frame.width_px > gl_->context.width() || frame.height_px > gl_->context.height()) {
+    return false;
+  }
+  frame_ = frame;
+  Aim();
+  return true;
+}
+
+void TopDownRenderer::Aim() {
+  const double height_m = TopDownCameraHeightM(options_.longer_side_px, gl_->z_top_m);
+  gl_->gl_camera = MakeTopDownGlCamera(frame_, height_m, gl_->z_top_m);
   // The abstract camera only places the headlight (mjv_updateScene derives it from this camera);
   // the GL camera above replaces the projection it would produce.
   mjv_defaultCamera(&gl_->camera);
@@ -171,14 +185,31 @@ TopDownRenderer::TopDownRenderer(const mjModel* m, const WorldBounds& bounds,
 
 TopDownRenderer::~TopDownRenderer() = default;
 
-TopDownImage TopDownRenderer::Render(mjData* d) {
+void TopDownRenderer::Draw(mjData* d, const mjrRect& viewport) {
   gl_->context.MakeCurrent();
   mjr_setBuffer(mjFB_OFFSCREEN, &gl_->con);
   mjv_updateScene(gl_->model.get(), d, &gl_->option, nullptr, &gl_->camera, mjCAT_ALL, &gl_->scene);
   gl_->scene.camera[0] = gl_->gl_camera;
   gl_->scene.camera[1] = gl_->gl_camera;
-  const mjrRect viewport{0, 0, frame_.width_px, frame_.height_px};
   mjr_render(viewport, &gl_->scene, &gl_->con);
+}
+
+void TopDownRenderer::WarmUp(mjData* d) {
+  // One llvmpipe tile (64 x 64): rasterising the whole picture would cost about as much as the
+  // compilation this is for, and the shaders do not depend on the viewport.
+  const mjrRect viewport{0, 0, std::min(64, frame_.width_px), std::min(64, frame_.height_px)};
+  Draw(d, viewport);
+  // Reading back compiles the multisample resolve and the pixel conversion.
+  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(viewport.width) * viewport.height * 3);
+  mjr_readPixels(rgb.data(), nullptr, viewport, &gl_->con);
+  if (const int error = mjr_getError(); error != 0) {
+    throw std::runtime_error("offscreen rendering: OpenGL error " + std::to_string(error));
+  }
+}
+
+TopDownImage TopDownRenderer::Render(mjData* d) {
+  const mjrRect viewport{0, 0, frame_.width_px, frame_.height_px};
+  Draw(d, viewport);
   std::vector<std::uint8_t> rgb(static_cast<std::size_t>(frame_.width_px) * frame_.height_px * 3);
   mjr_readPixels(rgb.data(), nullptr, viewport, &gl_->con);
   if (const int error = mjr_getError(); error != 0) {

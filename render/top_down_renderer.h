@@ -40,7 +40,8 @@ WorldToPixel FloorMappingOf(const mjvGLCamera& camera, int width_px, int height_
 
 // Renders top-down views of one model through MuJoCo's OpenGL renderer in an offscreen context.
 // Construction copies the model (to size the offscreen buffer and light the scene from above) and
-// builds the GL resources once, so rendering many frames is cheap. Not copyable; one per thread.
+// builds the GL resources once, so rendering many frames is cheap. Not copyable; one per thread:
+// construct, render and destroy it on the same thread (its GL context is current there).
 class TopDownRenderer {
  public:
   // Frames `bounds` (plus options.margin_m).
@@ -56,9 +57,22 @@ class TopDownRenderer {
   // @throws std::runtime_error when GL reports an error.
   TopDownImage Render(mjData* d);
 
+  // Draws the scene in `d` into a small corner of the buffer and drops the pixels: llvmpipe
+  // compiles its shaders on a scene's first draw, so a later Render is quicker.
+  // @throws std::runtime_error when GL reports an error.
+  void WarmUp(mjData* d);
+
+  // Frames `bounds` instead (same options), keeping the GL context and its compiled shaders.
+  // Returns false, changing nothing, when that picture is larger than the buffers made for the
+  // first framing (make a new renderer then). @throws std::invalid_argument on bad bounds.
+  [[nodiscard]] bool Reframe(const WorldBounds& bounds);
+
   const TopDownFrame& frame() const { return frame_; }
 
  private:
+  void Aim();  // points the cameras at frame_ and sets its floor map
+  void Draw(mjData* d, const mjrRect& viewport);
+
   struct Gl;
   TopDownOptions options_;
   TopDownFrame frame_;

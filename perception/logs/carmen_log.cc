@@ -3,6 +3,7 @@
 #include <zlib.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -248,50 +249,62 @@ CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptio
 bool IsFlaserScan(const msgs::LaserScan& scan) { return FlaserCanCarry(scan); }
 
 void WriteCarmenLaser(std::ostream& out, const CarmenLaserRecord& record) {
-  // Room for any double in %.3f (DBL_MAX has 309 digits before the point): never truncated.
-  char number[400];
-  const auto put = [&](double v, const char* format) {
-    std::snprintf(number, sizeof(number), format, v);
-    out << ' ' << number;
+  // The line is built in one buffer and written once. std::to_chars with a precision formats
+  // exactly as printf's %.Nf / %.Ng in the C locale (the standard says so), at a fraction of
+  // snprintf's cost: 361 ranges per scan made snprintf most of a run's output writing.
+  std::string line;
+  line.reserve(32 + 8 * record.scan.ranges_m.size());
+  const auto put = [&](double v, std::chars_format format, int precision) {
+    // Room for any double in %.3f (DBL_MAX has 309 digits before the point): never truncated.
+    char number[400];
+    const auto [end, error] = std::to_chars(number, number + sizeof(number), v, format, precision);
+    line += ' ';
+    line.append(number, error == std::errc() ? end : number);
+  };
+  const auto put_fixed = [&](double v, int decimals) {
+    put(v, std::chars_format::fixed, decimals);
   };
   const msgs::LaserScan& scan = record.scan;
   if (!FlaserCanCarry(scan)) {
     // laser_type 0 (SICK LMS), accuracy 0, remission_mode 0, no remissions; tv rv, the safety
     // distances and the turn axis are unknown (0).
-    out << "ROBOTLASER1 0";
+    line += "ROBOTLASER1 0";
     // Angles to the last bit: a rounded resolution would add up over hundreds of beams.
-    put(scan.angle_min_rad, "%.17g");
-    put(scan.angle_increment_rad * static_cast<double>(scan.ranges_m.size() - 1), "%.17g");
-    put(scan.angle_increment_rad, "%.17g");
-    put(scan.range_max_m, "%.3f");
-    out << " 0 0 " << scan.ranges_m.size();
-    for (double r : scan.ranges_m) put(std::min(r, scan.range_max_m), "%.3f");
-    out << " 0";
-    put(record.X_WL.x_m, "%.6f");
-    put(record.X_WL.y_m, "%.6f");
-    put(record.X_WL.theta_rad, "%.6f");
-    put(record.X_WR_odom.x_m, "%.6f");
-    put(record.X_WR_odom.y_m, "%.6f");
-    put(record.X_WR_odom.theta_rad, "%.6f");
-    out << " 0 0 0 0 0";
-    put(scan.time_s, "%.6f");
-    out << " plywood";
-    put(scan.time_s, "%.6f");
-    out << '\n';
+    put(scan.angle_min_rad, std::chars_format::general, 17);
+    put(scan.angle_increment_rad * static_cast<double>(scan.ranges_m.size() - 1),
+        std::chars_format::general, 17);
+    put(scan.angle_increment_rad, std::chars_format::general, 17);
+    put_fixed(scan.range_max_m, 3);
+    line += " 0 0 " + std::to_string(scan.ranges_m.size());
+    for (double r : scan.ranges_m) put_fixed(std::min(r, scan.range_max_m), 3);
+    line += " 0";
+    put_fixed(record.X_WL.x_m, 6);
+    put_fixed(record.X_WL.y_m, 6);
+    put_fixed(record.X_WL.theta_rad, 6);
+    put_fixed(record.X_WR_odom.x_m, 6);
+    put_fixed(record.X_WR_odom.y_m, 6);
+    put_fixed(record.X_WR_odom.theta_rad, 6);
+    line += " 0 0 0 0 0";
+    put_fixed(scan.time_s, 6);
+    line += " plywood";
+    put_fixed(scan.time_s, 6);
+    line += '\n';
+    out << line;
     return;
   }
-  out << "FLASER " << record.scan.ranges_m.size();
-  for (double r : record.scan.ranges_m) put(std::min(r, record.scan.range_max_m), "%.3f");
-  put(record.X_WL.x_m, "%.6f");
-  put(record.X_WL.y_m, "%.6f");
-  put(record.X_WL.theta_rad, "%.6f");
-  put(record.X_WR_odom.x_m, "%.6f");
-  put(record.X_WR_odom.y_m, "%.6f");
-  put(record.X_WR_odom.theta_rad, "%.6f");
-  put(record.scan.time_s, "%.6f");
-  out << " plywood";
-  put(record.scan.time_s, "%.6f");
-  out << '\n';
+  line += "FLASER " + std::to_string(scan.ranges_m.size());
+  for (double r : scan.ranges_m) put_fixed(std::min(r, scan.range_max_m), 3);
+  put_fixed(record.X_WL.x_m, 6);
+  put_fixed(record.X_WL.y_m, 6);
+  put_fixed(record.X_WL.theta_rad, 6);
+  put_fixed(record.X_WR_odom.x_m, 6);
+  put_fixed(record.X_WR_odom.y_m, 6);
+  put_fixed(record.X_WR_odom.theta_rad, 6);
+  put_fixed(scan.time_s, 6);
+  line += " plywood";
+  put_fixed(scan.time_s, 6);
+  line += '\n';
+  out << line;
 }
 
 void WriteCarmenParam(std::ostream& out, const std::string& name, const std::string& value) {

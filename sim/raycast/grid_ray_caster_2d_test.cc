@@ -240,6 +240,7 @@ TEST_P(RandomWorldTest, TiltedAndSteepRaysMatchMjRay) {
   const CompiledWorld w = Compile(RandomWorld(8, 60));
   GridRayCaster2DOptions options;
   options.cell_size_m = GetParam();
+  options.level_tolerance_rad = 0.0;  // every ray exactly as given
   const MujocoRayCaster reference(w.model.get(), w.data.get());
   const GridRayCaster2D grid(w.model.get(), w.data.get(), options);
   std::mt19937_64 rng(12);
@@ -262,7 +263,7 @@ TEST_P(RandomWorldTest, NearlyLevelRaysAreCastLevel) {
   const CompiledWorld w = Compile(RandomWorld(8, 60));
   GridRayCaster2DOptions options;
   options.cell_size_m = GetParam();
-  options.level_tolerance_rad = 1e-3;
+  EXPECT_EQ(options.level_tolerance_rad, 1e-3);  // the default
   const MujocoRayCaster reference(w.model.get(), w.data.get());
   const GridRayCaster2D grid(w.model.get(), w.data.get(), options);
   std::mt19937_64 rng(13);

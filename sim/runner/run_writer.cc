@@ -1,5 +1,6 @@
 #include "sim/runner/run_writer.h"
 
+#include <charconv>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -138,10 +139,16 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
         record.laser.empty() ? 0 : record.laser.front().hit_segment_ids.size();
     for (std::size_t i = 0; i < beams; ++i) hits.out() << ",beam_" << i << "_segment";
     hits.out() << '\n';
+    std::string line;  // one write per scan: per-id stream insertion cost more than the scan
     for (const auto& laser : record.laser) {
-      hits.out() << T(laser.scan.time_s);
-      for (int id : laser.hit_segment_ids) hits.out() << ',' << id;
-      hits.out() << '\n';
+      line = T(laser.scan.time_s);
+      for (int id : laser.hit_segment_ids) {
+        char number[16];
+        line += ',';
+        line.append(number, std::to_chars(number, number + sizeof(number), id).ptr);
+      }
+      line += '\n';
+      hits.out() << line;
     }
   }
   if (lines_truth) {

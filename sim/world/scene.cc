@@ -6,6 +6,7 @@
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
 #include "sim/world/contact_filter.h"
+#include "sim/world/static_geom_step.h"
 
 namespace plywood::sim {
 namespace {
@@ -153,7 +154,8 @@ void Scene::SetWheelSpeeds(const msgs::WheelSpeedCommand& command) {
 }
 
 void Scene::Step() {
-  WithNearPairs([&] { mj_step(model_.get(), data_.get()); });
+  // mj_step, bit for bit, without recomputing the static world geoms' poses.
+  WithNearPairs([&] { StepWithStaticWorldGeoms(model_.get(), data_.get()); });
 }
 
 WheelGeometry Scene::wheel_geometry() const {

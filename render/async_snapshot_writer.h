@@ -1,0 +1,65 @@
+#pragma once
+
+#include <mujoco/mujoco.h>
+
+#include <condition_variable>
+#include <exception>
+#include <filesystem>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+#include "render/overlay.h"
+#include "render/snapshot.h"
+#include "sim/world/mujoco_handles.h"
+
+namespace plywood::render {
+
+// WriteSnapshot on a thread of its own, started before the run it pictures: loading OSMesa and
+// libLLVM, making the GL contexts and llvmpipe's shader compilation (a warm-up frame of the
+// model's initial state) overlap the simulation instead of following it, and the final frame and
+// its PNG overlap the writing of the other outputs. The PNG is byte-identical to WriteSnapshot's
+// (the same drawing code; the warm-up frame only compiles shaders). Errors surface in Finish.
+class AsyncSnapshotWriter {
+ public:
+  // Copies `m` on the calling thread, so call it while nothing changes the model (not during a
+  // step), then starts the thread.
+  // @throws std::invalid_argument on bad options, std::runtime_error when the copy fails.
+  AsyncSnapshotWriter(const mjModel* m, const SnapshotOptions& options);
+  // Waits for the thread (a Write not yet drawn is dropped); errors are not reported.
+  ~AsyncSnapshotWriter();
+  AsyncSnapshotWriter(const AsyncSnapshotWriter&) = delete;
+  AsyncSnapshotWriter& operator=(const AsyncSnapshotWriter&) = delete;
+
+  // Hands over the picture of `d` (a state of the model given at construction, kinematics
+  // computed, as after mj_step): `d` is copied here, so the caller may go on changing it.
+  // @pre called at most once.
+  void Write(const mjData* d, std::vector<PathOverlay> paths, std::filesystem::path path);
+
+  // Waits until the PNG is written; returns which renderer drew it.
+  // @throws what WriteSnapshot would have: std::runtime_error naming the path when writing fails;
+  // std::logic_error when Write was not called.
+  SnapshotBackend Finish();
+
+ private:
+  struct Request {
+    sim::MjDataPtr data;
+    std::vector<PathOverlay> paths;
+    std::filesystem::path path;
+  };
+  void Work();
+
+  SnapshotOptions options_;
+  sim::MjModelPtr model_;
+  std::mutex mutex_;
+  std::condition_variable requested_;
+  std::optional<Request> request_;  // guarded by mutex_
+  bool cancelled_ = false;          // guarded by mutex_
+  bool written_ = false;
+  SnapshotBackend backend_ = SnapshotBackend::kSoftware;
+  std::exception_ptr error_;
+  std::thread thread_;  // last: starts once everything above exists
+};
+
+}  // namespace plywood::render

@@ -1,0 +1,67 @@
+#include "sim/world/static_geom_step.h"
+
+namespace plywood::sim {
+namespace {
+
+// mj_kinematics with its geom loop over the geoms after the world body's only.
+void KinematicsOfMovingGeoms(mjModel* m, mjData* d, int first_moving_geom) {
+  const int ngeom = m->ngeom;
+  struct RestoreGeomCount {
+    mjModel* m;
+    int ngeom;
+    ~RestoreGeomCount() { m->ngeom = ngeom; }
+  } restore{m, ngeom};
+  m->ngeom = 0;  // bodies and sites as usual, no geoms
+  mj_kinematics(m, d);
+  m->ngeom = ngeom;
+  for (int g = first_moving_geom; g < ngeom; ++g) {
+    mj_local2Global(d, d->geom_xpos + 3 * g, d->geom_xmat + 9 * g, m->geom_pos + 3 * g,
+                    m->geom_quat + 4 * g, m->geom_bodyid[g], m->geom_sameframe[g]);
+  }
+}
+
+// mj_fwdPosition with the narrowed kinematics.
+void PositionStage(mjModel* m, mjData* d, int first_moving_geom) {
+  KinematicsOfMovingGeoms(m, d, first_moving_geom);
+  mj_comPos(m, d);
+  mj_camlight(m, d);
+  mj_tendon(m, d);
+  mj_transmission(m, d);
+  mj_crb(m, d);
+  mj_factorM(m, d);
+  mj_collision(m, d);
+  mj_makeConstraint(m, d);
+  mj_projectConstraint(m, d);
+}
+
+int Resets(const mjData* d) {
+  return d->warning[mjWARN_BADQPOS].number + d->warning[mjWARN_BADQVEL].number;
+}
+
+}  // namespace
+
+void StepWithStaticWorldGeoms(mjModel* m, mjData* d) {
+  // The world body's geoms come first in MuJoCo's geom order.
+  const int static_geoms = m->body_geomadr[0] == 0 ? m->body_geomnum[0] : 0;
+  if (static_geoms == 0 || m->opt.integrator != mjINT_EULER) {
+    mj_step(m, d);
+    return;
+  }
+  // mj_step: check, forward, check, integrate; mj_forward: position stage, position sensors
+  // and energy, then the rest (mj_forwardSkip from the velocity stage on).
+  const int resets = Resets(d);
+  mj_checkPos(m, d);
+  mj_checkVel(m, d);
+  if (Resets(d) != resets) {
+    mj_fwdPosition(m, d);  // a reset zeroed every pose, the static ones too
+  } else {
+    PositionStage(m, d, static_geoms);
+  }
+  mj_sensorPos(m, d);
+  if (mjENABLED(mjENBL_ENERGY)) mj_energyPos(m, d);
+  mj_forwardSkip(m, d, mjSTAGE_POS, 0);
+  mj_checkAcc(m, d);
+  mj_Euler(m, d);
+}
+
+}  // namespace plywood::sim
