@@ -74,6 +74,20 @@ struct SonarExplorerOptions {
   int frontier_min_cells = 3;          // smaller 8-connected frontier clusters are noise
   double frontier_view_m = 0.5;        // a frontier cell the robot came this close to is done
   double frontier_wall_band_m = 0.15;  // unknown cells this close to occupied ones are wall edge
+  // Obstacle circuits (the seed's step 5): every obstacle the map fits is gone round once, before
+  // places and frontiers, by driving to the corners of its rectangle grown by wall_distance_m
+  // (obstacle on the left). Each corner is approached over free cells that keep
+  // narrow_clearance_m from what was heard, as far as they reach: a corner behind a gap narrower
+  // than the robot's passage is given up there (the gap stays obstacle), one in unseen space is
+  // approached as the sonar opens the way. Off: no circuits.
+  bool circle_obstacles = true;
+  double circuit_reach_m = 0.15;  // a circuit corner this close is reached
+  // Whether circuit moves may keep only narrow_clearance_m where path_clearance_m gets no nearer.
+  bool circuit_narrow = true;
+  double circuit_max_s = 60.0;  // one obstacle's circuit is given up after this long
+  // An obstacle that overlaps one already gone round, or comes closer to it than this, is that
+  // one (the map is refitted at every replan).
+  double circuit_same_m = 0.3;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
 };
@@ -109,6 +123,8 @@ class SonarExplorer final : public robot::Controller {
   // The map abstracted from the grid now (plus the failed moves in D).
   CognitiveMap Map() const;
   const std::optional<msgs::Pose2D>& start() const { return start_; }
+  // Obstacles gone round (or given up after circuit_max_s), as their rectangles were then.
+  const std::vector<Rect>& circled_obstacles() const { return circled_; }
   int rings_integrated() const { return rings_integrated_; }
 
  private:
@@ -180,6 +196,32 @@ class SonarExplorer final : public robot::Controller {
   // Visit counts live on the grid's cells so they survive re-partitioning.
   std::vector<double> visits_;
   std::vector<char> visited_;
+  // Obstacle circuits: the corners still to reach of the one being gone round, and the
+  // obstacles gone round (their rectangle when the circuit began).
+  struct Circuit {
+    Rect box;
+    std::vector<Eigen::Vector2d> corners;
+    double start_s = 0.0;
+  };
+  std::optional<Circuit> circuit_;
+  std::vector<Rect> circled_;
+  bool heading_to_circuit_ = false;
+  // Sets path_ to the next circuit corner (starting a circuit round the nearest obstacle not yet
+  // gone round when none is under way); false when every obstacle was gone round.
+  bool PlanCircuit(const CognitiveMap& map, const PlanningCells& planning,
+                   const Eigen::Vector2d& here, double time_s);
+  // Waypoints over the free `clear` cells to the reachable one nearest `target`; empty when the
+  // robot's own cell is that one (within waypoint_tolerance_m) or the robot's cell is off the grid.
+  std::vector<Eigen::Vector2d> PathToward(const std::vector<char>& clear, const CellMap& cells,
+                                          const Eigen::Vector2d& here,
+                                          const Eigen::Vector2d& target) const;
+  // The same over safe_from_heard, else over narrow_safe_from_heard.
+  std::vector<Eigen::Vector2d> PathToward(const PlanningCells& planning,
+                                          const Eigen::Vector2d& here,
+                                          const Eigen::Vector2d& target) const;
+  // A blocked move (front echo, occupied cell, bump): its transition goes into D and its target
+  // is never tried again; a circuit corner's is skipped instead.
+  void GiveUpMove(const Eigen::Vector2d& here);
   // Marks the cells within frontier_view_m of `at` as looked at.
   void MarkLooked(const Eigen::Vector2d& at);
   std::vector<char> looked_;  // cells within frontier_view_m of a frontier goal the robot reached

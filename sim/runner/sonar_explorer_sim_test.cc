@@ -1,5 +1,5 @@
-// Seed 001's explorer in the simulator: same seed -> identical map; a corrupted weights file is a
-// clear error.
+// Seed 001's explorer in the simulator: same seed -> identical map; the obstacle is gone round; a
+// corrupted weights file is a clear error.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -36,6 +36,32 @@ TEST(SonarExplorerSimTest, SameSeedGivesTheSameMap) {
   for (double l : a) occupied += l > 1.0;
   EXPECT_GT(occupied, 10);  // the walls near the start were heard
   EXPECT_NE(RunMap({"duration_s=12", "seed=2"}), a);
+}
+
+// Layout 4: one 0.57 m box in the centre of the room. The explorer goes round it once at the wall
+// distance: the truth passes beside each of its four faces, and the circuit was begun on a
+// rectangle where the box is.
+TEST(SonarExplorerSimTest, GoesRoundTheObstacle) {
+  ExperimentRunner runner(LoadExperimentConfig(kExperiment, {}));
+  runner.Run();
+  const auto* explorer = dynamic_cast<const perception::SonarExplorer*>(runner.controller());
+  ASSERT_NE(explorer, nullptr);
+  EXPECT_EQ(explorer->end_reason(), "map_complete");
+  ASSERT_EQ(explorer->circled_obstacles().size(), 1u);
+  const perception::Rect& circled = explorer->circled_obstacles().front();
+  // Odometry starts at the spawn pose: the map is in world coordinates.
+  EXPECT_LT(circled.Centre().norm(), 0.15);
+  constexpr double kHalf = 0.285;
+  // Beside a face: within 0.3-0.8 m of it (the wall distance is 0.5 m) and along its middle.
+  bool beside[4] = {false, false, false, false};  // east, north, west, south
+  for (const TrajectorySample& t : runner.record().trajectory) {
+    const double x = t.truth.x_m, y = t.truth.y_m;
+    beside[0] = beside[0] || (x > kHalf + 0.3 && x < kHalf + 0.8 && std::abs(y) < kHalf);
+    beside[1] = beside[1] || (y > kHalf + 0.3 && y < kHalf + 0.8 && std::abs(x) < kHalf);
+    beside[2] = beside[2] || (x < -kHalf - 0.3 && x > -kHalf - 0.8 && std::abs(y) < kHalf);
+    beside[3] = beside[3] || (y < -kHalf - 0.3 && y > -kHalf - 0.8 && std::abs(x) < kHalf);
+  }
+  for (int k = 0; k < 4; ++k) EXPECT_TRUE(beside[k]) << "face " << k;
 }
 
 TEST(SonarExplorerSimTest, CorruptedWeightsFileIsAClearError) {
