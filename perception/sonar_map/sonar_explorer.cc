@@ -319,6 +319,8 @@ bool SonarExplorer::PlanCircuit(const CognitiveMap& map, const PlanningCells& pl
       // Reached, or as near as the free space lets the robot come: on to the next corner.
       circuit_->corners.erase(circuit_->corners.begin());
     }
+    if (std::optional<ObstacleOutline> outline = OutlineHeard(circuit_->box))
+      outlines_.push_back(*outline);
     circuit_.reset();
   }
 }
@@ -376,6 +378,22 @@ std::vector<Eigen::Vector2d> SonarExplorer::PathToward(const std::vector<char>& 
   std::vector<char> goal(traversable.size(), 0);
   goal[static_cast<std::size_t>(best.y()) * W + best.x()] = 1;
   return CellPath(traversable, goal, here).value_or(std::vector<Eigen::Vector2d>{});
+}
+
+std::optional<ObstacleOutline> SonarExplorer::OutlineHeard(const Rect& box) const {
+  // The occupied cells round the box, out to half the wall distance: its faces as heard.
+  const double margin = 0.5 * options_.wall_distance_m;
+  std::vector<Eigen::Vector2d> heard;
+  for (int iy = 0; iy < grid_.height(); ++iy)
+    for (int ix = 0; ix < grid_.width(); ++ix) {
+      const Eigen::Vector2d c = grid_.CellCentre(ix, iy);
+      if (c.x() > box.x0 - margin && c.x() < box.x1 + margin && c.y() > box.y0 - margin &&
+          c.y() < box.y1 + margin && grid_.Probability(ix, iy) > 1.0 - options_.map.eps)
+        heard.push_back(c);
+    }
+  constexpr int kMinPointsPerSide = 3;
+  return OutlineFromBoundary(heard, grid_.resolution_m(), options_.map.fit_sigma_m,
+                             kMinPointsPerSide);
 }
 
 void SonarExplorer::GiveUpMove(const Eigen::Vector2d& here) {

@@ -9,6 +9,7 @@
 #include "perception/sonar_map/cognitive_map.h"
 #include "perception/sonar_map/frontier_planner.h"
 #include "perception/sonar_map/log_odds_grid.h"
+#include "perception/sonar_map/obstacle_circuit.h"
 #include "perception/sonar_map/sonar_cell_model.h"
 #include "perception/sonar_map/sonar_net.h"
 #include "robot/control/controller.h"
@@ -125,6 +126,9 @@ class SonarExplorer final : public robot::Controller {
   const std::optional<msgs::Pose2D>& start() const { return start_; }
   // Obstacles gone round (or given up after circuit_max_s), as their rectangles were then.
   const std::vector<Rect>& circled_obstacles() const { return circled_; }
+  // The circuits that closed: four boundary lines heard round the obstacle, corners where
+  // consecutive ones meet (not yet used for the map's rectangles).
+  const std::vector<ObstacleOutline>& closed_outlines() const { return outlines_; }
   int rings_integrated() const { return rings_integrated_; }
 
  private:
@@ -205,6 +209,10 @@ class SonarExplorer final : public robot::Controller {
   };
   std::optional<Circuit> circuit_;
   std::vector<Rect> circled_;
+  std::vector<ObstacleOutline> outlines_;
+  // The outline of the obstacle in `box` from the occupied cells round it; nullopt when a side
+  // was never heard.
+  std::optional<ObstacleOutline> OutlineHeard(const Rect& box) const;
   bool heading_to_circuit_ = false;
   // Sets path_ to the next circuit corner (starting a circuit round the nearest obstacle not yet
   // gone round when none is under way); false when every obstacle was gone round.
