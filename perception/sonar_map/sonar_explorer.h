@@ -95,17 +95,17 @@ struct SonarExplorerOptions {
 
 // Seed 001's exploration controller. It owns the cognitive map: every new sonar ring goes through
 // the sonar model into the log-odds grid at the current odometry pose. It first follows the room's
-// boundary (wall on the left) for one circuit, then repeatedly rebuilds the partition map, decays
-// the visit counts (c <- lambda c), counts a visit to the partition it is in, and drives to the
-// free partition with the highest utility U = 1/c (K if never visited) along the graph's shortest
-// x/y path, or over the grid when that path would pass closer than path_clearance_m to anything
-// heard. A move that a close front echo (or an occupied cell of the grid) blocks puts the
-// transition it was making into D. Once every free partition was visited it drives to the nearest
-// unknown frontier it has not yet reached (the places live in the room as fitted, which misses what
-// was never seen). It finishes when no place and no frontier is left, or after explore_max_s.
-// A pressed bump panel marks the contact point for the planner, stops the wheels at once and backs
-// the robot away from it. Otherwise the commanded wheel speeds change at most
-// max_wheel_accel_rad_s2.
+// boundary (wall on the left) for one circuit, then repeatedly rebuilds the partition map, goes
+// round every obstacle rectangle not yet gone round (circle_obstacles), decays each visit count c
+// to lambda c, counts a visit to the partition it is in, and drives to the free partition with the
+// highest utility U = 1/c (K if never visited) along the graph's shortest x/y path, or over the
+// grid when that path would pass closer than path_clearance_m to anything heard. A move that a
+// close front echo (or an occupied cell of the grid) blocks puts the transition it was making into
+// D. Once every free partition was visited it drives to the nearest unknown frontier it has not yet
+// reached (the places live in the room as fitted, which misses what was never seen). It finishes
+// when no obstacle, no place and no frontier is left, or after explore_max_s. A pressed bump panel
+// marks the contact point for the planner, stops the wheels at once and backs the robot away from
+// it. Otherwise the commanded wheel speeds change at most max_wheel_accel_rad_s2.
 class SonarExplorer final : public robot::Controller {
  public:
   // @throws std::invalid_argument for invalid options.
