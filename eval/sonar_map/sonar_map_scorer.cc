@@ -68,6 +68,9 @@ bool AddSonarMapMetrics(sim::ExperimentRunner& runner) {
   m.Set("exploration.end_reason",
         explorer->Finished() ? explorer->end_reason() : std::string("run_ended"));
   if (explorer->Finished()) m.Set("exploration.end_time_s", explorer->end_time_s());
+  // Obstacles gone round, and how many of those circuits heard all four sides.
+  m.Set("exploration.obstacles_circled", static_cast<double>(explorer->circled_obstacles().size()));
+  m.Set("exploration.circuits_closed", static_cast<double>(explorer->closed_outlines().size()));
   return true;
 }
 

@@ -9,6 +9,7 @@
 #include "msgs/shortest_number.h"
 #include "perception/sonar_map/echo_gated_model.h"
 #include "perception/sonar_map/frontier_planner.h"
+#include "perception/sonar_map/obstacle_circuit.h"
 #include "robot/drive/diff_drive_kinematics.h"
 
 namespace plywood::perception {
@@ -98,6 +99,9 @@ void SonarExplorerOptions::Validate() const {
   RequireNonNegative("frontier_wall_band_m", frontier_wall_band_m);
   if (!(frontier_view_m > waypoint_tolerance_m))
     throw std::invalid_argument("frontier_view_m: must be > waypoint_tolerance_m");
+  RequireInRange("circuit_reach_m", circuit_reach_m, waypoint_tolerance_m, 1.0);
+  RequirePositive("circuit_max_s", circuit_max_s);
+  RequireNonNegative("circuit_same_m", circuit_same_m);
 }
 
 SonarExplorer::SonarExplorer(const robot::DiffDriveSpec& spec, const SonarExplorerOptions& options,
@@ -203,6 +207,12 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
   const Eigen::Vector2i cell = grid_.CellAt(here);
   if (cell.x() >= 0) visits_[cell.y() * grid_.width() + cell.x()] += 1.0;
   const PlanningCells planning = Planning(here, map.obstacles);
+  heading_to_circuit_ = false;
+  if (options_.circle_obstacles && PlanCircuit(map, planning, here, time_s)) {
+    heading_to_frontier_ = false;
+    target_partition_ = -1;
+    return;
+  }
   const auto& parts = map.partitions.partitions();
   double best_u = -1.0, best_d = std::numeric_limits<double>::infinity();
   bool best_unvisited = false;
@@ -270,6 +280,131 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
     }
     Finish("map_complete", time_s);
   }
+}
+
+bool SonarExplorer::PlanCircuit(const CognitiveMap& map, const PlanningCells& planning,
+                                const Eigen::Vector2d& here, double time_s) {
+  for (;;) {
+    if (!circuit_) {
+      // The nearest obstacle not gone round yet.
+      const Rect* next = nullptr;
+      for (const Rect& o : map.obstacles) {
+        bool done = false;
+        // The map is refitted at every replan: a rectangle overlapping one gone round is that
+        // obstacle seen better (or joined to a neighbour), not a new one.
+        for (const Rect& c : circled_)
+          done = done || (std::min(o.x1, c.x1) - std::max(o.x0, c.x0) > -options_.circuit_same_m &&
+                          std::min(o.y1, c.y1) - std::max(o.y0, c.y0) > -options_.circuit_same_m);
+        if (done) continue;
+        if (next == nullptr || (o.Centre() - here).norm() < (next->Centre() - here).norm())
+          next = &o;
+      }
+      if (next == nullptr) return false;
+      circled_.push_back(*next);
+      circuit_ = Circuit{*next, CircuitAround(*next, options_.wall_distance_m, here), time_s};
+      // Back to the first corner: the circuit is closed when the robot is where it began it.
+      circuit_->corners.push_back(circuit_->corners.front());
+    }
+    if (time_s - circuit_->start_s > options_.circuit_max_s) circuit_->corners.clear();
+    while (!circuit_->corners.empty()) {
+      const Eigen::Vector2d corner = circuit_->corners.front();
+      if ((corner - here).norm() >= options_.circuit_reach_m) {
+        std::vector<Eigen::Vector2d> path = PathToward(planning, here, corner);
+        if (!path.empty()) {
+          path_ = std::move(path);
+          heading_to_circuit_ = true;
+          return true;
+        }
+      }
+      // Reached, or as near as the free space lets the robot come: on to the next corner.
+      circuit_->corners.erase(circuit_->corners.begin());
+    }
+    if (std::optional<ObstacleOutline> outline = OutlineHeard(circuit_->box))
+      outlines_.push_back(*outline);
+    circuit_.reset();
+  }
+}
+
+std::vector<Eigen::Vector2d> SonarExplorer::PathToward(const PlanningCells& planning,
+                                                       const Eigen::Vector2d& here,
+                                                       const Eigen::Vector2d& target) const {
+  // Keeping path_clearance_m from what was heard where that gets nearer, narrow_clearance_m
+  // otherwise (a gap the robot can pass but not with the wide margin).
+  std::vector<Eigen::Vector2d> path =
+      PathToward(planning.safe_from_heard, planning.cells, here, target);
+  if (path.empty() && options_.circuit_narrow)
+    path = PathToward(planning.narrow_safe_from_heard, planning.cells, here, target);
+  return path;
+}
+
+std::vector<Eigen::Vector2d> SonarExplorer::PathToward(const std::vector<char>& clear,
+                                                       const CellMap& cells,
+                                                       const Eigen::Vector2d& here,
+                                                       const Eigen::Vector2d& target) const {
+  const int W = grid_.width(), H = grid_.height();
+  const Eigen::Vector2i start = grid_.CellAt(here);
+  if (start.x() < 0) return {};
+  std::vector<char> traversable(clear.size(), 0);
+  for (std::size_t i = 0; i < traversable.size(); ++i)
+    traversable[i] = clear[i] && cells.cells[i] == CellState::kFree;
+  // The reachable cells (8-connected flood from the robot's cell), and the one nearest the target.
+  std::vector<char> reached(traversable.size(), 0);
+  std::vector<Eigen::Vector2i> stack{start};
+  reached[static_cast<std::size_t>(start.y()) * W + start.x()] = 1;
+  Eigen::Vector2i best = start;
+  double best_d = (grid_.CellCentre(start.x(), start.y()) - target).norm();
+  while (!stack.empty()) {
+    const Eigen::Vector2i c = stack.back();
+    stack.pop_back();
+    const double d = (grid_.CellCentre(c.x(), c.y()) - target).norm();
+    const long ci = static_cast<long>(c.y()) * W + c.x(),
+               bi = static_cast<long>(best.y()) * W + best.x();
+    if (d < best_d - 1e-12 || (std::abs(d - best_d) <= 1e-12 && ci < bi)) {
+      best_d = d;
+      best = c;
+    }
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int nx = c.x() + dx, ny = c.y() + dy;
+        if (nx < 0 || ny < 0 || nx >= W || ny >= H) continue;
+        const std::size_t ni = static_cast<std::size_t>(ny) * W + nx;
+        if (reached[ni] || !traversable[ni]) continue;
+        reached[ni] = 1;
+        stack.push_back({nx, ny});
+      }
+  }
+  // No nearer place to be: where the robot stands is as close as it gets.
+  if ((here - target).norm() - best_d < options_.waypoint_tolerance_m) return {};
+  std::vector<char> goal(traversable.size(), 0);
+  goal[static_cast<std::size_t>(best.y()) * W + best.x()] = 1;
+  return CellPath(traversable, goal, here).value_or(std::vector<Eigen::Vector2d>{});
+}
+
+std::optional<ObstacleOutline> SonarExplorer::OutlineHeard(const Rect& box) const {
+  // The occupied cells round the box, out to half the wall distance: its faces as heard.
+  const double margin = 0.5 * options_.wall_distance_m;
+  std::vector<Eigen::Vector2d> heard;
+  for (int iy = 0; iy < grid_.height(); ++iy)
+    for (int ix = 0; ix < grid_.width(); ++ix) {
+      const Eigen::Vector2d c = grid_.CellCentre(ix, iy);
+      if (c.x() > box.x0 - margin && c.x() < box.x1 + margin && c.y() > box.y0 - margin &&
+          c.y() < box.y1 + margin && grid_.Probability(ix, iy) > 1.0 - options_.map.eps)
+        heard.push_back(c);
+    }
+  constexpr int kMinPointsPerSide = 3;
+  return OutlineFromBoundary(heard, grid_.resolution_m(), options_.map.fit_sigma_m,
+                             kMinPointsPerSide);
+}
+
+void SonarExplorer::GiveUpMove(const Eigen::Vector2d& here) {
+  if (heading_to_circuit_) {
+    // The way to this circuit corner is blocked: the circuit goes on from the next one.
+    if (circuit_ && !circuit_->corners.empty()) circuit_->corners.erase(circuit_->corners.begin());
+    heading_to_circuit_ = false;
+    return;
+  }
+  failed_moves_.emplace_back(here, path_.front());
+  abandoned_.push_back(path_.back());
 }
 
 void SonarExplorer::Finish(const char* reason, double time_s) {
@@ -467,10 +602,7 @@ std::optional<msgs::WheelSpeedCommand> SonarExplorer::ReactToBump(
   const double bearing = X_WR.theta_rad + 2.0 * M_PI * panel / n;
   const Eigen::Vector2d direction(std::cos(bearing), std::sin(bearing));
   blocking_echoes_.push_back(Position(X_WR) + (options_.robot_radius_m + 0.02) * direction);
-  if (perimeter_done_ && !path_.empty()) {
-    failed_moves_.emplace_back(Position(X_WR), path_.front());
-    abandoned_.push_back(path_.back());
-  }
+  if (perimeter_done_ && !path_.empty()) GiveUpMove(Position(X_WR));
   path_.clear();
   heading_to_frontier_ = false;
   last_replan_s_ = -1e9;
@@ -543,8 +675,7 @@ msgs::WheelSpeedCommand SonarExplorer::Explore(const robot::ControllerInput& inp
   }
   if (twist.linear_m_s > 0.0 && (echo || MapBlocksFront(X_WR))) {
     // Negative experience: this move cannot be made; forget the path and replan at once.
-    failed_moves_.emplace_back(Position(X_WR), path_.front());
-    abandoned_.push_back(path_.back());
+    GiveUpMove(Position(X_WR));
     path_.clear();
     last_replan_s_ = -1e9;
     return {};

@@ -9,6 +9,7 @@
 #include "perception/sonar_map/cognitive_map.h"
 #include "perception/sonar_map/frontier_planner.h"
 #include "perception/sonar_map/log_odds_grid.h"
+#include "perception/sonar_map/obstacle_circuit.h"
 #include "perception/sonar_map/sonar_cell_model.h"
 #include "perception/sonar_map/sonar_net.h"
 #include "robot/control/controller.h"
@@ -74,23 +75,37 @@ struct SonarExplorerOptions {
   int frontier_min_cells = 3;          // smaller 8-connected frontier clusters are noise
   double frontier_view_m = 0.5;        // a frontier cell the robot came this close to is done
   double frontier_wall_band_m = 0.15;  // unknown cells this close to occupied ones are wall edge
+  // Obstacle circuits (the seed's step 5): every obstacle the map fits is gone round once, before
+  // places and frontiers, by driving to the corners of its rectangle grown by wall_distance_m
+  // (obstacle on the left). Each corner is approached over free cells that keep
+  // narrow_clearance_m from what was heard, as far as they reach: a corner behind a gap narrower
+  // than the robot's passage is given up there (the gap stays obstacle), one in unseen space is
+  // approached as the sonar opens the way. Off: no circuits.
+  bool circle_obstacles = true;
+  double circuit_reach_m = 0.15;  // a circuit corner this close is reached
+  // Whether circuit moves may keep only narrow_clearance_m where path_clearance_m gets no nearer.
+  bool circuit_narrow = true;
+  double circuit_max_s = 60.0;  // one obstacle's circuit is given up after this long
+  // An obstacle that overlaps one already gone round, or comes closer to it than this, is that
+  // one (the map is refitted at every replan).
+  double circuit_same_m = 0.3;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
 };
 
 // Seed 001's exploration controller. It owns the cognitive map: every new sonar ring goes through
 // the sonar model into the log-odds grid at the current odometry pose. It first follows the room's
-// boundary (wall on the left) for one circuit, then repeatedly rebuilds the partition map, decays
-// the visit counts (c <- lambda c), counts a visit to the partition it is in, and drives to the
-// free partition with the highest utility U = 1/c (K if never visited) along the graph's shortest
-// x/y path, or over the grid when that path would pass closer than path_clearance_m to anything
-// heard. A move that a close front echo (or an occupied cell of the grid) blocks puts the
-// transition it was making into D. Once every free partition was visited it drives to the nearest
-// unknown frontier it has not yet reached (the places live in the room as fitted, which misses what
-// was never seen). It finishes when no place and no frontier is left, or after explore_max_s.
-// A pressed bump panel marks the contact point for the planner, stops the wheels at once and backs
-// the robot away from it. Otherwise the commanded wheel speeds change at most
-// max_wheel_accel_rad_s2.
+// boundary (wall on the left) for one circuit, then repeatedly rebuilds the partition map, goes
+// round every obstacle rectangle not yet gone round (circle_obstacles), decays each visit count c
+// to lambda c, counts a visit to the partition it is in, and drives to the free partition with the
+// highest utility U = 1/c (K if never visited) along the graph's shortest x/y path, or over the
+// grid when that path would pass closer than path_clearance_m to anything heard. A move that a
+// close front echo (or an occupied cell of the grid) blocks puts the transition it was making into
+// D. Once every free partition was visited it drives to the nearest unknown frontier it has not yet
+// reached (the places live in the room as fitted, which misses what was never seen). It finishes
+// when no obstacle, no place and no frontier is left, or after explore_max_s. A pressed bump panel
+// marks the contact point for the planner, stops the wheels at once and backs the robot away from
+// it. Otherwise the commanded wheel speeds change at most max_wheel_accel_rad_s2.
 class SonarExplorer final : public robot::Controller {
  public:
   // @throws std::invalid_argument for invalid options.
@@ -109,6 +124,11 @@ class SonarExplorer final : public robot::Controller {
   // The map abstracted from the grid now (plus the failed moves in D).
   CognitiveMap Map() const;
   const std::optional<msgs::Pose2D>& start() const { return start_; }
+  // Obstacles gone round (or given up after circuit_max_s), as their rectangles were then.
+  const std::vector<Rect>& circled_obstacles() const { return circled_; }
+  // The circuits that closed: four boundary lines heard round the obstacle, corners where
+  // consecutive ones meet (not yet used for the map's rectangles).
+  const std::vector<ObstacleOutline>& closed_outlines() const { return outlines_; }
   int rings_integrated() const { return rings_integrated_; }
 
  private:
@@ -180,6 +200,36 @@ class SonarExplorer final : public robot::Controller {
   // Visit counts live on the grid's cells so they survive re-partitioning.
   std::vector<double> visits_;
   std::vector<char> visited_;
+  // Obstacle circuits: the corners still to reach of the one being gone round, and the
+  // obstacles gone round (their rectangle when the circuit began).
+  struct Circuit {
+    Rect box;
+    std::vector<Eigen::Vector2d> corners;
+    double start_s = 0.0;
+  };
+  std::optional<Circuit> circuit_;
+  std::vector<Rect> circled_;
+  std::vector<ObstacleOutline> outlines_;
+  // The outline of the obstacle in `box` from the occupied cells round it; nullopt when a side
+  // was never heard.
+  std::optional<ObstacleOutline> OutlineHeard(const Rect& box) const;
+  bool heading_to_circuit_ = false;
+  // Sets path_ to the next circuit corner (starting a circuit round the nearest obstacle not yet
+  // gone round when none is under way); false when every obstacle was gone round.
+  bool PlanCircuit(const CognitiveMap& map, const PlanningCells& planning,
+                   const Eigen::Vector2d& here, double time_s);
+  // Waypoints over the free `clear` cells to the reachable one nearest `target`; empty when the
+  // robot's own cell is that one (within waypoint_tolerance_m) or the robot's cell is off the grid.
+  std::vector<Eigen::Vector2d> PathToward(const std::vector<char>& clear, const CellMap& cells,
+                                          const Eigen::Vector2d& here,
+                                          const Eigen::Vector2d& target) const;
+  // The same over safe_from_heard, else over narrow_safe_from_heard.
+  std::vector<Eigen::Vector2d> PathToward(const PlanningCells& planning,
+                                          const Eigen::Vector2d& here,
+                                          const Eigen::Vector2d& target) const;
+  // A blocked move (front echo, occupied cell, bump): its transition goes into D and its target
+  // is never tried again; a circuit corner's is skipped instead.
+  void GiveUpMove(const Eigen::Vector2d& here);
   // Marks the cells within frontier_view_m of `at` as looked at.
   void MarkLooked(const Eigen::Vector2d& at);
   std::vector<char> looked_;  // cells within frontier_view_m of a frontier goal the robot reached

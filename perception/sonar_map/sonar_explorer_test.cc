@@ -268,5 +268,18 @@ TEST(SonarExplorerTest, NonPositiveWheelAccelerationThrowsNamingTheField) {
   ExpectThrowsNaming(options, "max_wheel_accel_rad_s2");
 }
 
+TEST(SonarExplorerTest, CircuitOptionsOutOfRangeThrowNamingTheField) {
+  SonarExplorerOptions options = ClassicalOptions();
+  // A corner nearer than the waypoint tolerance could never count as reached.
+  options.circuit_reach_m = options.waypoint_tolerance_m / 2.0;
+  ExpectThrowsNaming(options, "circuit_reach_m");
+  options = ClassicalOptions();
+  options.circuit_max_s = 0.0;
+  ExpectThrowsNaming(options, "circuit_max_s");
+  options = ClassicalOptions();
+  options.circuit_same_m = -0.1;
+  ExpectThrowsNaming(options, "circuit_same_m");
+}
+
 }  // namespace
 }  // namespace plywood::perception

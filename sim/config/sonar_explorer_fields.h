@@ -55,6 +55,11 @@ void VisitFields(A& a, perception::SonarExplorerOptions& o) {
   a("narrow_clearance_m", o.narrow_clearance_m);
   a("frontier_view_m", o.frontier_view_m);
   a("frontier_wall_band_m", o.frontier_wall_band_m);
+  a("circle_obstacles", o.circle_obstacles);
+  a("circuit_reach_m", o.circuit_reach_m);
+  a("circuit_narrow", o.circuit_narrow);
+  a("circuit_max_s", o.circuit_max_s);
+  a("circuit_same_m", o.circuit_same_m);
 }
 
 }  // namespace plywood::sim
