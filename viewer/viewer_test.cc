@@ -17,9 +17,11 @@
 #include "sim/runner/experiment_runner.h"
 #include "tests/support/mujoco_test_support.h"
 #include "tests/support/xvfb_display.h"
+#include "viewer/gl_driver_pin.h"
 #include "viewer/live_viewer.h"
 #include "viewer/run_replay.h"
 #include "viewer/scene_overlays.h"
+#include "viewer/viewer_window.h"
 
 namespace plywood::viewer {
 namespace {
@@ -66,6 +68,22 @@ class ViewerTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() { testing::RequireXvfbOrSkip(); }
 };
+
+// First, so that no earlier window has pinned the driver. Mesa's GLX unloads its DRI driver when
+// the display closes, losing what the driver's globals held (a leak under LeakSanitizer); the
+// viewer keeps the driver loaded.
+TEST_F(ViewerTest, TheGlDriverStaysLoadedAfterTheWindowCloses) {
+  sim::ExperimentRunner runner(Office(1.0));
+  WindowOptions options;
+  options.width_px = 128;
+  options.height_px = 128;
+  options.panel = false;
+  {
+    ViewerWindow window(runner.scene().model(), options);
+    ASSERT_FALSE(LoadedGlDrivers().empty()) << "no *_dri.so loaded while a GL window is open";
+  }
+  EXPECT_FALSE(LoadedGlDrivers().empty());
+}
 
 TEST_F(ViewerTest, ScreenshotShowsTheRobotAtItsGroundTruthPoseAndTheLaserOnlyWhenOn) {
   sim::ExperimentRunner runner(Office(4.0));

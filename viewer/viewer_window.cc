@@ -12,6 +12,7 @@
 #include "render/top_down_renderer.h"
 #include "sim/world/mujoco_handles.h"
 #include "sim/world/scene.h"
+#include "viewer/gl_driver_pin.h"
 
 #if PLYWOOD_HAS_IMGUI
 #include <imgui.h>
@@ -119,7 +120,8 @@ ViewerWindow::ViewerWindow(const mjModel* m, const WindowOptions& options)
     throw std::runtime_error("viewer: cannot open a window: " + LastGlfwError());
   }
   glfwMakeContextCurrent(g.window);
-  glfwSwapInterval(0);  // the run paces itself; vsync would cap "as fast as possible"
+  PinLoadedGlDrivers();  // loaded with the context; see gl_driver_pin.h for why it stays
+  glfwSwapInterval(0);   // the run paces itself; vsync would cap "as fast as possible"
   glfwSetWindowUserPointer(g.window, this);
 
   g.model.reset(mj_copyModel(nullptr, m));

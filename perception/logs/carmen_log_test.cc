@@ -137,6 +137,51 @@ TEST(CarmenLogTest, ANarrowScanRoundTripsWithItsOwnBeamAngles) {
   EXPECT_EQ(flaser.str().rfind("FLASER 101 ", 0), 0u);
 }
 
+// Each way a ROBOTLASER1 line can be malformed is refused naming the line, like FLASER's.
+TEST(CarmenLogTest, MalformedRobotLaser1LinesNameTheLine) {
+  CarmenLaserRecord record;
+  record.scan.angle_min_rad = -0.5;
+  record.scan.angle_increment_rad = 0.5;
+  record.scan.ranges_m = {1.0, 2.0, 3.0};
+  record.scan.range_max_m = 8.0;
+  std::ostringstream line;
+  WriteCarmenLaser(line, record);
+  const std::string good = line.str();
+  ASSERT_EQ(good.rfind("ROBOTLASER1 0 -0.5 ", 0), 0u) << good;
+  // good: ROBOTLASER1 type start fov resolution max accuracy mode n=3 r r r m=0 ... (27 fields)
+  const auto with = [&good](std::size_t field, const std::string& value) {
+    std::istringstream in(good);
+    std::vector<std::string> t{std::istream_iterator<std::string>(in), {}};
+    if (value.empty()) {
+      t.erase(t.begin() + static_cast<std::ptrdiff_t>(field));
+    } else {
+      t[field] = value;
+    }
+    std::string out;
+    for (const std::string& token : t) out += (out.empty() ? "" : " ") + token;
+    return out + "\n";
+  };
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {with(25, ""), "ROBOTLASER1: expected 27 fields for 3 beams and 0 remissions, got 26"},
+      {with(8, "4"), "ROBOTLASER1: expected 28 fields for 4 beams and 0 remissions, got 27"},
+      {with(8, "40"), "ROBOTLASER1: fewer ranges than announced"},
+      {with(5, "0"), "ROBOTLASER1 maximum_range: must be > 0, got 0"},
+      {with(2, "abc"), "ROBOTLASER1 start_angle"},
+      {with(10, "-2"), "ROBOTLASER1 range"},
+      {"ROBOTLASER1 0 0 3\n", "ROBOTLASER1: missing fields before the ranges"},
+  };
+  EXPECT_EQ(ReadCarmenLog(WriteTemp("robotlaser_ok.log", good + good)).lasers.size(), 2u);
+  for (const auto& [bad, message] : cases) {
+    try {
+      ReadCarmenLog(WriteTemp("bad.log", good + bad + good));
+      ADD_FAILURE() << "no error for " << bad;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("bad.log:2: " + message), std::string::npos)
+          << e.what() << "\n for: " << bad;
+    }
+  }
+}
+
 TEST(CarmenLogTest, AnInfiniteOrNonPositiveFrontLaserMaxIsRefusedWithItsLine) {
   for (const std::string value : {"inf", "nan", "0", "-3", "1e999", "8x"}) {
     const auto path =

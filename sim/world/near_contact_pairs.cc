@@ -35,6 +35,12 @@ bool CanCollide(const mjModel* m, int g1, int g2) {
   return true;
 }
 
+// The grid cell of coordinate `v`, clamped to [0, n - 1] before the cast to int: a robot or a geom
+// far outside the grid (a spawn at x = 1e300) would overflow it.
+int ClampedCell(double v, double origin, double cell_m, int n) {
+  return static_cast<int>(std::clamp(std::floor((v - origin) / cell_m), 0.0, n - 1.0));
+}
+
 }  // namespace
 
 bool NearContactPairs::Within(const Footprint& f, double x, double y, double reach_m) {
@@ -194,8 +200,8 @@ NearContactPairs::NearContactPairs(mjModel* model, const mjData* data, int robot
     ny_ = cells(y1 - y0_);
   }
   const auto range = [&](double lo, double hi, double origin, int n, int* i0, int* i1) {
-    *i0 = std::clamp(static_cast<int>(std::floor((lo - origin) / cell_m_)), 0, n - 1);
-    *i1 = std::clamp(static_cast<int>(std::floor((hi - origin) / cell_m_)), 0, n - 1);
+    *i0 = ClampedCell(lo, origin, cell_m_, n);
+    *i1 = ClampedCell(hi, origin, cell_m_, n);
   };
   cell_begin_.assign(static_cast<size_t>(nx_) * ny_ + 1, 0);
   for (int pass = 0; pass < 2; ++pass) {
@@ -247,7 +253,7 @@ NearContactPairs::Active NearContactPairs::Activate(const mjData* data) {
   }
   if (nx_ > 0 && std::isfinite(x) && std::isfinite(y)) {
     const auto cell = [&](double v, double origin, int n) {
-      return std::clamp(static_cast<int>(std::floor((v - origin) / cell_m_)), 0, n - 1);
+      return ClampedCell(v, origin, cell_m_, n);
     };
     const int ix0 = cell(x - reach_m_, x0_, nx_), ix1 = cell(x + reach_m_, x0_, nx_);
     const int iy0 = cell(y - reach_m_, y0_, ny_), iy1 = cell(y + reach_m_, y0_, ny_);
