@@ -122,6 +122,36 @@ TEST_F(ReliabilityTest, SpawnOutsideEveryRoomIsRefused) {
   ExpectRefused(HallExperiment(5.0, 0.0), "", {"robot.spawn", "outside every room"});
 }
 
+// A static geom beyond any room's size (an absurd MJCF: a box at x = 1e200, another 1e150 m wide)
+// stays out of the near-contact grid, whose int cell indices it would overflow (UBSan: float-cast-
+// overflow), and the run is the same as in the plain hall.
+TEST_F(ReliabilityTest, AbsurdlyFarOrLargeWorldGeomsDoNotBreakTheContactGrid) {
+  const fs::path dir = Dir();
+  std::string xml = testing::Slurp(testing::SourceRoot() / "worlds/hall.xml");
+  const std::string wall = "<geom name=\"wall_0\"";
+  ASSERT_NE(xml.find(wall), std::string::npos);
+  xml.insert(
+      xml.find(wall),
+      "<geom name=\"far_box\" type=\"box\" pos=\"1e200 0 0.5\" size=\"1 1 0.5\"/>\n"
+      "    <geom name=\"huge_box\" type=\"box\" pos=\"0 0 -1e150\" size=\"1e150 1e150 1\"/>\n"
+      "    ");
+  const fs::path world = WriteFile(dir / "hall_absurd.xml", xml);
+  const std::string drive = "controller: {type: waypoints, speed_m_s: 0.3, waypoints: [[1, 0]]}\n";
+  std::string absurd = HallExperiment(0.0, 0.0, drive);
+  absurd.replace(absurd.find("worlds/hall.xml"), std::string("worlds/hall.xml").size(),
+                 world.string());
+  const auto run = [&](const std::string& name, const std::string& yaml) {
+    const fs::path file = WriteFile(dir / (name + ".yaml"), yaml);
+    const CliResult result = RunPlywood(
+        "run " + file.string() + " --quiet --set duration_s=2 --out " + (dir / name).string(), dir);
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+    return Slurp(dir / name / "trajectory.csv");
+  };
+  const std::string plain = run("plain", HallExperiment(0.0, 0.0, drive));
+  ASSERT_FALSE(plain.empty());
+  EXPECT_EQ(run("absurd", absurd), plain);
+}
+
 TEST_F(ReliabilityTest, SpawnFiveCentimetresFromAWallStillRuns) {
   // The P3-DX's bumper ring reaches about 0.22 m ahead of its centre of rotation; the wall's inner
   // face is at x = 4.

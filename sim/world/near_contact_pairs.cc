@@ -147,13 +147,18 @@ NearContactPairs::NearContactPairs(mjModel* model, const mjData* data, int robot
     const bool is_static = m->body_weldid[m->geom_bodyid[w]] == 0;
     const double radius = m->geom_rbound[w];
     if (!is_static) moving_world_geoms_ = true;
-    if (!is_static || !(radius > 0.0)) {
-      always_.push_back(w);  // planes, height fields, moving bodies
+    const mjtNum* c = data->geom_xpos + 3 * w;
+    // A geom beyond any room's size (an absurd MJCF) is not gridded either: its cell indices
+    // would not fit an int; MuJoCo tests it every step, as it always did.
+    constexpr double kGriddedLimitM = 1e6;
+    const bool room_sized = radius < kGriddedLimitM && m->geom_margin[w] < kGriddedLimitM &&
+                            std::abs(c[0]) < kGriddedLimitM && std::abs(c[1]) < kGriddedLimitM;
+    if (!is_static || !(radius > 0.0) || !room_sized) {
+      always_.push_back(w);  // planes, height fields, moving bodies, absurd sizes
       continue;
     }
     // Footprint on the floor: the exact rectangle of an upright box, the disc of an upright
     // cylinder, else the bounding disc; grown by the geom's margin.
-    const mjtNum* c = data->geom_xpos + 3 * w;
     const mjtNum* R = data->geom_xmat + 9 * w;
     const mjtNum* size = m->geom_size + 3 * w;
     const bool upright = R[2] == 0 && R[5] == 0;
