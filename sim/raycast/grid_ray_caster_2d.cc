@@ -94,7 +94,12 @@ GridRayCaster2D::GridRayCaster2D(const mjModel* model, const mjData* data,
     const mjtNum* R = data->geom_xmat + 9 * g;
     const bool is_static = model->body_weldid[model->geom_bodyid[g]] == 0;
     double half[3];
-    if (!is_static || !HalfExtents(type, R, model->geom_size + 3 * g, half)) {
+    // A geom beyond any room's size (an absurd MJCF) is tested by MuJoCo for every ray instead:
+    // its grid cells would not fit an int.
+    constexpr double kGriddedLimitM = 1e6;
+    const mjtNum* p = data->geom_xpos + 3 * g;
+    if (!is_static || !HalfExtents(type, R, model->geom_size + 3 * g, half) ||
+        !(std::max({std::abs(p[0]), std::abs(p[1]), half[0], half[1]}) < kGriddedLimitM)) {
       fallback_all_.push_back(g);
       // Only a static plane facing exactly up or down is provably never hit by a horizontal ray.
       const bool flat_plane = is_static && type == mjGEOM_PLANE && R[2] == 0 && R[5] == 0;
