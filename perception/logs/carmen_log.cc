@@ -265,6 +265,24 @@ void WriteCarmenLaser(std::ostream& out, const CarmenLaserRecord& record) {
     put(v, std::chars_format::fixed, decimals);
   };
   const msgs::LaserScan& scan = record.scan;
+  // Both messages carry the ranges, the laser and odometry poses and the time stamps alike.
+  const auto put_ranges = [&] {
+    line += ' ' + std::to_string(scan.ranges_m.size());
+    for (double r : scan.ranges_m) put_fixed(std::min(r, scan.range_max_m), 3);
+  };
+  const auto put_poses = [&] {
+    for (const msgs::Pose2D* pose : {&record.X_WL, &record.X_WR_odom}) {
+      put_fixed(pose->x_m, 6);
+      put_fixed(pose->y_m, 6);
+      put_fixed(pose->theta_rad, 6);
+    }
+  };
+  const auto put_times = [&] {
+    put_fixed(scan.time_s, 6);
+    line += " plywood";
+    put_fixed(scan.time_s, 6);
+    line += '\n';
+  };
   if (!FlaserCanCarry(scan)) {
     // laser_type 0 (SICK LMS), accuracy 0, remission_mode 0, no remissions; tv rv, the safety
     // distances and the turn axis are unknown (0).
@@ -275,35 +293,17 @@ void WriteCarmenLaser(std::ostream& out, const CarmenLaserRecord& record) {
         std::chars_format::general, 17);
     put(scan.angle_increment_rad, std::chars_format::general, 17);
     put_fixed(scan.range_max_m, 3);
-    line += " 0 0 " + std::to_string(scan.ranges_m.size());
-    for (double r : scan.ranges_m) put_fixed(std::min(r, scan.range_max_m), 3);
+    line += " 0 0";
+    put_ranges();
     line += " 0";
-    put_fixed(record.X_WL.x_m, 6);
-    put_fixed(record.X_WL.y_m, 6);
-    put_fixed(record.X_WL.theta_rad, 6);
-    put_fixed(record.X_WR_odom.x_m, 6);
-    put_fixed(record.X_WR_odom.y_m, 6);
-    put_fixed(record.X_WR_odom.theta_rad, 6);
+    put_poses();
     line += " 0 0 0 0 0";
-    put_fixed(scan.time_s, 6);
-    line += " plywood";
-    put_fixed(scan.time_s, 6);
-    line += '\n';
-    out << line;
-    return;
+  } else {
+    line += "FLASER";
+    put_ranges();
+    put_poses();
   }
-  line += "FLASER " + std::to_string(scan.ranges_m.size());
-  for (double r : scan.ranges_m) put_fixed(std::min(r, scan.range_max_m), 3);
-  put_fixed(record.X_WL.x_m, 6);
-  put_fixed(record.X_WL.y_m, 6);
-  put_fixed(record.X_WL.theta_rad, 6);
-  put_fixed(record.X_WR_odom.x_m, 6);
-  put_fixed(record.X_WR_odom.y_m, 6);
-  put_fixed(record.X_WR_odom.theta_rad, 6);
-  put_fixed(scan.time_s, 6);
-  line += " plywood";
-  put_fixed(scan.time_s, 6);
-  line += '\n';
+  put_times();
   out << line;
 }
 
