@@ -294,6 +294,21 @@ TEST_F(ReliabilityTest, DuplicateKeysAreRefusedNamingTheKey) {
                 {"controller.type", "duplicate"});
 }
 
+// Found by fuzzing (fuzz/corpus/experiment_yaml/crash-protocol-without-section): a protocol with
+// no section of its own was written as a block-style empty mapping and read back as a flow-style
+// one, so config.yaml did not load back to the config it came from.
+TEST_F(ReliabilityTest, AProtocolWithoutItsSectionWritesAConfigThatLoadsBackTheSame) {
+  const fs::path root(PLYWOOD_SOURCE_ROOT);
+  for (const std::string protocol : {"umbmark", "seed000_rooms", "my_own:protocol"}) {
+    const std::string yaml = HallExperiment(0.0, 0.0) + "protocol: '" + protocol + "'\n";
+    const std::string written =
+        sim::ExperimentConfigToYaml(sim::ParseExperimentConfig(yaml, "experiment.yaml", root));
+    const std::string again =
+        sim::ExperimentConfigToYaml(sim::ParseExperimentConfig(written, "config.yaml", root));
+    EXPECT_EQ(again, written) << protocol;
+  }
+}
+
 TEST_F(ReliabilityTest, NamesThatLeaveTheRunsFolderAreRefused) {
   for (const std::string name : {"../../x", "a/b", ".."}) {
     std::string yaml = HallExperiment(0.0, 0.0);

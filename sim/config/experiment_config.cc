@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_archive.h"
@@ -105,6 +106,23 @@ void RequirePositiveFinite(const char* field, double value) {
     throw std::invalid_argument(std::string(field) + ": must be a finite number > 0, got " +
                                 FormatNumber(value));
   }
+}
+
+// A deep copy of `node` whose empty mappings and sequences are in flow style (`{}`, `[]`). The
+// protocol's section is written as it was read, and yaml-cpp keeps the style it parsed, except
+// that a section the file did not have is a fresh mapping in block style, written as `{}` on a
+// line of its own, which reads back as flow: config.yaml would not read back to the same text.
+YAML::Node WithEmptyContainersInFlowStyle(const YAML::Node& node) {
+  YAML::Node copy = YAML::Clone(node);
+  std::vector<YAML::Node> pending{copy};
+  while (!pending.empty()) {
+    YAML::Node current = pending.back();
+    pending.pop_back();
+    if (!current.IsMap() && !current.IsSequence()) continue;
+    if (current.size() == 0) current.SetStyle(YAML::EmitterStyle::Flow);
+    for (auto entry : current) pending.push_back(current.IsMap() ? entry.second : entry);
+  }
+  return copy;
 }
 
 }  // namespace
@@ -245,7 +263,7 @@ std::string ExperimentConfigToYaml(const ExperimentConfig& const_config) {
   }
   if (config.protocol != "single") {
     root["protocol"] = config.protocol;
-    root[config.protocol] = config.protocol_options;
+    root[config.protocol] = WithEmptyContainersInFlowStyle(config.protocol_options);
   }
   root["duration_s"] = FormatNumber(config.duration_s);
   root["world"] = config.world_path.string();
