@@ -36,6 +36,12 @@ enum Index {
   kThetaPrev = 6
 };
 
+// The stop-into-turn test (EkfOdometryOptions::stop_displacement_*): the previous interval moved at
+// least this fast, this one at less than this fraction of it while turning at least this fast.
+constexpr double kStopFromSpeedMS = 0.05;
+constexpr double kStopSpeedFraction = 0.25;
+constexpr double kStopTurnRadS = 0.2;
+
 }  // namespace
 
 void EkfOdometryOptions::Validate() const {
@@ -52,6 +58,15 @@ void EkfOdometryOptions::Validate() const {
   RequireNonNegative("wheel_slip_sigma", wheel_slip_sigma);
   RequireNonNegative("encoder_turn_sigma", encoder_turn_sigma);
   RequirePositive("zero_velocity_turn_sigma_rad", zero_velocity_turn_sigma_rad);
+  for (const auto& [field, value] :
+       {std::pair{"stop_displacement_along_m", stop_displacement_along_m},
+        std::pair{"stop_displacement_outward_m", stop_displacement_outward_m}}) {
+    if (!std::isfinite(value) || std::abs(value) > 0.1) {
+      throw std::invalid_argument(std::string(field) + ": must be in [-0.1, 0.1] m, got " +
+                                  msgs::ShortestNumber(value));
+    }
+  }
+  RequireNonNegative("stop_displacement_sigma_m", stop_displacement_sigma_m);
   for (const auto& [field, value] :
        {std::pair{"wheel_diameter_ratio_prior", wheel_diameter_ratio_prior},
         std::pair{"track_ratio_prior", track_ratio_prior}}) {
@@ -126,13 +141,33 @@ void EkfOdometry::Step(const OdometryIncrement& increment) {
   if (options_.increments.integration == Integration::kArc && std::abs(dtheta) > 1e-9) {
     chord = ds * std::sin(dtheta / 2.0) / (dtheta / 2.0);
   }
-  state_(kX) += chord * c;
-  state_(kY) += chord * s;
+  // A stop from speed into a turn on the spot: the displacement the encoders miss, in the frame of
+  // the approach heading (theta before this interval), outward = away from the turn's centre.
+  const double speed_m_s = std::abs(ds) / dt;
+  const bool stop_into_turn = previous_speed_m_s_ >= kStopFromSpeedMS &&
+                              speed_m_s < kStopSpeedFraction * previous_speed_m_s_ &&
+                              std::abs(increment.dtheta_encoder_rad) / dt >= kStopTurnRadS;
+  previous_speed_m_s_ = ds / dt;
+  double stop_x = 0.0, stop_y = 0.0;  // in the world frame
+  const double approach = state_(kTheta);
+  if (stop_into_turn &&
+      (options_.stop_displacement_along_m != 0.0 || options_.stop_displacement_outward_m != 0.0 ||
+       options_.stop_displacement_sigma_m != 0.0)) {
+    ++stops_;
+    // The outside of a left turn (positive) is the robot's right (-y).
+    const double lateral =
+        (increment.dtheta_encoder_rad > 0.0 ? -1.0 : 1.0) * options_.stop_displacement_outward_m;
+    const double along = options_.stop_displacement_along_m;
+    stop_x = along * std::cos(approach) - lateral * std::sin(approach);
+    stop_y = along * std::sin(approach) + lateral * std::cos(approach);
+  }
+  state_(kX) += chord * c + stop_x;
+  state_(kY) += chord * s + stop_y;
   state_(kTheta) += dtheta;
 
   Matrix7 F = Matrix7::Identity();
-  F(kX, kTheta) = -chord * s;
-  F(kY, kTheta) = chord * c;
+  F(kX, kTheta) = -chord * s - stop_y;
+  F(kY, kTheta) = chord * c + stop_x;
   F(kX, kBias) = chord * s * dt / 2.0;
   F(kY, kBias) = -chord * c * dt / 2.0;
   F(kTheta, kBias) = -dt;
@@ -151,6 +186,11 @@ void EkfOdometry::Step(const OdometryIncrement& increment) {
   g_ds << c, s, 0.0, 0.0, 0.0, 0.0, 0.0;
   Matrix7 Q = q_gyro * g_gyro * g_gyro.transpose() + q_ds * g_ds * g_ds.transpose();
   Q(kBias, kBias) += std::pow(options_.gyro_bias_random_walk_rad_s_per_sqrt_s, 2) * dt;
+  if (stop_into_turn) {
+    const double q_stop = options_.stop_displacement_sigma_m * options_.stop_displacement_sigma_m;
+    Q(kX, kX) += q_stop;
+    Q(kY, kY) += q_stop;
+  }
   covariance_ = F * covariance_ * F.transpose() + Q;
 
   // Measurement: the encoders' heading change over the interval, predicted from theta - theta_prev

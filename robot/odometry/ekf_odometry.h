@@ -46,6 +46,16 @@ struct EkfOdometryOptions {
   // robot stands still, and its heading change is measured as 0 with this sigma (rad), far
   // tighter than one tick over the track, so stops pin the gyro bias.
   double zero_velocity_turn_sigma_rad = 1e-5;
+  // Stop into a turn on the spot: when the robot brakes from speed (an encoder interval at
+  // >= 0.05 m/s) into a turn on the spot (the next interval at < a quarter of that speed while the
+  // encoders turn at >= 0.2 rad/s), it moves by this displacement that its encoders do not report,
+  // in the frame of the approach heading: along it and towards the outside of the turn (m), with
+  // this spread (1 sigma, m, each axis). A calibration of the robot and its controller's braking,
+  // measured once on a run with ground truth (scripts/stop_displacement_calibration); it depends on
+  // the approach speed, so measure it at the speed the robot drives. 0 / 0: off.
+  double stop_displacement_along_m = 0.0;
+  double stop_displacement_outward_m = 0.0;
+  double stop_displacement_sigma_m = 0.0;
 
   // @throws std::invalid_argument naming the offending field.
   void Validate() const;
@@ -80,6 +90,8 @@ class EkfOdometry final : public OdometryEstimator {
   // The estimated residual drive errors, relative to the calibrated geometry (1 = none).
   double wheel_diameter_ratio() const { return state_(4); }
   double track_ratio() const { return state_(5); }
+  // How many stops into a turn on the spot got the stop displacement.
+  int stops() const { return stops_; }
 
  private:
   void Drain();
@@ -89,6 +101,8 @@ class EkfOdometry final : public OdometryEstimator {
   IncrementSource source_;
   Eigen::Matrix<double, 7, 1> state_;
   Eigen::Matrix<double, 7, 7> covariance_;
+  double previous_speed_m_s_ = 0.0;  // of the last encoder interval
+  int stops_ = 0;
 };
 
 }  // namespace plywood::robot

@@ -249,5 +249,56 @@ TEST(EkfOdometryTest, LeftAndRightTurnsSeparateTheTrackRatioFromTheBias) {
   EXPECT_LT(std::abs(msgs::WrapAngle(ekf.pose().theta_rad - true_theta)), 5e-3);
 }
 
+// The stop-into-turn displacement (a calibration) is added once, in the frame of the approach
+// heading, towards the outside of the turn; a stop before the turn does not trigger it.
+TEST(EkfOdometryTest, AddsTheCalibratedStopDisplacementInTheApproachFrame) {
+  const OdometryGeometry g{.left_wheel_radius_m = 0.1,
+                           .right_wheel_radius_m = 0.1,
+                           .track_m = 0.4,
+                           .ticks_per_rev = 1000};
+  const double along = -0.0025, outward = 0.003, heading = kPi / 6.0;
+  const msgs::Pose2D start{1.0, 2.0, heading};
+  for (const double turn : {1.0, -1.0}) {
+    // 10 s at 0.4 m/s, then straight into a 90 deg turn on the spot in 4 s (exact sensors).
+    const std::vector<Phase> phases{{10.0, 0.4, 0.0}, {4.0, 0.0, turn * (kPi / 2.0) / 4.0}};
+    EkfOdometry plain(g, {}, start);
+    EkfOdometry calibrated(g,
+                           {.increments = {},
+                            .stop_displacement_along_m = along,
+                            .stop_displacement_outward_m = outward},
+                           start);
+    DrivePhases(phases, 13.9, 0.0, 0.0, {},
+                [&](const msgs::WheelEncoders& e, const msgs::GyroRate& w, double) {
+                  for (EkfOdometry* ekf : {&plain, &calibrated}) {
+                    ekf->AddEncoders(e);
+                    ekf->AddGyro(w);
+                  }
+                });
+    EXPECT_EQ(calibrated.stops(), 1);
+    // Outward is the robot's right (-y) in a left turn.
+    const double lateral = -turn * outward;
+    const double dx = along * std::cos(heading) - lateral * std::sin(heading);
+    const double dy = along * std::sin(heading) + lateral * std::cos(heading);
+    EXPECT_NEAR(calibrated.pose().x_m - plain.pose().x_m, dx, 1e-6) << "turn " << turn;
+    EXPECT_NEAR(calibrated.pose().y_m - plain.pose().y_m, dy, 1e-6) << "turn " << turn;
+    EXPECT_NEAR(calibrated.pose().theta_rad, plain.pose().theta_rad, 1e-9);
+    // The plain filter ends where the robot is: 4 m along the heading (the turn is on the spot).
+    EXPECT_NEAR(plain.pose().x_m, 1.0 + 4.0 * std::cos(heading), 2e-3);
+    EXPECT_NEAR(plain.pose().y_m, 2.0 + 4.0 * std::sin(heading), 2e-3);
+  }
+  // Stopping first (2 s at rest) and then turning is no stop into a turn.
+  EkfOdometry stopped(g,
+                      {.increments = {},
+                       .stop_displacement_along_m = along,
+                       .stop_displacement_outward_m = outward},
+                      start);
+  DrivePhases({{10.0, 0.4, 0.0}, {2.0, 0.0, 0.0}, {4.0, 0.0, (kPi / 2.0) / 4.0}}, 15.9, 0.0, 0.0,
+              {}, [&](const msgs::WheelEncoders& e, const msgs::GyroRate& w, double) {
+                stopped.AddEncoders(e);
+                stopped.AddGyro(w);
+              });
+  EXPECT_EQ(stopped.stops(), 0);
+}
+
 }  // namespace
 }  // namespace plywood::robot

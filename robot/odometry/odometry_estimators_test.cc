@@ -258,6 +258,14 @@ TEST(OdometryEstimatorsTest, OptionsRejectBadValuesNamingTheField) {
               EkfOdometryOptions{.increments = {}, .track_ratio_prior = 1.5}.Validate();
             }).rfind("track_ratio_prior:", 0),
             0u);
+  EXPECT_EQ(message([] {
+              EkfOdometryOptions{.increments = {}, .stop_displacement_outward_m = 0.5}.Validate();
+            }).rfind("stop_displacement_outward_m:", 0),
+            0u);
+  EXPECT_EQ(message([] {
+              EkfOdometryOptions{.increments = {}, .stop_displacement_sigma_m = -1}.Validate();
+            }).rfind("stop_displacement_sigma_m:", 0),
+            0u);
   EXPECT_EQ(
       message([] { OdometryCalibration{.track_ratio = 3}.Validate(); }).rfind("track_ratio:", 0),
       0u);

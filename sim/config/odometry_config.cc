@@ -64,6 +64,9 @@ void VisitFields(A& a, robot::EkfOdometryOptions& o) {
   a("wheel_diameter_ratio_prior", o.wheel_diameter_ratio_prior);
   a("track_ratio_prior", o.track_ratio_prior);
   a("zero_velocity_turn_sigma_rad", o.zero_velocity_turn_sigma_rad);
+  a("stop_displacement_along_m", o.stop_displacement_along_m);
+  a("stop_displacement_outward_m", o.stop_displacement_outward_m);
+  a("stop_displacement_sigma_m", o.stop_displacement_sigma_m);
 }
 
 namespace {
