@@ -55,8 +55,10 @@ void AsyncSnapshotWriter::Work() {
   try {
     // Everything GL lives and dies on this thread, where its context is current.
     std::unique_ptr<TopDownRenderer> renderer;
-    std::string why_software = WhyNoOpenGl(options_);
-    if (options_.use_opengl && why_software.empty()) {
+    std::string why_software;
+    if (options_.use_opengl) {
+      // No OffscreenRenderingAvailable() probe first: it makes and destroys a context of its own
+      // (~75M instructions); the renderer's context fails the same way when there is none.
       try {
         const WorldBounds static_bounds = SnapshotBounds(model_.get(), {}, options_);
         renderer = std::make_unique<TopDownRenderer>(model_.get(), static_bounds, options_.view);
@@ -71,7 +73,9 @@ void AsyncSnapshotWriter::Work() {
         renderer->WarmUp(initial.get());
       } catch (const std::runtime_error& e) {
         renderer.reset();
-        why_software = e.what();
+        // Without any context the probe's reason, as WriteSnapshot gives it.
+        why_software = WhyNoOpenGl(options_);
+        if (why_software.empty()) why_software = e.what();
       }
     }
     std::unique_lock lock(mutex_);

@@ -79,15 +79,18 @@ Snapshot RenderSnapshot(const mjModel* m, mjData* d, const std::vector<PathOverl
   const WorldBounds bounds = SnapshotBounds(m, paths, options);
   Snapshot snapshot;
   bool drawn = false;
-  std::string why = WhyNoOpenGl(options);
-  if (options.use_opengl && why.empty()) {
+  std::string why;
+  if (options.use_opengl) {
+    // The renderer's own context is the test: an OffscreenRenderingAvailable() probe first would
+    // make and destroy another (~75M instructions). Without any context, the probe's reason.
     try {
       TopDownRenderer renderer(m, bounds, options.view);
       snapshot.picture = renderer.Render(d);
       snapshot.backend = SnapshotBackend::kOpenGl;
       drawn = true;
     } catch (const std::runtime_error& e) {
-      why = e.what();
+      why = WhyNoOpenGl(options);
+      if (why.empty()) why = e.what();
     }
   }
   if (!drawn) snapshot = SoftwareSnapshot(m, d, bounds, options, why);

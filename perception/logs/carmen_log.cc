@@ -12,6 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "perception/logs/fixed_decimals.h"
 #include "perception/logs/parse_number.h"
 #include "perception/logs/regular_file.h"
 
@@ -251,7 +252,9 @@ bool IsFlaserScan(const msgs::LaserScan& scan) { return FlaserCanCarry(scan); }
 void WriteCarmenLaser(std::ostream& out, const CarmenLaserRecord& record) {
   // The line is built in one buffer and written once. std::to_chars with a precision formats
   // exactly as printf's %.Nf / %.Ng in the C locale (the standard says so), at a fraction of
-  // snprintf's cost: 361 ranges per scan made snprintf most of a run's output writing.
+  // snprintf's cost: 361 ranges per scan made snprintf most of a run's output writing. The fixed
+  // numbers go through WriteFixedDecimals, which gives to_chars' bytes with integer arithmetic
+  // (to_chars' generic fixed-precision path was ~280 instructions per range).
   std::string line;
   line.reserve(32 + 8 * record.scan.ranges_m.size());
   const auto put = [&](double v, std::chars_format format, int precision) {
@@ -262,7 +265,9 @@ void WriteCarmenLaser(std::ostream& out, const CarmenLaserRecord& record) {
     line.append(number, error == std::errc() ? end : number);
   };
   const auto put_fixed = [&](double v, int decimals) {
-    put(v, std::chars_format::fixed, decimals);
+    char number[400];
+    line += ' ';
+    line.append(number, WriteFixedDecimals(number, number + sizeof(number), v, decimals));
   };
   const msgs::LaserScan& scan = record.scan;
   // Both messages carry the ranges, the laser and odometry poses and the time stamps alike.
