@@ -16,6 +16,9 @@
 namespace plywood::render {
 namespace {
 
+// A plane's rendering grid spacing so large that MuJoCo draws the floor as 2 x 2 quads.
+constexpr double kFloorGridSpacingM = 1000.0;
+
 constexpr int kRobotGeomGroup = 3;  // sim::Scene::kRobotGeomGroup, without pulling in scene.h
 
 bool GroupShown(const mjModel* m, int g, bool show_robot) {
@@ -126,6 +129,13 @@ TopDownRenderer::TopDownRenderer(const mjModel* m, const WorldBounds& bounds,
   // No shadow map: mjr_makeContext would zero-fill the default 4096^2 one (most of a run's wall
   // time), and a straight-down headlight casts no shadow the picture could show.
   copy->vis.quality.shadowsize = 0;
+  // MuJoCo draws a plane as a grid of quads geom_size[2] apart: the office's floor is ~38k
+  // triangles, most of the final frame's rasterising after the run (docs/performance.md). A flat
+  // floor lit straight down looks the same as two quads per axis; only the texture's interpolation
+  // can round one colour level differently in a few pixels.
+  for (int g = 0; g < copy->ngeom; ++g) {
+    if (copy->geom_type[g] == mjGEOM_PLANE) copy->geom_size[3 * g + 2] = kFloorGridSpacingM;
+  }
 
   mjv_makeScene(copy, &gl_->scene, std::max(1000, 2 * copy->ngeom + 100));
   mjr_makeContext(copy, &gl_->con, mjFONTSCALE_100);
