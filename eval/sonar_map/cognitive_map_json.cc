@@ -29,6 +29,7 @@ Json CognitiveMapJson(const perception::CognitiveMap& map) {
   Json json = Json::object();
   json["room"] = Box(map.room);
   json["obstacles"] = List(map.obstacles, Box);
+  json["bridges"] = List(map.bridges, Box);
   json["corners"] = List(map.corners, Point);
   json["partitions"] = List(map.partitions.partitions(), [](const perception::Partition& p) {
     return Json{{"rect", Box(p.rect)},

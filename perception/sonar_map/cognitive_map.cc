@@ -40,6 +40,26 @@ std::optional<double> FitSide(const std::vector<Eigen::Vector2d>& uv, double res
   return fit.a + fit.b * 0.5 * (*vmin + *vmax);
 }
 
+// Two obstacles joined when nearer than this may become their extent only if it covers at most this
+// factor times their areas plus the gap's: a face split in two, not two boxes side by side.
+constexpr double kJoinExtentSlack = 1.15;
+
+// The gap between two rectangles facing each other closer than `join` (their projections overlap
+// on one axis, their facing sides are less than `join` apart on the other): the rectangle between
+// the facing sides across the overlap. nullopt when they overlap, face each other nowhere, or are
+// farther apart.
+std::optional<Rect> JoinGap(const Rect& a, const Rect& b, double join) {
+  const double gap_x = std::max(a.x0, b.x0) - std::min(a.x1, b.x1);
+  const double gap_y = std::max(a.y0, b.y0) - std::min(a.y1, b.y1);
+  if (gap_x >= 0.0 && gap_x < join && gap_y < 0.0)
+    return Rect{std::min(a.x1, b.x1), std::max(a.y0, b.y0), std::max(a.x0, b.x0),
+                std::min(a.y1, b.y1)};
+  if (gap_y >= 0.0 && gap_y < join && gap_x < 0.0)
+    return Rect{std::max(a.x0, b.x0), std::min(a.y1, b.y1), std::min(a.x1, b.x1),
+                std::max(a.y0, b.y0)};
+  return std::nullopt;
+}
+
 double Snap(double value, const std::vector<double>& earlier, double d_e) {
   double best = value, best_d = d_e;
   for (double e : earlier) {
@@ -371,9 +391,13 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
         blob_of.push_back(next_id);
       }
     }
-  // Pieces closer than obstacle_join_m to each other or to a room side are one obstacle against
-  // it: the sonar splits a face it hears at the edge of its range, and the robot cannot drive
-  // through a gap that narrow to see into it.
+  // Pieces of different blobs closer than obstacle_join_m to each other: the robot cannot drive
+  // through a gap that narrow to see into it, and the sonar splits a face it hears at the edge of
+  // its range. Pieces side by side whose extent is about their own area plus the gap's (a face
+  // split in two) become that extent; otherwise each keeps its own rectangle and only the gap
+  // between their facing sides, across the stretch where both face each other, is filled (a
+  // bridge). Pieces that face each other nowhere (diagonal neighbours) stay apart: the extent of
+  // two boxes at a corner's distance swallowed the free space beside both.
   const double join = options.obstacle_join_m;
   for (bool merged = true; merged;) {
     merged = false;
@@ -381,19 +405,23 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
       for (std::size_t j = i + 1; j < blobs.size() && !merged; ++j) {
         // Pieces of one blob were cut apart on purpose.
         if (blob_of[i] == blob_of[j]) continue;
+        const std::optional<Rect> gap = JoinGap(blobs[i], blobs[j], join);
+        if (!gap) continue;
         const Rect& a = blobs[i];
         const Rect& b = blobs[j];
-        const double gap_x = std::max(a.x0, b.x0) - std::min(a.x1, b.x1);
-        const double gap_y = std::max(a.y0, b.y0) - std::min(a.y1, b.y1);
-        if (std::max(gap_x, gap_y) >= join) continue;
-        blobs[i] = {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1),
-                    std::max(a.y1, b.y1)};
+        const Rect extent{std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1),
+                          std::max(a.y1, b.y1)};
+        if (extent.Area() > kJoinExtentSlack * (a.Area() + b.Area() + gap->Area())) continue;
+        blobs[i] = extent;
         blobs.erase(blobs.begin() + static_cast<std::ptrdiff_t>(j));
         blob_of.erase(blob_of.begin() + static_cast<std::ptrdiff_t>(j));
         merged = true;
       }
   }
-  for (Rect r : blobs) {
+  // Pieces that close to a room side are extended to it.
+  std::vector<int> kept_blob;
+  for (std::size_t k = 0; k < blobs.size(); ++k) {
+    Rect r = blobs[k];
     if (r.x0 - map.room.x0 < join) r.x0 = map.room.x0;
     if (map.room.x1 - r.x1 < join) r.x1 = map.room.x1;
     if (r.y0 - map.room.y0 < join) r.y0 = map.room.y0;
@@ -406,7 +434,14 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
     xs.insert(xs.end(), {r.x0, r.x1});
     ys.insert(ys.end(), {r.y0, r.y1});
     map.obstacles.push_back(r);
+    kept_blob.push_back(blob_of[k]);
   }
+  for (std::size_t i = 0; i < map.obstacles.size(); ++i)
+    for (std::size_t j = i + 1; j < map.obstacles.size(); ++j) {
+      if (kept_blob[i] == kept_blob[j]) continue;
+      if (const std::optional<Rect> gap = JoinGap(map.obstacles[i], map.obstacles[j], join))
+        if (gap->x1 - gap->x0 > 1e-9 && gap->y1 - gap->y0 > 1e-9) map.bridges.push_back(*gap);
+    }
 
   map.corners = {{map.room.x0, map.room.y0},
                  {map.room.x1, map.room.y0},
@@ -417,6 +452,7 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
     map.corners.insert(map.corners.end(), {{r.x0, r.y0}, {r.x1, r.y0}, {r.x1, r.y1}, {r.x0, r.y1}});
     map.partitions.InsertObstacle(r);
   }
+  for (const Rect& r : map.bridges) map.partitions.InsertObstacle(r);
   map.partitions.Merge();
   map.adjacency = map.partitions.Adjacencies(1e-6);
   map.negative = InitialNegativeExperience(map.partitions, map.adjacency, options.min_passage_m);

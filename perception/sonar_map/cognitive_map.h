@@ -22,7 +22,10 @@ struct CognitiveMapOptions {
   // An obstacle blob grows over every cell not seen free with P below this (<= eps): corner
   // echoes off the junction of an obstacle and a wall make its face look faintly free.
   double obstacle_free_p = 0.3;
-  // Obstacle pieces closer than this to each other or to a room side are joined to them.
+  // Obstacle pieces closer than this to each other or to a room side are joined to them: to a
+  // side by extending the piece to it; to each other by their extent when that is about their
+  // areas plus the gap's (a face split in two), else by filling the gap between their facing
+  // sides (CognitiveMap::bridges); diagonal neighbours stay apart.
   double obstacle_join_m = 0.3;
   // The rectangles span the blob's occupied cells (the faces heard) only, not the unknown cells
   // the blob grew over: a box's unheard inside lies between its faces anyway, while the unseen
@@ -49,6 +52,9 @@ struct CognitiveMapOptions {
 struct CognitiveMap {
   Rect room;
   std::vector<Rect> obstacles;
+  // Gaps narrower than obstacle_join_m between two obstacles facing each other, filled: the robot
+  // cannot pass them. Obstacle partitions like the obstacles, but no obstacle of their own.
+  std::vector<Rect> bridges;
   std::vector<Eigen::Vector2d> corners;
   PartitionMap partitions;
   std::vector<Adjacency> adjacency;
