@@ -32,11 +32,7 @@ struct SplitAndMergeOptions {
   ModalFitOptions modal;
   // 4 points as seed 000's Table 2; 6 cm: chords across a table leg (5 cm) are not walls.
   SegmentFilterOptions filter{.min_points = 4, .min_length_m = 0.06};
-  // Runs of chords that are not their whole breakpoint group (a column's outer chords share a
-  // group with the wall behind) are round from 45 deg of arc, not 100: with the circle reported
-  // (circle_feature.h) their rays stay explained, and 45 deg brings the generated `columns`
-  // family to >= 0.95 precision (docs/lines.md, measured on generator seeds 1 and 7).
-  RoundObjectOptions round_objects{.min_round_arc_deg = 45.0};
+  RoundObjectOptions round_objects;
 
   // @throws std::invalid_argument starting with the field name.
   void Validate() const;
