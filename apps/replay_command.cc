@@ -25,7 +25,9 @@ void PrintSummary(const eval::LogReplayRequest& request, const eval::LogReplaySu
   std::printf("%-22s %s (%ld scans, %ld lines skipped)\n", "log", request.log.c_str(), r.scans,
               static_cast<long>(summary.skipped_lines));
   std::printf("%-22s %s\n", "extractor", request.extractor.c_str());
-  std::printf("%-22s %.4f of %ld valid rays\n", "rays explained", r.rays.Fraction(), r.rays.rays);
+  std::printf("%-22s %.4f of %ld valid rays (lines only)\n", "rays explained", r.rays.Fraction(),
+              r.rays.rays);
+  std::printf("%-22s %.4f (lines + %ld circles)\n", "", r.rays_with_circles.Fraction(), r.circles);
   std::printf("%-22s %.4f m\n", "rms distance", r.rays.RmsM());
   std::printf("%-22s %.1f\n", "rays per line", r.RaysPerLine());
   std::printf("%-22s %.2f\n", "lines per scan", r.LinesPerScan());

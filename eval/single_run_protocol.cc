@@ -135,6 +135,7 @@ int SingleRunProtocol(const ProtocolContext& context) {
   if (!line_scores.empty()) {
     std::ofstream(out_dir + "/timing.json") << eval::LineTimingJson(line_scores);
     WriteLinesCsv(context.out_dir / "lines.csv", LinesCsvRows(line_scores));
+    WriteCirclesCsv(context.out_dir / "circles.csv", line_scores);
   }
   if (!quiet) PrintSummary(runner);
   if (!quiet) {

@@ -76,9 +76,11 @@ TEST(ReplayCliTest, ExtractorOptionsAreSetByKeyAndBadKeysAreNamed) {
   ASSERT_EQ(defaults.exit_code, 0) << defaults.err;
   EXPECT_NE(Slurp(dir / "a" / "metrics.json").find("\"lines\": 3"), std::string::npos);
   // Per scan: the wall seen head-on (|bearing| < 75.5 deg: 151 valid rays), one line explaining
-  // every ray.
+  // every ray, no circle (the same rays explained with circles).
   EXPECT_EQ(Slurp(dir / "a" / "scans.csv"),
-            "scan,valid_rays,explained,lines\n0,151,151,1\n1,151,151,1\n2,151,151,1\n");
+            "scan,valid_rays,explained,lines,explained_with_circles,circles\n0,151,151,1,151,0\n"
+            "1,151,151,1,151,0\n2,151,151,1,151,0\n");
+  EXPECT_EQ(Slurp(dir / "a" / "circles.csv"), "scan,x_m,y_m,radius_m,rms_m,points\n");
   const Result strict =
       RunPlywood("replay " + log.string() + " --set split_and_merge.min_points=200 --out " +
                      (dir / "b").string(),

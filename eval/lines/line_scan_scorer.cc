@@ -79,7 +79,8 @@ std::vector<ExtractorScore> ScoreExtractors(std::span<const TruthScan> scans,
     double seconds = 0.0;
     for (const TruthScan& scan : scans) {
       const auto start = std::chrono::steady_clock::now();
-      std::vector<perception::LineSegment> lines = extractor->Extract(scan.points);
+      perception::ExtractedFeatures features = extractor->ExtractFeatures(scan.points);
+      std::vector<perception::LineSegment>& lines = features.lines;
       seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       result.score.Add(ScoreScanLines(lines, scan, config.scoring));
       ScanLines found;
@@ -87,6 +88,7 @@ std::vector<ExtractorScore> ScoreExtractors(std::span<const TruthScan> scans,
         found.matched_truth.push_back(perception::MatchSegment(line, scan.truth, config.scoring));
       }
       found.segments = std::move(lines);
+      found.circles = std::move(features.circles);
       result.scans.push_back(std::move(found));
     }
     result.us_per_scan = scans.empty() ? 0.0 : 1e6 * seconds / static_cast<double>(scans.size());

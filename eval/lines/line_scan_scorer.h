@@ -38,6 +38,7 @@ TruthScan MakeTruthScanAt(std::span<const sim::LaserRecord* const> records,
 struct ScanLines {
   std::vector<perception::LineSegment> segments;
   std::vector<int> matched_truth;
+  std::vector<perception::CircleFeature> circles;  // the round objects it reported (circles.csv)
 };
 
 // Score of one extractor over many scans, and its wall-clock cost (never written to

@@ -55,6 +55,39 @@ void WriteLinesCsv(const std::filesystem::path& path, std::span<const LinesCsvRo
   if (!out) throw std::runtime_error(path.string() + ": write failed");
 }
 
+std::string CirclesCsvHeader(bool with_room) {
+  return std::string(with_room ? "room," : "") + "scan,extractor,x_m,y_m,radius_m,rms_m,points\n";
+}
+
+std::string CirclesCsvRows(std::span<const ExtractorScore> scores, const std::string& room,
+                           long first_scan) {
+  std::string out;
+  const auto n = [](double value) { return sim::FormatNumber(value); };
+  std::size_t scans = 0;
+  for (const ExtractorScore& score : scores) scans = std::max(scans, score.scans.size());
+  for (std::size_t s = 0; s < scans; ++s) {
+    for (const ExtractorScore& score : scores) {
+      if (s >= score.scans.size()) continue;
+      for (const perception::CircleFeature& c : score.scans[s].circles) {
+        if (!room.empty()) out += CsvField(room) + ",";
+        out += std::to_string(first_scan + static_cast<long>(s)) + "," + CsvField(score.name) +
+               "," + n(c.centre.x()) + "," + n(c.centre.y()) + "," + n(c.radius_m) + "," +
+               n(c.rms_m) + "," + std::to_string(c.num_points()) + "\n";
+      }
+    }
+  }
+  return out;
+}
+
+void WriteCirclesCsv(const std::filesystem::path& path, std::span<const ExtractorScore> scores,
+                     const std::string& room, long first_scan) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw std::runtime_error(path.string() + ": cannot write");
+  out << CirclesCsvHeader(!room.empty()) << CirclesCsvRows(scores, room, first_scan);
+  out.flush();
+  if (!out) throw std::runtime_error(path.string() + ": write failed");
+}
+
 std::vector<LinesCsvRow> ReadLinesCsv(const std::filesystem::path& path,
                                       const std::string& default_extractor) {
   const CsvTable table = ReadCsv(path);

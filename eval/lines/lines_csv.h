@@ -33,6 +33,18 @@ std::vector<LinesCsvRow> LinesCsvRows(std::span<const ExtractorScore> scores,
 void WriteLinesCsv(const std::filesystem::path& path, std::span<const LinesCsvRow> rows,
                    bool with_room = false);
 
+// circles.csv (docs/run_outputs.md), beside lines.csv: one row per circle (round object) an
+// extractor reported per scan, scans and extractors in lines.csv's order,
+//   scan,extractor,x_m,y_m,radius_m,rms_m,points
+// centre in the sensor frame, RMS residual of the points used, their number; seed000_rooms adds
+// the leading `room` column. @throws std::runtime_error naming `path` when it cannot be written.
+void WriteCirclesCsv(const std::filesystem::path& path, std::span<const ExtractorScore> scores,
+                     const std::string& room = "", long first_scan = 0);
+// The rows of WriteCirclesCsv without the header (to concatenate rooms).
+std::string CirclesCsvRows(std::span<const ExtractorScore> scores, const std::string& room = "",
+                           long first_scan = 0);
+std::string CirclesCsvHeader(bool with_room);
+
 // A segments file as `plywood score lines` takes it: a header row naming the columns, in any
 // order. Required: scan, x1_m, y1_m, x2_m, y2_m. Optional: extractor (else every row is
 // `default_extractor`), alpha_rad and r_m together (else the line through the endpoints), points,

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/shortest_number.h"
 #include "perception/lines/line_extractor_factory.h"
 #include "perception/logs/carmen_log.h"
 #include "perception/logs/regular_file.h"
@@ -106,18 +107,32 @@ LogReplaySummary RunLogReplay(const LogReplayRequest& request) {
   metrics.Set("replay.rms_m", result.rays.RmsM());
   metrics.Set("replay.rays_per_line", result.RaysPerLine());
   metrics.Set("replay.lines_per_scan", result.LinesPerScan());
+  metrics.Set("replay.circles", static_cast<double>(result.circles));
+  metrics.Set("replay.circles_per_scan", result.CirclesPerScan());
+  metrics.Set("replay.rays_explained_with_circles", result.rays_with_circles.Fraction());
+  metrics.Set("replay.rms_with_circles_m", result.rays_with_circles.RmsM());
   sim::WriteTextFile(dir / "metrics.json", metrics.ToJson());
   sim::WriteTextFile(
       dir / "timing.json",
       sim::WriteJson(nlohmann::ordered_json{{"replay", {{"us_per_scan", result.UsPerScan()}}}},
                      {.layout = sim::JsonStyle::Layout::kOneLine}));
-  std::string scans = "scan,valid_rays,explained,lines\n";
+  std::string scans = "scan,valid_rays,explained,lines,explained_with_circles,circles\n";
   for (std::size_t k = 0; k < result.per_scan.size(); ++k) {
     const perception::ReplayResult::Scan& scan = result.per_scan[k];
     scans += std::to_string(k) + "," + std::to_string(scan.valid_rays) + "," +
-             std::to_string(scan.explained) + "," + std::to_string(scan.lines) + "\n";
+             std::to_string(scan.explained) + "," + std::to_string(scan.lines) + "," +
+             std::to_string(scan.explained_with_circles) + "," + std::to_string(scan.circles) +
+             "\n";
   }
   sim::WriteTextFile(dir / "scans.csv", scans);
+  std::string circles = "scan,x_m,y_m,radius_m,rms_m,points\n";
+  for (const auto& [scan, circle] : result.circles_L) {
+    circles += std::to_string(scan) + "," + msgs::ShortestNumber(circle.centre.x()) + "," +
+               msgs::ShortestNumber(circle.centre.y()) + "," +
+               msgs::ShortestNumber(circle.radius_m) + "," + msgs::ShortestNumber(circle.rms_m) +
+               "," + std::to_string(circle.num_points()) + "\n";
+  }
+  sim::WriteTextFile(dir / "circles.csv", circles);
   WriteSegmentsPicture(log, result, dir / "segments.png");
   staged.Commit();
   return summary;

@@ -33,8 +33,11 @@ std::filesystem::path DefaultReplayDirectory(const std::filesystem::path& log,
 // Runs the extractor on every scan of the log and scores it (perception::ReplayLog): writes
 // DIR/config.yaml (the replay's log, extractor and resolved `lines:` options), metrics.json
 // (replay.{extractor, scans, skipped_lines, valid_rays, lines, rays_explained, rms_m,
-// rays_per_line, lines_per_scan}: deterministic figures only), scans.csv (per scan in log order:
-// valid rays, explained rays, lines; to compare two versions scan by scan), timing.json (wall
+// rays_per_line, lines_per_scan, circles, circles_per_scan, rays_explained_with_circles,
+// rms_with_circles_m}: deterministic figures only; rays_explained counts the lines alone),
+// scans.csv (per scan in log order: valid rays, rays explained by the lines, lines, rays explained
+// by lines or circles, circles; to compare two versions scan by scan), circles.csv (per circle:
+// scan, centre and radius in the laser frame, RMS residual, points used), timing.json (wall
 // clock) and segments.png (every segment placed by the log's poses), staged beside DIR and renamed
 // into place with its completion marker last (sim::StagedRunDirectory). Every input is checked,
 // then the output directory, before anything is extracted.

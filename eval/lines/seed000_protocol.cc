@@ -62,6 +62,7 @@ int Seed000Protocol(const ProtocolContext& context) {
   std::vector<eval::ExtractorScore> total;
   long total_scans = 0;
   std::vector<LinesCsvRow> line_rows;
+  std::string circles_csv = CirclesCsvHeader(/*with_room=*/true);
   std::string walls_csv = "room,segment,geom_id,face,ax_m,ay_m,bx_m,by_m\n";
   std::string csv =
       "room,range_cut_m,walls_visible,paper_lines,extractor,lines_per_scan,points_per_scan,"
@@ -77,6 +78,7 @@ int Seed000Protocol(const ProtocolContext& context) {
     const std::string stem = room.world_path.stem().string();
     const std::string key = "seed000." + stem;
     for (const LinesCsvRow& row : LinesCsvRows(result.scores, stem)) line_rows.push_back(row);
+    circles_csv += CirclesCsvRows(result.scores, stem);
     for (std::size_t i = 0; i < result.rig.walls.segments.size(); ++i) {
       const sim::WallSegment& w = result.rig.walls.segments[i];
       walls_csv += CsvField(stem) + "," + std::to_string(i) + "," + std::to_string(w.geom_id) +
@@ -133,6 +135,7 @@ int Seed000Protocol(const ProtocolContext& context) {
   sim::WriteTextFile(out / "timing.json", eval::LineTimingJson(total));
   sim::WriteTextFile(out / "walls.csv", walls_csv);
   WriteLinesCsv(out / "lines.csv", line_rows, /*with_room=*/true);
+  sim::WriteTextFile(out / "circles.csv", circles_csv);
   if (!context.quiet) {
     std::printf("\nall rooms (%ld scan pairs)\n%-16s %7s %7s %9s %11s %9s %9s\n", total_scans,
                 "extractor", "recall", "prec", "sigma_r_m", "sigma_a_deg", "pts/line", "us/scan");

@@ -36,7 +36,8 @@ HoughExtractor::HoughExtractor(const HoughOptions& options) : options_(options) 
   options_.Validate();
 }
 
-std::vector<LineSegment> HoughExtractor::Extract(const ScanPoints& scan) const {
+std::vector<LineSegment> HoughExtractor::Run(const ScanPoints& scan,
+                                             std::vector<CircleFeature>* circles) const {
   std::vector<LineSegment> out;
   const auto& p = scan.points;
   const int n = static_cast<int>(p.size());
@@ -69,7 +70,7 @@ std::vector<LineSegment> HoughExtractor::Extract(const ScanPoints& scan) const {
   const bool ordered = scan.HasScanOrder();
   std::vector<char> removed =
       ordered ? RoundObjectPoints(scan, options_.breakpoints, options_.distance_threshold_m,
-                                  options_.round_objects)
+                                  options_.round_objects, circles)
               : std::vector<char>(n, 0);
   for (int i = 0; i < n; ++i)
     if (!removed[i]) vote(i, 1);

@@ -38,9 +38,17 @@ class HoughExtractor final : public LineExtractor {
  public:
   explicit HoughExtractor(const HoughOptions& options = {});
   std::string name() const override { return "hough"; }
-  std::vector<LineSegment> Extract(const ScanPoints& scan) const override;
+  std::vector<LineSegment> Extract(const ScanPoints& scan) const override {
+    return Run(scan, nullptr);
+  }
+  ExtractedFeatures ExtractFeatures(const ScanPoints& scan) const override {
+    ExtractedFeatures out;
+    out.lines = Run(scan, &out.circles);
+    return out;
+  }
 
  private:
+  std::vector<LineSegment> Run(const ScanPoints& scan, std::vector<CircleFeature>* circles) const;
   const HoughOptions options_;
 };
 

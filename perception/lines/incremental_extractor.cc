@@ -29,7 +29,8 @@ IncrementalExtractor::IncrementalExtractor(const IncrementalOptions& options) : 
   options_.Validate();
 }
 
-std::vector<LineSegment> IncrementalExtractor::Extract(const ScanPoints& scan) const {
+std::vector<LineSegment> IncrementalExtractor::Run(const ScanPoints& scan,
+                                                   std::vector<CircleFeature>* circles) const {
   std::vector<LineSegment> out;
   const auto& p = scan.points;
   const double tolerance = options_.max_distance_m;
@@ -78,7 +79,7 @@ std::vector<LineSegment> IncrementalExtractor::Extract(const ScanPoints& scan) c
       }
       merged.push_back(std::move(line));
     }
-    RemoveRoundObjects(p, options_.breakpoints.sigma_m, options_.round_objects, &merged);
+    RemoveRoundObjects(p, options_.breakpoints.sigma_m, options_.round_objects, &merged, circles);
     RefineCorners(p, group, scan.closed && n == static_cast<int>(p.size()), &merged);
     for (const auto& line : merged) {
       if (static_cast<int>(line.size()) < options_.filter.min_points) continue;

@@ -29,9 +29,17 @@ class IncrementalExtractor final : public LineExtractor {
  public:
   explicit IncrementalExtractor(const IncrementalOptions& options = {});
   std::string name() const override { return "incremental"; }
-  std::vector<LineSegment> Extract(const ScanPoints& scan) const override;
+  std::vector<LineSegment> Extract(const ScanPoints& scan) const override {
+    return Run(scan, nullptr);
+  }
+  ExtractedFeatures ExtractFeatures(const ScanPoints& scan) const override {
+    ExtractedFeatures out;
+    out.lines = Run(scan, &out.circles);
+    return out;
+  }
 
  private:
+  std::vector<LineSegment> Run(const ScanPoints& scan, std::vector<CircleFeature>* circles) const;
   const IncrementalOptions options_;
 };
 

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "perception/lines/extracted_features.h"
 #include "perception/lines/line_segment.h"
 #include "perception/lines/scan_points.h"
 
@@ -18,6 +19,11 @@ class LineExtractor {
   virtual std::string name() const = 0;
   // An empty scan or one with too few points gives no segments; never throws on data.
   virtual std::vector<LineSegment> Extract(const ScanPoints& scan) const = 0;
+  // The lines (the same as Extract's) and the round objects the extractor recognised as circles
+  // (round_object_filter.h). An extractor without a round-object stage reports no circles.
+  virtual ExtractedFeatures ExtractFeatures(const ScanPoints& scan) const {
+    return {Extract(scan), {}};
+  }
 };
 
 // Breaking an ordered scan into groups of neighbouring points (shared by the ordered extractors).

@@ -28,24 +28,22 @@ RansacExtractor::RansacExtractor(const RansacOptions& options) : options_(option
   options_.Validate();
 }
 
-std::vector<LineSegment> RansacExtractor::Extract(const ScanPoints& scan) const {
-  return ExtractImpl(scan.points, scan.HasScanOrder() ? &scan : nullptr, nullptr);
-}
-
 std::vector<LineSegment> RansacExtractor::ExtractFromPoints(
     std::span<const Eigen::Vector2d> points, std::vector<std::vector<int>>* inliers_out) const {
-  return ExtractImpl(points, nullptr, inliers_out);
+  return ExtractImpl(points, nullptr, inliers_out, nullptr);
 }
 
-std::vector<LineSegment> RansacExtractor::ExtractImpl(
-    std::span<const Eigen::Vector2d> points, const ScanPoints* scan,
-    std::vector<std::vector<int>>* inliers_out) const {
+std::vector<LineSegment> RansacExtractor::ExtractImpl(std::span<const Eigen::Vector2d> points,
+                                                      const ScanPoints* scan,
+                                                      std::vector<std::vector<int>>* inliers_out,
+                                                      std::vector<CircleFeature>* circles) const {
   std::vector<LineSegment> out;
   std::mt19937_64 rng(options_.seed);
   const std::vector<char> round =
-      scan != nullptr ? RoundObjectPoints(*scan, options_.breakpoints,
-                                          options_.distance_threshold_m, options_.round_objects)
-                      : std::vector<char>(points.size(), 0);
+      scan != nullptr
+          ? RoundObjectPoints(*scan, options_.breakpoints, options_.distance_threshold_m,
+                              options_.round_objects, circles)
+          : std::vector<char>(points.size(), 0);
   std::vector<int> remaining;
   for (std::size_t i = 0; i < points.size(); ++i)
     if (!round[i]) remaining.push_back(static_cast<int>(i));

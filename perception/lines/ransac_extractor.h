@@ -41,7 +41,14 @@ class RansacExtractor final : public LineExtractor {
  public:
   explicit RansacExtractor(const RansacOptions& options = {});
   std::string name() const override { return "ransac"; }
-  std::vector<LineSegment> Extract(const ScanPoints& scan) const override;
+  std::vector<LineSegment> Extract(const ScanPoints& scan) const override {
+    return Run(scan, nullptr);
+  }
+  ExtractedFeatures ExtractFeatures(const ScanPoints& scan) const override {
+    ExtractedFeatures out;
+    out.lines = Run(scan, &out.circles);
+    return out;
+  }
   // The same on bare points (e.g. a world-frame cloud); `inliers` (optional) receives each
   // segment's point indices.
   std::vector<LineSegment> ExtractFromPoints(
@@ -49,10 +56,15 @@ class RansacExtractor final : public LineExtractor {
       std::vector<std::vector<int>>* inliers = nullptr) const;
 
  private:
-  // `scan` (optional) gives the points' scan order.
+  std::vector<LineSegment> Run(const ScanPoints& scan, std::vector<CircleFeature>* circles) const {
+    return ExtractImpl(scan.points, scan.HasScanOrder() ? &scan : nullptr, nullptr, circles);
+  }
+  // `scan` (optional) gives the points' scan order (and with it the round-object stage, whose
+  // circles go to `circles` when given).
   std::vector<LineSegment> ExtractImpl(std::span<const Eigen::Vector2d> points,
                                        const ScanPoints* scan,
-                                       std::vector<std::vector<int>>* inliers) const;
+                                       std::vector<std::vector<int>>* inliers,
+                                       std::vector<CircleFeature>* circles) const;
 
   const RansacOptions options_;
 };

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <span>
 
+#include "perception/lines/circle_feature.h"
 #include "perception/lines/line_segment.h"
 
 namespace plywood::perception {
@@ -27,5 +28,12 @@ struct RayExplanation {
 
 RayExplanation ExplainRays(std::span<const Eigen::Vector2d> points,
                            std::span<const LineSegment> segments, double max_distance_m = 0.05);
+
+// The same with the round objects the extractor reported: a ray is also explained when its
+// endpoint lies within max_distance_m of a circle's rim (the nearest feature, line or circle,
+// gives the distance).
+RayExplanation ExplainRays(std::span<const Eigen::Vector2d> points,
+                           std::span<const LineSegment> segments,
+                           std::span<const CircleFeature> circles, double max_distance_m = 0.05);
 
 }  // namespace plywood::perception

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "msgs/shortest_number.h"
+#include "perception/lines/circle_feature.h"
 #include "perception/lines/circle_fit.h"
 #include "perception/lines/end_point_fit.h"
 #include "perception/lines/tls_line_fit.h"
@@ -24,10 +25,11 @@ constexpr double kMinBulgeSigmas = 3.0;
 constexpr int kMinChordPoints = 5;
 constexpr double kMinChordBulgeSigmas = 1.5;
 
-// Whether lines[first..last] (inclusive) are one round object.
-bool IsRoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
-                const RoundObjectOptions& options, const std::vector<std::vector<int>>& lines,
-                int first, int last) {
+// The circle of lines[first..last] (inclusive) when they are one round object.
+std::optional<CircleFeature> RoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
+                                      const RoundObjectOptions& options,
+                                      const std::vector<std::vector<int>>& lines, int first,
+                                      int last) {
   // Both ends of the run are breaks: the object is seen whole, its own silhouette.
   const bool whole_group = first == 0 && last == static_cast<int>(lines.size()) - 1;
   std::vector<int> run;
@@ -35,13 +37,13 @@ bool IsRoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
   const int total = static_cast<int>(run.size());
   const bool chord = first == last;  // a single free-standing line (the whole group)
   const int min_points = chord ? kMinChordPoints : options.min_round_points;
-  if (total < min_points) return false;
+  if (total < min_points) return std::nullopt;
   // Cheap test first: the near side of a round object bulges towards the sensor, beyond the
   // chord between the run's ends; straight walls and concave corners do not (most runs).
   {
     const Eigen::Vector2d a = points[run.front()], b = points[run.back()];
     Eigen::Vector2d normal(a.y() - b.y(), b.x() - a.x());
-    if (normal.norm() < 1e-12) return false;
+    if (normal.norm() < 1e-12) return std::nullopt;
     normal.normalize();
     if (normal.dot(-a) < 0.0) normal = -normal;  // towards the sensor
     double bulge_m = 0.0;
@@ -49,13 +51,13 @@ bool IsRoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
     // A chord c of a circle of radius <= R_max has a sagitta >= R_max - sqrt(R_max^2 - c^2 / 4).
     const double half_chord = 0.5 * (b - a).norm();
     const double r_max = options.max_round_radius_m;
-    if (half_chord >= r_max) return false;
+    if (half_chord >= r_max) return std::nullopt;
     const double min_sagitta = r_max - std::sqrt(r_max * r_max - half_chord * half_chord);
     const double noise_m = (chord ? kMinChordBulgeSigmas : kMinBulgeSigmas) * noise_sigma_m;
-    if (bulge_m < std::max(noise_m, min_sagitta - noise_m)) return false;
+    if (bulge_m < std::max(noise_m, min_sagitta - noise_m)) return std::nullopt;
   }
   std::optional<CircleFit> circle = FitCircle(points, run);
-  if (!circle) return false;
+  if (!circle) return std::nullopt;
   // Trim the points off the circle once and refit.
   const double trim_m = kTrimSigmas * noise_sigma_m;
   const auto off_circle = [&](int i) {
@@ -68,16 +70,16 @@ bool IsRoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
     if (is_kept[j]) kept.push_back(run[j]);
   }
   if (kept.size() < kMinKeptFraction * total || static_cast<int>(kept.size()) < min_points) {
-    return false;
+    return std::nullopt;
   }
   if (static_cast<int>(kept.size()) < total) {
     circle = FitCircle(points, kept);
-    if (!circle) return false;
+    if (!circle) return std::nullopt;
   }
-  if (circle->radius_m > options.max_round_radius_m) return false;
+  if (circle->radius_m > options.max_round_radius_m) return std::nullopt;
   // Seen from outside: the sensor (origin) lies outside the circle, so the points are its near
   // side. A concave arc around the sensor is a curved wall, not an object.
-  if (circle->centre.norm() <= circle->radius_m) return false;
+  if (circle->centre.norm() <= circle->radius_m) return std::nullopt;
   // A round object seen from outside shows nearly half its circumference (180 deg minus twice
   // asin(R / distance)), centred on the direction to the sensor; clutter that happens to fit a
   // small circle shows a short piece of one.
@@ -88,7 +90,7 @@ bool IsRoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
     angles.push_back(std::atan2(d.y(), d.x()));
     mean_direction += d;
   }
-  if (mean_direction.dot(-circle->centre) <= 0.0) return false;  // the far side: never seen
+  if (mean_direction.dot(-circle->centre) <= 0.0) return std::nullopt;  // the far side: never seen
   std::sort(angles.begin(), angles.end());
   double largest_gap = angles.front() + 2.0 * M_PI - angles.back();
   for (std::size_t k = 1; k < angles.size(); ++k) {
@@ -100,7 +102,8 @@ bool IsRoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
   // the circle; a single line (one more parameter buys a flat box face a circle too often) or a
   // circle that needed trimming (a small box seen corner-on) still needs the full arc.
   const bool short_arc = (2.0 * M_PI - largest_gap) * 180.0 / M_PI < options.min_round_arc_deg;
-  if (short_arc && (!whole_group || chord || static_cast<int>(kept.size()) < total)) return false;
+  if (short_arc && (!whole_group || chord || static_cast<int>(kept.size()) < total))
+    return std::nullopt;
 
   // The run's lines refitted to the kept points.
   const int line_count = last - first + 1;
@@ -117,17 +120,27 @@ bool IsRoundRun(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
   }
   const int n = static_cast<int>(kept.size());
   const int line_parameters = 3 * line_count - 1;
-  if (n <= line_parameters) return false;
+  if (n <= line_parameters) return std::nullopt;
   // (a) The circle explains the points at least as well as the lines, each residual variance
   // over its degrees of freedom.
   const double circle_variance = circle->rss_m2 / (n - 3);
-  if (circle_variance <= lines_rss_m2 / (n - line_parameters)) return true;
+  // The circle reported: a real fit (circle_feature.h) or none, and then no round object.
+  const auto feature = [&]() {
+    return FitCircleFeature(points, kept,
+                            {.max_radius_m = options.max_round_radius_m,
+                             .noise_sigma_m = noise_sigma_m,
+                             .min_points = min_points});
+  };
+  if (circle_variance <= lines_rss_m2 / (n - line_parameters)) return feature();
   // (b) With few points the lines' extra parameters can fit the noise: the circle still wins when
   // it fits at the sensor's noise level and the lines' gain is what their extra parameters buy
   // from noise alone (a chi-square budget per extra parameter, the noise sigma known).
   const double noise_m2 = noise_sigma_m * noise_sigma_m;
-  return circle_variance <= kNoiseLevelSigmas * kNoiseLevelSigmas * noise_m2 &&
-         circle->rss_m2 - lines_rss_m2 <= kChiSquarePerParameter * (line_parameters - 3) * noise_m2;
+  if (circle_variance <= kNoiseLevelSigmas * kNoiseLevelSigmas * noise_m2 &&
+      circle->rss_m2 - lines_rss_m2 <= kChiSquarePerParameter * (line_parameters - 3) * noise_m2) {
+    return feature();
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -148,7 +161,8 @@ void RoundObjectOptions::Validate() const {
 }
 
 void RemoveRoundObjects(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
-                        const RoundObjectOptions& options, std::vector<std::vector<int>>* lines) {
+                        const RoundObjectOptions& options, std::vector<std::vector<int>>* lines,
+                        std::vector<CircleFeature>* circles) {
   if (!options.reject_round_objects || lines->empty()) return;
   const int count = static_cast<int>(lines->size());
   std::vector<char> drop(count, 0);
@@ -169,21 +183,29 @@ void RemoveRoundObjects(std::span<const Eigen::Vector2d> points, double noise_si
     }
     // The longest round run starting here; a single line only when it is the whole group (both
     // its ends are breaks: a free-standing thin column gives one chord).
-    int round_last =
-        count == 1 && IsRoundRun(points, noise_sigma_m, options, *lines, first, first) ? first : -1;
+    int round_last = -1;
+    std::optional<CircleFeature> circle;
+    if (count == 1) {
+      circle = RoundRun(points, noise_sigma_m, options, *lines, first, first);
+      if (circle) round_last = first;
+    }
     Eigen::Vector2d lo = box_lo[first], hi = box_hi[first];
     for (int last = first + 1; last < count; ++last) {
       if ((*lines)[last].empty()) break;
       // Points on a circle of radius R lie within 2 R of each other.
       lo = lo.cwiseMin(box_lo[last]), hi = hi.cwiseMax(box_hi[last]);
       if ((hi - lo).norm() > 2.0 * options.max_round_radius_m) break;
-      if (IsRoundRun(points, noise_sigma_m, options, *lines, first, last)) round_last = last;
+      if (auto c = RoundRun(points, noise_sigma_m, options, *lines, first, last)) {
+        round_last = last;
+        circle = std::move(c);
+      }
     }
     if (round_last < 0) {
       ++first;
       continue;
     }
     for (int k = first; k <= round_last; ++k) drop[k] = 1;
+    if (circles != nullptr) circles->push_back(std::move(*circle));
     first = round_last + 1;
   }
   int out = 0;
@@ -196,7 +218,8 @@ void RemoveRoundObjects(std::span<const Eigen::Vector2d> points, double noise_si
 }
 
 std::vector<char> RoundObjectPoints(const ScanPoints& scan, const BreakpointOptions& breakpoints,
-                                    double split_threshold_m, const RoundObjectOptions& options) {
+                                    double split_threshold_m, const RoundObjectOptions& options,
+                                    std::vector<CircleFeature>* circles) {
   std::vector<char> round(scan.size(), 0);
   if (!options.reject_round_objects) return round;
   for (const std::vector<int>& group : SplitAtBreakpoints(scan, breakpoints)) {
@@ -204,7 +227,7 @@ std::vector<char> RoundObjectPoints(const ScanPoints& scan, const BreakpointOpti
     std::vector<std::vector<int>> pieces =
         SplitByEndPointFit(scan.points, group, split_threshold_m, /*skip_single_outliers=*/true);
     const std::vector<std::vector<int>> before = pieces;
-    RemoveRoundObjects(scan.points, breakpoints.sigma_m, options, &pieces);
+    RemoveRoundObjects(scan.points, breakpoints.sigma_m, options, &pieces, circles);
     if (pieces.size() == before.size()) continue;
     // Every point of the group not on a kept piece was on a round object's piece.
     std::vector<char> kept(scan.size(), 0);

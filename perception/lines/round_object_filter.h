@@ -4,6 +4,7 @@
 #include <span>
 #include <vector>
 
+#include "perception/lines/circle_feature.h"
 #include "perception/lines/line_extractor.h"
 #include "perception/lines/scan_points.h"
 
@@ -40,15 +41,21 @@ struct RoundObjectOptions {
 
 // Removes from `lines` (the lines of one breakpoint group in scan order, each a list of point
 // indices into `points`; sensor at the origin) every run of consecutive lines that is a round
-// object seen from outside. `noise_sigma_m` is the range noise of one point.
+// object seen from outside. `noise_sigma_m` is the range noise of one point. Each run removed is
+// appended to `circles` (when given) as the circle fitted to its points: a run is round only when
+// that circle passes the feature gates (circle_feature.h: radius <= max_round_radius_m, RMS
+// residual <= 2 sigma, no point beyond 4 sigma), so every removed run is reported.
 void RemoveRoundObjects(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
-                        const RoundObjectOptions& options, std::vector<std::vector<int>>* lines);
+                        const RoundObjectOptions& options, std::vector<std::vector<int>>* lines,
+                        std::vector<CircleFeature>* circles = nullptr);
 
 // The same stage for extractors that look for lines among all of a scan's points (RANSAC, Hough):
 // the scan's breakpoint groups, each cut by the end-point fit at split_threshold_m
 // (end_point_fit.h), then RemoveRoundObjects on each group's pieces. Returns per point whether it
-// lies on a round object (all zero when options.reject_round_objects is false).
+// lies on a round object (all zero when options.reject_round_objects is false); the circles found
+// are appended to `circles` when given.
 std::vector<char> RoundObjectPoints(const ScanPoints& scan, const BreakpointOptions& breakpoints,
-                                    double split_threshold_m, const RoundObjectOptions& options);
+                                    double split_threshold_m, const RoundObjectOptions& options,
+                                    std::vector<CircleFeature>* circles = nullptr);
 
 }  // namespace plywood::perception

@@ -42,7 +42,8 @@ SplitAndMergeExtractor::SplitAndMergeExtractor(const SplitAndMergeOptions& optio
   options_.Validate();
 }
 
-std::vector<LineSegment> SplitAndMergeExtractor::Extract(const ScanPoints& scan) const {
+std::vector<LineSegment> SplitAndMergeExtractor::Run(const ScanPoints& scan,
+                                                     std::vector<CircleFeature>* circles) const {
   std::vector<LineSegment> out;
   const auto& p = scan.points;
   const double threshold = options_.split_threshold_m;
@@ -57,7 +58,7 @@ std::vector<LineSegment> SplitAndMergeExtractor::Extract(const ScanPoints& scan)
         SplitByEndPointFit(p, group, threshold, options_.skip_single_outliers);
     // Round objects first: the merge below can join a column's chords into one line again (the
     // union's own fit is closer to the arc than the chord the split tested).
-    RemoveRoundObjects(p, options_.breakpoints.sigma_m, options_.round_objects, &pieces);
+    RemoveRoundObjects(p, options_.breakpoints.sigma_m, options_.round_objects, &pieces, circles);
     // Merge neighbours whose union is still one line (the end-point fit over-splits when the
     // chord of a long group passes far from its middle).
     std::vector<std::vector<int>> merged;
@@ -77,7 +78,7 @@ std::vector<LineSegment> SplitAndMergeExtractor::Extract(const ScanPoints& scan)
       }
       merged.push_back(std::move(piece));
     }
-    RemoveRoundObjects(p, options_.breakpoints.sigma_m, options_.round_objects, &merged);
+    RemoveRoundObjects(p, options_.breakpoints.sigma_m, options_.round_objects, &merged, circles);
     // A closed scan without breakpoints is one group that starts and ends at the same corner.
     RefineCorners(p, group, scan.closed && group.size() == p.size(), &merged);
     for (const auto& piece : merged) {

@@ -42,9 +42,17 @@ class SplitAndMergeExtractor final : public LineExtractor {
  public:
   explicit SplitAndMergeExtractor(const SplitAndMergeOptions& options = {});
   std::string name() const override { return "split_and_merge"; }
-  std::vector<LineSegment> Extract(const ScanPoints& scan) const override;
+  std::vector<LineSegment> Extract(const ScanPoints& scan) const override {
+    return Run(scan, nullptr);
+  }
+  ExtractedFeatures ExtractFeatures(const ScanPoints& scan) const override {
+    ExtractedFeatures out;
+    out.lines = Run(scan, &out.circles);
+    return out;
+  }
 
  private:
+  std::vector<LineSegment> Run(const ScanPoints& scan, std::vector<CircleFeature>* circles) const;
   const SplitAndMergeOptions options_;
 };
 
