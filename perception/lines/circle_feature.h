@@ -5,6 +5,8 @@
 #include <span>
 #include <vector>
 
+#include "perception/lines/circle_fit.h"
+
 namespace plywood::perception {
 
 // A round object (column, leg, bin) an extractor recognised in a scan, in the points' frame: the
@@ -32,6 +34,11 @@ struct CircleFeatureGates {
   double max_residual_sigmas = 4.0;
   int min_points = 5;
 };
+
+// `fit` (a circle fitted to the points `indices`) as a feature when it passes `gates`.
+std::optional<CircleFeature> CircleFeatureFromFit(const CircleFit& fit,
+                                                  std::span<const int> indices,
+                                                  const CircleFeatureGates& gates);
 
 // Fits a circle to points[indices] (circle_fit.h) and returns it when it passes `gates`.
 std::optional<CircleFeature> FitCircleFeature(std::span<const Eigen::Vector2d> points,

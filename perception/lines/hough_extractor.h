@@ -34,21 +34,14 @@ struct HoughOptions {
   void Validate() const;
 };
 
-class HoughExtractor final : public LineExtractor {
+class HoughExtractor final : public RoundObjectAwareExtractor {
  public:
   explicit HoughExtractor(const HoughOptions& options = {});
   std::string name() const override { return "hough"; }
-  std::vector<LineSegment> Extract(const ScanPoints& scan) const override {
-    return Run(scan, nullptr);
-  }
-  ExtractedFeatures ExtractFeatures(const ScanPoints& scan) const override {
-    ExtractedFeatures out;
-    out.lines = Run(scan, &out.circles);
-    return out;
-  }
 
  private:
-  std::vector<LineSegment> Run(const ScanPoints& scan, std::vector<CircleFeature>* circles) const;
+  std::vector<LineSegment> Run(const ScanPoints& scan,
+                               std::vector<CircleFeature>* circles) const override;
   const HoughOptions options_;
 };
 

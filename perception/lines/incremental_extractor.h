@@ -25,21 +25,14 @@ struct IncrementalOptions {
   void Validate() const;
 };
 
-class IncrementalExtractor final : public LineExtractor {
+class IncrementalExtractor final : public RoundObjectAwareExtractor {
  public:
   explicit IncrementalExtractor(const IncrementalOptions& options = {});
   std::string name() const override { return "incremental"; }
-  std::vector<LineSegment> Extract(const ScanPoints& scan) const override {
-    return Run(scan, nullptr);
-  }
-  ExtractedFeatures ExtractFeatures(const ScanPoints& scan) const override {
-    ExtractedFeatures out;
-    out.lines = Run(scan, &out.circles);
-    return out;
-  }
 
  private:
-  std::vector<LineSegment> Run(const ScanPoints& scan, std::vector<CircleFeature>* circles) const;
+  std::vector<LineSegment> Run(const ScanPoints& scan,
+                               std::vector<CircleFeature>* circles) const override;
   const IncrementalOptions options_;
 };
 

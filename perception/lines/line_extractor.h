@@ -26,6 +26,25 @@ class LineExtractor {
   }
 };
 
+// An extractor with a round-object stage: one pass gives the lines and, when asked, the circles
+// that stage removed, so Extract and ExtractFeatures cannot disagree on the lines.
+class RoundObjectAwareExtractor : public LineExtractor {
+ public:
+  std::vector<LineSegment> Extract(const ScanPoints& scan) const final {
+    return Run(scan, nullptr);
+  }
+  ExtractedFeatures ExtractFeatures(const ScanPoints& scan) const final {
+    ExtractedFeatures out;
+    out.lines = Run(scan, &out.circles);
+    return out;
+  }
+
+ protected:
+  // The lines of `scan`; the round objects removed on the way are added to `circles` unless null.
+  virtual std::vector<LineSegment> Run(const ScanPoints& scan,
+                                       std::vector<CircleFeature>* circles) const = 0;
+};
+
 // Breaking an ordered scan into groups of neighbouring points (shared by the ordered extractors).
 // Two consecutive points belong to different groups when more than max_missing_beams beams
 // between them gave no usable return (nothing was seen there: an opening seen past the range

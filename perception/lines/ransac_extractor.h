@@ -37,18 +37,10 @@ struct RansacOptions {
   void Validate() const;
 };
 
-class RansacExtractor final : public LineExtractor {
+class RansacExtractor final : public RoundObjectAwareExtractor {
  public:
   explicit RansacExtractor(const RansacOptions& options = {});
   std::string name() const override { return "ransac"; }
-  std::vector<LineSegment> Extract(const ScanPoints& scan) const override {
-    return Run(scan, nullptr);
-  }
-  ExtractedFeatures ExtractFeatures(const ScanPoints& scan) const override {
-    ExtractedFeatures out;
-    out.lines = Run(scan, &out.circles);
-    return out;
-  }
   // The same on bare points (e.g. a world-frame cloud); `inliers` (optional) receives each
   // segment's point indices.
   std::vector<LineSegment> ExtractFromPoints(
@@ -56,7 +48,8 @@ class RansacExtractor final : public LineExtractor {
       std::vector<std::vector<int>>* inliers = nullptr) const;
 
  private:
-  std::vector<LineSegment> Run(const ScanPoints& scan, std::vector<CircleFeature>* circles) const {
+  std::vector<LineSegment> Run(const ScanPoints& scan,
+                               std::vector<CircleFeature>* circles) const override {
     return ExtractImpl(scan.points, scan.HasScanOrder() ? &scan : nullptr, nullptr, circles);
   }
   // `scan` (optional) gives the points' scan order (and with it the round-object stage, whose

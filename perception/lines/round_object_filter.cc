@@ -124,12 +124,13 @@ std::optional<CircleFeature> RoundRun(std::span<const Eigen::Vector2d> points, d
   // (a) The circle explains the points at least as well as the lines, each residual variance
   // over its degrees of freedom.
   const double circle_variance = circle->rss_m2 / (n - 3);
-  // The circle reported: a real fit (circle_feature.h) or none, and then no round object.
+  // The circle reported: a real fit (circle_feature.h) or none, and then no round object. The
+  // circle above was fitted to `kept` already.
   const auto feature = [&]() {
-    return FitCircleFeature(points, kept,
-                            {.max_radius_m = options.max_round_radius_m,
-                             .noise_sigma_m = noise_sigma_m,
-                             .min_points = min_points});
+    return CircleFeatureFromFit(*circle, kept,
+                                {.max_radius_m = options.max_round_radius_m,
+                                 .noise_sigma_m = noise_sigma_m,
+                                 .min_points = min_points});
   };
   if (circle_variance <= lines_rss_m2 / (n - line_parameters)) return feature();
   // (b) With few points the lines' extra parameters can fit the noise: the circle still wins when

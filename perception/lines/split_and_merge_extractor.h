@@ -38,21 +38,14 @@ struct SplitAndMergeOptions {
   void Validate() const;
 };
 
-class SplitAndMergeExtractor final : public LineExtractor {
+class SplitAndMergeExtractor final : public RoundObjectAwareExtractor {
  public:
   explicit SplitAndMergeExtractor(const SplitAndMergeOptions& options = {});
   std::string name() const override { return "split_and_merge"; }
-  std::vector<LineSegment> Extract(const ScanPoints& scan) const override {
-    return Run(scan, nullptr);
-  }
-  ExtractedFeatures ExtractFeatures(const ScanPoints& scan) const override {
-    ExtractedFeatures out;
-    out.lines = Run(scan, &out.circles);
-    return out;
-  }
 
  private:
-  std::vector<LineSegment> Run(const ScanPoints& scan, std::vector<CircleFeature>* circles) const;
+  std::vector<LineSegment> Run(const ScanPoints& scan,
+                               std::vector<CircleFeature>* circles) const override;
   const SplitAndMergeOptions options_;
 };
 
