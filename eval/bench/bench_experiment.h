@@ -38,6 +38,9 @@ struct BenchFigures {
   double default_run_simulated_s = 0.0;
   // The same experiment's simulation alone (ExperimentRunner::Run: no outputs, no snapshot).
   double default_run_simulation_wall_s = 0.0;
+  // Both default-run figures are the fastest of this many repetitions: at least options.repeats,
+  // more until each figure's repetitions add up to options.min_wall_s of wall time.
+  int default_run_repeats = 0;
 };
 
 // Runs a P3-DX with a 361-beam LMS 200 at 10 Hz and 16 sonars at 10 Hz, wall-following on one

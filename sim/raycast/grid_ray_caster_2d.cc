@@ -257,8 +257,19 @@ double GridRayCaster2D::IntersectFallback(int g, const double* o, const double* 
   }
 }
 
-bool GridRayCaster2D::Cast(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& given_dir_W,
+bool GridRayCaster2D::Cast(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W,
                            double max_range_m, RayHit* hit) const {
+  return CastRay(origin_W, dir_W, max_range_m, /*with_normal=*/true, hit);
+}
+
+bool GridRayCaster2D::CastWithoutNormal(const Eigen::Vector3d& origin_W,
+                                        const Eigen::Vector3d& dir_W, double max_range_m,
+                                        RayHit* hit) const {
+  return CastRay(origin_W, dir_W, max_range_m, /*with_normal=*/false, hit);
+}
+
+bool GridRayCaster2D::CastRay(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& given_dir_W,
+                              double max_range_m, bool with_normal, RayHit* hit) const {
   Eigen::Vector3d dir_W = given_dir_W;
   if (dir_W.z() != 0.0 && std::abs(dir_W.z()) <= level_tolerance_ * dir_W.head<2>().norm()) {
     dir_W.z() = 0.0;
@@ -365,6 +376,7 @@ bool GridRayCaster2D::Cast(const Eigen::Vector3d& origin_W, const Eigen::Vector3
   if (best_id == std::numeric_limits<int>::max() || best_t > max_range_m) return false;
   hit->distance_m = best_t;
   hit->geom_id = best_id;
+  if (!with_normal) return true;
   hit->normal_W = SurfaceNormal(model_, data_, best_id, origin_W + best_t * dir_W);
   if (hit->normal_W.x() == 0 && hit->normal_W.y() == 0 && hit->normal_W.z() == 0) {
     hit->normal_W = -dir_W;  // meshes, height fields

@@ -63,6 +63,8 @@ class GridRayCaster2D : public RayCaster {
 
   bool Cast(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W, double max_range_m,
             RayHit* hit) const override;
+  bool CastWithoutNormal(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W,
+                         double max_range_m, RayHit* hit) const override;
 
   // Geoms held in the grid, and geoms tested on every (non-horizontal) ray.
   int num_grid_geoms() const { return static_cast<int>(shapes_.size()); }
@@ -85,6 +87,8 @@ class GridRayCaster2D : public RayCaster {
     bool upright;  // local z exactly along world z (mat[2] == mat[5] == 0): 2-D fast path
   };
 
+  bool CastRay(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W, double max_range_m,
+               bool with_normal, RayHit* hit) const;
   double IntersectShape(const Shape& shape, const double* origin, const double* dir,
                         bool horizontal) const;
   double IntersectFallback(int geom_id, const double* origin, const double* dir) const;

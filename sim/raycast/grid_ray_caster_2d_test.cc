@@ -295,6 +295,40 @@ TEST_P(RandomWorldTest, NearlyLevelRaysAreCastLevel) {
   EXPECT_GT(close, hits / 2);
 }
 
+TEST_P(RandomWorldTest, CastWithoutNormalGivesCastsDistanceAndGeom) {
+  const CompiledWorld w = Compile(RandomWorld(9, 60));
+  GridRayCaster2DOptions options;
+  options.cell_size_m = GetParam();
+  const MujocoRayCaster reference(w.model.get(), w.data.get());
+  const GridRayCaster2D grid(w.model.get(), w.data.get(), options);
+  std::mt19937_64 rng(14);
+  std::uniform_real_distribution<double> ux(-12, 12), uy(-9, 9), uz(0.01, 2.6), yaw(-M_PI, M_PI),
+      pitch(-M_PI / 2, M_PI / 2);
+  std::normal_distribution<double> tilt(0.0, 1e-3);
+  int hits = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const double a = yaw(rng);
+    // Level, slightly tilted (the 2-D path's tolerance) and anywhere in 3-D.
+    const double p = i % 3 == 0 ? 0.0 : i % 3 == 1 ? tilt(rng) : pitch(rng);
+    const Eigen::Vector3d origin(ux(rng), uy(rng), uz(rng));
+    const Eigen::Vector3d dir(std::cos(p) * std::cos(a), std::cos(p) * std::sin(a), std::sin(p));
+    for (const RayCaster* caster :
+         {static_cast<const RayCaster*>(&reference), static_cast<const RayCaster*>(&grid)}) {
+      RayHit full, bare;
+      const Eigen::Vector3d untouched(7.0, 8.0, 9.0);
+      bare.normal_W = untouched;
+      const bool hit = caster->Cast(origin, dir, 8.0, &full);
+      ASSERT_EQ(caster->CastWithoutNormal(origin, dir, 8.0, &bare), hit) << i;
+      if (!hit) continue;
+      ++hits;
+      EXPECT_EQ(bare.distance_m, full.distance_m) << i;
+      EXPECT_EQ(bare.geom_id, full.geom_id) << i;
+      EXPECT_EQ(bare.normal_W, untouched) << i;  // left as it was
+    }
+  }
+  EXPECT_GT(hits, 2000);
+}
+
 INSTANTIATE_TEST_SUITE_P(CellSizes, RandomWorldTest, ::testing::Values(0.13, 0.5, 2.0));
 
 TEST(GridRayCaster2DTest, SeesMovingBodiesWhereTheyAreNow) {

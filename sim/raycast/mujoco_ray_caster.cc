@@ -28,6 +28,15 @@ MujocoRayCaster::MujocoRayCaster(const mjModel* model, const mjData* data)
 
 bool MujocoRayCaster::Cast(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W,
                            double max_range_m, RayHit* hit) const {
+  if (!CastWithoutNormal(origin_W, dir_W, max_range_m, hit)) return false;
+  hit->normal_W = SurfaceNormal(model_, data_, hit->geom_id, origin_W + hit->distance_m * dir_W);
+  if (hit->normal_W.isZero()) hit->normal_W = -dir_W;  // meshes, height fields
+  return true;
+}
+
+bool MujocoRayCaster::CastWithoutNormal(const Eigen::Vector3d& origin_W,
+                                        const Eigen::Vector3d& dir_W, double max_range_m,
+                                        RayHit* hit) const {
   int geom_id = -1;
   const mjtNum distance = mj_ray(model_, data_, origin_W.data(), dir_W.data(), geom_groups_.data(),
                                  /*flg_static=*/1, /*bodyexclude=*/-1, &geom_id);
@@ -35,8 +44,6 @@ bool MujocoRayCaster::Cast(const Eigen::Vector3d& origin_W, const Eigen::Vector3
   if (geom_id < 0 || distance < 0 || distance > max_range_m) return false;
   hit->distance_m = distance;
   hit->geom_id = geom_id;
-  hit->normal_W = SurfaceNormal(model_, data_, geom_id, origin_W + distance * dir_W);
-  if (hit->normal_W.isZero()) hit->normal_W = -dir_W;  // meshes, height fields
   return true;
 }
 

@@ -27,6 +27,8 @@ class MujocoRayCaster : public RayCaster {
 
   bool Cast(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W, double max_range_m,
             RayHit* hit) const override;
+  bool CastWithoutNormal(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W,
+                         double max_range_m, RayHit* hit) const override;
 
  private:
   const mjModel* model_;

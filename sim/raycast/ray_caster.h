@@ -23,6 +23,13 @@ class RayCaster {
   // max_range_m; otherwise fills `hit`.
   virtual bool Cast(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W,
                     double max_range_m, RayHit* hit) const = 0;
+
+  // As Cast, but hit->normal_W is left as it was: for callers that read only the distance and the
+  // geom (laser and IR scans), so that casters can skip the normal's work. Same distance and geom.
+  virtual bool CastWithoutNormal(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W,
+                                 double max_range_m, RayHit* hit) const {
+    return Cast(origin_W, dir_W, max_range_m, hit);
+  }
 };
 
 }  // namespace plywood::sim

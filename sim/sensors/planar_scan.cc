@@ -45,11 +45,12 @@ void PlanarScan::Cast(const Scene& scene, const RayCaster& caster, double range_
   };
   for (int i = 0; i < n; ++i) {
     const Eigen::Vector3d dir_W = R_WS * dirs_S_[i];
-    bool found = caster.Cast(p_WS, dir_W, range_max_m, &hit) && hit.distance_m < range_max_m;
+    bool found =
+        caster.CastWithoutNormal(p_WS, dir_W, range_max_m, &hit) && hit.distance_m < range_max_m;
     // Past see-through geoms: recast from just beyond each face (a box's far face comes next).
     for (int pass = 0; found && !seen(hit) && pass < 16; ++pass) {
       const double offset = hit.distance_m + 1e-6;
-      found = caster.Cast(p_WS + offset * dir_W, dir_W, range_max_m - offset, &hit) &&
+      found = caster.CastWithoutNormal(p_WS + offset * dir_W, dir_W, range_max_m - offset, &hit) &&
               offset + hit.distance_m < range_max_m;
       hit.distance_m += offset;
     }
