@@ -73,8 +73,9 @@ std::vector<LineSegment> SplitAndMergeExtractor::Run(const ScanPoints& scan,
         for (int i : piece) m.Add(p[i]);
         double alpha = 0, r = 0;
         m.Fit(&alpha, &r);
-        if (std::max(MaxLineDistance(p, merged.back(), alpha, r),
-                     MaxLineDistance(p, piece, alpha, r)) <= threshold) {
+        // The new piece first: a failing merge usually fails there, before the long line.
+        if (MaxLineDistance(p, piece, alpha, r) <= threshold &&
+            MaxLineDistance(p, merged.back(), alpha, r) <= threshold) {
           merged.back().insert(merged.back().end(), piece.begin(), piece.end());
           back_moments = m;
           continue;
