@@ -15,6 +15,16 @@ double ChordDistance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const E
   return std::abs(d.x() * (p.y() - a.y()) - d.y() * (p.x() - a.x())) / length;
 }
 
+// The total-least-squares line of points[indices] (FitSegmentTls's alpha and r, bit for bit),
+// without the endpoints and covariance a distance test does not need.
+LineSegment FitLine(std::span<const Eigen::Vector2d> points, std::span<const int> indices) {
+  LineMoments moments;
+  for (int i : indices) moments.Add(points[i]);
+  LineSegment s;
+  moments.Fit(&s.alpha_rad, &s.r_m);
+  return s;
+}
+
 }  // namespace
 
 std::vector<std::vector<int>> SplitByEndPointFit(std::span<const Eigen::Vector2d> p,
@@ -24,7 +34,9 @@ std::vector<std::vector<int>> SplitByEndPointFit(std::span<const Eigen::Vector2d
   if (group.size() < 2) return {};
   // Iterative end-point fit over positions [lo, hi] of `group` (inclusive).
   std::vector<std::vector<int>> pieces;
-  std::vector<std::pair<int, int>> stack{{0, static_cast<int>(group.size()) - 1}};
+  std::vector<std::pair<int, int>> stack;
+  stack.reserve(32);
+  stack.push_back({0, static_cast<int>(group.size()) - 1});
   std::vector<char> outlier(group.size(), 0);
   while (!stack.empty()) {
     // Plain ints, not a structured binding: clang 14 (the fuzz build) cannot capture those.
@@ -51,6 +63,7 @@ std::vector<std::vector<int>> SplitByEndPointFit(std::span<const Eigen::Vector2d
     }
     if (worst < 0) {
       std::vector<int> piece;
+      piece.reserve(hi - lo + 1);
       for (int k = lo; k <= hi; ++k)
         if (!outlier[k]) piece.push_back(group[k]);
       pieces.push_back(std::move(piece));
@@ -78,8 +91,8 @@ std::vector<std::vector<int>> SplitByEndPointFit(std::span<const Eigen::Vector2d
       const int shared = pieces[k].back();
       pieces[k].pop_back();
       pieces[k + 1].erase(pieces[k + 1].begin());
-      const LineSegment left = FitSegmentTls(p, pieces[k]);
-      const LineSegment right = FitSegmentTls(p, pieces[k + 1]);
+      const LineSegment left = FitLine(p, pieces[k]);
+      const LineSegment right = FitLine(p, pieces[k + 1]);
       if (std::abs(left.SignedLineDistance(p[shared])) <=
           std::abs(right.SignedLineDistance(p[shared]))) {
         pieces[k].push_back(shared);

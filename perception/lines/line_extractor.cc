@@ -41,19 +41,26 @@ std::vector<std::vector<int>> SplitAtBreakpoints(const ScanPoints& scan,
   const double dphi = std::abs(scan.angle_increment_rad);
   const double lambda = options.lambda_deg * std::numbers::pi / 180.0;
   const double ratio = dphi > 0.0 && lambda > dphi ? std::sin(dphi) / std::sin(lambda - dphi) : 0.0;
+  // Local copies of what the test below reads for every point: the group being built is written
+  // between tests, and the compiler must assume a write may change anything read through a
+  // reference, so it would load each of these again for every point.
+  const int* const beam_index = scan.beam_index.data();
+  const double* const range_m = scan.range_m.data();
+  const Eigen::Vector2d* const points = scan.points.data();
+  const int beam_count = static_cast<int>(scan.beam_index.size());
+  const double three_sigma_m = 3.0 * options.sigma_m, min_m = options.min_m, max_m = options.max_m;
+  const int max_missing_beams = options.max_missing_beams;
   const auto threshold = [&](int i, int j) {
     // Invalid beams may lie between neighbours: scale by the number of beam steps.
-    const int beam_steps = std::abs(scan.beam_index[j] - scan.beam_index[i]);
-    const double steps =
-        beam_steps >= 1 && beam_steps < static_cast<int>(scan.beam_index.size()) ? beam_steps : 1;
-    const double d =
-        std::min(scan.range_m[i], scan.range_m[j]) * ratio * steps + 3.0 * options.sigma_m;
-    return std::min(options.max_m, std::max(options.min_m, d));
+    const int beam_steps = std::abs(beam_index[j] - beam_index[i]);
+    const double steps = beam_steps >= 1 && beam_steps < beam_count ? beam_steps : 1;
+    const double d = std::min(range_m[i], range_m[j]) * ratio * steps + three_sigma_m;
+    return std::min(max_m, std::max(min_m, d));
   };
-  // i before j in scan order.
-  const auto near = [&](int i, int j) {
-    return !OpeningBetween(scan, i, j, options.max_missing_beams) &&
-           (scan.points[i] - scan.points[j]).norm() <= threshold(i, j);
+  // i before j in scan order. Always inlined: the loop below asks it once per point.
+  const auto near = [&](int i, int j) __attribute__((always_inline)) {
+    return !OpeningBetween(scan, i, j, max_missing_beams) &&
+           (points[i] - points[j]).norm() <= threshold(i, j);
   };
   // For a closed scan start at a breakpoint so no wall is cut at the seam.
   int start = 0;
@@ -92,23 +99,27 @@ std::vector<std::vector<int>> SplitAtBreakpoints(const ScanPoints& scan,
     }
   }
   const bool closed_order = scan.closed && n > 2;
-  std::vector<int> order(n);
-  for (int k = 0; k < n; ++k) order[k] = (start + k) % n;
-  std::vector<int> current{order[0]};
+  // The k-th point in scan order from `start`, for 0 <= k < 2 n.
+  const auto order = [&](int k) { return start + k < n ? start + k : start + k - n; };
+  // One scratch vector for the group being built; each group is copied out at its exact size.
+  std::vector<int> current;
+  current.reserve(n);
+  current.push_back(order(0));
   for (int k = 1; k < n; ++k) {
-    const int i = order[k];
-    const int previous = current.empty() ? order[k - 1] : current.back();
+    const int i = order(k);
+    const int previous = current.empty() ? order(k - 1) : current.back();
     if (near(previous, i)) {
       current.push_back(i);
       continue;
     }
     // Lone outlier: i is far from its predecessor, but the predecessor is near the next point.
     if (options.drop_lone_outliers && !current.empty() && (k + 1 < n || closed_order)) {
-      const int next = order[(k + 1) % n];
+      const int next = order((k + 1) % n);
       if ((k + 1 < n || closed_order) && !near(i, next) && near(previous, next)) continue;
     }
-    groups.push_back(std::move(current));
-    current = {i};
+    groups.emplace_back(current.begin(), current.end());
+    current.clear();
+    current.push_back(i);
   }
   groups.push_back(std::move(current));
   return groups;

@@ -32,22 +32,29 @@ std::optional<CircleFeature> RoundRun(std::span<const Eigen::Vector2d> points, d
                                       int last) {
   // Both ends of the run are breaks: the object is seen whole, its own silhouette.
   const bool whole_group = first == 0 && last == static_cast<int>(lines.size()) - 1;
-  std::vector<int> run;
-  for (int k = first; k <= last; ++k) run.insert(run.end(), lines[k].begin(), lines[k].end());
-  const int total = static_cast<int>(run.size());
+  // The run's points are lines[first..last] concatenated; gathered into `run` only for a run
+  // that passes the bulge test below (most do not: no allocation for them).
+  int total = 0, front = -1, back = -1;
+  for (int k = first; k <= last; ++k) {
+    if (lines[k].empty()) continue;
+    total += static_cast<int>(lines[k].size());
+    if (front < 0) front = lines[k].front();
+    back = lines[k].back();
+  }
   const bool chord = first == last;  // a single free-standing line (the whole group)
   const int min_points = chord ? kMinChordPoints : options.min_round_points;
   if (total < min_points) return std::nullopt;
   // Cheap test first: the near side of a round object bulges towards the sensor, beyond the
   // chord between the run's ends; straight walls and concave corners do not (most runs).
   {
-    const Eigen::Vector2d a = points[run.front()], b = points[run.back()];
+    const Eigen::Vector2d a = points[front], b = points[back];
     Eigen::Vector2d normal(a.y() - b.y(), b.x() - a.x());
     if (normal.norm() < 1e-12) return std::nullopt;
     normal.normalize();
     if (normal.dot(-a) < 0.0) normal = -normal;  // towards the sensor
     double bulge_m = 0.0;
-    for (int i : run) bulge_m = std::max(bulge_m, normal.dot(points[i] - a));
+    for (int k = first; k <= last; ++k)
+      for (int i : lines[k]) bulge_m = std::max(bulge_m, normal.dot(points[i] - a));
     // A chord c of a circle of radius <= R_max has a sagitta >= R_max - sqrt(R_max^2 - c^2 / 4).
     const double half_chord = 0.5 * (b - a).norm();
     const double r_max = options.max_round_radius_m;
@@ -56,6 +63,9 @@ std::optional<CircleFeature> RoundRun(std::span<const Eigen::Vector2d> points, d
     const double noise_m = (chord ? kMinChordBulgeSigmas : kMinBulgeSigmas) * noise_sigma_m;
     if (bulge_m < std::max(noise_m, min_sagitta - noise_m)) return std::nullopt;
   }
+  std::vector<int> run;
+  run.reserve(total);
+  for (int k = first; k <= last; ++k) run.insert(run.end(), lines[k].begin(), lines[k].end());
   std::optional<CircleFit> circle = FitCircle(points, run);
   if (!circle) return std::nullopt;
   // Trim the points off the circle once and refit.
@@ -64,6 +74,7 @@ std::optional<CircleFeature> RoundRun(std::span<const Eigen::Vector2d> points, d
     return std::abs((points[i] - circle->centre).norm() - circle->radius_m) > trim_m;
   };
   std::vector<int> kept;
+  kept.reserve(run.size());
   std::vector<char> is_kept(run.size());  // in run order: lines[first..last] concatenated
   for (std::size_t j = 0; j < run.size(); ++j) {
     is_kept[j] = !off_circle(run[j]);
@@ -84,6 +95,7 @@ std::optional<CircleFeature> RoundRun(std::span<const Eigen::Vector2d> points, d
   // asin(R / distance)), centred on the direction to the sensor; clutter that happens to fit a
   // small circle shows a short piece of one.
   std::vector<double> angles;
+  angles.reserve(kept.size());
   Eigen::Vector2d mean_direction = Eigen::Vector2d::Zero();
   for (int i : kept) {
     const Eigen::Vector2d d = (points[i] - circle->centre).normalized();

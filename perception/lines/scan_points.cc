@@ -14,15 +14,6 @@ void ScanPoints::Add(double r, double bearing, int beam) {
   beam_index.push_back(beam);
 }
 
-int ScanPoints::MissingBeams(int i, int j) const {
-  int steps = beam_index[j] - beam_index[i];
-  if (steps <= 0 && closed && angle_increment_rad != 0.0) {
-    // Past the seam: the beams of a full turn.
-    steps += static_cast<int>(std::lround(2.0 * std::numbers::pi / std::abs(angle_increment_rad)));
-  }
-  return std::max(0, steps - 1);
-}
-
 ScanPoints MakeScanPoints(const msgs::LaserScan& scan, const ScanFilter& filter) {
   return MakeCombinedScanPoints({scan}, {0.0}, filter);
 }

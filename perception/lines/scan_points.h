@@ -1,6 +1,9 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "msgs/laser_scan.h"
@@ -29,7 +32,16 @@ struct ScanPoints {
   void Add(double range_m, double bearing_rad, int beam);
   // Beams without a usable return between point i and the next point j in scan order (past the
   // seam of a closed scan too): no return, a dropout, or a return filtered out (range cut).
-  int MissingBeams(int i, int j) const;
+  // Inline: the breakpoint test asks it for every pair of neighbouring points.
+  int MissingBeams(int i, int j) const {
+    int steps = beam_index[j] - beam_index[i];
+    if (steps <= 0 && closed && angle_increment_rad != 0.0) {
+      // Past the seam: the beams of a full turn.
+      steps +=
+          static_cast<int>(std::lround(2.0 * std::numbers::pi / std::abs(angle_increment_rad)));
+    }
+    return std::max(0, steps - 1);
+  }
 };
 
 // Which returns become points: range_min_m < r < range_max_m (strict on both sides, so ranges

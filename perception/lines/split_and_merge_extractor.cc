@@ -61,21 +61,28 @@ std::vector<LineSegment> SplitAndMergeExtractor::Run(const ScanPoints& scan,
     RemoveRoundObjects(p, options_.breakpoints.sigma_m, options_.round_objects, &pieces, circles);
     // Merge neighbours whose union is still one line (the end-point fit over-splits when the
     // chord of a long group passes far from its middle).
+    // The moments of merged.back(), its points added in order: adding a piece's points to a copy
+    // gives the union's moments bit for bit as a fit of the union from scratch would.
     std::vector<std::vector<int>> merged;
+    merged.reserve(pieces.size());
+    LineMoments back_moments;
     for (auto& piece : pieces) {
       if (piece.size() < 2) continue;
       if (!merged.empty()) {
-        std::vector<int> both = merged.back();
-        both.insert(both.end(), piece.begin(), piece.end());
-        LineMoments m;
-        for (int i : both) m.Add(p[i]);
+        LineMoments m = back_moments;
+        for (int i : piece) m.Add(p[i]);
         double alpha = 0, r = 0;
         m.Fit(&alpha, &r);
-        if (MaxLineDistance(p, both, alpha, r) <= threshold) {
-          merged.back() = std::move(both);
+        // The new piece first: a failing merge usually fails there, before the long line.
+        if (MaxLineDistance(p, piece, alpha, r) <= threshold &&
+            MaxLineDistance(p, merged.back(), alpha, r) <= threshold) {
+          merged.back().insert(merged.back().end(), piece.begin(), piece.end());
+          back_moments = m;
           continue;
         }
       }
+      back_moments = LineMoments();
+      for (int i : piece) back_moments.Add(p[i]);
       merged.push_back(std::move(piece));
     }
     RemoveRoundObjects(p, options_.breakpoints.sigma_m, options_.round_objects, &merged, circles);

@@ -45,30 +45,6 @@ void Finish(std::span<const Eigen::Vector2d> points, std::span<const int> indice
 
 }  // namespace
 
-void LineMoments::Add(const Eigen::Vector2d& p) {
-  if (n_ == 0) {
-    origin_ = p;
-    sx_ = sy_ = sxx_ = syy_ = sxy_ = 0.0;
-  }
-  const double x = p.x() - origin_.x(), y = p.y() - origin_.y();
-  ++n_;
-  sx_ += x;
-  sy_ += y;
-  sxx_ += x * x;
-  syy_ += y * y;
-  sxy_ += x * y;
-}
-
-void LineMoments::Remove(const Eigen::Vector2d& p) {
-  const double x = p.x() - origin_.x(), y = p.y() - origin_.y();
-  --n_;
-  sx_ -= x;
-  sy_ -= y;
-  sxx_ -= x * x;
-  syy_ -= y * y;
-  sxy_ -= x * y;
-}
-
 void LineMoments::Fit(double* alpha_rad, double* r_m, double* rss_m2) const {
   const double n = n_;
   const double mx = sx_ / n, my = sy_ / n;

@@ -12,8 +12,29 @@ namespace plywood::perception {
 // which makes incremental extraction and merge tests cheap.
 class LineMoments {
  public:
-  void Add(const Eigen::Vector2d& p);
-  void Remove(const Eigen::Vector2d& p);
+  // Inline: the extractors add every point of a scan several times (merge tests, refits).
+  void Add(const Eigen::Vector2d& p) {
+    if (n_ == 0) {
+      origin_ = p;
+      sx_ = sy_ = sxx_ = syy_ = sxy_ = 0.0;
+    }
+    const double x = p.x() - origin_.x(), y = p.y() - origin_.y();
+    ++n_;
+    sx_ += x;
+    sy_ += y;
+    sxx_ += x * x;
+    syy_ += y * y;
+    sxy_ += x * y;
+  }
+  void Remove(const Eigen::Vector2d& p) {
+    const double x = p.x() - origin_.x(), y = p.y() - origin_.y();
+    --n_;
+    sx_ -= x;
+    sy_ -= y;
+    sxx_ -= x * x;
+    syy_ -= y * y;
+    sxy_ -= x * y;
+  }
   int count() const { return n_; }
   // Total-least-squares line in normal form (alpha, r >= 0): minimises the sum of squared
   // perpendicular distances. Returns the residual sum of squares in *rss_m2 when given.
