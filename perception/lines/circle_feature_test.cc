@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "perception/lines/hough_extractor.h"
@@ -91,14 +93,73 @@ TEST(CircleFeatureTest, AStraightWallNeverGivesACircle) {
     for (int k = 0; k < 20; ++k) wall.push_back({1.5 + noise(rng), -0.5 + 0.05 * k});
     EXPECT_FALSE(FitCircleFeature(wall, All(20), {}).has_value()) << "seed " << seed;
   }
-  // A room of straight walls only, 1 cm noise: every extractor reports lines and no circle.
-  const std::vector<Eigen::Vector2d> room{{-2.5, -2.0}, {3.5, -2.0}, {3.5, 3.0}, {-2.5, 3.0}};
-  for (unsigned seed = 1; seed <= 10; ++seed) {
-    const ScanPoints scan = ScanScene({room}, {}, 0.01, 20.0, seed);
-    EXPECT_TRUE(SplitAndMergeExtractor().ExtractFeatures(scan).circles.empty()) << seed;
-    EXPECT_TRUE(IncrementalExtractor().ExtractFeatures(scan).circles.empty()) << seed;
-    EXPECT_TRUE(RansacExtractor().ExtractFeatures(scan).circles.empty()) << seed;
-    EXPECT_TRUE(HoughExtractor().ExtractFeatures(scan).circles.empty()) << seed;
+}
+
+// Every extractor with a round-object stage.
+const std::vector<const LineExtractor*>& RoundAwareExtractors() {
+  static const SplitAndMergeExtractor split_and_merge;
+  static const IncrementalExtractor incremental;
+  static const RansacExtractor ransac;
+  static const HoughExtractor hough;
+  static const std::vector<const LineExtractor*> all{&split_and_merge, &incremental, &ransac,
+                                                     &hough};
+  return all;
+}
+
+TEST(CircleFeatureTest, AStraightWallInARoomNeverGivesACircle) {
+  // Rooms of straight walls only, the nearest wall 0.5-6 m from the sensor (where the beams are
+  // 4 mm apart the noise is wider than the spacing: any few neighbours look like a small arc),
+  // 1 cm noise, 100 noise seeds each: every extractor reports lines and no circle. Before the
+  // partial-run rule (round_object_filter.cc: a run that is not its whole breakpoint group must
+  // bend away from one line by >= 25 sigma^2) RANSAC and Hough gave circles in up to 10 % of
+  // these scans and split_and_merge in 1 %; at a 45 deg arc without that rule, noise seed 1 of
+  // the first room (a 9-point bump 2 m away) gave split_and_merge a circle.
+  for (double d : {2.0, 0.5, 0.75, 1.0, 1.5, 3.0, 4.0, 5.0, 6.0}) {
+    const std::vector<Eigen::Vector2d> room =
+        d == 2.0 ? std::vector<Eigen::Vector2d>{{-2.5, -2.0}, {3.5, -2.0}, {3.5, 3.0}, {-2.5, 3.0}}
+                 : std::vector<Eigen::Vector2d>{{-4.0, -d}, {5.0, -d}, {5.0, 4.0}, {-4.0, 4.0}};
+    for (unsigned seed = 1; seed <= 100; ++seed) {
+      const ScanPoints scan = ScanScene({room}, {}, 0.01, 20.0, seed);
+      for (const LineExtractor* e : RoundAwareExtractors()) {
+        EXPECT_TRUE(e->ExtractFeatures(scan).circles.empty())
+            << e->name() << " wall at " << d << " m, seed " << seed;
+      }
+    }
+  }
+}
+
+TEST(CircleFeatureTest, AFreeStandingFlatPieceOfAtLeast30CmRarelyGivesACircle) {
+  // A straight piece standing free (empty beams at both ends: its whole breakpoint group) across
+  // 5-40 beams, 0.5-6 m away, facing the sensor or turned 30 / 60 deg, 1 cm noise, 100 seeds: once
+  // it is >= 0.3 m long a circle in fewer than 1 of 1000 scans per extractor (sparse 6-12 point
+  // pieces 3-6 m away; a few of them gave one at the 100 deg arc too). Shorter pieces give more:
+  // a 0.1-0.25 m flat face with 1 cm noise and a thin column's chord look alike (docs/lines.md
+  // has the rates).
+  int tried = 0;
+  std::map<std::string, int> circles;
+  for (double d : {0.5, 1.0, 2.0, 3.0, 4.0, 6.0}) {
+    for (int n : {5, 6, 8, 10, 12, 15, 20, 30, 40}) {
+      for (double tilt_deg : {0.0, 30.0, 60.0}) {
+        const double a = -1.0, half = d * std::tan(n * 0.25 * kPi / 180.0);
+        const double t = tilt_deg * kPi / 180.0, h = half / std::cos(t);
+        if (2.0 * h < 0.3) continue;
+        const Eigen::Vector2d c = d * Eigen::Vector2d(std::cos(a), std::sin(a));
+        const Eigen::Vector2d u(-std::sin(a + t), std::cos(a + t));
+        ++tried;
+        for (unsigned seed = 1; seed <= 100; ++seed) {
+          const ScanPoints scan =
+              ScanScene({testing::Panel(c - h * u, c + h * u)}, {}, 0.01, 20.0, seed);
+          for (const LineExtractor* e : RoundAwareExtractors()) {
+            circles[e->name()] += !e->ExtractFeatures(scan).circles.empty();
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(tried, 30);
+  for (const LineExtractor* e : RoundAwareExtractors()) {
+    EXPECT_LT(circles[e->name()] * 1000, tried * 100)
+        << e->name() << ": " << circles[e->name()] << " of " << tried * 100;
   }
 }
 

@@ -16,15 +16,18 @@ namespace plywood::perception {
 // lines that one small circle explains are dropped. A run is round when, after dropping points
 // more than 3 noise sigmas off the circle (the mixed pixels where a column meets the wall behind
 // it), at least 80 % of its points remain, the circle is seen from outside over at least
-// min_round_arc_deg of its circumference (a column shows nearly half of it, about 100 deg of it
-// sampled 3 m away; clutter that happens to fit a circle shows a short piece), and the circle (3
-// parameters) explains the points
+// min_round_arc_deg (45 deg) of its circumference (a column shows nearly half of it; 1 cm noise
+// inflates a thin column's fitted circle so its few samples cover 45-100 deg of it; clutter that
+// happens to fit a circle shows a short piece), a run that is not its whole breakpoint group bends
+// away from one straight line by >= 25 noise sigma^2 of residual (a bump of noise in a wall does
+// not), and the circle (3 parameters) explains the points
 //   (a) at least as well as the run's lines (2 parameters each plus the split points), residual
 //       variance over degrees of freedom, the lines refitted to the same points; or
 //   (b) at the noise level (RMS <= 1.5 sigma) with the lines' gain within what their extra
 //       parameters buy from noise (3 sigma^2 each): few points let two chords fit the noise.
 // A run that is the whole group (>= 2 lines, both ends breaks: an object seen whole) needs no
 // min_round_arc_deg when no point had to be trimmed: noise shrinks a small column's fitted arc.
+// (min_round_arc_deg was 100 deg before issue 13's last round; docs/lines.md has both.)
 // Noise-free polygons keep their edges (their lines fit exactly, a circle cannot). A single line
 // is dropped only when it is its whole breakpoint group (a thin column's one chord), with >= 5
 // points and a bulge of >= 1.5 sigma; it costs the real CARMEN logs ~0.01 of explained rays
@@ -33,7 +36,7 @@ struct RoundObjectOptions {
   bool reject_round_objects = true;
   double max_round_radius_m = 0.5;  // larger curves are walls; cutting them into chords is right
   int min_round_points = 8;         // fewer points cannot tell an arc from two lines
-  double min_round_arc_deg = 100.0;
+  double min_round_arc_deg = 45.0;
 
   // @throws std::invalid_argument starting with the field name.
   void Validate() const;
