@@ -120,7 +120,10 @@ SonarExplorer::SonarExplorer(const robot::DiffDriveSpec& spec, const SonarExplor
   follower_ = std::make_unique<robot::WallFollowingController>(spec_, follow);
 }
 
-CognitiveMap SonarExplorer::Map() const { return BuildMap(&beam_free_); }
+CognitiveMap SonarExplorer::Map() const {
+  // Before the first update the grids are not laid out yet (and nothing was heard).
+  return BuildMap(start_ ? &beam_free_ : nullptr);
+}
 
 CognitiveMap SonarExplorer::PlanningMap() const { return BuildMap(nullptr); }
 
