@@ -189,22 +189,36 @@ void CognitiveMapOptions::Validate() const {
     throw std::invalid_argument("obstacle_min_fill: must be in [0, 1]");
   if (!(obstacle_split_saving >= 0.0 && obstacle_split_saving <= 1.0))
     throw std::invalid_argument("obstacle_split_saving: must be in [0, 1]");
+  if (beam_free_min_passes < 0) throw std::invalid_argument("beam_free_min_passes: must be >= 0");
 }
 
 CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& inside,
-                               const CognitiveMapOptions& options) {
+                               const CognitiveMapOptions& options, const BeamFreeGrid* beam_free) {
   options.Validate();
   const double res = grid.resolution_m();
   const int W = grid.width(), H = grid.height();
   std::vector<char> occ(static_cast<std::size_t>(W) * H, 0);
   std::vector<char> seen_free(occ.size(), 0);
+  // Cells the sonar axes saw free far beyond the network's window (none without a BeamFreeGrid).
+  std::vector<char> axis_free(occ.size(), 0);
+  if (beam_free != nullptr && options.beam_free_min_passes > 0) {
+    if (beam_free->width() != W || beam_free->height() != H)
+      throw std::invalid_argument("beam_free: its cells differ from the grid's");
+    for (int iy = 0; iy < H; ++iy)
+      for (int ix = 0; ix < W; ++ix)
+        axis_free[iy * W + ix] = beam_free->Passes(ix, iy) >= options.beam_free_min_passes;
+  }
   for (int iy = 0; iy < H; ++iy)
     for (int ix = 0; ix < W; ++ix) {
       const double p = grid.Probability(ix, iy);
       occ[iy * W + ix] = p > 1.0 - options.eps;
-      seen_free[iy * W + ix] = p < options.eps;
+      seen_free[iy * W + ix] = p < options.eps || axis_free[iy * W + ix];
     }
   auto is_occ = [&](int ix, int iy) { return occ[static_cast<std::size_t>(iy) * W + ix] != 0; };
+  // An obstacle's cells: occupied, and no beam axis passed through them.
+  auto is_obstacle_occ = [&](int ix, int iy) {
+    return is_occ(ix, iy) && !axis_free[static_cast<std::size_t>(iy) * W + ix];
+  };
 
   Eigen::Vector2i c0 = grid.CellAt(inside);
   if (c0.x() < 0) throw std::invalid_argument("inside: the point is outside the grid");
@@ -307,7 +321,7 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
     for (int ix = 0; ix < W; ++ix) {
       // Obstacle blobs are the cells never seen free (their inside stays unknown) that touch
       // enough occupied cells: the faces the sonar heard plus the interior it could not see.
-      if (!is_occ(ix, iy) || component[iy * W + ix] >= 0 || !interior(ix, iy)) continue;
+      if (!is_obstacle_occ(ix, iy) || component[iy * W + ix] >= 0 || !interior(ix, iy)) continue;
       std::vector<Eigen::Vector2i> cells, stack{{ix, iy}};
       component[iy * W + ix] = next_id;
       while (!stack.empty()) {
@@ -318,7 +332,7 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
           for (int dx = -1; dx <= 1; ++dx) {
             const int nx = c.x() + dx, ny = c.y() + dy;
             if (!grid.Contains(nx, ny) || !interior(nx, ny) ||
-                grid.Probability(nx, ny) < options.obstacle_free_p)
+                grid.Probability(nx, ny) < options.obstacle_free_p || axis_free[ny * W + nx])
               continue;
             if (component[ny * W + nx] >= 0) continue;
             component[ny * W + nx] = next_id;
@@ -327,21 +341,22 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
       }
       ++next_id;
       int occupied_cells = 0;
-      for (const auto& c : cells) occupied_cells += is_occ(c.x(), c.y());
+      for (const auto& c : cells) occupied_cells += is_obstacle_occ(c.x(), c.y());
       if (occupied_cells < options.min_obstacle_cells) continue;
       // Rows and columns are judged full with the unknown inside, which fills them.
       if (options.obstacle_min_fill > 0.0) cells = TrimThinEnds(cells, options.obstacle_min_fill);
       // The blob's unknown cells join the faces heard, but the space never seen between an
       // obstacle and a wall is no part of the obstacle: its sides come from the faces alone.
       if (options.obstacle_from_faces)
-        cells.erase(std::remove_if(cells.begin(), cells.end(),
-                                   [&](const Eigen::Vector2i& c) { return !is_occ(c.x(), c.y()); }),
+        cells.erase(std::remove_if(
+                        cells.begin(), cells.end(),
+                        [&](const Eigen::Vector2i& c) { return !is_obstacle_occ(c.x(), c.y()); }),
                     cells.end());
       constexpr int kMaxSplitDepth = 3;
       for (const auto& piece :
            SplitIntoRectangles(cells, options.obstacle_split_saving, kMaxSplitDepth)) {
         int piece_occupied = 0;
-        for (const auto& c : piece) piece_occupied += is_occ(c.x(), c.y());
+        for (const auto& c : piece) piece_occupied += is_obstacle_occ(c.x(), c.y());
         // A piece nothing was heard in is space never seen, not an obstacle.
         if (piece_occupied < options.min_obstacle_cells) continue;
         // Per row the extreme cells give west/east boundary points, per column south/north.

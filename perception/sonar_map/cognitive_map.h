@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "perception/sonar_map/beam_free_grid.h"
 #include "perception/sonar_map/log_odds_grid.h"
 #include "perception/sonar_map/partition_map.h"
 
@@ -42,6 +43,12 @@ struct CognitiveMapOptions {
   // extents cover at least this fraction less area than the blob's: an L-shaped pair of boxes, or a
   // box with the unseen strip along a wall beside it, is no rectangle. 1 never cuts.
   double obstacle_split_saving = 0.25;
+  // Long-range free space (BeamFreeGrid, when BuildCognitiveMap is given one): a cell that at least
+  // this many beam axes passed through counts as seen free for placing the room's sides (the
+  // network sees +-0.7 m only, so a wall beyond boxes the robot cannot pass was never seen), and is
+  // no part of an obstacle (the network paints occupied cells into gaps 0.3-0.6 m wide between a
+  // box and a wall, which then joined the box to the wall). 0: not used.
+  int beam_free_min_passes = 2;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
 };
@@ -76,8 +83,10 @@ std::vector<std::vector<Eigen::Vector2i>> SplitIntoRectangles(
     const std::vector<Eigen::Vector2i>& cells, double saving, int max_depth);
 
 // `inside`: a point known to be free inside the room (the start pose). Sides without enough
-// boundary points fall back to the outermost cell the grid has seen free.
+// boundary points fall back to the outermost cell the grid has seen free. `beam_free` (same cells
+// as `grid`, may be null): the long-range free space of the sonar axes.
 CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& inside,
-                               const CognitiveMapOptions& options);
+                               const CognitiveMapOptions& options,
+                               const BeamFreeGrid* beam_free = nullptr);
 
 }  // namespace plywood::perception

@@ -390,6 +390,86 @@ void ExpectThrowsNaming(const CognitiveMapOptions& options, const std::string& f
   }
 }
 
+// The beam-free grid of Room()'s geometry, with `rings` echoes of one transducer at each of
+// `from` looking along `heading_rad`, each `range_m` long.
+BeamFreeGrid Beams(const std::vector<Eigen::Vector2d>& from, double heading_rad, double range_m,
+                   int rings = 2) {
+  LogOddsGridOptions g;
+  g.resolution_m = kRes;
+  g.origin_xy = {0.0, 0.0};
+  g.width = 80;
+  g.height = 60;
+  BeamFreeGrid beams(g, {});
+  msgs::RangeRing ring;
+  ring.readings.push_back({msgs::Pose2D{0.0, 0.0, 0.0}, range_m, true});
+  for (const Eigen::Vector2d& p : from)
+    for (int k = 0; k < rings; ++k) beams.Integrate(ring, {p.x(), p.y(), heading_rad});
+  return beams;
+}
+
+TEST(CognitiveMapTest, AWallBehindBoxesTheRobotCannotPassIsPlacedFromTheAxesFreeSpace) {
+  // The network saw only the room east of x = 1.55 (it sees +-0.7 m round a robot that never
+  // passed the boxes): a column of box faces at x 1.50-1.55 with five one-cell gaps, unknown
+  // beyond it, the west wall never heard.
+  LogOddsGridOptions options;
+  options.resolution_m = kRes;
+  options.origin_xy = {0.0, 0.0};
+  options.width = 80;
+  options.height = 60;
+  LogOddsGrid grid(options);
+  const std::vector<int> gaps{16, 22, 28, 34, 40};
+  for (int iy = kWallY0; iy <= kWallY1; ++iy)
+    for (int ix = 30; ix <= kWallX1; ++ix) {
+      const bool wall = ix == kWallX1 || iy == kWallY0 || iy == kWallY1;
+      const bool gap = std::find(gaps.begin(), gaps.end(), iy) != gaps.end();
+      if (wall || (ix == 30 && !gap))
+        Mark(grid, ix, iy, 0.98);
+      else if (ix > 30)
+        Mark(grid, ix, iy, 0.02);
+    }
+  const CognitiveMap before = BuildCognitiveMap(grid, kInside, {});
+  EXPECT_NEAR(before.room.x0, 1.55, kTol);  // fitted on the boxes' faces
+  // Sonar axes through the gaps heard the west wall (inner face x = 0.55) from x = 2.5.
+  std::vector<Eigen::Vector2d> from;
+  for (int iy : gaps) from.emplace_back(2.5, (iy + 0.5) * kRes);
+  const BeamFreeGrid beams = Beams(from, 3.14159265358979323846, 2.5 - 0.55);
+  const CognitiveMap after = BuildCognitiveMap(grid, kInside, {}, &beams);
+  // Free up to 5 cm short of the wall: the cell [0.60, 0.65] is the outermost seen free.
+  EXPECT_NEAR(after.room.x0, 0.60, kTol);
+  EXPECT_NEAR(after.room.x1, kX1, kTol);
+  // With the option off the axes say nothing.
+  CognitiveMapOptions off;
+  off.beam_free_min_passes = 0;
+  EXPECT_NEAR(BuildCognitiveMap(grid, kInside, off, &beams).room.x0, 1.55, kTol);
+}
+
+TEST(CognitiveMapTest, OccupiedCellsTheAxesPassedDoNotJoinABoxToTheWall) {
+  // A box 0.5 m from the west wall (inner face 0.55), and the network's occupied cells filling
+  // 0.35 m of the gap beside it (x 0.70-1.05): the blob came within 0.3 m of the wall and was
+  // extended to it, filling the whole gap.
+  const Rect box{1.05, 1.30, 1.55, 1.80};
+  LogOddsGrid grid = Room({box});
+  for (int iy = 26; iy <= 35; ++iy)
+    for (int ix = 14; ix <= 20; ++ix)
+      for (int k = 0; k < 6; ++k) grid.Add(ix, iy, 0.98);
+  const CognitiveMap before = BuildCognitiveMap(grid, kInside, {});
+  ASSERT_EQ(before.obstacles.size(), 1u);
+  ExpectRectNear(before.obstacles[0], {kX0, 1.30, 1.55, 1.80});
+  // Axes down the gap (heading south from y = 2.4, echo off the south wall at y = 0.55) passed
+  // through every one of those cells.
+  std::vector<Eigen::Vector2d> from;
+  for (int ix = 14; ix <= 20; ++ix) from.emplace_back((ix + 0.5) * kRes, 2.4);
+  const BeamFreeGrid beams = Beams(from, -0.5 * 3.14159265358979323846, 2.4 - 0.55);
+  const CognitiveMap after = BuildCognitiveMap(grid, kInside, {}, &beams);
+  ASSERT_EQ(after.obstacles.size(), 1u);
+  ExpectRectNear(after.obstacles[0], box);
+  ExpectRectNear(after.room, {kX0, kY0, kX1, kY1});
+  // One pass is not enough (beam_free_min_passes 2).
+  const BeamFreeGrid once = Beams(from, -0.5 * 3.14159265358979323846, 2.4 - 0.55, 1);
+  ExpectRectNear(BuildCognitiveMap(grid, kInside, {}, &once).obstacles.at(0),
+                 {kX0, 1.30, 1.55, 1.80});
+}
+
 TEST(CognitiveMapTest, InvalidJoinDistanceOrFillThrowsNamingTheField) {
   EXPECT_NO_THROW(CognitiveMapOptions{}.Validate());
   for (const double join :

@@ -43,6 +43,7 @@ Eigen::Vector2d Position(const msgs::Pose2D& X) { return {X.x_m, X.y_m}; }
 }  // namespace
 
 void SonarExplorerOptions::Validate() const {
+  beam_free.Validate();
   if (sonar_model != "net" && sonar_model != "classical")
     throw std::invalid_argument("sonar_model: must be net or classical, got '" + sonar_model + "'");
   if (sonar_model == "net" && weights_file.empty())
@@ -120,9 +121,16 @@ SonarExplorer::SonarExplorer(const robot::DiffDriveSpec& spec, const SonarExplor
 }
 
 CognitiveMap SonarExplorer::Map() const {
+  // Before the first update the grids are not laid out yet (and nothing was heard).
+  return BuildMap(start_ ? &beam_free_ : nullptr);
+}
+
+CognitiveMap SonarExplorer::PlanningMap() const { return BuildMap(nullptr); }
+
+CognitiveMap SonarExplorer::BuildMap(const BeamFreeGrid* beam_free) const {
   const Eigen::Vector2d inside =
       start_ ? Position(*start_) : grid_.CellCentre(grid_.width() / 2, grid_.height() / 2);
-  CognitiveMap map = BuildCognitiveMap(grid_, inside, options_.map);
+  CognitiveMap map = BuildCognitiveMap(grid_, inside, options_.map, beam_free);
   // Failed moves: the transition between the partitions at either end goes into D.
   for (const auto& [from, to] : failed_moves_) {
     const int a = map.partitions.Find(from), b = map.partitions.Find(to);
@@ -166,7 +174,7 @@ msgs::WheelSpeedCommand SonarExplorer::DriveTo(const msgs::Pose2D& X_WR,
 }
 
 void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
-  CognitiveMap map = Map();
+  CognitiveMap map = PlanningMap();
   // Places: the free partitions cut into pieces no larger than place_size_m, so that a room the
   // sonar has not yet divided still has somewhere to go; D and the graph follow the pieces.
   {
@@ -708,6 +716,7 @@ msgs::WheelSpeedCommand SonarExplorer::Decide(const robot::ControllerInput& inpu
     g.log_odds.p_min = options_.p_min;
     g.log_odds.log_odds_limit = options_.log_odds_limit;
     grid_ = LogOddsGrid(g);
+    beam_free_ = BeamFreeGrid(g, options_.beam_free);
     visits_.assign(static_cast<std::size_t>(cells) * cells, 0.0);
     visited_.assign(visits_.size(), 0);
     looked_.assign(visits_.size(), 0);
@@ -715,6 +724,7 @@ msgs::WheelSpeedCommand SonarExplorer::Decide(const robot::ControllerInput& inpu
   if (input.sonar != nullptr && input.sonar->time_s > last_ring_time_s_) {
     last_ring_time_s_ = input.sonar->time_s;
     grid_.Integrate(*model_, *input.sonar, X_WR);
+    beam_free_.Integrate(*input.sonar, X_WR);
     ++rings_integrated_;
   }
   if (const std::optional<msgs::WheelSpeedCommand> back = ReactToBump(input)) return *back;

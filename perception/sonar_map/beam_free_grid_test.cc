@@ -1,0 +1,94 @@
+#include "perception/sonar_map/beam_free_grid.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace plywood::perception {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// 5 cm cells from (0, 0), 4 x 4 m.
+LogOddsGridOptions Geometry() {
+  LogOddsGridOptions g;
+  g.resolution_m = 0.05;
+  g.origin_xy = {0.0, 0.0};
+  g.width = g.height = 80;
+  return g;
+}
+
+msgs::RangeRing Ring(double bearing_rad, double range_m, bool echo = true) {
+  msgs::RangeRing ring;
+  msgs::RangeReading r;
+  r.X_RS = {0.0, 0.0, bearing_rad};
+  r.range_m = range_m;
+  r.echo = echo;
+  ring.readings.push_back(r);
+  return ring;
+}
+
+TEST(BeamFreeGridTest, AnAxisAlongXPassesEveryCellUpToTheEchoLessTheMargin) {
+  BeamFreeGrid grid(Geometry(), {});
+  // From (1.02, 1.02) along +x, echo at 1.0 m: free up to x = 1.97 (stop_short_m 0.05).
+  grid.Integrate(Ring(0.0, 1.0), {1.02, 1.02, 0.0});
+  for (int ix = 0; ix < 80; ++ix) {
+    SCOPED_TRACE(ix);
+    const bool on_axis = ix >= 20 && ix <= 39;  // cells [1.00, 1.05] .. [1.95, 2.00]
+    EXPECT_EQ(grid.Passes(ix, 20), on_axis ? 1 : 0);
+    EXPECT_EQ(grid.Passes(ix, 19), 0);
+    EXPECT_EQ(grid.Passes(ix, 21), 0);
+  }
+  // A second reading adds a second pass; the echo's own cell never gets one.
+  grid.Integrate(Ring(0.0, 1.0), {1.02, 1.02, 0.0});
+  EXPECT_EQ(grid.Passes(30, 20), 2);
+  EXPECT_EQ(grid.Passes(40, 20), 0);
+}
+
+TEST(BeamFreeGridTest, TheTransducersMountingAndTheRobotsHeadingPlaceTheAxis) {
+  BeamFreeGrid grid(Geometry(), {});
+  msgs::RangeRing ring = Ring(0.5 * kPi, 0.5);
+  ring.readings[0].X_RS.x_m = 0.2;  // 0.2 m ahead of the centre, looking left
+  // Robot at (2.02, 1.02) heading +y: the transducer sits at (2.02, 1.22) and looks along -x.
+  grid.Integrate(ring, {2.02, 1.02, 0.5 * kPi});
+  EXPECT_EQ(grid.Passes(40, 24), 1);  // at the transducer
+  EXPECT_EQ(grid.Passes(31, 24), 1);  // x 1.57: 0.45 m along
+  EXPECT_EQ(grid.Passes(30, 24), 0);  // beyond 0.45 m
+  EXPECT_EQ(grid.Passes(41, 24), 0);  // behind it
+}
+
+TEST(BeamFreeGridTest, ObliqueAxesMissesAndFarEchoesSayNothing) {
+  BeamFreeOptions options;
+  options.max_range_m = 3.0;
+  BeamFreeGrid grid(Geometry(), options);
+  // 45 deg: an oblique axis passes convex corners it never hears.
+  grid.Integrate(Ring(0.25 * kPi, 1.0), {1.02, 1.02, 0.0});
+  // A specular miss.
+  grid.Integrate(Ring(0.0, 1.0, false), {1.02, 1.02, 0.0});
+  // Beyond max_range_m.
+  grid.Integrate(Ring(0.0, 3.5), {0.02, 1.02, 0.0});
+  for (int iy = 0; iy < 80; ++iy)
+    for (int ix = 0; ix < 80; ++ix) ASSERT_EQ(grid.Passes(ix, iy), 0) << ix << " " << iy;
+  // 8 deg off the x axis is within the 10 deg tolerance, and so is 98 deg.
+  grid.Integrate(Ring(8.0 * kPi / 180.0, 1.0), {1.02, 1.02, 0.0});
+  grid.Integrate(Ring(0.5 * kPi, 1.0), {1.02, 1.02, 8.0 * kPi / 180.0});
+  EXPECT_EQ(grid.Passes(21, 20), 1);
+  EXPECT_EQ(grid.Passes(20, 21), 1);
+}
+
+TEST(BeamFreeGridTest, OutsideTheGridIsNoPassAndBadOptionsThrow) {
+  BeamFreeGrid grid(Geometry(), {});
+  grid.Integrate(Ring(kPi, 2.0), {0.52, 1.02, 0.0});  // runs off the grid's west edge
+  EXPECT_EQ(grid.Passes(0, 20), 1);
+  EXPECT_EQ(grid.Passes(-1, 20), 0);
+  BeamFreeOptions bad;
+  bad.axis_tolerance_rad = 1.0;
+  EXPECT_THROW(BeamFreeGrid(Geometry(), bad), std::invalid_argument);
+  bad = {};
+  bad.stop_short_m = -0.1;
+  EXPECT_THROW(BeamFreeGrid(Geometry(), bad), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace plywood::perception
