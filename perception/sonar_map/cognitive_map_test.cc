@@ -27,15 +27,20 @@ void Mark(LogOddsGrid& grid, int ix, int iy, double p) {
   for (int k = 0; k < 3; ++k) grid.Add(ix, iy, p);
 }
 
-// The room with obstacles (in metres, on cell edges): each obstacle's one-cell outer ring is
-// occupied (the faces the sonar hears), its inside untouched (unknown), the rest of the room free.
-LogOddsGrid Room(const std::vector<Rect>& obstacles = {}) {
+// The geometry every grid of these tests shares: 4 x 3 m of 5 cm cells from the origin.
+LogOddsGridOptions TestGridGeometry() {
   LogOddsGridOptions options;
   options.resolution_m = kRes;
   options.origin_xy = {0.0, 0.0};
   options.width = 80;
   options.height = 60;
-  LogOddsGrid grid(options);
+  return options;
+}
+
+// The room with obstacles (in metres, on cell edges): each obstacle's one-cell outer ring is
+// occupied (the faces the sonar hears), its inside untouched (unknown), the rest of the room free.
+LogOddsGrid Room(const std::vector<Rect>& obstacles = {}) {
+  LogOddsGrid grid(TestGridGeometry());
   for (int iy = kWallY0; iy <= kWallY1; ++iy)
     for (int ix = kWallX0; ix <= kWallX1; ++ix) {
       const bool wall = ix == kWallX0 || ix == kWallX1 || iy == kWallY0 || iy == kWallY1;
@@ -394,12 +399,7 @@ void ExpectThrowsNaming(const CognitiveMapOptions& options, const std::string& f
 // `from` looking along `heading_rad`, each `range_m` long.
 BeamFreeGrid Beams(const std::vector<Eigen::Vector2d>& from, double heading_rad, double range_m,
                    int rings = 2) {
-  LogOddsGridOptions g;
-  g.resolution_m = kRes;
-  g.origin_xy = {0.0, 0.0};
-  g.width = 80;
-  g.height = 60;
-  BeamFreeGrid beams(g, {});
+  BeamFreeGrid beams(TestGridGeometry(), {});
   msgs::RangeRing ring;
   ring.readings.push_back({msgs::Pose2D{0.0, 0.0, 0.0}, range_m, true});
   for (const Eigen::Vector2d& p : from)
@@ -411,12 +411,7 @@ TEST(CognitiveMapTest, AWallBehindBoxesTheRobotCannotPassIsPlacedFromTheAxesFree
   // The network saw only the room east of x = 1.55 (it sees +-0.7 m round a robot that never
   // passed the boxes): a column of box faces at x 1.50-1.55 with five one-cell gaps, unknown
   // beyond it, the west wall never heard.
-  LogOddsGridOptions options;
-  options.resolution_m = kRes;
-  options.origin_xy = {0.0, 0.0};
-  options.width = 80;
-  options.height = 60;
-  LogOddsGrid grid(options);
+  LogOddsGrid grid(TestGridGeometry());
   const std::vector<int> gaps{16, 22, 28, 34, 40};
   for (int iy = kWallY0; iy <= kWallY1; ++iy)
     for (int ix = 30; ix <= kWallX1; ++ix) {
