@@ -19,6 +19,12 @@ BeamFreeGrid::BeamFreeGrid(const LogOddsGridOptions& geometry, const BeamFreeOpt
   geometry_.Validate();
   options_.Validate();
   passes_.assign(static_cast<std::size_t>(width_) * height_, 0);
+  for (std::vector<int>& echoes : echoes_) echoes.assign(passes_.size(), 0);
+}
+
+int BeamFreeGrid::Echoes(int ix, int iy, Direction direction) const {
+  if (ix < 0 || iy < 0 || ix >= width_ || iy >= height_) return 0;
+  return echoes_[direction][static_cast<std::size_t>(iy) * width_ + ix];
 }
 
 int BeamFreeGrid::Passes(int ix, int iy) const {
@@ -55,6 +61,17 @@ void BeamFreeGrid::Integrate(const msgs::RangeRing& ring, const msgs::Pose2D& X_
       if (touched.empty() || touched.back() != index) touched.push_back(index);
     }
     for (const std::size_t index : touched) ++passes_[index];
+    // The echo's point, filed under the grid direction the axis pointed in.
+    const Eigen::Vector2d echo = from + reading.range_m * dir;
+    const long ex = std::lround(std::floor((echo.x() - geometry_.origin_xy.x()) / res));
+    const long ey = std::lround(std::floor((echo.y() - geometry_.origin_xy.y()) / res));
+    if (ex < 0 || ey < 0 || ex >= width_ || ey >= height_) continue;
+    const double axis = std::remainder(heading - off, 2.0 * 3.14159265358979323846);
+    const Direction direction = std::abs(axis) < 0.25 * half_pi                             ? kEast
+                                : std::abs(std::abs(axis) - 2.0 * half_pi) < 0.25 * half_pi ? kWest
+                                : axis > 0.0                                                ? kNorth
+                                             : kSouth;
+    ++echoes_[direction][static_cast<std::size_t>(ey) * width_ + ex];
   }
 }
 

@@ -38,6 +38,11 @@ class BeamFreeGrid {
   void Integrate(const msgs::RangeRing& ring, const msgs::Pose2D& X_WR);
   // Readings whose axis passed through cell (ix, iy); 0 outside the grid.
   int Passes(int ix, int iy) const;
+  // Echoes of such readings whose point lies in cell (ix, iy), by the grid direction the axis
+  // pointed in (kWest: -x, kEast: +x, kSouth: -y, kNorth: +y); 0 outside the grid. The cells up to
+  // such an echo were passed (Passes), so the face it came from bounds space seen free.
+  enum Direction { kWest = 0, kEast = 1, kSouth = 2, kNorth = 3 };
+  int Echoes(int ix, int iy, Direction direction) const;
   int width() const { return width_; }
   int height() const { return height_; }
 
@@ -46,6 +51,7 @@ class BeamFreeGrid {
   BeamFreeOptions options_;
   int width_ = 0, height_ = 0;
   std::vector<int> passes_;
+  std::vector<int> echoes_[4];
 };
 
 }  // namespace plywood::perception

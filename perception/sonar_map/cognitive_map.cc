@@ -301,6 +301,29 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
       if (map.room.y0 - y0 > overrun) map.room.y0 = y0;
       if (y1 - map.room.y1 > overrun) map.room.y1 = y1;
     }
+    // The same from the echoes of the axes that got beyond a side (through a gap between boxes
+    // too narrow to fill whole columns with free cells): the axis was free up to its echo, so the
+    // face it heard bounds the room no nearer than the echo. A side moves out to the outermost
+    // such echo heard at least beam_free_min_passes times in one cell, by more than the overrun.
+    if (beam_free != nullptr && options.beam_free_min_passes > 0) {
+      const int min_echoes = options.beam_free_min_passes;
+      for (int iy = 0; iy < H; ++iy)
+        for (int ix = 0; ix < W; ++ix) {
+          const Eigen::Vector2d c = grid.CellCentre(ix, iy);
+          if (beam_free->Echoes(ix, iy, BeamFreeGrid::kWest) >= min_echoes &&
+              map.room.x0 - c.x() > overrun)
+            map.room.x0 = c.x();
+          if (beam_free->Echoes(ix, iy, BeamFreeGrid::kEast) >= min_echoes &&
+              c.x() - map.room.x1 > overrun)
+            map.room.x1 = c.x();
+          if (beam_free->Echoes(ix, iy, BeamFreeGrid::kSouth) >= min_echoes &&
+              map.room.y0 - c.y() > overrun)
+            map.room.y0 = c.y();
+          if (beam_free->Echoes(ix, iy, BeamFreeGrid::kNorth) >= min_echoes &&
+              c.y() - map.room.y1 > overrun)
+            map.room.y1 = c.y();
+        }
+    }
   }
   if (map.room.x1 - map.room.x0 < res || map.room.y1 - map.room.y0 < res) {
     map.room = {inside.x() - res, inside.y() - res, inside.x() + res, inside.y() + res};

@@ -438,6 +438,40 @@ TEST(CognitiveMapTest, AWallBehindBoxesTheRobotCannotPassIsPlacedFromTheAxesFree
   EXPECT_NEAR(BuildCognitiveMap(grid, kInside, off, &beams).room.x0, 1.55, kTol);
 }
 
+TEST(CognitiveMapTest, AWallHeardThroughTwoGapsOnlyIsPlacedFromTheEchoes) {
+  // As above, but only two gaps: the axes through them fill two cells of each column west of the
+  // boxes, fewer than min_wall_points, so the free columns cannot move the side; their echoes
+  // off the west wall (inner face x = 0.56, heard twice each) place it.
+  LogOddsGridOptions options;
+  options.resolution_m = kRes;
+  options.origin_xy = {0.0, 0.0};
+  options.width = 80;
+  options.height = 60;
+  LogOddsGrid grid(options);
+  const std::vector<int> gaps{22, 34};
+  for (int iy = kWallY0; iy <= kWallY1; ++iy)
+    for (int ix = 30; ix <= kWallX1; ++ix) {
+      const bool wall = ix == kWallX1 || iy == kWallY0 || iy == kWallY1;
+      const bool gap = std::find(gaps.begin(), gaps.end(), iy) != gaps.end();
+      if (wall || (ix == 30 && !gap))
+        Mark(grid, ix, iy, 0.98);
+      else if (ix > 30)
+        Mark(grid, ix, iy, 0.02);
+    }
+  std::vector<Eigen::Vector2d> from;
+  for (int iy : gaps) from.emplace_back(2.5, (iy + 0.5) * kRes);
+  const BeamFreeGrid beams = Beams(from, 3.14159265358979323846, 2.5 - 0.56);
+  EXPECT_EQ(beams.Echoes(11, 22, BeamFreeGrid::kWest), 2);
+  EXPECT_EQ(beams.Echoes(11, 22, BeamFreeGrid::kEast), 0);
+  const CognitiveMap after = BuildCognitiveMap(grid, kInside, {}, &beams);
+  // The echo's cell [0.55, 0.60]: its centre.
+  EXPECT_NEAR(after.room.x0, 0.575, kTol);
+  EXPECT_NEAR(after.room.x1, kX1, kTol);
+  // One echo per cell is not enough (beam_free_min_passes 2): the side stays on the boxes.
+  const BeamFreeGrid once = Beams(from, 3.14159265358979323846, 2.5 - 0.56, 1);
+  EXPECT_NEAR(BuildCognitiveMap(grid, kInside, {}, &once).room.x0, 1.55, kTol);
+}
+
 TEST(CognitiveMapTest, OccupiedCellsTheAxesPassedDoNotJoinABoxToTheWall) {
   // A box 0.5 m from the west wall (inner face 0.55), and the network's occupied cells filling
   // 0.35 m of the gap beside it (x 0.70-1.05): the blob came within 0.3 m of the wall and was
