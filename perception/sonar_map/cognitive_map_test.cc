@@ -442,12 +442,7 @@ TEST(CognitiveMapTest, AWallHeardThroughTwoGapsOnlyIsPlacedFromTheEchoes) {
   // As above, but only two gaps: the axes through them fill two cells of each column west of the
   // boxes, fewer than min_wall_points, so the free columns cannot move the side; their echoes
   // off the west wall (inner face x = 0.56, heard twice each) place it.
-  LogOddsGridOptions options;
-  options.resolution_m = kRes;
-  options.origin_xy = {0.0, 0.0};
-  options.width = 80;
-  options.height = 60;
-  LogOddsGrid grid(options);
+  LogOddsGrid grid(TestGridGeometry());
   const std::vector<int> gaps{22, 34};
   for (int iy = kWallY0; iy <= kWallY1; ++iy)
     for (int ix = 30; ix <= kWallX1; ++ix) {
