@@ -24,18 +24,17 @@ BeamFreeGrid::BeamFreeGrid(const LogOddsGridOptions& geometry, const BeamFreeOpt
 
 int BeamFreeGrid::Echoes(int ix, int iy, Direction direction) const {
   if (ix < 0 || iy < 0 || ix >= width_ || iy >= height_) return 0;
-  return echoes_[direction][static_cast<std::size_t>(iy) * width_ + ix];
+  return echoes_[direction][Index(ix, iy)];
 }
 
 int BeamFreeGrid::Passes(int ix, int iy) const {
   if (ix < 0 || iy < 0 || ix >= width_ || iy >= height_) return 0;
-  return passes_[static_cast<std::size_t>(iy) * width_ + ix];
+  return passes_[Index(ix, iy)];
 }
 
 void BeamFreeGrid::Integrate(const msgs::RangeRing& ring, const msgs::Pose2D& X_WR) {
   const double half_pi = 0.5 * 3.14159265358979323846;
   const double res = geometry_.resolution_m;
-  const double c = std::cos(X_WR.theta_rad), s = std::sin(X_WR.theta_rad);
   std::vector<std::size_t> touched;
   for (const msgs::RangeReading& reading : ring.readings) {
     if (!reading.echo || reading.range_m > options_.max_range_m) continue;
@@ -45,33 +44,29 @@ void BeamFreeGrid::Integrate(const msgs::RangeRing& ring, const msgs::Pose2D& X_
     if (std::abs(off) > options_.axis_tolerance_rad) continue;
     const double length = reading.range_m - options_.stop_short_m;
     if (length <= 0.0) continue;
-    const Eigen::Vector2d from(X_WR.x_m + c * reading.X_RS.x_m - s * reading.X_RS.y_m,
-                               X_WR.y_m + s * reading.X_RS.x_m + c * reading.X_RS.y_m);
+    const msgs::Pose2D X_WS = X_WR * reading.X_RS;
+    const Eigen::Vector2d from(X_WS.x_m, X_WS.y_m);
     const Eigen::Vector2d dir(std::cos(heading), std::sin(heading));
     // Sampled at a fifth of a cell: every cell the axis crosses by more than that is counted once.
     const double step = 0.2 * res;
     const int samples = static_cast<int>(std::floor(length / step));
     touched.clear();
     for (int k = 0; k <= samples; ++k) {
-      const Eigen::Vector2d p = from + (k * step) * dir;
-      const long ix = std::lround(std::floor((p.x() - geometry_.origin_xy.x()) / res));
-      const long iy = std::lround(std::floor((p.y() - geometry_.origin_xy.y()) / res));
-      if (ix < 0 || iy < 0 || ix >= width_ || iy >= height_) continue;
-      const std::size_t index = static_cast<std::size_t>(iy) * width_ + ix;
+      const Eigen::Vector2i cell = geometry_.CellAt(from + (k * step) * dir);
+      if (cell.x() < 0) continue;
+      const std::size_t index = Index(cell.x(), cell.y());
       if (touched.empty() || touched.back() != index) touched.push_back(index);
     }
     for (const std::size_t index : touched) ++passes_[index];
     // The echo's point, filed under the grid direction the axis pointed in.
-    const Eigen::Vector2d echo = from + reading.range_m * dir;
-    const long ex = std::lround(std::floor((echo.x() - geometry_.origin_xy.x()) / res));
-    const long ey = std::lround(std::floor((echo.y() - geometry_.origin_xy.y()) / res));
-    if (ex < 0 || ey < 0 || ex >= width_ || ey >= height_) continue;
+    const Eigen::Vector2i echo = geometry_.CellAt(from + reading.range_m * dir);
+    if (echo.x() < 0) continue;
     const double axis = std::remainder(heading - off, 2.0 * 3.14159265358979323846);
     const Direction direction = std::abs(axis) < 0.25 * half_pi                             ? kEast
                                 : std::abs(std::abs(axis) - 2.0 * half_pi) < 0.25 * half_pi ? kWest
                                 : axis > 0.0                                                ? kNorth
                                              : kSouth;
-    ++echoes_[direction][static_cast<std::size_t>(ey) * width_ + ex];
+    ++echoes_[direction][Index(echo.x(), echo.y())];
   }
 }
 

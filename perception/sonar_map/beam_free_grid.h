@@ -47,6 +47,7 @@ class BeamFreeGrid {
   int height() const { return height_; }
 
  private:
+  std::size_t Index(int ix, int iy) const { return static_cast<std::size_t>(iy) * width_ + ix; }
   LogOddsGridOptions geometry_;
   BeamFreeOptions options_;
   int width_ = 0, height_ = 0;

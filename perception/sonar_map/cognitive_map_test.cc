@@ -407,12 +407,11 @@ BeamFreeGrid Beams(const std::vector<Eigen::Vector2d>& from, double heading_rad,
   return beams;
 }
 
-TEST(CognitiveMapTest, AWallBehindBoxesTheRobotCannotPassIsPlacedFromTheAxesFreeSpace) {
-  // The network saw only the room east of x = 1.55 (it sees +-0.7 m round a robot that never
-  // passed the boxes): a column of box faces at x 1.50-1.55 with five one-cell gaps, unknown
-  // beyond it, the west wall never heard.
+// What the network saw of a room whose west part lies behind a column of box faces at x
+// 1.50-1.55 (cell column 30) with one-cell gaps at rows `gaps`: the faces and the room's other
+// walls occupied, the room east of the faces free, everything west of them unknown.
+LogOddsGrid BoxFacesWithGaps(const std::vector<int>& gaps) {
   LogOddsGrid grid(TestGridGeometry());
-  const std::vector<int> gaps{16, 22, 28, 34, 40};
   for (int iy = kWallY0; iy <= kWallY1; ++iy)
     for (int ix = 30; ix <= kWallX1; ++ix) {
       const bool wall = ix == kWallX1 || iy == kWallY0 || iy == kWallY1;
@@ -422,6 +421,15 @@ TEST(CognitiveMapTest, AWallBehindBoxesTheRobotCannotPassIsPlacedFromTheAxesFree
       else if (ix > 30)
         Mark(grid, ix, iy, 0.02);
     }
+  return grid;
+}
+
+TEST(CognitiveMapTest, AWallBehindBoxesTheRobotCannotPassIsPlacedFromTheAxesFreeSpace) {
+  // The network saw only the room east of x = 1.55 (it sees +-0.7 m round a robot that never
+  // passed the boxes): a column of box faces at x 1.50-1.55 with five one-cell gaps, unknown
+  // beyond it, the west wall never heard.
+  const std::vector<int> gaps{16, 22, 28, 34, 40};
+  const LogOddsGrid grid = BoxFacesWithGaps(gaps);
   const CognitiveMap before = BuildCognitiveMap(grid, kInside, {});
   EXPECT_NEAR(before.room.x0, 1.55, kTol);  // fitted on the boxes' faces
   // Sonar axes through the gaps heard the west wall (inner face x = 0.55) from x = 2.5.
@@ -442,17 +450,8 @@ TEST(CognitiveMapTest, AWallHeardThroughTwoGapsOnlyIsPlacedFromTheEchoes) {
   // As above, but only two gaps: the axes through them fill two cells of each column west of the
   // boxes, fewer than min_wall_points, so the free columns cannot move the side; their echoes
   // off the west wall (inner face x = 0.56, heard twice each) place it.
-  LogOddsGrid grid(TestGridGeometry());
   const std::vector<int> gaps{22, 34};
-  for (int iy = kWallY0; iy <= kWallY1; ++iy)
-    for (int ix = 30; ix <= kWallX1; ++ix) {
-      const bool wall = ix == kWallX1 || iy == kWallY0 || iy == kWallY1;
-      const bool gap = std::find(gaps.begin(), gaps.end(), iy) != gaps.end();
-      if (wall || (ix == 30 && !gap))
-        Mark(grid, ix, iy, 0.98);
-      else if (ix > 30)
-        Mark(grid, ix, iy, 0.02);
-    }
+  const LogOddsGrid grid = BoxFacesWithGaps(gaps);
   std::vector<Eigen::Vector2d> from;
   for (int iy : gaps) from.emplace_back(2.5, (iy + 0.5) * kRes);
   const BeamFreeGrid beams = Beams(from, 3.14159265358979323846, 2.5 - 0.56);

@@ -65,12 +65,11 @@ Eigen::Vector2d LogOddsGrid::CellCentre(int ix, int iy) const {
          (Eigen::Vector2d(ix, iy) + Eigen::Vector2d(0.5, 0.5)) * resolution_m();
 }
 
-Eigen::Vector2i LogOddsGrid::CellAt(const Eigen::Vector2d& p) const {
-  const Eigen::Vector2d q = (p - options_.origin_xy) / resolution_m();
-  const int ix = static_cast<int>(std::floor(q.x()));
-  const int iy = static_cast<int>(std::floor(q.y()));
-  if (!Contains(ix, iy)) return {-1, -1};
-  return {ix, iy};
+Eigen::Vector2i LogOddsGridOptions::CellAt(const Eigen::Vector2d& p) const {
+  const Eigen::Vector2d q = (p - origin_xy) / resolution_m;
+  // Compared as doubles first: a point far outside (a diverged pose) must not overflow the int.
+  if (!(q.x() >= 0.0 && q.y() >= 0.0 && q.x() < width && q.y() < height)) return {-1, -1};
+  return {static_cast<int>(std::floor(q.x())), static_cast<int>(std::floor(q.y()))};
 }
 
 void LogOddsGrid::Integrate(const SonarCellModel& model, const msgs::RangeRing& ring,

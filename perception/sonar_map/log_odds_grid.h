@@ -40,6 +40,8 @@ struct LogOddsGridOptions {
   LogOddsOptions log_odds;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
+  // Cell holding p, or (-1, -1) outside.
+  Eigen::Vector2i CellAt(const Eigen::Vector2d& p) const;
 };
 
 class LogOddsGrid {
@@ -59,7 +61,7 @@ class LogOddsGrid {
   }
   Eigen::Vector2d CellCentre(int ix, int iy) const;
   // Cell holding p, or (-1, -1) outside.
-  Eigen::Vector2i CellAt(const Eigen::Vector2d& p) const;
+  Eigen::Vector2i CellAt(const Eigen::Vector2d& p) const { return options_.CellAt(p); }
 
   int width() const { return options_.width; }
   int height() const { return options_.height; }
