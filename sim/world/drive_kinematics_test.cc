@@ -2,14 +2,18 @@
 // kinematics (what odometry assumes), and Borenstein & Feng's systematic errors E_d and E_b must
 // bend the true path exactly as their closed forms say.
 #include <gtest/gtest.h>
+#include <mujoco/mujoco.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include "msgs/pose2d.h"
 #include "robot/drive/diff_drive_spec.h"
@@ -197,7 +201,48 @@ TEST_P(DeviationTest, WiderTrackUnderTurnsByTrackRatio) {
   EXPECT_NEAR(run.heading_rad / (nominal_heading_rad / e_b), 1.0, 0.01);
 }
 
-INSTANTIATE_TEST_SUITE_P(Robots, DeviationTest, ::testing::Values(&P3dx, &MagellanPro));
+// The P3-DX with single-contact tires: the tire class's 1 cm cylinder (two rim contacts) replaced
+// by an ellipsoid of the wheel's radius in the wheel plane and the cylinder's 5 mm half-width along
+// the axle (one contact at the tread's centre line; docs/performance.md, "Physics options
+// measured").
+RobotCase P3dxEllipsoidTires() {
+  std::ifstream in(testing::SourceRoot() / "models" / "p3dx.xml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string mjcf = text.str();
+  const std::string cylinder = "type=\"cylinder\" size=\"0.0975 0.005\" euler=\"90 0 0\"";
+  if (const size_t at = mjcf.find(cylinder); at != std::string::npos) {
+    mjcf.replace(at, cylinder.size(), "type=\"ellipsoid\" size=\"0.0975 0.005 0.0975\"");
+  }
+  return {testing::WriteFile(testing::MakeTempDir("drive_kinematics_ellipsoid") / "p3dx.xml", mjcf)
+              .string(),
+          robot::P3dxSpec()};
+}
+
+INSTANTIATE_TEST_SUITE_P(Robots, DeviationTest,
+                         ::testing::Values(&P3dx, &MagellanPro, &P3dxEllipsoidTires));
+
+// A deviated ellipsoid tire keeps its rolling radius in both wheel-plane semi-axes (x and z), so
+// the contact point under the axle moves with the radius (Scene::SetWheelGeometry).
+TEST(DriveKinematicsTest, EllipsoidTiresTakeTheDeviatedRadiusInTheWheelPlane) {
+  const RobotCase robot = P3dxEllipsoidTires();
+  const std::unique_ptr<Scene> scene = MakeScene(robot, 0.01, {.wheel_diameter_ratio = 1.01});
+  const mjModel* m = scene->model();
+  const WheelGeometry g = scene->wheel_geometry();
+  for (const auto& [name, radius] : {std::pair{"left_wheel_tire", g.left_radius_m},
+                                     std::pair{"right_wheel_tire", g.right_radius_m}}) {
+    const int tire = mj_name2id(m, mjOBJ_GEOM, name);
+    ASSERT_GE(tire, 0);
+    ASSERT_EQ(m->geom_type[tire], mjGEOM_ELLIPSOID);
+    EXPECT_EQ(m->geom_size[3 * tire], radius);
+    EXPECT_EQ(m->geom_size[3 * tire + 1], 0.005);
+    EXPECT_EQ(m->geom_size[3 * tire + 2], radius);
+    EXPECT_EQ(m->geom_rbound[tire], radius);
+    // The tire's lowest point touches the floor: the axle stands at the radius.
+    EXPECT_EQ(m->body_pos[3 * m->geom_bodyid[tire] + 2], radius);
+  }
+  EXPECT_NEAR(g.right_radius_m / g.left_radius_m, 1.01, 1e-12);
+}
 
 }  // namespace
 }  // namespace plywood::sim

@@ -1,5 +1,6 @@
 #include "sim/world/scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -23,6 +24,20 @@ int RequireId(const mjModel* m, mjtObj type, const std::string& name, const std:
 // broad-phase culling; must follow any change of a geom's size.
 double CylinderBoundingRadius(double radius, double half_length) {
   return std::sqrt(radius * radius + half_length * half_length);
+}
+
+// Gives a tire geom the rolling radius `radius`: a cylinder's or sphere's radius, or an ellipsoid's
+// two semi-axes in the wheel plane (x and z; y is along the axle), and the matching bounding
+// radius.
+void SetTireRadius(mjModel* m, int tire, double radius) {
+  mjtNum* size = m->geom_size + 3 * tire;
+  size[0] = radius;
+  if (m->geom_type[tire] == mjGEOM_ELLIPSOID) {
+    size[2] = radius;
+    m->geom_rbound[tire] = std::max({size[0], size[1], size[2]});
+  } else {
+    m->geom_rbound[tire] = CylinderBoundingRadius(radius, size[1]);  // a sphere's size[1] is 0
+  }
 }
 
 }  // namespace
@@ -174,8 +189,7 @@ void Scene::SetWheelGeometry(const WheelGeometry& geometry) {
   const auto reshape = [&](int body, int tire, double radius, double y) {
     m->body_pos[3 * body + 1] = y;
     m->body_pos[3 * body + 2] = radius;  // axle height: the wheel stands on the floor
-    m->geom_size[3 * tire] = radius;
-    m->geom_rbound[tire] = CylinderBoundingRadius(radius, m->geom_size[3 * tire + 1]);
+    SetTireRadius(m, tire, radius);
     // Visual wheel geoms on the same body follow the tire's radius.
     for (int g = m->body_geomadr[body]; g < m->body_geomadr[body] + m->body_geomnum[body]; ++g) {
       if (g != tire && m->geom_type[g] == mjGEOM_CYLINDER) {
