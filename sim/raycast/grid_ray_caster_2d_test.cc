@@ -2,12 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <filesystem>
+#include <memory>
 #include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "plywood_paths.h"
 #include "sim/raycast/mujoco_ray_caster.h"
@@ -327,6 +330,106 @@ TEST_P(RandomWorldTest, CastWithoutNormalGivesCastsDistanceAndGeom) {
     }
   }
   EXPECT_GT(hits, 2000);
+}
+
+// A scan's beams from one origin: the fan gives, beam by beam, the very bits CastWithoutNormal
+// gives (level beams, beams within the levelling tolerance and beams beyond it), and for level
+// beams what mj_ray gives. Origins anywhere: outside the grid, inside and beside geoms, on corners.
+TEST_P(RandomWorldTest, FanGivesCastWithoutNormalsBitsBeamForBeam) {
+  for (const uint64_t world_seed : {21u, 22u}) {
+    const CompiledWorld w = Compile(RandomWorld(world_seed, world_seed == 21u ? 60 : 150));
+    GridRayCaster2DOptions options;
+    options.cell_size_m = GetParam();
+    const MujocoRayCaster reference(w.model.get(), w.data.get());
+    const GridRayCaster2D grid(w.model.get(), w.data.get(), options);
+    std::mt19937_64 rng(world_seed);
+    std::uniform_real_distribution<double> ux(-12, 12), uy(-9, 9), uz(0.01, 2.6), yaw(-M_PI, M_PI),
+        unit(0.0, 1.0);
+    std::normal_distribution<double> jitter(0.0, 6e-4);
+    std::vector<Eigen::Vector3d> dirs;
+    std::vector<RayHit> hits;
+    int beams = 0, hit_count = 0, level_beams = 0, mj_checked = 0;
+    for (int scan = 0; scan < 240; ++scan) {
+      Eigen::Vector3d origin(ux(rng), uy(rng), scan % 3 == 0 ? 0.3 : uz(rng));
+      if (scan % 8 == 1) {
+        // Exactly on, or a hair beside, a corner of some geom's footprint.
+        const int g = std::uniform_int_distribution<int>(1, 4)(rng);
+        const double* p = w.data->geom_xpos + 3 * g;
+        const double* size = w.model->geom_size + 3 * g;
+        const double eps = scan % 16 == 1 ? 0.0 : 1e-4 * (unit(rng) - 0.5);
+        origin = {p[0] + size[0] + eps, p[1] + size[1] - eps, p[2]};
+      }
+      const double heading = yaw(rng);
+      // Level scans, scans tilted within the levelling tolerance, and scans tilted beyond it.
+      const int kind = scan % 3;
+      const double pitch = kind == 0 ? 0.0 : kind == 1 ? jitter(rng) : 0.02 * (unit(rng) - 0.5);
+      const double roll = kind == 0 ? 0.0 : kind == 1 ? jitter(rng) : 0.02 * (unit(rng) - 0.5);
+      const Eigen::Matrix3d R = (Eigen::AngleAxisd(heading, Eigen::Vector3d::UnitZ()) *
+                                 Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+                                 Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+                                    .toRotationMatrix();
+      const int n = scan % 5 == 0 ? 1 + static_cast<int>(unit(rng) * 40) : 361;
+      const double fov = scan % 4 == 0 ? 2 * M_PI : M_PI;
+      dirs.resize(n);
+      hits.assign(n, RayHit{});
+      for (int i = 0; i < n; ++i) {
+        const double a = -fov / 2 + fov * i / std::max(1, n - 1);
+        dirs[i] = R * Eigen::Vector3d(std::cos(a), std::sin(a), 0.0);
+      }
+      const double range = scan % 4 == 0 ? 80.0 : scan % 4 == 1 ? 30.0 : 8.0;
+      std::unique_ptr<bool[]> found(new bool[n]);
+      grid.CastFanWithoutNormal(origin, dirs.data(), n, range, hits.data(), found.get());
+      for (int i = 0; i < n; ++i) {
+        RayHit one;
+        const bool hit = grid.CastWithoutNormal(origin, dirs[i], range, &one);
+        ++beams;
+        ASSERT_EQ(found[i], hit) << "scan " << scan << " beam " << i;
+        if (!hit) continue;
+        ++hit_count;
+        ASSERT_EQ(hits[i].distance_m, one.distance_m) << "scan " << scan << " beam " << i;
+        ASSERT_EQ(hits[i].geom_id, one.geom_id) << "scan " << scan << " beam " << i;
+        if (dirs[i].z() == 0.0) {
+          ++level_beams;
+          RayHit exact;
+          ASSERT_TRUE(reference.CastWithoutNormal(origin, dirs[i], range, &exact));
+          ASSERT_EQ(exact.geom_id, one.geom_id);
+          ASSERT_NEAR(exact.distance_m, one.distance_m, 1e-9 * std::max(1.0, one.distance_m));
+          ++mj_checked;
+        }
+      }
+    }
+    EXPECT_GT(beams, 60000);
+    EXPECT_GT(hit_count, beams / 2);
+    EXPECT_GT(level_beams, 10000);
+    EXPECT_EQ(mj_checked, level_beams);
+  }
+}
+
+// The base class's fan (MujocoRayCaster's) is CastWithoutNormal beam by beam.
+TEST(GridRayCaster2DTest, DefaultFanIsCastWithoutNormal) {
+  const CompiledWorld w = Compile(RandomWorld(23, 40));
+  const MujocoRayCaster reference(w.model.get(), w.data.get());
+  std::vector<Eigen::Vector3d> dirs;
+  for (int i = 0; i < 90; ++i) {
+    const double a = i * 2 * M_PI / 90;
+    dirs.emplace_back(std::cos(a), std::sin(a), i % 3 == 0 ? 0.0 : 0.01 * (i % 7 - 3));
+    dirs.back().normalize();
+  }
+  std::vector<RayHit> hits(dirs.size());
+  std::unique_ptr<bool[]> found(new bool[dirs.size()]);
+  const Eigen::Vector3d origin(0.5, -1.5, 0.4);
+  reference.CastFanWithoutNormal(origin, dirs.data(), static_cast<int>(dirs.size()), 8.0,
+                                 hits.data(), found.get());
+  int hit_count = 0;
+  for (std::size_t i = 0; i < dirs.size(); ++i) {
+    RayHit one;
+    ASSERT_EQ(found[i], reference.CastWithoutNormal(origin, dirs[i], 8.0, &one)) << i;
+    if (!found[i]) continue;
+    ++hit_count;
+    EXPECT_EQ(hits[i].distance_m, one.distance_m) << i;
+    EXPECT_EQ(hits[i].geom_id, one.geom_id) << i;
+  }
+  EXPECT_GT(hit_count, 60);
 }
 
 INSTANTIATE_TEST_SUITE_P(CellSizes, RandomWorldTest, ::testing::Values(0.13, 0.5, 2.0));

@@ -30,6 +30,17 @@ class RayCaster {
                                  double max_range_m, RayHit* hit) const {
     return Cast(origin_W, dir_W, max_range_m, hit);
   }
+
+  // Casts `count` rays from one origin (a scan's beams): found[i] and hits[i] are exactly what
+  // CastWithoutNormal(origin_W, dirs_W[i], max_range_m, &hits[i]) returns and fills (hits[i] is
+  // left as it was where found[i] is false). Casters may share set-up work between the rays.
+  virtual void CastFanWithoutNormal(const Eigen::Vector3d& origin_W, const Eigen::Vector3d* dirs_W,
+                                    int count, double max_range_m, RayHit* hits,
+                                    bool* found) const {
+    for (int i = 0; i < count; ++i) {
+      found[i] = CastWithoutNormal(origin_W, dirs_W[i], max_range_m, &hits[i]);
+    }
+  }
 };
 
 }  // namespace plywood::sim
