@@ -336,27 +336,64 @@ bool GridRayCaster2D::CastWithoutNormal(const Eigen::Vector3d& origin_W,
   return CastRay(origin_W, dir_W, max_range_m, /*with_normal=*/false, hit);
 }
 
+void GridRayCaster2D::CastBatch(const Eigen::Vector3d* origins_W, const Eigen::Vector3d* dirs_W,
+                                int count, double max_range_m, bool with_normal, RayHit* hits,
+                                bool* found) const {
+  CastRays(origins_W, 1, dirs_W, count, max_range_m, with_normal, hits, found);
+}
+
 void GridRayCaster2D::CastFanWithoutNormal(const Eigen::Vector3d& origin_W,
                                            const Eigen::Vector3d* dirs_W, int count,
                                            double max_range_m, RayHit* hits, bool* found) const {
-  const double* o = origin_W.data();
+  CastRays(&origin_W, 0, dirs_W, count, max_range_m, /*with_normal=*/false, hits, found);
+}
+
+void GridRayCaster2D::CastRays(const Eigen::Vector3d* origins_W, int origin_step,
+                               const Eigen::Vector3d* dirs_W, int count, double max_range_m,
+                               bool with_normal, RayHit* hits, bool* found) const {
   if (count <= 0) return;
-  if (nx_ == 0 || !origin_W.allFinite() || !(max_range_m >= 0.0)) {
+  // The origins' bounding box; a scan's beams share one origin, which is then the box.
+  double box_lo[3], box_hi[3];
+  for (int k = 0; k < 3; ++k) box_lo[k] = box_hi[k] = origins_W[0][k];
+  bool finite = origins_W[0].allFinite();
+  int i0 = origin_step == 0 ? count : 1;
+  while (i0 < count && origins_W[i0] == origins_W[0]) ++i0;
+  for (int i = i0; i < count; ++i) {
+    finite = finite && origins_W[i * origin_step].allFinite();
+    for (int k = 0; k < 3; ++k) {
+      box_lo[k] = std::min(box_lo[k], origins_W[i * origin_step][k]);
+      box_hi[k] = std::max(box_hi[k], origins_W[i * origin_step][k]);
+    }
+  }
+  if (nx_ == 0 || !finite || !(max_range_m >= 0.0) || !std::isfinite(max_range_m)) {
     for (int i = 0; i < count; ++i) {
-      found[i] = CastRay(origin_W, dirs_W[i], max_range_m, /*with_normal=*/false, &hits[i]);
+      found[i] = CastRay(origins_W[i * origin_step], dirs_W[i], max_range_m, with_normal, &hits[i]);
     }
     return;
+  }
+  // The origins' centre (exactly the origin when all are equal) and radius in the floor plane.
+  const double o[2] = {0.5 * (box_lo[0] + box_hi[0]), 0.5 * (box_lo[1] + box_hi[1])};
+  double radius = 0.0;
+  if (i0 < count) {
+    double radius_squared = 0.0;
+    for (int i = 0; i < count; ++i) {
+      const double dx = origins_W[i * origin_step].x() - o[0],
+                   dy = origins_W[i * origin_step].y() - o[1];
+      radius_squared = std::max(radius_squared, dx * dx + dy * dy);
+    }
+    // Padded for the rounding of the square and its root.
+    radius = std::sqrt(radius_squared) * (1.0 + 1e-9) + 1e-12;
   }
   FanScratch& f = ThreadFanScratch();
   const uint32_t num_shapes = static_cast<uint32_t>(shapes_.size());
   if (f.stamp.size() < num_shapes) f.stamp.resize(num_shapes, 0);
   f.candidates.clear();
 
-  // Collect the shapes a horizontal ray from o can meet within max_range_m.
-  const double range = max_range_m;
+  // Collect the shapes a horizontal ray from any origin can meet within max_range_m.
+  const double range = max_range_m + radius;
   const auto collect = [&](uint32_t index) {
     const Shape& s = shapes_[index];
-    if (s.z_max < o[2] || s.z_min > o[2]) return;
+    if (s.z_max < box_lo[2] || s.z_min > box_hi[2]) return;
     const Footprint& fp = footprints_[index];
     const double ox = o[0] - fp.centre[0], oy = o[1] - fp.centre[1];
     const double lx = ox * fp.axis_x[0] + oy * fp.axis_x[1];
@@ -365,10 +402,10 @@ void GridRayCaster2D::CastFanWithoutNormal(const Eigen::Vector3d& origin_W,
     const double dy = std::max(0.0, std::abs(ly) - fp.half[1]);
     const double d = std::sqrt(dx * dx + dy * dy);
     FanCandidate c;
-    c.min_d = d - kFanDistanceSlackM;
+    c.min_d = d - radius - kFanDistanceSlackM;
     c.shape = index;
-    if (c.min_d > range) return;
-    if (d < kFanNearM) {
+    if (c.min_d > max_range_m) return;
+    if (d < kFanNearM + 2.0 * radius) {
       c.lo = 0.0;
       c.hi = 4.0;
     } else {
@@ -384,8 +421,16 @@ void GridRayCaster2D::CastFanWithoutNormal(const Eigen::Vector3d& origin_W,
         lo = std::min(lo, delta);
         hi = std::max(hi, delta);
       }
-      c.lo = k0 + lo - kFanAngleSlack;
-      c.hi = k0 + hi + kFanAngleSlack;
+      // From an origin within `radius` of o, a footprint point q is seen at most
+      // asin(radius / (|q - o| - radius)) <= pi/2 radius / (d - radius) away from where o sees
+      // it, and DiamondAngle changes by at most 1 per radian.
+      const double widen = radius > 0.0 ? 1.5707963267948966 * radius / (d - radius) : 0.0;
+      c.lo = k0 + lo - widen - kFanAngleSlack;
+      c.hi = k0 + hi + widen + kFanAngleSlack;
+      if (c.hi - c.lo >= 4.0) {
+        c.lo = 0.0;
+        c.hi = 4.0;
+      }
     }
     f.candidates.push_back(c);
   };
@@ -462,9 +507,10 @@ void GridRayCaster2D::CastFanWithoutNormal(const Eigen::Vector3d& origin_W,
     }
     const double* v = dir_W.data();
     if (v[2] != 0.0 || (v[0] == 0.0 && v[1] == 0.0)) {
-      found[i] = CastRay(origin_W, dirs_W[i], max_range_m, /*with_normal=*/false, &hits[i]);
+      found[i] = CastRay(origins_W[i * origin_step], dirs_W[i], max_range_m, with_normal, &hits[i]);
       continue;
     }
+    const double* ray_o = origins_W[i * origin_step].data();
     double best_t = kInf;
     int best_id = std::numeric_limits<int>::max();
     const auto consider = [&best_t, &best_id](double t, int id) {
@@ -473,7 +519,7 @@ void GridRayCaster2D::CastFanWithoutNormal(const Eigen::Vector3d& origin_W,
         best_id = id;
       }
     };
-    for (int g : fallback_horizontal_) consider(IntersectFallback(g, o, v), g);
+    for (int g : fallback_horizontal_) consider(IntersectFallback(g, ray_o, v), g);
     const double key = DiamondAngle(v[0], v[1]);
     const int bin = FanBin(key);
     for (uint32_t k = f.bin_begin[bin], end = f.bin_begin[bin + 1]; k < end; ++k) {
@@ -481,13 +527,22 @@ void GridRayCaster2D::CastFanWithoutNormal(const Eigen::Vector3d& origin_W,
       if (e.min_d > best_t) break;
       if (key < e.lo || key > e.hi) continue;
       const Shape& s = shapes[e.shape];
-      consider(IntersectShape(s, o, v, /*horizontal=*/true), s.geom_id);
+      consider(IntersectShape(s, ray_o, v, /*horizontal=*/true), s.geom_id);
     }
     found[i] = best_id != std::numeric_limits<int>::max() && best_t <= max_range_m;
-    if (found[i]) {
-      hits[i].distance_m = best_t;
-      hits[i].geom_id = best_id;
-    }
+    if (!found[i]) continue;
+    RayHit* hit = &hits[i];
+    hit->distance_m = best_t;
+    hit->geom_id = best_id;
+    if (with_normal) SetNormal(origins_W[i * origin_step], dir_W, hit);
+  }
+}
+
+void GridRayCaster2D::SetNormal(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W,
+                                RayHit* hit) const {
+  hit->normal_W = SurfaceNormal(model_, data_, hit->geom_id, origin_W + hit->distance_m * dir_W);
+  if (hit->normal_W.x() == 0 && hit->normal_W.y() == 0 && hit->normal_W.z() == 0) {
+    hit->normal_W = -dir_W;  // meshes, height fields
   }
 }
 
@@ -599,11 +654,7 @@ bool GridRayCaster2D::CastRay(const Eigen::Vector3d& origin_W, const Eigen::Vect
   if (best_id == std::numeric_limits<int>::max() || best_t > max_range_m) return false;
   hit->distance_m = best_t;
   hit->geom_id = best_id;
-  if (!with_normal) return true;
-  hit->normal_W = SurfaceNormal(model_, data_, best_id, origin_W + best_t * dir_W);
-  if (hit->normal_W.x() == 0 && hit->normal_W.y() == 0 && hit->normal_W.z() == 0) {
-    hit->normal_W = -dir_W;  // meshes, height fields
-  }
+  if (with_normal) SetNormal(origin_W, dir_W, hit);
   return true;
 }
 

@@ -65,15 +65,20 @@ class GridRayCaster2D : public RayCaster {
             RayHit* hit) const override;
   bool CastWithoutNormal(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W,
                          double max_range_m, RayHit* hit) const override;
-  // Same results as CastWithoutNormal ray by ray. The rays that are (or are levelled to)
-  // horizontal share one set-up: the grid shapes within max_range_m of the origin whose z range
-  // holds the origin's height are collected once, each with the angular interval its padded
-  // floor-plane footprint spans from the origin and its distance, sorted by distance into angular
-  // bins; a ray then tests only its bin's shapes whose interval holds its direction, nearest
-  // first, and stops at the first shape farther than its nearest hit. Every shape a ray can hit is
-  // tested with the same arithmetic as CastWithoutNormal, so distances and geoms are the same
-  // bits. Other rays go through CastWithoutNormal. Uses a per-thread scratch buffer (allocates
-  // only while it grows), so one caster still serves several threads.
+  // Same results as Cast / CastWithoutNormal ray by ray. The rays that are (or are levelled to)
+  // horizontal share one set-up: with c the centre of the origins' bounding box and r the largest
+  // distance of an origin from it (0 for a scan's beams), the grid shapes within max_range_m + r
+  // of c whose z range meets the origins' heights are collected once, each with the angular
+  // interval its padded floor-plane footprint spans from c (widened by asin(r / (d - r)) for a
+  // footprint d from c, or the whole circle when d < 2 r) and a lower bound of its distance from
+  // any origin, sorted by that bound into angular bins; a ray then tests only its bin's shapes
+  // whose interval holds its direction, nearest first, and stops at the first shape farther than
+  // its nearest hit. Every shape a ray can hit is tested with the same arithmetic as Cast, so
+  // distances, geoms and normals are the same bits. Other rays go through Cast. Uses a per-thread
+  // scratch buffer (allocates only while it grows), so one caster still serves several threads.
+  void CastBatch(const Eigen::Vector3d* origins_W, const Eigen::Vector3d* dirs_W, int count,
+                 double max_range_m, bool with_normal, RayHit* hits, bool* found) const override;
+  // CastBatch with one origin for every ray, without normals (a scan's beams).
   void CastFanWithoutNormal(const Eigen::Vector3d& origin_W, const Eigen::Vector3d* dirs_W,
                             int count, double max_range_m, RayHit* hits,
                             bool* found) const override;
@@ -110,6 +115,11 @@ class GridRayCaster2D : public RayCaster {
 
   bool CastRay(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W, double max_range_m,
                bool with_normal, RayHit* hit) const;
+  // CastBatch's work; ray i starts at origins_W[i * origin_step] (origin_step 0 or 1).
+  void CastRays(const Eigen::Vector3d* origins_W, int origin_step, const Eigen::Vector3d* dirs_W,
+                int count, double max_range_m, bool with_normal, RayHit* hits, bool* found) const;
+  // The hit's normal, as Cast gives it (dir_W: the levelled direction).
+  void SetNormal(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W, RayHit* hit) const;
   double IntersectShape(const Shape& shape, const double* origin, const double* dir,
                         bool horizontal) const;
   double IntersectFallback(int geom_id, const double* origin, const double* dir) const;

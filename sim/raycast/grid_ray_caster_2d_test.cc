@@ -332,10 +332,11 @@ TEST_P(RandomWorldTest, CastWithoutNormalGivesCastsDistanceAndGeom) {
   EXPECT_GT(hits, 2000);
 }
 
-// A scan's beams from one origin: the fan gives, beam by beam, the very bits CastWithoutNormal
-// gives (level beams, beams within the levelling tolerance and beams beyond it), and for level
-// beams what mj_ray gives. Origins anywhere: outside the grid, inside and beside geoms, on corners.
-TEST_P(RandomWorldTest, FanGivesCastWithoutNormalsBitsBeamForBeam) {
+// A scan's beams from one origin: the batch and the fan give, beam by beam, the very bits
+// CastWithoutNormal gives (level beams, beams within the levelling tolerance and beams beyond it),
+// and for level beams what mj_ray gives. Origins anywhere: outside the grid, inside and beside
+// geoms, on corners.
+TEST_P(RandomWorldTest, ScanBatchGivesCastWithoutNormalsBitsBeamForBeam) {
   for (const uint64_t world_seed : {21u, 22u}) {
     const CompiledWorld w = Compile(RandomWorld(world_seed, world_seed == 21u ? 60 : 150));
     GridRayCaster2DOptions options;
@@ -378,11 +379,21 @@ TEST_P(RandomWorldTest, FanGivesCastWithoutNormalsBitsBeamForBeam) {
       }
       const double range = scan % 4 == 0 ? 80.0 : scan % 4 == 1 ? 30.0 : 8.0;
       std::unique_ptr<bool[]> found(new bool[n]);
-      grid.CastFanWithoutNormal(origin, dirs.data(), n, range, hits.data(), found.get());
+      const std::vector<Eigen::Vector3d> origins(n, origin);
+      grid.CastBatch(origins.data(), dirs.data(), n, range, /*with_normal=*/false, hits.data(),
+                     found.get());
+      std::vector<RayHit> fan_hits(n);
+      std::unique_ptr<bool[]> fan_found(new bool[n]);
+      grid.CastFanWithoutNormal(origin, dirs.data(), n, range, fan_hits.data(), fan_found.get());
       for (int i = 0; i < n; ++i) {
         RayHit one;
         const bool hit = grid.CastWithoutNormal(origin, dirs[i], range, &one);
         ++beams;
+        ASSERT_EQ(fan_found[i], hit) << "scan " << scan << " beam " << i;
+        if (hit) {
+          ASSERT_EQ(fan_hits[i].distance_m, one.distance_m) << "scan " << scan << " beam " << i;
+          ASSERT_EQ(fan_hits[i].geom_id, one.geom_id) << "scan " << scan << " beam " << i;
+        }
         ASSERT_EQ(found[i], hit) << "scan " << scan << " beam " << i;
         if (!hit) continue;
         ++hit_count;
@@ -405,8 +416,60 @@ TEST_P(RandomWorldTest, FanGivesCastWithoutNormalsBitsBeamForBeam) {
   }
 }
 
-// The base class's fan (MujocoRayCaster's) is CastWithoutNormal beam by beam.
-TEST(GridRayCaster2DTest, DefaultFanIsCastWithoutNormal) {
+// A sonar ring's cones: rays from origins up to 0.3 m apart, with normals. The batch gives, ray by
+// ray, the very bits Cast gives (distance, geom and normal).
+TEST_P(RandomWorldTest, RingBatchGivesCastsBitsRayForRay) {
+  const CompiledWorld w = Compile(RandomWorld(24, 120));
+  GridRayCaster2DOptions options;
+  options.cell_size_m = GetParam();
+  const GridRayCaster2D grid(w.model.get(), w.data.get(), options);
+  std::mt19937_64 rng(24);
+  std::uniform_real_distribution<double> ux(-12, 12), uy(-9, 9), uz(0.05, 1.5), yaw(-M_PI, M_PI),
+      unit(0.0, 1.0);
+  std::normal_distribution<double> jitter(0.0, 6e-4);
+  int rays = 0, hit_count = 0;
+  for (int ring = 0; ring < 300; ++ring) {
+    const Eigen::Vector3d centre(ux(rng), uy(rng), uz(rng));
+    const double ring_radius = ring % 5 == 0 ? 0.0 : 0.3 * unit(rng);
+    const double pitch = ring % 3 == 0 ? 0.0 : ring % 3 == 1 ? jitter(rng) : 0.01 * unit(rng);
+    std::vector<Eigen::Vector3d> origins, dirs;
+    const int sonars = 1 + ring % 16, per_cone = 1 + ring % 9;
+    for (int k = 0; k < sonars; ++k) {
+      const double a = 2 * M_PI * k / sonars + 0.1 * unit(rng);
+      const Eigen::Vector3d site =
+          centre + Eigen::Vector3d(ring_radius * std::cos(a), ring_radius * std::sin(a),
+                                   ring % 4 == 0 ? 0.01 * unit(rng) : 0.0);
+      for (int j = 0; j < per_cone; ++j) {
+        const double b = a + 0.26 * (j - per_cone / 2) / std::max(1, per_cone / 2);
+        origins.push_back(site);
+        dirs.push_back(Eigen::Vector3d(std::cos(pitch) * std::cos(b), std::cos(pitch) * std::sin(b),
+                                       std::sin(pitch)));
+      }
+    }
+    const int n = static_cast<int>(dirs.size());
+    std::vector<RayHit> hits(n);
+    std::unique_ptr<bool[]> found(new bool[n]);
+    const double range = ring % 2 ? 5.0 : 30.0;
+    grid.CastBatch(origins.data(), dirs.data(), n, range, /*with_normal=*/true, hits.data(),
+                   found.get());
+    for (int i = 0; i < n; ++i) {
+      RayHit one;
+      const bool hit = grid.Cast(origins[i], dirs[i], range, &one);
+      ++rays;
+      ASSERT_EQ(found[i], hit) << "ring " << ring << " ray " << i;
+      if (!hit) continue;
+      ++hit_count;
+      ASSERT_EQ(hits[i].distance_m, one.distance_m) << "ring " << ring << " ray " << i;
+      ASSERT_EQ(hits[i].geom_id, one.geom_id) << "ring " << ring << " ray " << i;
+      ASSERT_EQ(hits[i].normal_W, one.normal_W) << "ring " << ring << " ray " << i;
+    }
+  }
+  EXPECT_GT(rays, 8000);
+  EXPECT_GT(hit_count, rays / 2);
+}
+
+// The base class's batch (MujocoRayCaster's) is CastWithoutNormal beam by beam.
+TEST(GridRayCaster2DTest, DefaultBatchIsCastWithoutNormal) {
   const CompiledWorld w = Compile(RandomWorld(23, 40));
   const MujocoRayCaster reference(w.model.get(), w.data.get());
   std::vector<Eigen::Vector3d> dirs;
@@ -418,8 +481,9 @@ TEST(GridRayCaster2DTest, DefaultFanIsCastWithoutNormal) {
   std::vector<RayHit> hits(dirs.size());
   std::unique_ptr<bool[]> found(new bool[dirs.size()]);
   const Eigen::Vector3d origin(0.5, -1.5, 0.4);
-  reference.CastFanWithoutNormal(origin, dirs.data(), static_cast<int>(dirs.size()), 8.0,
-                                 hits.data(), found.get());
+  const std::vector<Eigen::Vector3d> origins(dirs.size(), origin);
+  reference.CastBatch(origins.data(), dirs.data(), static_cast<int>(dirs.size()), 8.0,
+                      /*with_normal=*/false, hits.data(), found.get());
   int hit_count = 0;
   for (std::size_t i = 0; i < dirs.size(); ++i) {
     RayHit one;

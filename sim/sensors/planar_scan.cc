@@ -42,7 +42,7 @@ void PlanarScan::Cast(const Scene& scene, const RayCaster& caster, double range_
   dirs_W_.resize(n);
   hits_.resize(n);
   for (int i = 0; i < n; ++i) dirs_W_[i] = R_WS * dirs_S_[i];
-  // All beams share the origin: one fan cast (same hits as one CastWithoutNormal per beam).
+  // All beams share the origin: one fan (same hits as one CastWithoutNormal per beam).
   caster.CastFanWithoutNormal(p_WS, dirs_W_.data(), n, range_max_m, hits_.data(), found_.get());
   const auto seen = [&](const RayHit& h) {
     return see_through == nullptr || h.geom_id < 0 ||
