@@ -73,7 +73,7 @@ inline double DiamondAngle(double x, double y) {
 }
 
 // The fan's angular bins over [0, 4) and what a bin holds: a piece of a shape's angular interval.
-constexpr int kFanBins = 64;
+constexpr int kFanBins = 32;
 inline int FanBin(double key) {
   return std::clamp(static_cast<int>(key * (kFanBins / 4.0)), 0, kFanBins - 1);
 }
