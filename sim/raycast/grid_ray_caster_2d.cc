@@ -65,6 +65,49 @@ inline double SmallestRoot(double a, double b, double c) {
   return x1 >= 0 ? x1 : -1;
 }
 
+// A monotonic stand-in for the angle of (x, y) in [0, 2 pi): 0 along +x, 1 along +y, 2 along -x,
+// 3 along -y, in [0, 4). (x, y) must not be (0, 0).
+inline double DiamondAngle(double x, double y) {
+  if (y >= 0) return x >= 0 ? y / (x + y) : 1.0 - x / (y - x);
+  return x < 0 ? 2.0 - y / (-x - y) : 3.0 + x / (x - y);
+}
+
+// The fan's angular bins over [0, 4) and what a bin holds: a piece of a shape's angular interval.
+constexpr int kFanBins = 32;
+inline int FanBin(double key) {
+  return std::clamp(static_cast<int>(key * (kFanBins / 4.0)), 0, kFanBins - 1);
+}
+struct FanCandidate {
+  double min_d;   // a lower bound of the distance from the origin to the shape's footprint
+  double lo, hi;  // its angular interval (DiamondAngle), lo may be < 0 or hi >= 4: it wraps
+  uint32_t shape;
+};
+struct FanEntry {
+  double lo, hi;  // within [0, 4]
+  double min_d;
+  uint32_t shape;
+};
+struct FanScratch {
+  std::vector<uint32_t> stamp;  // by shape index: the epoch in which it was last collected
+  uint32_t epoch = 0;
+  std::vector<FanCandidate> candidates;
+  std::vector<uint32_t> bin_begin;  // CSR over kFanBins bins
+  std::vector<uint32_t> bin_fill;
+  std::vector<FanEntry> entries;
+};
+FanScratch& ThreadFanScratch() {
+  thread_local FanScratch scratch;
+  return scratch;
+}
+
+// Distances below this from a footprint take the whole circle: its angular span from so near a
+// point could come within rounding of pi.
+constexpr double kFanNearM = 1e-3;
+// Widening of the angular intervals (DiamondAngle units; their rounding is ~1e-15) and the
+// shortening of the distance bounds (m); the footprints are padded by kPadM besides.
+constexpr double kFanAngleSlack = 1e-9;
+constexpr double kFanDistanceSlackM = 1e-7;
+
 }  // namespace
 
 void GridRayCaster2DOptions::Validate() const {
@@ -125,7 +168,32 @@ GridRayCaster2D::GridRayCaster2D(const mjModel* model, const mjData* data,
       box.lo[k] = s.pos[k] - half[k] - kPadM;
       box.hi[k] = s.pos[k] + half[k] + kPadM;
     }
+    Footprint f;
+    f.centre[0] = s.pos[0];
+    f.centre[1] = s.pos[1];
+    if (s.upright && type == mjGEOM_BOX) {
+      f.axis_x[0] = R[0];
+      f.axis_x[1] = R[3];
+      f.axis_y[0] = R[1];
+      f.axis_y[1] = R[4];
+      f.half[0] = s.size[0] + kPadM;
+      f.half[1] = s.size[1] + kPadM;
+    } else {
+      f.axis_x[0] = 1.0;
+      f.axis_x[1] = 0.0;
+      f.axis_y[0] = 0.0;
+      f.axis_y[1] = 1.0;
+      f.half[0] = half[0] + kPadM;
+      f.half[1] = half[1] + kPadM;
+    }
+    for (int c = 0; c < 4; ++c) {
+      const double sx = (c & 1) ? 1.0 : -1.0, sy = (c & 2) ? 1.0 : -1.0;
+      for (int k = 0; k < 2; ++k) {
+        f.corner[c][k] = f.centre[k] + sx * f.half[0] * f.axis_x[k] + sy * f.half[1] * f.axis_y[k];
+      }
+    }
     shapes_.push_back(s);
+    footprints_.push_back(f);
     boxes.push_back(box);
   }
 
@@ -268,6 +336,216 @@ bool GridRayCaster2D::CastWithoutNormal(const Eigen::Vector3d& origin_W,
   return CastRay(origin_W, dir_W, max_range_m, /*with_normal=*/false, hit);
 }
 
+void GridRayCaster2D::CastBatch(const Eigen::Vector3d* origins_W, const Eigen::Vector3d* dirs_W,
+                                int count, double max_range_m, bool with_normal, RayHit* hits,
+                                bool* found) const {
+  CastRays(origins_W, 1, dirs_W, count, max_range_m, with_normal, hits, found);
+}
+
+void GridRayCaster2D::CastFanWithoutNormal(const Eigen::Vector3d& origin_W,
+                                           const Eigen::Vector3d* dirs_W, int count,
+                                           double max_range_m, RayHit* hits, bool* found) const {
+  CastRays(&origin_W, 0, dirs_W, count, max_range_m, /*with_normal=*/false, hits, found);
+}
+
+void GridRayCaster2D::CastRays(const Eigen::Vector3d* origins_W, int origin_step,
+                               const Eigen::Vector3d* dirs_W, int count, double max_range_m,
+                               bool with_normal, RayHit* hits, bool* found) const {
+  if (count <= 0) return;
+  // The origins' bounding box; a scan's beams share one origin, which is then the box.
+  double box_lo[3], box_hi[3];
+  for (int k = 0; k < 3; ++k) box_lo[k] = box_hi[k] = origins_W[0][k];
+  bool finite = origins_W[0].allFinite();
+  int i0 = origin_step == 0 ? count : 1;
+  while (i0 < count && origins_W[i0] == origins_W[0]) ++i0;
+  for (int i = i0; i < count; ++i) {
+    finite = finite && origins_W[i * origin_step].allFinite();
+    for (int k = 0; k < 3; ++k) {
+      box_lo[k] = std::min(box_lo[k], origins_W[i * origin_step][k]);
+      box_hi[k] = std::max(box_hi[k], origins_W[i * origin_step][k]);
+    }
+  }
+  if (nx_ == 0 || !finite || !(max_range_m >= 0.0) || !std::isfinite(max_range_m)) {
+    for (int i = 0; i < count; ++i) {
+      found[i] = CastRay(origins_W[i * origin_step], dirs_W[i], max_range_m, with_normal, &hits[i]);
+    }
+    return;
+  }
+  // The origins' centre (exactly the origin when all are equal) and radius in the floor plane.
+  const double o[2] = {0.5 * (box_lo[0] + box_hi[0]), 0.5 * (box_lo[1] + box_hi[1])};
+  double radius = 0.0;
+  if (i0 < count) {
+    double radius_squared = 0.0;
+    for (int i = 0; i < count; ++i) {
+      const double dx = origins_W[i * origin_step].x() - o[0],
+                   dy = origins_W[i * origin_step].y() - o[1];
+      radius_squared = std::max(radius_squared, dx * dx + dy * dy);
+    }
+    // Padded for the rounding of the square and its root.
+    radius = std::sqrt(radius_squared) * (1.0 + 1e-9) + 1e-12;
+  }
+  FanScratch& f = ThreadFanScratch();
+  const uint32_t num_shapes = static_cast<uint32_t>(shapes_.size());
+  if (f.stamp.size() < num_shapes) f.stamp.resize(num_shapes, 0);
+  f.candidates.clear();
+
+  // Collect the shapes a horizontal ray from any origin can meet within max_range_m.
+  const double range = max_range_m + radius;
+  const auto collect = [&](uint32_t index) {
+    const Shape& s = shapes_[index];
+    if (s.z_max < box_lo[2] || s.z_min > box_hi[2]) return;
+    const Footprint& fp = footprints_[index];
+    const double ox = o[0] - fp.centre[0], oy = o[1] - fp.centre[1];
+    const double lx = ox * fp.axis_x[0] + oy * fp.axis_x[1];
+    const double ly = ox * fp.axis_y[0] + oy * fp.axis_y[1];
+    const double dx = std::max(0.0, std::abs(lx) - fp.half[0]);
+    const double dy = std::max(0.0, std::abs(ly) - fp.half[1]);
+    const double d = std::sqrt(dx * dx + dy * dy);
+    FanCandidate c;
+    c.min_d = d - radius - kFanDistanceSlackM;
+    c.shape = index;
+    if (c.min_d > max_range_m) return;
+    if (d < kFanNearM + 2.0 * radius) {
+      c.lo = 0.0;
+      c.hi = 4.0;
+    } else {
+      const double k0 = DiamondAngle(fp.corner[0][0] - o[0], fp.corner[0][1] - o[1]);
+      double lo = 0.0, hi = 0.0;
+      for (int j = 1; j < 4; ++j) {
+        double delta = DiamondAngle(fp.corner[j][0] - o[0], fp.corner[j][1] - o[1]) - k0;
+        if (delta > 2.0) {
+          delta -= 4.0;
+        } else if (delta <= -2.0) {
+          delta += 4.0;
+        }
+        lo = std::min(lo, delta);
+        hi = std::max(hi, delta);
+      }
+      // From an origin within `radius` of o, a footprint point q is seen at most
+      // asin(radius / (|q - o| - radius)) <= pi/2 radius / (d - radius) away from where o sees
+      // it, and DiamondAngle changes by at most 1 per radian.
+      const double widen = radius > 0.0 ? 1.5707963267948966 * radius / (d - radius) : 0.0;
+      c.lo = k0 + lo - widen - kFanAngleSlack;
+      c.hi = k0 + hi + widen + kFanAngleSlack;
+      if (c.hi - c.lo >= 4.0) {
+        c.lo = 0.0;
+        c.hi = 4.0;
+      }
+    }
+    f.candidates.push_back(c);
+  };
+  const double gx0 = std::floor((o[0] - range - x0_) * inv_cell_);
+  const double gx1 = std::floor((o[0] + range - x0_) * inv_cell_);
+  const double gy0 = std::floor((o[1] - range - y0_) * inv_cell_);
+  const double gy1 = std::floor((o[1] + range - y0_) * inv_cell_);
+  if (gx1 >= 0 && gy1 >= 0 && gx0 <= nx_ - 1 && gy0 <= ny_ - 1) {
+    const int ix0 = static_cast<int>(std::max(gx0, 0.0));
+    const int ix1 = static_cast<int>(std::min(gx1, nx_ - 1.0));
+    const int iy0 = static_cast<int>(std::max(gy0, 0.0));
+    const int iy1 = static_cast<int>(std::min(gy1, ny_ - 1.0));
+    const double cells = (ix1 - ix0 + 1.0) * (iy1 - iy0 + 1.0);
+    if (cells >= num_shapes) {
+      for (uint32_t i = 0; i < num_shapes; ++i) collect(i);
+    } else {
+      if (++f.epoch == 0) {
+        std::fill(f.stamp.begin(), f.stamp.end(), 0);
+        f.epoch = 1;
+      }
+      for (int iy = iy0; iy <= iy1; ++iy) {
+        for (int ix = ix0; ix <= ix1; ++ix) {
+          const int cell = iy * nx_ + ix;
+          for (uint32_t k = cell_begin_[cell]; k < cell_begin_[cell + 1]; ++k) {
+            const uint32_t index = cell_items_[k];
+            if (f.stamp[index] == f.epoch) continue;
+            f.stamp[index] = f.epoch;
+            collect(index);
+          }
+        }
+      }
+    }
+  }
+  std::sort(f.candidates.begin(), f.candidates.end(),
+            [](const FanCandidate& a, const FanCandidate& b) { return a.min_d < b.min_d; });
+
+  // Bin the intervals (count, then fill), nearest first within each bin.
+  f.bin_begin.assign(kFanBins + 1, 0);
+  const auto for_each_piece = [](const FanCandidate& c, auto&& piece) {
+    if (c.lo < 0.0) {
+      piece(c.lo + 4.0, 4.0);
+      piece(0.0, c.hi);
+    } else if (c.hi >= 4.0) {
+      piece(c.lo, 4.0);
+      piece(0.0, c.hi - 4.0);
+    } else {
+      piece(c.lo, c.hi);
+    }
+  };
+  for (const FanCandidate& c : f.candidates) {
+    for_each_piece(c, [&](double lo, double hi) {
+      for (int b = FanBin(lo), last = FanBin(hi); b <= last; ++b) ++f.bin_begin[b + 1];
+    });
+  }
+  for (int b = 0; b < kFanBins; ++b) f.bin_begin[b + 1] += f.bin_begin[b];
+  f.entries.resize(f.bin_begin[kFanBins]);
+  f.bin_fill.assign(f.bin_begin.begin(), f.bin_begin.end() - 1);
+  for (const FanCandidate& c : f.candidates) {
+    for_each_piece(c, [&](double lo, double hi) {
+      for (int b = FanBin(lo), last = FanBin(hi); b <= last; ++b) {
+        f.entries[f.bin_fill[b]++] = {lo, hi, c.min_d, c.shape};
+      }
+    });
+  }
+
+  const Shape* shapes = shapes_.data();
+  const FanEntry* entries = f.entries.data();
+  for (int i = 0; i < count; ++i) {
+    // The same levelling as CastRay.
+    Eigen::Vector3d dir_W = dirs_W[i];
+    if (dir_W.z() != 0.0 && std::abs(dir_W.z()) <= level_tolerance_ * dir_W.head<2>().norm()) {
+      dir_W.z() = 0.0;
+      dir_W.normalize();
+    }
+    const double* v = dir_W.data();
+    if (v[2] != 0.0 || (v[0] == 0.0 && v[1] == 0.0)) {
+      found[i] = CastRay(origins_W[i * origin_step], dirs_W[i], max_range_m, with_normal, &hits[i]);
+      continue;
+    }
+    const double* ray_o = origins_W[i * origin_step].data();
+    double best_t = kInf;
+    int best_id = std::numeric_limits<int>::max();
+    const auto consider = [&best_t, &best_id](double t, int id) {
+      if (t >= 0 && (t < best_t || (t == best_t && id < best_id))) {
+        best_t = t;
+        best_id = id;
+      }
+    };
+    for (int g : fallback_horizontal_) consider(IntersectFallback(g, ray_o, v), g);
+    const double key = DiamondAngle(v[0], v[1]);
+    const int bin = FanBin(key);
+    for (uint32_t k = f.bin_begin[bin], end = f.bin_begin[bin + 1]; k < end; ++k) {
+      const FanEntry& e = entries[k];
+      if (e.min_d > best_t) break;
+      if (key < e.lo || key > e.hi) continue;
+      const Shape& s = shapes[e.shape];
+      consider(IntersectShape(s, ray_o, v, /*horizontal=*/true), s.geom_id);
+    }
+    found[i] = best_id != std::numeric_limits<int>::max() && best_t <= max_range_m;
+    if (!found[i]) continue;
+    RayHit* hit = &hits[i];
+    hit->distance_m = best_t;
+    hit->geom_id = best_id;
+    if (with_normal) SetNormal(origins_W[i * origin_step], dir_W, hit);
+  }
+}
+
+void GridRayCaster2D::SetNormal(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W,
+                                RayHit* hit) const {
+  hit->normal_W = SurfaceNormal(model_, data_, hit->geom_id, origin_W + hit->distance_m * dir_W);
+  if (hit->normal_W.x() == 0 && hit->normal_W.y() == 0 && hit->normal_W.z() == 0) {
+    hit->normal_W = -dir_W;  // meshes, height fields
+  }
+}
+
 bool GridRayCaster2D::CastRay(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& given_dir_W,
                               double max_range_m, bool with_normal, RayHit* hit) const {
   Eigen::Vector3d dir_W = given_dir_W;
@@ -376,11 +654,7 @@ bool GridRayCaster2D::CastRay(const Eigen::Vector3d& origin_W, const Eigen::Vect
   if (best_id == std::numeric_limits<int>::max() || best_t > max_range_m) return false;
   hit->distance_m = best_t;
   hit->geom_id = best_id;
-  if (!with_normal) return true;
-  hit->normal_W = SurfaceNormal(model_, data_, best_id, origin_W + best_t * dir_W);
-  if (hit->normal_W.x() == 0 && hit->normal_W.y() == 0 && hit->normal_W.z() == 0) {
-    hit->normal_W = -dir_W;  // meshes, height fields
-  }
+  if (with_normal) SetNormal(origin_W, dir_W, hit);
   return true;
 }
 

@@ -65,6 +65,23 @@ class GridRayCaster2D : public RayCaster {
             RayHit* hit) const override;
   bool CastWithoutNormal(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W,
                          double max_range_m, RayHit* hit) const override;
+  // Same results as Cast / CastWithoutNormal ray by ray. The rays that are (or are levelled to)
+  // horizontal share one set-up: with c the centre of the origins' bounding box and r the largest
+  // distance of an origin from it (0 for a scan's beams), the grid shapes within max_range_m + r
+  // of c whose z range meets the origins' heights are collected once, each with the angular
+  // interval its padded floor-plane footprint spans from c (widened by asin(r / (d - r)) for a
+  // footprint d from c, or the whole circle when d < 2 r) and a lower bound of its distance from
+  // any origin, sorted by that bound into angular bins; a ray then tests only its bin's shapes
+  // whose interval holds its direction, nearest first, and stops at the first shape farther than
+  // its nearest hit. Every shape a ray can hit is tested with the same arithmetic as Cast, so
+  // distances, geoms and normals are the same bits. Other rays go through Cast. Uses a per-thread
+  // scratch buffer (allocates only while it grows), so one caster still serves several threads.
+  void CastBatch(const Eigen::Vector3d* origins_W, const Eigen::Vector3d* dirs_W, int count,
+                 double max_range_m, bool with_normal, RayHit* hits, bool* found) const override;
+  // CastBatch with one origin for every ray, without normals (a scan's beams).
+  void CastFanWithoutNormal(const Eigen::Vector3d& origin_W, const Eigen::Vector3d* dirs_W,
+                            int count, double max_range_m, RayHit* hits,
+                            bool* found) const override;
 
   // Geoms held in the grid, and geoms tested on every (non-horizontal) ray.
   int num_grid_geoms() const { return static_cast<int>(shapes_.size()); }
@@ -87,8 +104,22 @@ class GridRayCaster2D : public RayCaster {
     bool upright;  // local z exactly along world z (mat[2] == mat[5] == 0): 2-D fast path
   };
 
+  // A shape's padded footprint on the floor plane: a rectangle (the box's own for upright boxes,
+  // the bounding box of the footprint otherwise) for the fan's angular intervals and distances.
+  struct Footprint {
+    double centre[2];
+    double axis_x[2], axis_y[2];  // unit axes in the floor plane
+    double half[2];               // padded half extents along them
+    double corner[4][2];
+  };
+
   bool CastRay(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W, double max_range_m,
                bool with_normal, RayHit* hit) const;
+  // CastBatch's work; ray i starts at origins_W[i * origin_step] (origin_step 0 or 1).
+  void CastRays(const Eigen::Vector3d* origins_W, int origin_step, const Eigen::Vector3d* dirs_W,
+                int count, double max_range_m, bool with_normal, RayHit* hits, bool* found) const;
+  // The hit's normal, as Cast gives it (dir_W: the levelled direction).
+  void SetNormal(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W, RayHit* hit) const;
   double IntersectShape(const Shape& shape, const double* origin, const double* dir,
                         bool horizontal) const;
   double IntersectFallback(int geom_id, const double* origin, const double* dir) const;
@@ -97,6 +128,7 @@ class GridRayCaster2D : public RayCaster {
   const mjData* data_;
   double level_tolerance_ = 0.0;  // as tan: |dir z| <= this x |dir xy| counts as level
   std::vector<Shape> shapes_;
+  std::vector<Footprint> footprints_;     // by shape index
   std::vector<int> fallback_all_;         // tested on non-horizontal rays
   std::vector<int> fallback_horizontal_;  // tested on horizontal rays
   double x0_ = 0.0, y0_ = 0.0;            // grid corner

@@ -2,12 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <filesystem>
+#include <memory>
 #include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "plywood_paths.h"
 #include "sim/raycast/mujoco_ray_caster.h"
@@ -327,6 +330,170 @@ TEST_P(RandomWorldTest, CastWithoutNormalGivesCastsDistanceAndGeom) {
     }
   }
   EXPECT_GT(hits, 2000);
+}
+
+// A scan's beams from one origin: the batch and the fan give, beam by beam, the very bits
+// CastWithoutNormal gives (level beams, beams within the levelling tolerance and beams beyond it),
+// and for level beams what mj_ray gives. Origins anywhere: outside the grid, inside and beside
+// geoms, on corners.
+TEST_P(RandomWorldTest, ScanBatchGivesCastWithoutNormalsBitsBeamForBeam) {
+  for (const uint64_t world_seed : {21u, 22u}) {
+    const CompiledWorld w = Compile(RandomWorld(world_seed, world_seed == 21u ? 60 : 150));
+    GridRayCaster2DOptions options;
+    options.cell_size_m = GetParam();
+    const MujocoRayCaster reference(w.model.get(), w.data.get());
+    const GridRayCaster2D grid(w.model.get(), w.data.get(), options);
+    std::mt19937_64 rng(world_seed);
+    std::uniform_real_distribution<double> ux(-12, 12), uy(-9, 9), uz(0.01, 2.6), yaw(-M_PI, M_PI),
+        unit(0.0, 1.0);
+    std::normal_distribution<double> jitter(0.0, 6e-4);
+    std::vector<Eigen::Vector3d> dirs;
+    std::vector<RayHit> hits;
+    int beams = 0, hit_count = 0, level_beams = 0, mj_checked = 0;
+    for (int scan = 0; scan < 240; ++scan) {
+      Eigen::Vector3d origin(ux(rng), uy(rng), scan % 3 == 0 ? 0.3 : uz(rng));
+      if (scan % 8 == 1) {
+        // Exactly on, or a hair beside, a corner of some geom's footprint.
+        const int g = std::uniform_int_distribution<int>(1, 4)(rng);
+        const double* p = w.data->geom_xpos + 3 * g;
+        const double* size = w.model->geom_size + 3 * g;
+        const double eps = scan % 16 == 1 ? 0.0 : 1e-4 * (unit(rng) - 0.5);
+        origin = {p[0] + size[0] + eps, p[1] + size[1] - eps, p[2]};
+      }
+      const double heading = yaw(rng);
+      // Level scans, scans tilted within the levelling tolerance, and scans tilted beyond it.
+      const int kind = scan % 3;
+      const double pitch = kind == 0 ? 0.0 : kind == 1 ? jitter(rng) : 0.02 * (unit(rng) - 0.5);
+      const double roll = kind == 0 ? 0.0 : kind == 1 ? jitter(rng) : 0.02 * (unit(rng) - 0.5);
+      const Eigen::Matrix3d R = (Eigen::AngleAxisd(heading, Eigen::Vector3d::UnitZ()) *
+                                 Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+                                 Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+                                    .toRotationMatrix();
+      const int n = scan % 5 == 0 ? 1 + static_cast<int>(unit(rng) * 40) : 361;
+      const double fov = scan % 4 == 0 ? 2 * M_PI : M_PI;
+      dirs.resize(n);
+      hits.assign(n, RayHit{});
+      for (int i = 0; i < n; ++i) {
+        const double a = -fov / 2 + fov * i / std::max(1, n - 1);
+        dirs[i] = R * Eigen::Vector3d(std::cos(a), std::sin(a), 0.0);
+      }
+      const double range = scan % 4 == 0 ? 80.0 : scan % 4 == 1 ? 30.0 : 8.0;
+      std::unique_ptr<bool[]> found(new bool[n]);
+      const std::vector<Eigen::Vector3d> origins(n, origin);
+      grid.CastBatch(origins.data(), dirs.data(), n, range, /*with_normal=*/false, hits.data(),
+                     found.get());
+      std::vector<RayHit> fan_hits(n);
+      std::unique_ptr<bool[]> fan_found(new bool[n]);
+      grid.CastFanWithoutNormal(origin, dirs.data(), n, range, fan_hits.data(), fan_found.get());
+      for (int i = 0; i < n; ++i) {
+        RayHit one;
+        const bool hit = grid.CastWithoutNormal(origin, dirs[i], range, &one);
+        ++beams;
+        ASSERT_EQ(fan_found[i], hit) << "scan " << scan << " beam " << i;
+        if (hit) {
+          ASSERT_EQ(fan_hits[i].distance_m, one.distance_m) << "scan " << scan << " beam " << i;
+          ASSERT_EQ(fan_hits[i].geom_id, one.geom_id) << "scan " << scan << " beam " << i;
+        }
+        ASSERT_EQ(found[i], hit) << "scan " << scan << " beam " << i;
+        if (!hit) continue;
+        ++hit_count;
+        ASSERT_EQ(hits[i].distance_m, one.distance_m) << "scan " << scan << " beam " << i;
+        ASSERT_EQ(hits[i].geom_id, one.geom_id) << "scan " << scan << " beam " << i;
+        if (dirs[i].z() == 0.0) {
+          ++level_beams;
+          RayHit exact;
+          ASSERT_TRUE(reference.CastWithoutNormal(origin, dirs[i], range, &exact));
+          ASSERT_EQ(exact.geom_id, one.geom_id);
+          ASSERT_NEAR(exact.distance_m, one.distance_m, 1e-9 * std::max(1.0, one.distance_m));
+          ++mj_checked;
+        }
+      }
+    }
+    EXPECT_GT(beams, 60000);
+    EXPECT_GT(hit_count, beams / 2);
+    EXPECT_GT(level_beams, 10000);
+    EXPECT_EQ(mj_checked, level_beams);
+  }
+}
+
+// A sonar ring's cones: rays from origins up to 0.3 m apart, with normals. The batch gives, ray by
+// ray, the very bits Cast gives (distance, geom and normal).
+TEST_P(RandomWorldTest, RingBatchGivesCastsBitsRayForRay) {
+  const CompiledWorld w = Compile(RandomWorld(24, 120));
+  GridRayCaster2DOptions options;
+  options.cell_size_m = GetParam();
+  const GridRayCaster2D grid(w.model.get(), w.data.get(), options);
+  std::mt19937_64 rng(24);
+  std::uniform_real_distribution<double> ux(-12, 12), uy(-9, 9), uz(0.05, 1.5), yaw(-M_PI, M_PI),
+      unit(0.0, 1.0);
+  std::normal_distribution<double> jitter(0.0, 6e-4);
+  int rays = 0, hit_count = 0;
+  for (int ring = 0; ring < 300; ++ring) {
+    const Eigen::Vector3d centre(ux(rng), uy(rng), uz(rng));
+    const double ring_radius = ring % 5 == 0 ? 0.0 : 0.3 * unit(rng);
+    const double pitch = ring % 3 == 0 ? 0.0 : ring % 3 == 1 ? jitter(rng) : 0.01 * unit(rng);
+    std::vector<Eigen::Vector3d> origins, dirs;
+    const int sonars = 1 + ring % 16, per_cone = 1 + ring % 9;
+    for (int k = 0; k < sonars; ++k) {
+      const double a = 2 * M_PI * k / sonars + 0.1 * unit(rng);
+      const Eigen::Vector3d site =
+          centre + Eigen::Vector3d(ring_radius * std::cos(a), ring_radius * std::sin(a),
+                                   ring % 4 == 0 ? 0.01 * unit(rng) : 0.0);
+      for (int j = 0; j < per_cone; ++j) {
+        const double b = a + 0.26 * (j - per_cone / 2) / std::max(1, per_cone / 2);
+        origins.push_back(site);
+        dirs.push_back(Eigen::Vector3d(std::cos(pitch) * std::cos(b), std::cos(pitch) * std::sin(b),
+                                       std::sin(pitch)));
+      }
+    }
+    const int n = static_cast<int>(dirs.size());
+    std::vector<RayHit> hits(n);
+    std::unique_ptr<bool[]> found(new bool[n]);
+    const double range = ring % 2 ? 5.0 : 30.0;
+    grid.CastBatch(origins.data(), dirs.data(), n, range, /*with_normal=*/true, hits.data(),
+                   found.get());
+    for (int i = 0; i < n; ++i) {
+      RayHit one;
+      const bool hit = grid.Cast(origins[i], dirs[i], range, &one);
+      ++rays;
+      ASSERT_EQ(found[i], hit) << "ring " << ring << " ray " << i;
+      if (!hit) continue;
+      ++hit_count;
+      ASSERT_EQ(hits[i].distance_m, one.distance_m) << "ring " << ring << " ray " << i;
+      ASSERT_EQ(hits[i].geom_id, one.geom_id) << "ring " << ring << " ray " << i;
+      ASSERT_EQ(hits[i].normal_W, one.normal_W) << "ring " << ring << " ray " << i;
+    }
+  }
+  EXPECT_GT(rays, 8000);
+  EXPECT_GT(hit_count, rays / 2);
+}
+
+// The base class's batch (MujocoRayCaster's) is CastWithoutNormal beam by beam.
+TEST(GridRayCaster2DTest, DefaultBatchIsCastWithoutNormal) {
+  const CompiledWorld w = Compile(RandomWorld(23, 40));
+  const MujocoRayCaster reference(w.model.get(), w.data.get());
+  std::vector<Eigen::Vector3d> dirs;
+  for (int i = 0; i < 90; ++i) {
+    const double a = i * 2 * M_PI / 90;
+    dirs.emplace_back(std::cos(a), std::sin(a), i % 3 == 0 ? 0.0 : 0.01 * (i % 7 - 3));
+    dirs.back().normalize();
+  }
+  std::vector<RayHit> hits(dirs.size());
+  std::unique_ptr<bool[]> found(new bool[dirs.size()]);
+  const Eigen::Vector3d origin(0.5, -1.5, 0.4);
+  const std::vector<Eigen::Vector3d> origins(dirs.size(), origin);
+  reference.CastBatch(origins.data(), dirs.data(), static_cast<int>(dirs.size()), 8.0,
+                      /*with_normal=*/false, hits.data(), found.get());
+  int hit_count = 0;
+  for (std::size_t i = 0; i < dirs.size(); ++i) {
+    RayHit one;
+    ASSERT_EQ(found[i], reference.CastWithoutNormal(origin, dirs[i], 8.0, &one)) << i;
+    if (!found[i]) continue;
+    ++hit_count;
+    EXPECT_EQ(hits[i].distance_m, one.distance_m) << i;
+    EXPECT_EQ(hits[i].geom_id, one.geom_id) << i;
+  }
+  EXPECT_GT(hit_count, 60);
 }
 
 INSTANTIATE_TEST_SUITE_P(CellSizes, RandomWorldTest, ::testing::Values(0.13, 0.5, 2.0));

@@ -30,6 +30,27 @@ class RayCaster {
                                  double max_range_m, RayHit* hit) const {
     return Cast(origin_W, dir_W, max_range_m, hit);
   }
+
+  // Casts `count` rays, ray i from origins_W[i] along dirs_W[i] (a scan's beams, a sonar ring's
+  // cones): found[i] and hits[i] are exactly what Cast (with_normal) or CastWithoutNormal returns
+  // and fills for that ray (hits[i] is left as it was where found[i] is false). Casters may share
+  // set-up work between the rays; it pays when the origins lie close together.
+  virtual void CastBatch(const Eigen::Vector3d* origins_W, const Eigen::Vector3d* dirs_W, int count,
+                         double max_range_m, bool with_normal, RayHit* hits, bool* found) const {
+    for (int i = 0; i < count; ++i) {
+      found[i] = with_normal ? Cast(origins_W[i], dirs_W[i], max_range_m, &hits[i])
+                             : CastWithoutNormal(origins_W[i], dirs_W[i], max_range_m, &hits[i]);
+    }
+  }
+
+  // CastBatch without normals for rays that all start at origin_W (a scan's beams).
+  virtual void CastFanWithoutNormal(const Eigen::Vector3d& origin_W, const Eigen::Vector3d* dirs_W,
+                                    int count, double max_range_m, RayHit* hits,
+                                    bool* found) const {
+    for (int i = 0; i < count; ++i) {
+      found[i] = CastWithoutNormal(origin_W, dirs_W[i], max_range_m, &hits[i]);
+    }
+  }
 };
 
 }  // namespace plywood::sim

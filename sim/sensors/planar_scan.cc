@@ -17,7 +17,8 @@ PlanarScan::PlanarScan(const Scene& scene, const std::string& site_name, const s
     : site_(RequireSensorSite(scene, site_name, sensor)),
       angle_min_rad_(angle_min_deg * kDegToRad),
       angle_increment_rad_(angle_increment_deg * kDegToRad),
-      dirs_S_(PlanarDirections(EvenAnglesRad(angle_min_deg, angle_increment_deg, beam_count))) {}
+      dirs_S_(PlanarDirections(EvenAnglesRad(angle_min_deg, angle_increment_deg, beam_count))),
+      found_(std::make_unique<bool[]>(dirs_S_.size())) {}
 
 void PlanarScan::Cast(const Scene& scene, const RayCaster& caster, double range_min_m,
                       double range_max_m, ScanMeasurement* out,
@@ -38,15 +39,19 @@ void PlanarScan::Cast(const Scene& scene, const RayCaster& caster, double range_
   const Eigen::Vector3d p_WS = X_WS.translation();
   double* ranges_m = scan.ranges_m.data();
   int* geom_ids = out->hit_geom_ids.data();
-  RayHit hit;
+  dirs_W_.resize(n);
+  hits_.resize(n);
+  for (int i = 0; i < n; ++i) dirs_W_[i] = R_WS * dirs_S_[i];
+  // All beams share the origin: one fan (same hits as one CastWithoutNormal per beam).
+  caster.CastFanWithoutNormal(p_WS, dirs_W_.data(), n, range_max_m, hits_.data(), found_.get());
   const auto seen = [&](const RayHit& h) {
     return see_through == nullptr || h.geom_id < 0 ||
            h.geom_id >= static_cast<int>(see_through->size()) || !(*see_through)[h.geom_id];
   };
   for (int i = 0; i < n; ++i) {
-    const Eigen::Vector3d dir_W = R_WS * dirs_S_[i];
-    bool found =
-        caster.CastWithoutNormal(p_WS, dir_W, range_max_m, &hit) && hit.distance_m < range_max_m;
+    const Eigen::Vector3d& dir_W = dirs_W_[i];
+    RayHit& hit = hits_[i];
+    bool found = found_[i] && hit.distance_m < range_max_m;
     // Past see-through geoms: recast from just beyond each face (a box's far face comes next).
     for (int pass = 0; found && !seen(hit) && pass < 16; ++pass) {
       const double offset = hit.distance_m + 1e-6;

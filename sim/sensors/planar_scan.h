@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,10 @@ class PlanarScan {
   const double angle_min_rad_;
   const double angle_increment_rad_;
   const std::vector<Eigen::Vector3d> dirs_S_;  // unit beam directions in the site frame
+  // Scratch of Cast (the beams' world directions and first hits), kept to avoid allocations.
+  mutable std::vector<Eigen::Vector3d> dirs_W_;
+  mutable std::vector<RayHit> hits_;
+  std::unique_ptr<bool[]> found_;  // beam_count() flags
 };
 
 }  // namespace plywood::sim

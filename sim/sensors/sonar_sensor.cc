@@ -64,11 +64,30 @@ void SonarSensor::Measure(const Scene& scene, const RayCaster& caster, msgs::Ran
   out->range_min_m = options_.range_min_m;
   out->range_max_m = options_.range_max_m;
   out->readings.resize(sites_.size());
+  // The cone rays of every transducer first, as one batch (the same hits as ray by ray).
+  const std::size_t per_cone = dirs_S_.size(), rays = sites_.size() * per_cone;
+  X_WS_.resize(sites_.size());
+  ray_origins_W_.resize(rays);
+  ray_dirs_W_.resize(rays);
+  ray_hits_.resize(rays);
+  if (!ray_found_) ray_found_ = std::make_unique<bool[]>(rays);
+  for (std::size_t k = 0; k < sites_.size(); ++k) {
+    X_WS_[k] = scene.SitePoseInWorld(sites_[k].id);
+    const Eigen::Matrix3d R_WS = X_WS_[k].linear();
+    const Eigen::Vector3d p_WS = X_WS_[k].translation();
+    for (std::size_t j = 0; j < per_cone; ++j) {
+      ray_origins_W_[k * per_cone + j] = p_WS;
+      ray_dirs_W_[k * per_cone + j] = R_WS * dirs_S_[j];
+    }
+  }
+  caster.CastBatch(ray_origins_W_.data(), ray_dirs_W_.data(), static_cast<int>(rays),
+                   options_.range_max_m, /*with_normal=*/true, ray_hits_.data(), ray_found_.get());
   std::normal_distribution<double> unit_noise(0.0, 1.0);
   for (std::size_t k = 0; k < sites_.size(); ++k) {
     msgs::RangeReading& reading = out->readings[k];
     reading.X_RS = sites_[k].X_RS;
-    double range_m = EchoRange(scene.SitePoseInWorld(sites_[k].id), caster);
+    double range_m = EchoRange(X_WS_[k], caster, ray_hits_.data() + k * per_cone,
+                               ray_found_.get() + k * per_cone);
     if (range_m >= 0.0 && !options_.noise_free) {
       range_m += options_.range_noise_fraction * range_m * unit_noise(rng_);
     }
@@ -77,7 +96,8 @@ void SonarSensor::Measure(const Scene& scene, const RayCaster& caster, msgs::Ran
   }
 }
 
-double SonarSensor::EchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& caster) const {
+double SonarSensor::EchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& caster,
+                              const RayHit* cone_hits, const bool* cone_found) const {
   const Eigen::Matrix3d R_WS = X_WS.linear();
   const Eigen::Vector3d p_WS = X_WS.translation();
   const double range_max_m = options_.range_max_m;
@@ -89,9 +109,11 @@ double SonarSensor::EchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& ca
   double foot_m = kInf;  // nearest perpendicular foot of a hit plane that lies inside the beam
   Eigen::Vector3d foot_dir_S = Eigen::Vector3d::UnitX();
   RayHit hit, hit2;
-  for (const Eigen::Vector3d& dir_S : dirs_S_) {
-    const Eigen::Vector3d dir_W = R_WS * dir_S;
-    if (!caster.Cast(p_WS, dir_W, range_max_m, &hit) || hit.distance_m >= range_max_m) continue;
+  for (std::size_t j = 0; j < dirs_S_.size(); ++j) {
+    const Eigen::Vector3d dir_W = R_WS * dirs_S_[j];
+    if (!cone_found[j]) continue;
+    hit = cone_hits[j];
+    if (hit.distance_m >= range_max_m) continue;
     const bool is_central = !central_seen;
     central_seen = true;
     const Eigen::Vector3d& n_W = hit.normal_W;

@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <memory>
 #include <random>
 #include <string>
 #include <vector>
@@ -72,8 +73,10 @@ class SonarSensor {
   const SonarOptions& options() const { return options_; }
 
  private:
-  // The noise-free echo range of one transducer, or a negative value for no echo.
-  double EchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& caster) const;
+  // The noise-free echo range of one transducer, or a negative value for no echo. `cone_hits`
+  // and `cone_found`: the casts of its cone's rays (dirs_S_ from X_WS, in order).
+  double EchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& caster, const RayHit* cone_hits,
+                   const bool* cone_found) const;
 
   const SonarOptions options_;
   const std::vector<SensorSite> sites_;
@@ -81,6 +84,11 @@ class SonarSensor {
   double cos_incidence_limit_ = 0.0;
   double cos_half_angle_ = 0.0;
   std::mt19937_64 rng_;
+  // Scratch of Measure: every site's pose and the cone rays of the whole ring, cast as one batch.
+  std::vector<Eigen::Isometry3d> X_WS_;
+  std::vector<Eigen::Vector3d> ray_origins_W_, ray_dirs_W_;
+  std::vector<RayHit> ray_hits_;
+  std::unique_ptr<bool[]> ray_found_;
 };
 
 }  // namespace plywood::sim
