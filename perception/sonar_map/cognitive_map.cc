@@ -341,6 +341,28 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
               c.y() - map.room.y1 > overrun)
             map.room.y1 = c.y();
         }
+      // The same from the faces those echoes place (BeamFreeGrid::face_echoes): min_echoes of them
+      // within one cell of each other. Two axes 7 and 10 deg off the grid axis that heard the same
+      // wall 2 m away put their echo points in different cells (world 19 seed 2), not their faces.
+      {
+        auto far = [&](BeamFreeGrid::Direction direction, double side, double sign) {
+          std::vector<double> f;
+          for (const auto& e : beam_free->face_echoes())
+            if (e.direction == direction && sign * (e.face - side) > overrun) f.push_back(e.face);
+          std::sort(f.begin(), f.end());
+          double best = side;
+          for (std::size_t k = 0; k + min_echoes <= f.size(); ++k)
+            if (f[k + min_echoes - 1] - f[k] <= res) {
+              const double v = f[k + (min_echoes - 1) / 2];
+              if (sign * (v - best) > 0) best = v;
+            }
+          return best;
+        };
+        map.room.x0 = far(BeamFreeGrid::kWest, map.room.x0, -1.0);
+        map.room.x1 = far(BeamFreeGrid::kEast, map.room.x1, 1.0);
+        map.room.y0 = far(BeamFreeGrid::kSouth, map.room.y0, -1.0);
+        map.room.y1 = far(BeamFreeGrid::kNorth, map.room.y1, 1.0);
+      }
     }
   }
   // Each side at the faces the sonar axes pointing that way heard head-on within the wall band of

@@ -462,9 +462,33 @@ TEST(CognitiveMapTest, AWallHeardThroughTwoGapsOnlyIsPlacedFromTheEchoes) {
   // The echo's cell [0.55, 0.60]: its centre.
   EXPECT_NEAR(after.room.x0, 0.575, kTol);
   EXPECT_NEAR(after.room.x1, kX1, kTol);
-  // One echo per cell is not enough (beam_free_min_passes 2): the side stays on the boxes.
-  const BeamFreeGrid once = Beams(from, 3.14159265358979323846, 2.5 - 0.56, 1);
+  // One echo is not enough (beam_free_min_passes 2): the side stays on the boxes. (One through
+  // each gap is enough: the two place the same face, see the next test.)
+  const BeamFreeGrid once = Beams({from[0]}, 3.14159265358979323846, 2.5 - 0.56, 1);
   EXPECT_NEAR(BuildCognitiveMap(grid, kInside, {}, &once).room.x0, 1.55, kTol);
+  const BeamFreeGrid each_once = Beams(from, 3.14159265358979323846, 2.5 - 0.56, 1);
+  EXPECT_NEAR(BuildCognitiveMap(grid, kInside, {}, &each_once).room.x0, 0.56, 1e-9);
+}
+
+TEST(CognitiveMapTest, AWallHeardOnceEachByTwoTiltedAxesIsPlacedAtTheFaceTheyAgreeOn) {
+  // One gap; two readings through it heard the west wall (inner face x = 0.56) once each, one
+  // along -x, one 7 deg off it: their echo points lie in different cells (one echo per cell is
+  // not enough), but the face each places, range from the transducer along -x, is the same.
+  const LogOddsGrid grid = BoxFacesWithGaps({22});
+  constexpr double kPi = 3.14159265358979323846;
+  BeamFreeGrid beams(TestGridGeometry(), {});
+  msgs::RangeRing ring;
+  ring.readings.push_back({msgs::Pose2D{0.0, 0.0, 0.0}, 2.5 - 0.56, true});
+  beams.Integrate(ring, {2.5, 1.125, kPi});
+  beams.Integrate(ring, {2.5, 1.125, kPi - 0.12});
+  EXPECT_EQ(beams.Echoes(11, 22, BeamFreeGrid::kWest), 1);
+  EXPECT_NEAR(BuildCognitiveMap(grid, kInside, {}, &beams).room.x0, 0.56, 1e-9);
+  // Faces farther apart than a cell do not agree: the side stays on the boxes.
+  BeamFreeGrid apart(TestGridGeometry(), {});
+  apart.Integrate(ring, {2.5, 1.125, kPi});
+  ring.readings[0].range_m = 2.5 - 0.70;
+  apart.Integrate(ring, {2.5, 1.125, kPi - 0.12});
+  EXPECT_NEAR(BuildCognitiveMap(grid, kInside, {}, &apart).room.x0, 1.55, kTol);
 }
 
 TEST(CognitiveMapTest, OccupiedCellsTheAxesPassedDoNotJoinABoxToTheWall) {
