@@ -38,6 +38,9 @@ void BeamFreeGrid::Integrate(const msgs::RangeRing& ring, const msgs::Pose2D& X_
   std::vector<std::size_t> touched;
   for (const msgs::RangeReading& reading : ring.readings) {
     if (!reading.echo || reading.range_m > options_.max_range_m) continue;
+    // A reading at the blanking range stands for anything nearer: it places no face and frees
+    // nothing.
+    if (reading.range_m <= ring.range_min_m) continue;
     const double heading = X_WR.theta_rad + reading.X_RS.theta_rad;
     // Distance of the axis' direction from the nearest grid axis.
     const double off = std::remainder(heading, half_pi);
@@ -67,6 +70,12 @@ void BeamFreeGrid::Integrate(const msgs::RangeRing& ring, const msgs::Pose2D& X_
                                 : axis > 0.0                                                ? kNorth
                                              : kSouth;
     ++echoes_[direction][Index(echo.x(), echo.y())];
+    const double face = direction == kEast    ? from.x() + reading.range_m
+                        : direction == kWest  ? from.x() - reading.range_m
+                        : direction == kNorth ? from.y() + reading.range_m
+                                              : from.y() - reading.range_m;
+    const double lateral = direction == kEast || direction == kWest ? from.y() : from.x();
+    face_echoes_.push_back({direction, face, lateral});
   }
 }
 

@@ -43,6 +43,18 @@ class BeamFreeGrid {
   // such an echo were passed (Passes), so the face it came from bounds space seen free.
   enum Direction { kWest = 0, kEast = 1, kSouth = 2, kNorth = 3 };
   int Echoes(int ix, int iy, Direction direction) const;
+  // Where each such echo puts the face it came from: an axis within axis_tolerance_rad of the
+  // face's normal hears the face's nearest point (the perpendicular foot, inside the beam), so the
+  // face lies `range` from the transducer along the grid axis, whatever the tilt: `face` is that
+  // coordinate (x for kWest / kEast, y for kSouth / kNorth), `lateral` the transducer's other
+  // coordinate (where that foot lies along the face, when the face reaches that far), `direction`
+  // as for Echoes.
+  struct FaceEcho {
+    Direction direction;
+    double face;
+    double lateral;
+  };
+  const std::vector<FaceEcho>& face_echoes() const { return face_echoes_; }
   int width() const { return width_; }
   int height() const { return height_; }
 
@@ -53,6 +65,7 @@ class BeamFreeGrid {
   int width_ = 0, height_ = 0;
   std::vector<int> passes_;
   std::vector<int> echoes_[4];
+  std::vector<FaceEcho> face_echoes_;
 };
 
 }  // namespace plywood::perception

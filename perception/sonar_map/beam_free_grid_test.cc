@@ -77,6 +77,41 @@ TEST(BeamFreeGridTest, ObliqueAxesMissesAndFarEchoesSayNothing) {
   EXPECT_EQ(grid.Passes(20, 21), 1);
 }
 
+TEST(BeamFreeGridTest, EchoesPlaceTheFaceAtTheRangeAlongTheGridAxis) {
+  BeamFreeGrid grid(Geometry(), {});
+  // 8 deg off +x from (1.02, 1.22), echo at 1.0 m: an axis that near the face's normal hears the
+  // face's perpendicular foot, so the face is at x = 2.02 (not 1.02 + cos 8 deg), heard at the
+  // transducer's y.
+  grid.Integrate(Ring(8.0 * kPi / 180.0, 1.0), {1.02, 1.22, 0.0});
+  // -y from (2.52, 3.02), 0.4 m.
+  grid.Integrate(Ring(-0.5 * kPi, 0.4), {2.52, 3.02, 0.0});
+  ASSERT_EQ(grid.face_echoes().size(), 2u);
+  EXPECT_EQ(grid.face_echoes()[0].direction, BeamFreeGrid::kEast);
+  EXPECT_NEAR(grid.face_echoes()[0].face, 2.02, 1e-12);
+  EXPECT_NEAR(grid.face_echoes()[0].lateral, 1.22, 1e-12);
+  EXPECT_EQ(grid.face_echoes()[1].direction, BeamFreeGrid::kSouth);
+  EXPECT_NEAR(grid.face_echoes()[1].face, 2.62, 1e-12);
+  EXPECT_NEAR(grid.face_echoes()[1].lateral, 2.52, 1e-12);
+}
+
+TEST(BeamFreeGridTest, AReadingAtTheBlankingRangeFreesNothingAndPlacesNoFace) {
+  BeamFreeGrid grid(Geometry(), {});
+  // The receiver's blanking time: a face 0.05-0.15 m away is reported at range_min_m, so the
+  // axis is not known free up to 0.10 m, nor the face to be at 0.15 m.
+  msgs::RangeRing ring = Ring(0.0, 0.15);
+  ring.range_min_m = 0.15;
+  grid.Integrate(ring, {1.02, 1.02, 0.0});
+  EXPECT_EQ(grid.Passes(20, 20), 0);
+  EXPECT_EQ(grid.Passes(21, 20), 0);
+  EXPECT_EQ(grid.Echoes(23, 20, BeamFreeGrid::kEast), 0);
+  EXPECT_TRUE(grid.face_echoes().empty());
+  // Just beyond it the reading counts.
+  ring.readings[0].range_m = 0.16;
+  grid.Integrate(ring, {1.02, 1.02, 0.0});
+  EXPECT_EQ(grid.Passes(20, 20), 1);
+  EXPECT_EQ(grid.face_echoes().size(), 1u);
+}
+
 TEST(BeamFreeGridTest, OutsideTheGridIsNoPassAndBadOptionsThrow) {
   BeamFreeGrid grid(Geometry(), {});
   grid.Integrate(Ring(kPi, 2.0), {0.52, 1.02, 0.0});  // runs off the grid's west edge

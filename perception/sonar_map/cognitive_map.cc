@@ -1,6 +1,7 @@
 #include "perception/sonar_map/cognitive_map.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -58,6 +59,23 @@ std::optional<Rect> JoinGap(const Rect& a, const Rect& b, double join) {
     return Rect{std::max(a.x0, b.x0), std::min(a.y1, b.y1), std::min(a.x1, b.x1),
                 std::max(a.y0, b.y0)};
   return std::nullopt;
+}
+
+// The median face coordinate of the echoes heard from `direction` (BeamFreeGrid::FaceEcho) within
+// `band` of `side` whose transducer stood within [v0, v1] along it (so that the perpendicular foot
+// it heard lies on that stretch of the face); nullopt with fewer than min_echoes of them.
+std::optional<double> SideFromEchoes(const std::vector<BeamFreeGrid::FaceEcho>& echoes,
+                                     BeamFreeGrid::Direction direction, double side, double v0,
+                                     double v1, double band, int min_echoes) {
+  std::vector<double> faces;
+  for (const BeamFreeGrid::FaceEcho& echo : echoes)
+    if (echo.direction == direction && std::abs(echo.face - side) <= band && echo.lateral >= v0 &&
+        echo.lateral <= v1)
+      faces.push_back(echo.face);
+  if (faces.empty() || static_cast<int>(faces.size()) < min_echoes) return std::nullopt;
+  const auto middle = faces.begin() + static_cast<std::ptrdiff_t>(faces.size() / 2);
+  std::nth_element(faces.begin(), middle, faces.end());
+  return *middle;
 }
 
 double Snap(double value, const std::vector<double>& earlier, double d_e) {
@@ -323,7 +341,44 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
               c.y() - map.room.y1 > overrun)
             map.room.y1 = c.y();
         }
+      // The same from the faces those echoes place (BeamFreeGrid::face_echoes): min_echoes of them
+      // within one cell of each other. Two axes 7 and 10 deg off the grid axis that heard the same
+      // wall 2 m away put their echo points in different cells (world 19 seed 2), not their faces.
+      {
+        auto far = [&](BeamFreeGrid::Direction direction, double side, double sign) {
+          std::vector<double> f;
+          for (const auto& e : beam_free->face_echoes())
+            if (e.direction == direction && sign * (e.face - side) > overrun) f.push_back(e.face);
+          std::sort(f.begin(), f.end());
+          double best = side;
+          for (std::size_t k = 0; k + min_echoes <= f.size(); ++k)
+            if (f[k + min_echoes - 1] - f[k] <= res) {
+              const double v = f[k + (min_echoes - 1) / 2];
+              if (sign * (v - best) > 0) best = v;
+            }
+          return best;
+        };
+        map.room.x0 = far(BeamFreeGrid::kWest, map.room.x0, -1.0);
+        map.room.x1 = far(BeamFreeGrid::kEast, map.room.x1, 1.0);
+        map.room.y0 = far(BeamFreeGrid::kSouth, map.room.y0, -1.0);
+        map.room.y1 = far(BeamFreeGrid::kNorth, map.room.y1, 1.0);
+      }
     }
+  }
+  // Each side at the faces the sonar axes pointing that way heard head-on within the wall band of
+  // it, when at least min_wall_points did (the fit above places it to a 5 cm cell and the network's
+  // blur: about 5 mm short per side).
+  if (beam_free != nullptr && options.beam_free_min_passes > 0) {
+    const auto& echoes = beam_free->face_echoes();
+    const Rect r0 = map.room;
+    map.room.x0 = SideFromEchoes(echoes, BeamFreeGrid::kWest, r0.x0, r0.y0, r0.y1, band, min_pts)
+                      .value_or(r0.x0);
+    map.room.x1 = SideFromEchoes(echoes, BeamFreeGrid::kEast, r0.x1, r0.y0, r0.y1, band, min_pts)
+                      .value_or(r0.x1);
+    map.room.y0 = SideFromEchoes(echoes, BeamFreeGrid::kSouth, r0.y0, r0.x0, r0.x1, band, min_pts)
+                      .value_or(r0.y0);
+    map.room.y1 = SideFromEchoes(echoes, BeamFreeGrid::kNorth, r0.y1, r0.x0, r0.x1, band, min_pts)
+                      .value_or(r0.y1);
   }
   if (map.room.x1 - map.room.x0 < res || map.room.y1 - map.room.y0 < res) {
     map.room = {inside.x() - res, inside.y() - res, inside.x() + res, inside.y() + res};
@@ -340,6 +395,8 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
   int next_id = 0;
   std::vector<Rect> blobs;
   std::vector<int> blob_of;  // the blob each piece was cut from
+  // Which sides (x0, y0, x1, y1) of each piece the echoes placed: they are not snapped.
+  std::vector<std::array<bool, 4>> measured;
   for (int iy = 0; iy < H; ++iy)
     for (int ix = 0; ix < W; ++ix) {
       // Obstacle blobs are the cells never seen free (their inside stays unknown) that touch
@@ -420,6 +477,26 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
           r.y0 = FitSide(s, res, wide, sigma, 2).value_or(r.y0);
           r.y1 = FitSide(n, res, wide, sigma, 2).value_or(r.y1);
         }
+        std::array<bool, 4> side_measured{false, false, false, false};
+        // Each side at the faces the sonar axes heard head-on there, when at least
+        // beam_free_min_passes of them did: an echo gives the face to the range noise (1 cm),
+        // the grid's cells to 5 cm and the network's blur.
+        if (beam_free != nullptr && options.beam_free_min_passes > 0) {
+          const auto& echoes = beam_free->face_echoes();
+          const int k = options.beam_free_min_passes;
+          const Rect r0 = r;
+          const auto x0 = SideFromEchoes(echoes, BeamFreeGrid::kEast, r0.x0, r0.y0, r0.y1, band, k);
+          const auto x1 = SideFromEchoes(echoes, BeamFreeGrid::kWest, r0.x1, r0.y0, r0.y1, band, k);
+          const auto y0 =
+              SideFromEchoes(echoes, BeamFreeGrid::kNorth, r0.y0, r0.x0, r0.x1, band, k);
+          const auto y1 =
+              SideFromEchoes(echoes, BeamFreeGrid::kSouth, r0.y1, r0.x0, r0.x1, band, k);
+          r.x0 = x0.value_or(r0.x0);
+          r.x1 = x1.value_or(r0.x1);
+          r.y0 = y0.value_or(r0.y0);
+          r.y1 = y1.value_or(r0.y1);
+          side_measured = {x0.has_value(), y0.has_value(), x1.has_value(), y1.has_value()};
+        }
         r.x0 = std::max(r.x0, map.room.x0);
         r.x1 = std::min(r.x1, map.room.x1);
         r.y0 = std::max(r.y0, map.room.y0);
@@ -427,6 +504,7 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
         if (r.x1 - r.x0 < res || r.y1 - r.y0 < res) continue;
         blobs.push_back(r);
         blob_of.push_back(next_id);
+        measured.push_back(side_measured);
       }
     }
   // Pieces of different blobs closer than obstacle_join_m to each other: the robot cannot drive
@@ -453,6 +531,8 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
         blobs[i] = extent;
         blobs.erase(blobs.begin() + static_cast<std::ptrdiff_t>(j));
         blob_of.erase(blob_of.begin() + static_cast<std::ptrdiff_t>(j));
+        measured[i] = {false, false, false, false};
+        measured.erase(measured.begin() + static_cast<std::ptrdiff_t>(j));
         merged = true;
       }
   }
@@ -464,10 +544,10 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
     if (map.room.x1 - r.x1 < join) r.x1 = map.room.x1;
     if (r.y0 - map.room.y0 < join) r.y0 = map.room.y0;
     if (map.room.y1 - r.y1 < join) r.y1 = map.room.y1;
-    r.x0 = Snap(r.x0, xs, options.snap_distance_m);
-    r.x1 = Snap(r.x1, xs, options.snap_distance_m);
-    r.y0 = Snap(r.y0, ys, options.snap_distance_m);
-    r.y1 = Snap(r.y1, ys, options.snap_distance_m);
+    if (!measured[k][0]) r.x0 = Snap(r.x0, xs, options.snap_distance_m);
+    if (!measured[k][2]) r.x1 = Snap(r.x1, xs, options.snap_distance_m);
+    if (!measured[k][1]) r.y0 = Snap(r.y0, ys, options.snap_distance_m);
+    if (!measured[k][3]) r.y1 = Snap(r.y1, ys, options.snap_distance_m);
     if (r.x1 - r.x0 < res || r.y1 - r.y0 < res) continue;
     xs.insert(xs.end(), {r.x0, r.x1});
     ys.insert(ys.end(), {r.y0, r.y1});

@@ -47,7 +47,10 @@ struct CognitiveMapOptions {
   // this many beam axes passed through counts as seen free for placing the room's sides (the
   // network sees +-0.7 m only, so a wall beyond boxes the robot cannot pass was never seen), and is
   // no part of an obstacle (the network paints occupied cells into gaps 0.3-0.6 m wide between a
-  // box and a wall, which then joined the box to the wall). 0: not used.
+  // box and a wall, which then joined the box to the wall). The faces those axes heard head-on
+  // (BeamFreeGrid::face_echoes) also place the sides: a room side at the median of at least
+  // min_wall_points of them within wall_band_m, an obstacle side at the median of at least this
+  // many (and then not snapped). 0: not used.
   int beam_free_min_passes = 2;
   // @throws std::invalid_argument naming the field.
   void Validate() const;

@@ -437,8 +437,9 @@ TEST(CognitiveMapTest, AWallBehindBoxesTheRobotCannotPassIsPlacedFromTheAxesFree
   for (int iy : gaps) from.emplace_back(2.5, (iy + 0.5) * kRes);
   const BeamFreeGrid beams = Beams(from, 3.14159265358979323846, 2.5 - 0.55);
   const CognitiveMap after = BuildCognitiveMap(grid, kInside, {}, &beams);
-  // Free up to 5 cm short of the wall: the cell [0.60, 0.65] is the outermost seen free.
-  EXPECT_NEAR(after.room.x0, 0.60, kTol);
+  // Free up to 5 cm short of the wall: the cell [0.60, 0.65] is the outermost seen free; the ten
+  // echoes off the wall then place the side at the face they heard.
+  EXPECT_NEAR(after.room.x0, 0.55, 1e-6);
   EXPECT_NEAR(after.room.x1, kX1, kTol);
   // With the option off the axes say nothing.
   CognitiveMapOptions off;
@@ -461,9 +462,33 @@ TEST(CognitiveMapTest, AWallHeardThroughTwoGapsOnlyIsPlacedFromTheEchoes) {
   // The echo's cell [0.55, 0.60]: its centre.
   EXPECT_NEAR(after.room.x0, 0.575, kTol);
   EXPECT_NEAR(after.room.x1, kX1, kTol);
-  // One echo per cell is not enough (beam_free_min_passes 2): the side stays on the boxes.
-  const BeamFreeGrid once = Beams(from, 3.14159265358979323846, 2.5 - 0.56, 1);
+  // One echo is not enough (beam_free_min_passes 2): the side stays on the boxes. (One through
+  // each gap is enough: the two place the same face, see the next test.)
+  const BeamFreeGrid once = Beams({from[0]}, 3.14159265358979323846, 2.5 - 0.56, 1);
   EXPECT_NEAR(BuildCognitiveMap(grid, kInside, {}, &once).room.x0, 1.55, kTol);
+  const BeamFreeGrid each_once = Beams(from, 3.14159265358979323846, 2.5 - 0.56, 1);
+  EXPECT_NEAR(BuildCognitiveMap(grid, kInside, {}, &each_once).room.x0, 0.56, 1e-9);
+}
+
+TEST(CognitiveMapTest, AWallHeardOnceEachByTwoTiltedAxesIsPlacedAtTheFaceTheyAgreeOn) {
+  // One gap; two readings through it heard the west wall (inner face x = 0.56) once each, one
+  // along -x, one 7 deg off it: their echo points lie in different cells (one echo per cell is
+  // not enough), but the face each places, range from the transducer along -x, is the same.
+  const LogOddsGrid grid = BoxFacesWithGaps({22});
+  constexpr double kPi = 3.14159265358979323846;
+  BeamFreeGrid beams(TestGridGeometry(), {});
+  msgs::RangeRing ring;
+  ring.readings.push_back({msgs::Pose2D{0.0, 0.0, 0.0}, 2.5 - 0.56, true});
+  beams.Integrate(ring, {2.5, 1.125, kPi});
+  beams.Integrate(ring, {2.5, 1.125, kPi - 0.12});
+  EXPECT_EQ(beams.Echoes(11, 22, BeamFreeGrid::kWest), 1);
+  EXPECT_NEAR(BuildCognitiveMap(grid, kInside, {}, &beams).room.x0, 0.56, 1e-9);
+  // Faces farther apart than a cell do not agree: the side stays on the boxes.
+  BeamFreeGrid apart(TestGridGeometry(), {});
+  apart.Integrate(ring, {2.5, 1.125, kPi});
+  ring.readings[0].range_m = 2.5 - 0.70;
+  apart.Integrate(ring, {2.5, 1.125, kPi - 0.12});
+  EXPECT_NEAR(BuildCognitiveMap(grid, kInside, {}, &apart).room.x0, 1.55, kTol);
 }
 
 TEST(CognitiveMapTest, OccupiedCellsTheAxesPassedDoNotJoinABoxToTheWall) {
@@ -491,6 +516,57 @@ TEST(CognitiveMapTest, OccupiedCellsTheAxesPassedDoNotJoinABoxToTheWall) {
   const BeamFreeGrid once = Beams(from, -0.5 * 3.14159265358979323846, 2.4 - 0.55, 1);
   ExpectRectNear(BuildCognitiveMap(grid, kInside, {}, &once).obstacles.at(0),
                  {kX0, 1.30, 1.55, 1.80});
+}
+
+TEST(CognitiveMapTest, SidesHeardHeadOnByTheAxesArePlacedAtTheirEchoesAndNotSnapped) {
+  // Box A's faces are heard on cell edges by the network, but A truly ends at x = 1.58 and the
+  // room's east wall at x = 3.57 (2-3 cm inside cells the grid shows free). Box B's north side
+  // (y 1.40) is within d_e (0.15 m) of A's south side (y 1.30), so without echoes A's south side
+  // snaps onto B's line.
+  const Rect a{1.05, 1.30, 1.55, 1.80}, b{2.30, 0.90, 2.80, 1.40};
+  const LogOddsGrid grid = Room({a, b});
+  const CognitiveMap before = BuildCognitiveMap(grid, kInside, {});
+  ASSERT_EQ(before.obstacles.size(), 2u);
+  ExpectRectNear(before.obstacles[0], b);
+  ExpectRectNear(before.obstacles[1], {1.05, 1.40, 1.55, 1.80});
+  EXPECT_NEAR(before.room.x1, kX1, kTol);
+
+  constexpr double kPi = 3.14159265358979323846;
+  BeamFreeGrid beams(TestGridGeometry(), {});
+  auto hear = [&](const Eigen::Vector2d& from, double heading, double range) {
+    msgs::RangeRing ring;
+    ring.range_min_m = 0.15;
+    ring.readings.push_back({msgs::Pose2D{0.0, 0.0, 0.0}, range, true});
+    for (int k = 0; k < 2; ++k) beams.Integrate(ring, {from.x(), from.y(), heading});
+  };
+  // A's south face from below (axes 8 deg off north: the face's perpendicular foot is still
+  // heard), A's east face from the east, the east wall from x = 3.0.
+  for (const double x : {1.10, 1.30, 1.50}) hear({x, 0.80}, 0.5 * kPi + 0.14, 0.50);
+  for (const double y : {1.40, 1.60}) hear({2.20, y}, kPi, 2.20 - 1.58);
+  for (const double y : {0.70, 1.10, 1.50, 1.90, 2.30}) hear({3.00, y}, 0.0, 0.57);
+  // Readings at the blanking range (the face 0.10 m away is reported at 0.15 m) place no face:
+  // they would put A's west side 5 cm inside the box.
+  for (const double y : {1.40, 1.50, 1.60}) hear({0.95, y}, 0.0, 0.15);
+  const CognitiveMap after = BuildCognitiveMap(grid, kInside, {}, &beams);
+  ASSERT_EQ(after.obstacles.size(), 2u);
+  ExpectRectNear(after.obstacles[0], b);
+  EXPECT_NEAR(after.obstacles[1].x0, 1.05, kTol);
+  EXPECT_NEAR(after.obstacles[1].y0, 1.30, 1e-6);
+  EXPECT_NEAR(after.obstacles[1].x1, 1.58, 1e-6);
+  EXPECT_NEAR(after.obstacles[1].y1, 1.80, kTol);
+  EXPECT_NEAR(after.room.x1, 3.57, 1e-6);
+  EXPECT_NEAR(after.room.x0, kX0, kTol);
+  // Four echoes are too few for a room side (min_wall_points 5), one for an obstacle's
+  // (beam_free_min_passes 2).
+  BeamFreeGrid few(TestGridGeometry(), {});
+  msgs::RangeRing ring;
+  ring.readings.push_back({msgs::Pose2D{0.0, 0.0, 0.0}, 0.57, true});
+  for (const double y : {0.70, 1.10, 1.50, 1.90}) few.Integrate(ring, {3.00, y, 0.0});
+  ring.readings[0].range_m = 2.20 - 1.58;
+  few.Integrate(ring, {2.20, 1.50, kPi});
+  const CognitiveMap too_few = BuildCognitiveMap(grid, kInside, {}, &few);
+  EXPECT_NEAR(too_few.room.x1, kX1, kTol);
+  EXPECT_NEAR(too_few.obstacles.at(1).x1, 1.55, kTol);
 }
 
 TEST(CognitiveMapTest, InvalidJoinDistanceOrFillThrowsNamingTheField) {
