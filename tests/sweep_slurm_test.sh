@@ -124,11 +124,14 @@ echo "slurm: job array results byte-identical to the local sweep"
 # 2. scancel part-way, submit again: resumes, same bytes, finished runs not redone.
 out=$("$plywood" sweep "$work/sweep.yaml" --out "$work/cancelled" --slurm --max-parallel 1)
 job=$(echo "$out" | awk '/submitted job/ {print $3}')
-for _ in $(seq 300); do
+# Up to 2 min for the first run: on a loaded 2-core machine slurmd may start the array late.
+n=0
+for _ in $(seq 1200); do
   n=$(find "$work/cancelled/runs" -mindepth 1 -maxdepth 1 -type d ! -name '.partial' 2>/dev/null | wc -l || true)
   [ "$n" -ge 1 ] && break
   sleep 0.1
 done
+[ "$n" -ge 1 ] || { echo "FAIL: no run of job $job finished within 120 s"; exit 1; }
 scancel "$job"
 wait_for_job "$job"
 before=$(find "$work/cancelled/runs" -mindepth 1 -maxdepth 1 -type d ! -name '.partial' | sort)
