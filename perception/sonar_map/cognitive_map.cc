@@ -78,6 +78,27 @@ std::optional<double> SideFromEchoes(const std::vector<BeamFreeGrid::FaceEcho>& 
   return *middle;
 }
 
+// The room side `side` moved out (sign -1 for x0 / y0, +1 for x1 / y1) to the farthest face that
+// at least min_echoes echoes heard from `direction` place within `agree` of each other (their
+// middle one), counting only faces more than `overrun` beyond the side; `side` when none.
+double FarthestAgreedFace(const std::vector<BeamFreeGrid::FaceEcho>& echoes,
+                          BeamFreeGrid::Direction direction, double side, double sign,
+                          double overrun, int min_echoes, double agree) {
+  std::vector<double> faces;
+  for (const BeamFreeGrid::FaceEcho& echo : echoes)
+    if (echo.direction == direction && sign * (echo.face - side) > overrun)
+      faces.push_back(echo.face);
+  std::sort(faces.begin(), faces.end());
+  const std::size_t n = static_cast<std::size_t>(min_echoes);
+  double best = side;
+  for (std::size_t k = 0; k + n <= faces.size(); ++k)
+    if (faces[k + n - 1] - faces[k] <= agree) {
+      const double middle = faces[k + (n - 1) / 2];
+      if (sign * (middle - best) > 0) best = middle;
+    }
+  return best;
+}
+
 double Snap(double value, const std::vector<double>& earlier, double d_e) {
   double best = value, best_d = d_e;
   for (double e : earlier) {
@@ -344,25 +365,15 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
       // The same from the faces those echoes place (BeamFreeGrid::face_echoes): min_echoes of them
       // within one cell of each other. Two axes 7 and 10 deg off the grid axis that heard the same
       // wall 2 m away put their echo points in different cells (world 19 seed 2), not their faces.
-      {
-        auto far = [&](BeamFreeGrid::Direction direction, double side, double sign) {
-          std::vector<double> f;
-          for (const auto& e : beam_free->face_echoes())
-            if (e.direction == direction && sign * (e.face - side) > overrun) f.push_back(e.face);
-          std::sort(f.begin(), f.end());
-          double best = side;
-          for (std::size_t k = 0; k + min_echoes <= f.size(); ++k)
-            if (f[k + min_echoes - 1] - f[k] <= res) {
-              const double v = f[k + (min_echoes - 1) / 2];
-              if (sign * (v - best) > 0) best = v;
-            }
-          return best;
-        };
-        map.room.x0 = far(BeamFreeGrid::kWest, map.room.x0, -1.0);
-        map.room.x1 = far(BeamFreeGrid::kEast, map.room.x1, 1.0);
-        map.room.y0 = far(BeamFreeGrid::kSouth, map.room.y0, -1.0);
-        map.room.y1 = far(BeamFreeGrid::kNorth, map.room.y1, 1.0);
-      }
+      const auto& echoes = beam_free->face_echoes();
+      map.room.x0 = FarthestAgreedFace(echoes, BeamFreeGrid::kWest, map.room.x0, -1.0, overrun,
+                                       min_echoes, res);
+      map.room.x1 = FarthestAgreedFace(echoes, BeamFreeGrid::kEast, map.room.x1, 1.0, overrun,
+                                       min_echoes, res);
+      map.room.y0 = FarthestAgreedFace(echoes, BeamFreeGrid::kSouth, map.room.y0, -1.0, overrun,
+                                       min_echoes, res);
+      map.room.y1 = FarthestAgreedFace(echoes, BeamFreeGrid::kNorth, map.room.y1, 1.0, overrun,
+                                       min_echoes, res);
     }
   }
   // Each side at the faces the sonar axes pointing that way heard head-on within the wall band of

@@ -65,6 +65,26 @@ inline double SmallestRoot(double a, double b, double c) {
   return x1 >= 0 ? x1 : -1;
 }
 
+// The nearest hit of one ray so far; exact ties go to the lower geom id, as in mj_ray's loop over
+// geoms.
+struct NearestHit {
+  double t = kInf;
+  int id = std::numeric_limits<int>::max();
+  void Consider(double candidate_t, int candidate_id) {
+    if (candidate_t >= 0 && (candidate_t < t || (candidate_t == t && candidate_id < id))) {
+      t = candidate_t;
+      id = candidate_id;
+    }
+  }
+  // A hit within max_range_m: written to *hit (distance and geom).
+  bool Report(double max_range_m, RayHit* hit) const {
+    if (id == std::numeric_limits<int>::max() || t > max_range_m) return false;
+    hit->distance_m = t;
+    hit->geom_id = id;
+    return true;
+  }
+};
+
 // A monotonic stand-in for the angle of (x, y) in [0, 2 pi): 0 along +x, 1 along +y, 2 along -x,
 // 3 along -y, in [0, 4). (x, y) must not be (0, 0).
 inline double DiamondAngle(double x, double y) {
@@ -499,42 +519,26 @@ void GridRayCaster2D::CastRays(const Eigen::Vector3d* origins_W, int origin_step
   const Shape* shapes = shapes_.data();
   const FanEntry* entries = f.entries.data();
   for (int i = 0; i < count; ++i) {
-    // The same levelling as CastRay.
-    Eigen::Vector3d dir_W = dirs_W[i];
-    if (dir_W.z() != 0.0 && std::abs(dir_W.z()) <= level_tolerance_ * dir_W.head<2>().norm()) {
-      dir_W.z() = 0.0;
-      dir_W.normalize();
-    }
+    const Eigen::Vector3d dir_W = LevelledDirection(dirs_W[i]);
     const double* v = dir_W.data();
     if (v[2] != 0.0 || (v[0] == 0.0 && v[1] == 0.0)) {
       found[i] = CastRay(origins_W[i * origin_step], dirs_W[i], max_range_m, with_normal, &hits[i]);
       continue;
     }
     const double* ray_o = origins_W[i * origin_step].data();
-    double best_t = kInf;
-    int best_id = std::numeric_limits<int>::max();
-    const auto consider = [&best_t, &best_id](double t, int id) {
-      if (t >= 0 && (t < best_t || (t == best_t && id < best_id))) {
-        best_t = t;
-        best_id = id;
-      }
-    };
-    for (int g : fallback_horizontal_) consider(IntersectFallback(g, ray_o, v), g);
+    NearestHit nearest;
+    for (int g : fallback_horizontal_) nearest.Consider(IntersectFallback(g, ray_o, v), g);
     const double key = DiamondAngle(v[0], v[1]);
     const int bin = FanBin(key);
     for (uint32_t k = f.bin_begin[bin], end = f.bin_begin[bin + 1]; k < end; ++k) {
       const FanEntry& e = entries[k];
-      if (e.min_d > best_t) break;
+      if (e.min_d > nearest.t) break;
       if (key < e.lo || key > e.hi) continue;
       const Shape& s = shapes[e.shape];
-      consider(IntersectShape(s, ray_o, v, /*horizontal=*/true), s.geom_id);
+      nearest.Consider(IntersectShape(s, ray_o, v, /*horizontal=*/true), s.geom_id);
     }
-    found[i] = best_id != std::numeric_limits<int>::max() && best_t <= max_range_m;
-    if (!found[i]) continue;
-    RayHit* hit = &hits[i];
-    hit->distance_m = best_t;
-    hit->geom_id = best_id;
-    if (with_normal) SetNormal(origins_W[i * origin_step], dir_W, hit);
+    found[i] = nearest.Report(max_range_m, &hits[i]);
+    if (found[i] && with_normal) SetNormal(origins_W[i * origin_step], dir_W, &hits[i]);
   }
 }
 
@@ -548,31 +552,18 @@ void GridRayCaster2D::SetNormal(const Eigen::Vector3d& origin_W, const Eigen::Ve
 
 bool GridRayCaster2D::CastRay(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& given_dir_W,
                               double max_range_m, bool with_normal, RayHit* hit) const {
-  Eigen::Vector3d dir_W = given_dir_W;
-  if (dir_W.z() != 0.0 && std::abs(dir_W.z()) <= level_tolerance_ * dir_W.head<2>().norm()) {
-    dir_W.z() = 0.0;
-    dir_W.normalize();
-  }
+  const Eigen::Vector3d dir_W = LevelledDirection(given_dir_W);
   const double* o = origin_W.data();
   const double* v = dir_W.data();
   const bool horizontal = v[2] == 0.0;
 
-  // Nearest hit so far; exact ties go to the lower geom id, as in mj_ray's loop over geoms.
-  double best_t = kInf;
-  int best_id = std::numeric_limits<int>::max();
-  auto consider = [&best_t, &best_id](double t, int id) {
-    if (t >= 0 && (t < best_t || (t == best_t && id < best_id))) {
-      best_t = t;
-      best_id = id;
-    }
-  };
-
+  NearestHit nearest;
   for (int g : horizontal ? fallback_horizontal_ : fallback_all_) {
-    consider(IntersectFallback(g, o, v), g);
+    nearest.Consider(IntersectFallback(g, o, v), g);
   }
 
   // Clip the ray's floor-plane projection to the grid rectangle.
-  double t_in = 0.0, t_far = std::min(max_range_m, best_t);
+  double t_in = 0.0, t_far = std::min(max_range_m, nearest.t);
   const double lo[2] = {x0_, y0_};
   const double hi[2] = {x0_ + nx_ * cell_m_, y0_ + ny_ * cell_m_};
   bool inside = nx_ > 0;
@@ -620,7 +611,7 @@ bool GridRayCaster2D::CastRay(const Eigen::Vector3d& origin_W, const Eigen::Vect
       double z_lo = o[2], z_hi = o[2];
       if (!horizontal) {
         const double z_a = o[2] + t_in * v[2];
-        const double z_b = o[2] + std::min(t_out, std::min(max_range_m, best_t)) * v[2];
+        const double z_b = o[2] + std::min(t_out, std::min(max_range_m, nearest.t)) * v[2];
         z_lo = std::min(z_a, z_b);
         z_hi = std::max(z_a, z_b);
       }
@@ -634,9 +625,9 @@ bool GridRayCaster2D::CastRay(const Eigen::Vector3d& origin_W, const Eigen::Vect
         if (seen) continue;
         recent[recent_next] = index;
         recent_next = (recent_next + 1) & (kRecent - 1);
-        consider(IntersectShape(s, o, v, horizontal), s.geom_id);
+        nearest.Consider(IntersectShape(s, o, v, horizontal), s.geom_id);
       }
-      if (std::min(best_t, max_range_m) <= t_out + kStopSlackM) break;
+      if (std::min(nearest.t, max_range_m) <= t_out + kStopSlackM) break;
       if (t_max_x < t_max_y) {
         ix += step_x;
         if (ix < 0 || ix >= nx) break;
@@ -651,11 +642,18 @@ bool GridRayCaster2D::CastRay(const Eigen::Vector3d& origin_W, const Eigen::Vect
     }
   }
 
-  if (best_id == std::numeric_limits<int>::max() || best_t > max_range_m) return false;
-  hit->distance_m = best_t;
-  hit->geom_id = best_id;
+  if (!nearest.Report(max_range_m, hit)) return false;
   if (with_normal) SetNormal(origin_W, dir_W, hit);
   return true;
+}
+
+Eigen::Vector3d GridRayCaster2D::LevelledDirection(const Eigen::Vector3d& dir_W) const {
+  if (dir_W.z() == 0.0 || std::abs(dir_W.z()) > level_tolerance_ * dir_W.head<2>().norm()) {
+    return dir_W;
+  }
+  Eigen::Vector3d levelled(dir_W.x(), dir_W.y(), 0.0);
+  levelled.normalize();
+  return levelled;
 }
 
 }  // namespace plywood::sim

@@ -115,6 +115,9 @@ class GridRayCaster2D : public RayCaster {
 
   bool CastRay(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W, double max_range_m,
                bool with_normal, RayHit* hit) const;
+  // dir_W with its z set to 0 and renormalised when it is within level_tolerance_rad of level
+  // (CastRay and CastRays level alike), else dir_W.
+  Eigen::Vector3d LevelledDirection(const Eigen::Vector3d& dir_W) const;
   // CastBatch's work; ray i starts at origins_W[i * origin_step] (origin_step 0 or 1).
   void CastRays(const Eigen::Vector3d* origins_W, int origin_step, const Eigen::Vector3d* dirs_W,
                 int count, double max_range_m, bool with_normal, RayHit* hits, bool* found) const;

@@ -86,8 +86,8 @@ void SonarSensor::Measure(const Scene& scene, const RayCaster& caster, msgs::Ran
   for (std::size_t k = 0; k < sites_.size(); ++k) {
     msgs::RangeReading& reading = out->readings[k];
     reading.X_RS = sites_[k].X_RS;
-    double range_m = EchoRange(X_WS_[k], caster, ray_hits_.data() + k * per_cone,
-                               ray_found_.get() + k * per_cone);
+    double range_m = EchoRange(X_WS_[k], caster, ray_dirs_W_.data() + k * per_cone,
+                               ray_hits_.data() + k * per_cone, ray_found_.get() + k * per_cone);
     if (range_m >= 0.0 && !options_.noise_free) {
       range_m += options_.range_noise_fraction * range_m * unit_noise(rng_);
     }
@@ -97,7 +97,8 @@ void SonarSensor::Measure(const Scene& scene, const RayCaster& caster, msgs::Ran
 }
 
 double SonarSensor::EchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& caster,
-                              const RayHit* cone_hits, const bool* cone_found) const {
+                              const Eigen::Vector3d* cone_dirs_W, const RayHit* cone_hits,
+                              const bool* cone_found) const {
   const Eigen::Matrix3d R_WS = X_WS.linear();
   const Eigen::Vector3d p_WS = X_WS.translation();
   const double range_max_m = options_.range_max_m;
@@ -108,12 +109,12 @@ double SonarSensor::EchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& ca
   bool central_seen = false;
   double foot_m = kInf;  // nearest perpendicular foot of a hit plane that lies inside the beam
   Eigen::Vector3d foot_dir_S = Eigen::Vector3d::UnitX();
-  RayHit hit, hit2;
+  RayHit hit2;
   for (std::size_t j = 0; j < dirs_S_.size(); ++j) {
-    const Eigen::Vector3d dir_W = R_WS * dirs_S_[j];
     if (!cone_found[j]) continue;
-    hit = cone_hits[j];
+    const RayHit& hit = cone_hits[j];
     if (hit.distance_m >= range_max_m) continue;
+    const Eigen::Vector3d& dir_W = cone_dirs_W[j];
     const bool is_central = !central_seen;
     central_seen = true;
     const Eigen::Vector3d& n_W = hit.normal_W;
@@ -159,9 +160,10 @@ double SonarSensor::EchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& ca
 
   if (foot_m < best_m) {
     const Eigen::Vector3d dir_W = R_WS * foot_dir_S;
-    if (caster.Cast(p_WS, dir_W, range_max_m, &hit) && hit.distance_m < range_max_m &&
-        -dir_W.dot(hit.normal_W) >= cos_incidence_limit_) {
-      best_m = std::min(best_m, hit.distance_m);
+    RayHit foot;
+    if (caster.Cast(p_WS, dir_W, range_max_m, &foot) && foot.distance_m < range_max_m &&
+        -dir_W.dot(foot.normal_W) >= cos_incidence_limit_) {
+      best_m = std::min(best_m, foot.distance_m);
     }
   }
   if (best_m < range_max_m) return best_m;

@@ -73,9 +73,10 @@ class SonarSensor {
   const SonarOptions& options() const { return options_; }
 
  private:
-  // The noise-free echo range of one transducer, or a negative value for no echo. `cone_hits`
-  // and `cone_found`: the casts of its cone's rays (dirs_S_ from X_WS, in order).
-  double EchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& caster, const RayHit* cone_hits,
+  // The noise-free echo range of one transducer, or a negative value for no echo. `cone_dirs_W`,
+  // `cone_hits` and `cone_found`: its cone's rays (dirs_S_ from X_WS, in order) and their casts.
+  double EchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& caster,
+                   const Eigen::Vector3d* cone_dirs_W, const RayHit* cone_hits,
                    const bool* cone_found) const;
 
   const SonarOptions options_;
