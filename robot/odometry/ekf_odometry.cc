@@ -41,6 +41,8 @@ enum Index {
 constexpr double kStopFromSpeedMS = 0.05;
 constexpr double kStopSpeedFraction = 0.25;
 constexpr double kStopTurnRadS = 0.2;
+// The braking test (EkfOdometryOptions::braking_window_s): a deceleration above this (m/s^2).
+constexpr double kBrakingMS2 = 0.5;
 
 }  // namespace
 
@@ -67,6 +69,7 @@ void EkfOdometryOptions::Validate() const {
     }
   }
   RequireNonNegative("stop_displacement_sigma_m", stop_displacement_sigma_m);
+  RequireNonNegative("braking_window_s", braking_window_s);
   for (const auto& [field, value] :
        {std::pair{"wheel_diameter_ratio_prior", wheel_diameter_ratio_prior},
         std::pair{"track_ratio_prior", track_ratio_prior}}) {
@@ -147,6 +150,9 @@ void EkfOdometry::Step(const OdometryIncrement& increment) {
   const bool stop_into_turn = previous_speed_m_s_ >= kStopFromSpeedMS &&
                               speed_m_s < kStopSpeedFraction * previous_speed_m_s_ &&
                               std::abs(increment.dtheta_encoder_rad) / dt >= kStopTurnRadS;
+  if (options_.braking_window_s > 0.0 && previous_speed_m_s_ - ds / dt > kBrakingMS2 * dt) {
+    braking_until_s_ = increment.start_s + options_.braking_window_s;
+  }
   previous_speed_m_s_ = ds / dt;
   double stop_x = 0.0, stop_y = 0.0;  // in the world frame
   const double approach = state_(kTheta);
@@ -221,6 +227,10 @@ void EkfOdometry::Step(const OdometryIncrement& increment) {
   const double predicted = e_b * turn - travel_over_track * (e_d - 1.0) / (e_d + 1.0);
   const double innovation = increment.dtheta_encoder_rad - predicted;
   const double innovation_variance = (H * covariance_ * H.transpose())(0, 0) + r_encoder;
+  if (!stands_still && increment.end_s <= braking_until_s_ + 1e-9) {
+    ++gated_;  // a braking transient: the prediction (gyro) stands
+    return;
+  }
   const Vector7 gain = covariance_ * H.transpose() / innovation_variance;
   state_ += gain * innovation;
   // Joseph form keeps the covariance symmetric and positive over very long runs.

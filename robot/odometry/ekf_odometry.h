@@ -56,6 +56,14 @@ struct EkfOdometryOptions {
   double stop_displacement_along_m = 0.0;
   double stop_displacement_outward_m = 0.0;
   double stop_displacement_sigma_m = 0.0;
+  // Braking transient: from an encoder interval whose speed fell by more than 0.5 m/s^2 x its
+  // duration below the previous interval's (harder than a gentle stop), the encoder heading
+  // changes of this long (s) are not used and the gyro carries the heading. Braking from speed into
+  // a turn on the spot, the simulated P3-DX's wheels turn ~1 deg further than its body (0.6 deg in
+  // the braking interval, 0.4 deg 0.3 s later as the body rocks back; docs/odometry.md): 15-20
+  // sigma outliers of the slip model that the filter would otherwise put into E_b and the bias.
+  // A calibration of the drive (how long its braking transient lasts); 0: off.
+  double braking_window_s = 0.0;
 
   // @throws std::invalid_argument naming the offending field.
   void Validate() const;
@@ -92,6 +100,8 @@ class EkfOdometry final : public OdometryEstimator {
   double track_ratio() const { return state_(5); }
   // How many stops into a turn on the spot got the stop displacement.
   int stops() const { return stops_; }
+  // How many encoder heading changes the braking window left out.
+  int gated() const { return gated_; }
 
  private:
   void Drain();
@@ -103,6 +113,8 @@ class EkfOdometry final : public OdometryEstimator {
   Eigen::Matrix<double, 7, 7> covariance_;
   double previous_speed_m_s_ = 0.0;  // of the last encoder interval
   int stops_ = 0;
+  int gated_ = 0;
+  double braking_until_s_ = -1.0;  // end of the current braking window
 };
 
 }  // namespace plywood::robot

@@ -266,6 +266,10 @@ TEST(OdometryEstimatorsTest, OptionsRejectBadValuesNamingTheField) {
               EkfOdometryOptions{.increments = {}, .stop_displacement_sigma_m = -1}.Validate();
             }).rfind("stop_displacement_sigma_m:", 0),
             0u);
+  EXPECT_EQ(message([] {
+              EkfOdometryOptions{.increments = {}, .braking_window_s = -1}.Validate();
+            }).rfind("braking_window_s:", 0),
+            0u);
   EXPECT_EQ(
       message([] { OdometryCalibration{.track_ratio = 3}.Validate(); }).rfind("track_ratio:", 0),
       0u);

@@ -67,6 +67,7 @@ void VisitFields(A& a, robot::EkfOdometryOptions& o) {
   a("stop_displacement_along_m", o.stop_displacement_along_m);
   a("stop_displacement_outward_m", o.stop_displacement_outward_m);
   a("stop_displacement_sigma_m", o.stop_displacement_sigma_m);
+  a("braking_window_s", o.braking_window_s);
 }
 
 namespace {
