@@ -8,6 +8,7 @@
 
 #include "msgs/shortest_number.h"
 #include "perception/sonar_map/echo_gated_model.h"
+#include "perception/sonar_map/escape_cells.h"
 #include "perception/sonar_map/frontier_planner.h"
 #include "perception/sonar_map/obstacle_circuit.h"
 #include "robot/drive/diff_drive_kinematics.h"
@@ -468,21 +469,28 @@ SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here
   const std::vector<char> near_heard = Dilate(heard, W, H, options_.path_clearance_m / res);
   const std::vector<char> narrow = Dilate(occupied, W, H, options_.narrow_clearance_m / res);
   const std::vector<char> narrow_heard = Dilate(heard, W, H, options_.narrow_clearance_m / res);
-  for (auto* mask :
-       {&out.safe, &out.safe_from_heard, &out.narrow_safe, &out.narrow_safe_from_heard})
-    mask->assign(occupied.size(), 0);
+  // The robot may be closer than the clearance to something (after a blocked move, in a narrow
+  // passage): the free cells within path_clearance_m of it stay usable so that it can leave, as
+  // long as they are no nearer to what that clearance keeps it from than its own cell
+  // (escape_cells.h; every free cell near it let a path cut a box corner, layout 3 seed 18).
+  std::vector<char> around(occupied.size(), 0);
   for (int iy = 0; iy < H; ++iy)
     for (int ix = 0; ix < W; ++ix) {
       const std::size_t i = static_cast<std::size_t>(iy) * W + ix;
-      // The robot may be closer than the clearance to something (after a blocked move): the free
-      // cells around it stay usable so that it can leave.
-      const bool escape = out.cells.cells[i] == CellState::kFree &&
-                          (grid_.CellCentre(ix, iy) - here).norm() < options_.path_clearance_m;
-      out.safe[i] = !near[i] || escape;
-      out.safe_from_heard[i] = !near_heard[i] || escape;
-      out.narrow_safe[i] = !narrow[i] || escape;
-      out.narrow_safe_from_heard[i] = !narrow_heard[i] || escape;
+      around[i] = out.cells.cells[i] == CellState::kFree &&
+                  (grid_.CellCentre(ix, iy) - here).norm() < options_.path_clearance_m;
     }
+  const Eigen::Vector2i start = grid_.CellAt(here);
+  const auto usable = [&](std::vector<char>& mask, const std::vector<char>& near_mask,
+                          const std::vector<char>& blocking, double clearance_m) {
+    const std::vector<char> escape = EscapeCells(around, blocking, W, H, start, clearance_m / res);
+    mask.assign(occupied.size(), 0);
+    for (std::size_t i = 0; i < mask.size(); ++i) mask[i] = !near_mask[i] || escape[i];
+  };
+  usable(out.safe, near, occupied, options_.path_clearance_m);
+  usable(out.safe_from_heard, near_heard, heard, options_.path_clearance_m);
+  usable(out.narrow_safe, narrow, occupied, options_.narrow_clearance_m);
+  usable(out.narrow_safe_from_heard, narrow_heard, heard, options_.narrow_clearance_m);
   return out;
 }
 

@@ -156,7 +156,8 @@ class SonarExplorer final : public robot::Controller {
   bool Abandoned(const Eigen::Vector2d& target) const;
   // The grid's cells as free / occupied / unknown (fitted obstacles occupied), and which of them
   // keep path_clearance_m from everything occupied, or from the occupied cells only (frontier
-  // paths: a fitted obstacle may be a blob of space not yet seen).
+  // paths: a fitted obstacle may be a blob of space not yet seen); near the robot also the free
+  // cells no nearer to those than its own cell (EscapeCells), so that it can leave.
   struct PlanningCells {
     CellMap cells;
     std::vector<char> safe;
