@@ -9,9 +9,9 @@ namespace {
 
 // Distance of `q` from the total-least-squares line of `moments`.
 double FitDistance(const LineMoments& moments, const Eigen::Vector2d& q) {
-  double alpha = 0.0, r = 0.0;
-  moments.Fit(&alpha, &r);
-  return std::abs(q.x() * std::cos(alpha) + q.y() * std::sin(alpha) - r);
+  double alpha = 0.0, r = 0.0, c = 0.0, s = 0.0;
+  moments.FitWithNormal(&alpha, &r, &c, &s);
+  return std::abs(q.x() * c + q.y() * s - r);
 }
 
 // The end-point fit splits a corner at the point farthest from the chord, so a few points of one
@@ -63,7 +63,8 @@ void MoveCornerPoints(std::span<const Eigen::Vector2d> p, std::vector<int>* left
 }  // namespace
 
 void RefineCorners(std::span<const Eigen::Vector2d> points, std::span<const int> group,
-                   bool closed_loop, std::vector<std::vector<int>>* lines) {
+                   bool closed_loop, std::vector<std::vector<int>>* lines,
+                   std::vector<LineMoments>* given_moments) {
   std::vector<std::vector<int>>& l = *lines;
   if (l.size() < 2) return;
   // Position in the group of each line's first and last point (lines follow the group's order).
@@ -83,9 +84,13 @@ void RefineCorners(std::span<const Eigen::Vector2d> points, std::span<const int>
     const int gap = first[right] - last[left];
     return last[left] >= 0 && first[right] >= 0 && gap >= 0 && gap <= 2;
   };
-  std::vector<LineMoments> moments(l.size());
-  for (std::size_t k = 0; k < l.size(); ++k)
-    for (int i : l[k]) moments[k].Add(points[i]);
+  std::vector<LineMoments> own_moments;
+  if (given_moments == nullptr) {
+    own_moments.resize(l.size());
+    for (std::size_t k = 0; k < l.size(); ++k)
+      for (int i : l[k]) own_moments[k].Add(points[i]);
+  }
+  std::vector<LineMoments>& moments = given_moments != nullptr ? *given_moments : own_moments;
   for (std::size_t k = 0; k + 1 < l.size(); ++k) {
     if (neighbours(k, k + 1)) {
       MoveCornerPoints(points, &l[k], &l[k + 1], moments[k], moments[k + 1]);

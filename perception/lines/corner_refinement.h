@@ -4,6 +4,8 @@
 #include <span>
 #include <vector>
 
+#include "perception/lines/tls_line_fit.h"
+
 namespace plywood::perception {
 
 // Corner contamination: an extractor that cuts a breakpoint group into lines by a distance gate
@@ -15,7 +17,10 @@ namespace plywood::perception {
 // group between them, e.g. a skipped outlier; or a split point both share) while a point fits the
 // other line better than its own refitted without it. Noise-free corners come out exact.
 // `closed_loop`: the group is a whole closed scan, so its last line meets its first.
+// `moments`, when given, holds each line's LineMoments with its points added in order (what the
+// refinement would otherwise sum first; split_and_merge's merge step has them) and is updated.
 void RefineCorners(std::span<const Eigen::Vector2d> points, std::span<const int> group,
-                   bool closed_loop, std::vector<std::vector<int>>* lines);
+                   bool closed_loop, std::vector<std::vector<int>>* lines,
+                   std::vector<LineMoments>* moments = nullptr);
 
 }  // namespace plywood::perception

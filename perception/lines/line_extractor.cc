@@ -50,17 +50,25 @@ std::vector<std::vector<int>> SplitAtBreakpoints(const ScanPoints& scan,
   const int beam_count = static_cast<int>(scan.beam_index.size());
   const double three_sigma_m = 3.0 * options.sigma_m, min_m = options.min_m, max_m = options.max_m;
   const int max_missing_beams = options.max_missing_beams;
-  const auto threshold = [&](int i, int j) {
+  // ScanPoints::MissingBeams's beams of a full turn, added past the seam of a closed scan.
+  const bool seam = scan.closed && scan.angle_increment_rad != 0.0;
+  const int full_turn = seam ? static_cast<int>(std::lround(2.0 * std::numbers::pi /
+                                                            std::abs(scan.angle_increment_rad)))
+                             : 0;
+  // i before j in scan order: OpeningBetween (ScanPoints::MissingBeams), then the distance test
+  // against the adaptive threshold, the same arithmetic written out on the local copies.
+  // Always inlined: the loop below asks it once per point.
+  const auto near = [&](int i, int j) __attribute__((always_inline)) {
+    const int beam_step = beam_index[j] - beam_index[i];
+    const int steps_seen = beam_step <= 0 && seam ? beam_step + full_turn : beam_step;
+    if (std::max(0, steps_seen - 1) > max_missing_beams) return false;
     // Invalid beams may lie between neighbours: scale by the number of beam steps.
-    const int beam_steps = std::abs(beam_index[j] - beam_index[i]);
+    const int beam_steps = std::abs(beam_step);
     const double steps = beam_steps >= 1 && beam_steps < beam_count ? beam_steps : 1;
     const double d = std::min(range_m[i], range_m[j]) * ratio * steps + three_sigma_m;
-    return std::min(max_m, std::max(min_m, d));
-  };
-  // i before j in scan order. Always inlined: the loop below asks it once per point.
-  const auto near = [&](int i, int j) __attribute__((always_inline)) {
-    return !OpeningBetween(scan, i, j, max_missing_beams) &&
-           (points[i] - points[j]).norm() <= threshold(i, j);
+    const double threshold = std::min(max_m, std::max(min_m, d));
+    const double dx = points[i].x() - points[j].x(), dy = points[i].y() - points[j].y();
+    return std::sqrt(dx * dx + dy * dy) <= threshold;  // Eigen's norm(), the same sum
   };
   // For a closed scan start at a breakpoint so no wall is cut at the seam.
   int start = 0;
@@ -101,21 +109,28 @@ std::vector<std::vector<int>> SplitAtBreakpoints(const ScanPoints& scan,
   const bool closed_order = scan.closed && n > 2;
   // The k-th point in scan order from `start`, for 0 <= k < 2 n.
   const auto order = [&](int k) { return start + k < n ? start + k : start + k - n; };
+  // near(i, i + 1) for every point in one straight pass (and near(n - 1, 0) past the seam of a
+  // closed scan): the loop below asks it of neighbours in scan order (order(k) and
+  // order(k + 1) are i and (i + 1) % n), and only asks near() itself after a dropped lone outlier.
+  std::vector<char> near_next(n, 0);
+  for (int i = 0; i + 1 < n; ++i) near_next[i] = near(i, i + 1);
+  if (closed_order) near_next[n - 1] = near(n - 1, 0);
   // One scratch vector for the group being built; each group is copied out at its exact size.
   std::vector<int> current;
   current.reserve(n);
   current.push_back(order(0));
-  for (int k = 1; k < n; ++k) {
-    const int i = order(k);
-    const int previous = current.empty() ? order(k - 1) : current.back();
-    if (near(previous, i)) {
+  // i = order(k) and before = order(k - 1), stepped along instead of recomputed.
+  for (int k = 1, before = start, i = order(1); k < n;
+       ++k, before = i, i = i + 1 == n ? 0 : i + 1) {
+    const int previous = current.back();  // never empty here
+    if (previous == before ? near_next[before] : near(previous, i)) {
       current.push_back(i);
       continue;
     }
     // Lone outlier: i is far from its predecessor, but the predecessor is near the next point.
-    if (options.drop_lone_outliers && !current.empty() && (k + 1 < n || closed_order)) {
-      const int next = order((k + 1) % n);
-      if ((k + 1 < n || closed_order) && !near(i, next) && near(previous, next)) continue;
+    if (options.drop_lone_outliers && (k + 1 < n || closed_order)) {
+      const int next = order((k + 1) % n);  // (i + 1) % n
+      if (!near_next[i] && near(previous, next)) continue;
     }
     groups.emplace_back(current.begin(), current.end());
     current.clear();

@@ -195,10 +195,20 @@ void RemoveRoundObjects(std::span<const Eigen::Vector2d> points, double noise_si
   if (!options.reject_round_objects || lines->empty()) return;
   const int count = static_cast<int>(lines->size());
   std::vector<char> drop(count, 0);
-  // Bounding box of each line's points.
+  // Points on a circle of radius R lie within 2 R of each other. A line whose first and last
+  // points are farther apart than that is in no round run: every box holding it is wider (the
+  // box's sides are at least the ends' differences, rounding being monotonic), so the test below
+  // would stop at it; its box is not needed.
+  const double max_extent_m = 2.0 * options.max_round_radius_m;
+  std::vector<char> wide(count, 0);
+  // Bounding box of each other line's points.
   std::vector<Eigen::Vector2d> box_lo(count), box_hi(count);
   for (int k = 0; k < count; ++k) {
     if ((*lines)[k].empty()) continue;
+    if ((points[(*lines)[k].front()] - points[(*lines)[k].back()]).norm() > max_extent_m) {
+      wide[k] = 1;
+      continue;
+    }
     box_lo[k] = box_hi[k] = points[(*lines)[k].front()];
     for (int i : (*lines)[k]) {
       box_lo[k] = box_lo[k].cwiseMin(points[i]);
@@ -221,9 +231,9 @@ void RemoveRoundObjects(std::span<const Eigen::Vector2d> points, double noise_si
     Eigen::Vector2d lo = box_lo[first], hi = box_hi[first];
     for (int last = first + 1; last < count; ++last) {
       if ((*lines)[last].empty()) break;
-      // Points on a circle of radius R lie within 2 R of each other.
+      if (wide[first] || wide[last]) break;
       lo = lo.cwiseMin(box_lo[last]), hi = hi.cwiseMax(box_hi[last]);
-      if ((hi - lo).norm() > 2.0 * options.max_round_radius_m) break;
+      if ((hi - lo).norm() > max_extent_m) break;
       if (auto c = RoundRun(points, noise_sigma_m, options, *lines, first, last)) {
         round_last = last;
         circle = std::move(c);

@@ -63,31 +63,47 @@ std::vector<LineSegment> SplitAndMergeExtractor::Run(const ScanPoints& scan,
     // chord of a long group passes far from its middle).
     // The moments of merged.back(), its points added in order: adding a piece's points to a copy
     // gives the union's moments bit for bit as a fit of the union from scratch would.
+    // merged_moments[k] is merged[k]'s, which the corner refinement below would sum again.
     std::vector<std::vector<int>> merged;
+    std::vector<LineMoments> merged_moments;
     merged.reserve(pieces.size());
-    LineMoments back_moments;
+    merged_moments.reserve(pieces.size());
     for (auto& piece : pieces) {
       if (piece.size() < 2) continue;
+      // The piece's own moments, summed in the same pass as the union's.
+      LineMoments own;
       if (!merged.empty()) {
-        LineMoments m = back_moments;
-        for (int i : piece) m.Add(p[i]);
-        double alpha = 0, r = 0;
-        m.Fit(&alpha, &r);
+        LineMoments m = merged_moments.back();
+        for (int i : piece) m.Add(p[i]), own.Add(p[i]);
+        double alpha = 0, r = 0, c = 0, s = 0;
+        m.FitWithNormal(&alpha, &r, &c, &s);
         // The new piece first: a failing merge usually fails there, before the long line.
-        if (MaxLineDistance(p, piece, alpha, r) <= threshold &&
-            MaxLineDistance(p, merged.back(), alpha, r) <= threshold) {
+        if (WithinLineDistance(p, piece, c, s, r, threshold) &&
+            WithinLineDistance(p, merged.back(), c, s, r, threshold)) {
           merged.back().insert(merged.back().end(), piece.begin(), piece.end());
-          back_moments = m;
+          merged_moments.back() = m;
           continue;
         }
+      } else {
+        for (int i : piece) own.Add(p[i]);
       }
-      back_moments = LineMoments();
-      for (int i : piece) back_moments.Add(p[i]);
       merged.push_back(std::move(piece));
+      merged_moments.push_back(own);
     }
+    // The lines are disjoint and keep their order: a kept line's first point finds its moments.
+    std::vector<int> fronts(merged.size());
+    for (std::size_t k = 0; k < merged.size(); ++k) fronts[k] = merged[k].front();
     RemoveRoundObjects(p, options_.breakpoints.sigma_m, options_.round_objects, &merged, circles);
+    if (merged.size() != fronts.size()) {
+      std::size_t from = 0;
+      for (std::size_t k = 0; k < merged.size(); ++k, ++from) {
+        while (fronts[from] != merged[k].front()) ++from;
+        merged_moments[k] = merged_moments[from];
+      }
+      merged_moments.resize(merged.size());
+    }
     // A closed scan without breakpoints is one group that starts and ends at the same corner.
-    RefineCorners(p, group, scan.closed && group.size() == p.size(), &merged);
+    RefineCorners(p, group, scan.closed && group.size() == p.size(), &merged, &merged_moments);
     for (const auto& piece : merged) {
       if (static_cast<int>(piece.size()) < min_points) continue;
       LineSegment s = fit(piece);

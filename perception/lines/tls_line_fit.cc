@@ -57,6 +57,25 @@ void LineMoments::Fit(double* alpha_rad, double* r_m, double* rss_m2) const {
   if (rss_m2 != nullptr) *rss_m2 = std::max(0.0, c * c * cxx + 2.0 * c * s * cxy + s * s * cyy);
 }
 
+void LineMoments::FitWithNormal(double* alpha_rad, double* r_m, double* cos_alpha,
+                                double* sin_alpha, double* rss_m2) const {
+  const double n = n_;
+  const double mx = sx_ / n, my = sy_ / n;
+  const double cxx = sxx_ - n * mx * mx, cyy = syy_ - n * my * my, cxy = sxy_ - n * mx * my;
+  const double a = 0.5 * std::atan2(-2.0 * cxy, cyy - cxx);
+  const double c = std::cos(a), s = std::sin(a);
+  const double signed_r = (mx + origin_.x()) * c + (my + origin_.y()) * s;
+  CanonicalNormalForm(a, signed_r, alpha_rad, r_m);
+  if (*alpha_rad == a) {  // |a| <= pi / 2 and r >= 0: alpha is a itself (NaN never equals)
+    *cos_alpha = c;
+    *sin_alpha = s;
+  } else {
+    *cos_alpha = std::cos(*alpha_rad);
+    *sin_alpha = std::sin(*alpha_rad);
+  }
+  if (rss_m2 != nullptr) *rss_m2 = std::max(0.0, c * c * cxx + 2.0 * c * s * cxy + s * s * cyy);
+}
+
 LineSegment FitSegmentTls(std::span<const Eigen::Vector2d> points, std::span<const int> indices) {
   LineMoments moments;
   for (int i : indices) moments.Add(points[i]);
@@ -156,6 +175,16 @@ double MaxLineDistance(std::span<const Eigen::Vector2d> points, std::span<const 
     worst = std::max(worst, std::abs(points[i].x() * c + points[i].y() * s - r_m));
   }
   return worst;
+}
+
+bool WithinLineDistance(std::span<const Eigen::Vector2d> points, std::span<const int> indices,
+                        double c, double s, double r_m, double max_distance_m) {
+  // MaxLineDistance's max starts at 0 and skips NaN distances (std::max keeps its first argument),
+  // so its result exceeds max_distance_m >= 0 exactly when some distance does.
+  for (int i : indices) {
+    if (std::abs(points[i].x() * c + points[i].y() * s - r_m) > max_distance_m) return false;
+  }
+  return true;
 }
 
 }  // namespace plywood::perception

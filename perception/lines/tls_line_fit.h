@@ -40,6 +40,11 @@ class LineMoments {
   // perpendicular distances. Returns the residual sum of squares in *rss_m2 when given.
   // @pre count() >= 2.
   void Fit(double* alpha_rad, double* r_m, double* rss_m2 = nullptr) const;
+  // Fit, and the line's unit normal: *cos_alpha and *sin_alpha are std::cos and std::sin of
+  // *alpha_rad bit for bit, taken from the fit's own (cos, sin) where the normal form did not flip
+  // it (a distance test then needs no second sincos).
+  void FitWithNormal(double* alpha_rad, double* r_m, double* cos_alpha, double* sin_alpha,
+                     double* rss_m2 = nullptr) const;
 
  private:
   int n_ = 0;
@@ -76,5 +81,10 @@ LineSegment FitSegmentModal(std::span<const Eigen::Vector2d> points, std::span<c
 // Largest perpendicular distance of points[indices] from the line (alpha, r).
 double MaxLineDistance(std::span<const Eigen::Vector2d> points, std::span<const int> indices,
                        double alpha_rad, double r_m);
+// Whether MaxLineDistance(points, indices, alpha, r) <= max_distance_m (>= 0), with the line's
+// (cos alpha, sin alpha) given (LineMoments::FitWithNormal): the same distances, and it stops at
+// the first point farther than max_distance_m.
+bool WithinLineDistance(std::span<const Eigen::Vector2d> points, std::span<const int> indices,
+                        double cos_alpha, double sin_alpha, double r_m, double max_distance_m);
 
 }  // namespace plywood::perception
