@@ -46,6 +46,11 @@ void Finish(std::span<const Eigen::Vector2d> points, std::span<const int> indice
 }  // namespace
 
 void LineMoments::Fit(double* alpha_rad, double* r_m, double* rss_m2) const {
+  FitWithNormal(alpha_rad, r_m, nullptr, nullptr, rss_m2);
+}
+
+void LineMoments::FitWithNormal(double* alpha_rad, double* r_m, double* cos_alpha,
+                                double* sin_alpha, double* rss_m2) const {
   const double n = n_;
   const double mx = sx_ / n, my = sy_ / n;
   const double cxx = sxx_ - n * mx * mx, cyy = syy_ - n * my * my, cxy = sxy_ - n * mx * my;
@@ -54,19 +59,9 @@ void LineMoments::Fit(double* alpha_rad, double* r_m, double* rss_m2) const {
   const double c = std::cos(a), s = std::sin(a);
   const double signed_r = (mx + origin_.x()) * c + (my + origin_.y()) * s;
   CanonicalNormalForm(a, signed_r, alpha_rad, r_m);
-  if (rss_m2 != nullptr) *rss_m2 = std::max(0.0, c * c * cxx + 2.0 * c * s * cxy + s * s * cyy);
-}
-
-void LineMoments::FitWithNormal(double* alpha_rad, double* r_m, double* cos_alpha,
-                                double* sin_alpha, double* rss_m2) const {
-  const double n = n_;
-  const double mx = sx_ / n, my = sy_ / n;
-  const double cxx = sxx_ - n * mx * mx, cyy = syy_ - n * my * my, cxy = sxy_ - n * mx * my;
-  const double a = 0.5 * std::atan2(-2.0 * cxy, cyy - cxx);
-  const double c = std::cos(a), s = std::sin(a);
-  const double signed_r = (mx + origin_.x()) * c + (my + origin_.y()) * s;
-  CanonicalNormalForm(a, signed_r, alpha_rad, r_m);
-  if (*alpha_rad == a) {  // |a| <= pi / 2 and r >= 0: alpha is a itself (NaN never equals)
+  if (cos_alpha == nullptr || sin_alpha == nullptr) {
+    // Fit(): the caller needs no normal.
+  } else if (*alpha_rad == a) {  // |a| <= pi / 2 and r >= 0: alpha is a itself (NaN never equals)
     *cos_alpha = c;
     *sin_alpha = s;
   } else {

@@ -42,7 +42,7 @@ class LineMoments {
   void Fit(double* alpha_rad, double* r_m, double* rss_m2 = nullptr) const;
   // Fit, and the line's unit normal: *cos_alpha and *sin_alpha are std::cos and std::sin of
   // *alpha_rad bit for bit, taken from the fit's own (cos, sin) where the normal form did not flip
-  // it (a distance test then needs no second sincos).
+  // it (a distance test then needs no second sincos); null cos_alpha / sin_alpha: Fit.
   void FitWithNormal(double* alpha_rad, double* r_m, double* cos_alpha, double* sin_alpha,
                      double* rss_m2 = nullptr) const;
 
