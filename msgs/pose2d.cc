@@ -6,6 +6,13 @@
 namespace plywood::msgs {
 
 double WrapAngle(double angle_rad) {
+  // Within two turns of 0 (nearly every call: line fits, pose products) the remainder below is
+  // angle_rad itself or angle_rad -+ 2 pi, which Sterbenz's lemma makes exact: the same bits
+  // without the std::remainder call. Both edges as below: pi stays, -pi becomes pi.
+  constexpr double kPi = std::numbers::pi;
+  if (angle_rad > -kPi && angle_rad <= kPi) return angle_rad;
+  if (angle_rad > kPi && angle_rad < 2.0 * kPi) return angle_rad - 2.0 * kPi;
+  if (angle_rad > -2.0 * kPi && angle_rad <= -kPi) return angle_rad + 2.0 * kPi;
   double wrapped = std::remainder(angle_rad, 2.0 * std::numbers::pi);
   if (wrapped <= -std::numbers::pi) wrapped += 2.0 * std::numbers::pi;
   return wrapped;

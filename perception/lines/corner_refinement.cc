@@ -7,13 +7,6 @@
 namespace plywood::perception {
 namespace {
 
-// Distance of `q` from the total-least-squares line of `moments`.
-double FitDistance(const LineMoments& moments, const Eigen::Vector2d& q) {
-  double alpha = 0.0, r = 0.0, c = 0.0, s = 0.0;
-  moments.FitWithNormal(&alpha, &r, &c, &s);
-  return std::abs(q.x() * c + q.y() * s - r);
-}
-
 // The end-point fit splits a corner at the point farthest from the chord, so a few points of one
 // wall next to the corner can stay with the other when they are within split_threshold_m of it.
 // Moves boundary points between neighbouring pieces while one fits the other line better (each
@@ -28,7 +21,7 @@ void MoveCornerPoints(std::span<const Eigen::Vector2d> p, std::vector<int>* left
     LineMoments left_without = left_moments, right_without = right_moments;
     left_without.Remove(shared);
     right_without.Remove(shared);
-    if (FitDistance(left_without, shared) <= FitDistance(right_without, shared)) {
+    if (left_without.FitDistance(shared) <= right_without.FitDistance(shared)) {
       right_moments = right_without;
       right->erase(right->begin());
     } else {
@@ -44,12 +37,12 @@ void MoveCornerPoints(std::span<const Eigen::Vector2d> p, std::vector<int>* left
     LineMoments left_without = left_moments, right_without = right_moments;
     left_without.Remove(last);
     right_without.Remove(first);
-    if (FitDistance(right_moments, last) < FitDistance(left_without, last)) {
+    if (right_moments.FitDistance(last) < left_without.FitDistance(last)) {
       left_moments = left_without;
       right_moments.Add(last);
       right->insert(right->begin(), left->back());
       left->pop_back();
-    } else if (FitDistance(left_moments, first) < FitDistance(right_without, first)) {
+    } else if (left_moments.FitDistance(first) < right_without.FitDistance(first)) {
       right_moments = right_without;
       left_moments.Add(first);
       left->push_back(right->front());

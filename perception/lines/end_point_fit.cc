@@ -19,15 +19,6 @@ double ChordDistance(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const E
   return std::abs(d.x() * (p.y() - a.y()) - d.y() * (p.x() - a.x())) / length;
 }
 
-// Distance of q from the total-least-squares line of `moments`: FitSegmentTls's alpha and r and
-// LineSegment::SignedLineDistance's arithmetic, bit for bit, without the endpoints and covariance
-// a distance test does not need.
-double FitDistance(const LineMoments& moments, const Eigen::Vector2d& q) {
-  double alpha = 0.0, r = 0.0, c = 0.0, s = 0.0;
-  moments.FitWithNormal(&alpha, &r, &c, &s);
-  return std::abs(q.dot(Eigen::Vector2d(c, s)) - r);
-}
-
 // GCC's vector extension (clang has it too): two doubles, SSE2 on x86-64, NEON on ARM.
 using DoublePair = double __attribute__((vector_size(16)));
 using BitsPair = std::int64_t __attribute__((vector_size(16)));
@@ -167,7 +158,7 @@ std::vector<std::vector<int>> SplitByEndPointFit(std::span<const Eigen::Vector2d
     for (std::size_t j = 1; j + 1 < right.size(); ++j) right_moments.Add(p[right[j]]);
     const LineMoments right_but_last = right_moments;
     right_moments.Add(p[right.back()]);
-    if (FitDistance(left_moments, shared) <= FitDistance(right_moments, shared)) {
+    if (left_moments.FitDistance(shared) <= right_moments.FitDistance(shared)) {
       right.erase(right.begin());
       carried = right_but_last;
       have_carried = true;

@@ -50,20 +50,12 @@ std::vector<std::vector<int>> SplitAtBreakpoints(const ScanPoints& scan,
   const int beam_count = static_cast<int>(scan.beam_index.size());
   const double three_sigma_m = 3.0 * options.sigma_m, min_m = options.min_m, max_m = options.max_m;
   const int max_missing_beams = options.max_missing_beams;
-  // ScanPoints::MissingBeams's beams of a full turn, added past the seam of a closed scan.
-  const bool seam = scan.closed && scan.angle_increment_rad != 0.0;
-  const int full_turn = seam ? static_cast<int>(std::lround(2.0 * std::numbers::pi /
-                                                            std::abs(scan.angle_increment_rad)))
-                             : 0;
-  // i before j in scan order: OpeningBetween (ScanPoints::MissingBeams), then the distance test
-  // against the adaptive threshold, the same arithmetic written out on the local copies.
+  // i before j in scan order: no opening between them, and within the adaptive threshold.
   // Always inlined: the loop below asks it once per point.
   const auto near = [&](int i, int j) __attribute__((always_inline)) {
-    const int beam_step = beam_index[j] - beam_index[i];
-    const int steps_seen = beam_step <= 0 && seam ? beam_step + full_turn : beam_step;
-    if (std::max(0, steps_seen - 1) > max_missing_beams) return false;
+    if (OpeningBetween(scan, i, j, max_missing_beams)) return false;
     // Invalid beams may lie between neighbours: scale by the number of beam steps.
-    const int beam_steps = std::abs(beam_step);
+    const int beam_steps = std::abs(beam_index[j] - beam_index[i]);
     const double steps = beam_steps >= 1 && beam_steps < beam_count ? beam_steps : 1;
     const double d = std::min(range_m[i], range_m[j]) * ratio * steps + three_sigma_m;
     const double threshold = std::min(max_m, std::max(min_m, d));

@@ -23,19 +23,8 @@ void CanonicalNormalForm(double a_rad, double signed_r_m, double* alpha_rad, dou
     signed_r_m = -signed_r_m;
     a_rad += std::numbers::pi;
   }
-  *alpha_rad = WrapAngleNear(a_rad);
+  *alpha_rad = msgs::WrapAngle(a_rad);
   *r_m = signed_r_m;
-}
-
-double WrapAngleNear(double a_rad) {
-  // remainder(a, 2 pi) is a itself for |a| < pi, and a -+ 2 pi for pi < |a| < 2 pi, which
-  // Sterbenz's lemma makes exact in floating point. The edges follow msgs::WrapAngle: pi stays,
-  // -pi becomes pi, and +-2 pi (remainder's signed zero) go the general way.
-  constexpr double kPi = std::numbers::pi;
-  if (a_rad > -kPi && a_rad <= kPi) return a_rad;
-  if (a_rad > kPi && a_rad < 2.0 * kPi) return a_rad - 2.0 * kPi;
-  if (a_rad > -2.0 * kPi && a_rad <= -kPi) return a_rad + 2.0 * kPi;
-  return msgs::WrapAngle(a_rad);
 }
 
 double AngleDifferenceRad(double alpha_1_rad, double alpha_2_rad) {

@@ -34,10 +34,6 @@ struct LineSegment {
 // flips the normal when needed so r is not negative, and wraps alpha to (-pi, pi].
 void CanonicalNormalForm(double a_rad, double signed_r_m, double* alpha_rad, double* r_m);
 
-// msgs::WrapAngle bit for bit, without its std::remainder call for angles within two turns of 0
-// (every angle CanonicalNormalForm sees): the line fits call it for every fit.
-double WrapAngleNear(double a_rad);
-
 // |alpha_1 - alpha_2| wrapped to [0, pi].
 double AngleDifferenceRad(double alpha_1_rad, double alpha_2_rad);
 

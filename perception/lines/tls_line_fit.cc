@@ -71,6 +71,12 @@ void LineMoments::FitWithNormal(double* alpha_rad, double* r_m, double* cos_alph
   if (rss_m2 != nullptr) *rss_m2 = std::max(0.0, c * c * cxx + 2.0 * c * s * cxy + s * s * cyy);
 }
 
+double LineMoments::FitDistance(const Eigen::Vector2d& q) const {
+  double alpha = 0.0, r = 0.0, c = 0.0, s = 0.0;
+  FitWithNormal(&alpha, &r, &c, &s);
+  return std::abs(q.dot(Eigen::Vector2d(c, s)) - r);
+}
+
 LineSegment FitSegmentTls(std::span<const Eigen::Vector2d> points, std::span<const int> indices) {
   LineMoments moments;
   for (int i : indices) moments.Add(points[i]);

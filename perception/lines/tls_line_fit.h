@@ -45,6 +45,9 @@ class LineMoments {
   // it (a distance test then needs no second sincos); null cos_alpha / sin_alpha: Fit.
   void FitWithNormal(double* alpha_rad, double* r_m, double* cos_alpha, double* sin_alpha,
                      double* rss_m2 = nullptr) const;
+  // |distance| of q from the Fit line: x cos(alpha) + y sin(alpha) - r with FitWithNormal's
+  // (cos, sin), LineSegment::SignedLineDistance's arithmetic bit for bit.
+  double FitDistance(const Eigen::Vector2d& q) const;
 
  private:
   int n_ = 0;
