@@ -23,6 +23,7 @@ struct OsMesa {
   decltype(&OSMesaCreateContextExt) create = nullptr;
   decltype(&OSMesaMakeCurrent) make_current = nullptr;
   decltype(&OSMesaDestroyContext) destroy = nullptr;
+  decltype(&OSMesaGetProcAddress) proc_address = nullptr;
 };
 
 const OsMesa& LoadOsMesa() {
@@ -35,7 +36,9 @@ const OsMesa& LoadOsMesa() {
     f.make_current =
         reinterpret_cast<decltype(f.make_current)>(dlsym(library, "OSMesaMakeCurrent"));
     f.destroy = reinterpret_cast<decltype(f.destroy)>(dlsym(library, "OSMesaDestroyContext"));
-    if (!f.create || !f.make_current || !f.destroy) return OsMesa{};
+    f.proc_address =
+        reinterpret_cast<decltype(f.proc_address)>(dlsym(library, "OSMesaGetProcAddress"));
+    if (!f.create || !f.make_current || !f.destroy || !f.proc_address) return OsMesa{};
     return f;
   }();
   return loaded;
@@ -95,6 +98,11 @@ bool OffscreenRenderingAvailable() {
   return available;
 }
 
+void* GlProcAddress(const char* name) {
+  const OsMesa& osmesa = LoadOsMesa();
+  return osmesa.proc_address ? reinterpret_cast<void*>(osmesa.proc_address(name)) : nullptr;
+}
+
 #else  // !PLYWOOD_HAS_OSMESA
 
 struct OffscreenContext::Impl {};
@@ -111,6 +119,8 @@ void OffscreenContext::MakeCurrent() {
 }
 
 bool OffscreenRenderingAvailable() { return false; }
+
+void* GlProcAddress(const char*) { return nullptr; }
 
 #endif
 

@@ -11,6 +11,10 @@ inline constexpr bool kHasOffscreenRendering = PLYWOOD_HAS_OSMESA != 0;
 // backend and the driver must hand out a context. Probed once per process.
 bool OffscreenRenderingAvailable();
 
+// The address of the OpenGL function `name` from the offscreen backend (OSMesaGetProcAddress),
+// for the few GL calls MuJoCo's mjr_* functions do not make; nullptr when there is none.
+void* GlProcAddress(const char* name);
+
 // An offscreen OpenGL context (OSMesa, software) with a `width` x `height` RGBA colour buffer,
 // current on the calling thread from construction until destruction. This is the only place that
 // knows the GL backend; mjr_* calls work on whatever context is current.

@@ -9,6 +9,7 @@
 
 #include "render/geom_footprint.h"
 #include "render/image_ops.h"
+#include "render/model_textures.h"
 #include "render/offscreen_context.h"
 #include "render/overlay.h"
 #include "sim/world/mujoco_handles.h"
@@ -138,7 +139,8 @@ TopDownRenderer::TopDownRenderer(const mjModel* m, const WorldBounds& bounds,
   }
 
   mjv_makeScene(copy, &gl_->scene, std::max(1000, 2 * copy->ngeom + 100));
-  mjr_makeContext(copy, &gl_->con, mjFONTSCALE_100);
+  // Textures with their mipmaps computed here: no blit shader for llvmpipe to compile.
+  MakeContextWithMipmapChains(copy, &gl_->con, mjFONTSCALE_100);
   mjr_setBuffer(mjFB_OFFSCREEN, &gl_->con);
   if (gl_->con.currentBuffer != mjFB_OFFSCREEN) {
     throw std::runtime_error("offscreen rendering: MuJoCo could not bind its offscreen buffer");

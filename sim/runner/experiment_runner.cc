@@ -41,24 +41,29 @@ struct Scheduled {
   Sensor sensor;
 };
 
-// The ground-truth segment a beam hit: the first of the hit geom's faces (`candidates`, indices
-// into walls.segments) that the beam's ray crosses (exact, and independent of the range noise).
-int HitSegment(const GroundTruthWalls& walls, const std::vector<int>& candidates,
-               const Eigen::Vector2d& origin_W, const Eigen::Vector2d& dir_W) {
+// A ground-truth face as the beam labels use it: its index into RunRecord::walls.segments, its
+// first end a and b - a, taken once instead of for every beam.
+struct FaceForLabels {
+  int index = -1;
+  double ax = 0.0, ay = 0.0, abx = 0.0, aby = 0.0;
+};
+
+// The ground-truth segment a beam hit: the first of the hit geom's faces (`candidates`) that the
+// beam's ray crosses (exact, and independent of the range noise).
+int HitSegment(const std::vector<FaceForLabels>& candidates, double origin_x, double origin_y,
+               double dir_x, double dir_y) {
   int best = -1;
   double best_t = std::numeric_limits<double>::infinity();
-  for (int i : candidates) {
-    const WallSegment& s = walls.segments[i];
+  for (const FaceForLabels& f : candidates) {
     // Solve origin + t dir = a + u (b - a) for t >= 0, u in [0, 1].
-    const Eigen::Vector2d ab = s.b - s.a;
-    const double denominator = dir_W.x() * ab.y() - dir_W.y() * ab.x();
+    const double denominator = dir_x * f.aby - dir_y * f.abx;
     if (std::abs(denominator) < 1e-12) continue;
-    const Eigen::Vector2d ao = s.a - origin_W;
-    const double t = (ao.x() * ab.y() - ao.y() * ab.x()) / denominator;
-    const double u = (ao.x() * dir_W.y() - ao.y() * dir_W.x()) / denominator;
+    const double aox = f.ax - origin_x, aoy = f.ay - origin_y;
+    const double t = (aox * f.aby - aoy * f.abx) / denominator;
+    const double u = (aox * dir_y - aoy * dir_x) / denominator;
     if (t >= 0.0 && u >= -1e-9 && u <= 1.0 + 1e-9 && t < best_t) {
       best_t = t;
-      best = i;
+      best = f.index;
     }
   }
   return best;
@@ -118,8 +123,8 @@ struct ExperimentRunner::Parts {
   std::optional<msgs::SonarRing> last_sonar;
   std::optional<msgs::LaserScan> last_laser;
   ScanMeasurement scan_scratch;
-  // Indices into RunRecord::walls.segments of each geom's faces, by geom id.
-  std::vector<std::vector<int>> segments_of_geom;
+  // Each geom's faces in RunRecord::walls.segments, by geom id.
+  std::vector<std::vector<FaceForLabels>> segments_of_geom;
   long rays_per_laser_scan = 0, rays_per_sonar_ring = 0, rays_per_ir_ring = 0, rays_per_ir_scan = 0;
 };
 
@@ -241,7 +246,10 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
   record_.walls = ExtractGroundTruthWalls(scene_->model(), truth_options);
   p.segments_of_geom.resize(scene_->model()->ngeom);
   for (std::size_t i = 0; i < record_.walls.segments.size(); ++i) {
-    p.segments_of_geom[record_.walls.segments[i].geom_id].push_back(static_cast<int>(i));
+    const WallSegment& w = record_.walls.segments[i];
+    const Eigen::Vector2d ab = w.b - w.a;
+    p.segments_of_geom[w.geom_id].push_back(
+        {static_cast<int>(i), w.a.x(), w.a.y(), ab.x(), ab.y()});
   }
 }
 
@@ -264,10 +272,11 @@ LaserRecord ExperimentRunner::MakeScanRecord(int site_id) const {
   const double heading_W = (record.X_WR_truth * record.scan.X_RS).theta_rad;
   for (std::size_t i = 0; i < record.scan.ranges_m.size(); ++i) {
     if (record.hit_geom_ids[i] < 0) continue;
+    const std::vector<FaceForLabels>& faces = p.segments_of_geom[record.hit_geom_ids[i]];
+    if (faces.empty()) continue;  // a geom without faces at the sensor's height: no label
     const double angle = heading_W + record.scan.BeamAngleRad(i);
     record.hit_segment_ids[i] =
-        HitSegment(record_.walls, p.segments_of_geom[record.hit_geom_ids[i]], origin_W,
-                   {std::cos(angle), std::sin(angle)});
+        HitSegment(faces, origin_W.x(), origin_W.y(), std::cos(angle), std::sin(angle));
   }
   return record;
 }
