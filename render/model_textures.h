@@ -13,8 +13,9 @@ bool CanUploadMipmapChains(const mjModel* m);
 // instead of by MuJoCo's mjr_uploadTexture, whose glGenerateMipmap makes llvmpipe compile a blit
 // shader in every process (~0.43G instructions, most of a snapshot's set-up). Same texels in every
 // level, same texture parameters (GL_RGB; repeat in s, t and r; trilinear minification, linear
-// magnification) and unpack alignment 1 as MuJoCo 2.2.2 leaves them (model_textures_test.cc reads
-// both back), so a frame drawn with either is the same. `m->ntex` is 0 during mjr_makeContext
+// magnification), unpack alignment 1 and texture unit 0's object-linear s and t generation (which
+// texuniform materials rely on) as MuJoCo 2.2.2 leaves them (model_textures_test.cc reads both
+// back), so a frame drawn with either is the same. `m->ntex` is 0 during mjr_makeContext
 // and restored before this returns.
 void MakeContextWithMipmapChains(mjModel* m, mjrContext* con, int fontscale);
 
