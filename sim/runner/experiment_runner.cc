@@ -335,6 +335,19 @@ void ExperimentRunner::SampleSensors() {
   }
 }
 
+void ExperimentRunner::ReadOdometryNow() {
+  Parts& p = *parts_;
+  const double t = scene_->time_s();
+  if (p.encoders && (record_.encoders.empty() || record_.encoders.back().time_s != t)) {
+    record_.encoders.push_back(p.encoders->sensor.Sample(*scene_));
+    for (auto& estimator : p.estimators) estimator->AddEncoders(record_.encoders.back());
+  }
+  if (p.gyro && (record_.gyro.empty() || record_.gyro.back().time_s != t)) {
+    record_.gyro.push_back(p.gyro->sensor.Sample(*scene_));
+    for (auto& estimator : p.estimators) estimator->AddGyro(record_.gyro.back());
+  }
+}
+
 void ExperimentRunner::Run(const Progress& progress) {
   Parts& p = *parts_;
   const auto start = std::chrono::steady_clock::now();
@@ -396,11 +409,17 @@ void ExperimentRunner::Run(const Progress& progress) {
     }
     if (observer_ && !observer_->AfterStep(*this)) stopped = true;
   }
-  // The final state always closes the trajectory, so scores use the true end point.
-  if (record_.trajectory.empty() || record_.trajectory.back().time_s != scene_->time_s()) {
+  // The final state always closes the trajectory, so scores use the true end point. A run ends
+  // between two odometry samples (the controller finishes, the observer stops it); the encoders and
+  // the gyro are then read once more at the final instant, so the estimates in the last row
+  // describe the same instant as the truth beside it rather than up to a period earlier.
+  if (!record_.trajectory.empty() && record_.trajectory.back().time_s == scene_->time_s()) {
+    record_.trajectory.pop_back();  // recorded this step, before the final odometry read
+  } else {
     SampleSensors();
-    record_trajectory();
   }
+  ReadOdometryNow();
+  record_trajectory();
   cost_.simulated_s = scene_->time_s();
   cost_.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   record_.metrics.Set("run.controller_finished", finished ? 1.0 : 0.0);

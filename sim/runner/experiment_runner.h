@@ -103,6 +103,9 @@ class ExperimentRunner {
   struct Parts;
 
   void SampleSensors();
+  // Reads the odometry sensors (encoders, gyro) now unless they were read at this instant, off
+  // their schedule, and feeds the estimators: a robot reads its counters when it stops.
+  void ReadOdometryNow();
   // The record of the scan in parts_->scan_scratch, taken from the sensor site `site_id`.
   LaserRecord MakeScanRecord(int site_id) const;
   void Score();

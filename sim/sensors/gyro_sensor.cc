@@ -61,7 +61,14 @@ msgs::GyroRate GyroSensor::Measure(double time_s, double true_rate_rad_s) {
   if (!options_.noise_free) {
     bias_walk_rad_s_ +=
         options_.bias_random_walk_rad_s_per_sqrt_s * std::sqrt(dt_s) * unit_normal_(rng_);
-    noise_rad_s = options_.noise_sigma_rad_s * unit_normal_(rng_);
+    // noise_sigma_rad_s is the white noise of a mean over one full period. A shorter interval (a
+    // read off the schedule, as when the robot stops between two samples) averages the same noise
+    // density over less time: sigma * sqrt(period / dt), so the integrated angle's variance stays
+    // sigma^2 * period * dt. Intervals of a full period or more (within the clock's rounding) keep
+    // sigma.
+    const double period_s = 1.0 / options_.rate_hz;
+    const double partial = dt_s > 0.0 && dt_s < (1.0 - 1e-6) * period_s ? period_s / dt_s : 1.0;
+    noise_rad_s = options_.noise_sigma_rad_s * std::sqrt(partial) * unit_normal_(rng_);
   }
   double rate_rad_s =
       (1.0 + options_.scale_factor_error) * true_rate_rad_s + bias_rad_s() + noise_rad_s;

@@ -15,7 +15,9 @@ class Scene;
 struct GyroSensorOptions {
   double rate_hz = 10.0;
   // White noise on each output sample (rad/s, 1 sigma). The default is a common MEMS yaw gyro
-  // (ADXRS6xx class, about 0.04 deg/s/sqrt(Hz) over a 10 Hz bandwidth: ~0.13 deg/s).
+  // (ADXRS6xx class, about 0.04 deg/s/sqrt(Hz) over a 10 Hz bandwidth: ~0.13 deg/s). A sample
+  // taken less than a period after the previous one (off the schedule) averages over less time and
+  // gets sigma * sqrt(period / dt).
   double noise_sigma_rad_s = 0.002;
   // Constant (turn-on) bias added to every sample (rad/s).
   double bias_rad_s = 0.0;

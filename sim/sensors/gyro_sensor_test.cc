@@ -161,5 +161,28 @@ TEST(GyroSensorTest, SamplesAverageTheTrueRateOverTheInterval) {
   }
 }
 
+TEST(GyroSensorTest, PartialIntervalKeepsTheAngleRandomWalk) {
+  // A read 30 ms after a full 100 ms sample (a robot reading its gyro when it stops): the heading
+  // noise it adds, reading * dt, has the white-noise variance sigma^2 * period * dt, as a full
+  // sample's sigma^2 * period^2 does.
+  const double sigma = 0.01, period_s = 0.1, dt_s = 0.03;
+  constexpr int kGyros = 20000;
+  double sum = 0, sq = 0, sq_full = 0;
+  for (int g = 0; g < kGyros; ++g) {
+    GyroSensor gyro({.noise_sigma_rad_s = sigma}, static_cast<std::uint64_t>(g) + 1);
+    gyro.Measure(0.0, 0.0);
+    const double full = gyro.Measure(period_s, 0.0).yaw_rate_rad_s * period_s;
+    const double angle = gyro.Measure(period_s + dt_s, 0.0).yaw_rate_rad_s * dt_s;
+    sum += angle;
+    sq += angle * angle;
+    sq_full += full * full;
+  }
+  const double var = sq / kGyros - std::pow(sum / kGyros, 2);
+  // Sample variance of 20000 Gaussians is within ~1% (1 sigma) of the truth.
+  EXPECT_NEAR(var, sigma * sigma * period_s * dt_s, 0.05 * sigma * sigma * period_s * dt_s);
+  EXPECT_NEAR(sq_full / kGyros, sigma * sigma * period_s * period_s,
+              0.05 * sigma * sigma * period_s * period_s);
+}
+
 }  // namespace
 }  // namespace plywood::sim
