@@ -89,4 +89,29 @@ void TrimMixedPixelEnds(const ScanPoints& scan, const BreakpointOptions& breakpo
   }
 }
 
+std::vector<int> TrimGroupMixedPixelEnds(const ScanPoints& scan,
+                                         const BreakpointOptions& breakpoints,
+                                         std::span<const int> group,
+                                         std::vector<std::vector<int>>* lines) {
+  std::vector<int> dropped;
+  std::vector<std::vector<int>>& l = *lines;
+  if (l.empty() || group.empty()) return dropped;
+  if (scan.closed && group.size() == scan.size()) return dropped;
+  const bool front_end = !l.front().empty() && l.front().front() == group.front();
+  const bool back_end = !l.back().empty() && l.back().back() == group.back();
+  const auto trim = [&](std::vector<int>* line, bool front, bool back) {
+    const int first = line->empty() ? -1 : line->front(), last = line->empty() ? -1 : line->back();
+    TrimMixedPixelEnds(scan, breakpoints, front, back, line);
+    if (line->empty() || line->front() != first) dropped.push_back(first);
+    if (line->empty() || line->back() != last) dropped.push_back(last);
+  };
+  if (l.size() == 1) {
+    trim(&l.front(), front_end, back_end);
+  } else {
+    trim(&l.front(), front_end, false);
+    trim(&l.back(), false, back_end);
+  }
+  return dropped;
+}
+
 }  // namespace plywood::perception

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "perception/lines/line_extractor.h"
@@ -31,5 +32,16 @@ namespace plywood::perception {
 // the last point is the first.
 void TrimMixedPixelEnds(const ScanPoints& scan, const BreakpointOptions& breakpoints,
                         bool front_is_group_end, bool back_is_group_end, std::vector<int>* line);
+
+// The same trim at the two ends of one breakpoint group (`group`, scan order) cut into `lines`
+// (each a list of point indices, in the group's order): the first line's first point and the last
+// line's last point, where they are the group's ends. A closed scan's one group without
+// breakpoints has no ends. Returns the points dropped (scan indices, at most two). split_and_merge
+// runs it on each group's merged lines; in the round-object stage RANSAC and Hough share
+// (RoundObjectPoints) it was measured neutral and is not used (docs/lines.md, round 10).
+std::vector<int> TrimGroupMixedPixelEnds(const ScanPoints& scan,
+                                         const BreakpointOptions& breakpoints,
+                                         std::span<const int> group,
+                                         std::vector<std::vector<int>>* lines);
 
 }  // namespace plywood::perception

@@ -94,23 +94,12 @@ std::vector<LineSegment> SplitAndMergeExtractor::Run(const ScanPoints& scan,
     // A closed scan without breakpoints is one group that starts and ends at the same corner: it
     // has no ends.
     const bool whole_scan = scan.closed && group.size() == p.size();
-    if (!whole_scan && !merged.empty()) {
-      // Mixed pixels at the group's two ends (mixed_pixel_ends.h), before the round test: a thin
-      // leg's chord without them is a chord of the leg. A trimmed line's moments are summed again.
-      const bool front_end = merged.front().front() == group.front();
-      const bool back_end = merged.back().back() == group.back();
-      const auto trim = [&](std::size_t k, bool front, bool back) {
-        const std::size_t before = merged[k].size();
-        TrimMixedPixelEnds(scan, options_.breakpoints, front, back, &merged[k]);
-        if (merged[k].size() == before) return;
+    // Mixed pixels at the group's two ends (mixed_pixel_ends.h), before the round test: a thin
+    // leg's chord without them is a chord of the leg. A trimmed line's moments are summed again.
+    if (!TrimGroupMixedPixelEnds(scan, options_.breakpoints, group, &merged).empty()) {
+      for (std::size_t k : {std::size_t{0}, merged.size() - 1}) {
         merged_moments[k] = LineMoments();
         for (int i : merged[k]) merged_moments[k].Add(p[i]);
-      };
-      if (merged.size() == 1) {
-        trim(0, front_end, back_end);
-      } else {
-        trim(0, front_end, false);
-        trim(merged.size() - 1, false, back_end);
       }
     }
     // The lines are disjoint and keep their order: a kept line's first point finds its moments.
