@@ -37,8 +37,9 @@ void TrimMixedPixelEnds(const ScanPoints& scan, const BreakpointOptions& breakpo
 // (each a list of point indices, in the group's order): the first line's first point and the last
 // line's last point, where they are the group's ends. A closed scan's one group without
 // breakpoints has no ends. Returns the points dropped (scan indices, at most two). split_and_merge
-// runs it on each group's merged lines; in the round-object stage RANSAC and Hough share
-// (RoundObjectPoints) it was measured neutral and is not used (docs/lines.md, round 10).
+// runs it on each group's merged lines before their round test, incremental after its round test;
+// in the round-object stage RANSAC and Hough share (RoundObjectPoints) it was measured neutral and
+// is not used (docs/lines.md, round 10).
 std::vector<int> TrimGroupMixedPixelEnds(const ScanPoints& scan,
                                          const BreakpointOptions& breakpoints,
                                          std::span<const int> group,

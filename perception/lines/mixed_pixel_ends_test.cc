@@ -9,6 +9,7 @@
 #include <numbers>
 #include <vector>
 
+#include "perception/lines/incremental_extractor.h"
 #include "perception/lines/split_and_merge_extractor.h"
 
 namespace plywood::perception {
@@ -48,6 +49,31 @@ TEST(MixedPixelEndsTest, ALegAndItsMixedPixelGiveNoLineAlongTheBeam) {
   EXPECT_EQ(LinesCloserThan(extractor.Extract(LegWithMixedPixel(false)), 2.0), 0);
   // The wall behind is still found on both sides of the leg.
   EXPECT_EQ(with.size(), 2u);
+}
+
+TEST(MixedPixelEndsTest, TheIncrementalExtractorEndsAWallAtItsLastTrueReturn) {
+  // A wall x = 2 m on beams 0-20 with +-1 cm range noise (alternating), then beam 21 straddling
+  // its edge: a mixed pixel 3.8 cm behind it -- inside the incremental extractor's 4 cm line
+  // tolerance and the robust refit's 3 MAD-sigma band, but 3.8 noise sigmas off the wall's line --
+  // then an opening (no return on beams 22-30) and a far wall 5 m away. The incremental extractor's
+  // group ends at that opening and the same stage as split_and_merge's (TrimGroupMixedPixelEnds)
+  // drops the mixed pixel: the wall ends at beam 20 (y = 2 tan 10 deg = 0.353 m), not at the
+  // mixed pixel's 0.377 m.
+  ScanPoints scan;
+  scan.angle_increment_rad = kStep;
+  for (int i = 0; i <= 20; ++i) {
+    scan.Add((2.0 + (i % 2 == 0 ? 0.01 : -0.01)) / std::cos(i * kStep), i * kStep, i);
+  }
+  scan.Add(2.038 / std::cos(21 * kStep), 21 * kStep, 21);
+  for (int i = 31; i <= 50; ++i) scan.Add(5.0 / std::cos(i * kStep), i * kStep, i);
+  const std::vector<LineSegment> lines = IncrementalExtractor().Extract(scan);
+  int walls = 0;
+  for (const LineSegment& s : lines) {
+    if (std::max(s.start.x(), s.end.x()) > 3.0) continue;  // the far wall
+    ++walls;
+    EXPECT_LT(std::max(s.start.y(), s.end.y()), 0.365);
+  }
+  EXPECT_EQ(walls, 1);
 }
 
 TEST(MixedPixelEndsTest, TrimsOnlyAnEndPointBetweenTheTwoSurfaces) {
