@@ -5,6 +5,7 @@
 
 #include "msgs/shortest_number.h"
 #include "perception/lines/corner_refinement.h"
+#include "perception/lines/mixed_pixel_ends.h"
 #include "perception/lines/tls_line_fit.h"
 
 namespace plywood::perception {
@@ -80,6 +81,10 @@ std::vector<LineSegment> IncrementalExtractor::Run(const ScanPoints& scan,
       merged.push_back(std::move(line));
     }
     RemoveRoundObjects(p, options_.breakpoints.sigma_m, options_.round_objects, &merged, circles);
+    // Mixed pixels at the group's two ends (mixed_pixel_ends.h), after the round test: before it,
+    // a column's run of lines loses a point and falls below min_round_points (measured: `columns`
+    // precision 0.962 -> 0.947 on generator seed 1; after it 0.964).
+    TrimGroupMixedPixelEnds(scan, options_.breakpoints, group, &merged);
     RefineCorners(p, group, scan.closed && n == static_cast<int>(p.size()), &merged);
     for (const auto& line : merged) {
       if (static_cast<int>(line.size()) < options_.filter.min_points) continue;

@@ -261,8 +261,11 @@ std::vector<char> RoundObjectPoints(const ScanPoints& scan, const BreakpointOpti
                                     std::vector<CircleFeature>* circles) {
   std::vector<char> round(scan.size(), 0);
   if (!options.reject_round_objects) return round;
+  // The smallest group the stage can call round: a single chord needs kMinChordPoints, a run of
+  // lines min_round_points (RemoveRoundObjects tests both), as split_and_merge's groups get.
+  const int min_group_points = std::min(kMinChordPoints, options.min_round_points);
   for (const std::vector<int>& group : SplitAtBreakpoints(scan, breakpoints)) {
-    if (static_cast<int>(group.size()) < options.min_round_points) continue;
+    if (static_cast<int>(group.size()) < min_group_points) continue;
     std::vector<std::vector<int>> pieces =
         SplitByEndPointFit(scan.points, group, split_threshold_m, /*skip_single_outliers=*/true);
     const std::vector<std::vector<int>> before = pieces;

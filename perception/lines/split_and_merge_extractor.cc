@@ -7,6 +7,7 @@
 #include "msgs/shortest_number.h"
 #include "perception/lines/corner_refinement.h"
 #include "perception/lines/end_point_fit.h"
+#include "perception/lines/mixed_pixel_ends.h"
 
 namespace plywood::perception {
 
@@ -90,6 +91,17 @@ std::vector<LineSegment> SplitAndMergeExtractor::Run(const ScanPoints& scan,
       merged.push_back(std::move(piece));
       merged_moments.push_back(own);
     }
+    // A closed scan without breakpoints is one group that starts and ends at the same corner: it
+    // has no ends.
+    const bool whole_scan = scan.closed && group.size() == p.size();
+    // Mixed pixels at the group's two ends (mixed_pixel_ends.h), before the round test: a thin
+    // leg's chord without them is a chord of the leg. A trimmed line's moments are summed again.
+    if (!TrimGroupMixedPixelEnds(scan, options_.breakpoints, group, &merged).empty()) {
+      for (std::size_t k : {std::size_t{0}, merged.size() - 1}) {
+        merged_moments[k] = LineMoments();
+        for (int i : merged[k]) merged_moments[k].Add(p[i]);
+      }
+    }
     // The lines are disjoint and keep their order: a kept line's first point finds its moments.
     std::vector<int> fronts(merged.size());
     for (std::size_t k = 0; k < merged.size(); ++k) fronts[k] = merged[k].front();
@@ -102,8 +114,7 @@ std::vector<LineSegment> SplitAndMergeExtractor::Run(const ScanPoints& scan,
       }
       merged_moments.resize(merged.size());
     }
-    // A closed scan without breakpoints is one group that starts and ends at the same corner.
-    RefineCorners(p, group, scan.closed && group.size() == p.size(), &merged, &merged_moments);
+    RefineCorners(p, group, whole_scan, &merged, &merged_moments);
     for (const auto& piece : merged) {
       if (static_cast<int>(piece.size()) < min_points) continue;
       LineSegment s = fit(piece);
