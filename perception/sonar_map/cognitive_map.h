@@ -26,8 +26,10 @@ struct CognitiveMapOptions {
   // Obstacle pieces closer than this to each other or to a room side are joined to them: to a
   // side by extending the piece to it; to each other by their extent when that is about their
   // areas plus the gap's (a face split in two), else by filling the gap between their facing
-  // sides (CognitiveMap::bridges); diagonal neighbours stay apart.
-  double obstacle_join_m = 0.3;
+  // sides (CognitiveMap::bridges); diagonal neighbours stay apart. 0.3 m joined true gaps of
+  // 0.3-0.45 m that the grid narrowed (a face it places is 0.08 m short to 0.13 m out, 10-90 %)
+  // and the scorer counts as free: generated rooms, seed 1, mean e 0.0187 -> 0.0162 with 0.2 m.
+  double obstacle_join_m = 0.2;
   // The rectangles span the blob's occupied cells (the faces heard) only, not the unknown cells
   // the blob grew over: a box's unheard inside lies between its faces anyway, while the unseen
   // gap between a box and a wall made the box reach the wall.

@@ -168,19 +168,19 @@ TEST(CognitiveMapTest, SmallOccupiedBlobsAreNoise) {
 }
 
 TEST(CognitiveMapTest, PiecesCloserThanTheJoinDistanceBecomeOneObstacleOverTheGap) {
-  // 0.2 m apart, less than obstacle_join_m = 0.3.
+  // 0.15 m apart, less than obstacle_join_m = 0.2.
   const CognitiveMap map =
-      BuildCognitiveMap(Room({{1.20, 1.30, 1.50, 1.80}, {1.70, 1.30, 2.00, 1.80}}), kInside, {});
+      BuildCognitiveMap(Room({{1.20, 1.30, 1.50, 1.80}, {1.65, 1.30, 1.95, 1.80}}), kInside, {});
   ASSERT_EQ(map.obstacles.size(), 1u);
-  ExpectRectNear(map.obstacles[0], {1.20, 1.30, 2.00, 1.80});
+  ExpectRectNear(map.obstacles[0], {1.20, 1.30, 1.95, 1.80});
   ExpectTilesTheRoom(map);
 }
 
 TEST(CognitiveMapTest, DiagonalNeighboursCloserThanTheJoinDistanceStayTwoRectangles) {
-  // The second box is 0.2 m east and 0.15 m south of the first: they face each other nowhere, so
+  // The second box is 0.15 m east and 0.15 m south of the first: they face each other nowhere, so
   // nothing fills a gap between them, and the space beside both (their extent's other corners)
   // stays free. Their extent was the obstacle before (generated room 6: e 0.18 with grid e 0.03).
-  const Rect a{1.20, 1.30, 1.50, 1.80}, b{1.70, 0.95, 2.20, 1.15};
+  const Rect a{1.20, 1.30, 1.50, 1.80}, b{1.65, 0.95, 2.15, 1.15};
   const CognitiveMap map = BuildCognitiveMap(Room({a, b}), kInside, {});
   ASSERT_EQ(map.obstacles.size(), 2u);
   std::vector<Rect> obstacles = map.obstacles;
@@ -198,9 +198,9 @@ TEST(CognitiveMapTest, DiagonalNeighboursCloserThanTheJoinDistanceStayTwoRectang
 }
 
 TEST(CognitiveMapTest, BoxesSideBySideKeepTheirRectanglesAndOnlyTheGapBetweenThemIsFilled) {
-  // 0.2 m apart along x (less than obstacle_join_m), facing each other over y 1.30-1.50 only:
-  // their extent would add 0.36 m^2 of free space to the 0.44 m^2 of the boxes and the gap.
-  const Rect a{1.20, 1.30, 1.50, 1.80}, b{1.70, 1.00, 2.20, 1.50};
+  // 0.15 m apart along x (less than obstacle_join_m), facing each other over y 1.30-1.50 only:
+  // their extent would add 0.36 m^2 of free space to the 0.43 m^2 of the boxes and the gap.
+  const Rect a{1.20, 1.30, 1.50, 1.80}, b{1.65, 1.00, 2.15, 1.50};
   const CognitiveMap map = BuildCognitiveMap(Room({a, b}), kInside, {});
   ASSERT_EQ(map.obstacles.size(), 2u);
   std::vector<Rect> obstacles = map.obstacles;
@@ -209,14 +209,14 @@ TEST(CognitiveMapTest, BoxesSideBySideKeepTheirRectanglesAndOnlyTheGapBetweenThe
   ExpectRectNear(obstacles[0], a);
   ExpectRectNear(obstacles[1], b);
   ASSERT_EQ(map.bridges.size(), 1u);
-  ExpectRectNear(map.bridges[0], {1.50, 1.30, 1.70, 1.50});
+  ExpectRectNear(map.bridges[0], {1.50, 1.30, 1.65, 1.50});
   auto label = [&](const Eigen::Vector2d& p) {
     const int i = map.partitions.Find(p);
     return i >= 0 ? map.partitions.partitions()[i].label : Label::kFree;
   };
-  EXPECT_EQ(label({1.60, 1.40}), Label::kObstacle);  // the gap the robot cannot pass
-  EXPECT_EQ(label({1.60, 1.65}), Label::kFree);      // beside the gap, above the east box
-  EXPECT_EQ(label({1.35, 1.15}), Label::kFree);      // below the west box
+  EXPECT_EQ(label({1.575, 1.40}), Label::kObstacle);  // the gap the robot cannot pass
+  EXPECT_EQ(label({1.575, 1.65}), Label::kFree);      // beside the gap, above the east box
+  EXPECT_EQ(label({1.35, 1.15}), Label::kFree);       // below the west box
   ExpectTilesTheRoom(map);
 }
 
@@ -243,24 +243,39 @@ TEST(CognitiveMapTest, JoinDistanceZeroKeepsEvenClosePiecesApart) {
 }
 
 TEST(CognitiveMapTest, ObstacleCloseToAWallIsExtendedToIt) {
-  // West face 0.2 m from the west wall's inner face (< obstacle_join_m).
-  const CognitiveMap map = BuildCognitiveMap(Room({{0.75, 1.30, 1.25, 1.80}}), kInside, {});
+  // West face 0.15 m from the west wall's inner face (< obstacle_join_m).
+  const CognitiveMap map = BuildCognitiveMap(Room({{0.70, 1.30, 1.20, 1.80}}), kInside, {});
   ExpectRectNear(map.room, {kX0, kY0, kX1, kY1});
   ASSERT_EQ(map.obstacles.size(), 1u);
   EXPECT_EQ(map.obstacles[0].x0, map.room.x0);  // set to the side itself
-  ExpectRectNear(map.obstacles[0], {kX0, 1.30, 1.25, 1.80});
+  ExpectRectNear(map.obstacles[0], {kX0, 1.30, 1.20, 1.80});
   // Against the wall: free strips below and above, one piece east of it, and the obstacle.
   EXPECT_EQ(PartitionRects(map, Label::kFree).size(), 3u);
   ExpectTilesTheRoom(map);
 }
 
 TEST(CognitiveMapTest, ObstacleCloseToTheNorthEastCornerIsExtendedToBothSides) {
-  // 0.2 m from the east side, 0.25 m from the north side.
-  const CognitiveMap map = BuildCognitiveMap(Room({{2.85, 1.80, 3.35, 2.30}}), kInside, {});
+  // 0.15 m from the east side, 0.1 m from the north side.
+  const CognitiveMap map = BuildCognitiveMap(Room({{2.90, 1.95, 3.40, 2.45}}), kInside, {});
   ASSERT_EQ(map.obstacles.size(), 1u);
   EXPECT_EQ(map.obstacles[0].x1, map.room.x1);
   EXPECT_EQ(map.obstacles[0].y1, map.room.y1);
-  ExpectRectNear(map.obstacles[0], {2.85, 1.80, kX1, kY1});
+  ExpectRectNear(map.obstacles[0], {2.90, 1.95, kX1, kY1});
+  ExpectTilesTheRoom(map);
+}
+
+TEST(CognitiveMapTest, ObstacleAQuarterMetreFromTwoWallsKeepsBothGapsFree) {
+  // West and south faces 0.25 m from the walls: the gaps are free space the scorer counts. With
+  // the join distance 0.3 m, gaps of 0.3-0.45 m that the grid narrowed (faces it places up to
+  // 0.13 m out) were joined to the walls (generated rooms 12, 13, 48 of seed 1).
+  const CognitiveMap map = BuildCognitiveMap(Room({{0.80, 0.80, 1.30, 1.30}}), kInside, {});
+  ASSERT_EQ(map.obstacles.size(), 1u);
+  ExpectRectNear(map.obstacles[0], {0.80, 0.80, 1.30, 1.30});
+  for (const Eigen::Vector2d& p : {Eigen::Vector2d{0.675, 1.05}, Eigen::Vector2d{1.05, 0.675}}) {
+    const int i = map.partitions.Find(p);
+    ASSERT_GE(i, 0);
+    EXPECT_EQ(map.partitions.partitions()[i].label, Label::kFree) << p.transpose();
+  }
   ExpectTilesTheRoom(map);
 }
 
@@ -322,17 +337,20 @@ TEST(TrimThinEndsTest, ZeroFillAndEmptyInputChangeNothing) {
 }
 
 TEST(CognitiveMapTest, CornerEchoWedgeBelowAnObstacleIsNotPartOfIt) {
-  // A 0.5 x 0.5 m obstacle 0.2 m from the west wall (joined to it), and under its west end the
-  // occupied wedge that corner echoes paint along the wall: rows of 2, 1 and 1 cells.
+  // A 0.5 x 0.5 m obstacle 0.2 m from the west wall (joined to it with a 0.3 m join distance),
+  // and under its west end the occupied wedge that corner echoes paint along the wall: rows of 2,
+  // 1 and 1 cells.
   LogOddsGrid grid = Room({{0.75, 1.30, 1.25, 1.80}});
   for (const auto& [ix, iy] : {std::pair{15, 25}, {16, 25}, {15, 24}, {15, 23}})
     for (int k = 0; k < 2; ++k) Mark(grid, ix, iy, 0.98);  // outweighs the free marks
-  CognitiveMapOptions whole_blob;
+  CognitiveMapOptions options;
+  options.obstacle_join_m = 0.3;
+  CognitiveMapOptions whole_blob = options;
   whole_blob.obstacle_min_fill = 0.0;
   const CognitiveMap with_wedge = BuildCognitiveMap(grid, kInside, whole_blob);
   ASSERT_EQ(with_wedge.obstacles.size(), 1u);
   ExpectRectNear(with_wedge.obstacles[0], {kX0, 1.15, 1.25, 1.80});
-  const CognitiveMap map = BuildCognitiveMap(grid, kInside, {});
+  const CognitiveMap map = BuildCognitiveMap(grid, kInside, options);
   ASSERT_EQ(map.obstacles.size(), 1u);
   ExpectRectNear(map.obstacles[0], {kX0, 1.30, 1.25, 1.80});
   ExpectTilesTheRoom(map);
