@@ -288,13 +288,11 @@ void ExperimentRunner::SampleSensors() {
   double* const other_s = times ? &times->other_s : nullptr;
   if (p.encoders && p.encoders->schedule.Due(t)) {
     const PartTimer timer(other_s);
-    record_.encoders.push_back(p.encoders->sensor.Sample(*scene_));
-    for (auto& estimator : p.estimators) estimator->AddEncoders(record_.encoders.back());
+    ReadEncoders();
   }
   if (p.gyro && p.gyro->schedule.Due(t)) {
     const PartTimer timer(other_s);
-    record_.gyro.push_back(p.gyro->sensor.Sample(*scene_));
-    for (auto& estimator : p.estimators) estimator->AddGyro(record_.gyro.back());
+    ReadGyro();
   }
   if (p.bumpers && p.bumpers->schedule.Due(t)) {
     const PartTimer timer(other_s);
@@ -335,17 +333,25 @@ void ExperimentRunner::SampleSensors() {
   }
 }
 
-void ExperimentRunner::ReadOdometryNow() {
+void ExperimentRunner::ReadEncoders() {
   Parts& p = *parts_;
+  record_.encoders.push_back(p.encoders->sensor.Sample(*scene_));
+  for (auto& estimator : p.estimators) estimator->AddEncoders(record_.encoders.back());
+}
+
+void ExperimentRunner::ReadGyro() {
+  Parts& p = *parts_;
+  record_.gyro.push_back(p.gyro->sensor.Sample(*scene_));
+  for (auto& estimator : p.estimators) estimator->AddGyro(record_.gyro.back());
+}
+
+void ExperimentRunner::ReadOdometryNow() {
+  const Parts& p = *parts_;
   const double t = scene_->time_s();
   if (p.encoders && (record_.encoders.empty() || record_.encoders.back().time_s != t)) {
-    record_.encoders.push_back(p.encoders->sensor.Sample(*scene_));
-    for (auto& estimator : p.estimators) estimator->AddEncoders(record_.encoders.back());
+    ReadEncoders();
   }
-  if (p.gyro && (record_.gyro.empty() || record_.gyro.back().time_s != t)) {
-    record_.gyro.push_back(p.gyro->sensor.Sample(*scene_));
-    for (auto& estimator : p.estimators) estimator->AddGyro(record_.gyro.back());
-  }
+  if (p.gyro && (record_.gyro.empty() || record_.gyro.back().time_s != t)) ReadGyro();
 }
 
 void ExperimentRunner::Run(const Progress& progress) {

@@ -106,6 +106,9 @@ class ExperimentRunner {
   // Reads the odometry sensors (encoders, gyro) now unless they were read at this instant, off
   // their schedule, and feeds the estimators: a robot reads its counters when it stops.
   void ReadOdometryNow();
+  // One encoder / gyro reading: recorded and fed to every estimator (on schedule or off it).
+  void ReadEncoders();
+  void ReadGyro();
   // The record of the scan in parts_->scan_scratch, taken from the sensor site `site_id`.
   LaserRecord MakeScanRecord(int site_id) const;
   void Score();
