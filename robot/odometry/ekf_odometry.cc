@@ -70,6 +70,7 @@ void EkfOdometryOptions::Validate() const {
   }
   RequireNonNegative("stop_displacement_sigma_m", stop_displacement_sigma_m);
   RequireNonNegative("braking_window_s", braking_window_s);
+  RequireNonNegative("wheel_speed_change_sigma_s", wheel_speed_change_sigma_s);
   for (const auto& [field, value] :
        {std::pair{"wheel_diameter_ratio_prior", wheel_diameter_ratio_prior},
         std::pair{"track_ratio_prior", track_ratio_prior}}) {
@@ -208,11 +209,21 @@ void EkfOdometry::Step(const OdometryIncrement& increment) {
   const double tick_m = 2.0 * std::numbers::pi * (g.left_wheel_radius_m + g.right_wheel_radius_m) /
                         2.0 / g.ticks_per_rev;
   const bool stands_still = increment.left_m == 0.0 && increment.right_m == 0.0;
+  // The wheels' speed changes since the previous interval (EkfOdometryOptions::
+  // wheel_speed_change_sigma_s): each adds a travel error of sigma x its change.
+  const double left_m_s = increment.left_m / dt, right_m_s = increment.right_m / dt;
+  const double left_change = options_.wheel_speed_change_sigma_s * (left_m_s - previous_left_m_s_);
+  const double right_change =
+      options_.wheel_speed_change_sigma_s * (right_m_s - previous_right_m_s_);
+  previous_left_m_s_ = left_m_s;
+  previous_right_m_s_ = right_m_s;
   const double r_encoder =
       stands_still
           ? std::pow(options_.zero_velocity_turn_sigma_rad, 2)
           : std::pow(options_.wheel_slip_sigma, 2) *
                     (increment.left_m * increment.left_m + increment.right_m * increment.right_m) /
+                    (g.track_m * g.track_m) +
+                (left_change * left_change + right_change * right_change) /
                     (g.track_m * g.track_m) +
                 std::pow(options_.encoder_turn_sigma * increment.dtheta_encoder_rad, 2) +
                 2.0 * std::pow(tick_m / g.track_m, 2) / 12.0;

@@ -64,6 +64,16 @@ struct EkfOdometryOptions {
   // sigma outliers of the slip model that the filter would otherwise put into E_b and the bias.
   // A calibration of the drive (how long its braking transient lasts); 0: off.
   double braking_window_s = 0.0;
+  // Wheel speed changes: while a wheel changes speed (braking, slowing down, the onset or end of a
+  // turn) its travel and the body's differ by more than the slip share of its travel, because the
+  // tyre and the contact are compliant: the wheel leads, the body follows. Each wheel's travel over
+  // an interval gets an extra error of this (s) x the change of its speed from the previous
+  // interval (1 sigma), so the encoder heading change of an interval in which the wheels
+  // accelerate weighs less. Without it the filter's encoder noise, which scales with the travel,
+  // is smallest where the robot slows down and turns, and one such interval can move the estimate
+  // by centimetres. A property of the drive, measured on the hall calibration run
+  // (scripts/encoder_transient_calibration, docs/odometry.md); 0: off.
+  double wheel_speed_change_sigma_s = 0.0;
 
   // @throws std::invalid_argument naming the offending field.
   void Validate() const;
@@ -112,6 +122,8 @@ class EkfOdometry final : public OdometryEstimator {
   Eigen::Matrix<double, 7, 1> state_;
   Eigen::Matrix<double, 7, 7> covariance_;
   double previous_speed_m_s_ = 0.0;  // of the last encoder interval
+  double previous_left_m_s_ = 0.0;   // its wheel speeds
+  double previous_right_m_s_ = 0.0;
   int stops_ = 0;
   int gated_ = 0;
   double braking_until_s_ = -1.0;  // end of the current braking window

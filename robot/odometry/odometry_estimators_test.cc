@@ -270,6 +270,10 @@ TEST(OdometryEstimatorsTest, OptionsRejectBadValuesNamingTheField) {
               EkfOdometryOptions{.increments = {}, .braking_window_s = -1}.Validate();
             }).rfind("braking_window_s:", 0),
             0u);
+  EXPECT_EQ(message([] {
+              EkfOdometryOptions{.increments = {}, .wheel_speed_change_sigma_s = -1}.Validate();
+            }).rfind("wheel_speed_change_sigma_s:", 0),
+            0u);
   EXPECT_EQ(
       message([] { OdometryCalibration{.track_ratio = 3}.Validate(); }).rfind("track_ratio:", 0),
       0u);

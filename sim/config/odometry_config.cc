@@ -68,6 +68,7 @@ void VisitFields(A& a, robot::EkfOdometryOptions& o) {
   a("stop_displacement_outward_m", o.stop_displacement_outward_m);
   a("stop_displacement_sigma_m", o.stop_displacement_sigma_m);
   a("braking_window_s", o.braking_window_s);
+  a("wheel_speed_change_sigma_s", o.wheel_speed_change_sigma_s);
 }
 
 namespace {
