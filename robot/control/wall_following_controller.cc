@@ -20,6 +20,11 @@ constexpr double kTimeSlackS = 1e-9;
 constexpr double kOutlierM = 0.1;
 // Laser returns closer together than this along a scan add nothing to the fit but cost memory.
 constexpr double kMinPointSpacingM = 0.03;
+// CollectPoints sorts the old points (ahead test only) about an anchor pose and keeps the lists
+// while the robot stays within this of it and turns by at most kAnchorTurnRad: a new reading
+// re-sorts them first in a run (10 Hz rings, 0.25 m/s, at most 1 rad/s).
+constexpr double kAnchorSlackM = 0.05;
+constexpr double kAnchorTurnRad = 0.15;
 // Speed at the near end of the slow-down zone, as a fraction of speed_m_s: still enough to creep.
 constexpr double kMinSpeedFraction = 0.5;
 // An arc around the end of a wall turns by at most half a turn (a thin wall or a door jamb); one
@@ -179,6 +184,7 @@ void WallFollowingController::Remember(const ControllerInput& input) {
                 std::find_if(memory_.begin(), memory_.end(), [&](const StampedPoint& p) {
                   return p.time_s >= time_s - options_.memory_s - kTimeSlackS;
                 }));
+  old_points_sorted_ = false;  // memory_ and the split between old and recent points change
   const msgs::Pose2D& X_WR = input.X_WR_estimate;
   if (options_.sensor == WallSensor::kSonar) {
     // No echo is not free space (specular miss): only echoes go in, placed on the beam axis.
@@ -205,8 +211,39 @@ void WallFollowingController::Remember(const ControllerInput& input) {
   }
 }
 
-double WallFollowingController::CollectPoints(const msgs::Pose2D& X_WR,
-                                              std::vector<Point>* side) const {
+void WallFollowingController::SortOldPoints(const msgs::Pose2D& X_WR, std::size_t old_count) {
+  // A pose within the slack of the anchor sees a point within inner of the anchor within reach,
+  // and one beyond outer out of reach (triangle inequality); the padding covers the rounding of
+  // these tests and of the per-pose test, which are all far below a nanometre.
+  const double pad_m = 1e-9 * (1.0 + relevant_range_m_);
+  const double inner_m = std::max(0.0, relevant_range_m_ - kAnchorSlackM - pad_m);
+  const double outer_m = relevant_range_m_ + kAnchorSlackM + pad_m;
+  const double inner_squared = inner_m * inner_m, outer_squared = outer_m * outer_m;
+  // A point kept (within outer of the anchor) lies ahead of a pose within the slack and the turn
+  // of the anchor by at most its distance ahead of the anchor + outer * turn + slack: a point
+  // further behind than that is behind every such pose, and the ahead test wants x > 0.
+  const double behind_m = -(outer_m * kAnchorTurnRad + kAnchorSlackM + pad_m);
+  const double c = std::cos(X_WR.theta_rad), s = std::sin(X_WR.theta_rad);
+  old_inside_.clear();
+  old_boundary_.clear();
+  for (std::size_t i = 0; i < old_count; ++i) {
+    const Point& p_W = memory_[i].p_W;
+    const double dx = p_W.x_m - X_WR.x_m, dy = p_W.y_m - X_WR.y_m;
+    const double d_squared = dx * dx + dy * dy;
+    if (d_squared > outer_squared || c * dx + s * dy < behind_m) continue;
+    if (d_squared < inner_squared) {
+      old_inside_.push_back(p_W);
+    } else {
+      old_boundary_.push_back(p_W);
+    }
+  }
+  old_anchor_x_m_ = X_WR.x_m;
+  old_anchor_y_m_ = X_WR.y_m;
+  old_anchor_theta_rad_ = X_WR.theta_rad;
+  old_points_sorted_ = true;
+}
+
+double WallFollowingController::CollectPoints(const msgs::Pose2D& X_WR, std::vector<Point>* side) {
   // Hot loop over up to a few thousand points at the control rate: rotate by hand, compare bearings
   // through their cosines, skip the points too far away to matter before any of that, and take a
   // point's range (std::hypot) only when a test needs it. Every test on a point that is not skipped
@@ -218,20 +255,63 @@ double WallFollowingController::CollectPoints(const msgs::Pose2D& X_WR,
   const double oldest_side_s = newest_s - options_.wall_memory_s - kTimeSlackS;
   const double reach_squared = relevant_range_m_ * relevant_range_m_;
   double ahead_m = std::numeric_limits<double>::infinity();
-  for (const StampedPoint& stamped : memory_) {
-    const double dx = stamped.p_W.x_m - X_WR.x_m, dy = stamped.p_W.y_m - X_WR.y_m;
-    if (dx * dx + dy * dy > reach_squared) continue;
-    const Point p{c * dx + s * dy, -s * dx + c * dy};
-    PointRange range(p.x_m, p.y_m);
-    if (stamped.time_s >= oldest_side_s && range.AtMostTimes(side_sign_ * p.y_m, cos_side) &&
-        range.AtMost(options_.max_wall_range_m)) {
-      side->push_back(p);
-    }
+  // The ahead test: the nearest point in the lane or the front window, a minimum over the points,
+  // so the same whatever order they come in.
+  const auto ahead = [&](const Point& p, PointRange& range) {
     if (p.x_m > 0.0 && p.x_m < ahead_m &&
         (std::abs(p.y_m) <= options_.lane_half_width_m || range.AtMostTimes(p.x_m, cos_front))) {
       ahead_m = p.x_m;
     }
+  };
+  // memory_ is in time order: the points before `recent` are too old for the wall fit (the side
+  // test) and count only for the ahead test.
+  const auto recent =
+      std::partition_point(memory_.begin(), memory_.end(),
+                           [&](const StampedPoint& p) { return p.time_s < oldest_side_s; });
+  // A point on the far side (side_sign_ * y < 0) is no side point: range * cos_side >= 0 > that.
+  const bool far_side_fails = cos_side >= 0.0;
+  for (auto it = recent; it != memory_.end(); ++it) {
+    const double dx = it->p_W.x_m - X_WR.x_m, dy = it->p_W.y_m - X_WR.y_m;
+    if (dx * dx + dy * dy > reach_squared) continue;
+    const Point p{c * dx + s * dy, -s * dx + c * dy};
+    PointRange range(p.x_m, p.y_m);
+    const double towards_side_m = side_sign_ * p.y_m;
+    if (!(far_side_fails && towards_side_m < 0.0) && range.AtMostTimes(towards_side_m, cos_side) &&
+        range.AtMost(options_.max_wall_range_m)) {
+      side->push_back(p);
+    }
+    ahead(p, range);
   }
+  // The same test for an old point (no side test), its y taken only when x could count.
+  const auto old_ahead = [&](double dx, double dy) {
+    const double x_m = c * dx + s * dy;
+    if (!(x_m > 0.0 && x_m < ahead_m)) return;
+    const double y_m = -s * dx + c * dy;
+    if (std::abs(y_m) <= options_.lane_half_width_m ||
+        PointRange(x_m, y_m).AtMostTimes(x_m, cos_front)) {
+      ahead_m = x_m;
+    }
+  };
+  const auto old_count = static_cast<std::size_t>(recent - memory_.begin());
+  if (!std::isfinite(reach_squared)) {
+    for (std::size_t i = 0; i < old_count; ++i) {
+      old_ahead(memory_[i].p_W.x_m - X_WR.x_m, memory_[i].p_W.y_m - X_WR.y_m);
+    }
+    return ahead_m;
+  }
+  // The old points about an anchor pose (SortOldPoints): those surely within reach skip the reach
+  // test, those surely beyond it or behind the robot are not visited, the rest take it.
+  const double ax = X_WR.x_m - old_anchor_x_m_, ay = X_WR.y_m - old_anchor_y_m_;
+  if (!old_points_sorted_ || !(ax * ax + ay * ay <= kAnchorSlackM * kAnchorSlackM) ||
+      !(std::abs(X_WR.theta_rad - old_anchor_theta_rad_) <= kAnchorTurnRad)) {
+    SortOldPoints(X_WR, old_count);
+  }
+  for (const Point& p_W : old_boundary_) {
+    const double dx = p_W.x_m - X_WR.x_m, dy = p_W.y_m - X_WR.y_m;
+    if (dx * dx + dy * dy > reach_squared) continue;
+    old_ahead(dx, dy);
+  }
+  for (const Point& p_W : old_inside_) old_ahead(p_W.x_m - X_WR.x_m, p_W.y_m - X_WR.y_m);
   return ahead_m;
 }
 

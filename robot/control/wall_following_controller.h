@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -103,7 +104,10 @@ class WallFollowingController final : public Controller {
                 double time_s);
   // Appends the remembered side (wall) points in the robot frame to `side`; returns how far ahead
   // the nearest point in the lane or the front window is (infinity: none that matters).
-  double CollectPoints(const msgs::Pose2D& X_WR, std::vector<Point>* side) const;
+  double CollectPoints(const msgs::Pose2D& X_WR, std::vector<Point>* side);
+  // The points older than wall_memory_s near the anchor pose (see CollectPoints), for the ahead
+  // test only; re-sorted after each new reading and whenever the pose leaves the anchor's slack.
+  void SortOldPoints(const msgs::Pose2D& X_WR, std::size_t old_count);
   std::optional<WallEstimate> FitWall(const std::vector<Point>& side, double theta_estimate_rad);
 
   const DiffDriveSpec spec_;
@@ -116,6 +120,12 @@ class WallFollowingController final : public Controller {
   std::optional<WallEstimate> wall_;
   std::vector<StampedPoint> memory_;  // oldest first
   std::vector<Point> side_scratch_;   // CollectPoints' output, kept to reuse its allocation
+  // SortOldPoints' lists (estimate frame) for the anchor pose: the old points surely within reach
+  // of any pose within the slack of the anchor, and those that may be (within reach + slack);
+  // neither holds points surely behind every such pose.
+  bool old_points_sorted_ = false;
+  double old_anchor_x_m_ = 0.0, old_anchor_y_m_ = 0.0, old_anchor_theta_rad_ = 0.0;
+  std::vector<Point> old_inside_, old_boundary_;
   std::optional<double> last_reading_time_s_;
   double speed_m_s_ = 0.0;
   double arc_turned_rad_ = 0.0;  // heading change of the arc since the wall went out of view

@@ -170,6 +170,58 @@ TEST(WallFollowingControllerTest, TurnsAwayAtAnInnerCorner) {
   EXPECT_GT(r.closest_wall_m, 0.3);  // never closer than the P3-DX's half length
 }
 
+// Echoes older than wall_memory_s count only for the way ahead (CollectPoints sorts them about an
+// anchor pose and re-sorts when the pose moves away): one echo heard 3 s ago must block the lane
+// from any pose that has it close ahead, after small moves and after jumps of the estimate alike,
+// and must not block it from poses that have it behind or beyond the reach.
+TEST(WallFollowingControllerTest, AnOldEchoAheadBlocksTheLaneFromAnyPose) {
+  const DiffDriveSpec spec = P3dxSpec();
+  const WallFollowingOptions options;  // front_clearance_m 0.8, memory 10 s, wall memory 2 s
+  WallFollowingController controller(spec, options);
+  // One transducer facing ahead hears a post 3 m ahead of the origin at t = 0; later rings are
+  // silent (specular misses), so the post is remembered, not seen again.
+  msgs::RangeRing ring;
+  ring.range_min_m = 0.15;
+  ring.range_max_m = 5.0;
+  ring.readings.push_back({{0.0, 0.0, 0.0}, 3.0, true});
+  ControllerInput input{0.0, {0.0, 0.0, 0.0}, &ring};
+  controller.Update(input);
+  const msgs::WheelSpeedCommand turn_away =
+      TwistToWheelSpeeds(spec, {0.0, -options.max_turn_rate_rad_s});
+  ring.readings[0].echo = false;
+  struct Case {
+    double x_m, y_m, theta_rad;
+    bool blocked;
+  };
+  // Each pose a tick of 20 ms later; a silent ring every fifth tick.
+  const std::vector<Case> cases = {
+      {2.5, 0.0, 0.0, true},      // 0.5 m ahead
+      {2.52, 0.01, 0.0, true},    // within the anchor slack
+      {2.55, -0.02, 0.05, true},  // beyond it
+      {4.0, 0.0, 0.0, false},     // behind: clear, and nothing beside turns it
+      {2.4, 0.1, 0.0, true},      // a jump back
+      {2.4, 1.5, 0.0, false},     // beside, far off the lane and the window
+      {3.0, -0.7, 1.0, false},    // beside, facing away from it
+      {2.3, 0.0, 0.1, true},      // ahead again, slightly turned
+      {-2.0, 0.0, 0.0, false},    // 5 m before it: beyond the reach
+      {2.35, 0.05, -0.1, true},   // and back
+      {3.02, -0.25, 0.0, false},  // beside in the lane, 2 cm behind
+      {3.02, -0.25, 0.1, true},   // turned towards it by less than the anchor's turn: ahead
+  };
+  double t = 3.0;
+  for (std::size_t i = 0; i < cases.size(); ++i, t += 0.02) {
+    ring.time_s = std::floor(t * 5.0 + 1e-9) / 5.0;  // 5 Hz rings here, all after t = 2 s
+    input = {t, {cases[i].x_m, cases[i].y_m, cases[i].theta_rad}, &ring};
+    const msgs::WheelSpeedCommand command = controller.Update(input);
+    if (cases[i].blocked) {
+      EXPECT_EQ(command.left_rad_s, turn_away.left_rad_s) << "case " << i;
+      EXPECT_EQ(command.right_rad_s, turn_away.right_rad_s) << "case " << i;
+    } else {
+      EXPECT_NE(command.left_rad_s, turn_away.left_rad_s) << "case " << i;
+    }
+  }
+}
+
 TEST(WallFollowingControllerTest, WaitsForDataAndFinishesAfterItsDuration) {
   const DiffDriveSpec spec = P3dxSpec();
   WallFollowingOptions options;

@@ -404,7 +404,7 @@ void ExperimentRunner::Run(const Progress& progress) {
       scene_->Step();
     }
     ++cost_.steps;
-    const mjData* d = scene_->data();
+    const mjData* d = scene_->stepped_data();
     if (d->warning[mjWARN_BADQACC].number > 0 || !std::isfinite(d->qpos[0])) {
       throw std::runtime_error("physics diverged at t=" + FormatNumber(d->time) + " s (MuJoCo: " +
                                LastMujocoWarning() + "); try a smaller physics.timestep_s");

@@ -67,7 +67,7 @@ msgs::Bumpers BumperSensor::Sample(const Scene& scene) const {
   msgs::Bumpers out;
   out.time_s = scene.time_s();
   out.pressed.assign(panel_bearings_rad_.size(), false);
-  const mjData* d = scene.data();
+  const mjData* d = scene.stepped_data();  // contacts and the base body only
   for (int c = 0; c < d->ncon; ++c) {
     const mjContact& contact = d->contact[c];
     // Contacts inside a geom margin are not touching yet.

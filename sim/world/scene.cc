@@ -7,6 +7,7 @@
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
 #include "sim/world/contact_filter.h"
+#include "sim/world/draw_only_geoms.h"
 #include "sim/world/static_geom_step.h"
 
 namespace plywood::sim {
@@ -120,6 +121,7 @@ Scene::Scene(const SceneOptions& options) : options_(options) {
   qpos0[5] = 0.0;
   qpos0[6] = std::sin(options.spawn.theta_rad / 2.0);
   InstallTightContactFilter();
+  draw_only_geoms_ = DrawOnlyGeoms(model_.get(), kRobotGeomGroup);
   data_.reset(mj_makeData(model_.get()));
   mj_resetData(model_.get(), data_.get());
   MakeNearContactPairs();
@@ -161,6 +163,7 @@ void Scene::PlaceRobot(const msgs::Pose2D& X_WR) {
   q[5] = 0.0;
   q[6] = std::sin(X_WR.theta_rad / 2);
   WithNearPairs([&] { mj_forward(model_.get(), data_.get()); });
+  draw_only_stale_ = false;
 }
 
 void Scene::SetWheelSpeeds(const msgs::WheelSpeedCommand& command) {
@@ -169,8 +172,19 @@ void Scene::SetWheelSpeeds(const msgs::WheelSpeedCommand& command) {
 }
 
 void Scene::Step() {
-  // mj_step, bit for bit, without recomputing the static world geoms' poses.
-  WithNearPairs([&] { StepWithStaticWorldGeoms(model_.get(), data_.get()); });
+  // mj_step, bit for bit, without recomputing the static world geoms' poses and without placing
+  // the draw-only geoms until something asks for data().
+  WithNearPairs([&] {
+    if (StepWithStaticWorldGeoms(model_.get(), data_.get(), draw_only_geoms_)) {
+      draw_only_stale_ = true;
+    }
+  });
+}
+
+void Scene::PlaceDrawOnlyGeoms() const {
+  if (!draw_only_stale_) return;
+  PlaceGeoms(model_.get(), data_.get(), draw_only_geoms_);
+  draw_only_stale_ = false;
 }
 
 WheelGeometry Scene::wheel_geometry() const {
@@ -204,6 +218,7 @@ void Scene::SetWheelGeometry(const WheelGeometry& geometry) {
   mj_resetData(m, data_.get());
   MakeNearContactPairs();  // the robot's bounding circle follows its wheels
   WithNearPairs([&] { mj_forward(m, data_.get()); });
+  draw_only_stale_ = false;
 }
 
 std::optional<int> Scene::FindSite(const std::string& name) const {

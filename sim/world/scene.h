@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "msgs/pose2d.h"
 #include "msgs/wheel_speed_command.h"
@@ -43,8 +44,20 @@ class Scene {
   Scene& operator=(const Scene&) = delete;
 
   const mjModel* model() const { return model_.get(); }
-  const mjData* data() const { return data_.get(); }
-  mjData* mutable_data() { return data_.get(); }
+  // The data with every geom placed. Step() leaves the robot's draw-only geoms (DrawOnlyGeoms:
+  // visual wheels, shell, bump panels) where they were; data() and mutable_data() place them first
+  // (on the calling thread), bit for bit where mj_step would have put them.
+  const mjData* data() const {
+    PlaceDrawOnlyGeoms();
+    return data_.get();
+  }
+  mjData* mutable_data() {
+    PlaceDrawOnlyGeoms();
+    return data_.get();
+  }
+  // The data as the last step left it, the draw-only geoms' poses possibly stale: for the step
+  // loop's reads of the state, contacts, bodies and sites, which do not depend on them.
+  const mjData* stepped_data() const { return data_.get(); }
 
   double time_s() const { return data_->time; }
   double timestep_s() const { return model_->opt.timestep; }
@@ -83,6 +96,7 @@ class Scene {
 
  private:
   void MakeNearContactPairs();
+  void PlaceDrawOnlyGeoms() const;
   // Runs MuJoCo with the robot's near contact pairs in place (when the model has them).
   template <typename Call>
   void WithNearPairs(Call call) {
@@ -101,6 +115,8 @@ class Scene {
   int left_motor_ = -1, right_motor_ = -1;
   int left_tire_ = -1, right_tire_ = -1;
   std::unique_ptr<NearContactPairs> near_pairs_;
+  std::vector<int> draw_only_geoms_;      // DrawOnlyGeoms of the model, skipped by Step()
+  mutable bool draw_only_stale_ = false;  // Step() skipped them since they were last placed
 };
 
 // The MJCF text that includes `world` and `robot` into one model (exposed for tests), with

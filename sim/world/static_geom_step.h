@@ -2,6 +2,8 @@
 
 #include <mujoco/mujoco.h>
 
+#include <span>
+
 namespace plywood::sim {
 
 // mj_step without recomputing the world body's geom poses, which never change: MuJoCo 2.2.2's
@@ -16,5 +18,13 @@ namespace plywood::sim {
 // @pre the world body's geom poses in `d` are current: mj_kinematics (or mj_forward, mj_step)
 // has run on `d` since it was made or last reset.
 void StepWithStaticWorldGeoms(mjModel* m, mjData* d);
+
+// The same step, also leaving the geoms in `unplaced` (ids ascending, none of the world body's;
+// see DrawOnlyGeoms) where they were: their geom_xpos / geom_xmat keep their values from before
+// the step until PlaceGeoms sets them. Returns true when it skipped them, false when the step fell
+// back to a path that placed every geom (mj_step, or the full position stage after a reset).
+// Everything else the step computes is bit-identical to mj_step as long as nothing in the step
+// reads those geoms' poses (which DrawOnlyGeoms makes sure of).
+bool StepWithStaticWorldGeoms(mjModel* m, mjData* d, std::span<const int> unplaced);
 
 }  // namespace plywood::sim

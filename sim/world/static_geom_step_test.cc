@@ -10,6 +10,7 @@
 
 #include "sim/config/robot_catalog.h"
 #include "sim/world/contact_filter.h"
+#include "sim/world/draw_only_geoms.h"
 #include "sim/world/near_contact_pairs.h"
 #include "sim/world/scene.h"
 
@@ -65,21 +66,28 @@ bool SameContacts(const mjData* a, const mjData* b) {
 TEST(StaticGeomStepTest, BitIdenticalToMjStepOverThousandsOfStepsIntoWalls) {
   InstallTightContactFilter();
   for (const std::string robot : {"p3dx", "magellan_pro"}) {
-    Compiled a(robot), b(robot);
+    Compiled a(robot), b(robot), c(robot);
     const mjModel* m = a.model.get();
+    // c steps without placing the draw-only geoms (the robot's visual ones), placed before each
+    // comparison as Scene::data() places them.
+    const std::vector<int> draw_only = DrawOnlyGeoms(m, Scene::kRobotGeomGroup);
+    const int shell =
+        mj_name2id(m, mjOBJ_BODY, (robot == "p3dx" ? "p3dx_shell" : "magellan_shell"));
+    ASSERT_EQ(static_cast<int>(draw_only.size()), m->body_geomnum[shell]) << robot;
+    for (const int g : draw_only) EXPECT_EQ(m->geom_bodyid[g], shell) << robot;
     const int left = mj_name2id(m, mjOBJ_ACTUATOR, "left_wheel_motor");
     const int right = mj_name2id(m, mjOBJ_ACTUATOR, "right_wheel_motor");
     ASSERT_GE(m->body_geomnum[0], 50);  // the office's walls are in the world body
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> wheel(-12.0, 12.0);
-    int steps_touching_world = 0;
+    int steps_touching_world = 0, steps_left_unplaced = 0;
     constexpr int kSteps = 4000;
     for (int step = 0; step < kSteps; ++step) {
       if (step % 300 == 0) {
         // Full ahead into the wall first, then turns, reverses and more full-ahead spells.
         const bool ahead = step < 1200 || step % 900 == 0;
         const double l = ahead ? 12.0 : wheel(rng), r = ahead ? 12.0 : wheel(rng);
-        for (mjData* d : {a.data.get(), b.data.get()}) {
+        for (mjData* d : {a.data.get(), b.data.get(), c.data.get()}) {
           d->ctrl[left] = l;
           d->ctrl[right] = r;
         }
@@ -91,6 +99,25 @@ TEST(StaticGeomStepTest, BitIdenticalToMjStepOverThousandsOfStepsIntoWalls) {
       {
         const NearContactPairs::Active active = b.pairs->Activate(b.data.get());
         StepWithStaticWorldGeoms(b.model.get(), b.data.get());
+      }
+      {
+        const NearContactPairs::Active active = c.pairs->Activate(c.data.get());
+        ASSERT_TRUE(StepWithStaticWorldGeoms(c.model.get(), c.data.get(), draw_only));
+      }
+      // Unplaced, the draw-only geoms still hold the pose of the step before.
+      if (!SameBytes(c.data->geom_xpos + 3 * draw_only[0], a.data->geom_xpos + 3 * draw_only[0],
+                     3)) {
+        ++steps_left_unplaced;
+      }
+      PlaceGeoms(c.model.get(), c.data.get(), draw_only);
+      {
+        const mjData *d = b.data.get(), *dc = c.data.get();
+        ASSERT_TRUE(SameBytes(d->qpos, dc->qpos, m->nq)) << robot << " step " << step;
+        ASSERT_TRUE(SameBytes(d->qvel, dc->qvel, m->nv)) << robot << " step " << step;
+        ASSERT_TRUE(SameBytes(d->qacc, dc->qacc, m->nv)) << robot << " step " << step;
+        ASSERT_TRUE(SameBytes(d->geom_xpos, dc->geom_xpos, 3 * m->ngeom)) << robot << " " << step;
+        ASSERT_TRUE(SameBytes(d->geom_xmat, dc->geom_xmat, 9 * m->ngeom)) << robot << " " << step;
+        ASSERT_TRUE(SameContacts(d, dc)) << robot << " step " << step;
       }
       const mjData* da = a.data.get();
       const mjData* db = b.data.get();
@@ -115,6 +142,7 @@ TEST(StaticGeomStepTest, BitIdenticalToMjStepOverThousandsOfStepsIntoWalls) {
     std::printf("%s: %d of %d steps touch a wall, ends at %.2f %.2f\n", robot.c_str(),
                 steps_touching_world, kSteps, a.data->qpos[0], a.data->qpos[1]);
     EXPECT_GT(steps_touching_world, 300) << robot << ": the robot must press into walls";
+    EXPECT_GT(steps_left_unplaced, kSteps / 2) << robot << ": the step must skip them";
   }
 }
 
