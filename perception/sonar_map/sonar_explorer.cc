@@ -454,6 +454,13 @@ SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here
       const double p = grid_.Probability(ix, iy);
       CellState state =
           p < eps ? CellState::kFree : (p > 1.0 - eps ? CellState::kOccupied : CellState::kUnknown);
+      // The robot's body stands on the cells under it: they are free whatever the sonar made of
+      // them (it never hears inside its blanking range, so a cell the robot came to stand on may
+      // still be unknown). Left unknown, they can cut the robot's own cell off from the free space
+      // around it, and then nothing is reachable and the run ended "map_complete" on the spot.
+      if (state == CellState::kUnknown &&
+          (grid_.CellCentre(ix, iy) - here).norm() <= options_.robot_radius_m)
+        state = CellState::kFree;
       out.cells.cells[i] = state;
       // The fitted obstacles are no way through, but their unknown cells stay unknown: a blob
       // fitted around space nobody has seen yet is where the frontier is.

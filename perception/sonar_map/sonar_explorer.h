@@ -154,7 +154,8 @@ class SonarExplorer final : public robot::Controller {
   void Replan(const msgs::Pose2D& X_WR, double time_s);
   // Whether a target lies within visit_radius_m of one whose move a front echo blocked.
   bool Abandoned(const Eigen::Vector2d& target) const;
-  // The grid's cells as free / occupied / unknown (fitted obstacles occupied), and which of them
+  // The grid's cells as free / occupied / unknown (fitted obstacles occupied; the unknown cells
+  // under the robot's body free: it stands on them), and which of them
   // keep path_clearance_m from everything occupied, or from the occupied cells only (frontier
   // paths: a fitted obstacle may be a blob of space not yet seen); near the robot also the free
   // cells no nearer to those than its own cell (EscapeCells), so that it can leave.

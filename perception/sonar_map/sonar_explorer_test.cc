@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -217,6 +218,68 @@ TEST(SonarExplorerTest, RearBumpFromRestRampsUpToTheBackOffSpeed) {
     v = Speed(c);
   }
   EXPECT_NEAR(v, options.bump_back_off_speed_m_s, 1e-9);
+}
+
+// The range along a ray from (x, y) at bearing a to the first face of the 3 x 3 m room or of the
+// axis-parallel box [bx0, bx1] x [by0, by1].
+double RangeToRoomOrBox(double x, double y, double a, double bx0, double by0, double bx1,
+                        double by1) {
+  constexpr double kHalf = 1.5;
+  const double c = std::cos(a), s = std::sin(a);
+  double range = 1e9;
+  if (c > 1e-12) range = std::min(range, (kHalf - x) / c);
+  if (c < -1e-12) range = std::min(range, (-kHalf - x) / c);
+  if (s > 1e-12) range = std::min(range, (kHalf - y) / s);
+  if (s < -1e-12) range = std::min(range, (-kHalf - y) / s);
+  // Slab test against the box.
+  double t0 = 0.0, t1 = 1e9;
+  for (const auto& [o, d, lo, hi] :
+       {std::array<double, 4>{x, c, bx0, bx1}, std::array<double, 4>{y, s, by0, by1}}) {
+    if (std::abs(d) < 1e-12) {
+      if (o < lo || o > hi) return range;
+      continue;
+    }
+    const double ta = (lo - o) / d, tb = (hi - o) / d;
+    t0 = std::max(t0, std::min(ta, tb));
+    t1 = std::min(t1, std::max(ta, tb));
+  }
+  return t0 <= t1 ? std::min(range, t0) : range;
+}
+
+// Issue 14: exploration ends "map_complete" only when no obstacle is left to go round. A robot
+// that stands where the sonar never looked (the cells under its body are inside every
+// transducer's blanking range, so they stay unknown: here it never moves, in world 17 of the
+// generated rooms it had come to rest there) found no cell it could step to, skipped every
+// circuit corner as "as near as it gets", reached no place and no frontier, and declared the map
+// complete on the spot with the box in the map never gone round.
+TEST(SonarExplorerTest, RobotOnCellsTheSonarNeverSawDoesNotDeclareTheMapComplete) {
+  SonarExplorerOptions options = ClassicalOptions();
+  options.perimeter_max_s = 1.0;  // straight on to the circuits: the robot here never moves
+  auto explorer = MakeExplorer(options);
+  constexpr double kBx0 = 0.5, kBy0 = 0.3, kBx1 = 1.0, kBy1 = 1.0;  // a box NE of the robot
+  msgs::RangeRing ring;
+  robot::ControllerInput input;
+  bool moved = false;
+  for (int k = 0; k < 500; ++k) {
+    const double t = k * kDt;
+    if (k % 10 == 0) {
+      ring = RoomRing(t);
+      for (msgs::RangeReading& r : ring.readings)
+        r.range_m =
+            RangeToRoomOrBox(r.X_RS.x_m, r.X_RS.y_m, r.X_RS.theta_rad, kBx0, kBy0, kBx1, kBy1);
+    }
+    input.time_s = t;
+    input.sonar = &ring;
+    const msgs::WheelSpeedCommand c = explorer->Update(input);
+    if (t > options.perimeter_max_s + 0.5)
+      moved = moved || c.left_rad_s != 0.0 || c.right_rad_s != 0.0;
+  }
+  const CognitiveMap map = explorer->PlanningMap();
+  ASSERT_EQ(map.obstacles.size(), 1u);
+  EXPECT_LT(map.obstacles[0].x0, kBx1);  // the box, seen
+  EXPECT_GT(map.obstacles[0].x1, kBx0);
+  EXPECT_FALSE(explorer->Finished()) << explorer->end_reason();
+  EXPECT_TRUE(moved);  // it sets off round the box (turning first)
 }
 
 void ExpectThrowsNaming(const SonarExplorerOptions& options, const std::string& field) {
