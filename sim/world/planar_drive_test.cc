@@ -279,6 +279,21 @@ TEST(PlanarDriveTest, OfficeWallFollowingNeverOverlapsAWall) {
   EXPECT_GT(path_m, 10.0);  // it went round the office rather than sitting at a wall
 }
 
+// The planar drive places nothing after a step; a base site's pose is computed from qpos, the
+// same as after mj_kinematics (data()).
+TEST(PlanarDriveTest, SitePosesAfterAStepAreTheKinematicsOnes) {
+  const std::unique_ptr<Scene> scene = MakeScene(P3dx(), DriveMode::kPlanar);
+  Drive(*scene, 3.0, 5.0, 137);
+  const int laser = *scene->FindSite("laser");
+  const Eigen::Isometry3d lazy = scene->SitePoseInWorld(laser);
+  scene->data();
+  const Eigen::Isometry3d placed = scene->SitePoseInWorld(laser);
+  EXPECT_LT((lazy.translation() - placed.translation()).norm(), 1e-12);
+  EXPECT_LT((lazy.linear() - placed.linear()).norm(), 1e-12);
+  EXPECT_GT(placed.translation().head<2>().norm(), 0.1);  // it did move
+  EXPECT_EQ(lazy.linear()(2, 0), 0.0);                     // exactly level
+}
+
 TEST(PlanarDriveTest, AnInvalidDriveIsAOneLineErrorNamingTheField) {
   const std::string yaml =
       "name: x\nworld: worlds/hall.xml\nrobot: {model: p3dx}\nphysics: {drive: kinematic}\n";

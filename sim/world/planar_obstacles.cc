@@ -112,7 +112,6 @@ PlanarObstacles::PlanarObstacles(const mjModel* m, const mjData* d, int base_bod
       o.uy = r[3];
       o.half_x = size[0];
       o.half_y = size[1];
-      o.bound_m = std::hypot(size[0], size[1]);
       half_height = size[2];
     } else {
       o.disc = true;
@@ -124,21 +123,27 @@ PlanarObstacles::PlanarObstacles(const mjModel* m, const mjData* d, int base_bod
       } else {
         o.radius_m = m->geom_rbound[g];
       }
-      o.bound_m = o.radius_m;
     }
     if (p[2] + half_height < z_lo || p[2] - half_height > z_hi) continue;
     obstacles_.push_back(o);
   }
 }
 
+double PlanarObstacles::CentreDistance(const Obstacle& o, double x, double y) {
+  const double dx = x - o.cx, dy = y - o.cy;
+  if (o.disc) return std::max(0.0, std::hypot(dx, dy) - o.radius_m);
+  const double ex = std::max(0.0, std::abs(dx * o.ux + dy * o.uy) - o.half_x);
+  const double ey = std::max(0.0, std::abs(-dx * o.uy + dy * o.ux) - o.half_y);
+  return std::hypot(ex, ey);
+}
+
 const std::vector<int>& PlanarObstacles::Near(double x, double y) {
   if (near_valid_ && std::hypot(x - near_x_, y - near_y_) <= kNearPadM / 2.0) return near_;
   near_.clear();
   for (std::size_t i = 0; i < obstacles_.size(); ++i) {
-    const Obstacle& o = obstacles_[i];
-    const double limit = o.bound_m + reach_m_ + kNearPadM;
-    const double dx = o.cx - x, dy = o.cy - y;
-    if (dx * dx + dy * dy <= limit * limit) near_.push_back(static_cast<int>(i));
+    if (CentreDistance(obstacles_[i], x, y) <= reach_m_ + kNearPadM) {
+      near_.push_back(static_cast<int>(i));
+    }
   }
   near_x_ = x;
   near_y_ = y;
@@ -146,7 +151,8 @@ const std::vector<int>& PlanarObstacles::Near(double x, double y) {
   return near_;
 }
 
-double PlanarObstacles::Gap(const Obstacle& o, const msgs::Pose2D& X_WR, double witness[2]) const {
+double PlanarObstacles::Gap(const Obstacle& o, const msgs::Pose2D& X_WR, double witness[2],
+                            bool overlap_only) const {
   // The obstacle in the robot frame.
   const double c = std::cos(X_WR.theta_rad), s = std::sin(X_WR.theta_rad);
   const double dx = o.cx - X_WR.x_m, dy = o.cy - X_WR.y_m;
@@ -212,6 +218,7 @@ double PlanarObstacles::Gap(const Obstacle& o, const msgs::Pose2D& X_WR, double 
     witness[1] = centre[1] + lx * uy + ly * vy;
     return -1.0;
   }
+  if (overlap_only) return 0.0;
   // Disjoint convex polygons: the gap is between a vertex of one and an edge of the other.
   double best = std::numeric_limits<double>::infinity();
   for (int i = 0; i < n; ++i) {
@@ -243,11 +250,9 @@ double PlanarObstacles::Gap(const Obstacle& o, const msgs::Pose2D& X_WR, double 
 bool PlanarObstacles::Overlaps(const msgs::Pose2D& X_WR) {
   for (int i : Near(X_WR.x_m, X_WR.y_m)) {
     const Obstacle& o = obstacles_[i];
-    const double limit = o.bound_m + reach_m_;
-    const double dx = o.cx - X_WR.x_m, dy = o.cy - X_WR.y_m;
-    if (dx * dx + dy * dy >= limit * limit) continue;
+    if (CentreDistance(o, X_WR.x_m, X_WR.y_m) >= reach_m_) continue;
     double witness[2];
-    if (Gap(o, X_WR, witness) < 0.0) return true;
+    if (Gap(o, X_WR, witness, /*overlap_only=*/true) < 0.0) return true;
   }
   return false;
 }
@@ -256,11 +261,10 @@ void PlanarObstacles::ContactBearings(const msgs::Pose2D& X_WR, double skin_m,
                                       std::vector<double>* out) {
   for (int i : Near(X_WR.x_m, X_WR.y_m)) {
     const Obstacle& o = obstacles_[i];
-    const double limit = o.bound_m + reach_m_ + skin_m;
-    const double dx = o.cx - X_WR.x_m, dy = o.cy - X_WR.y_m;
-    if (dx * dx + dy * dy > limit * limit) continue;
+    if (CentreDistance(o, X_WR.x_m, X_WR.y_m) > reach_m_ + skin_m) continue;
     double witness[2];
-    if (Gap(o, X_WR, witness) <= skin_m) out->push_back(std::atan2(witness[1], witness[0]));
+    if (Gap(o, X_WR, witness, /*overlap_only=*/false) <= skin_m)
+      out->push_back(std::atan2(witness[1], witness[0]));
   }
 }
 

@@ -44,17 +44,20 @@ class PlanarObstacles {
   struct Obstacle {
     bool disc = false;
     double cx = 0.0, cy = 0.0;
-    double bound_m = 0.0;       // bounding radius about (cx, cy)
     double radius_m = 0.0;      // disc
     double ux = 1.0, uy = 0.0;  // rectangle: unit x axis; its y axis is (-uy, ux)
     double half_x = 0.0, half_y = 0.0;
   };
-  // The obstacles whose bounding circles come within kNearPadM of the footprint's circle about
-  // (x, y): refreshed when the robot has moved more than half the pad since the last refresh.
+  // Distance from (x, y) to the obstacle's footprint (0 inside).
+  static double CentreDistance(const Obstacle& o, double x, double y);
+  // The obstacles within kNearPadM of the footprint's circle (radius reach_m) about (x, y):
+  // refreshed when the robot has moved more than half the pad since the last refresh.
   const std::vector<int>& Near(double x, double y);
-  // Gap (>= 0) between the footprint and obstacle `o` given in the robot frame by the pose's
-  // inverse; negative (-1) when they overlap. `witness` gets the footprint's nearest point.
-  double Gap(const Obstacle& o, const msgs::Pose2D& X_WR, double witness[2]) const;
+  // Gap (>= 0) between the footprint at X_WR and obstacle `o`; -1 when they overlap. `witness`
+  // gets the footprint's point nearest the obstacle (robot frame). With overlap_only, a rectangle
+  // found apart returns 0 without its gap or witness.
+  double Gap(const Obstacle& o, const msgs::Pose2D& X_WR, double witness[2],
+             bool overlap_only) const;
 
   static constexpr double kNearPadM = 0.5;
   std::vector<double> hull_;     // x0, y0, x1, y1, ... counter-clockwise

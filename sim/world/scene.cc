@@ -281,6 +281,21 @@ msgs::Pose2D Scene::SitePoseInRobot(int site_id) const {
 double Scene::SiteHeightM(int site_id) const { return model_->site_pos[3 * site_id + 2]; }
 
 Eigen::Isometry3d Scene::SitePoseInWorld(int site_id) const {
+  if (kinematics_stale_ && model_->site_bodyid[site_id] == base_body_) {
+    // The planar drive moved the base: its site from qpos as mj_kinematics would place it (a free
+    // joint's body frame is its qpos), without placing the rest of the model.
+    const mjtNum* q = data_->qpos + base_qpos_;
+    mjtNum quat[4], site_quat[4], site_mat[9], offset[3];
+    mju_copy4(quat, q + 3);
+    mju_normalize4(quat);
+    mju_mulQuat(site_quat, quat, model_->site_quat + 4 * site_id);
+    mju_quat2Mat(site_mat, site_quat);
+    mju_rotVecQuat(offset, model_->site_pos + 3 * site_id, quat);
+    Eigen::Isometry3d X_WS = Eigen::Isometry3d::Identity();
+    X_WS.translation() = Eigen::Vector3d(q[0] + offset[0], q[1] + offset[1], q[2] + offset[2]);
+    X_WS.linear() = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(site_mat);
+    return X_WS;
+  }
   if (kinematics_stale_) PlaceDrawOnlyGeoms();
   Eigen::Isometry3d X_WS = Eigen::Isometry3d::Identity();
   const mjtNum* p = data_->site_xpos + 3 * site_id;
