@@ -23,17 +23,19 @@ struct PlanarDriveIndices {
 // Wheel speeds. A velocity servo drives each wheel with torque g kv (u - g w) (gear g, gain kv,
 // command u clamped to ctrlrange) plus the joint's damping -c w. Rolling without slip, the robot's
 // kinetic energy in the wheel speeds' mean s = (wl + wr) / 2 and half difference d = (wr - wl) / 2
-// is (1/2) Is s^2 + (1/2) Id d^2 (times 2) with
+// is Is s^2 + Id d^2 (the two wheels' share each, (1/2) I w^2 per wheel) with
 //   Is = Iw + m r^2 / 2       (straight: each wheel carries half the robot's mass m),
 //   Id = Iw + 2 Iz r^2 / b^2  (turning: half the yaw inertia Iz about the axle midpoint, through
 //                              the lever b / 2 of track b),
 // Iw a wheel's inertia about its axle plus the joint's armature, r the wheels' mean radius; so
 // Is ds/dt = k (s* - s) and Id dd/dt = k (d* - d) with k = g^2 kv + c and s*, d* the commanded
 // speeds' mean and half difference divided by g: first-order lags with time constants Is / k and
-// Id / k. m, Iz (every robot body's mass and inertia about the base's vertical axis) and Iw come
-// from the compiled model at the spawn pose; a step advances the lags as MuJoCo's explicit Euler
-// integrator does (s += dt k / Is (s* - s), the factor capped at 1), so the wheels answer a
-// command step as they do on the floor, contacts aside.
+// Id / k (the generalised forces of s and d are the two wheels' torques' sum and difference). m, Iz
+// (every robot body's mass and inertia about the base's vertical axis) and Iw come from the
+// compiled model at the spawn pose; a step advances the lags as MuJoCo's explicit Euler integrator
+// does (s += dt k / Is (s* - s), the factor capped at 1), so the wheels answer a command step as
+// they do on the floor (PlanarDriveTest.WheelsAnswerACommandStepAsOnTheFloor); the body there slips
+// behind them while it accelerates, which is not modelled.
 //
 // Pose. Wheel angles advance by w dt (semi-implicit, as mj_step), the base along the exact arc of
 // v = (rr wr + rl wl) / 2 and yaw rate (rr wr - rl wl) / b with the as-built radii and track, so

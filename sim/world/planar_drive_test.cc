@@ -291,7 +291,7 @@ TEST(PlanarDriveTest, SitePosesAfterAStepAreTheKinematicsOnes) {
   EXPECT_LT((lazy.translation() - placed.translation()).norm(), 1e-12);
   EXPECT_LT((lazy.linear() - placed.linear()).norm(), 1e-12);
   EXPECT_GT(placed.translation().head<2>().norm(), 0.1);  // it did move
-  EXPECT_EQ(lazy.linear()(2, 0), 0.0);                     // exactly level
+  EXPECT_EQ(lazy.linear()(2, 0), 0.0);                    // exactly level
 }
 
 TEST(PlanarDriveTest, AnInvalidDriveIsAOneLineErrorNamingTheField) {
