@@ -55,7 +55,7 @@ void PrintFigures(const eval::BenchFigures& f, const eval::BenchOptions& o) {
     std::printf("  %-28s %8.0f x  (%.2f us/step, %d geoms)\n", s.label.c_str(),
                 s.cost.RealTimeFactor(), UsPerStep(s.cost.wall_s, s.cost.steps), s.geoms);
   }
-  if (f.worlds.size() == 3 && f.worlds[1].cost.RealTimeFactor() > 0.0) {
+  if (f.worlds.size() >= 3 && f.worlds[1].cost.RealTimeFactor() > 0.0) {
     std::printf("  %-28s %8.2f   (the goal: >= 0.8)\n", "3x3 tiled / office RTF",
                 f.worlds[2].cost.RealTimeFactor() / f.worlds[1].cost.RealTimeFactor());
   }

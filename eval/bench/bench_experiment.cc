@@ -16,7 +16,8 @@ namespace {
 
 constexpr int kMaxDefaultRunRepeats = 100;
 
-sim::ExperimentConfig BenchConfig(const std::string& world, double seconds) {
+// `planar`: the same run with physics.drive: planar (no mj_step; sim/world/planar_drive.h).
+sim::ExperimentConfig BenchConfig(const std::string& world, double seconds, bool planar = false) {
   const std::string yaml =
       "name: bench\nseed: 1\nduration_s: " + sim::FormatNumber(seconds) + "\nworld: " + world +
       "\nrobot: {model: p3dx}\n"
@@ -25,7 +26,8 @@ sim::ExperimentConfig BenchConfig(const std::string& world, double seconds) {
       "  laser: {resolution_deg: 0.5, rate_hz: 10}\n"
       "  sonar: {rate_hz: 10}\n"
       "  encoders: {}\n"
-      "  gyro: {}\n";
+      "  gyro: {}\n" +
+      std::string(planar ? "physics: {drive: planar}\n" : "");
   return sim::ParseExperimentConfig(yaml, "bench", std::filesystem::current_path());
 }
 
@@ -94,6 +96,9 @@ BenchFigures RunBench(const BenchOptions& options) {
                    options, false));
   figures.worlds.push_back(MeasureWorld(
       "office 3x3 tiled", BenchConfig(tiled_path.string(), options.seconds), options, false));
+  figures.worlds.push_back(MeasureWorld(
+      "office.xml, planar drive",
+      BenchConfig((worlds / "office.xml").string(), options.seconds, true), options, false));
 
   {
     sim::ExperimentRunner runner(config);

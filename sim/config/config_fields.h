@@ -32,6 +32,9 @@ void VisitFields(A& a, SpawnPose& o) {
 template <typename A>
 void VisitFields(A& a, PhysicsOptions& o) {
   a("timestep_s", o.timestep_s);
+  a.Enum(
+      "drive", o.drive, [](DriveMode d) { return ToString(d); },
+      [](const std::string& t) { return ParseDriveMode(t); });
 }
 
 template <typename A>

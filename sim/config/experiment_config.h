@@ -13,6 +13,7 @@
 #include "sim/config/lines_config.h"
 #include "sim/config/odometry_config.h"
 #include "sim/config/sensor_suite_config.h"
+#include "sim/world/drive_mode.h"
 #include "sim/world/physical_deviation.h"
 
 namespace plywood::sim {
@@ -26,6 +27,8 @@ struct SpawnPose {
 
 struct PhysicsOptions {
   double timestep_s = 0.01;
+  // contact (MuJoCo's contacts, the default) or planar (no mj_step: sim/world/planar_drive.h).
+  DriveMode drive = DriveMode::kContact;
   void Validate() const;
 };
 

@@ -136,6 +136,7 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
   scene_options.robot_mjcf = robot_entry.mjcf;
   scene_options.spawn = {config.spawn.x_m, config.spawn.y_m, config.spawn.theta_deg * kDegToRad};
   scene_options.timestep_s = config.physics.timestep_s;
+  scene_options.drive = config.physics.drive;
   scene_ = std::make_unique<Scene>(scene_options);
 
   // The as-built drive: the model's own wheels, deviated by E_d and E_b.

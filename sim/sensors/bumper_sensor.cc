@@ -67,6 +67,13 @@ msgs::Bumpers BumperSensor::Sample(const Scene& scene) const {
   msgs::Bumpers out;
   out.time_s = scene.time_s();
   out.pressed.assign(panel_bearings_rad_.size(), false);
+  if (scene.drive() == DriveMode::kPlanar) {
+    if (panel_count() == 0) return out;
+    for (const double bearing : scene.PlanarContactBearings()) {
+      out.pressed[PanelAtBearing(bearing)] = true;
+    }
+    return out;
+  }
   const mjData* d = scene.stepped_data();  // contacts and the base body only
   for (int c = 0; c < d->ncon; ++c) {
     const mjContact& contact = d->contact[c];

@@ -30,7 +30,10 @@ struct BumperSensorOptions {
 //    -163.0, -143.1 (so a contact on the ring's flat side goes to panel 4/5 or 9/0, split at 98.4).
 //  - Magellan Pro: panel i centred at 22.5 i, each covering +-11.25.
 // Contacts are MuJoCo's from the last step, i.e. at the start of that step, as a real switch is
-// read a moment late.
+// read a moment late. In the planar drive (DriveMode::kPlanar) there are no MuJoCo contacts: panel
+// i is pressed while the bumper ring's footprint is within Scene::kPlanarContactSkinM of a static
+// geom at a point whose bearing lies in its arc (Scene::PlanarContactBearings), at the current
+// pose.
 class BumperSensor {
  public:
   // @throws std::invalid_argument when `options` is invalid.

@@ -8,6 +8,7 @@
 #include "sim/config/config_error.h"
 #include "sim/world/contact_filter.h"
 #include "sim/world/draw_only_geoms.h"
+#include "sim/world/planar_drive.h"
 #include "sim/world/static_geom_step.h"
 
 namespace plywood::sim {
@@ -126,6 +127,34 @@ Scene::Scene(const SceneOptions& options) : options_(options) {
   mj_resetData(model_.get(), data_.get());
   MakeNearContactPairs();
   WithNearPairs([&] { mj_forward(model_.get(), data_.get()); });
+  MakePlanarDrive();
+}
+
+Scene::~Scene() = default;
+
+void Scene::MakePlanarDrive() {
+  if (options_.drive != DriveMode::kPlanar) return;
+  PlanarDriveIndices ids;
+  ids.base_body = base_body_;
+  ids.base_qpos = base_qpos_;
+  ids.base_dof = model_->jnt_dofadr[model_->body_jntadr[base_body_]];
+  ids.left_joint = model_->body_jntadr[left_wheel_body_];
+  ids.right_joint = model_->body_jntadr[right_wheel_body_];
+  ids.left_motor = left_motor_;
+  ids.right_motor = right_motor_;
+  const WheelGeometry g = wheel_geometry();
+  ids.left_radius_m = g.left_radius_m;
+  ids.right_radius_m = g.right_radius_m;
+  ids.track_m = g.track_m;
+  planar_ =
+      std::make_unique<PlanarDrive>(model_.get(), data_.get(), ids, options_.robot_mjcf.string());
+  kinematics_stale_ = false;
+}
+
+std::vector<double> Scene::PlanarContactBearings() const {
+  std::vector<double> bearings;
+  if (planar_) planar_->ContactBearings(TruePose(), kPlanarContactSkinM, &bearings);
+  return bearings;
 }
 
 void Scene::MakeNearContactPairs() {
@@ -164,6 +193,7 @@ void Scene::PlaceRobot(const msgs::Pose2D& X_WR) {
   q[6] = std::sin(X_WR.theta_rad / 2);
   WithNearPairs([&] { mj_forward(model_.get(), data_.get()); });
   draw_only_stale_ = false;
+  kinematics_stale_ = false;
 }
 
 void Scene::SetWheelSpeeds(const msgs::WheelSpeedCommand& command) {
@@ -172,6 +202,11 @@ void Scene::SetWheelSpeeds(const msgs::WheelSpeedCommand& command) {
 }
 
 void Scene::Step() {
+  if (planar_) {
+    planar_->Step(model_.get(), data_.get());
+    kinematics_stale_ = true;
+    return;
+  }
   // mj_step, bit for bit, without recomputing the static world geoms' poses and without placing
   // the draw-only geoms until something asks for data().
   WithNearPairs([&] {
@@ -182,6 +217,11 @@ void Scene::Step() {
 }
 
 void Scene::PlaceDrawOnlyGeoms() const {
+  if (kinematics_stale_) {
+    mj_kinematics(model_.get(), data_.get());  // every body, geom and site, draw-only ones too
+    kinematics_stale_ = false;
+    draw_only_stale_ = false;
+  }
   if (!draw_only_stale_) return;
   PlaceGeoms(model_.get(), data_.get(), draw_only_geoms_);
   draw_only_stale_ = false;
@@ -219,6 +259,7 @@ void Scene::SetWheelGeometry(const WheelGeometry& geometry) {
   MakeNearContactPairs();  // the robot's bounding circle follows its wheels
   WithNearPairs([&] { mj_forward(m, data_.get()); });
   draw_only_stale_ = false;
+  MakePlanarDrive();  // the as-built radii and track, and the inertias they give
 }
 
 std::optional<int> Scene::FindSite(const std::string& name) const {
@@ -240,6 +281,22 @@ msgs::Pose2D Scene::SitePoseInRobot(int site_id) const {
 double Scene::SiteHeightM(int site_id) const { return model_->site_pos[3 * site_id + 2]; }
 
 Eigen::Isometry3d Scene::SitePoseInWorld(int site_id) const {
+  if (kinematics_stale_ && model_->site_bodyid[site_id] == base_body_) {
+    // The planar drive moved the base: its site from qpos as mj_kinematics would place it (a free
+    // joint's body frame is its qpos), without placing the rest of the model.
+    const mjtNum* q = data_->qpos + base_qpos_;
+    mjtNum quat[4], site_quat[4], site_mat[9], offset[3];
+    mju_copy4(quat, q + 3);
+    mju_normalize4(quat);
+    mju_mulQuat(site_quat, quat, model_->site_quat + 4 * site_id);
+    mju_quat2Mat(site_mat, site_quat);
+    mju_rotVecQuat(offset, model_->site_pos + 3 * site_id, quat);
+    Eigen::Isometry3d X_WS = Eigen::Isometry3d::Identity();
+    X_WS.translation() = Eigen::Vector3d(q[0] + offset[0], q[1] + offset[1], q[2] + offset[2]);
+    X_WS.linear() = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(site_mat);
+    return X_WS;
+  }
+  if (kinematics_stale_) PlaceDrawOnlyGeoms();
   Eigen::Isometry3d X_WS = Eigen::Isometry3d::Identity();
   const mjtNum* p = data_->site_xpos + 3 * site_id;
   const mjtNum* r = data_->site_xmat + 9 * site_id;

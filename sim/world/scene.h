@@ -9,6 +9,7 @@
 
 #include "msgs/pose2d.h"
 #include "msgs/wheel_speed_command.h"
+#include "sim/world/drive_mode.h"
 #include "sim/world/mujoco_handles.h"
 #include "sim/world/near_contact_pairs.h"
 
@@ -20,6 +21,7 @@ struct SceneOptions {
   std::filesystem::path robot_mjcf;  // follows the conventions of models/README.md
   msgs::Pose2D spawn;                // X_WR at t = 0
   double timestep_s = 0.01;
+  DriveMode drive = DriveMode::kContact;  // kPlanar: Step() moves the robot without mj_step
 };
 
 // The true geometry of the simulated robot's drive, which may differ from the nominal spec the
@@ -32,6 +34,8 @@ struct WheelGeometry {
 
 // A world and a robot compiled into one MuJoCo model, with the handles every sensor and the runner
 // need. The robot's geoms all live in geom group kRobotGeomGroup so rays can skip them.
+class PlanarDrive;
+
 class Scene {
  public:
   static constexpr int kRobotGeomGroup = 3;
@@ -39,6 +43,7 @@ class Scene {
   // @throws ConfigError naming the world or robot file when either is missing or does not compile,
   // or when the robot breaks the model conventions.
   explicit Scene(const SceneOptions& options);
+  ~Scene();
 
   Scene(const Scene&) = delete;
   Scene& operator=(const Scene&) = delete;
@@ -46,7 +51,9 @@ class Scene {
   const mjModel* model() const { return model_.get(); }
   // The data with every geom placed. Step() leaves the robot's draw-only geoms (DrawOnlyGeoms:
   // visual wheels, shell, bump panels) where they were; data() and mutable_data() place them first
-  // (on the calling thread), bit for bit where mj_step would have put them.
+  // (on the calling thread), bit for bit where mj_step would have put them. In the planar drive
+  // Step() places nothing, and these run mj_kinematics first (contacts stay those of the last
+  // mj_forward: the planar drive has none).
   const mjData* data() const {
     PlaceDrawOnlyGeoms();
     return data_.get();
@@ -56,8 +63,16 @@ class Scene {
     return data_.get();
   }
   // The data as the last step left it, the draw-only geoms' poses possibly stale: for the step
-  // loop's reads of the state, contacts, bodies and sites, which do not depend on them.
+  // loop's reads of the state, contacts, bodies and sites, which do not depend on them. In the
+  // planar drive only qpos, qvel and time are current.
   const mjData* stepped_data() const { return data_.get(); }
+
+  DriveMode drive() const { return options_.drive; }
+  // The planar drive's bumper contacts: bearings (robot frame) of the points of the bumper ring's
+  // footprint within kPlanarContactSkinM of a static geom, at the current pose. Empty in the
+  // contact drive (the bumpers read MuJoCo's contacts there).
+  static constexpr double kPlanarContactSkinM = 1e-3;
+  std::vector<double> PlanarContactBearings() const;
 
   double time_s() const { return data_->time; }
   double timestep_s() const { return model_->opt.timestep; }
@@ -96,6 +111,7 @@ class Scene {
 
  private:
   void MakeNearContactPairs();
+  void MakePlanarDrive();
   void PlaceDrawOnlyGeoms() const;
   // Runs MuJoCo with the robot's near contact pairs in place (when the model has them).
   template <typename Call>
@@ -115,8 +131,10 @@ class Scene {
   int left_motor_ = -1, right_motor_ = -1;
   int left_tire_ = -1, right_tire_ = -1;
   std::unique_ptr<NearContactPairs> near_pairs_;
-  std::vector<int> draw_only_geoms_;      // DrawOnlyGeoms of the model, skipped by Step()
-  mutable bool draw_only_stale_ = false;  // Step() skipped them since they were last placed
+  std::vector<int> draw_only_geoms_;       // DrawOnlyGeoms of the model, skipped by Step()
+  mutable bool draw_only_stale_ = false;   // Step() skipped them since they were last placed
+  std::unique_ptr<PlanarDrive> planar_;    // DriveMode::kPlanar only
+  mutable bool kinematics_stale_ = false;  // the planar drive moved the robot since mj_kinematics
 };
 
 // The MJCF text that includes `world` and `robot` into one model (exposed for tests), with

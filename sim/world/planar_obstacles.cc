@@ -1,0 +1,271 @@
+#include "sim/world/planar_obstacles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+#include "sim/config/config_error.h"
+
+namespace plywood::sim {
+namespace {
+
+// Andrew's monotone chain: the convex hull of `points`, counter-clockwise, collinear points
+// dropped.
+std::vector<std::pair<double, double>> ConvexHull(std::vector<std::pair<double, double>> points) {
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  if (points.size() < 3) return points;
+  const auto cross = [](const auto& o, const auto& a, const auto& b) {
+    return (a.first - o.first) * (b.second - o.second) -
+           (a.second - o.second) * (b.first - o.first);
+  };
+  std::vector<std::pair<double, double>> hull(2 * points.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
+    hull[k++] = points[i];
+  }
+  for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], points[i]) <= 0.0) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+// The point of segment a-b nearest p.
+void NearestOnSegment(const double* a, const double* b, const double* p, double out[2]) {
+  const double abx = b[0] - a[0], aby = b[1] - a[1];
+  const double length2 = abx * abx + aby * aby;
+  double t = length2 > 0.0 ? ((p[0] - a[0]) * abx + (p[1] - a[1]) * aby) / length2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  out[0] = a[0] + t * abx;
+  out[1] = a[1] + t * aby;
+}
+
+bool CanCollide(const mjModel* m, int a, int b) {
+  return (m->geom_contype[a] & m->geom_conaffinity[b]) ||
+         (m->geom_contype[b] & m->geom_conaffinity[a]);
+}
+
+}  // namespace
+
+PlanarObstacles::PlanarObstacles(const mjModel* m, const mjData* d, int base_body,
+                                 const std::string& robot_file) {
+  const int ring = mj_name2id(m, mjOBJ_GEOM, "bumper_ring");
+  if (ring < 0 || m->geom_type[ring] != mjGEOM_MESH) {
+    throw ConfigError(
+        robot_file, "bumper_ring",
+        "physics.drive: planar needs the robot's bumper_ring mesh geom (its footprint)");
+  }
+  // The ring's vertices in the base frame: p_B = R_WB^T (x_WG + R_WG v - x_WB).
+  const mjtNum* xb = d->xpos + 3 * base_body;
+  const mjtNum* rb = d->xmat + 9 * base_body;
+  const mjtNum* xg = d->geom_xpos + 3 * ring;
+  const mjtNum* rg = d->geom_xmat + 9 * ring;
+  const int mesh = m->geom_dataid[ring];
+  std::vector<std::pair<double, double>> points;
+  double z_lo = std::numeric_limits<double>::infinity(), z_hi = -z_lo;
+  for (int i = 0; i < m->mesh_vertnum[mesh]; ++i) {
+    const float* v = m->mesh_vert + 3 * (m->mesh_vertadr[mesh] + i);
+    double w[3];
+    for (int r = 0; r < 3; ++r) {
+      w[r] = xg[r] + rg[3 * r] * v[0] + rg[3 * r + 1] * v[1] + rg[3 * r + 2] * v[2] - xb[r];
+    }
+    double b[3];
+    for (int c = 0; c < 3; ++c) b[c] = rb[c] * w[0] + rb[3 + c] * w[1] + rb[6 + c] * w[2];
+    points.emplace_back(b[0], b[1]);
+    z_lo = std::min(z_lo, b[2] + xb[2]);
+    z_hi = std::max(z_hi, b[2] + xb[2]);
+  }
+  const std::vector<std::pair<double, double>> hull = ConvexHull(points);
+  if (hull.size() < 3) {
+    throw ConfigError(robot_file, "bumper_ring", "the ring's footprint on the floor is degenerate");
+  }
+  for (std::size_t i = 0; i < hull.size(); ++i) {
+    const auto& a = hull[i];
+    const auto& b = hull[(i + 1) % hull.size()];
+    hull_.push_back(a.first);
+    hull_.push_back(a.second);
+    const double ex = b.first - a.first, ey = b.second - a.second;
+    const double length = std::hypot(ex, ey);
+    normals_.push_back(ey / length);  // counter-clockwise: outward is the edge turned clockwise
+    normals_.push_back(-ex / length);
+    reach_m_ = std::max(reach_m_, std::hypot(a.first, a.second));
+  }
+
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (m->body_weldid[m->geom_bodyid[g]] != 0 || !CanCollide(m, g, ring)) continue;
+    const int type = m->geom_type[g];
+    if (type == mjGEOM_PLANE || type == mjGEOM_HFIELD) continue;
+    const mjtNum* p = d->geom_xpos + 3 * g;
+    const mjtNum* r = d->geom_xmat + 9 * g;
+    const mjtNum* size = m->geom_size + 3 * g;
+    const bool upright = r[2] == 0.0 && r[5] == 0.0;  // local z along world z
+    Obstacle o;
+    o.cx = p[0];
+    o.cy = p[1];
+    double half_height = m->geom_rbound[g];
+    if (upright && type == mjGEOM_BOX) {
+      o.ux = r[0];
+      o.uy = r[3];
+      o.half_x = size[0];
+      o.half_y = size[1];
+      half_height = size[2];
+    } else {
+      o.disc = true;
+      if (upright && type == mjGEOM_CYLINDER) {
+        o.radius_m = size[0];
+        half_height = size[1];
+      } else if (type == mjGEOM_SPHERE) {
+        o.radius_m = size[0];
+      } else {
+        o.radius_m = m->geom_rbound[g];
+      }
+    }
+    if (p[2] + half_height < z_lo || p[2] - half_height > z_hi) continue;
+    obstacles_.push_back(o);
+  }
+}
+
+double PlanarObstacles::CentreDistance(const Obstacle& o, double x, double y) {
+  const double dx = x - o.cx, dy = y - o.cy;
+  if (o.disc) return std::max(0.0, std::hypot(dx, dy) - o.radius_m);
+  const double ex = std::max(0.0, std::abs(dx * o.ux + dy * o.uy) - o.half_x);
+  const double ey = std::max(0.0, std::abs(-dx * o.uy + dy * o.ux) - o.half_y);
+  return std::hypot(ex, ey);
+}
+
+const std::vector<int>& PlanarObstacles::Near(double x, double y) {
+  if (near_valid_ && std::hypot(x - near_x_, y - near_y_) <= kNearPadM / 2.0) return near_;
+  near_.clear();
+  for (std::size_t i = 0; i < obstacles_.size(); ++i) {
+    if (CentreDistance(obstacles_[i], x, y) <= reach_m_ + kNearPadM) {
+      near_.push_back(static_cast<int>(i));
+    }
+  }
+  near_x_ = x;
+  near_y_ = y;
+  near_valid_ = true;
+  return near_;
+}
+
+double PlanarObstacles::Gap(const Obstacle& o, const msgs::Pose2D& X_WR, double witness[2],
+                            bool overlap_only) const {
+  // The obstacle in the robot frame.
+  const double c = std::cos(X_WR.theta_rad), s = std::sin(X_WR.theta_rad);
+  const double dx = o.cx - X_WR.x_m, dy = o.cy - X_WR.y_m;
+  const double centre[2] = {c * dx + s * dy, -s * dx + c * dy};
+  const int n = static_cast<int>(hull_.size() / 2);
+  const double* v = hull_.data();
+  if (o.disc) {
+    bool inside = true;
+    double best = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < n; ++i) {
+      const double* a = v + 2 * i;
+      const double* b = v + 2 * ((i + 1) % n);
+      if ((centre[0] - a[0]) * normals_[2 * i] + (centre[1] - a[1]) * normals_[2 * i + 1] > 0.0) {
+        inside = false;
+      }
+      double q[2];
+      NearestOnSegment(a, b, centre, q);
+      const double distance = std::hypot(centre[0] - q[0], centre[1] - q[1]);
+      if (distance < best) {
+        best = distance;
+        witness[0] = q[0];
+        witness[1] = q[1];
+      }
+    }
+    if (inside) {
+      witness[0] = centre[0];
+      witness[1] = centre[1];
+      return -1.0;
+    }
+    return best < o.radius_m ? -1.0 : best - o.radius_m;
+  }
+  // A rectangle: its axes and corners in the robot frame, counter-clockwise.
+  const double ux = c * o.ux + s * o.uy, uy = -s * o.ux + c * o.uy;
+  const double vx = -uy, vy = ux;
+  double corners[8];
+  const double signs[4][2] = {{1, 1}, {-1, 1}, {-1, -1}, {1, -1}};
+  for (int k = 0; k < 4; ++k) {
+    corners[2 * k] = centre[0] + signs[k][0] * o.half_x * ux + signs[k][1] * o.half_y * vx;
+    corners[2 * k + 1] = centre[1] + signs[k][0] * o.half_x * uy + signs[k][1] * o.half_y * vy;
+  }
+  // Separating axes: the footprint's edge normals and the rectangle's two axes.
+  const auto separated_on = [&](double ax, double ay) {
+    double a_lo = std::numeric_limits<double>::infinity(), a_hi = -a_lo;
+    for (int i = 0; i < n; ++i) {
+      const double t = v[2 * i] * ax + v[2 * i + 1] * ay;
+      a_lo = std::min(a_lo, t);
+      a_hi = std::max(a_hi, t);
+    }
+    const double t0 = centre[0] * ax + centre[1] * ay;
+    const double extent =
+        o.half_x * std::abs(ux * ax + uy * ay) + o.half_y * std::abs(vx * ax + vy * ay);
+    return t0 - extent >= a_hi || t0 + extent <= a_lo;
+  };
+  bool overlap = !separated_on(ux, uy) && !separated_on(vx, vy);
+  for (int i = 0; overlap && i < n; ++i) {
+    if (separated_on(normals_[2 * i], normals_[2 * i + 1])) overlap = false;
+  }
+  if (overlap) {
+    // The obstacle's point nearest the base origin, for a bearing.
+    const double lx = std::clamp(-(centre[0] * ux + centre[1] * uy), -o.half_x, o.half_x);
+    const double ly = std::clamp(-(centre[0] * vx + centre[1] * vy), -o.half_y, o.half_y);
+    witness[0] = centre[0] + lx * ux + ly * vx;
+    witness[1] = centre[1] + lx * uy + ly * vy;
+    return -1.0;
+  }
+  if (overlap_only) return 0.0;
+  // Disjoint convex polygons: the gap is between a vertex of one and an edge of the other.
+  double best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < n; ++i) {
+    const double px = v[2 * i] - centre[0], py = v[2 * i + 1] - centre[1];
+    const double ex = std::max(0.0, std::abs(px * ux + py * uy) - o.half_x);
+    const double ey = std::max(0.0, std::abs(px * vx + py * vy) - o.half_y);
+    const double distance = std::hypot(ex, ey);
+    if (distance < best) {
+      best = distance;
+      witness[0] = v[2 * i];
+      witness[1] = v[2 * i + 1];
+    }
+  }
+  for (int k = 0; k < 4; ++k) {
+    for (int i = 0; i < n; ++i) {
+      double q[2];
+      NearestOnSegment(v + 2 * i, v + 2 * ((i + 1) % n), corners + 2 * k, q);
+      const double distance = std::hypot(corners[2 * k] - q[0], corners[2 * k + 1] - q[1]);
+      if (distance < best) {
+        best = distance;
+        witness[0] = q[0];
+        witness[1] = q[1];
+      }
+    }
+  }
+  return best;
+}
+
+bool PlanarObstacles::Overlaps(const msgs::Pose2D& X_WR) {
+  for (int i : Near(X_WR.x_m, X_WR.y_m)) {
+    const Obstacle& o = obstacles_[i];
+    if (CentreDistance(o, X_WR.x_m, X_WR.y_m) >= reach_m_) continue;
+    double witness[2];
+    if (Gap(o, X_WR, witness, /*overlap_only=*/true) < 0.0) return true;
+  }
+  return false;
+}
+
+void PlanarObstacles::ContactBearings(const msgs::Pose2D& X_WR, double skin_m,
+                                      std::vector<double>* out) {
+  for (int i : Near(X_WR.x_m, X_WR.y_m)) {
+    const Obstacle& o = obstacles_[i];
+    if (CentreDistance(o, X_WR.x_m, X_WR.y_m) > reach_m_ + skin_m) continue;
+    double witness[2];
+    if (Gap(o, X_WR, witness, /*overlap_only=*/false) <= skin_m)
+      out->push_back(std::atan2(witness[1], witness[0]));
+  }
+}
+
+}  // namespace plywood::sim

@@ -1,0 +1,72 @@
+#pragma once
+
+#include <mujoco/mujoco.h>
+
+#include <string>
+#include <vector>
+
+#include "msgs/pose2d.h"
+
+namespace plywood::sim {
+
+// The planar drive's walls (DriveMode::kPlanar): the robot's bumper ring as a 2-D footprint against
+// the world's static geoms on the floor plane.
+//
+// The footprint is the convex hull, on the floor plane, of the vertices of the robot's
+// "bumper_ring" mesh geom, in the robot frame, with the ring's height range. The obstacles are the
+// static geoms (welded to the world) that could collide with the ring (MuJoCo's contype /
+// conaffinity rule) and whose height range meets the ring's: an upright box is its rectangle, an
+// upright cylinder or a sphere its disc, and any other shape (tilted boxes and cylinders, capsules,
+// ellipsoids, meshes) the disc of its bounding radius, i.e. the robot stops early beside those.
+// Planes and height fields are the floor, never obstacles. Nothing else of the robot (chassis,
+// wheels, laser) is tested: an obstacle above or below the ring's height range is driven under or
+// over, as it would be by a robot that touches the world only through its ring.
+class PlanarObstacles {
+ public:
+  // @pre mj_forward (or mj_kinematics) has run on `data`: static geom and robot poses are final.
+  // @throws ConfigError naming `robot_file` when the robot has no bumper_ring mesh geom.
+  PlanarObstacles(const mjModel* model, const mjData* data, int base_body,
+                  const std::string& robot_file);
+
+  // True when the footprint at X_WR overlaps an obstacle with positive depth (touching is not).
+  bool Overlaps(const msgs::Pose2D& X_WR);
+  // The bearings (robot frame, atan2(y, x) from the base origin) of the footprint's points
+  // nearest each obstacle whose gap to the footprint at X_WR is at most skin_m; appended to `out`.
+  void ContactBearings(const msgs::Pose2D& X_WR, double skin_m, std::vector<double>* out);
+
+  // The footprint's vertices (robot frame, counter-clockwise) and its distance from the base
+  // origin at its farthest vertex.
+  const std::vector<double>& footprint_xy() const { return hull_; }
+  double reach_m() const { return reach_m_; }
+  int obstacle_count() const { return static_cast<int>(obstacles_.size()); }
+
+ private:
+  struct Obstacle {
+    bool disc = false;
+    double cx = 0.0, cy = 0.0;
+    double radius_m = 0.0;      // disc
+    double ux = 1.0, uy = 0.0;  // rectangle: unit x axis; its y axis is (-uy, ux)
+    double half_x = 0.0, half_y = 0.0;
+  };
+  // Distance from (x, y) to the obstacle's footprint (0 inside).
+  static double CentreDistance(const Obstacle& o, double x, double y);
+  // The obstacles within kNearPadM of the footprint's circle (radius reach_m) about (x, y):
+  // refreshed when the robot has moved more than half the pad since the last refresh.
+  const std::vector<int>& Near(double x, double y);
+  // Gap (>= 0) between the footprint at X_WR and obstacle `o`; -1 when they overlap. `witness`
+  // gets the footprint's point nearest the obstacle (robot frame). With overlap_only, a rectangle
+  // found apart returns 0 without its gap or witness.
+  double Gap(const Obstacle& o, const msgs::Pose2D& X_WR, double witness[2],
+             bool overlap_only) const;
+
+  static constexpr double kNearPadM = 0.5;
+  std::vector<double> hull_;     // x0, y0, x1, y1, ... counter-clockwise
+  std::vector<double> normals_;  // outward unit normal of edge i (vertex i to i + 1)
+  double reach_m_ = 0.0;
+  std::vector<Obstacle> obstacles_;
+  std::vector<int> near_;
+  double near_x_ = 0.0, near_y_ = 0.0;
+  bool near_valid_ = false;
+};
+
+}  // namespace plywood::sim
