@@ -1,6 +1,7 @@
 // plywood bench [--seconds S] [--world PATH] [--repeats N] [--min-wall S]
 
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -55,10 +56,14 @@ void PrintFigures(const eval::BenchFigures& f, const eval::BenchOptions& o) {
     std::printf("  %-28s %8.0f x  (%.2f us/step, %d geoms)\n", s.label.c_str(),
                 s.cost.RealTimeFactor(), UsPerStep(s.cost.wall_s, s.cost.steps), s.geoms);
   }
-  if (f.worlds.size() >= 3 && f.worlds[1].cost.RealTimeFactor() > 0.0) {
-    std::printf("  %-28s %8.2f   (the goal: >= 0.8)\n", "3x3 tiled / office RTF",
-                f.worlds[2].cost.RealTimeFactor() / f.worlds[1].cost.RealTimeFactor());
-  }
+  // worlds: hall, office, tiled office, then the planar office and tiled office.
+  const auto print_ratio = [&](const char* label, std::size_t tiled, std::size_t office) {
+    if (f.worlds.size() <= tiled || f.worlds[office].cost.RealTimeFactor() <= 0.0) return;
+    std::printf("  %-28s %8.2f   (the goal: >= 0.8)\n", label,
+                f.worlds[tiled].cost.RealTimeFactor() / f.worlds[office].cost.RealTimeFactor());
+  };
+  print_ratio("3x3 tiled / office RTF", 2, 1);
+  print_ratio("the same, planar drive", 4, 3);
   std::printf("%-30s %8.3f us  (%d geoms)\n", "mj_ray per ray", f.rays.mj_ray_us_per_ray,
               f.rays.world_geoms);
   std::printf("%-30s %8.3f us\n", "grid caster per ray", f.rays.grid_us_per_ray);

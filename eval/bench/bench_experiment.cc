@@ -99,6 +99,9 @@ BenchFigures RunBench(const BenchOptions& options) {
   figures.worlds.push_back(MeasureWorld(
       "office.xml, planar drive",
       BenchConfig((worlds / "office.xml").string(), options.seconds, true), options, false));
+  figures.worlds.push_back(MeasureWorld("office 3x3 tiled, planar",
+                                        BenchConfig(tiled_path.string(), options.seconds, true),
+                                        options, false));
 
   {
     sim::ExperimentRunner runner(config);

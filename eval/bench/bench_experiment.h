@@ -30,7 +30,7 @@ struct WorldSpeed {
 struct BenchFigures {
   std::filesystem::path world;     // the resolved world of the itemised run
   WorldSpeed itemised;             // options.world, with per-part costs
-  std::vector<WorldSpeed> worlds;  // hall, office, 3 x 3 tiled office, office (planar drive)
+  std::vector<WorldSpeed> worlds;  // hall, office, 3 x 3 tiled office, then both offices again in the planar drive
   sim::RayCasterBenchResult rays;
   LineExtractorBench lines;
   // experiments/default.yaml through the plain run protocol, outputs and snapshot included.
