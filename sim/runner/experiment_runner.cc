@@ -46,22 +46,25 @@ struct Scheduled {
 struct FaceForLabels {
   int index = -1;
   double ax = 0.0, ay = 0.0, abx = 0.0, aby = 0.0;
+  // From the current scan's origin o (MakeScanRecord fills them once per scan and geom): a - o and
+  // the numerator of the beam's distance t, which do not depend on the beam.
+  double aox = 0.0, aoy = 0.0, t_numerator = 0.0;
 };
 
-// The ground-truth segment a beam hit: the first of the hit geom's faces (`candidates`) that the
-// beam's ray crosses (exact, and independent of the range noise).
-int HitSegment(const std::vector<FaceForLabels>& candidates, double origin_x, double origin_y,
-               double dir_x, double dir_y) {
+// The ground-truth segment a beam hit: the first of the hit geom's faces (`candidates`, their
+// aox, aoy and t_numerator filled for the beam's origin) that the beam's ray crosses (exact, and
+// independent of the range noise). u is only taken for a face at a t that could win.
+int HitSegment(const std::vector<FaceForLabels>& candidates, double dir_x, double dir_y) {
   int best = -1;
   double best_t = std::numeric_limits<double>::infinity();
   for (const FaceForLabels& f : candidates) {
     // Solve origin + t dir = a + u (b - a) for t >= 0, u in [0, 1].
     const double denominator = dir_x * f.aby - dir_y * f.abx;
     if (std::abs(denominator) < 1e-12) continue;
-    const double aox = f.ax - origin_x, aoy = f.ay - origin_y;
-    const double t = (aox * f.aby - aoy * f.abx) / denominator;
-    const double u = (aox * dir_y - aoy * dir_x) / denominator;
-    if (t >= 0.0 && u >= -1e-9 && u <= 1.0 + 1e-9 && t < best_t) {
+    const double t = f.t_numerator / denominator;
+    if (!(t >= 0.0 && t < best_t)) continue;
+    const double u = (f.aox * dir_y - f.aoy * dir_x) / denominator;
+    if (u >= -1e-9 && u <= 1.0 + 1e-9) {
       best_t = t;
       best = f.index;
     }
@@ -124,7 +127,11 @@ struct ExperimentRunner::Parts {
   std::optional<msgs::LaserScan> last_laser;
   ScanMeasurement scan_scratch;
   // Each geom's faces in RunRecord::walls.segments, by geom id.
-  std::vector<std::vector<FaceForLabels>> segments_of_geom;
+  // Mutable: their per-scan fields are MakeScanRecord's scratch (stamped by geom: filled once
+  // per scan for the geoms its beams hit).
+  mutable std::vector<std::vector<FaceForLabels>> segments_of_geom;
+  mutable std::vector<unsigned> labels_stamp;
+  mutable unsigned labels_epoch = 0;
   long rays_per_laser_scan = 0, rays_per_sonar_ring = 0, rays_per_ir_ring = 0, rays_per_ir_scan = 0;
 };
 
@@ -246,6 +253,7 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
   }
   record_.walls = ExtractGroundTruthWalls(scene_->model(), truth_options);
   p.segments_of_geom.resize(scene_->model()->ngeom);
+  p.labels_stamp.assign(scene_->model()->ngeom, 0u);
   for (std::size_t i = 0; i < record_.walls.segments.size(); ++i) {
     const WallSegment& w = record_.walls.segments[i];
     const Eigen::Vector2d ab = w.b - w.a;
@@ -271,13 +279,25 @@ LaserRecord ExperimentRunner::MakeScanRecord(int site_id) const {
   record.hit_segment_ids.assign(record.scan.ranges_m.size(), -1);
   const Eigen::Vector2d origin_W = scene_->SitePoseInWorld(site_id).translation().head<2>();
   const double heading_W = (record.X_WR_truth * record.scan.X_RS).theta_rad;
+  if (++p.labels_epoch == 0) {
+    std::fill(p.labels_stamp.begin(), p.labels_stamp.end(), 0u);
+    p.labels_epoch = 1;
+  }
   for (std::size_t i = 0; i < record.scan.ranges_m.size(); ++i) {
-    if (record.hit_geom_ids[i] < 0) continue;
-    const std::vector<FaceForLabels>& faces = p.segments_of_geom[record.hit_geom_ids[i]];
+    const int geom = record.hit_geom_ids[i];
+    if (geom < 0) continue;
+    std::vector<FaceForLabels>& faces = p.segments_of_geom[geom];
     if (faces.empty()) continue;  // a geom without faces at the sensor's height: no label
+    if (p.labels_stamp[geom] != p.labels_epoch) {
+      p.labels_stamp[geom] = p.labels_epoch;
+      for (FaceForLabels& f : faces) {
+        f.aox = f.ax - origin_W.x();
+        f.aoy = f.ay - origin_W.y();
+        f.t_numerator = f.aox * f.aby - f.aoy * f.abx;
+      }
+    }
     const double angle = heading_W + record.scan.BeamAngleRad(i);
-    record.hit_segment_ids[i] =
-        HitSegment(faces, origin_W.x(), origin_W.y(), std::cos(angle), std::sin(angle));
+    record.hit_segment_ids[i] = HitSegment(faces, std::cos(angle), std::sin(angle));
   }
   return record;
 }

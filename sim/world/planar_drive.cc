@@ -106,9 +106,9 @@ void PlanarDrive::Step(const mjModel* m, mjData* d) {
   const msgs::Pose2D start{
       q[0], q[1],
       std::atan2(2.0 * (q[3] * q[6] + q[4] * q[5]), 1.0 - 2.0 * (q[5] * q[5] + q[6] * q[6]))};
+  const msgs::Pose2D whole = AlongArc(start, v * dt, yaw_rate * dt, 1.0);
   double fraction = 1.0;
-  if (obstacles_.Overlaps(AlongArc(start, v * dt, yaw_rate * dt, 1.0)) &&
-      !obstacles_.Overlaps(start)) {
+  if (obstacles_.Overlaps(whole) && !obstacles_.Overlaps(start)) {
     double clear = 0.0, blocked = 1.0;
     for (int i = 0; i < 20; ++i) {
       const double mid = (clear + blocked) / 2.0;
@@ -116,7 +116,8 @@ void PlanarDrive::Step(const mjModel* m, mjData* d) {
     }
     fraction = clear;
   }
-  const msgs::Pose2D end = AlongArc(start, v * dt, yaw_rate * dt, fraction);
+  const msgs::Pose2D end =
+      fraction == 1.0 ? whole : AlongArc(start, v * dt, yaw_rate * dt, fraction);
   q[0] = end.x_m;
   q[1] = end.y_m;
   q[3] = std::cos(end.theta_rad / 2.0);

@@ -125,6 +125,9 @@ PlanarObstacles::PlanarObstacles(const mjModel* m, const mjData* d, int base_bod
       }
     }
     if (p[2] + half_height < z_lo || p[2] - half_height > z_hi) continue;
+    // Padded so that rounding in CentreDistance cannot put a footprint the box test drops within
+    // its limit.
+    o.bound_m = (o.disc ? o.radius_m : std::hypot(o.half_x, o.half_y)) * (1.0 + 1e-9) + 1e-9;
     obstacles_.push_back(o);
   }
 }
@@ -140,8 +143,14 @@ double PlanarObstacles::CentreDistance(const Obstacle& o, double x, double y) {
 const std::vector<int>& PlanarObstacles::Near(double x, double y) {
   if (near_valid_ && std::hypot(x - near_x_, y - near_y_) <= kNearPadM / 2.0) return near_;
   near_.clear();
+  const double limit = reach_m_ + kNearPadM;
   for (std::size_t i = 0; i < obstacles_.size(); ++i) {
-    if (CentreDistance(obstacles_[i], x, y) <= reach_m_ + kNearPadM) {
+    const Obstacle& o = obstacles_[i];
+    // A cheap box test first (a world has hundreds of geoms, few near the robot); it only drops
+    // obstacles whose footprint is farther than the limit, so the list is CentreDistance's alone.
+    const double box = limit * (1.0 + 1e-9) + o.bound_m;
+    if (std::abs(x - o.cx) > box || std::abs(y - o.cy) > box) continue;
+    if (CentreDistance(o, x, y) <= limit) {
       near_.push_back(static_cast<int>(i));
     }
   }

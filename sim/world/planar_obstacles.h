@@ -47,6 +47,9 @@ class PlanarObstacles {
     double radius_m = 0.0;      // disc
     double ux = 1.0, uy = 0.0;  // rectangle: unit x axis; its y axis is (-uy, ux)
     double half_x = 0.0, half_y = 0.0;
+    // Padded distance from the centre to the footprint's farthest point: |dx| or |dy| beyond
+    // this plus r puts the footprint farther than r from a point (Near's box test).
+    double bound_m = 0.0;
   };
   // Distance from (x, y) to the obstacle's footprint (0 inside).
   static double CentreDistance(const Obstacle& o, double x, double y);
