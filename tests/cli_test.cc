@@ -90,6 +90,17 @@ TEST_F(BadInputTest, WrongType) {
                      {"experiment.yaml", "duration_s", "number"});
 }
 
+TEST_F(BadInputTest, UnknownDrive) {
+  ExpectOneLineError(
+      SmallExperiment() + "physics: {drive: kinematic}\n", "",
+      {"experiment.yaml", "physics.drive", "expected contact or planar", "'kinematic'"});
+}
+
+TEST_F(BadInputTest, DriveOfTheWrongType) {
+  ExpectOneLineError(SmallExperiment() + "physics: {drive: [planar]}\n", "",
+                     {"experiment.yaml", "physics.drive", "expected a string, got a list"});
+}
+
 TEST_F(BadInputTest, MissingWorldFile) {
   ExpectOneLineError(Replace(SmallExperiment(), "worlds/seed000_room_1.xml", "worlds/nowhere.xml"),
                      "", {"experiment.yaml", "world", "no such file", "nowhere.xml"});

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "sim/config/config_error.h"
+#include "sim/world/upright_pose.h"
 
 namespace plywood::sim {
 namespace {
@@ -89,8 +90,15 @@ PlanarDrive::PlanarDrive(const mjModel* m, const mjData* d, const PlanarDriveInd
 
 void PlanarDrive::Step(const mjModel* m, mjData* d) {
   const double dt = m->opt.timestep;
-  const double u_left = std::clamp(d->ctrl[ids_.left_motor], ctrl_lo_, ctrl_hi_);
-  const double u_right = std::clamp(d->ctrl[ids_.right_motor], ctrl_lo_, ctrl_hi_);
+  double u_left = std::clamp(d->ctrl[ids_.left_motor], ctrl_lo_, ctrl_hi_);
+  double u_right = std::clamp(d->ctrl[ids_.right_motor], ctrl_lo_, ctrl_hi_);
+  // As mj_fwdActuation: a NaN or huge control (after the clamp) zeroes every control for the step
+  // and raises mjWARN_BADCTRL; d->ctrl itself is kept.
+  if (mju_isBad(u_left) || mju_isBad(u_right)) {
+    mj_warning(d, mjWARN_BADCTRL, mju_isBad(u_left) ? ids_.left_motor : ids_.right_motor);
+    u_left = 0.0;
+    u_right = 0.0;
+  }
   const double target_s = command_gain_ * (u_left + u_right) / 2.0;
   const double target_d = command_gain_ * (u_right - u_left) / 2.0;
   double s = (d->qvel[left_dof_] + d->qvel[right_dof_]) / 2.0;
@@ -103,27 +111,28 @@ void PlanarDrive::Step(const mjModel* m, mjData* d) {
   const double yaw_rate =
       (ids_.right_radius_m * w_right - ids_.left_radius_m * w_left) / ids_.track_m;
   mjtNum* q = d->qpos + ids_.base_qpos;
-  const msgs::Pose2D start{
-      q[0], q[1],
-      std::atan2(2.0 * (q[3] * q[6] + q[4] * q[5]), 1.0 - 2.0 * (q[5] * q[5] + q[6] * q[6]))};
+  const msgs::Pose2D start = UprightPoseFromQpos(q);
   const msgs::Pose2D whole = AlongArc(start, v * dt, yaw_rate * dt, 1.0);
   double fraction = 1.0;
-  if (obstacles_.Overlaps(whole) && !obstacles_.Overlaps(start)) {
-    double clear = 0.0, blocked = 1.0;
-    for (int i = 0; i < 20; ++i) {
-      const double mid = (clear + blocked) / 2.0;
-      (obstacles_.Overlaps(AlongArc(start, v * dt, yaw_rate * dt, mid)) ? blocked : clear) = mid;
+  if (obstacles_.Overlaps(whole)) {
+    // A step that starts overlapping (a spawn within the setup check's tolerance) may leave the
+    // obstacle but not go deeper into it (PlanarObstacles::OverlapsFrom).
+    const bool from_overlap = obstacles_.Overlaps(start);
+    const auto blocked_at = [&](const msgs::Pose2D& pose) {
+      return from_overlap ? obstacles_.OverlapsFrom(start, pose) : obstacles_.Overlaps(pose);
+    };
+    if (!from_overlap || blocked_at(whole)) {
+      double clear = 0.0, blocked = 1.0;
+      for (int i = 0; i < 20; ++i) {
+        const double mid = (clear + blocked) / 2.0;
+        (blocked_at(AlongArc(start, v * dt, yaw_rate * dt, mid)) ? blocked : clear) = mid;
+      }
+      fraction = clear;
     }
-    fraction = clear;
   }
   const msgs::Pose2D end =
       fraction == 1.0 ? whole : AlongArc(start, v * dt, yaw_rate * dt, fraction);
-  q[0] = end.x_m;
-  q[1] = end.y_m;
-  q[3] = std::cos(end.theta_rad / 2.0);
-  q[4] = 0.0;
-  q[5] = 0.0;
-  q[6] = std::sin(end.theta_rad / 2.0);
+  WriteUprightPose(end, q);
   mjtNum* base_v = d->qvel + ids_.base_dof;
   base_v[0] = fraction * v * std::cos(end.theta_rad);  // world frame
   base_v[1] = fraction * v * std::sin(end.theta_rad);

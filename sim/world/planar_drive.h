@@ -43,13 +43,16 @@ struct PlanarDriveIndices {
 // unchanged; wheel angles), qvel (base velocity, wheel speeds) and time are written; nothing else
 // of mjData is touched (Scene places the bodies when something asks).
 //
-// Walls. When the footprint at the step's end would overlap an obstacle (PlanarObstacles) and does
-// not at its start, the robot goes the largest fraction of the step's arc that stays clear (found
-// to 2^-20 by bisection), the wheels turn by the same fraction and keep that fraction of their
-// speed: the robot stops at the wall, its wheels stall with it, as on the floor with a friction
-// that holds. Not modelled: wheel slip, the caster, tire scrub on turns, pushing, rebound and
-// sliding along a wall (a robot at a wall only moves away from it or turns where its footprint
-// stays clear).
+// Walls. When the footprint at the step's end would overlap an obstacle (PlanarObstacles), the
+// robot goes the largest fraction of the step's arc that stays clear (found to 2^-20 by
+// bisection), the wheels turn by the same fraction and keep that fraction of their speed: the
+// robot stops at the wall, its wheels stall with it, as on the floor with a friction that holds.
+// A step that starts with the footprint in an obstacle (a spawn within the setup check's 1 mm, a
+// PlaceRobot) may back out of it, turn or slide along it, but not bring the base origin closer to
+// it (PlanarObstacles::OverlapsFrom). A NaN or huge command (after the ctrlrange clamp) zeroes
+// both commands for the step and raises mjWARN_BADCTRL, as mj_step does. Not modelled: wheel slip,
+// the caster, tire scrub on turns, pushing, rebound and sliding along a wall (a robot at a wall
+// only moves away from it or turns where its footprint stays clear).
 class PlanarDrive {
  public:
   // @pre mj_forward has run on `data` (the robot at its spawn pose).

@@ -6,8 +6,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <memory>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -292,6 +294,94 @@ TEST(PlanarDriveTest, SitePosesAfterAStepAreTheKinematicsOnes) {
   EXPECT_LT((lazy.linear() - placed.linear()).norm(), 1e-12);
   EXPECT_GT(placed.translation().head<2>().norm(), 0.1);  // it did move
   EXPECT_EQ(lazy.linear()(2, 0), 0.0);                    // exactly level
+}
+
+// A robot whose footprint starts a step already in a wall (a spawn within the setup check's 1 mm
+// tolerance, or PlaceRobot) cannot drive on through it; it can back out.
+TEST(PlanarDriveTest, StartingInAWallItCannotDriveThroughButBacksOut) {
+  const std::unique_ptr<Scene> scene = MakeScene(P3dx(), DriveMode::kPlanar, true);
+  const PlanarObstacles probe(scene->model(), scene->data(), scene->base_body_id(), "p3dx.xml");
+  double front_m = 0.0;
+  for (std::size_t i = 0; i < probe.footprint_xy().size(); i += 2) {
+    front_m = std::max(front_m, probe.footprint_xy()[i]);
+  }
+  const double x0 = 1.0 - front_m + 0.5e-3;  // the ring 0.5 mm into the wall
+  scene->PlaceRobot({x0, 0.0, 0.0});
+  Drive(*scene, 4.0, 4.0, 300);
+  EXPECT_LE(scene->TruePose().x_m, x0);
+  Drive(*scene, 4.0, 3.0, 100);  // curving into it is no better
+  EXPECT_LE(scene->TruePose().x_m, x0 + 1e-9);
+  Drive(*scene, -4.0, -4.0, 100);
+  EXPECT_LT(scene->TruePose().x_m, x0 - 0.1);
+}
+
+// A NaN or huge wheel command does what mj_step does with it: every control is zero for the step
+// and mjWARN_BADCTRL is raised; the robot brakes rather than its pose becoming NaN.
+TEST(PlanarDriveTest, ABadCommandIsZeroAsInMujoco) {
+  for (const DriveMode drive : {DriveMode::kContact, DriveMode::kPlanar}) {
+    const std::unique_ptr<Scene> scene = MakeScene(P3dx(), drive);
+    Drive(*scene, 5.0, 5.0, 100);
+    const double x_moving = scene->TruePose().x_m;
+    Drive(*scene, std::nan(""), 5.0, 300);
+    const msgs::Pose2D end = scene->TruePose();
+    EXPECT_TRUE(std::isfinite(end.x_m) && std::isfinite(end.theta_rad)) << ToString(drive);
+    EXPECT_GT(end.x_m, x_moving) << ToString(drive);        // it coasted a little
+    EXPECT_LT(end.x_m, x_moving + 0.1) << ToString(drive);  // and stopped
+    const double wheel = scene->LeftWheelAngleRad();
+    Drive(*scene, std::nan(""), 5.0, 50);
+    EXPECT_NEAR(scene->LeftWheelAngleRad(), wheel, 1e-2) << ToString(drive);  // at rest
+    EXPECT_GT(scene->stepped_data()->warning[mjWARN_BADCTRL].number, 0) << ToString(drive);
+  }
+}
+
+// After planar steps data() is what mj_forward's position stage gives the renderers: subtree_com
+// (the viewer's follow camera tracks it), cameras and lights, besides the bodies and geoms.
+TEST(PlanarDriveTest, DataAfterStepsHasTheForwardPositionsForTheRenderers) {
+  const std::unique_ptr<Scene> scene = MakeScene(P3dx(), DriveMode::kPlanar);
+  Drive(*scene, 3.0, 5.0, 137);
+  const mjModel* m = scene->model();
+  const mjData* lazy = scene->data();
+  MjDataPtr forward(mj_copyData(nullptr, m, lazy));
+  mj_forward(m, forward.get());
+  for (int i = 0; i < 3 * m->nbody; ++i) {
+    EXPECT_NEAR(lazy->xpos[i], forward->xpos[i], 1e-12) << i;
+    EXPECT_NEAR(lazy->subtree_com[i], forward->subtree_com[i], 1e-12) << i;
+  }
+  for (int i = 0; i < 3 * m->ncam; ++i) EXPECT_NEAR(lazy->cam_xpos[i], forward->cam_xpos[i], 1e-12);
+  for (int i = 0; i < 3 * m->nlight; ++i) {
+    EXPECT_NEAR(lazy->light_xpos[i], forward->light_xpos[i], 1e-12);
+  }
+  EXPECT_GT(std::hypot(lazy->subtree_com[3 * scene->base_body_id()],
+                       lazy->subtree_com[3 * scene->base_body_id() + 1]),
+            0.1);  // it did move
+}
+
+// physics.drive: planar needs the robot's bumper_ring (its footprint): without it, one line naming
+// the robot file and the geom; the contact drive does not need it.
+TEST(PlanarDriveTest, ARobotWithoutABumperRingIsAOneLineErrorNamingItsFile) {
+  std::ifstream in(testing::SourceRoot() / "models" / "p3dx.xml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string xml = text.str();
+  const std::string ring = "name=\"bumper_ring\"";
+  ASSERT_NE(xml.find(ring), std::string::npos);
+  xml.replace(xml.find(ring), ring.size(), "name=\"ring\"");
+  const std::filesystem::path robot =
+      testing::WriteFile(testing::MakeTempDir("planar_no_ring") / "p3dx_no_ring.xml", xml);
+  SceneOptions options;
+  options.world_mjcf = World(false);
+  options.robot_mjcf = robot;
+  EXPECT_NO_THROW(Scene{options});
+  options.drive = DriveMode::kPlanar;
+  try {
+    Scene scene(options);
+    ADD_FAILURE() << "a planar scene without a bumper_ring";
+  } catch (const ConfigError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("p3dx_no_ring.xml"), std::string::npos) << what;
+    EXPECT_NE(what.find("bumper_ring"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
 }
 
 TEST(PlanarDriveTest, AnInvalidDriveIsAOneLineErrorNamingTheField) {

@@ -266,6 +266,22 @@ bool PlanarObstacles::Overlaps(const msgs::Pose2D& X_WR) {
   return false;
 }
 
+bool PlanarObstacles::OverlapsFrom(const msgs::Pose2D& start, const msgs::Pose2D& X_WR) {
+  for (int i : Near(X_WR.x_m, X_WR.y_m)) {
+    const Obstacle& o = obstacles_[i];
+    const double centre = CentreDistance(o, X_WR.x_m, X_WR.y_m);
+    if (centre >= reach_m_) continue;
+    double witness[2];
+    if (Gap(o, X_WR, witness, /*overlap_only=*/true) >= 0.0) continue;
+    if (Gap(o, start, witness, /*overlap_only=*/true) < 0.0 &&
+        centre >= CentreDistance(o, start.x_m, start.y_m)) {
+      continue;  // overlapped already, and no deeper
+    }
+    return true;
+  }
+  return false;
+}
+
 void PlanarObstacles::ContactBearings(const msgs::Pose2D& X_WR, double skin_m,
                                       std::vector<double>* out) {
   for (int i : Near(X_WR.x_m, X_WR.y_m)) {

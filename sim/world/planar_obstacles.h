@@ -30,6 +30,11 @@ class PlanarObstacles {
 
   // True when the footprint at X_WR overlaps an obstacle with positive depth (touching is not).
   bool Overlaps(const msgs::Pose2D& X_WR);
+  // Overlaps(X_WR) for a move from `start`, except that an obstacle the footprint already
+  // overlaps at `start` (a spawn within the setup check's tolerance, a PlaceRobot) only counts
+  // when the base origin got closer to it: the robot may back out of it, turn or slide along it,
+  // but not drive deeper in. Equal to Overlaps(X_WR) when the footprint at `start` is clear.
+  bool OverlapsFrom(const msgs::Pose2D& start, const msgs::Pose2D& X_WR);
   // The bearings (robot frame, atan2(y, x) from the base origin) of the footprint's points
   // nearest each obstacle whose gap to the footprint at X_WR is at most skin_m; appended to `out`.
   void ContactBearings(const msgs::Pose2D& X_WR, double skin_m, std::vector<double>* out);

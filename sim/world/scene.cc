@@ -10,6 +10,7 @@
 #include "sim/world/draw_only_geoms.h"
 #include "sim/world/planar_drive.h"
 #include "sim/world/static_geom_step.h"
+#include "sim/world/upright_pose.h"
 
 namespace plywood::sim {
 namespace {
@@ -164,13 +165,7 @@ void Scene::MakeNearContactPairs() {
   near_pairs_ = std::make_unique<NearContactPairs>(model_.get(), data_.get(), base_body_);
 }
 
-msgs::Pose2D Scene::TruePose() const {
-  const mjtNum* q = data_->qpos + base_qpos_;
-  // Yaw of the base's x axis projected on the floor; robust to small roll and pitch.
-  const double w = q[3], x = q[4], y = q[5], z = q[6];
-  const double yaw = std::atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z));
-  return {q[0], q[1], yaw};
-}
+msgs::Pose2D Scene::TruePose() const { return UprightPoseFromQpos(data_->qpos + base_qpos_); }
 
 double Scene::TrueYawRateRadS() const {
   // From qvel, not cvel: after mj_step, cvel (like xmat) still describes the state before the
@@ -184,13 +179,7 @@ double Scene::TrueYawRateRadS() const {
 }
 
 void Scene::PlaceRobot(const msgs::Pose2D& X_WR) {
-  mjtNum* q = data_->qpos + base_qpos_;
-  q[0] = X_WR.x_m;
-  q[1] = X_WR.y_m;
-  q[3] = std::cos(X_WR.theta_rad / 2);
-  q[4] = 0.0;
-  q[5] = 0.0;
-  q[6] = std::sin(X_WR.theta_rad / 2);
+  WriteUprightPose(X_WR, data_->qpos + base_qpos_);
   WithNearPairs([&] { mj_forward(model_.get(), data_.get()); });
   draw_only_stale_ = false;
   kinematics_stale_ = false;
@@ -219,6 +208,10 @@ void Scene::Step() {
 void Scene::PlaceDrawOnlyGeoms() const {
   if (kinematics_stale_) {
     mj_kinematics(model_.get(), data_.get());  // every body, geom and site, draw-only ones too
+    // What mj_forward's position stage adds for the renderers: subtree_com (the viewer's follow
+    // camera tracks it) and the cameras' and lights' poses.
+    mj_comPos(model_.get(), data_.get());
+    mj_camlight(model_.get(), data_.get());
     kinematics_stale_ = false;
     draw_only_stale_ = false;
   }

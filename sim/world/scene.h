@@ -52,8 +52,8 @@ class Scene {
   // The data with every geom placed. Step() leaves the robot's draw-only geoms (DrawOnlyGeoms:
   // visual wheels, shell, bump panels) where they were; data() and mutable_data() place them first
   // (on the calling thread), bit for bit where mj_step would have put them. In the planar drive
-  // Step() places nothing, and these run mj_kinematics first (contacts stay those of the last
-  // mj_forward: the planar drive has none).
+  // Step() places nothing, and these run mj_kinematics, mj_comPos and mj_camlight first (contacts
+  // and sensordata stay those of the last mj_forward: the planar drive has none).
   const mjData* data() const {
     PlaceDrawOnlyGeoms();
     return data_.get();
