@@ -6,6 +6,8 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "robot/control/controller.h"
 #include "robot/odometry/trajectory_metrics.h"
@@ -50,6 +52,21 @@ struct FaceForLabels {
   // the numerator of the beam's distance t, which do not depend on the beam.
   double aox = 0.0, aoy = 0.0, t_numerator = 0.0;
 };
+
+// MuJoCo (and the planar drive) would zero a non-finite command and let the robot stand still
+// silently; a run whose controller computes NaN must fail and say so instead.
+void RequireFiniteCommand(const msgs::WheelSpeedCommand& command, double time_s,
+                          const std::string& source) {
+  if (std::isfinite(command.left_rad_s) && std::isfinite(command.right_rad_s)) return;
+  const auto text = [](double v) {
+    return std::isnan(v)   ? std::string("nan")
+           : std::isinf(v) ? (v > 0 ? "inf" : "-inf")
+                           : FormatNumber(v);
+  };
+  throw std::runtime_error(source + " gave a non-finite wheel speed at t=" + FormatNumber(time_s) +
+                           " s (left " + text(command.left_rad_s) + ", right " +
+                           text(command.right_rad_s) + " rad/s)");
+}
 
 // The ground-truth segment a beam hit: the first of the hit geom's faces (`candidates`, their
 // aox, aoy and t_numerator filled for the beam's origin) that the beam's ray crosses (exact, and
@@ -397,6 +414,8 @@ void ExperimentRunner::Run(const Progress& progress) {
         observer_ ? observer_->WheelOverride() : std::nullopt;
     if (override) {
       wheel_command_ = *override;
+      RequireFiniteCommand(wheel_command_, TimeAtStepPrecision(scene_->time_s(), dt),
+                           "the wheel override");
       scene_->SetWheelSpeeds(wheel_command_);
     } else if (p.controller && p.control_schedule->Due(scene_->time_s())) {
       const PartTimer timer(part_times_ ? &part_times_->controller_s : nullptr);
@@ -407,6 +426,8 @@ void ExperimentRunner::Run(const Progress& progress) {
       input.laser = p.last_laser ? &*p.last_laser : nullptr;
       input.bumpers = record_.bumpers.empty() ? nullptr : &record_.bumpers.back();
       wheel_command_ = p.controller->Update(input);
+      RequireFiniteCommand(wheel_command_, TimeAtStepPrecision(scene_->time_s(), dt),
+                           "the controller");
       scene_->SetWheelSpeeds(wheel_command_);
       if (p.controller->Finished() && !finished) finished = true;
     } else if (overridden && !p.controller) {
