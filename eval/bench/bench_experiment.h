@@ -28,9 +28,10 @@ struct WorldSpeed {
 
 // What `plywood bench` measured: wall-clock figures, so they differ from run to run.
 struct BenchFigures {
-  std::filesystem::path world;     // the resolved world of the itemised run
-  WorldSpeed itemised;             // options.world, with per-part costs
-  std::vector<WorldSpeed> worlds;  // hall, office, 3 x 3 tiled office, then both offices again in the planar drive
+  std::filesystem::path world;  // the resolved world of the itemised run
+  WorldSpeed itemised;          // options.world, with per-part costs
+  // hall, office, 3 x 3 tiled office, then both offices again in the planar drive
+  std::vector<WorldSpeed> worlds;
   sim::RayCasterBenchResult rays;
   LineExtractorBench lines;
   // experiments/default.yaml through the plain run protocol, outputs and snapshot included.

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/shortest_number.h"
 #include "robot/control/controller.h"
 #include "robot/odometry/trajectory_metrics.h"
 #include "sim/config/config_error.h"
@@ -58,14 +59,9 @@ struct FaceForLabels {
 void RequireFiniteCommand(const msgs::WheelSpeedCommand& command, double time_s,
                           const std::string& source) {
   if (std::isfinite(command.left_rad_s) && std::isfinite(command.right_rad_s)) return;
-  const auto text = [](double v) {
-    return std::isnan(v)   ? std::string("nan")
-           : std::isinf(v) ? (v > 0 ? "inf" : "-inf")
-                           : FormatNumber(v);
-  };
   throw std::runtime_error(source + " gave a non-finite wheel speed at t=" + FormatNumber(time_s) +
-                           " s (left " + text(command.left_rad_s) + ", right " +
-                           text(command.right_rad_s) + " rad/s)");
+                           " s (left " + msgs::ShortestNumber(command.left_rad_s) + ", right " +
+                           msgs::ShortestNumber(command.right_rad_s) + " rad/s)");
 }
 
 // The ground-truth segment a beam hit: the first of the hit geom's faces (`candidates`, their

@@ -112,7 +112,8 @@ void PlanarDrive::Step(const mjModel* m, mjData* d) {
       (ids_.right_radius_m * w_right - ids_.left_radius_m * w_left) / ids_.track_m;
   mjtNum* q = d->qpos + ids_.base_qpos;
   const msgs::Pose2D start = UprightPoseFromQpos(q);
-  const msgs::Pose2D whole = AlongArc(start, v * dt, yaw_rate * dt, 1.0);
+  const double ds = v * dt, dtheta = yaw_rate * dt;
+  const msgs::Pose2D whole = AlongArc(start, ds, dtheta, 1.0);
   double fraction = 1.0;
   if (obstacles_.Overlaps(whole)) {
     // A step that starts overlapping (a spawn within the setup check's tolerance) may leave the
@@ -125,13 +126,12 @@ void PlanarDrive::Step(const mjModel* m, mjData* d) {
       double clear = 0.0, blocked = 1.0;
       for (int i = 0; i < 20; ++i) {
         const double mid = (clear + blocked) / 2.0;
-        (blocked_at(AlongArc(start, v * dt, yaw_rate * dt, mid)) ? blocked : clear) = mid;
+        (blocked_at(AlongArc(start, ds, dtheta, mid)) ? blocked : clear) = mid;
       }
       fraction = clear;
     }
   }
-  const msgs::Pose2D end =
-      fraction == 1.0 ? whole : AlongArc(start, v * dt, yaw_rate * dt, fraction);
+  const msgs::Pose2D end = fraction == 1.0 ? whole : AlongArc(start, ds, dtheta, fraction);
   WriteUprightPose(end, q);
   mjtNum* base_v = d->qvel + ids_.base_dof;
   base_v[0] = fraction * v * std::cos(end.theta_rad);  // world frame
