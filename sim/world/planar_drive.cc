@@ -131,7 +131,22 @@ void PlanarDrive::Step(const mjModel* m, mjData* d) {
       fraction = clear;
     }
   }
-  const msgs::Pose2D end = fraction == 1.0 ? whole : AlongArc(start, ds, dtheta, fraction);
+  msgs::Pose2D end = fraction == 1.0 ? whole : AlongArc(start, ds, dtheta, fraction);
+  // Stopped by a wall, the rest of the step's turn still happens where the footprint can be
+  // pushed clear of what it touches by no more than the turn swings it (its reach times the
+  // angle): a robot pressed against a wall turns, sliding away from it as its corners swing
+  // round, as it does on the floor, where the contact pushes it and the tires scrub sideways.
+  // The push is wheel slip: the wheels turn by the turn alone.
+  double turned = fraction;  // share of the step's turn taken
+  const double rest_rad = (1.0 - fraction) * dtheta;
+  if (fraction < 1.0 && rest_rad != 0.0 && !obstacles_.Overlaps(start)) {
+    msgs::Pose2D slid = end;
+    slid.theta_rad += rest_rad;
+    if (obstacles_.PushOut(&slid, obstacles_.reach_m() * std::abs(rest_rad) + 1e-8)) {
+      end = slid;
+      turned = 1.0;
+    }
+  }
   WriteUprightPose(end, q);
   mjtNum* base_v = d->qvel + ids_.base_dof;
   base_v[0] = fraction * v * std::cos(end.theta_rad);  // world frame
@@ -139,11 +154,15 @@ void PlanarDrive::Step(const mjModel* m, mjData* d) {
   base_v[2] = 0.0;
   base_v[3] = 0.0;  // body frame; upright, so its z is the world's
   base_v[4] = 0.0;
-  base_v[5] = fraction * yaw_rate;
-  d->qvel[left_dof_] = fraction * w_left;
-  d->qvel[right_dof_] = fraction * w_right;
-  d->qpos[left_qpos_] += fraction * w_left * dt;
-  d->qpos[right_qpos_] += fraction * w_right * dt;
+  base_v[5] = turned * yaw_rate;
+  // The wheels: the straight part's speed kept by the fraction gone, the turning part's whole
+  // when the turn was.
+  const double left = turned == fraction ? fraction * w_left : fraction * s - half_diff;
+  const double right = turned == fraction ? fraction * w_right : fraction * s + half_diff;
+  d->qvel[left_dof_] = left;
+  d->qvel[right_dof_] = right;
+  d->qpos[left_qpos_] += left * dt;
+  d->qpos[right_qpos_] += right * dt;
   d->time += dt;
 }
 

@@ -50,9 +50,13 @@ struct PlanarDriveIndices {
 // A step that starts with the footprint in an obstacle (a spawn within the setup check's 1 mm, a
 // PlaceRobot) may back out of it, turn or slide along it, but not bring the base origin closer to
 // it (PlanarObstacles::OverlapsFrom). A NaN or huge command (after the ctrlrange clamp) zeroes
-// both commands for the step and raises mjWARN_BADCTRL, as mj_step does. Not modelled: wheel slip,
-// the caster, tire scrub on turns, pushing, rebound and sliding along a wall (a robot at a wall
-// only moves away from it or turns where its footprint stays clear).
+// both commands for the step and raises mjWARN_BADCTRL, as mj_step does. A step stopped by a wall
+// still takes the rest of its turn where the footprint, turned, can be pushed clear of what it
+// touches by translations of no more than the turn swings it (PlanarObstacles::PushOut): a robot
+// pressed against a wall turns on the spot, sliding back as its corners swing round (the push is
+// wheel slip; the wheels turn by the turn). Not modelled: wheel slip otherwise, the caster, tire
+// scrub on turns, pushing, rebound, and sliding along a wall while driving (the blocked part of a
+// step's forward motion is lost).
 class PlanarDrive {
  public:
   // @pre mj_forward has run on `data` (the robot at its spawn pose).

@@ -238,6 +238,107 @@ TEST_P(PlanarDriveTest, DriveIntoAWallStopsAtTheWallWithTheBumperPressed) {
   EXPECT_LT(scene->TruePose().x_m, 1.0 - front_m - 0.1);
 }
 
+// Pressed against a wall a robot still turns on the spot: its corners swing into the wall, the
+// wall pushes it straight back (slip), and the turn is the open floor's closed form. The base
+// never goes into the wall, moves only away from it (y stays 0: the push is along the wall's
+// normal) and by no more than the footprint's reach beyond its front.
+TEST_P(PlanarDriveTest, PressedAgainstAWallItStillTurnsTheSpotTurnClosedForm) {
+  const RobotCase robot = GetParam()();
+  const std::unique_ptr<Scene> scene = MakeScene(robot, DriveMode::kPlanar, true);
+  PlanarObstacles obstacles(scene->model(), scene->data(), scene->base_body_id(), robot.mjcf);
+  double front_m = 0.0;
+  for (std::size_t i = 0; i < obstacles.footprint_xy().size(); i += 2) {
+    front_m = std::max(front_m, obstacles.footprint_xy()[i]);
+  }
+  const double r = robot.spec.wheel_radius_m, b = robot.spec.track_m;
+  Drive(*scene, 0.2 / r, 0.2 / r, 600);  // into the wall
+  Drive(*scene, 0.0, 0.0, 200);          // the wheels come to rest
+  const msgs::Pose2D at_wall = scene->TruePose();
+  ASSERT_NEAR(at_wall.x_m, 1.0 - front_m, 1e-5);
+  const double phi_left0 = scene->LeftWheelAngleRad(), phi_right0 = scene->RightWheelAngleRad();
+  const double c = 1.0 * b / 2.0 / r;  // 1 rad/s, turning left
+  Drive(*scene, -c, c, 1);
+  const double a = (scene->RightWheelAngleRad() - phi_right0) / 0.01 / c;
+  ASSERT_GT(a, 0.1);
+  ASSERT_LT(a, 1.0);
+  double max_x = at_wall.x_m;
+  for (int i = 1; i < 200; ++i) {
+    Drive(*scene, -c, c, 1);
+    const msgs::Pose2D pose = scene->TruePose();
+    EXPECT_FALSE(obstacles.Overlaps(pose)) << "step " << i;
+    EXPECT_NEAR(pose.y_m, 0.0, 1e-12);
+    max_x = std::max(max_x, pose.x_m);
+  }
+  const double phi = LaggedAngle(c, 0.01, a, 200);
+  EXPECT_NEAR(scene->RightWheelAngleRad() - phi_right0, phi, 1e-9);
+  EXPECT_NEAR(scene->LeftWheelAngleRad() - phi_left0, -phi, 1e-9);
+  const msgs::Pose2D end = scene->TruePose();
+  EXPECT_NEAR(end.theta_rad, 2.0 * r * phi / b, 1e-9);
+  EXPECT_GT(end.theta_rad, 1.5);  // it did turn, by most of 2 rad
+  EXPECT_LE(max_x, at_wall.x_m + 1e-12);
+  EXPECT_GE(end.x_m, 1.0 - obstacles.reach_m() - 1e-9);
+  if (robot.mjcf == "p3dx.xml") {
+    // The P3-DX's long rear swings past the wall: it was pushed back by several centimetres.
+    EXPECT_LT(end.x_m, at_wall.x_m - 0.02);
+  }
+}
+
+// The same against a round column (the disc's push: straight away from its centre): a P3-DX
+// driven into a 0.1 m column dead ahead, then turned on the spot, turns the closed form and never
+// overlaps the column.
+TEST(PlanarDriveTest, PressedAgainstAColumnItStillTurns) {
+  const std::filesystem::path world = testing::WriteFile(
+      testing::MakeTempDir("planar_drive_column") / "world.xml",
+      "<mujoco>\n  <worldbody>\n    <geom name=\"floor\" type=\"plane\" size=\"5 5 0.1\"/>\n"
+      "    <geom name=\"column\" type=\"cylinder\" pos=\"0.6 0 0.5\" size=\"0.1 0.5\"/>\n"
+      "  </worldbody>\n</mujoco>\n");
+  Scene scene(SceneOptions{.world_mjcf = world,
+                           .robot_mjcf = testing::SourceRoot() / "models" / "p3dx.xml",
+                           .spawn = {},
+                           .timestep_s = 0.01,
+                           .drive = DriveMode::kPlanar});
+  PlanarObstacles obstacles(scene.model(), scene.data(), scene.base_body_id(), "p3dx.xml");
+  const double r = robot::P3dxSpec().wheel_radius_m, b = robot::P3dxSpec().track_m;
+  Drive(scene, 0.2 / r, 0.2 / r, 400);
+  Drive(scene, 0.0, 0.0, 200);
+  ASSERT_FALSE(scene.PlanarContactBearings().empty());  // at the column
+  const double c = 1.0 * b / 2.0 / r;
+  const double theta0 = scene.TruePose().theta_rad;
+  for (int i = 0; i < 300; ++i) {
+    Drive(scene, c, -c, 1);  // turning right
+    EXPECT_FALSE(obstacles.Overlaps(scene.TruePose())) << "step " << i;
+  }
+  // 3 s at 1 rad/s less the lag's (tau - dt) x 1 rad/s: ~2.98 rad.
+  EXPECT_LT(scene.TruePose().theta_rad - theta0, -2.9);
+}
+
+// A turn that the walls leave no room for (the footprint wedged between two walls closer than
+// its reach) stays blocked, as before: nothing is pushed through a wall.
+TEST(PlanarDriveTest, WedgedBetweenTwoWallsItCannotTurn) {
+  const std::filesystem::path world = testing::WriteFile(
+      testing::MakeTempDir("planar_drive_wedge") / "world.xml",
+      "<mujoco>\n  <worldbody>\n    <geom name=\"floor\" type=\"plane\" size=\"5 5 0.1\"/>\n"
+      "    <geom name=\"left\" type=\"box\" pos=\"0 0.26 0.5\" size=\"2 0.01 0.5\"/>\n"
+      "    <geom name=\"right\" type=\"box\" pos=\"0 -0.26 0.5\" size=\"2 0.01 0.5\"/>\n"
+      "  </worldbody>\n</mujoco>\n");
+  Scene scene(SceneOptions{.world_mjcf = world,
+                           .robot_mjcf = testing::SourceRoot() / "models" / "p3dx.xml",
+                           .spawn = {},
+                           .timestep_s = 0.01,
+                           .drive = DriveMode::kPlanar});
+  PlanarObstacles obstacles(scene.model(), scene.data(), scene.base_body_id(), "p3dx.xml");
+  ASSERT_GT(obstacles.reach_m(), 0.25);  // the corridor (0.5 m) is narrower than 2 x reach
+  const double c = 1.0 * robot::P3dxSpec().track_m / 2.0 / robot::P3dxSpec().wheel_radius_m;
+  Drive(scene, -c, c, 200);
+  const msgs::Pose2D end = scene.TruePose();
+  EXPECT_FALSE(obstacles.Overlaps(end));
+  EXPECT_LT(std::abs(end.theta_rad), 1.0);  // stopped where its corners met both walls
+  EXPECT_LT(std::abs(end.y_m), 0.25);
+  Drive(scene, -c, c, 100);  // and stays stopped
+  EXPECT_NEAR(scene.TruePose().theta_rad, end.theta_rad, 1e-6);
+  EXPECT_FALSE(obstacles.Overlaps(scene.TruePose()));
+}
+
 INSTANTIATE_TEST_SUITE_P(Robots, PlanarDriveTest, ::testing::Values(&P3dx, &MagellanPro));
 
 TEST(PlanarDriveTest, P3dxReversingIntoAWallPressesOnlyRearPanels) {

@@ -293,4 +293,110 @@ void PlanarObstacles::ContactBearings(const msgs::Pose2D& X_WR, double skin_m,
   }
 }
 
+double PlanarObstacles::Penetration(const Obstacle& o, const msgs::Pose2D& X_WR,
+                                    double direction_W[2]) const {
+  const double c = std::cos(X_WR.theta_rad), s = std::sin(X_WR.theta_rad);
+  const double dx = o.cx - X_WR.x_m, dy = o.cy - X_WR.y_m;
+  const double centre[2] = {c * dx + s * dy, -s * dx + c * dy};
+  const int n = static_cast<int>(hull_.size() / 2);
+  const double* v = hull_.data();
+  double depth = 0.0, dir[2] = {0.0, 0.0};  // robot frame
+  if (o.disc) {
+    // Inside: out through the edge the centre is least deep behind; outside: straight away from
+    // the disc's centre, from the footprint's point nearest it.
+    bool inside = true;
+    double least = std::numeric_limits<double>::infinity(), nearest = least;
+    double q_best[2] = {0.0, 0.0};
+    for (int i = 0; i < n; ++i) {
+      const double* a = v + 2 * i;
+      const double signed_distance =
+          (centre[0] - a[0]) * normals_[2 * i] + (centre[1] - a[1]) * normals_[2 * i + 1];
+      if (signed_distance > 0.0) inside = false;
+      if (o.radius_m - signed_distance < least) {
+        least = o.radius_m - signed_distance;
+        dir[0] = -normals_[2 * i];
+        dir[1] = -normals_[2 * i + 1];
+      }
+      double q[2];
+      NearestOnSegment(a, v + 2 * ((i + 1) % n), centre, q);
+      const double distance = std::hypot(centre[0] - q[0], centre[1] - q[1]);
+      if (distance < nearest) {
+        nearest = distance;
+        q_best[0] = q[0];
+        q_best[1] = q[1];
+      }
+    }
+    if (inside) {
+      depth = least;
+    } else if (nearest < o.radius_m && nearest > 0.0) {
+      depth = o.radius_m - nearest;
+      dir[0] = (q_best[0] - centre[0]) / nearest;
+      dir[1] = (q_best[1] - centre[1]) / nearest;
+    }
+  } else {
+    // A rectangle: the separating axis (its two axes, the footprint's edge normals) along which
+    // the two projections overlap least.
+    const double ux = c * o.ux + s * o.uy, uy = -s * o.ux + c * o.uy;
+    const double vx = -uy, vy = ux;
+    depth = std::numeric_limits<double>::infinity();
+    const auto try_axis = [&](double ax, double ay) {
+      double a_lo = std::numeric_limits<double>::infinity(), a_hi = -a_lo;
+      for (int i = 0; i < n; ++i) {
+        const double t = v[2 * i] * ax + v[2 * i + 1] * ay;
+        a_lo = std::min(a_lo, t);
+        a_hi = std::max(a_hi, t);
+      }
+      const double t0 = centre[0] * ax + centre[1] * ay;
+      const double extent =
+          o.half_x * std::abs(ux * ax + uy * ay) + o.half_y * std::abs(vx * ax + vy * ay);
+      const double back = a_hi - (t0 - extent);  // the robot moves along -axis
+      const double ahead = t0 + extent - a_lo;   // the robot moves along +axis
+      const double overlap = std::min(back, ahead);
+      if (overlap < depth) {
+        depth = overlap;
+        dir[0] = back <= ahead ? -ax : ax;
+        dir[1] = back <= ahead ? -ay : ay;
+      }
+    };
+    try_axis(ux, uy);
+    try_axis(vx, vy);
+    for (int i = 0; i < n; ++i) try_axis(normals_[2 * i], normals_[2 * i + 1]);
+    depth = std::max(0.0, depth);
+  }
+  direction_W[0] = c * dir[0] - s * dir[1];
+  direction_W[1] = s * dir[0] + c * dir[1];
+  return depth;
+}
+
+bool PlanarObstacles::PushOut(msgs::Pose2D* X_WR, double max_push_m) {
+  // A push clears its obstacle by this much more than the depth, so that rounding cannot leave
+  // the two overlapping by a hair.
+  constexpr double kClearanceM = 1e-9;
+  constexpr int kRounds = 8;
+  msgs::Pose2D pose = *X_WR;
+  double pushed_m = 0.0;
+  for (int round = 0; round < kRounds; ++round) {
+    double deepest = 0.0, direction[2] = {0.0, 0.0};
+    for (int i : Near(pose.x_m, pose.y_m)) {
+      const Obstacle& o = obstacles_[i];
+      if (CentreDistance(o, pose.x_m, pose.y_m) >= reach_m_) continue;
+      double d[2];
+      const double depth = Penetration(o, pose, d);
+      if (depth > deepest) {
+        deepest = depth;
+        direction[0] = d[0];
+        direction[1] = d[1];
+      }
+    }
+    if (deepest == 0.0) break;
+    pushed_m += deepest + kClearanceM;
+    if (pushed_m > max_push_m) return false;
+    pose.x_m += (deepest + kClearanceM) * direction[0];
+    pose.y_m += (deepest + kClearanceM) * direction[1];
+  }
+  if (Overlaps(pose)) return false;
+  *X_WR = pose;
+  return true;
+}
+
 }  // namespace plywood::sim

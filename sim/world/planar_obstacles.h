@@ -38,6 +38,12 @@ class PlanarObstacles {
   // The bearings (robot frame, atan2(y, x) from the base origin) of the footprint's points
   // nearest each obstacle whose gap to the footprint at X_WR is at most skin_m; appended to `out`.
   void ContactBearings(const msgs::Pose2D& X_WR, double skin_m, std::vector<double>* out);
+  // Moves X_WR (heading kept) by translations that leave the footprint clear of every obstacle:
+  // each round pushes it out of the deepest overlap along that overlap's minimum-translation axis
+  // (a rectangle's by separating axes, a disc's along the line from its centre's nearest
+  // footprint point), a few rounds for a corner. True and X_WR moved when that takes at most
+  // max_push_m in all and ends clear; false and X_WR unchanged otherwise.
+  bool PushOut(msgs::Pose2D* X_WR, double max_push_m);
 
   // The footprint's vertices (robot frame, counter-clockwise) and its distance from the base
   // origin at its farthest vertex.
@@ -66,6 +72,10 @@ class PlanarObstacles {
   // found apart returns 0 without its gap or witness.
   double Gap(const Obstacle& o, const msgs::Pose2D& X_WR, double witness[2],
              bool overlap_only) const;
+
+  // The depth (0 when apart or touching) of the footprint at X_WR in obstacle `o`, and the unit
+  // direction (world frame) in which moving the robot by that depth separates them.
+  double Penetration(const Obstacle& o, const msgs::Pose2D& X_WR, double direction_W[2]) const;
 
   static constexpr double kNearPadM = 0.5;
   std::vector<double> hull_;     // x0, y0, x1, y1, ... counter-clockwise
