@@ -180,10 +180,17 @@ void WallFollowingController::Remember(const ControllerInput& input) {
   if (last_reading_time_s_ && time_s <= *last_reading_time_s_) return;
   last_reading_time_s_ = time_s;
   // Stale points go before the new ones arrive, so the latest reading always counts in full.
-  memory_.erase(memory_.begin(),
-                std::find_if(memory_.begin(), memory_.end(), [&](const StampedPoint& p) {
-                  return p.time_s >= time_s - options_.memory_s - kTimeSlackS;
-                }));
+  const auto fresh = std::find_if(
+      memory_.begin() + memory_head_, memory_.end(),
+      [&](const StampedPoint& p) { return p.time_s >= time_s - options_.memory_s - kTimeSlackS; });
+  memory_head_ = static_cast<std::size_t>(fresh - memory_.begin());
+  // The stale points are dropped in bulk once they are half of memory_, not at every reading:
+  // erasing the front moves everything behind it, so each point is moved a bounded number of
+  // times instead of once per reading while it is remembered.
+  if (memory_head_ > memory_.size() / 2) {
+    memory_.erase(memory_.begin(), fresh);
+    memory_head_ = 0;
+  }
   old_points_sorted_ = false;  // memory_ and the split between old and recent points change
   const msgs::Pose2D& X_WR = input.X_WR_estimate;
   if (options_.sensor == WallSensor::kSonar) {
@@ -227,7 +234,7 @@ void WallFollowingController::SortOldPoints(const msgs::Pose2D& X_WR, std::size_
   old_inside_.clear();
   old_boundary_.clear();
   for (std::size_t i = 0; i < old_count; ++i) {
-    const Point& p_W = memory_[i].p_W;
+    const Point& p_W = memory_[memory_head_ + i].p_W;
     const double dx = p_W.x_m - X_WR.x_m, dy = p_W.y_m - X_WR.y_m;
     const double d_squared = dx * dx + dy * dy;
     if (d_squared > outer_squared || c * dx + s * dy < behind_m) continue;
@@ -266,7 +273,7 @@ double WallFollowingController::CollectPoints(const msgs::Pose2D& X_WR, std::vec
   // memory_ is in time order: the points before `recent` are too old for the wall fit (the side
   // test) and count only for the ahead test.
   const auto recent =
-      std::partition_point(memory_.begin(), memory_.end(),
+      std::partition_point(memory_.begin() + memory_head_, memory_.end(),
                            [&](const StampedPoint& p) { return p.time_s < oldest_side_s; });
   // A point on the far side (side_sign_ * y < 0) is no side point: range * cos_side >= 0 > that.
   const bool far_side_fails = cos_side >= 0.0;
@@ -292,10 +299,11 @@ double WallFollowingController::CollectPoints(const msgs::Pose2D& X_WR, std::vec
       ahead_m = x_m;
     }
   };
-  const auto old_count = static_cast<std::size_t>(recent - memory_.begin());
+  const auto old_count = static_cast<std::size_t>(recent - (memory_.begin() + memory_head_));
   if (!std::isfinite(reach_squared)) {
     for (std::size_t i = 0; i < old_count; ++i) {
-      old_ahead(memory_[i].p_W.x_m - X_WR.x_m, memory_[i].p_W.y_m - X_WR.y_m);
+      const Point& p_W = memory_[memory_head_ + i].p_W;
+      old_ahead(p_W.x_m - X_WR.x_m, p_W.y_m - X_WR.y_m);
     }
     return ahead_m;
   }

@@ -118,8 +118,9 @@ class WallFollowingController final : public Controller {
   std::optional<double> last_time_s_;
   std::optional<double> wall_heading_W_rad_;  // last fitted wall direction in the estimate frame
   std::optional<WallEstimate> wall_;
-  std::vector<StampedPoint> memory_;  // oldest first
-  std::vector<Point> side_scratch_;   // CollectPoints' output, kept to reuse its allocation
+  std::vector<StampedPoint> memory_;  // oldest first; those before memory_head_ are forgotten
+  std::size_t memory_head_ = 0;
+  std::vector<Point> side_scratch_;  // CollectPoints' output, kept to reuse its allocation
   // SortOldPoints' lists (estimate frame) for the anchor pose: the old points surely within reach
   // of any pose within the slack of the anchor, and those that may be (within reach + slack);
   // neither holds points surely behind every such pose.

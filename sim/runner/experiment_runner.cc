@@ -56,11 +56,13 @@ struct FaceForLabels {
 
 // MuJoCo (and the planar drive) would zero a non-finite command and let the robot stand still
 // silently; a run whose controller computes NaN must fail and say so instead.
-void RequireFiniteCommand(const msgs::WheelSpeedCommand& command, double time_s,
-                          const std::string& source) {
+// The time is formatted only for the error: this runs at every control tick.
+void RequireFiniteCommand(const msgs::WheelSpeedCommand& command, double time_s, double dt,
+                          const char* source) {
   if (std::isfinite(command.left_rad_s) && std::isfinite(command.right_rad_s)) return;
-  throw std::runtime_error(source + " gave a non-finite wheel speed at t=" + FormatNumber(time_s) +
-                           " s (left " + msgs::ShortestNumber(command.left_rad_s) + ", right " +
+  throw std::runtime_error(std::string(source) + " gave a non-finite wheel speed at t=" +
+                           FormatNumber(TimeAtStepPrecision(time_s, dt)) + " s (left " +
+                           msgs::ShortestNumber(command.left_rad_s) + ", right " +
                            msgs::ShortestNumber(command.right_rad_s) + " rad/s)");
 }
 
@@ -410,8 +412,7 @@ void ExperimentRunner::Run(const Progress& progress) {
         observer_ ? observer_->WheelOverride() : std::nullopt;
     if (override) {
       wheel_command_ = *override;
-      RequireFiniteCommand(wheel_command_, TimeAtStepPrecision(scene_->time_s(), dt),
-                           "the wheel override");
+      RequireFiniteCommand(wheel_command_, scene_->time_s(), dt, "the wheel override");
       scene_->SetWheelSpeeds(wheel_command_);
     } else if (p.controller && p.control_schedule->Due(scene_->time_s())) {
       const PartTimer timer(part_times_ ? &part_times_->controller_s : nullptr);
@@ -422,8 +423,7 @@ void ExperimentRunner::Run(const Progress& progress) {
       input.laser = p.last_laser ? &*p.last_laser : nullptr;
       input.bumpers = record_.bumpers.empty() ? nullptr : &record_.bumpers.back();
       wheel_command_ = p.controller->Update(input);
-      RequireFiniteCommand(wheel_command_, TimeAtStepPrecision(scene_->time_s(), dt),
-                           "the controller");
+      RequireFiniteCommand(wheel_command_, scene_->time_s(), dt, "the controller");
       scene_->SetWheelSpeeds(wheel_command_);
       if (p.controller->Finished() && !finished) finished = true;
     } else if (overridden && !p.controller) {
