@@ -118,14 +118,15 @@ int SingleRunProtocol(const ProtocolContext& context) {
     }
   });
   if (!quiet && terminal) std::fprintf(stderr, "\r%60s\r", "");
-  // Before the scorers below, which may change the record.
-  const sim::FormattedSensorLogs formatted = sensor_logs.Finish(runner.record());
 
   if (snapshots) {
     if (!snapshot) snapshot.emplace(runner.scene().model(), snapshot_options);
     snapshot->Write(runner.scene().data(), TrajectoryOverlays(runner.record()),
                     out_dir + "/snapshot.png");
   }
+  // After the snapshot's hand-over (the head of the chain after the run), before the scorers
+  // below, which may change the record.
+  const sim::FormattedSensorLogs formatted = sensor_logs.Finish(runner.record());
 
   AddSonarMapMetrics(runner);     // seed 001 map scores, if the sonar explorer drove
   GeometricMapRun geometric_map;  // seed 003's map, with a geometric_map: section
