@@ -31,6 +31,9 @@ SensorLogStream::~SensorLogStream() {
 
 void SensorLogStream::Feed(const RunRecord& record) {
   if (!active()) return;
+  if (record.laser.size() < fed_laser_ || record.sonar.size() < fed_sonar_) {
+    throw std::logic_error("SensorLogStream::Feed: records were removed, not appended");
+  }
   Batch batch;
   if (logs_.laser_log_given || logs_.laser_hits_given) {
     batch.laser.assign(record.laser.begin() + static_cast<std::ptrdiff_t>(fed_laser_),

@@ -43,6 +43,7 @@ class SensorLogStream {
   SensorLogStream& operator=(const SensorLogStream&) = delete;
 
   // Hands over copies of the records appended to `record` since the last call.
+  // @throws std::logic_error when `record` has fewer laser scans or sonar rings than before.
   void Feed(const RunRecord& record);
 
   // Feeds the rest of `record`, waits until everything is formatted and returns it.

@@ -119,5 +119,17 @@ TEST(SensorLogStreamTest, FinishTwiceIsAnErrorAndAnUnfinishedStreamStopsCleanly)
   EXPECT_THROW(stream.Finish(record), std::logic_error);
 }
 
+TEST(SensorLogStreamTest, RecordsRemovedAfterAFeedAreAnError) {
+  const ExperimentConfig config = Config("");
+  ExperimentRunner runner(config);
+  runner.Run();
+  RunRecord record = runner.record();
+  ASSERT_FALSE(record.laser.empty());
+  SensorLogStream stream(config);
+  stream.Feed(record);
+  record.laser.pop_back();
+  EXPECT_THROW(stream.Feed(record), std::logic_error);
+}
+
 }  // namespace
 }  // namespace plywood::sim
