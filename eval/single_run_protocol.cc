@@ -15,6 +15,7 @@
 #include "render/overlay.h"
 #include "sim/runner/experiment_runner.h"
 #include "sim/runner/run_writer.h"
+#include "sim/runner/sensor_log_stream.h"
 
 namespace plywood::eval {
 namespace {
@@ -97,10 +98,15 @@ int SingleRunProtocol(const ProtocolContext& context) {
   if (snapshots && context.observer == nullptr) {
     snapshot.emplace(runner.scene().model(), snapshot_options);
   }
+  // The largest sensor logs are formatted on their own thread as the records come in (every
+  // simulated second), so that little of them is left for after the run, when the snapshot's
+  // final frame wants both cores.
+  sim::SensorLogStream sensor_logs(config);
   // A live progress bar on a terminal; in logs (CI, batch) a line every 10 %.
   const bool terminal = isatty(fileno(stderr));
   int last_decile = 0;
   runner.Run([&](double fraction, double simulated_s) {
+    sensor_logs.Feed(runner.record());
     if (quiet) return;
     if (terminal) {
       std::fprintf(stderr, "\r[%-30s] %5.1f%%  t = %.0f s ",
@@ -118,13 +124,16 @@ int SingleRunProtocol(const ProtocolContext& context) {
     snapshot->Write(runner.scene().data(), TrajectoryOverlays(runner.record()),
                     out_dir + "/snapshot.png");
   }
+  // After the snapshot's hand-over (the head of the chain after the run), before the scorers
+  // below, which may change the record.
+  const sim::FormattedSensorLogs formatted = sensor_logs.Finish(runner.record());
 
   AddSonarMapMetrics(runner);     // seed 001 map scores, if the sonar explorer drove
   GeometricMapRun geometric_map;  // seed 003's map, with a geometric_map: section
   const bool has_geometric_map = AddGeometricMapMetrics(runner, &geometric_map);
   // Line extraction scores (lines: section); wall-clock time per scan goes to timing.json only.
   const std::vector<eval::ExtractorScore> line_scores = eval::AddLineMetrics(runner);
-  sim::WriteRunOutputs(config, runner.record(), out_dir);
+  sim::WriteRunOutputs(config, runner.record(), out_dir, &formatted);
   WriteSonarMap(runner, out_dir);
   if (snapshots) WriteSonarMapPictures(runner, out_dir);
   if (has_geometric_map) {

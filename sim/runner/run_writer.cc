@@ -9,6 +9,7 @@
 #include "perception/logs/carmen_log.h"
 #include "perception/logs/tum_trajectory.h"
 #include "sim/runner/metrics.h"
+#include "sim/runner/sensor_log_lines.h"
 
 namespace plywood::sim {
 namespace {
@@ -36,33 +37,33 @@ class OutputFile {
 
 std::string N(double value) { return FormatNumber(value); }
 
-void WriteRing(std::ostream& out, const std::vector<msgs::RangeRing>& rings,
-               const std::function<std::string(double)>& T) {
+// The header, then the rows (`rows`: already formatted, else from `rings`).
+void WriteRing(std::ostream& out, const std::vector<msgs::RangeRing>& rings, double timestep_s,
+               const std::string* rows) {
   // time_s, then one column per transducer: the range, or empty for no echo.
   out << "time_s";
   const std::size_t count = rings.empty() ? 0 : rings.front().readings.size();
   for (std::size_t i = 0; i < count; ++i) out << ",range_" << i << "_m";
   out << '\n';
-  for (const auto& ring : rings) {
-    out << T(ring.time_s);
-    for (const auto& reading : ring.readings) {
-      out << ',';
-      if (reading.echo) out << N(reading.range_m);
-    }
-    out << '\n';
+  if (rows != nullptr) {
+    out << *rows;
+    return;
   }
+  for (const auto& ring : rings) WriteRingLine(out, ring, timestep_s);
 }
 
 }  // namespace
 
 std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const RunRecord& record,
-                                         const std::filesystem::path& dir) {
+                                         const std::filesystem::path& dir,
+                                         const FormattedSensorLogs* formatted) {
   std::filesystem::create_directories(dir);
   std::vector<std::string> written;
   // Times at the timestep's precision ("0.1", not the clock's running sum 0.10000000000000007).
   const double timestep_s = config.physics.timestep_s;
   const auto time = [timestep_s](double t) { return TimeAtStepPrecision(t, timestep_s); };
   const auto T = [&time](double t) { return FormatNumber(time(t)); };
+  const bool laser_formatted = formatted && formatted->laser_records == record.laser.size();
   OutputFile(dir, "config.yaml", &written).out() << ExperimentConfigToYaml(config);
   {
     OutputFile file(dir, "trajectory.csv", &written);
@@ -120,12 +121,10 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
       perception::WriteCarmenParam(log.out(), "robot_frontlaser_offset",
                                    N(record.laser.front().scan.X_RS.x_m));
     }
-    for (const auto& laser : record.laser) {
-      perception::CarmenLaserRecord carmen;
-      carmen.scan = laser.scan;
-      carmen.X_WL = laser.X_WR_truth * laser.scan.X_RS;
-      carmen.X_WR_odom = laser.X_WR_odometry * laser.scan.X_RS;
-      perception::WriteCarmenLaser(log.out(), carmen);
+    if (laser_formatted && formatted->laser_log_given) {
+      log.out() << formatted->laser_log;
+    } else {
+      for (const auto& laser : record.laser) WriteLaserLogLine(log.out(), laser);
     }
   }
   // With a lines: section, the scans at full precision (laser.log keeps millimetres and
@@ -139,16 +138,15 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
         record.laser.empty() ? 0 : record.laser.front().hit_segment_ids.size();
     for (std::size_t i = 0; i < beams; ++i) hits.out() << ",beam_" << i << "_segment";
     hits.out() << '\n';
-    std::string line;  // one write per scan: per-id stream insertion cost more than the scan
-    for (const auto& laser : record.laser) {
-      line = T(laser.scan.time_s);
-      for (int id : laser.hit_segment_ids) {
-        char number[16];
-        line += ',';
-        line.append(number, std::to_chars(number, number + sizeof(number), id).ptr);
+    if (laser_formatted && formatted->laser_hits_given) {
+      hits.out() << formatted->laser_hits;
+    } else {
+      std::string line;  // one write per scan: per-id stream insertion cost more than the scan
+      for (const auto& laser : record.laser) {
+        line.clear();
+        AppendLaserHitsLine(line, laser, timestep_s);
+        hits.out() << line;
       }
-      line += '\n';
-      hits.out() << line;
     }
   }
   if (lines_truth) {
@@ -171,9 +169,12 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
   }
   if (!config.output.sensor_logs) return written;
   if (config.sensors.sonar)
-    WriteRing(OutputFile(dir, "sonar.csv", &written).out(), record.sonar, T);
+    WriteRing(OutputFile(dir, "sonar.csv", &written).out(), record.sonar, timestep_s,
+              formatted && formatted->sonar_given && formatted->sonar_records == record.sonar.size()
+                  ? &formatted->sonar
+                  : nullptr);
   if (config.sensors.ir_ring) {
-    WriteRing(OutputFile(dir, "ir_ring.csv", &written).out(), record.ir_ring, T);
+    WriteRing(OutputFile(dir, "ir_ring.csv", &written).out(), record.ir_ring, timestep_s, nullptr);
   }
   if (config.sensors.ir_scanner) {
     OutputFile file(dir, "ir_scanner.csv", &written);
