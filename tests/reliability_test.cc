@@ -13,6 +13,7 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "eval/sonar_map/sonar_ground_truth.h"
@@ -308,7 +309,7 @@ TEST_F(ReliabilityTest, ALogWithoutAValidRayIsRefused) {
                 "FLASER 3 1 1 1 0 0 0 0 0 0 1 host 1\nFLASER 3 1 1 1 0 0 0 0 0 0 2 host 2\n");
   ExpectOneLine(
       RunPlywood("replay " + flat.string() + " --out " + (dir / "r").string(), dir),
-      {"flat.log", "no valid ray", "in any of the 2 scans", "rays_explained is undefined"});
+      {"flat.log", "no valid ray", "in the log's 2 scans", "rays_explained is undefined"});
   EXPECT_FALSE(fs::exists(dir / "r"));
 }
 
@@ -327,6 +328,25 @@ TEST_F(ReliabilityTest, DuplicateKeysAreRefusedNamingTheKey) {
                 {"experiment.yaml", "duration_s", "duplicate"});
   ExpectRefused(HallExperiment(0.0, 0.0, "controller: {type: idle, type: square_path}\n"), "",
                 {"controller.type", "duplicate"});
+}
+
+// fuzz30: a gyro bias, noise or scale error of 1e300 drove the EKF to NaN: metrics.json held null
+// for every odometry.ekf figure, exit 0. Gyro rates are bounded by 35 rad/s (2000 deg/s).
+TEST_F(ReliabilityTest, GyroErrorsNoGyroCanHaveAreRefused) {
+  const std::string yaml = HallExperiment(0.0, 0.0, "", "{encoders: {}, gyro: {}}");
+  for (const auto& [set, message] : std::vector<std::pair<std::string, std::string>>{
+           {"bias_rad_s=1e300", "sensors.gyro.bias_rad_s: must be in [-35, 35] rad/s, got 1e+300"},
+           {"noise_sigma_rad_s=1e300",
+            "sensors.gyro.noise_sigma_rad_s: must be in [0, 35] rad/s, got 1e+300"},
+           {"bias_random_walk_rad_s_per_sqrt_s=36", "must be in [0, 35] rad/s per sqrt(s), got 36"},
+           {"scale_factor_error=1e300",
+            "sensors.gyro.scale_factor_error: must be in (-1, 1], got 1e+300"},
+           {"quantisation_rad_s=-1",
+            "sensors.gyro.quantisation_rad_s: must be in [0, 35] rad/s"}}) {
+    SCOPED_TRACE(set);
+    ExpectRefused(yaml, "--set sensors.gyro." + set, {"experiment.yaml", message});
+  }
+  EXPECT_EQ(Run(yaml, "--set sensors.gyro.bias_rad_s=-35").exit_code, 0);
 }
 
 // fuzz30: a list of 20,000 waypoints took minutes to read (each row was wrapped in a new YAML node,

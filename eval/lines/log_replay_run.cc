@@ -96,8 +96,9 @@ LogReplaySummary RunLogReplay(const LogReplayRequest& request) {
     // the maximum): rays_explained would read 0 of 0 (fuzz30). Nothing is written.
     throw std::invalid_argument(request.log.string() +
                                 ": no valid ray (a range above 0 and below " +
-                                "the maximum range) in any of the " + std::to_string(result.scans) +
-                                " scans: rays_explained is undefined, nothing to score");
+                                "the maximum range) in the log's " + std::to_string(result.scans) +
+                                (result.scans == 1 ? " scan" : " scans") +
+                                ": rays_explained is undefined, nothing to score");
   }
 
   sim::WriteTextFile(
