@@ -347,6 +347,12 @@ TEST_F(ReliabilityTest, GyroErrorsNoGyroCanHaveAreRefused) {
     ExpectRefused(yaml, "--set sensors.gyro." + set, {"experiment.yaml", message});
   }
   EXPECT_EQ(Run(yaml, "--set sensors.gyro.bias_rad_s=-35").exit_code, 0);
+  // The same null metrics from two EKF noise options at 1e300.
+  const std::string ekf = yaml + "odometry: {ekf: {}}\n";
+  ExpectRefused(ekf, "--set odometry.ekf.stop_displacement_sigma_m=1e300",
+                {"odometry.ekf.stop_displacement_sigma_m: must be in [0, 1] m, got 1e+300"});
+  ExpectRefused(ekf, "--set odometry.ekf.wheel_speed_change_sigma_s=1e300",
+                {"odometry.ekf.wheel_speed_change_sigma_s: must be in [0, 10] s, got 1e+300"});
 }
 
 // fuzz30: a list of 20,000 waypoints took minutes to read (each row was wrapped in a new YAML node,
