@@ -10,6 +10,7 @@
 
 #include "apps/command.h"
 #include "eval/bench/bench_experiment.h"
+#include "sim/runner/format_number.h"
 
 namespace plywood::apps {
 namespace {
@@ -109,12 +110,25 @@ Command AddBenchCommand(CLI::App& app) {
       ->capture_default_str();
   cli->footer("Example:\n  plywood bench --seconds 30 --world worlds/hall.xml --repeats 5");
   return {cli, [options] {
+            // Bounded so that a typo fails at once instead of benchmarking for ever (fuzz30:
+            // --min-wall 1e300 ran until killed).
             if (!std::isfinite(options->seconds)) {
               throw UsageError("bench: --seconds: must be a finite number");
             }
-            if (options->repeats < 1) throw UsageError("bench: --repeats: must be >= 1");
+            if (!(options->seconds > 0.0 && options->seconds <= 1e5)) {
+              throw UsageError("bench: --seconds: must be in (0, 1e5] simulated seconds, got " +
+                               sim::FormatNumber(options->seconds));
+            }
+            if (options->repeats < 1 || options->repeats > 1000) {
+              throw UsageError("bench: --repeats: must be in 1..1000, got " +
+                               std::to_string(options->repeats));
+            }
             if (!(options->min_wall_s >= 0.0) || !std::isfinite(options->min_wall_s)) {
               throw UsageError("bench: --min-wall: must be a finite number >= 0");
+            }
+            if (options->min_wall_s > 3600.0) {
+              throw UsageError("bench: --min-wall: must be at most 3600 wall seconds, got " +
+                               sim::FormatNumber(options->min_wall_s));
             }
             PrintFigures(eval::RunBench(*options), *options);
             return 0;

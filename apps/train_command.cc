@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "apps/command.h"
@@ -108,6 +109,11 @@ Command AddTrainCommand(CLI::App& app) {
             eval::SonarNetTrainingOptions options = flags->options;
             options.train.hidden = ParseHidden(flags->hidden);
             options.train.seed = static_cast<std::uint64_t>(flags->seed);
+            try {
+              options.Validate();  // "hidden: ..." names its flag: "train: --hidden: ..."
+            } catch (const std::invalid_argument& e) {
+              throw UsageError(std::string("train: --") + e.what());
+            }
             const bool quiet = flags->quiet;
             const eval::SonarNetTrainingReport report =
                 eval::TrainSonarNet(options, [quiet](const eval::SonarNetDataSummary& d) {

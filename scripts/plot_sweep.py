@@ -30,6 +30,10 @@ def main(out_dir):
     if not metrics:
         print("plot_sweep: no metrics chosen in the sweep; no plots")
         return
+    if not results:
+        # Every cell failed (fuzz30: this was a ValueError traceback from max() of nothing).
+        print("plot_sweep: no finished run in results.csv; no plots")
+        return
     plots = os.path.join(out_dir, "plots")
     os.makedirs(plots, exist_ok=True)
 

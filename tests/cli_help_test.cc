@@ -146,6 +146,14 @@ TEST(CliHelpTest, UsageErrorsAreOneLineNamingTheCulpritWithExitCode2) {
       {"train sonar-net --epochs 0", "--epochs"},
       {"train sonar-net --rooms 2.5", "--rooms"},
       {"train sonar-net --hidden 16,x", "--hidden"},
+      // fuzz30: these ran for ever, named another field, or (a folder for --out) failed after
+      // training with exit 1.
+      {"bench --min-wall 1e300", "--min-wall: must be at most 3600"},
+      {"bench --repeats 2000000000", "--repeats: must be in 1..1000"},
+      {"bench --seconds 0", "--seconds: must be in (0, 1e5]"},
+      {"train sonar-net --hidden 0,16", "train: --hidden: layer sizes must be in [1, 256]"},
+      {"train sonar-net --hidden 4,4,4,4,4,4,4,4", "train: --hidden: at most 7 layers"},
+      {"train sonar-net --out " + dir.string(), "train: --out: " + dir.string() + " is a folder"},
   };
   for (const auto& [args, culprit] : cases) {
     SCOPED_TRACE(args);

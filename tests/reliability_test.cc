@@ -13,6 +13,7 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "eval/sonar_map/sonar_ground_truth.h"
@@ -251,6 +252,28 @@ TEST_F(ReliabilityTest, RunsOfMoreThanAHundredMillionStepsAreRefused) {
                 {"physics.timestep_s", "steps"});
 }
 
+// A sonar at 1e300 Hz never left SensorSchedule's catch-up loop (the run hung); one faster than the
+// physics step silently got one sample per step. Every rate is refused above 1 / timestep_s.
+TEST_F(ReliabilityTest, RatesFasterThanThePhysicsStepAreRefused) {
+  const std::string all = "{encoders: {}, gyro: {}, bumpers: {}, sonar: {}, laser: {}}";
+  for (const std::string field :
+       {"sensors.sonar.rate_hz", "sensors.encoders.rate_hz", "sensors.gyro.rate_hz",
+        "sensors.bumpers.rate_hz", "controller.rate_hz", "output.trajectory_rate_hz"}) {
+    SCOPED_TRACE(field);
+    ExpectRefused(HallExperiment(0.0, 0.0, "", all), "--set " + field + "=1e300",
+                  {"experiment.yaml", field,
+                   "must be at most 1 / physics.timestep_s = 100 Hz (one sample per physics "
+                   "step), got 1e+300"});
+  }
+  ExpectRefused(HallExperiment(0.0, 0.0, "", all), "--set sensors.sonar.rate_hz=101",
+                {"sensors.sonar.rate_hz", "got 101"});
+  ExpectRefused(HallExperiment(0.0, 0.0, "", all),
+                "--set physics.timestep_s=0.02 --set sensors.laser.rate_hz=75",
+                {"sensors.laser.rate_hz", "= 50 Hz", "got 75"});
+  // The step rate itself is allowed.
+  EXPECT_EQ(Run(HallExperiment(0.0, 0.0, "", all), "--set sensors.sonar.rate_hz=100").exit_code, 0);
+}
+
 // --- 5. Readers ----------------------------------------------------------------------------------
 
 TEST_F(ReliabilityTest, ReplayOfALogWithoutScansIsRefusedNamingTheFile) {
@@ -277,6 +300,19 @@ TEST_F(ReliabilityTest, NanOrNegativeRangesInALogAreRefusedWithTheirLine) {
   EXPECT_FALSE(fs::exists(dir / "r"));
 }
 
+// fuzz30: a log whose every range is the same 1 m (no PARAM front_laser_max, so 1 m is the maximum
+// range and no ray is valid) gave rays_explained 0 "of 0 valid rays", exit 0.
+TEST_F(ReliabilityTest, ALogWithoutAValidRayIsRefused) {
+  const fs::path dir = Dir();
+  const fs::path flat =
+      WriteFile(dir / "flat.log",
+                "FLASER 3 1 1 1 0 0 0 0 0 0 1 host 1\nFLASER 3 1 1 1 0 0 0 0 0 0 2 host 2\n");
+  ExpectOneLine(
+      RunPlywood("replay " + flat.string() + " --out " + (dir / "r").string(), dir),
+      {"flat.log", "no valid ray", "in the log's 2 scans", "rays_explained is undefined"});
+  EXPECT_FALSE(fs::exists(dir / "r"));
+}
+
 TEST_F(ReliabilityTest, AWorldWithoutAFloorIsRefused) {
   const fs::path dir = Dir();
   const fs::path world = WriteFile(dir / "floorless.xml",
@@ -292,6 +328,46 @@ TEST_F(ReliabilityTest, DuplicateKeysAreRefusedNamingTheKey) {
                 {"experiment.yaml", "duration_s", "duplicate"});
   ExpectRefused(HallExperiment(0.0, 0.0, "controller: {type: idle, type: square_path}\n"), "",
                 {"controller.type", "duplicate"});
+}
+
+// fuzz30: a gyro bias, noise or scale error of 1e300 drove the EKF to NaN: metrics.json held null
+// for every odometry.ekf figure, exit 0. Gyro rates are bounded by 35 rad/s (2000 deg/s).
+TEST_F(ReliabilityTest, GyroErrorsNoGyroCanHaveAreRefused) {
+  const std::string yaml = HallExperiment(0.0, 0.0, "", "{encoders: {}, gyro: {}}");
+  for (const auto& [set, message] : std::vector<std::pair<std::string, std::string>>{
+           {"bias_rad_s=1e300", "sensors.gyro.bias_rad_s: must be in [-35, 35] rad/s, got 1e+300"},
+           {"noise_sigma_rad_s=1e300",
+            "sensors.gyro.noise_sigma_rad_s: must be in [0, 35] rad/s, got 1e+300"},
+           {"bias_random_walk_rad_s_per_sqrt_s=36", "must be in [0, 35] rad/s per sqrt(s), got 36"},
+           {"scale_factor_error=1e300",
+            "sensors.gyro.scale_factor_error: must be in (-1, 1], got 1e+300"},
+           {"quantisation_rad_s=-1",
+            "sensors.gyro.quantisation_rad_s: must be in [0, 35] rad/s"}}) {
+    SCOPED_TRACE(set);
+    ExpectRefused(yaml, "--set sensors.gyro." + set, {"experiment.yaml", message});
+  }
+  EXPECT_EQ(Run(yaml, "--set sensors.gyro.bias_rad_s=-35").exit_code, 0);
+  // The same null metrics from two EKF noise options at 1e300.
+  const std::string ekf = yaml + "odometry: {ekf: {}}\n";
+  ExpectRefused(ekf, "--set odometry.ekf.stop_displacement_sigma_m=1e300",
+                {"odometry.ekf.stop_displacement_sigma_m: must be in [0, 1] m, got 1e+300"});
+  ExpectRefused(ekf, "--set odometry.ekf.wheel_speed_change_sigma_s=1e300",
+                {"odometry.ekf.wheel_speed_change_sigma_s: must be in [0, 10] s, got 1e+300"});
+}
+
+// fuzz30: a list of 20,000 waypoints took minutes to read (each row was wrapped in a new YAML node,
+// and yaml-cpp merged the whole document's memory into every one: n^2). Now one pass; a regression
+// shows as this test's timeout, not as an assertion on time.
+TEST_F(ReliabilityTest, TwentyThousandWaypointsAreReadInOnePass) {
+  std::string rows;
+  for (int i = 0; i < 20000; ++i) rows += (i ? ", [" : "[") + std::to_string(i) + ", 0.5]";
+  const std::string yaml =
+      HallExperiment(0.0, 0.0, "controller: {type: waypoints, waypoints: [" + rows + "]}\n");
+  const sim::ExperimentConfig config =
+      sim::ParseExperimentConfig(yaml, "experiment.yaml", fs::path(PLYWOOD_SOURCE_ROOT));
+  ASSERT_EQ(config.controller.waypoints.waypoints.size(), 20000u);
+  EXPECT_EQ(config.controller.waypoints.waypoints.back().x_m, 19999.0);
+  EXPECT_EQ(config.controller.waypoints.waypoints.back().y_m, 0.5);
 }
 
 // Found by fuzzing (fuzz/corpus/experiment_yaml/crash-protocol-without-section): a protocol with

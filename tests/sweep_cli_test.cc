@@ -116,6 +116,24 @@ TEST(SweepCliTest, AFailingCellLandsInFailuresAndTheRestCompletes) {
   EXPECT_EQ(eval::ParseCsv(Slurp(dir / "out" / "results.csv")).size(), 3u);
 }
 
+// fuzz30: when every cell failed, scripts/plot_sweep.py died with a ValueError traceback (max() of
+// nothing) on the sweep's stderr. Now it notes that there is nothing to plot.
+TEST(SweepCliTest, ASweepWhoseEveryCellFailsPrintsNoTraceback) {
+  const fs::path dir = MakeTempDir("SweepAllFail");
+  const fs::path broken = WriteFile(
+      dir / "broken.xml", "<mujoco><worldbody><geom type=\"pyramid\"/></worldbody></mujoco>");
+  const fs::path sweep = WriteFile(
+      dir / "fail.yaml", "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
+                             "\nseeds: [1]\nworlds: [" + broken.string() +
+                             "]\nset: {duration_s: [2], output.snapshot: [false]}\n" +
+                             "metrics: [truth.distance_m]\n");
+  const auto r = RunPlywood("sweep " + sweep.string() + " --out " + (dir / "out").string(), dir);
+  EXPECT_EQ(r.exit_code, 1) << r.err;
+  EXPECT_EQ(r.err.find("Traceback"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("plotting failed"), std::string::npos) << r.err;
+  EXPECT_EQ(eval::ParseCsv(Slurp(dir / "out" / "failures.csv")).size(), 2u);
+}
+
 TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
   const fs::path dir = MakeTempDir("SweepBadInput");
   const std::string experiment = (SourceRoot() / "experiments/default.yaml").string();

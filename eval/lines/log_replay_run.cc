@@ -91,6 +91,15 @@ LogReplaySummary RunLogReplay(const LogReplayRequest& request) {
   summary.skipped_lines = log.skipped_lines;
   summary.result = perception::ReplayLog(log, *extractor);
   const perception::ReplayResult& result = summary.result;
+  if (result.rays.rays == 0) {
+    // Every range 0 or at the maximum (say all 1 m without PARAM front_laser_max, which makes 1 m
+    // the maximum): rays_explained would read 0 of 0 (fuzz30). Nothing is written.
+    throw std::invalid_argument(request.log.string() +
+                                ": no valid ray (a range above 0 and below " +
+                                "the maximum range) in the log's " + std::to_string(result.scans) +
+                                (result.scans == 1 ? " scan" : " scans") +
+                                ": rays_explained is undefined, nothing to score");
+  }
 
   sim::WriteTextFile(
       dir / "config.yaml",

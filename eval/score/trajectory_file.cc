@@ -1,6 +1,7 @@
 #include "eval/score/trajectory_file.h"
 
 #include <cctype>
+#include <cmath>
 #include <fstream>
 #include <stdexcept>
 
@@ -59,6 +60,13 @@ std::vector<NamedTrajectory> ReadPlywoodCsv(const std::filesystem::path& path) {
       pose.line_number = row.line_number;
       pose.pose = {table.Number(row, c, h[c]), table.Number(row, c + 1, h[c + 1]),
                    table.Number(row, c + 2, h[c + 2])};
+      for (std::size_t i : {c, c + 1}) {
+        const double v = table.Number(row, i, h[i]);
+        if (std::abs(v) > perception::kMaxTrajectoryCoordinateM) {
+          table.Fail(row, h[i],
+                     "must be within 1e+09 m of the origin, got " + sim::FormatNumber(v));
+        }
+      }
       trajectories[k].poses.push_back(pose);
     }
   }

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "eval/sonar_map/sonar_ground_truth.h"
@@ -176,6 +177,12 @@ void SonarNetTrainingOptions::Validate() const {
   count("poses", poses);
   train.Validate();
   if (out.empty()) throw std::invalid_argument("out: needs a file name");
+  std::error_code error;
+  if (std::filesystem::is_directory(out, error)) {
+    // Found only after training, as exit 1, before fuzz30.
+    throw std::invalid_argument("out: " + out.string() +
+                                " is a folder; give the weights file's name");
+  }
 }
 
 std::filesystem::path ShippedSonarNetPath() {

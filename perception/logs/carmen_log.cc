@@ -98,7 +98,19 @@ void ParseRobotLaser1(const std::vector<std::string>& t, CarmenLog* log) {
   }
   CarmenLaserRecord record;
   record.scan.angle_min_rad = ParseNumber(t[2], "ROBOTLASER1 start_angle");
+  ParseNumber(t[3], "ROBOTLASER1 field_of_view");
   record.scan.angle_increment_rad = ParseNumber(t[4], "ROBOTLASER1 angular_resolution");
+  // A spacing of 0 puts every beam on one bearing, a negative one or a fan wider than a turn has
+  // no scanner behind it: the extractors would fit lines to points that were never measured there.
+  if (!(record.scan.angle_increment_rad > 0.0) ||
+      record.scan.angle_increment_rad * static_cast<double>(n - 1) >
+          2.0 * std::numbers::pi + 1e-6) {
+    throw std::runtime_error("ROBOTLASER1 angular_resolution: must be > 0 with the " +
+                             std::to_string(n) + " beams spanning at most 360 deg, got " + t[4]);
+  }
+  if (std::abs(record.scan.angle_min_rad) > 2.0 * std::numbers::pi) {
+    throw std::runtime_error("ROBOTLASER1 start_angle: must be in [-2 pi, 2 pi] rad, got " + t[2]);
+  }
   record.scan.range_max_m = ParseNumber(t[5], "ROBOTLASER1 maximum_range");
   if (!(record.scan.range_max_m > 0.0)) {
     throw std::runtime_error("ROBOTLASER1 maximum_range: must be > 0, got " + t[5]);

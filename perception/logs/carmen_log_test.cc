@@ -69,6 +69,9 @@ TEST(CarmenLogTest, MalformedLinesNameTheLineOrAreSkippedAndCounted) {
 
 TEST(CarmenLogTest, WriteThenReadRoundTrips) {
   CarmenLaserRecord record;
+  // Beams 0.5 rad apart (a spacing of 0, every beam on one bearing, is refused since fuzz30).
+  record.scan.angle_min_rad = -0.5;
+  record.scan.angle_increment_rad = 0.5;
   record.scan.ranges_m = {0.5, 1.25, 8.0};
   record.scan.range_max_m = 8.0;
   record.scan.time_s = 3.5;
@@ -87,6 +90,8 @@ TEST(CarmenLogTest, WriteThenReadRoundTrips) {
 TEST(CarmenLogTest, HugeCoordinatesAreWrittenWholeNotTruncated) {
   // A 64-byte buffer cut %.6f of 1e200 to its first 63 digits: a different number, silently.
   CarmenLaserRecord record;
+  record.scan.angle_min_rad = -0.5;
+  record.scan.angle_increment_rad = 0.5;
   record.scan.ranges_m = {0.5, 1.25, 8.0};
   record.scan.range_max_m = 8.0;
   record.X_WL = {1e200, -3e150, 0.25};
@@ -169,6 +174,15 @@ TEST(CarmenLogTest, MalformedRobotLaser1LinesNameTheLine) {
       {with(2, "abc"), "ROBOTLASER1 start_angle"},
       {with(10, "-2"), "ROBOTLASER1 range"},
       {"ROBOTLASER1 0 0 3\n", "ROBOTLASER1: missing fields before the ranges"},
+      // Geometry a scanner cannot have (all were read without a word before fuzz30).
+      {with(3, "nan"), "ROBOTLASER1 field_of_view: not a finite number: 'nan'"},
+      {with(4, "nan"), "ROBOTLASER1 angular_resolution: not a finite number: 'nan'"},
+      {with(4, "0"),
+       "ROBOTLASER1 angular_resolution: must be > 0 with the 3 beams spanning at "
+       "most 360 deg, got 0"},
+      {with(4, "-0.5"), "ROBOTLASER1 angular_resolution: must be > 0"},
+      {with(4, "4"), "ROBOTLASER1 angular_resolution: must be > 0"},
+      {with(2, "1e300"), "ROBOTLASER1 start_angle: must be in [-2 pi, 2 pi] rad, got 1e300"},
   };
   EXPECT_EQ(ReadCarmenLog(WriteTemp("robotlaser_ok.log", good + good)).lasers.size(), 2u);
   for (const auto& [bad, message] : cases) {

@@ -93,6 +93,11 @@ std::vector<TimedPose> ReadTumTrajectory(const std::filesystem::path& path) {
       }
       v[i] = *number;
     }
+    for (int i : {1, 2}) {
+      if (std::abs(v[i]) > kMaxTrajectoryCoordinateM) {
+        fail(kFields[i], "must be within 1e+09 m of the origin, got " + Shortest(v[i]));
+      }
+    }
     const double norm = std::sqrt(v[4] * v[4] + v[5] * v[5] + v[6] * v[6] + v[7] * v[7]);
     if (!(std::abs(norm - 1.0) <= 1e-3)) {
       fail("qw", "the quaternion's norm is " + Shortest(norm) + ", expected 1");

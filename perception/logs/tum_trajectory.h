@@ -36,11 +36,15 @@ struct TimedPose {
   std::size_t line_number = 0;  // in the file it came from
 };
 
+// The largest |x| or |y| (m) a trajectory file may hold: beyond it the scores' sums of squares
+// overflow (a TUM x of 1e300 gave ate_rms_m = inf and a 300-digit final error, exit 0).
+inline constexpr double kMaxTrajectoryCoordinateM = 1e9;
+
 // Reads a TUM file into planar poses (tz is ignored; the heading is HeadingOfQuaternion).
 // @throws std::invalid_argument "FILE:LINE: FIELD: what is wrong" (FIELD one of timestamp, tx, ty,
-// tz, qx, qy, qz, qw) for a wrong number of fields, a field that is not a finite number, a
-// quaternion whose norm is not 1 within 1e-3, timestamps that do not increase; "FILE: ..." for an
-// unreadable file or one without poses.
+// tz, qx, qy, qz, qw) for a wrong number of fields, a field that is not a finite number, a tx or
+// ty beyond kMaxTrajectoryCoordinateM, a quaternion whose norm is not 1 within 1e-3, timestamps
+// that do not increase; "FILE: ..." for an unreadable file or one without poses.
 std::vector<TimedPose> ReadTumTrajectory(const std::filesystem::path& path);
 
 }  // namespace plywood::perception

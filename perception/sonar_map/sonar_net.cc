@@ -9,6 +9,7 @@
 #include <random>
 #include <sstream>
 #include <stdexcept>
+#include <system_error>
 
 #include "perception/logs/parse_number.h"
 
@@ -29,6 +30,13 @@ std::string Format(double v) {
 
 void SonarNetTrainOptions::Validate() const {
   if (hidden.empty()) throw std::invalid_argument("hidden: needs at least one layer");
+  // A weights file holds at most 8 layers (FromText), the output layer one of them; 1000 hidden
+  // layers trained for ever and would not have loaded back.
+  if (hidden.size() > 7)
+    throw std::invalid_argument(
+        "hidden: at most 7 layers (8 with the output layer, as a weights "
+        "file holds), got " +
+        std::to_string(hidden.size()));
   for (int h : hidden)
     if (h < 1 || h > 256)
       throw std::invalid_argument("hidden: layer sizes must be in [1, 256], got " +
@@ -159,6 +167,10 @@ void SonarNet::Save(const std::filesystem::path& path) const {
 }
 
 SonarNet SonarNet::Load(const std::filesystem::path& path) {
+  // A device or a FIFO (weights_file: /dev/zero) would be read forever.
+  std::error_code refused;
+  if (std::filesystem::exists(path, refused) && !std::filesystem::is_regular_file(path, refused))
+    throw std::runtime_error(path.string() + ": not a regular file (a folder or a device?)");
   std::ifstream file(path, std::ios::binary);
   if (!file) throw std::runtime_error(path.string() + ": cannot open sonar network weights");
   std::stringstream buffer;

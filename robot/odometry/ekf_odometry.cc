@@ -4,6 +4,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "msgs/shortest_number.h"
@@ -71,6 +72,17 @@ void EkfOdometryOptions::Validate() const {
   RequireNonNegative("stop_displacement_sigma_m", stop_displacement_sigma_m);
   RequireNonNegative("braking_window_s", braking_window_s);
   RequireNonNegative("wheel_speed_change_sigma_s", wheel_speed_change_sigma_s);
+  // Either at 1e300 made the filter's covariance inf and every odometry.ekf figure null, exit 0
+  // (fuzz30). The bounds are 10x the largest stop displacement and a 10 s lead of the wheels.
+  for (const auto& [field, value, limit, unit] :
+       {std::tuple{"stop_displacement_sigma_m", stop_displacement_sigma_m, 1.0, " m"},
+        std::tuple{"wheel_speed_change_sigma_s", wheel_speed_change_sigma_s, 10.0, " s"}}) {
+    if (value > limit) {
+      throw std::invalid_argument(std::string(field) + ": must be in [0, " +
+                                  msgs::ShortestNumber(limit) + "]" + unit + ", got " +
+                                  msgs::ShortestNumber(value));
+    }
+  }
   for (const auto& [field, value] :
        {std::pair{"wheel_diameter_ratio_prior", wheel_diameter_ratio_prior},
         std::pair{"track_ratio_prior", track_ratio_prior}}) {

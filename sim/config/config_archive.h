@@ -44,8 +44,11 @@ class YamlReadArchive {
     const YAML::Node list = fields_.Raw(key);
     if (!list.IsSequence()) fields_.Fail(key, "expected a list of rows " + Describe(columns));
     items.clear();
+    // One wrapper for every row: yaml-cpp merges the memory of the whole document into a node
+    // assigned from it, so a wrapper per row made a list of n rows cost n^2 (20,000 waypoints
+    // read for minutes); after the first assignment the memory is shared and a merge is free.
+    YAML::Node wrapper(YAML::NodeType::Map);
     for (std::size_t i = 0; i < list.size(); ++i) {
-      YAML::Node wrapper(YAML::NodeType::Map);
       wrapper["row"] = list[i];
       YamlFields row(wrapper, fields_.file(), fields_.path());
       std::vector<double> values;

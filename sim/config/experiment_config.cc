@@ -125,6 +125,28 @@ YAML::Node WithEmptyContainersInFlowStyle(const YAML::Node& node) {
   return copy;
 }
 
+// A sensor, the controller or the trajectory sampled faster than the physics step would get one
+// sample per step (SensorSchedule skips the rest): the run would hold fewer samples than the file
+// asks for, and a rate of 1e300 Hz never left the schedule's catch-up loop. Refused at load.
+void RequireRatesTheClockCanKeep(const YamlFields& top, const ExperimentConfig& config) {
+  const double step_rate_hz = 1.0 / config.physics.timestep_s;
+  const auto require = [&](const std::string& field, double rate_hz) {
+    if (rate_hz <= step_rate_hz * (1.0 + 1e-9)) return;
+    top.Fail(field, "must be at most 1 / physics.timestep_s = " + FormatNumber(step_rate_hz) +
+                        " Hz (one sample per physics step), got " + FormatNumber(rate_hz));
+  };
+  const SensorSuiteConfig& sensors = config.sensors;
+  if (sensors.laser) require("sensors.laser.rate_hz", sensors.laser->rate_hz);
+  if (sensors.sonar) require("sensors.sonar.rate_hz", sensors.sonar->rate_hz);
+  if (sensors.ir_ring) require("sensors.ir_ring.rate_hz", sensors.ir_ring->rate_hz);
+  if (sensors.ir_scanner) require("sensors.ir_scanner.rate_hz", sensors.ir_scanner->rate_hz);
+  if (sensors.encoders) require("sensors.encoders.rate_hz", sensors.encoders->rate_hz);
+  if (sensors.gyro) require("sensors.gyro.rate_hz", sensors.gyro->rate_hz);
+  if (sensors.bumpers) require("sensors.bumpers.rate_hz", sensors.bumpers->rate_hz);
+  require("controller.rate_hz", config.controller.rate_hz);
+  require("output.trajectory_rate_hz", config.output.trajectory_rate_hz);
+}
+
 }  // namespace
 
 void PhysicsOptions::Validate() const {
@@ -227,6 +249,7 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
     ReadGeometricMapConfig(top.Child("geometric_map"), config.geometric_map);
   }
   ReadOptions(top.Child("output"), config.output);
+  RequireRatesTheClockCanKeep(top, config);
   top.Finish();
   return config;
 }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "msgs/pose2d.h"
+#include "msgs/shortest_number.h"
 #include "sim/world/scene.h"
 
 namespace plywood::sim {
@@ -14,25 +15,31 @@ namespace {
 void Require(bool ok, const char* field, const char* what, double value) {
   if (!ok) {
     throw std::invalid_argument(std::string(field) + ": must be " + what + ", got " +
-                                std::to_string(value));
+                                msgs::ShortestNumber(value));
   }
 }
 
 }  // namespace
 
 void GyroSensorOptions::Validate() const {
+  // Rates are bounded by 35 rad/s (2000 deg/s, the widest range of a MEMS rate gyro): a bias or a
+  // noise of 1e300 rad/s drove the EKF to NaN and metrics.json to null, exit 0 (fuzz30).
+  constexpr double kMaxRadS = 35.0;
+  const auto rate = [](double value) {
+    return std::isfinite(value) && std::abs(value) <= kMaxRadS;
+  };
   Require(std::isfinite(rate_hz) && rate_hz > 0.0, "rate_hz", "a finite number > 0", rate_hz);
-  Require(std::isfinite(noise_sigma_rad_s) && noise_sigma_rad_s >= 0.0, "noise_sigma_rad_s",
-          "a finite number >= 0", noise_sigma_rad_s);
-  Require(std::isfinite(bias_rad_s), "bias_rad_s", "finite", bias_rad_s);
+  Require(rate(noise_sigma_rad_s) && noise_sigma_rad_s >= 0.0, "noise_sigma_rad_s",
+          "in [0, 35] rad/s", noise_sigma_rad_s);
+  Require(rate(bias_rad_s), "bias_rad_s", "in [-35, 35] rad/s", bias_rad_s);
+  Require(rate(bias_random_walk_rad_s_per_sqrt_s) && bias_random_walk_rad_s_per_sqrt_s >= 0.0,
+          "bias_random_walk_rad_s_per_sqrt_s", "in [0, 35] rad/s per sqrt(s)",
+          bias_random_walk_rad_s_per_sqrt_s);
   Require(
-      std::isfinite(bias_random_walk_rad_s_per_sqrt_s) && bias_random_walk_rad_s_per_sqrt_s >= 0.0,
-      "bias_random_walk_rad_s_per_sqrt_s", "a finite number >= 0",
-      bias_random_walk_rad_s_per_sqrt_s);
-  Require(std::isfinite(scale_factor_error) && scale_factor_error > -1.0, "scale_factor_error",
-          "a finite number > -1", scale_factor_error);
-  Require(std::isfinite(quantisation_rad_s) && quantisation_rad_s >= 0.0, "quantisation_rad_s",
-          "a finite number >= 0", quantisation_rad_s);
+      std::isfinite(scale_factor_error) && scale_factor_error > -1.0 && scale_factor_error <= 1.0,
+      "scale_factor_error", "in (-1, 1]", scale_factor_error);
+  Require(rate(quantisation_rad_s) && quantisation_rad_s >= 0.0, "quantisation_rad_s",
+          "in [0, 35] rad/s", quantisation_rad_s);
 }
 
 GyroSensor::GyroSensor(const GyroSensorOptions& options, std::uint64_t seed)
