@@ -59,6 +59,20 @@ std::unique_ptr<Scene> MakeScene(const RobotCase& robot, DriveMode drive, bool w
   return scene;
 }
 
+// A planar P3-DX at the origin in a world of a floor and the given static geoms (MJCF lines).
+std::unique_ptr<Scene> MakeP3dxSceneAmong(const std::string& name, const std::string& geoms) {
+  const std::filesystem::path world = testing::WriteFile(
+      testing::MakeTempDir(name) / "world.xml",
+      "<mujoco>\n  <worldbody>\n    <geom name=\"floor\" type=\"plane\" size=\"5 5 0.1\"/>\n" +
+          geoms + "  </worldbody>\n</mujoco>\n");
+  return std::make_unique<Scene>(
+      SceneOptions{.world_mjcf = world,
+                   .robot_mjcf = testing::SourceRoot() / "models" / "p3dx.xml",
+                   .spawn = {},
+                   .timestep_s = 0.01,
+                   .drive = DriveMode::kPlanar});
+}
+
 // The wheel angle after n steps of a constant command c from rest, for a servo whose speed moves
 // the fraction a of the way to c each step (explicit Euler of the first-order lag) and then turns
 // the wheel by speed x dt: phi_n = c dt sum_{k=1..n} (1 - (1 - a)^k).
@@ -287,16 +301,10 @@ TEST_P(PlanarDriveTest, PressedAgainstAWallItStillTurnsTheSpotTurnClosedForm) {
 // driven into a 0.1 m column dead ahead, then turned on the spot, turns the closed form and never
 // overlaps the column.
 TEST(PlanarDriveTest, PressedAgainstAColumnItStillTurns) {
-  const std::filesystem::path world = testing::WriteFile(
-      testing::MakeTempDir("planar_drive_column") / "world.xml",
-      "<mujoco>\n  <worldbody>\n    <geom name=\"floor\" type=\"plane\" size=\"5 5 0.1\"/>\n"
-      "    <geom name=\"column\" type=\"cylinder\" pos=\"0.6 0 0.5\" size=\"0.1 0.5\"/>\n"
-      "  </worldbody>\n</mujoco>\n");
-  Scene scene(SceneOptions{.world_mjcf = world,
-                           .robot_mjcf = testing::SourceRoot() / "models" / "p3dx.xml",
-                           .spawn = {},
-                           .timestep_s = 0.01,
-                           .drive = DriveMode::kPlanar});
+  const std::unique_ptr<Scene> owned = MakeP3dxSceneAmong(
+      "planar_drive_column",
+      "    <geom name=\"column\" type=\"cylinder\" pos=\"0.6 0 0.5\" size=\"0.1 0.5\"/>\n");
+  Scene& scene = *owned;
   PlanarObstacles obstacles(scene.model(), scene.data(), scene.base_body_id(), "p3dx.xml");
   const double r = robot::P3dxSpec().wheel_radius_m, b = robot::P3dxSpec().track_m;
   Drive(scene, 0.2 / r, 0.2 / r, 400);
@@ -315,17 +323,11 @@ TEST(PlanarDriveTest, PressedAgainstAColumnItStillTurns) {
 // A turn that the walls leave no room for (the footprint wedged between two walls closer than
 // its reach) stays blocked, as before: nothing is pushed through a wall.
 TEST(PlanarDriveTest, WedgedBetweenTwoWallsItCannotTurn) {
-  const std::filesystem::path world = testing::WriteFile(
-      testing::MakeTempDir("planar_drive_wedge") / "world.xml",
-      "<mujoco>\n  <worldbody>\n    <geom name=\"floor\" type=\"plane\" size=\"5 5 0.1\"/>\n"
+  const std::unique_ptr<Scene> owned = MakeP3dxSceneAmong(
+      "planar_drive_wedge",
       "    <geom name=\"left\" type=\"box\" pos=\"0 0.26 0.5\" size=\"2 0.01 0.5\"/>\n"
-      "    <geom name=\"right\" type=\"box\" pos=\"0 -0.26 0.5\" size=\"2 0.01 0.5\"/>\n"
-      "  </worldbody>\n</mujoco>\n");
-  Scene scene(SceneOptions{.world_mjcf = world,
-                           .robot_mjcf = testing::SourceRoot() / "models" / "p3dx.xml",
-                           .spawn = {},
-                           .timestep_s = 0.01,
-                           .drive = DriveMode::kPlanar});
+      "    <geom name=\"right\" type=\"box\" pos=\"0 -0.26 0.5\" size=\"2 0.01 0.5\"/>\n");
+  Scene& scene = *owned;
   PlanarObstacles obstacles(scene.model(), scene.data(), scene.base_body_id(), "p3dx.xml");
   ASSERT_GT(obstacles.reach_m(), 0.25);  // the corridor (0.5 m) is narrower than 2 x reach
   const double c = 1.0 * robot::P3dxSpec().track_m / 2.0 / robot::P3dxSpec().wheel_radius_m;

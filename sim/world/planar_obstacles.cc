@@ -44,6 +44,27 @@ void NearestOnSegment(const double* a, const double* b, const double* p, double 
   out[1] = a[1] + t * aby;
 }
 
+// How the projections of a convex polygon (n vertices `v`) and a rectangle (centre, unit axes u
+// and v = u turned by +90 deg, half sizes) overlap on the unit axis (ax, ay): the polygon must
+// move `back` along -axis or `ahead` along +axis to leave the rectangle's; either <= 0 means the
+// axis separates them.
+struct AxisOverlap {
+  double back, ahead;
+};
+AxisOverlap ProjectionOverlap(const double* v, int n, const double centre[2], double ux, double uy,
+                              double half_x, double half_y, double ax, double ay) {
+  double a_lo = std::numeric_limits<double>::infinity(), a_hi = -a_lo;
+  for (int i = 0; i < n; ++i) {
+    const double t = v[2 * i] * ax + v[2 * i + 1] * ay;
+    a_lo = std::min(a_lo, t);
+    a_hi = std::max(a_hi, t);
+  }
+  const double t0 = centre[0] * ax + centre[1] * ay;
+  const double extent =
+      half_x * std::abs(ux * ax + uy * ay) + half_y * std::abs(-uy * ax + ux * ay);
+  return {a_hi - (t0 - extent), t0 + extent - a_lo};
+}
+
 bool CanCollide(const mjModel* m, int a, int b) {
   return (m->geom_contype[a] & m->geom_conaffinity[b]) ||
          (m->geom_contype[b] & m->geom_conaffinity[a]);
@@ -204,16 +225,8 @@ double PlanarObstacles::Gap(const Obstacle& o, const msgs::Pose2D& X_WR, double 
   }
   // Separating axes: the footprint's edge normals and the rectangle's two axes.
   const auto separated_on = [&](double ax, double ay) {
-    double a_lo = std::numeric_limits<double>::infinity(), a_hi = -a_lo;
-    for (int i = 0; i < n; ++i) {
-      const double t = v[2 * i] * ax + v[2 * i + 1] * ay;
-      a_lo = std::min(a_lo, t);
-      a_hi = std::max(a_hi, t);
-    }
-    const double t0 = centre[0] * ax + centre[1] * ay;
-    const double extent =
-        o.half_x * std::abs(ux * ax + uy * ay) + o.half_y * std::abs(vx * ax + vy * ay);
-    return t0 - extent >= a_hi || t0 + extent <= a_lo;
+    const AxisOverlap overlap = ProjectionOverlap(v, n, centre, ux, uy, o.half_x, o.half_y, ax, ay);
+    return overlap.back <= 0.0 || overlap.ahead <= 0.0;
   };
   bool overlap = !separated_on(ux, uy) && !separated_on(vx, vy);
   for (int i = 0; overlap && i < n; ++i) {
@@ -340,17 +353,8 @@ double PlanarObstacles::Penetration(const Obstacle& o, const msgs::Pose2D& X_WR,
     const double vx = -uy, vy = ux;
     depth = std::numeric_limits<double>::infinity();
     const auto try_axis = [&](double ax, double ay) {
-      double a_lo = std::numeric_limits<double>::infinity(), a_hi = -a_lo;
-      for (int i = 0; i < n; ++i) {
-        const double t = v[2 * i] * ax + v[2 * i + 1] * ay;
-        a_lo = std::min(a_lo, t);
-        a_hi = std::max(a_hi, t);
-      }
-      const double t0 = centre[0] * ax + centre[1] * ay;
-      const double extent =
-          o.half_x * std::abs(ux * ax + uy * ay) + o.half_y * std::abs(vx * ax + vy * ay);
-      const double back = a_hi - (t0 - extent);  // the robot moves along -axis
-      const double ahead = t0 + extent - a_lo;   // the robot moves along +axis
+      const auto [back, ahead] =
+          ProjectionOverlap(v, n, centre, ux, uy, o.half_x, o.half_y, ax, ay);
       const double overlap = std::min(back, ahead);
       if (overlap < depth) {
         depth = overlap;
