@@ -297,6 +297,34 @@ TEST_P(PlanarDriveTest, PressedAgainstAWallItStillTurnsTheSpotTurnClosedForm) {
   }
 }
 
+// With unequal wheels (E_d 1.05) driven straight into a wall and pressed on, the robot turns only
+// as its wheels do: each step's change of heading is the true radii's differential turn of the
+// wheel angles the step added, (r_R dphi_R - r_L dphi_L) / b, as on open floor. The common part
+// of the wheels' motion is what the wall stops; it must not turn the robot while the wheels,
+// stopped with it, report no turn (the odometry would see a heading change it cannot explain).
+TEST_P(PlanarDriveTest, PressedAgainstAWallUnequalWheelsTurnTheRobotOnlyAsTheyTurn) {
+  const RobotCase robot = GetParam()();
+  const std::unique_ptr<Scene> scene =
+      MakeScene(robot, DriveMode::kPlanar, true, {.wheel_diameter_ratio = 1.05});
+  const WheelGeometry g = scene->wheel_geometry();
+  ASSERT_GT(g.right_radius_m, g.left_radius_m * 1.04);
+  const double c = 0.2 / robot.spec.wheel_radius_m;
+  Drive(*scene, c, c, 600);  // into the wall (curving a little: the right wheel is larger)
+  ASSERT_FALSE(scene->PlanarContactBearings().empty());
+  double turned = 0.0;
+  for (int i = 0; i < 200; ++i) {
+    const double theta0 = scene->TruePose().theta_rad;
+    const double left0 = scene->LeftWheelAngleRad(), right0 = scene->RightWheelAngleRad();
+    Drive(*scene, c, c, 1);  // pressed on
+    const double wheels_rad = (g.right_radius_m * (scene->RightWheelAngleRad() - right0) -
+                               g.left_radius_m * (scene->LeftWheelAngleRad() - left0)) /
+                              g.track_m;
+    EXPECT_NEAR(scene->TruePose().theta_rad - theta0, wheels_rad, 1e-12) << "step " << i;
+    turned += scene->TruePose().theta_rad - theta0;
+  }
+  EXPECT_LT(std::abs(turned), 1e-4);  // stopped at the wall, so hardly turned
+}
+
 // The same against a round column (the disc's push: straight away from its centre): a P3-DX
 // driven into a 0.1 m column dead ahead, then turned on the spot, turns the closed form and never
 // overlaps the column.
