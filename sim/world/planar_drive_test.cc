@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <memory>
 #include <numbers>
@@ -367,6 +368,57 @@ TEST(PlanarDriveTest, WedgedBetweenTwoWallsItCannotTurn) {
   Drive(scene, -c, c, 100);  // and stays stopped
   EXPECT_NEAR(scene.TruePose().theta_rad, end.theta_rad, 1e-6);
   EXPECT_FALSE(obstacles.Overlaps(scene.TruePose()));
+}
+
+// PushOut out of one box turned 30 deg or one disc, from random overlapping poses (shallow to the
+// disc wholly inside the footprint, the footprint across the box): the pose ends clear, heading
+// kept, moved by the minimum translation, that of brute force (180 directions, each bisected to
+// the first clear distance; 2 deg apart, it overshoots the minimum by ~1 - cos(1 deg) = 1.5e-4).
+TEST(PlanarDriveTest, PushOutMovesByTheMinimumTranslationOutOfATurnedBoxOrADisc) {
+  const std::unique_ptr<Scene> owned = MakeP3dxSceneAmong(
+      "planar_push_out",
+      "    <geom name=\"box\" type=\"box\" pos=\"0 0 0.5\" size=\"0.4 0.05 0.5\" "
+      "euler=\"0 0 30\"/>\n"
+      "    <geom name=\"col\" type=\"cylinder\" pos=\"3 0 0.5\" size=\"0.12 0.5\"/>\n");
+  Scene& scene = *owned;
+  PlanarObstacles obstacles(scene.model(), scene.data(), scene.base_body_id(), "p3dx.xml");
+  std::uint64_t state = 12345;
+  const auto uniform = [&state](double lo, double hi) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return lo + (hi - lo) * static_cast<double>(state >> 11) / 9007199254740992.0;
+  };
+  int checked = 0;
+  for (int k = 0; k < 400; ++k) {
+    const double cx = k % 2 ? 3.0 : 0.0;
+    const msgs::Pose2D pose{cx + uniform(-0.45, 0.45), uniform(-0.45, 0.45), uniform(-3.1, 3.1)};
+    if (!obstacles.Overlaps(pose)) continue;
+    ++checked;
+    double brute = 1e9;
+    for (int d = 0; d < 180; ++d) {
+      const double a = d * std::numbers::pi / 90.0;
+      double lo = 0.0, hi = 1.5;
+      const auto at = [&](double t) {
+        return msgs::Pose2D{pose.x_m + t * std::cos(a), pose.y_m + t * std::sin(a), pose.theta_rad};
+      };
+      if (obstacles.Overlaps(at(hi))) continue;
+      for (int i = 0; i < 30; ++i) {
+        const double mid = (lo + hi) / 2.0;
+        (obstacles.Overlaps(at(mid)) ? lo : hi) = mid;
+      }
+      brute = std::min(brute, hi);
+    }
+    msgs::Pose2D out = pose;
+    if (!obstacles.PushOut(&out, 10.0)) {
+      ADD_FAILURE() << "not pushed out k=" << k;
+      continue;
+    }
+    EXPECT_FALSE(obstacles.Overlaps(out));
+    EXPECT_EQ(out.theta_rad, pose.theta_rad);
+    const double moved = std::hypot(out.x_m - pose.x_m, out.y_m - pose.y_m);
+    EXPECT_LE(moved, brute + 1e-6) << "k=" << k;
+    EXPECT_GE(moved, brute * (1.0 - 2e-4) - 1e-6) << "k=" << k;
+  }
+  EXPECT_GT(checked, 100);
 }
 
 INSTANTIATE_TEST_SUITE_P(Robots, PlanarDriveTest, ::testing::Values(&P3dx, &MagellanPro));
