@@ -260,7 +260,9 @@ TEST_F(ReliabilityTest, RatesFasterThanThePhysicsStepAreRefused) {
        {"sensors.sonar.rate_hz", "sensors.encoders.rate_hz", "sensors.gyro.rate_hz",
         "sensors.bumpers.rate_hz", "controller.rate_hz", "output.trajectory_rate_hz"}) {
     SCOPED_TRACE(field);
-    ExpectRefused(HallExperiment(0.0, 0.0, "", all), "--set " + field + "=1e300",
+    // The controller's rate counts when there is a controller to run (not idle).
+    const std::string controller = "controller: {type: square_path}\n";
+    ExpectRefused(HallExperiment(0.0, 0.0, controller, all), "--set " + field + "=1e300",
                   {"experiment.yaml", field,
                    "must be at most 1 / physics.timestep_s = 100 Hz (one sample per physics "
                    "step), got 1e+300"});
@@ -272,6 +274,16 @@ TEST_F(ReliabilityTest, RatesFasterThanThePhysicsStepAreRefused) {
                 {"sensors.laser.rate_hz", "= 50 Hz", "got 75"});
   // The step rate itself is allowed.
   EXPECT_EQ(Run(HallExperiment(0.0, 0.0, "", all), "--set sensors.sonar.rate_hz=100").exit_code, 0);
+  // A coarse step the docs allow (<= 0.05 s) with no controller: the idle robot's default
+  // controller.rate_hz (50 Hz) schedules nothing and is not refused; with a controller it is.
+  // (The planar drive: MuJoCo's contacts may diverge at so coarse a step, a different refusal.)
+  EXPECT_EQ(Run(HallExperiment(0.0, 0.0, "", all),
+                "--set physics.timestep_s=0.04 --set physics.drive=planar")
+                .exit_code,
+            0);
+  ExpectRefused(HallExperiment(0.0, 0.0, "controller: {type: square_path}\n", all),
+                "--set physics.timestep_s=0.04",
+                {"experiment.yaml", "controller.rate_hz", "= 25 Hz", "got 50"});
 }
 
 // --- 5. Readers ----------------------------------------------------------------------------------

@@ -127,7 +127,8 @@ YAML::Node WithEmptyContainersInFlowStyle(const YAML::Node& node) {
 
 // A sensor, the controller or the trajectory sampled faster than the physics step would get one
 // sample per step (SensorSchedule skips the rest): the run would hold fewer samples than the file
-// asks for, and a rate of 1e300 Hz never left the schedule's catch-up loop. Refused at load.
+// asks for, and a rate of 1e300 Hz never left the schedule's catch-up loop. Refused at load; the
+// controller's rate only when there is a controller (not idle).
 void RequireRatesTheClockCanKeep(const YamlFields& top, const ExperimentConfig& config) {
   const double step_rate_hz = 1.0 / config.physics.timestep_s;
   const auto require = [&](const std::string& field, double rate_hz) {
@@ -143,7 +144,9 @@ void RequireRatesTheClockCanKeep(const YamlFields& top, const ExperimentConfig& 
   if (sensors.encoders) require("sensors.encoders.rate_hz", sensors.encoders->rate_hz);
   if (sensors.gyro) require("sensors.gyro.rate_hz", sensors.gyro->rate_hz);
   if (sensors.bumpers) require("sensors.bumpers.rate_hz", sensors.bumpers->rate_hz);
-  require("controller.rate_hz", config.controller.rate_hz);
+  // An idle robot has no controller to schedule: its rate (the default 50 Hz unless written) must
+  // not refuse a coarser step, e.g. physics.timestep_s: 0.04 (docs: <= 0.05) with no controller.
+  if (config.controller.type != "idle") require("controller.rate_hz", config.controller.rate_hz);
   require("output.trajectory_rate_hz", config.output.trajectory_rate_hz);
 }
 

@@ -136,15 +136,19 @@ void PlanarDrive::Step(const mjModel* m, mjData* d) {
   // pushed clear of what it touches by no more than the turn swings it (its reach times the
   // angle): a robot pressed against a wall turns, sliding away from it as its corners swing
   // round, as it does on the floor, where the contact pushes it and the tires scrub sideways.
-  // The push is wheel slip: the wheels turn by the turn alone.
-  double turned = fraction;  // share of the step's turn taken
-  const double rest_rad = (1.0 - fraction) * dtheta;
+  // The push is wheel slip: the wheels turn by the turn alone. The rest is the turn of the wheels'
+  // differential part (their common part is what the wall stopped): with unequal radii the common
+  // part turns the robot too, but only while it rolls, so a robot pressed straight into a wall
+  // does not turn while its wheels, stopped, report no turn. With equal radii, the rest of dtheta.
+  bool turned = false;
+  const double rest_rad =
+      (1.0 - fraction) * half_diff * (ids_.left_radius_m + ids_.right_radius_m) * dt / ids_.track_m;
   if (fraction < 1.0 && rest_rad != 0.0 && !obstacles_.Overlaps(start)) {
     msgs::Pose2D slid = end;
     slid.theta_rad += rest_rad;
     if (obstacles_.PushOut(&slid, obstacles_.reach_m() * std::abs(rest_rad) + 1e-8)) {
       end = slid;
-      turned = 1.0;
+      turned = true;
     }
   }
   WriteUprightPose(end, q);
@@ -154,11 +158,11 @@ void PlanarDrive::Step(const mjModel* m, mjData* d) {
   base_v[2] = 0.0;
   base_v[3] = 0.0;  // body frame; upright, so its z is the world's
   base_v[4] = 0.0;
-  base_v[5] = turned * yaw_rate;
+  base_v[5] = fraction * yaw_rate + (turned ? rest_rad / dt : 0.0);
   // The wheels: the straight part's speed kept by the fraction gone, the turning part's whole
-  // when the turn was.
-  const double left = turned == fraction ? fraction * w_left : fraction * s - half_diff;
-  const double right = turned == fraction ? fraction * w_right : fraction * s + half_diff;
+  // when the turn was (their turn through the true radii is then the base's).
+  const double left = turned ? fraction * s - half_diff : fraction * w_left;
+  const double right = turned ? fraction * s + half_diff : fraction * w_right;
   d->qvel[left_dof_] = left;
   d->qvel[right_dof_] = right;
   d->qpos[left_qpos_] += left * dt;

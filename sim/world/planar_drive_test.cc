@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <memory>
 #include <numbers>
@@ -297,6 +298,34 @@ TEST_P(PlanarDriveTest, PressedAgainstAWallItStillTurnsTheSpotTurnClosedForm) {
   }
 }
 
+// With unequal wheels (E_d 1.05) driven straight into a wall and pressed on, the robot turns only
+// as its wheels do: each step's change of heading is the true radii's differential turn of the
+// wheel angles the step added, (r_R dphi_R - r_L dphi_L) / b, as on open floor. The common part
+// of the wheels' motion is what the wall stops; it must not turn the robot while the wheels,
+// stopped with it, report no turn (the odometry would see a heading change it cannot explain).
+TEST_P(PlanarDriveTest, PressedAgainstAWallUnequalWheelsTurnTheRobotOnlyAsTheyTurn) {
+  const RobotCase robot = GetParam()();
+  const std::unique_ptr<Scene> scene =
+      MakeScene(robot, DriveMode::kPlanar, true, {.wheel_diameter_ratio = 1.05});
+  const WheelGeometry g = scene->wheel_geometry();
+  ASSERT_GT(g.right_radius_m, g.left_radius_m * 1.04);
+  const double c = 0.2 / robot.spec.wheel_radius_m;
+  Drive(*scene, c, c, 600);  // into the wall (curving a little: the right wheel is larger)
+  ASSERT_FALSE(scene->PlanarContactBearings().empty());
+  double turned = 0.0;
+  for (int i = 0; i < 200; ++i) {
+    const double theta0 = scene->TruePose().theta_rad;
+    const double left0 = scene->LeftWheelAngleRad(), right0 = scene->RightWheelAngleRad();
+    Drive(*scene, c, c, 1);  // pressed on
+    const double wheels_rad = (g.right_radius_m * (scene->RightWheelAngleRad() - right0) -
+                               g.left_radius_m * (scene->LeftWheelAngleRad() - left0)) /
+                              g.track_m;
+    EXPECT_NEAR(scene->TruePose().theta_rad - theta0, wheels_rad, 1e-12) << "step " << i;
+    turned += scene->TruePose().theta_rad - theta0;
+  }
+  EXPECT_LT(std::abs(turned), 1e-4);  // stopped at the wall, so hardly turned
+}
+
 // The same against a round column (the disc's push: straight away from its centre): a P3-DX
 // driven into a 0.1 m column dead ahead, then turned on the spot, turns the closed form and never
 // overlaps the column.
@@ -339,6 +368,57 @@ TEST(PlanarDriveTest, WedgedBetweenTwoWallsItCannotTurn) {
   Drive(scene, -c, c, 100);  // and stays stopped
   EXPECT_NEAR(scene.TruePose().theta_rad, end.theta_rad, 1e-6);
   EXPECT_FALSE(obstacles.Overlaps(scene.TruePose()));
+}
+
+// PushOut out of one box turned 30 deg or one disc, from random overlapping poses (shallow to the
+// disc wholly inside the footprint, the footprint across the box): the pose ends clear, heading
+// kept, moved by the minimum translation, that of brute force (180 directions, each bisected to
+// the first clear distance; 2 deg apart, it overshoots the minimum by ~1 - cos(1 deg) = 1.5e-4).
+TEST(PlanarDriveTest, PushOutMovesByTheMinimumTranslationOutOfATurnedBoxOrADisc) {
+  const std::unique_ptr<Scene> owned = MakeP3dxSceneAmong(
+      "planar_push_out",
+      "    <geom name=\"box\" type=\"box\" pos=\"0 0 0.5\" size=\"0.4 0.05 0.5\" "
+      "euler=\"0 0 30\"/>\n"
+      "    <geom name=\"col\" type=\"cylinder\" pos=\"3 0 0.5\" size=\"0.12 0.5\"/>\n");
+  Scene& scene = *owned;
+  PlanarObstacles obstacles(scene.model(), scene.data(), scene.base_body_id(), "p3dx.xml");
+  std::uint64_t state = 12345;
+  const auto uniform = [&state](double lo, double hi) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return lo + (hi - lo) * static_cast<double>(state >> 11) / 9007199254740992.0;
+  };
+  int checked = 0;
+  for (int k = 0; k < 400; ++k) {
+    const double cx = k % 2 ? 3.0 : 0.0;
+    const msgs::Pose2D pose{cx + uniform(-0.45, 0.45), uniform(-0.45, 0.45), uniform(-3.1, 3.1)};
+    if (!obstacles.Overlaps(pose)) continue;
+    ++checked;
+    double brute = 1e9;
+    for (int d = 0; d < 180; ++d) {
+      const double a = d * std::numbers::pi / 90.0;
+      double lo = 0.0, hi = 1.5;
+      const auto at = [&](double t) {
+        return msgs::Pose2D{pose.x_m + t * std::cos(a), pose.y_m + t * std::sin(a), pose.theta_rad};
+      };
+      if (obstacles.Overlaps(at(hi))) continue;
+      for (int i = 0; i < 30; ++i) {
+        const double mid = (lo + hi) / 2.0;
+        (obstacles.Overlaps(at(mid)) ? lo : hi) = mid;
+      }
+      brute = std::min(brute, hi);
+    }
+    msgs::Pose2D out = pose;
+    if (!obstacles.PushOut(&out, 10.0)) {
+      ADD_FAILURE() << "not pushed out k=" << k;
+      continue;
+    }
+    EXPECT_FALSE(obstacles.Overlaps(out));
+    EXPECT_EQ(out.theta_rad, pose.theta_rad);
+    const double moved = std::hypot(out.x_m - pose.x_m, out.y_m - pose.y_m);
+    EXPECT_LE(moved, brute + 1e-6) << "k=" << k;
+    EXPECT_GE(moved, brute * (1.0 - 2e-4) - 1e-6) << "k=" << k;
+  }
+  EXPECT_GT(checked, 100);
 }
 
 INSTANTIATE_TEST_SUITE_P(Robots, PlanarDriveTest, ::testing::Values(&P3dx, &MagellanPro));
