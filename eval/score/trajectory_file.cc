@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <stdexcept>
+#include <utility>
 
 #include "eval/score/csv_table.h"
 #include "perception/logs/regular_file.h"
@@ -60,8 +61,7 @@ std::vector<NamedTrajectory> ReadPlywoodCsv(const std::filesystem::path& path) {
       pose.line_number = row.line_number;
       pose.pose = {table.Number(row, c, h[c]), table.Number(row, c + 1, h[c + 1]),
                    table.Number(row, c + 2, h[c + 2])};
-      for (std::size_t i : {c, c + 1}) {
-        const double v = table.Number(row, i, h[i]);
+      for (const auto& [i, v] : {std::pair{c, pose.pose.x_m}, std::pair{c + 1, pose.pose.y_m}}) {
         if (std::abs(v) > perception::kMaxTrajectoryCoordinateM) {
           table.Fail(row, h[i],
                      "must be within 1e+09 m of the origin, got " + sim::FormatNumber(v));

@@ -64,6 +64,8 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
   const auto time = [timestep_s](double t) { return TimeAtStepPrecision(t, timestep_s); };
   const auto T = [&time](double t) { return FormatNumber(time(t)); };
   const bool laser_formatted = formatted && formatted->laser_records == record.laser.size();
+  const bool sonar_formatted =
+      formatted && formatted->sonar_given && formatted->sonar_records == record.sonar.size();
   OutputFile(dir, "config.yaml", &written).out() << ExperimentConfigToYaml(config);
   {
     OutputFile file(dir, "trajectory.csv", &written);
@@ -170,9 +172,7 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
   if (!config.output.sensor_logs) return written;
   if (config.sensors.sonar)
     WriteRing(OutputFile(dir, "sonar.csv", &written).out(), record.sonar, timestep_s,
-              formatted && formatted->sonar_given && formatted->sonar_records == record.sonar.size()
-                  ? &formatted->sonar
-                  : nullptr);
+              sonar_formatted ? &formatted->sonar : nullptr);
   if (config.sensors.ir_ring) {
     WriteRing(OutputFile(dir, "ir_ring.csv", &written).out(), record.ir_ring, timestep_s, nullptr);
   }

@@ -115,10 +115,11 @@ void PlanarDrive::Step(const mjModel* m, mjData* d) {
   const double ds = v * dt, dtheta = yaw_rate * dt;
   const msgs::Pose2D whole = AlongArc(start, ds, dtheta, 1.0);
   double fraction = 1.0;
+  bool from_overlap = false;  // taken only when the step's end overlaps
   if (obstacles_.Overlaps(whole)) {
     // A step that starts overlapping (a spawn within the setup check's tolerance) may leave the
     // obstacle but not go deeper into it (PlanarObstacles::OverlapsFrom).
-    const bool from_overlap = obstacles_.Overlaps(start);
+    from_overlap = obstacles_.Overlaps(start);
     const auto blocked_at = [&](const msgs::Pose2D& pose) {
       return from_overlap ? obstacles_.OverlapsFrom(start, pose) : obstacles_.Overlaps(pose);
     };
@@ -143,7 +144,8 @@ void PlanarDrive::Step(const mjModel* m, mjData* d) {
   bool turned = false;
   const double rest_rad =
       (1.0 - fraction) * half_diff * (ids_.left_radius_m + ids_.right_radius_m) * dt / ids_.track_m;
-  if (fraction < 1.0 && rest_rad != 0.0 && !obstacles_.Overlaps(start)) {
+  // fraction < 1 only after the bisection, i.e. with from_overlap taken.
+  if (fraction < 1.0 && rest_rad != 0.0 && !from_overlap) {
     msgs::Pose2D slid = end;
     slid.theta_rad += rest_rad;
     if (obstacles_.PushOut(&slid, obstacles_.reach_m() * std::abs(rest_rad) + 1e-8)) {
