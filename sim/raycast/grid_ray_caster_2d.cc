@@ -107,9 +107,49 @@ struct FanEntry {
   double min_d;
   uint32_t shape;
 };
+// A horizontal ray whose hit is not final yet: its levelled direction, DiamondAngle, nearest hit
+// so far and index.
+struct PendingRay {
+  Eigen::Vector3d dir;
+  double key;
+  NearestHit nearest;
+  uint32_t index;
+};
+// The cells under the bounding box of the pending rays' stretches in one angular bin.
+struct FanBox {
+  int ix0, ix1, iy0, iy1;
+};
+// The unit directions of the bins' edges: dir[b] is the direction of DiamondAngle b * 4 / kFanBins
+// (dir[kFanBins] == dir[0]).
+struct FanBinDirections {
+  double dir[kFanBins + 1][2];
+};
+const FanBinDirections& TheFanBinDirections() {
+  static const FanBinDirections table = [] {
+    FanBinDirections t;
+    for (int b = 0; b <= kFanBins; ++b) {
+      const double key = 4.0 * b / kFanBins;
+      const int quadrant = static_cast<int>(key) % 4;
+      const double f = key - std::floor(key);  // DiamondAngle f within the quadrant: (1 - f, f)
+      const double n = std::hypot(1.0 - f, f);
+      double x = (1.0 - f) / n, y = f / n;
+      for (int q = 0; q < quadrant; ++q) {  // turn by +90 deg
+        const double turned = -y;
+        y = x;
+        x = turned;
+      }
+      t.dir[b][0] = x;
+      t.dir[b][1] = y;
+    }
+    return t;
+  }();
+  return table;
+}
 struct FanScratch {
   std::vector<uint32_t> stamp;  // by shape index: the epoch in which it was last collected
   uint32_t epoch = 0;
+  std::vector<PendingRay> pending;  // horizontal rays not final after the first reach
+  FanBox boxes[kFanBins];
   std::vector<FanCandidate> candidates;
   std::vector<uint32_t> bin_begin;  // CSR over kFanBins bins
   std::vector<uint32_t> bin_fill;
@@ -127,6 +167,12 @@ constexpr double kFanNearM = 1e-3;
 // shortening of the distance bounds (m); the footprints are padded by kPadM besides.
 constexpr double kFanAngleSlack = 1e-9;
 constexpr double kFanDistanceSlackM = 1e-7;
+// The reaches (ray parameter) out to which CastRays collects shapes: the first, then each this
+// many times the last, until max_range_m. A hit short of the reach covered so far by more than
+// kFanFinalSlackM (a few times the cells' padding kPadM) is final.
+constexpr double kFanFirstReachM = 3.0;
+constexpr double kFanReachGrowth = 2.0;
+constexpr double kFanFinalSlackM = 1e-5;
 
 }  // namespace
 
@@ -407,10 +453,13 @@ void GridRayCaster2D::CastRays(const Eigen::Vector3d* origins_W, int origin_step
   FanScratch& f = ThreadFanScratch();
   const uint32_t num_shapes = static_cast<uint32_t>(shapes_.size());
   if (f.stamp.size() < num_shapes) f.stamp.resize(num_shapes, 0);
-  f.candidates.clear();
+  if (++f.epoch == 0) {
+    std::fill(f.stamp.begin(), f.stamp.end(), 0);
+    f.epoch = 1;
+  }
 
-  // Collect the shapes a horizontal ray from any origin can meet within max_range_m.
-  const double range = max_range_m + radius;
+  // A shape a horizontal ray from some origin can meet within max_range_m: its distance bound
+  // from the origins and its angular interval seen from o.
   const auto collect = [&](uint32_t index) {
     const Shape& s = shapes_[index];
     if (s.z_max < box_lo[2] || s.z_min > box_hi[2]) return;
@@ -454,41 +503,6 @@ void GridRayCaster2D::CastRays(const Eigen::Vector3d* origins_W, int origin_step
     }
     f.candidates.push_back(c);
   };
-  const double gx0 = std::floor((o[0] - range - x0_) * inv_cell_);
-  const double gx1 = std::floor((o[0] + range - x0_) * inv_cell_);
-  const double gy0 = std::floor((o[1] - range - y0_) * inv_cell_);
-  const double gy1 = std::floor((o[1] + range - y0_) * inv_cell_);
-  if (gx1 >= 0 && gy1 >= 0 && gx0 <= nx_ - 1 && gy0 <= ny_ - 1) {
-    const int ix0 = static_cast<int>(std::max(gx0, 0.0));
-    const int ix1 = static_cast<int>(std::min(gx1, nx_ - 1.0));
-    const int iy0 = static_cast<int>(std::max(gy0, 0.0));
-    const int iy1 = static_cast<int>(std::min(gy1, ny_ - 1.0));
-    const double cells = (ix1 - ix0 + 1.0) * (iy1 - iy0 + 1.0);
-    if (cells >= num_shapes) {
-      for (uint32_t i = 0; i < num_shapes; ++i) collect(i);
-    } else {
-      if (++f.epoch == 0) {
-        std::fill(f.stamp.begin(), f.stamp.end(), 0);
-        f.epoch = 1;
-      }
-      for (int iy = iy0; iy <= iy1; ++iy) {
-        for (int ix = ix0; ix <= ix1; ++ix) {
-          const int cell = iy * nx_ + ix;
-          for (uint32_t k = cell_begin_[cell]; k < cell_begin_[cell + 1]; ++k) {
-            const uint32_t index = cell_items_[k];
-            if (f.stamp[index] == f.epoch) continue;
-            f.stamp[index] = f.epoch;
-            collect(index);
-          }
-        }
-      }
-    }
-  }
-  std::sort(f.candidates.begin(), f.candidates.end(),
-            [](const FanCandidate& a, const FanCandidate& b) { return a.min_d < b.min_d; });
-
-  // Bin the intervals (count, then fill), nearest first within each bin.
-  f.bin_begin.assign(kFanBins + 1, 0);
   const auto for_each_piece = [](const FanCandidate& c, auto&& piece) {
     if (c.lo < 0.0) {
       piece(c.lo + 4.0, 4.0);
@@ -500,24 +514,97 @@ void GridRayCaster2D::CastRays(const Eigen::Vector3d* origins_W, int origin_step
       piece(c.lo, c.hi);
     }
   };
-  for (const FanCandidate& c : f.candidates) {
-    for_each_piece(c, [&](double lo, double hi) {
-      for (int b = FanBin(lo), last = FanBin(hi); b <= last; ++b) ++f.bin_begin[b + 1];
-    });
-  }
-  for (int b = 0; b < kFanBins; ++b) f.bin_begin[b + 1] += f.bin_begin[b];
-  f.entries.resize(f.bin_begin[kFanBins]);
-  f.bin_fill.assign(f.bin_begin.begin(), f.bin_begin.end() - 1);
-  for (const FanCandidate& c : f.candidates) {
-    for_each_piece(c, [&](double lo, double hi) {
-      for (int b = FanBin(lo), last = FanBin(hi); b <= last; ++b) {
-        f.entries[f.bin_fill[b]++] = {lo, hi, c.min_d, c.shape};
-      }
-    });
-  }
 
+  // Sorts the candidates collected last and bins them (count, then fill), nearest first within
+  // each bin; then `ray` tests its bin's shapes whose interval holds its direction, nearest first,
+  // until one is farther than its nearest hit.
+  const auto sort_and_bin = [&] {
+    std::sort(f.candidates.begin(), f.candidates.end(),
+              [](const FanCandidate& a, const FanCandidate& b) { return a.min_d < b.min_d; });
+    f.bin_begin.assign(kFanBins + 1, 0);
+    for (const FanCandidate& c : f.candidates) {
+      for_each_piece(c, [&](double lo, double hi) {
+        for (int b = FanBin(lo), end = FanBin(hi); b <= end; ++b) ++f.bin_begin[b + 1];
+      });
+    }
+    for (int b = 0; b < kFanBins; ++b) f.bin_begin[b + 1] += f.bin_begin[b];
+    f.entries.resize(f.bin_begin[kFanBins]);
+    f.bin_fill.assign(f.bin_begin.begin(), f.bin_begin.end() - 1);
+    for (const FanCandidate& c : f.candidates) {
+      for_each_piece(c, [&](double lo, double hi) {
+        for (int b = FanBin(lo), end = FanBin(hi); b <= end; ++b) {
+          f.entries[f.bin_fill[b]++] = {lo, hi, c.min_d, c.shape};
+        }
+      });
+    }
+  };
   const Shape* shapes = shapes_.data();
-  const FanEntry* entries = f.entries.data();
+  const auto test_binned = [&](const double* ray_o, const double* v, double key, NearestHit* ray) {
+    const FanEntry* entries = f.entries.data();
+    const int bin = FanBin(key);
+    NearestHit nearest = *ray;
+    for (uint32_t k = f.bin_begin[bin], end = f.bin_begin[bin + 1]; k < end; ++k) {
+      const FanEntry& e = entries[k];
+      if (e.min_d > nearest.t) break;
+      if (key < e.lo || key > e.hi) continue;
+      const Shape& s = shapes[e.shape];
+      nearest.Consider(IntersectShape(s, ray_o, v, /*horizontal=*/true), s.geom_id);
+    }
+    *ray = nearest;
+  };
+  // The shapes of a block of cells: a row's cells are consecutive in the compressed lists, so a
+  // row is one run of items.
+  const auto collect_cells = [&](int ix0, int ix1, int iy0, int iy1) {
+    const uint32_t* cell_begin = cell_begin_.data();
+    const uint32_t* cell_items = cell_items_.data();
+    uint32_t* stamp = f.stamp.data();
+    for (int iy = iy0; iy <= iy1; ++iy) {
+      const int row = iy * nx_;
+      for (uint32_t k = cell_begin[row + ix0], end = cell_begin[row + ix1 + 1]; k < end; ++k) {
+        const uint32_t index = cell_items[k];
+        if (stamp[index] == f.epoch) continue;
+        stamp[index] = f.epoch;
+        collect(index);
+      }
+    }
+  };
+  const auto collect_all = [&] {
+    for (uint32_t i = 0; i < num_shapes; ++i) {
+      if (f.stamp[i] == f.epoch) continue;
+      f.stamp[i] = f.epoch;
+      collect(i);
+    }
+  };
+
+  // First the shapes within kFanFirstReachM of every origin: the cells under the square of that
+  // reach about o (or every shape, when the cells outnumber them). A ray whose nearest hit is
+  // nearer than that reach is final: every shape it could meet nearer has a cell in the square and
+  // was tested. Most rays end there, at the walls around the robot.
+  const double first = std::min(kFanFirstReachM, max_range_m);
+  bool all_collected = false;
+  f.candidates.clear();
+  {
+    const double half = first + radius + kPadM;
+    const double gx0 = std::floor((o[0] - half - x0_) * inv_cell_);
+    const double gx1 = std::floor((o[0] + half - x0_) * inv_cell_);
+    const double gy0 = std::floor((o[1] - half - y0_) * inv_cell_);
+    const double gy1 = std::floor((o[1] + half - y0_) * inv_cell_);
+    if (gx1 >= 0 && gy1 >= 0 && gx0 <= nx_ - 1 && gy0 <= ny_ - 1) {
+      const int ix0 = static_cast<int>(std::max(gx0, 0.0));
+      const int ix1 = static_cast<int>(std::min(gx1, nx_ - 1.0));
+      const int iy0 = static_cast<int>(std::max(gy0, 0.0));
+      const int iy1 = static_cast<int>(std::min(gy1, ny_ - 1.0));
+      if ((ix1 - ix0 + 1.0) * (iy1 - iy0 + 1.0) >= num_shapes) {
+        collect_all();
+        all_collected = true;
+      } else {
+        collect_cells(ix0, ix1, iy0, iy1);
+      }
+    }
+  }
+  sort_and_bin();
+  f.pending.clear();
+  const double first_final = first < max_range_m ? first - kFanFinalSlackM : kInf;
   for (int i = 0; i < count; ++i) {
     const Eigen::Vector3d dir_W = LevelledDirection(dirs_W[i]);
     const double* v = dir_W.data();
@@ -529,16 +616,95 @@ void GridRayCaster2D::CastRays(const Eigen::Vector3d* origins_W, int origin_step
     NearestHit nearest;
     for (int g : fallback_horizontal_) nearest.Consider(IntersectFallback(g, ray_o, v), g);
     const double key = DiamondAngle(v[0], v[1]);
-    const int bin = FanBin(key);
-    for (uint32_t k = f.bin_begin[bin], end = f.bin_begin[bin + 1]; k < end; ++k) {
-      const FanEntry& e = entries[k];
-      if (e.min_d > nearest.t) break;
-      if (key < e.lo || key > e.hi) continue;
-      const Shape& s = shapes[e.shape];
-      nearest.Consider(IntersectShape(s, ray_o, v, /*horizontal=*/true), s.geom_id);
+    test_binned(ray_o, v, key, &nearest);
+    if (!all_collected && !(nearest.t < first_final)) {
+      f.pending.push_back({dir_W, key, nearest, static_cast<uint32_t>(i)});
+      continue;
     }
     found[i] = nearest.Report(max_range_m, &hits[i]);
     if (found[i] && with_normal) SetNormal(origins_W[i * origin_step], dir_W, &hits[i]);
+  }
+
+  // Then reach by reach for the rays left: the shapes under the stretch [covered, reach] of every
+  // such ray's path (the cells under the bounding box of that stretch of the ray's angular bin,
+  // padded by `radius`), and again a ray whose nearest hit is nearer than the reach covered so far
+  // is final. Each ray so gets the very hit a single collection of every shape within max_range_m
+  // of the origins would give, and shapes behind the walls that end most rays are never
+  // collected: the cost does not grow with the world beyond them.
+  const FanBinDirections& bin_dirs = TheFanBinDirections();
+  double covered = first;
+  PendingRay* pending = f.pending.data();
+  int num_pending = static_cast<int>(f.pending.size());
+  for (double reach = first * kFanReachGrowth; num_pending > 0; reach *= kFanReachGrowth) {
+    const bool last = reach >= max_range_m;
+    const double next = last ? max_range_m : reach;
+    f.candidates.clear();
+    if (!all_collected) {
+      bool used[kFanBins] = {};
+      for (int k = 0; k < num_pending; ++k) used[FanBin(pending[k].key)] = true;
+      // A bin's sector never holds an axis direction inside it, so the box of its stretch is
+      // that of the four corners; padded for the origins' spread and the points' rounding.
+      double cells = 0.0;
+      const double pad = radius + kPadM;
+      for (int b = 0; b < kFanBins; ++b) {
+        if (!used[b]) continue;
+        double lo[2], hi[2];
+        for (int k = 0; k < 2; ++k) {
+          const double c0 = o[k] + covered * bin_dirs.dir[b][k];
+          const double c1 = o[k] + covered * bin_dirs.dir[b + 1][k];
+          const double c2 = o[k] + next * bin_dirs.dir[b][k];
+          const double c3 = o[k] + next * bin_dirs.dir[b + 1][k];
+          lo[k] = std::min({c0, c1, c2, c3}) - pad;
+          hi[k] = std::max({c0, c1, c2, c3}) + pad;
+        }
+        const double gx0 = std::floor((lo[0] - x0_) * inv_cell_);
+        const double gx1 = std::floor((hi[0] - x0_) * inv_cell_);
+        const double gy0 = std::floor((lo[1] - y0_) * inv_cell_);
+        const double gy1 = std::floor((hi[1] - y0_) * inv_cell_);
+        if (gx1 < 0 || gy1 < 0 || gx0 > nx_ - 1 || gy0 > ny_ - 1) {
+          used[b] = false;
+          continue;
+        }
+        FanBox& box = f.boxes[b];
+        box.ix0 = static_cast<int>(std::max(gx0, 0.0));
+        box.ix1 = static_cast<int>(std::min(gx1, nx_ - 1.0));
+        box.iy0 = static_cast<int>(std::max(gy0, 0.0));
+        box.iy1 = static_cast<int>(std::min(gy1, ny_ - 1.0));
+        cells += (box.ix1 - box.ix0 + 1.0) * (box.iy1 - box.iy0 + 1.0);
+      }
+      if (cells >= num_shapes) {
+        collect_all();
+        all_collected = true;
+      } else {
+        for (int b = 0; b < kFanBins; ++b) {
+          if (!used[b]) continue;
+          collect_cells(f.boxes[b].ix0, f.boxes[b].ix1, f.boxes[b].iy0, f.boxes[b].iy1);
+        }
+      }
+    }
+    if (!f.candidates.empty()) {
+      sort_and_bin();
+      for (int p = 0; p < num_pending; ++p) {
+        PendingRay& ray = pending[p];
+        test_binned(origins_W[ray.index * origin_step].data(), ray.dir.data(), ray.key,
+                    &ray.nearest);
+      }
+    }
+    covered = next;
+    const bool done = last || all_collected;
+    // Final: a nearest hit short of the covered stretch by more than the cells' padding.
+    int kept = 0;
+    for (int p = 0; p < num_pending; ++p) {
+      PendingRay& ray = pending[p];
+      if (!done && !(ray.nearest.t < covered - kFanFinalSlackM)) {
+        pending[kept++] = ray;
+        continue;
+      }
+      const int i = static_cast<int>(ray.index);
+      found[i] = ray.nearest.Report(max_range_m, &hits[i]);
+      if (found[i] && with_normal) SetNormal(origins_W[i * origin_step], ray.dir, &hits[i]);
+    }
+    num_pending = kept;
   }
 }
 

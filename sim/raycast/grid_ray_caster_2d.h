@@ -67,15 +67,20 @@ class GridRayCaster2D : public RayCaster {
                          double max_range_m, RayHit* hit) const override;
   // Same results as Cast / CastWithoutNormal ray by ray. The rays that are (or are levelled to)
   // horizontal share one set-up: with c the centre of the origins' bounding box and r the largest
-  // distance of an origin from it (0 for a scan's beams), the grid shapes within max_range_m + r
-  // of c whose z range meets the origins' heights are collected once, each with the angular
-  // interval its padded floor-plane footprint spans from c (widened by asin(r / (d - r)) for a
-  // footprint d from c, or the whole circle when d < 2 r) and a lower bound of its distance from
-  // any origin, sorted by that bound into angular bins; a ray then tests only its bin's shapes
-  // whose interval holds its direction, nearest first, and stops at the first shape farther than
-  // its nearest hit. Every shape a ray can hit is tested with the same arithmetic as Cast, so
-  // distances, geoms and normals are the same bits. Other rays go through Cast. Uses a per-thread
-  // scratch buffer (allocates only while it grows), so one caster still serves several threads.
+  // distance of an origin from it (0 for a scan's beams), the grid shapes whose z range meets the
+  // origins' heights are collected, each with the angular interval its padded floor-plane
+  // footprint spans from c (widened by asin(r / (d - r)) for a footprint d from c, or the whole
+  // circle when d < 2 r) and a lower bound of its distance from any origin, sorted by that bound
+  // into angular bins; a ray then tests only its bin's shapes whose interval holds its direction,
+  // nearest first, and stops at the first shape farther than its nearest hit. The shapes are
+  // collected reach by reach: first those in the cells within 3 m (plus r) of c, then, for the
+  // rays whose hit is not nearer than that, those under the next stretch (to twice the reach,
+  // up to max_range_m) of those rays' angular bins, and so on; a ray is final once its hit lies
+  // within the stretch covered. So shapes behind the walls that end most rays are never collected,
+  // and the cost does not grow with the world beyond them. Every shape a ray can hit before its
+  // nearest hit is tested with the same arithmetic as Cast, so distances, geoms and normals are
+  // the same bits. Other rays go through Cast. Uses a per-thread scratch buffer (allocates only
+  // while it grows), so one caster still serves several threads.
   void CastBatch(const Eigen::Vector3d* origins_W, const Eigen::Vector3d* dirs_W, int count,
                  double max_range_m, bool with_normal, RayHit* hits, bool* found) const override;
   // CastBatch with one origin for every ray, without normals (a scan's beams).

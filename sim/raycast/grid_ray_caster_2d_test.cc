@@ -498,6 +498,121 @@ TEST(GridRayCaster2DTest, DefaultBatchIsCastWithoutNormal) {
 
 INSTANTIATE_TEST_SUITE_P(CellSizes, RandomWorldTest, ::testing::Values(0.13, 0.5, 2.0));
 
+// A building of `rooms_x` x `rooms_y` rooms (8 x 6 m, walls with door gaps) with random boxes and
+// cylinders in each: most rays end at a wall within a few metres, the rest leave through doors.
+std::string RoomsWorld(uint64_t seed, int rooms_x, int rooms_y) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::ostringstream xml;
+  xml.precision(17);
+  xml << "<mujoco><worldbody>\n<geom name='floor' type='plane' size='0 0 1'/>\n";
+  const auto wall = [&](double x0, double y0, double x1, double y1) {
+    xml << "<geom type='box' pos='" << 0.5 * (x0 + x1) << " " << 0.5 * (y0 + y1) << " 0.5' size='"
+        << std::max(0.009, 0.5 * std::abs(x1 - x0)) << " "
+        << std::max(0.009, 0.5 * std::abs(y1 - y0)) << " 0.5'/>\n";
+  };
+  for (int i = 0; i <= rooms_x; ++i) {
+    for (int j = 0; j < rooms_y; ++j) {  // walls along y, a door in the inner ones
+      const double x = 8.0 * i, y0 = 6.0 * j, door = y0 + 1.0 + 3.5 * unit(rng);
+      if (i == 0 || i == rooms_x) {
+        wall(x, y0, x, y0 + 6.0);
+      } else {
+        wall(x, y0, x, door);
+        wall(x, door + 0.9, x, y0 + 6.0);
+      }
+    }
+  }
+  for (int j = 0; j <= rooms_y; ++j) {
+    for (int i = 0; i < rooms_x; ++i) {  // walls along x
+      const double y = 6.0 * j, x0 = 8.0 * i, door = x0 + 1.0 + 5.5 * unit(rng);
+      if (j == 0 || j == rooms_y) {
+        wall(x0, y, x0 + 8.0, y);
+      } else {
+        wall(x0, y, door, y);
+        wall(door + 0.9, y, x0 + 8.0, y);
+      }
+    }
+  }
+  for (int r = 0; r < rooms_x * rooms_y * 12; ++r) {
+    const double x = 8.0 * (r % rooms_x) + 0.5 + 7.0 * unit(rng);
+    const double y = 6.0 * ((r / rooms_x) % rooms_y) + 0.5 + 5.0 * unit(rng);
+    if (r % 3 == 0) {
+      xml << "<geom type='cylinder' pos='" << x << " " << y << " 0.4' size='"
+          << 0.02 + 0.2 * unit(rng) << " 0.4'/>\n";
+    } else {
+      xml << "<geom type='box' pos='" << x << " " << y << " 0.4' euler='0 0 "
+          << (r % 2 ? 0.0 : 360.0 * unit(rng)) << "' size='" << 0.05 + 0.4 * unit(rng) << " "
+          << 0.05 + 0.3 * unit(rng) << " 0.4'/>\n";
+    }
+  }
+  xml << "</worldbody></mujoco>\n";
+  return xml.str();
+}
+
+// The batch and the fan collect shapes reach by reach and stop at the walls around the origins;
+// in a building of 24 rooms (about 400 shapes) every beam of a scan and every ray of a ring still
+// gets the very bits Cast gives, level beams what mj_ray gives, with ranges from short of the
+// first reach to beyond the building.
+TEST(GridRayCaster2DTest, BatchesInManyRoomsGiveCastsBits) {
+  const CompiledWorld w = Compile(RoomsWorld(31, 6, 4));
+  ASSERT_GT(w.model->ngeom, 380);
+  const MujocoRayCaster reference(w.model.get(), w.data.get());
+  std::mt19937_64 rng(31);
+  std::uniform_real_distribution<double> ux(0.2, 47.8), uy(0.2, 23.8), unit(0.0, 1.0);
+  int rays = 0, hit_count = 0, far_hits = 0;
+  for (const double cell : {0.25, 0.5, 1.0}) {
+    GridRayCaster2DOptions options;
+    options.cell_size_m = cell;
+    const GridRayCaster2D grid(w.model.get(), w.data.get(), options);
+    for (int scan = 0; scan < 120; ++scan) {
+      const double range = scan % 4 == 0 ? 1.5 : scan % 4 == 1 ? 5.0 : scan % 4 == 2 ? 8.0 : 60.0;
+      const bool ring = scan % 2 == 1;
+      const Eigen::Vector3d centre(ux(rng), uy(rng), 0.3);
+      const double heading = 2 * M_PI * unit(rng);
+      const int n = ring ? 16 * 5 : 361;
+      std::vector<Eigen::Vector3d> origins(n, centre), dirs(n);
+      for (int i = 0; i < n; ++i) {
+        const double a = ring ? heading + 2 * M_PI * (i / 5) / 16 + 0.1 * (i % 5 - 2)
+                              : heading - M_PI / 2 + M_PI * i / (n - 1);
+        dirs[i] = Eigen::Vector3d(std::cos(a), std::sin(a), 0.0);
+        if (ring) {
+          const double b = heading + 2 * M_PI * (i / 5) / 16;
+          origins[i] += 0.25 * Eigen::Vector3d(std::cos(b), std::sin(b), 0.0);
+        }
+      }
+      std::vector<RayHit> hits(n);
+      std::unique_ptr<bool[]> found(new bool[n]);
+      if (ring) {
+        grid.CastBatch(origins.data(), dirs.data(), n, range, /*with_normal=*/true, hits.data(),
+                       found.get());
+      } else {
+        grid.CastFanWithoutNormal(centre, dirs.data(), n, range, hits.data(), found.get());
+      }
+      for (int i = 0; i < n; ++i) {
+        RayHit one, exact;
+        const bool hit = ring ? grid.Cast(origins[i], dirs[i], range, &one)
+                              : grid.CastWithoutNormal(centre, dirs[i], range, &one);
+        ++rays;
+        ASSERT_EQ(found[i], hit) << "cell " << cell << " scan " << scan << " ray " << i;
+        ASSERT_EQ(reference.CastWithoutNormal(origins[i], dirs[i], range, &exact), hit);
+        if (!hit) continue;
+        ++hit_count;
+        far_hits += one.distance_m > 4.0;
+        ASSERT_EQ(hits[i].distance_m, one.distance_m) << "scan " << scan << " ray " << i;
+        ASSERT_EQ(hits[i].geom_id, one.geom_id) << "scan " << scan << " ray " << i;
+        if (ring) {
+          ASSERT_EQ(hits[i].normal_W, one.normal_W) << "scan " << scan << " ray " << i;
+        }
+        ASSERT_EQ(exact.geom_id, one.geom_id);
+        ASSERT_NEAR(exact.distance_m, one.distance_m, 1e-9 * std::max(1.0, one.distance_m));
+      }
+    }
+  }
+  EXPECT_GT(rays, 70000);
+  EXPECT_GT(hit_count, rays / 2);
+  EXPECT_GT(far_hits, rays / 20);  // rays that needed the later reaches
+}
+
 TEST(GridRayCaster2DTest, SeesMovingBodiesWhereTheyAreNow) {
   CompiledWorld w = Compile(RandomWorld(9, 20));
   const MujocoRayCaster reference(w.model.get(), w.data.get());

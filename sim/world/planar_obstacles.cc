@@ -151,6 +151,12 @@ PlanarObstacles::PlanarObstacles(const mjModel* m, const mjData* d, int base_bod
     o.bound_m = (o.disc ? o.radius_m : std::hypot(o.half_x, o.half_y)) * (1.0 + 1e-9) + 1e-9;
     obstacles_.push_back(o);
   }
+  std::vector<BoxGrid2D::Box> boxes;
+  boxes.reserve(obstacles_.size());
+  for (const Obstacle& o : obstacles_) {
+    boxes.push_back({{o.cx - o.bound_m, o.cy - o.bound_m}, {o.cx + o.bound_m, o.cy + o.bound_m}});
+  }
+  grid_ = BoxGrid2D(std::move(boxes), kGridCellM);
 }
 
 double PlanarObstacles::CentreDistance(const Obstacle& o, double x, double y) {
@@ -165,15 +171,17 @@ const std::vector<int>& PlanarObstacles::Near(double x, double y) {
   if (near_valid_ && std::hypot(x - near_x_, y - near_y_) <= kNearPadM / 2.0) return near_;
   near_.clear();
   const double limit = reach_m_ + kNearPadM;
-  for (std::size_t i = 0; i < obstacles_.size(); ++i) {
+  // The grid's candidates: every obstacle whose box meets the query box, which is wider than
+  // the box test below by far more than rounding, so no obstacle the test keeps is missed.
+  const double query = limit * (1.0 + 1e-9) + 1e-6;
+  grid_.Query({{x - query, y - query}, {x + query, y + query}}, &grid_hits_);
+  for (const int i : grid_hits_) {
     const Obstacle& o = obstacles_[i];
-    // A cheap box test first (a world has hundreds of geoms, few near the robot); it only drops
-    // obstacles whose footprint is farther than the limit, so the list is CentreDistance's alone.
+    // A cheap box test first; it only drops obstacles whose footprint is farther than the limit,
+    // so the list is CentreDistance's alone.
     const double box = limit * (1.0 + 1e-9) + o.bound_m;
     if (std::abs(x - o.cx) > box || std::abs(y - o.cy) > box) continue;
-    if (CentreDistance(o, x, y) <= limit) {
-      near_.push_back(static_cast<int>(i));
-    }
+    if (CentreDistance(o, x, y) <= limit) near_.push_back(i);
   }
   near_x_ = x;
   near_y_ = y;

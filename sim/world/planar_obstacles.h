@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "msgs/pose2d.h"
+#include "sim/world/box_grid_2d.h"
 
 namespace plywood::sim {
 
@@ -64,8 +65,9 @@ class PlanarObstacles {
   };
   // Distance from (x, y) to the obstacle's footprint (0 inside).
   static double CentreDistance(const Obstacle& o, double x, double y);
-  // The obstacles within kNearPadM of the footprint's circle (radius reach_m) about (x, y):
-  // refreshed when the robot has moved more than half the pad since the last refresh.
+  // The obstacles within kNearPadM of the footprint's circle (radius reach_m) about (x, y),
+  // ascending: refreshed when the robot has moved more than half the pad since the last refresh,
+  // from the obstacles grid_ lists under a box about (x, y).
   const std::vector<int>& Near(double x, double y);
   // Gap (>= 0) between the footprint at X_WR and obstacle `o`; -1 when they overlap. `witness`
   // gets the footprint's point nearest the obstacle (robot frame). With overlap_only, a rectangle
@@ -82,6 +84,10 @@ class PlanarObstacles {
   std::vector<double> normals_;  // outward unit normal of edge i (vertex i to i + 1)
   double reach_m_ = 0.0;
   std::vector<Obstacle> obstacles_;
+  // Each obstacle's box of half size bound_m about its centre, in kGridCellM cells.
+  static constexpr double kGridCellM = 1.0;
+  BoxGrid2D grid_{{}, kGridCellM};
+  std::vector<int> grid_hits_;
   std::vector<int> near_;
   double near_x_ = 0.0, near_y_ = 0.0;
   bool near_valid_ = false;
