@@ -1,5 +1,6 @@
 #include "eval/lines/seed000_rooms.h"
 
+#include <algorithm>
 #include <numbers>
 
 #include "perception/logs/regular_file.h"
@@ -36,6 +37,7 @@ Seed000RoomsOptions ReadSeed000RoomsOptions(const sim::ExperimentConfig& config)
   fields.Get("range_cut_m", &options.range_cut_m);
   if (!(options.range_cut_m > 0.0)) fields.Fail("range_cut_m", "must be > 0");
   fields.Get("rig_at", &options.rig_at);
+  fields.Get("median_of_scans", &options.median_of_scans);
   if (options.rig_at != "origin" && options.rig_at != "spawn") {
     fields.Fail("rig_at", "expected origin or spawn, got '" + options.rig_at + "'");
   }
@@ -83,8 +85,32 @@ double Seed000RoomResult::PointsPerScan() const {
   return static_cast<double>(rig.front[0].scan.ranges_m.size() + rig.back[0].scan.ranges_m.size());
 }
 
+namespace {
+
+// Every record's ranges replaced by the per-beam median of the returns over all records (no return
+// when fewer than half returned).
+void MedianOfScans(std::vector<sim::LaserRecord>* records) {
+  if (records->empty()) return;
+  const std::size_t beams = records->front().scan.ranges_m.size();
+  const double range_max_m = records->front().scan.range_max_m;
+  std::vector<double> median(beams, range_max_m);
+  std::vector<double> returns;
+  for (std::size_t b = 0; b < beams; ++b) {
+    returns.clear();
+    for (const auto& record : *records)
+      if (record.scan.ranges_m[b] < range_max_m) returns.push_back(record.scan.ranges_m[b]);
+    if (2 * returns.size() < records->size()) continue;
+    std::sort(returns.begin(), returns.end());
+    const std::size_t k = returns.size();
+    median[b] = k % 2 == 1 ? returns[k / 2] : 0.5 * (returns[k / 2 - 1] + returns[k / 2]);
+  }
+  for (auto& record : *records) record.scan.ranges_m = median;
+}
+
+}  // namespace
+
 Seed000RoomResult RunSeed000Room(const sim::ExperimentConfig& config, const Seed000Room& room,
-                                 int scans) {
+                                 int scans, bool median_of_scans) {
   sim::ExperimentConfig room_config = config;
   room_config.world = room.world;
   room_config.world_path = room.world_path;
@@ -92,6 +118,10 @@ Seed000RoomResult RunSeed000Room(const sim::ExperimentConfig& config, const Seed
   result.room = room;
   result.rig = TakeBackToBackScans(room_config, room.rig_W,
                                    room.rig_theta_deg * std::numbers::pi / 180.0, scans);
+  if (median_of_scans) {
+    MedianOfScans(&result.rig.front);
+    MedianOfScans(&result.rig.back);
+  }
   result.scans = MakeTruthScans(result.rig, room.range_cut_m);
   sim::LinesConfig lines = config.lines;
   if (!lines.given) lines.extractors = perception::LineExtractorNames();

@@ -36,6 +36,11 @@ struct Seed000RoomsOptions {
   // For a world given with --set world=PATH: "origin" (the paper's placement) or "spawn" (the
   // experiment's robot.spawn, which a sweep over generated worlds sets to a free spot).
   std::string rig_at = "origin";
+  // OPTION, off by default (not part of seed 000's per-scan protocol): every scan of the rig
+  // replaced by the per-beam median of its `scans` scans from the one pose (a beam with a return
+  // in fewer than half of them gives none), so each extractor sees the same lower-noise scan
+  // `scans` times. Set the extractors' noise (breakpoints.sigma_m) to match (docs/lines.md).
+  bool median_of_scans = false;
   std::vector<Seed000Room> rooms;
 };
 
@@ -58,6 +63,6 @@ struct Seed000RoomResult {
 
 // Two back-to-back lasers at the room's origin facing +x and -x, `scans` pairs, every extractor.
 Seed000RoomResult RunSeed000Room(const sim::ExperimentConfig& config, const Seed000Room& room,
-                                 int scans);
+                                 int scans, bool median_of_scans = false);
 
 }  // namespace plywood::eval

@@ -256,6 +256,70 @@ void RemoveRoundObjects(std::span<const Eigen::Vector2d> points, double noise_si
   lines->resize(out);
 }
 
+void JoinRoundObjectsAcrossOccluders(const ScanPoints& scan, double noise_sigma_m,
+                                     const RoundObjectOptions& options,
+                                     std::vector<std::vector<std::vector<int>>>* group_lines,
+                                     std::vector<CircleFeature>* circles) {
+  if (!options.reject_round_objects || !scan.HasScanOrder()) return;
+  const int n = static_cast<int>(scan.size());
+  auto& groups = *group_lines;
+  for (std::size_t g = 0; g + 1 < groups.size(); ++g) {
+    if (groups[g].empty() || groups[g + 1].empty()) continue;
+    const int end = groups[g].back().back(), start = groups[g + 1].front().front();
+    // The returns between the two facing ends: all nearer than both (an occluder), no missing beam.
+    const double far_m = std::min(scan.range_m[end], scan.range_m[start]);
+    bool occluded = true;
+    int between = 0;
+    for (int k = end; k != start && occluded; k = (k + 1) % n) {
+      const int next = (k + 1) % n;
+      if (scan.MissingBeams(k, next) > 0) occluded = false;
+      if (next != start) {
+        ++between;
+        if (!(scan.range_m[next] < far_m)) occluded = false;
+      }
+      if (between > n / 2) occluded = false;
+    }
+    if (!occluded || between == 0) continue;
+    std::vector<std::vector<int>> joined = groups[g];
+    const int first_facing = static_cast<int>(joined.size()) - 1;
+    joined.insert(joined.end(), groups[g + 1].begin(), groups[g + 1].end());
+    // Which lines RemoveRoundObjects keeps: their first points identify them (disjoint lines).
+    std::vector<int> fronts(joined.size());
+    for (std::size_t k = 0; k < joined.size(); ++k) fronts[k] = joined[k].front();
+    std::vector<CircleFeature> found;
+    std::vector<std::vector<int>> kept = joined;
+    RemoveRoundObjects(scan.points, noise_sigma_m, options, &kept, &found);
+    std::vector<char> dropped(joined.size(), 1);
+    for (std::size_t k = 0, from = 0; k < kept.size(); ++k, ++from) {
+      while (fronts[from] != kept[k].front()) ++from;
+      dropped[from] = 0;
+    }
+    if (!dropped[first_facing] || !dropped[first_facing + 1]) continue;
+    // The run that holds both facing lines: consecutive dropped lines around the junction.
+    int lo = first_facing, hi = first_facing + 1;
+    while (lo > 0 && dropped[lo - 1]) --lo;
+    while (hi + 1 < static_cast<int>(joined.size()) && dropped[hi + 1]) ++hi;
+    // Its circle: the one that holds points of the facing lines (one circle per run removed).
+    if (circles != nullptr) {
+      const auto holds = [&](const CircleFeature& c, const std::vector<int>& line) {
+        for (int i : line)
+          if (std::find(c.point_indices.begin(), c.point_indices.end(), i) != c.point_indices.end())
+            return true;
+        return false;
+      };
+      for (const CircleFeature& c : found) {
+        if (holds(c, joined[first_facing]) || holds(c, joined[first_facing + 1])) {
+          circles->push_back(c);
+          break;
+        }
+      }
+    }
+    const int size_g = static_cast<int>(groups[g].size());
+    groups[g].erase(groups[g].begin() + lo, groups[g].end());
+    groups[g + 1].erase(groups[g + 1].begin(), groups[g + 1].begin() + (hi - size_g + 1));
+  }
+}
+
 std::vector<char> RoundObjectPoints(const ScanPoints& scan, const BreakpointOptions& breakpoints,
                                     double split_threshold_m, const RoundObjectOptions& options,
                                     std::vector<CircleFeature>* circles) {

@@ -37,6 +37,9 @@ struct RoundObjectOptions {
   double max_round_radius_m = 0.5;  // larger curves are walls; cutting them into chords is right
   int min_round_points = 8;         // fewer points cannot tell an arc from two lines
   double min_round_arc_deg = 45.0;
+  // JoinRoundObjectsAcrossOccluders (split_and_merge): a column whose middle a nearer object hides
+  // is one round object in two breakpoint groups.
+  bool join_across_occluders = true;
 
   // @throws std::invalid_argument starting with the field name.
   void Validate() const;
@@ -51,6 +54,23 @@ struct RoundObjectOptions {
 void RemoveRoundObjects(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
                         const RoundObjectOptions& options, std::vector<std::vector<int>>* lines,
                         std::vector<CircleFeature>* circles = nullptr);
+
+// A round object partly hidden by a nearer one (a column behind a column or a table leg) shows
+// on both sides of the occluder as two breakpoint groups, each an edge chord from its silhouette
+// to the occlusion edge: short arcs that one scan cannot tell from box faces. The object continues
+// behind the occluder, so the two sides are tested together. `group_lines` holds each breakpoint
+// group's lines (point indices in scan order), groups in scan order. For two consecutive groups
+// whose facing ends are both occlusion edges -- every return between the last line of the one and
+// the first line of the other (at least one, no beam without a return) is nearer than both of
+// those lines' facing end points -- the lines of the two groups are tested as one group by
+// RemoveRoundObjects, and a round run found there that holds both facing lines (the object across
+// its occluder) is dropped from both groups and reported as one circle. Collinear wall pieces
+// behind an occluder fit no small circle; a box's two faces around a hidden corner fit their two
+// lines better than a circle, as in a group of their own.
+void JoinRoundObjectsAcrossOccluders(const ScanPoints& scan, double noise_sigma_m,
+                                     const RoundObjectOptions& options,
+                                     std::vector<std::vector<std::vector<int>>>* group_lines,
+                                     std::vector<CircleFeature>* circles = nullptr);
 
 // The same stage for extractors that look for lines among all of a scan's points (RANSAC, Hough):
 // the scan's breakpoint groups, each cut by the end-point fit at split_threshold_m

@@ -211,6 +211,48 @@ TEST(RoundObjectFilterTest, RansacAndHoughLoseAThinColumnsSingleChordToo) {
   EXPECT_GE(round_seeds, 2);
 }
 
+TEST(RoundObjectFilterTest, AColumnHalfHiddenByANearerOneIsOneRoundObject) {
+  // A 0.3 m column 3 m away whose middle a 6 cm leg 1.5 m away hides: each side shows ~7 beams
+  // from the leg's shadow to its silhouette, an edge chord over less than 45 deg of arc with a
+  // bulge of 1-2 noise sigmas -- in one breakpoint group each, often kept as a "face". Tested
+  // together across the leg (JoinRoundObjectsAcrossOccluders) they are one column.
+  const Disc column{{3.0, 0.0}, 0.3};
+  const Disc leg{{1.5, 0.0}, 0.06};
+  const auto on_column = [&](const LineSegment& s) {
+    return (s.start - column.centre).norm() < column.radius_m + 0.05 &&
+           (s.end - column.centre).norm() < column.radius_m + 0.05;
+  };
+  SplitAndMergeOptions apart;
+  apart.round_objects.join_across_occluders = false;
+  int kept_apart = 0, kept_joined = 0, circles_on_column = 0;
+  for (unsigned seed = 1; seed <= 40; ++seed) {
+    const ScanPoints scan = ScanScene({kRoom}, {column, leg}, 0.01, 20.0, seed);
+    for (const LineSegment& s : SplitAndMergeExtractor(apart).Extract(scan))
+      kept_apart += on_column(s);
+    const ExtractedFeatures joined = SplitAndMergeExtractor().ExtractFeatures(scan);
+    for (const LineSegment& s : joined.lines) kept_joined += on_column(s);
+    for (const CircleFeature& c : joined.circles) {
+      circles_on_column +=
+          (c.centre - column.centre).norm() < 0.1 && std::abs(c.radius_m - column.radius_m) < 0.1;
+    }
+  }
+  EXPECT_GE(kept_apart, 10) << "each side alone is often a line";
+  EXPECT_LE(kept_joined, kept_apart / 2) << "apart " << kept_apart;
+  EXPECT_GE(circles_on_column, 30) << "the column is reported as a circle across the leg";
+}
+
+TEST(RoundObjectFilterTest, CollinearWallPiecesBehindALegStayLines) {
+  // The wall behind a leg in two pieces: no circle joins them, both stay exact lines.
+  const Disc leg{{1.5, 0.0}, 0.06};
+  const std::vector<LineSegment> lines =
+      SplitAndMergeExtractor().Extract(ScanScene({kRoom}, {leg}));
+  int on_far_wall = 0;
+  for (const LineSegment& s : lines) {
+    on_far_wall += std::abs(s.start.x() - 3.5) < 1e-6 && std::abs(s.end.x() - 3.5) < 1e-6;
+  }
+  EXPECT_EQ(on_far_wall, 2);
+}
+
 TEST(RoundObjectFilterTest, BadOptionsAreRejectedByField) {
   const auto message = [](const RoundObjectOptions& o) {
     try {

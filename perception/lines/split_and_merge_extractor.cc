@@ -53,6 +53,8 @@ std::vector<LineSegment> SplitAndMergeExtractor::Run(const ScanPoints& scan,
     return options_.fit == LineFitMethod::kModal ? FitSegmentModal(p, indices, options_.modal)
                                                  : FitSegmentTls(p, indices);
   };
+  // Each group's lines before their fit, in scan order (groups too small for a line give none).
+  std::vector<std::vector<std::vector<int>>> group_lines;
   for (std::vector<int>& group : SplitAtBreakpoints(scan, options_.breakpoints)) {
     if (static_cast<int>(group.size()) < min_points) continue;
     std::vector<std::vector<int>> pieces =
@@ -115,7 +117,14 @@ std::vector<LineSegment> SplitAndMergeExtractor::Run(const ScanPoints& scan,
       merged_moments.resize(merged.size());
     }
     RefineCorners(p, group, whole_scan, &merged, &merged_moments);
-    for (const auto& piece : merged) {
+    if (!merged.empty()) group_lines.push_back(std::move(merged));
+  }
+  if (options_.round_objects.join_across_occluders) {
+    JoinRoundObjectsAcrossOccluders(scan, options_.breakpoints.sigma_m, options_.round_objects,
+                                    &group_lines, circles);
+  }
+  for (const auto& lines : group_lines) {
+    for (const auto& piece : lines) {
       if (static_cast<int>(piece.size()) < min_points) continue;
       LineSegment s = fit(piece);
       if (s.LengthM() < options_.filter.min_length_m) continue;

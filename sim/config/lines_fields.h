@@ -68,6 +68,7 @@ void VisitFields(A& a, SplitAndMergeOptions& o) {
   a.Nested("modal", o.modal);
   VisitFields(a, o.filter);
   VisitFields(a, o.round_objects);
+  a("join_across_occluders", o.round_objects.join_across_occluders);
 }
 
 template <typename A>
