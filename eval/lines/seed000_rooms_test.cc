@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <vector>
+
 #include "sim/config/experiment_config.h"
 #include "sim/runner/metrics.h"
 #include "tests/support/mujoco_test_support.h"
@@ -53,6 +56,40 @@ TEST(Seed000RoomsTest, RigAtSpawnSeesTheHallFromThere) {
   bool saw_close_point = false;
   for (const auto& p : result.scans.front().points.points) saw_close_point |= p.norm() < 1.8;
   EXPECT_TRUE(saw_close_point);
+}
+
+// The option replaces every scan by the per-beam median of the same seed's raw scans: computed here
+// from the raw run by hand (3 scans: the middle return of each beam; a beam with returns in fewer
+// than 2 of them gives none).
+TEST(Seed000RoomsTest, MedianOfScansIsThePerBeamMedianOfTheRawScans) {
+  const auto config = Config({"seed000_rooms.scans=3"});
+  const Seed000RoomsOptions options = ReadSeed000RoomsOptions(config);
+  const std::vector<Seed000Room> rooms = RoomsToRun(config, options);
+  ASSERT_EQ(rooms.size(), 1u);
+  const auto raw = RunSeed000Room(config, rooms.front(), 3, false);
+  const auto median = RunSeed000Room(config, rooms.front(), 3, true);
+  using Side = std::vector<sim::LaserRecord> BackToBackScans::*;
+  for (const Side side : {&BackToBackScans::front, &BackToBackScans::back}) {
+    const auto& raw_records = raw.rig.*side;
+    const auto& median_records = median.rig.*side;
+    ASSERT_EQ(raw_records.size(), 3u);
+    ASSERT_EQ(median_records.size(), 3u);
+    const double range_max = raw_records.front().scan.range_max_m;
+    int beams_that_moved = 0;
+    for (std::size_t b = 0; b < raw_records.front().scan.ranges_m.size(); ++b) {
+      std::vector<double> returns;
+      for (const auto& r : raw_records) {
+        if (r.scan.ranges_m[b] < range_max) returns.push_back(r.scan.ranges_m[b]);
+      }
+      std::sort(returns.begin(), returns.end());
+      double expected = range_max;
+      if (returns.size() == 3) expected = returns[1];
+      if (returns.size() == 2) expected = 0.5 * (returns[0] + returns[1]);
+      for (const auto& r : median_records) ASSERT_EQ(r.scan.ranges_m[b], expected) << "beam " << b;
+      beams_that_moved += expected != raw_records.front().scan.ranges_m[b];
+    }
+    EXPECT_GT(beams_that_moved, 100);  // the scans are noisy: the median is not the first scan
+  }
 }
 
 TEST(Seed000RoomsTest, RigAtRejectsAnythingElse) {
