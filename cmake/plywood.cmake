@@ -48,6 +48,14 @@ function(plywood_add_folder_library target)
   target_compile_features(${target} PUBLIC cxx_std_20)
 endfunction()
 
+# What every test's precompiled header holds: GoogleTest, Eigen and the standard headers the tests
+# use most; simulator-side tests add MuJoCo and yaml-cpp (hardware-side ones may not include them).
+set(PLYWOOD_TEST_PCH_HEADERS
+    <gtest/gtest.h> <Eigen/Core> <Eigen/Geometry> <algorithm> <cmath> <cstdint> <filesystem>
+    <fstream> <functional> <limits> <map> <memory> <numbers> <random> <sstream> <stdexcept>
+    <string> <utility> <vector>)
+set(PLYWOOD_SIM_TEST_PCH_HEADERS <mujoco/mujoco.h> <yaml-cpp/yaml.h>)
+
 # Registers every *_test.cc in the current folder and its subfolders as its own test executable
 # <prefix>.<name> linked to `libs` (simulator-side folders add plywood_test_support, which needs
 # the simulator; hardware-side tests build with their own layers alone).
@@ -56,11 +64,29 @@ function(plywood_add_folder_tests prefix)
     return()
   endif()
   file(GLOB_RECURSE tests CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/*_test.cc")
+  if(NOT tests)
+    return()
+  endif()
+  # GoogleTest, Eigen and the standard headers are most of a test's compile time (CI builds every
+  # test from scratch, twice with the sanitizers): they are parsed once per layer into a
+  # precompiled header that the layer's tests share. The holder links what the tests link, so it
+  # is compiled with their flags. Hardware-side layers get only what they may include.
+  set(pch_target "${prefix}.test_pch")
+  set(pch_source "${CMAKE_CURRENT_BINARY_DIR}/${prefix}_test_pch.cc")
+  file(CONFIGURE OUTPUT "${pch_source}" CONTENT "// The holder of ${prefix}'s tests' precompiled header.\n")
+  add_library(${pch_target} OBJECT "${pch_source}")
+  target_link_libraries(${pch_target} PRIVATE ${ARGN} GTest::gtest)
+  set(pch_headers ${PLYWOOD_TEST_PCH_HEADERS})
+  if(NOT prefix MATCHES "^(msgs|robot|perception)$")
+    list(APPEND pch_headers ${PLYWOOD_SIM_TEST_PCH_HEADERS})
+  endif()
+  target_precompile_headers(${pch_target} PRIVATE ${pch_headers})
   foreach(test_source ${tests})
     get_filename_component(name "${test_source}" NAME_WE)
     set(test_target "${prefix}.${name}")
     add_executable(${test_target} "${test_source}")
     target_link_libraries(${test_target} PRIVATE ${ARGN} GTest::gtest GTest::gtest_main)
+    target_precompile_headers(${test_target} REUSE_FROM ${pch_target})
     add_test(NAME ${test_target} COMMAND ${test_target} WORKING_DIRECTORY "${PROJECT_BINARY_DIR}")
     # Labelled by layer, so a subset runs by label (ctest -L perception; scripts/sanitize --ci).
     set_tests_properties(${test_target} PROPERTIES LABELS ${prefix})
