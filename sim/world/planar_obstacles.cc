@@ -189,6 +189,32 @@ const std::vector<int>& PlanarObstacles::Near(double x, double y) {
   return near_;
 }
 
+PlanarObstacles::DiscAgainstFootprint PlanarObstacles::AgainstFootprint(const double centre[2],
+                                                                        double radius_m) const {
+  DiscAgainstFootprint relation;
+  const int n = static_cast<int>(hull_.size() / 2);
+  const double* v = hull_.data();
+  for (int i = 0; i < n; ++i) {
+    const double* a = v + 2 * i;
+    const double signed_distance =
+        (centre[0] - a[0]) * normals_[2 * i] + (centre[1] - a[1]) * normals_[2 * i + 1];
+    if (signed_distance > 0.0) relation.centre_inside = false;
+    if (radius_m - signed_distance < relation.least_depth_m) {
+      relation.least_depth_m = radius_m - signed_distance;
+      relation.least_edge = i;
+    }
+    double q[2];
+    NearestOnSegment(a, v + 2 * ((i + 1) % n), centre, q);
+    const double distance = std::hypot(centre[0] - q[0], centre[1] - q[1]);
+    if (distance < relation.nearest_m) {
+      relation.nearest_m = distance;
+      relation.nearest_point[0] = q[0];
+      relation.nearest_point[1] = q[1];
+    }
+  }
+  return relation;
+}
+
 double PlanarObstacles::Gap(const Obstacle& o, const msgs::Pose2D& X_WR, double witness[2],
                             bool overlap_only) const {
   // The obstacle in the robot frame.
@@ -198,29 +224,15 @@ double PlanarObstacles::Gap(const Obstacle& o, const msgs::Pose2D& X_WR, double 
   const int n = static_cast<int>(hull_.size() / 2);
   const double* v = hull_.data();
   if (o.disc) {
-    bool inside = true;
-    double best = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < n; ++i) {
-      const double* a = v + 2 * i;
-      const double* b = v + 2 * ((i + 1) % n);
-      if ((centre[0] - a[0]) * normals_[2 * i] + (centre[1] - a[1]) * normals_[2 * i + 1] > 0.0) {
-        inside = false;
-      }
-      double q[2];
-      NearestOnSegment(a, b, centre, q);
-      const double distance = std::hypot(centre[0] - q[0], centre[1] - q[1]);
-      if (distance < best) {
-        best = distance;
-        witness[0] = q[0];
-        witness[1] = q[1];
-      }
-    }
-    if (inside) {
+    const DiscAgainstFootprint relation = AgainstFootprint(centre, o.radius_m);
+    if (relation.centre_inside) {
       witness[0] = centre[0];
       witness[1] = centre[1];
       return -1.0;
     }
-    return best < o.radius_m ? -1.0 : best - o.radius_m;
+    witness[0] = relation.nearest_point[0];
+    witness[1] = relation.nearest_point[1];
+    return relation.nearest_m < o.radius_m ? -1.0 : relation.nearest_m - o.radius_m;
   }
   // A rectangle: its axes and corners in the robot frame, counter-clockwise.
   const double ux = c * o.ux + s * o.uy, uy = -s * o.ux + c * o.uy;
@@ -325,34 +337,16 @@ double PlanarObstacles::Penetration(const Obstacle& o, const msgs::Pose2D& X_WR,
   if (o.disc) {
     // Inside: out through the edge the centre is least deep behind; outside: straight away from
     // the disc's centre, from the footprint's point nearest it.
-    bool inside = true;
-    double least = std::numeric_limits<double>::infinity(), nearest = least;
-    double q_best[2] = {0.0, 0.0};
-    for (int i = 0; i < n; ++i) {
-      const double* a = v + 2 * i;
-      const double signed_distance =
-          (centre[0] - a[0]) * normals_[2 * i] + (centre[1] - a[1]) * normals_[2 * i + 1];
-      if (signed_distance > 0.0) inside = false;
-      if (o.radius_m - signed_distance < least) {
-        least = o.radius_m - signed_distance;
-        dir[0] = -normals_[2 * i];
-        dir[1] = -normals_[2 * i + 1];
-      }
-      double q[2];
-      NearestOnSegment(a, v + 2 * ((i + 1) % n), centre, q);
-      const double distance = std::hypot(centre[0] - q[0], centre[1] - q[1]);
-      if (distance < nearest) {
-        nearest = distance;
-        q_best[0] = q[0];
-        q_best[1] = q[1];
-      }
-    }
-    if (inside) {
-      depth = least;
+    const DiscAgainstFootprint relation = AgainstFootprint(centre, o.radius_m);
+    const double nearest = relation.nearest_m;
+    if (relation.centre_inside) {
+      depth = relation.least_depth_m;
+      dir[0] = -normals_[2 * relation.least_edge];
+      dir[1] = -normals_[2 * relation.least_edge + 1];
     } else if (nearest < o.radius_m && nearest > 0.0) {
       depth = o.radius_m - nearest;
-      dir[0] = (q_best[0] - centre[0]) / nearest;
-      dir[1] = (q_best[1] - centre[1]) / nearest;
+      dir[0] = (relation.nearest_point[0] - centre[0]) / nearest;
+      dir[1] = (relation.nearest_point[1] - centre[1]) / nearest;
     }
   } else {
     // A rectangle: the separating axis (its two axes, the footprint's edge normals) along which

@@ -2,6 +2,7 @@
 
 #include <mujoco/mujoco.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -69,6 +70,17 @@ class PlanarObstacles {
   // ascending: refreshed when the robot has moved more than half the pad since the last refresh,
   // from the obstacles grid_ lists under a box about (x, y).
   const std::vector<int>& Near(double x, double y);
+  // How a disc's centre (robot frame) lies against the footprint: inside it or not, the
+  // footprint's boundary point nearest it, and the edge it is least deep behind (the one a disc
+  // of radius_m leaves through by the least depth). Gap and Penetration share it.
+  struct DiscAgainstFootprint {
+    bool centre_inside = true;
+    double nearest_m = std::numeric_limits<double>::infinity();
+    double nearest_point[2] = {0.0, 0.0};
+    double least_depth_m = std::numeric_limits<double>::infinity();
+    int least_edge = 0;
+  };
+  DiscAgainstFootprint AgainstFootprint(const double centre[2], double radius_m) const;
   // Gap (>= 0) between the footprint at X_WR and obstacle `o`; -1 when they overlap. `witness`
   // gets the footprint's point nearest the obstacle (robot frame). With overlap_only, a rectangle
   // found apart returns 0 without its gap or witness.
