@@ -61,7 +61,7 @@ int FarthestFromChord(const double* xs, const double* ys, int begin, int end,
 
 std::vector<std::vector<int>> SplitByEndPointFit(std::span<const Eigen::Vector2d> p,
                                                  std::span<const int> group, double threshold_m,
-                                                 bool skip_single_outliers) {
+                                                 bool skip_single_outliers, int max_outlier_run) {
   const double threshold = threshold_m;
   if (group.size() < 2) return {};
   const int size = static_cast<int>(group.size());
@@ -124,6 +124,30 @@ std::vector<std::vector<int>> SplitByEndPointFit(std::span<const Eigen::Vector2d
       };
       if (worst - 1 >= lo && worst + 1 <= hi && near_chord(worst - 1) && near_chord(worst + 1)) {
         outlier[worst] = 1;
+        any_outlier = true;
+        stack.push_back({lo, hi});
+        continue;
+      }
+    }
+    if (max_outlier_run > 1) {
+      // A run of 2..max_outlier_run points around the farthest one, all beyond the threshold on
+      // the sensor's side (the origin), with two points on each side near the chord, the inner
+      // ones not its ends: something standing in front of the surface (a table leg), whose
+      // points cannot make a line of their own. The arm of a corner leaves the chord by equal
+      // steps, so from two points under half the threshold it cannot pass the threshold in one;
+      // a notch behind a wall is left to the split.
+      const double sensor_side = -normal.dot(a);
+      const auto beyond = [&](int k) {
+        const double d = normal.dot(q(k) - a);
+        return std::abs(d) > threshold && (d > 0.0) == (sensor_side > 0.0);
+      };
+      const auto near = [&](int k) { return ChordDistance(a, b, q(k)) < 0.5 * threshold; };
+      int first = worst, last = worst;
+      while (first - 1 > lo && last - first < max_outlier_run && beyond(first - 1)) --first;
+      while (last + 1 < hi && last - first < max_outlier_run && beyond(last + 1)) ++last;
+      if (beyond(worst) && last - first < max_outlier_run && first - 2 > lo && last + 2 < hi &&
+          near(first - 1) && near(first - 2) && near(last + 1) && near(last + 2)) {
+        for (int k = first; k <= last; ++k) outlier[k] = 1;
         any_outlier = true;
         stack.push_back({lo, hi});
         continue;

@@ -49,6 +49,8 @@ std::vector<LineSegment> SplitAndMergeExtractor::Run(const ScanPoints& scan,
   const auto& p = scan.points;
   const double threshold = options_.split_threshold_m;
   const int min_points = std::max(2, options_.filter.min_points);
+  // Runs of points too few for a line of their own, stepping off a wall and back (end_point_fit.h).
+  const int max_outlier_run = options_.skip_short_runs ? min_points - 1 : 0;
   const auto fit = [&](std::span<const int> indices) {
     return options_.fit == LineFitMethod::kModal ? FitSegmentModal(p, indices, options_.modal)
                                                  : FitSegmentTls(p, indices);
@@ -58,7 +60,7 @@ std::vector<LineSegment> SplitAndMergeExtractor::Run(const ScanPoints& scan,
   for (std::vector<int>& group : SplitAtBreakpoints(scan, options_.breakpoints)) {
     if (static_cast<int>(group.size()) < min_points) continue;
     std::vector<std::vector<int>> pieces =
-        SplitByEndPointFit(p, group, threshold, options_.skip_single_outliers);
+        SplitByEndPointFit(p, group, threshold, options_.skip_single_outliers, max_outlier_run);
     // Round objects first: the merge below can join a column's chords into one line again (the
     // union's own fit is closer to the arc than the chord the split tested).
     RemoveRoundObjects(p, options_.breakpoints.sigma_m, options_.round_objects, &pieces, circles);

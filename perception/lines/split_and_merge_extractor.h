@@ -28,6 +28,10 @@ struct SplitAndMergeOptions {
   // A farthest point whose neighbours both lie within half the threshold is a single outlier:
   // it is left out of the fit instead of splitting the wall.
   bool skip_single_outliers = true;
+  // A run of fewer than filter.min_points points (too few for a line of their own) that stands in
+  // front of a wall and steps back to it on both sides -- a table leg a few cm from the wall -- is
+  // left out the same way, instead of ending a piece whose chord it turns (end_point_fit.h).
+  bool skip_short_runs = true;
   LineFitMethod fit = LineFitMethod::kTotalLeastSquares;
   ModalFitOptions modal;
   // 4 points as seed 000's Table 2; 6 cm: chords across a table leg (5 cm) are not walls.

@@ -62,6 +62,7 @@ void VisitFields(A& a, SplitAndMergeOptions& o) {
   a.Nested("breakpoints", o.breakpoints);
   a("split_threshold_m", o.split_threshold_m);
   a("skip_single_outliers", o.skip_single_outliers);
+  a("skip_short_runs", o.skip_short_runs);
   a.Enum(
       "fit", o.fit, [](auto f) { return ToString(f); },
       [](const std::string& t) { return ParseLineFitMethod(t); });
