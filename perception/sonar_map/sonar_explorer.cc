@@ -63,6 +63,7 @@ void SonarExplorerOptions::Validate() const {
   RequirePositive("wall_distance_m", wall_distance_m);
   RequirePositive("perimeter_turn_rad", perimeter_turn_rad);
   RequirePositive("perimeter_max_s", perimeter_max_s);
+  RequirePositive("perimeter_stuck_turn_rad", perimeter_stuck_turn_rad);
   RequirePositive("perimeter_front_clearance_m", perimeter_front_clearance_m);
   RequirePositive("speed_m_s", speed_m_s);
   RequirePositive("turn_rate_rad_s", turn_rate_rad_s);
@@ -625,6 +626,7 @@ std::optional<msgs::WheelSpeedCommand> SonarExplorer::ReactToBump(
   const double bearing = X_WR.theta_rad + 2.0 * M_PI * panel / n;
   const Eigen::Vector2d direction(std::cos(bearing), std::sin(bearing));
   blocking_echoes_.push_back(Position(X_WR) + (options_.robot_radius_m + 0.02) * direction);
+  contacts_.push_back(blocking_echoes_.back());
   if (perimeter_done_ && !path_.empty()) GiveUpMove(Position(X_WR));
   path_.clear();
   heading_to_frontier_ = false;
@@ -663,6 +665,25 @@ bool SonarExplorer::MapBlocksFront(const msgs::Pose2D& X_WR) const {
       if (along > 0.0 && along < reach && std::abs(side) < half_width) return true;
     }
   return false;
+}
+
+std::optional<double> SonarExplorer::ContactAhead(const msgs::Pose2D& X_WR) const {
+  // The corridor of MapBlocksFront: a contact point is exact to the body's radius.
+  const double reach = options_.stop_range_m + options_.robot_radius_m;
+  const double half_width = options_.robot_radius_m + options_.front_margin_m;
+  const Eigen::Vector2d ahead(std::cos(X_WR.theta_rad), std::sin(X_WR.theta_rad));
+  std::optional<double> nearest_side;
+  double nearest_along = reach;
+  for (const Eigen::Vector2d& p : contacts_) {
+    const Eigen::Vector2d d = p - Position(X_WR);
+    const double along = d.dot(ahead);
+    const double side = ahead.x() * d.y() - ahead.y() * d.x();
+    if (along > 0.0 && along < nearest_along && std::abs(side) < half_width) {
+      nearest_along = along;
+      nearest_side = side;
+    }
+  }
+  return nearest_side;
 }
 
 msgs::WheelSpeedCommand SonarExplorer::Explore(const robot::ControllerInput& input) {
@@ -757,6 +778,12 @@ msgs::WheelSpeedCommand SonarExplorer::Decide(const robot::ControllerInput& inpu
   }
   if (!perimeter_done_) {
     if (!perimeter_start_s_) perimeter_start_s_ = input.time_s;
+    if (!spot_ || (Position(X_WR) - *spot_).norm() > options_.robot_radius_m) {
+      spot_ = Position(X_WR);
+      spot_turned_rad_ = 0.0;
+    } else if (last_theta_) {
+      spot_turned_rad_ += std::abs(msgs::WrapAngle(X_WR.theta_rad - *last_theta_));
+    }
     if (last_theta_ && follower_->wall())
       turned_rad_ += msgs::WrapAngle(X_WR.theta_rad - *last_theta_);
     last_theta_ = X_WR.theta_rad;
@@ -765,18 +792,26 @@ msgs::WheelSpeedCommand SonarExplorer::Decide(const robot::ControllerInput& inpu
     last_position_ = Position(X_WR);
     if ((std::abs(turned_rad_) >= options_.perimeter_turn_rad &&
          perimeter_travelled_m_ >= options_.perimeter_min_m) ||
-        input.time_s - *perimeter_start_s_ > options_.perimeter_max_s) {
+        input.time_s - *perimeter_start_s_ > options_.perimeter_max_s ||
+        spot_turned_rad_ >= options_.perimeter_stuck_turn_rad) {
       perimeter_done_ = true;
     } else {
       // The follower cannot hear an obstacle corner met head-on; a close front echo turns the
-      // robot on the spot away from the wall (on its left) until the way ahead is clear.
+      // robot on the spot away from the wall (on its left) until the way ahead is clear, and a
+      // point touched before away from that point.
       const msgs::WheelSpeedCommand command = follower_->Update(input);
-      if (robot::WheelSpeedsToTwist(spec_, command).linear_m_s > 0.0 &&
-          ((input.sonar != nullptr && FrontBlocked(*input.sonar).has_value()) ||
-           MapBlocksFront(X_WR))) {
+      if (robot::WheelSpeedsToTwist(spec_, command).linear_m_s > 0.0) {
         robot::BodyTwist turn;
         turn.angular_rad_s = -options_.turn_rate_rad_s;
-        return robot::TwistToWheelSpeeds(spec_, turn);
+        if ((input.sonar != nullptr && FrontBlocked(*input.sonar).has_value()) ||
+            MapBlocksFront(X_WR))
+          return robot::TwistToWheelSpeeds(spec_, turn);
+        if (options_.perimeter_avoids_contacts) {
+          if (const std::optional<double> side = ContactAhead(X_WR)) {
+            if (*side < 0.0) turn.angular_rad_s = options_.turn_rate_rad_s;
+            return robot::TwistToWheelSpeeds(spec_, turn);
+          }
+        }
       }
       return command;
     }

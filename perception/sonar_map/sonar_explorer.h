@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,6 +38,18 @@ struct SonarExplorerOptions {
   double wall_distance_m = 0.5;     // 0.45 grazed obstacle corners (layout 3)
   double perimeter_turn_rad = 6.0;  // heading change that closes the circuit (2 pi minus slack)
   double perimeter_max_s = 150.0;
+  // The follower turns on the spot until the lane ahead is clear by perimeter_front_clearance_m +
+  // wall_distance_m; in a cramped part of a small room no heading is, and it turned for the rest
+  // of perimeter_max_s (generated rooms: up to 145 s, ~10,000 deg in a run). Once the robot has
+  // turned this much without leaving a circle of robot_radius_m, the perimeter ends there and the
+  // planner takes over. Two turns: the follower's own turns ended by 3.7 pi in most runs, and
+  // ending them at 3 pi changed runs that would have gone on (docs/sonar_map.md, round 20).
+  double perimeter_stuck_turn_rad = 4.0 * std::numbers::pi;
+  // A point a bump panel touched during the perimeter lies where the sonar does not hear (a
+  // corner inside its blanking range or met at a grazing angle): while it is in the corridor the
+  // body sweeps ahead the robot turns on the spot away from it, as for a front echo, instead of
+  // driving into it again after backing off (generated rooms: up to 31 contacts on one corner).
+  bool perimeter_avoids_contacts = true;
   // The follower turns on the spot at an inner corner when the wall ahead is this close. With 0.8 m
   // the robot stays about 0.8 m off the walls of a 3 m room; 0.55-0.7 m were tried on unseen rooms
   // (docs/sonar_map.md) and were no better, as the follower then cuts its turns short.
@@ -136,6 +149,8 @@ class SonarExplorer final : public robot::Controller {
   // says, not where the robot goes.
   CognitiveMap PlanningMap() const;
   const std::optional<msgs::Pose2D>& start() const { return start_; }
+  // Whether the boundary-following phase is over.
+  bool perimeter_done() const { return perimeter_done_; }
   // Obstacles gone round (or given up after circuit_max_s), as their rectangles were then.
   const std::vector<Rect>& circled_obstacles() const { return circled_; }
   // The circuits that closed: four boundary lines heard round the obstacle, corners where
@@ -195,6 +210,8 @@ class SonarExplorer final : public robot::Controller {
   std::optional<msgs::WheelSpeedCommand> ReactToBump(const robot::ControllerInput& input);
   // Whether an occupied grid cell lies in the corridor the body sweeps within stop_range_m.
   bool MapBlocksFront(const msgs::Pose2D& X_WR) const;
+  // The sideways offset (left positive) of the nearest contact point in that corridor, if any.
+  std::optional<double> ContactAhead(const msgs::Pose2D& X_WR) const;
 
   robot::DiffDriveSpec spec_;
   SonarExplorerOptions options_;
@@ -212,6 +229,9 @@ class SonarExplorer final : public robot::Controller {
   double perimeter_travelled_m_ = 0.0;
   std::optional<Eigen::Vector2d> last_position_;
   std::optional<double> perimeter_start_s_;
+  // Where the robot began turning without moving on, and how far it has turned since.
+  std::optional<Eigen::Vector2d> spot_;
+  double spot_turned_rad_ = 0.0;
   std::optional<double> explore_start_s_;
   // Visit counts live on the grid's cells so they survive re-partitioning.
   std::vector<double> visits_;
@@ -252,6 +272,7 @@ class SonarExplorer final : public robot::Controller {
   bool heading_to_frontier_ = false;
   // World points of echoes that blocked a move and of bumps: occupied for the planner.
   std::vector<Eigen::Vector2d> blocking_echoes_;
+  std::vector<Eigen::Vector2d> contacts_;  // the bumps alone
   double backing_off_until_s_ = -1.0;
   double backing_off_speed_m_s_ = 0.0;
   double last_replan_s_ = -1e9;

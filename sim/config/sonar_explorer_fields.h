@@ -35,6 +35,8 @@ void VisitFields(A& a, perception::SonarExplorerOptions& o) {
   a("wall_distance_m", o.wall_distance_m);
   a("perimeter_turn_rad", o.perimeter_turn_rad);
   a("perimeter_max_s", o.perimeter_max_s);
+  a("perimeter_stuck_turn_rad", o.perimeter_stuck_turn_rad);
+  a("perimeter_avoids_contacts", o.perimeter_avoids_contacts);
   a("perimeter_front_clearance_m", o.perimeter_front_clearance_m);
   a("speed_m_s", o.speed_m_s);
   a("turn_rate_rad_s", o.turn_rate_rad_s);
