@@ -284,6 +284,15 @@ TEST_F(ReliabilityTest, ExtractorOptionsThatNeverFinishOrMeanNothingAreRefused) 
   EXPECT_EQ(Run(yaml, "--set lines.ransac.iterations=100000").exit_code, 0);
 }
 
+// audit s32 (UBSan): square_path lays out every lap's moves up front; laps: 1000000000 overflowed
+// 4 * laps (signed int), and 1e8 laps would ask for gigabytes.
+TEST_F(ReliabilityTest, SquarePathLapsThatOverflowAreRefused) {
+  const std::string yaml = HallExperiment(0.0, 0.0, "controller: {type: square_path, side_m: 1}\n");
+  ExpectRefused(yaml, "--set controller.laps=1000000000",
+                {"experiment.yaml: controller.laps: must be in [1, 10000], got 1000000000"});
+  EXPECT_EQ(Run(yaml, "--set controller.laps=10000").exit_code, 0);
+}
+
 // A sonar at 1e300 Hz never left SensorSchedule's catch-up loop (the run hung); one faster than the
 // physics step silently got one sample per step. Every rate is refused above 1 / timestep_s.
 TEST_F(ReliabilityTest, RatesFasterThanThePhysicsStepAreRefused) {
