@@ -10,6 +10,7 @@
 
 #include "apps/command.h"
 #include "eval/bench/bench_experiment.h"
+#include "sim/config/experiment_config.h"
 #include "sim/runner/format_number.h"
 
 namespace plywood::apps {
@@ -117,6 +118,13 @@ Command AddBenchCommand(CLI::App& app) {
             }
             if (!(options->seconds > 0.0 && options->seconds <= 1e5)) {
               throw UsageError("bench: --seconds: must be in (0, 1e5] simulated seconds, got " +
+                               sim::FormatNumber(options->seconds));
+            }
+            // Shorter than one step simulates nothing: 0 x real time, "-nan" rays per second.
+            const double step_s = sim::PhysicsOptions{}.timestep_s;
+            if (options->seconds < step_s) {
+              throw UsageError("bench: --seconds: must be at least one physics step (" +
+                               sim::FormatNumber(step_s) + " s), got " +
                                sim::FormatNumber(options->seconds));
             }
             if (options->repeats < 1 || options->repeats > 1000) {

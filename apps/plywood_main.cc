@@ -103,6 +103,18 @@ int Main(int argc, char** argv) {
 }  // namespace
 }  // namespace plywood::apps
 
+namespace {
+
+// One line whatever the message carries: a flag's value or a file name may hold a line break.
+std::string OneLine(std::string text) {
+  for (char& c : text) {
+    if (c == '\n' || c == '\r') c = ' ';
+  }
+  return text;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   try {
     return plywood::apps::Main(argc, argv);
@@ -110,10 +122,10 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "plywood: %s\n", e.what());
     return 2;
   } catch (const std::invalid_argument& e) {  // UsageError too
-    std::fprintf(stderr, "plywood: %s\n", e.what());
+    std::fprintf(stderr, "plywood: %s\n", OneLine(e.what()).c_str());
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "plywood: error: %s\n", e.what());
+    std::fprintf(stderr, "plywood: error: %s\n", OneLine(e.what()).c_str());
     return 1;
   }
 }

@@ -9,10 +9,32 @@
 
 #include "apps/command.h"
 #include "eval/protocol.h"
+#include "msgs/shortest_number.h"
 #include "render/video_recorder.h"
 #include "sim/config/experiment_config.h"
 
 namespace plywood::apps {
+namespace {
+
+// Checked before the run: ffmpeg would only fail at the first frame, after part of the run, with
+// its own line on stderr and then two of ours (exit 1). CLI11's range check lets NaN through.
+void RequireWritableVideo(const std::filesystem::path& video, double fps) {
+  if (!(fps >= 1.0 && fps <= 60.0)) {
+    throw UsageError("run: --video-fps: must be in [1, 60] frames per simulated second, got " +
+                     msgs::ShortestNumber(fps));
+  }
+  std::error_code error;
+  if (std::filesystem::is_directory(video, error)) {
+    throw UsageError("--video: " + video.string() + " is a folder; give the video file's name");
+  }
+  const std::filesystem::path folder = video.has_parent_path() ? video.parent_path() : ".";
+  if (!std::filesystem::is_directory(folder, error)) {
+    throw UsageError("--video: " + video.string() + ": no folder " + folder.string() +
+                     " to write it in");
+  }
+}
+
+}  // namespace
 
 Command AddRunCommand(CLI::App& app) {
   struct Flags {
@@ -75,6 +97,7 @@ Command AddRunCommand(CLI::App& app) {
                 throw UsageError("--video: expected a file name ending in .mp4, got '" +
                                  flags->video + "'");
               }
+              RequireWritableVideo(flags->video, flags->video_fps);
               eval::RequireObservableProtocol(config, "--video");
               video = std::make_unique<render::VideoRecorder>(
                   flags->video, render::VideoOptions{.fps = flags->video_fps});

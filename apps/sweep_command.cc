@@ -105,6 +105,15 @@ Command AddSweepCommand(CLI::App& app) {
         if (!inv.slurm && (inv.dry_run || !inv.slurm_options.partition.empty())) {
           throw UsageError("sweep: --dry-run and --partition go with --slurm");
         }
+        // The name goes into the job script's #SBATCH line: a line break would start a command.
+        if (inv.slurm_options.partition.find_first_not_of(
+                "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.-,") !=
+            std::string::npos) {
+          throw UsageError(
+              "sweep: --partition: expected Slurm partition names (letters, digits, '_', '.', "
+              "'-'; ',' between several), got '" +
+              inv.slurm_options.partition + "'");
+        }
         inv.collect = !flags->no_collect;
         inv.sweep_file = flags->sweep;
         inv.plywood = SelfExecutable();

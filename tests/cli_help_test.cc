@@ -125,6 +125,9 @@ TEST(CliHelpTest, VersionIsTheProjectVersion) {
 TEST(CliHelpTest, UsageErrorsAreOneLineNamingTheCulpritWithExitCode2) {
   const fs::path dir = MakeTempDir("cli_usage");
   const fs::path experiment = SourceRoot() / "experiments" / "default.yaml";
+  const fs::path sweep = SourceRoot() / "experiments" / "sweeps" / "minimal.yaml";
+  const fs::path folder_mp4 = dir / "folder.mp4";
+  fs::create_directories(folder_mp4);
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"fly", "fly"},
       {"--colour", "--colour"},
@@ -154,6 +157,20 @@ TEST(CliHelpTest, UsageErrorsAreOneLineNamingTheCulpritWithExitCode2) {
       {"train sonar-net --hidden 0,16", "train: --hidden: layer sizes must be in [1, 256]"},
       {"train sonar-net --hidden 4,4,4,4,4,4,4,4", "train: --hidden: at most 7 layers"},
       {"train sonar-net --out " + dir.string(), "train: --out: " + dir.string() + " is a folder"},
+      // audit s32: a bench shorter than one step printed "0 x real time" and "-nan rays per wall
+      // second" with exit 0; a video into a missing folder or onto a folder failed after the run
+      // with ffmpeg's line and two of ours (exit 1); --video-fps nan named "fps"; a line break in
+      // --partition became a command of the Slurm job script (exit 0).
+      {"bench --seconds 0.001", "bench: --seconds: must be at least one physics step (0.01 s)"},
+      {"run " + experiment.string() + " --video " + (dir / "no_folder" / "v.mp4").string(),
+       "--video: " + (dir / "no_folder" / "v.mp4").string() + ": no folder"},
+      {"run " + experiment.string() + " --video " + folder_mp4.string(),
+       "--video: " + folder_mp4.string() + " is a folder"},
+      {"run " + experiment.string() + " --video " + (dir / "v.mp4").string() + " --video-fps nan",
+       "run: --video-fps: must be in [1, 60] frames per simulated second, got nan"},
+      {"sweep " + sweep.string() + " --out " + (dir / "sweep").string() +
+           " --slurm --dry-run --partition 'debug\ntouch pwned'",
+       "sweep: --partition: expected Slurm partition names"},
   };
   for (const auto& [args, culprit] : cases) {
     SCOPED_TRACE(args);
@@ -163,6 +180,8 @@ TEST(CliHelpTest, UsageErrorsAreOneLineNamingTheCulpritWithExitCode2) {
     EXPECT_EQ(r.err.rfind("plywood: ", 0), 0u) << r.err;
     EXPECT_NE(r.err.find(culprit), std::string::npos) << r.err;
   }
+  EXPECT_FALSE(fs::exists(dir / "sweep" / "slurm" / "sweep.sbatch"));
+  EXPECT_FALSE(fs::exists(dir / "v.mp4"));
 }
 
 // A short run of a small room, written to `out`.

@@ -24,6 +24,7 @@
 #include "sim/runner/experiment_runner.h"
 #include "tests/support/cli_test_support.h"
 #include "tests/support/mujoco_test_support.h"
+#include "tests/support/nested_yaml_aliases.h"
 
 namespace plywood {
 namespace {
@@ -31,6 +32,7 @@ namespace {
 namespace fs = std::filesystem;
 using testing::CliResult;
 using testing::MakeTempDir;
+using testing::NestedYamlAliases;
 using testing::RunPlywood;
 using testing::Slurp;
 using testing::WriteFile;
@@ -69,6 +71,12 @@ class ReliabilityTest : public ::testing::Test {
  protected:
   fs::path Dir() {
     return MakeTempDir(std::string("reliability_") +
+                       ::testing::UnitTest::GetInstance()->current_test_info()->name());
+  }
+
+  // For the test's own world files: ExpectRefused and Run empty Dir() before every run.
+  fs::path WorldDir() {
+    return MakeTempDir(std::string("reliability_worlds_") +
                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
   }
 
@@ -252,6 +260,39 @@ TEST_F(ReliabilityTest, RunsOfMoreThanAHundredMillionStepsAreRefused) {
                 {"physics.timestep_s", "steps"});
 }
 
+// audit s32: a run shorter than one physics step simulated nothing and reported its figures (an ATE
+// of 0 m) with exit 0.
+TEST_F(ReliabilityTest, RunsShorterThanOnePhysicsStepAreRefused) {
+  ExpectRefused(HallExperiment(0.0, 0.0), "--set duration_s=1e-300",
+                {"experiment.yaml: duration_s: must be at least one physics step "
+                 "(physics.timestep_s = 0.01 s), got 1e-300"});
+  ExpectRefused(HallExperiment(0.0, 0.0), "--set duration_s=0.004 --set physics.timestep_s=0.005",
+                {"duration_s: must be at least one physics step", "got 0.004"});
+  EXPECT_EQ(Run(HallExperiment(0.0, 0.0), "--set duration_s=0.01").exit_code, 0);
+}
+
+// audit s32: RANSAC at 2e9 iterations per line never finished (each scores every point); a
+// negative incremental min_length_m was taken as 0 where every other extractor refuses it.
+TEST_F(ReliabilityTest, ExtractorOptionsThatNeverFinishOrMeanNothingAreRefused) {
+  const std::string yaml = HallExperiment(0.0, 0.0, "lines: {extractors: [ransac, incremental]}\n",
+                                          "{encoders: {}, laser: {}}");
+  ExpectRefused(
+      yaml, "--set lines.ransac.iterations=2000000000",
+      {"experiment.yaml: lines.ransac.iterations: must be in [1, 100000], got 2000000000"});
+  ExpectRefused(yaml, "--set lines.incremental.min_length_m=-1",
+                {"experiment.yaml: lines.incremental.min_length_m: must be >= 0, got -1"});
+  EXPECT_EQ(Run(yaml, "--set lines.ransac.iterations=100000").exit_code, 0);
+}
+
+// audit s32 (UBSan): square_path lays out every lap's moves up front; laps: 1000000000 overflowed
+// 4 * laps (signed int), and 1e8 laps would ask for gigabytes.
+TEST_F(ReliabilityTest, SquarePathLapsThatOverflowAreRefused) {
+  const std::string yaml = HallExperiment(0.0, 0.0, "controller: {type: square_path, side_m: 1}\n");
+  ExpectRefused(yaml, "--set controller.laps=1000000000",
+                {"experiment.yaml: controller.laps: must be in [1, 10000], got 1000000000"});
+  EXPECT_EQ(Run(yaml, "--set controller.laps=10000").exit_code, 0);
+}
+
 // A sonar at 1e300 Hz never left SensorSchedule's catch-up loop (the run hung); one faster than the
 // physics step silently got one sample per step. Every rate is refused above 1 / timestep_s.
 TEST_F(ReliabilityTest, RatesFasterThanThePhysicsStepAreRefused) {
@@ -326,13 +367,54 @@ TEST_F(ReliabilityTest, ALogWithoutAValidRayIsRefused) {
 }
 
 TEST_F(ReliabilityTest, AWorldWithoutAFloorIsRefused) {
-  const fs::path dir = Dir();
+  const fs::path dir = WorldDir();
   const fs::path world = WriteFile(dir / "floorless.xml",
                                    "<mujoco><worldbody><geom name=\"wall\" type=\"box\" pos=\"5 0 "
                                    "0.5\" size=\"0.1 5 0.5\"/></worldbody></mujoco>\n");
   std::string yaml = HallExperiment(0.0, 0.0);
   yaml.replace(yaml.find("worlds/hall.xml"), std::string("worlds/hall.xml").size(), world.string());
-  ExpectRefused(yaml, "", {"experiment.yaml", "world", "floor"});
+  // (audit s32: the world was written into Dir(), which ExpectRefused empties, so this passed on
+  // "world: no such file: .../floorless.xml".)
+  ExpectRefused(yaml, "", {"experiment.yaml: world: ", "floorless.xml: the world has no floor"});
+}
+
+// audit s32: MuJoCo compiles pos="nan 0 0.5" without a word. With the contact drive the geom was
+// nowhere and the run ended with exit 0 (every figure without it); a NaN size was reported as the
+// robot overlapping the geom; the planar drive said only "BoxGrid2D: a box is not finite".
+TEST_F(ReliabilityTest, WorldGeomsThatAreNotFiniteNumbersAreRefused) {
+  const fs::path dir = WorldDir();
+  const std::string floor = "<geom name=\"floor\" type=\"plane\" size=\"5 5 0.1\"/>";
+  for (const auto& [box, message] : std::vector<std::pair<std::string, std::string>>{
+           {"pos=\"nan 0 0.5\" size=\"0.1 0.1 0.5\"",
+            "geom 'box': pos is not a finite number (nan 0 0.5)"},
+           {"pos=\"2 0 0.5\" size=\"nan 0.1 0.5\"",
+            "geom 'box': size is not a finite number (nan 0.1 0.5)"}}) {
+    const fs::path world = WriteFile(dir / "nan_room.xml", "<mujoco><worldbody>" + floor +
+                                                               "<geom name=\"box\" type=\"box\" " +
+                                                               box + "/></worldbody></mujoco>\n");
+    std::string yaml = HallExperiment(0.0, 0.0);
+    yaml.replace(yaml.find("worlds/hall.xml"), std::string("worlds/hall.xml").size(),
+                 world.string());
+    for (const std::string drive : {"contact", "planar"}) {
+      SCOPED_TRACE(box + " " + drive);
+      ExpectRefused(yaml, "--set physics.drive=" + drive, {"nan_room.xml: " + message});
+    }
+  }
+}
+
+// audit s32: a world's spawn_0 of NaN was blamed on the experiment ("robot.spawn: the robot at
+// (nan, 0) is outside every room"), which has no robot.spawn.
+TEST_F(ReliabilityTest, AWorldSpawnThatIsNotANumberIsBlamedOnTheWorld) {
+  const fs::path dir = WorldDir();
+  const fs::path world =
+      WriteFile(dir / "nan_spawn.xml",
+                "<mujoco><custom><numeric name=\"spawn_0\" data=\"nan 0 0\"/></custom><worldbody>"
+                "<geom type=\"plane\" size=\"5 5 0.1\"/></worldbody></mujoco>\n");
+  const std::string yaml = "name: nan_spawn\nduration_s: 0.5\nworld: " + world.string() +
+                           "\nrobot: {model: p3dx}\noutput: {snapshot: false}\n";
+  ExpectRefused(yaml, "",
+                {"nan_spawn.xml: spawn_0: expected three finite numbers (x_m y_m theta_deg), got "
+                 "nan 0 0"});
 }
 
 TEST_F(ReliabilityTest, DuplicateKeysAreRefusedNamingTheKey) {
@@ -340,6 +422,26 @@ TEST_F(ReliabilityTest, DuplicateKeysAreRefusedNamingTheKey) {
                 {"experiment.yaml", "duration_s", "duplicate"});
   ExpectRefused(HallExperiment(0.0, 0.0, "controller: {type: idle, type: square_path}\n"), "",
                 {"controller.type", "duplicate"});
+}
+
+// Ten nested aliases ("billion laughs"): the duplicate-key check walked their 10^10 nodes for ever.
+TEST_F(ReliabilityTest, AliasesThatExpandToBillionsOfNodesAreRefused) {
+  // The walk passes a million nodes in the sixth list (11 + 111 + ... + 111111 nodes before it).
+  ExpectRefused(
+      HallExperiment(0.0, 0.0) + NestedYamlAliases("laugh"), "",
+      {"experiment.yaml: laugh5[", "the document expands to more than 1000000 YAML nodes"});
+  // The same from a --set value, which is a YAML document of its own.
+  std::string value = NestedYamlAliases("v");
+  value.pop_back();
+  std::replace(value.begin(), value.end(), '\n', ',');
+  ExpectRefused(HallExperiment(0.0, 0.0), "--set 'output.x={" + value + "}'",
+                {"--set output.x=", "v5[", "the document expands to more than 1000000 YAML nodes"});
+  // Aliases that stay small are YAML as usual.
+  const sim::ExperimentConfig config = sim::ParseExperimentConfig(
+      HallExperiment(0.0, 0.0, "controller: {type: waypoints, waypoints: [&p [1, 0.5], *p]}\n"),
+      "experiment.yaml", fs::path(PLYWOOD_SOURCE_ROOT));
+  ASSERT_EQ(config.controller.waypoints.waypoints.size(), 2u);
+  EXPECT_EQ(config.controller.waypoints.waypoints[1].y_m, 0.5);
 }
 
 // fuzz30: a gyro bias, noise or scale error of 1e300 drove the EKF to NaN: metrics.json held null

@@ -17,6 +17,7 @@
 #include "plywood_paths.h"
 #include "tests/support/cli_test_support.h"
 #include "tests/support/mujoco_test_support.h"
+#include "tests/support/nested_yaml_aliases.h"
 
 namespace plywood {
 namespace {
@@ -165,6 +166,9 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
        {"experiment: " + experiment + "\nset:\n  duration_s: [2]\n  duration_s: [3]\n",
         "duration_s"}},
       {"bad_name", {"experiment: " + experiment + "\nname: ../../escape\n", "name"}},
+      {"nested_aliases",
+       {"experiment: " + experiment + "\n" + testing::NestedYamlAliases("laugh"),
+        "the document expands to more than 1000000 YAML nodes"}},
   };
   for (const auto& [name, c] : cases) {
     SCOPED_TRACE(name);
@@ -417,6 +421,44 @@ TEST(SweepCliTest, GeneratedWorldsGiveTheSameResultsWhereverTheSweepFolderIs) {
       RunPlywood("sweep " + sweep.string() + " --out " + (dir / "moved").string(), dir);
   ASSERT_EQ(again.exit_code, 0) << again.err;
   EXPECT_EQ(Slurp(dir / "moved" / "results.csv"), a);
+}
+
+// audit s32: a sweep hands each cell its world as `--set world=PATH`, which reads PATH as YAML:
+// "room #2.xml" was read as "room" (a comment), so the cells ran whatever file is called "room",
+// and every cell of a generated-world sweep into a folder called "out #1" failed.
+TEST(SweepCliTest, WorldPathsThatLookLikeYamlAreRunAsThemselves) {
+  const fs::path dir = MakeTempDir("SweepYamlLikePaths");
+  fs::copy_file(SourceRoot() / "worlds/hall.xml", dir / "room #2.xml");
+  fs::copy_file(SourceRoot() / "worlds/seed000_room_1.xml", dir / "room");  // the wrong one
+  const std::string experiment = (SourceRoot() / "experiments/default.yaml").string();
+  const std::string settings = "seeds: [1]\nset: {duration_s: [1], output.snapshot: [false]}\n";
+  const fs::path files = WriteFile(
+      dir / "files.yaml", "experiment: " + experiment + "\nworlds: ['room #2.xml']\n" + settings);
+  auto r =
+      RunPlywood("sweep " + files.string() + " --out '" + (dir / "a").string() + "' --quiet", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = eval::ParseCsv(Slurp(dir / "a" / "results.csv"));
+  ASSERT_EQ(rows.size(), 2u);
+  const fs::path run = dir / "a" / "runs" / rows[1][0];  // the id
+  EXPECT_NE(Slurp(run / "metrics.json").find("\"world\": \"room #2.xml\""), std::string::npos);
+
+  const fs::path generated = WriteFile(
+      dir / "generated.yaml",
+      "experiment: " + experiment + "\nworlds: {family: room, count: 1, seed: 5}\n" + settings);
+  r = RunPlywood(
+      "sweep " + generated.string() + " --out '" + (dir / "out #1").string() + "' --quiet", dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err << Slurp(dir / "out #1" / "failures.csv");
+  EXPECT_EQ(CountRunDirs(dir / "out #1"), 1);
+
+  // A line break in the folder's path would start a command in the Slurm job script.
+  r = RunPlywood("sweep " + files.string() + " --out '" + (dir / "b").string() +
+                     "\ntouch pwned' --slurm --dry-run",
+                 dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err,
+            "plywood: --out: a Slurm job cannot write to a folder whose path holds a line "
+            "break\n");
+  EXPECT_FALSE(fs::exists(dir / "b\ntouch pwned"));
 }
 
 TEST(SweepCliTest, UnsafeOrUnclearOutputsAreRefused) {

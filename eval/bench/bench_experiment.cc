@@ -9,6 +9,7 @@
 #include "eval/protocol.h"
 #include "sim/config/experiment_config.h"
 #include "sim/config/robot_catalog.h"
+#include "sim/config/yaml_text_value.h"
 #include "sim/runner/format_number.h"
 
 namespace plywood::eval {
@@ -19,7 +20,8 @@ constexpr int kMaxDefaultRunRepeats = 100;
 // `planar`: the same run with physics.drive: planar (no mj_step; sim/world/planar_drive.h).
 sim::ExperimentConfig BenchConfig(const std::string& world, double seconds, bool planar = false) {
   const std::string yaml =
-      "name: bench\nseed: 1\nduration_s: " + sim::FormatNumber(seconds) + "\nworld: " + world +
+      "name: bench\nseed: 1\nduration_s: " + sim::FormatNumber(seconds) +
+      "\nworld: " + sim::YamlTextValue(world) +
       "\nrobot: {model: p3dx}\n"
       "controller: {type: wall_following, sensor: sonar, side: left, distance_m: 0.6}\n"
       "sensors:\n"

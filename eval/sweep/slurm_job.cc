@@ -23,11 +23,19 @@ std::string Quote(const std::string& text) {
 
 }  // namespace
 
+void RequireSlurmSafeFolder(const fs::path& out_dir) {
+  if (fs::absolute(out_dir).string().find_first_of("\n\r") != std::string::npos) {
+    throw std::invalid_argument(
+        "--out: a Slurm job cannot write to a folder whose path holds a line break");
+  }
+}
+
 SlurmJob WriteSlurmJob(const fs::path& plywood, const fs::path& sweep_file, const fs::path& out_dir,
                        int cells, const SlurmJobOptions& options) {
   SlurmJob job;
   job.tasks = options.tasks > 0 ? options.tasks : std::min(cells, 1000);
   job.tasks = std::max(1, std::min(job.tasks, cells));
+  RequireSlurmSafeFolder(out_dir);
   const fs::path dir = fs::absolute(out_dir) / "slurm";
   fs::create_directories(dir);
   job.script = dir / "sweep.sbatch";

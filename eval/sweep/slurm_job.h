@@ -13,7 +13,12 @@ struct SlurmJobOptions {
   int tasks = 0;          // array size; 0: one task per cell, at most 1000
 };
 
+// The job script's #SBATCH lines name OUT: a line break in its path would start a command there.
+// @throws std::invalid_argument naming --out when the absolute path holds one.
+void RequireSlurmSafeFolder(const std::filesystem::path& out_dir);
+
 // Writes OUT/slurm/sweep.sbatch and returns its path and the number of tasks.
+// @throws std::invalid_argument as RequireSlurmSafeFolder.
 struct SlurmJob {
   std::filesystem::path script;
   int tasks = 0;

@@ -75,6 +75,7 @@ int RunSweep(const SweepInvocation& invocation) {
   const fs::path out =
       invocation.out.empty() ? fs::path("runs") / "sweeps" / spec.name : invocation.out;
   const SweepLayout layout{out};
+  if (invocation.slurm) RequireSlurmSafeFolder(out);
   PrepareSweepFolder(spec, out);
   const SweepFolderLock lock(out, invocation.shard_index, invocation.shard_count, invocation.quiet);
   StartAgainIfStale(layout, invocation.shard_count > 1, invocation.quiet);

@@ -1,12 +1,14 @@
 #include "eval/sweep/sweep_cells.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
 
 #include "sim/config/config_error.h"
 #include "sim/config/experiment_config.h"
+#include "sim/config/yaml_text_value.h"
 #include "sim/runner/text_file.h"
 #include "sim/world/mujoco_handles.h"
 
@@ -59,6 +61,8 @@ std::vector<std::string> SpawnOverrides(const std::filesystem::path& world) {
   const int id = mj_name2id(model.get(), mjOBJ_NUMERIC, "spawn_0");
   if (id < 0 || model->numeric_size[id] != 3) return {};
   const mjtNum* data = model->numeric_data + model->numeric_adr[id];
+  // A spawn that is not a number is the world's to report when the cell loads it (spawn_0).
+  if (!std::isfinite(data[0]) || !std::isfinite(data[1]) || !std::isfinite(data[2])) return {};
   const auto text = [](double v) {
     char buffer[64];
     std::snprintf(buffer, sizeof(buffer), "%.17g", v);
@@ -196,7 +200,7 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
       std::vector<std::string> world_overrides;
       const std::string world_label = world.label.empty() ? world.path.string() : world.label;
       if (!world.path.empty()) {
-        world_overrides.push_back("world=" + world.path.string());
+        world_overrides.push_back("world=" + sim::YamlTextValue(world.path.string()));
         if (!sets_spawn) {
           for (const std::string& o : SpawnOverrides(world.path)) world_overrides.push_back(o);
         }

@@ -20,6 +20,7 @@
 
 #include "eval/sweep/sweep_csv.h"
 #include "sim/config/config_error.h"
+#include "sim/config/yaml_text_value.h"
 #include "sim/runner/build_id.h"
 #include "sim/runner/run_directory.h"
 #include "sim/runner/text_file.h"
@@ -53,9 +54,10 @@ pid_t StartRun(const SweepCell& cell, const fs::path& plywood, const fs::path& p
   for (const std::string& o : cell.overrides) {
     args.push_back("--set");
     args.push_back(o.starts_with(world_in_sweep)
-                       ? "world=" + (fs::absolute(sweep_folder) / o.substr(world_in_sweep.size()))
-                                        .lexically_normal()
-                                        .string()
+                       ? "world=" + sim::YamlTextValue((fs::absolute(sweep_folder) /
+                                                        o.substr(world_in_sweep.size()))
+                                                           .lexically_normal()
+                                                           .string())
                        : o);
   }
   const pid_t parent = getpid();

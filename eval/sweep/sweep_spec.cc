@@ -11,6 +11,7 @@
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
 #include "sim/config/robot_catalog.h"
+#include "sim/config/yaml_alias_expansion.h"
 #include "sim/config/yaml_fields.h"
 #include "sim/world/generator/world_families.h"
 
@@ -226,6 +227,7 @@ SweepSpec LoadSweepSpec(const fs::path& path) {
     throw sim::ConfigError(path.string(), "", std::string("not valid YAML: ") + e.what());
   }
   if (!root.IsMap()) throw sim::ConfigError(path.string(), "", "expected a mapping");
+  sim::RejectAliasExpansion(root, spec.source_file);
   sim::RejectDuplicateKeys(root, spec.source_file);  // a repeated axis would silently win
   const fs::path base_dir = fs::absolute(path).parent_path();
   sim::YamlFields top(root, spec.source_file, "");

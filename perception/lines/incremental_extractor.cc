@@ -20,6 +20,10 @@ void IncrementalOptions::Validate() const {
   if (seed_points < 2) {
     throw std::invalid_argument("seed_points: must be >= 2, got " + std::to_string(seed_points));
   }
+  if (!(filter.min_length_m >= 0.0)) {
+    throw std::invalid_argument("min_length_m: must be >= 0, got " +
+                                msgs::ShortestNumber(filter.min_length_m));
+  }
   if (filter.min_points < 2) {
     throw std::invalid_argument("min_points: must be >= 2, got " +
                                 std::to_string(filter.min_points));

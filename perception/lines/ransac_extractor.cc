@@ -10,7 +10,12 @@
 namespace plywood::perception {
 
 void RansacOptions::Validate() const {
-  if (iterations < 1) throw std::invalid_argument("iterations: must be >= 1");
+  // Each iteration scores every remaining point, for every line: 2e9 iterations never finished.
+  if (iterations < 1 || iterations > kMaxRansacIterations) {
+    throw std::invalid_argument("iterations: must be in [1, " +
+                                std::to_string(kMaxRansacIterations) + "], got " +
+                                std::to_string(iterations));
+  }
   if (!(distance_threshold_m > 0.0)) {
     throw std::invalid_argument("distance_threshold_m: must be > 0, got " +
                                 msgs::ShortestNumber(distance_threshold_m));

@@ -18,6 +18,10 @@ namespace plywood::perception {
 // removes the round's inliers before the next round (seed 004 never did, finding duplicates).
 // Works on unordered point sets (an accumulated cloud) as well as scans. Deterministic: the
 // generator is seeded from `seed` on every call.
+// 1000 times the default (2-point samples find a line holding 1 % of the points with 99 %
+// confidence in 46,000): about 0.1 s per 361-beam scan; 2e9 made a run that never ended.
+inline constexpr int kMaxRansacIterations = 100000;
+
 struct RansacOptions {
   int iterations = 100;
   double distance_threshold_m = 0.03;

@@ -31,8 +31,11 @@ void SquarePathOptions::Validate() const {
   if (direction != SquareDirection::kClockwise && direction != SquareDirection::kCounterClockwise) {
     throw std::invalid_argument("direction: must be cw or ccw");
   }
-  if (laps < 1) {
-    throw std::invalid_argument("laps: must be >= 1, got " + std::to_string(laps));
+  // Every lap's moves are laid out up front (16 per lap): 1e9 laps overflowed 4 * laps (UBSan),
+  // 1e8 would ask for gigabytes. 10000 laps of the smallest square outlast any run.
+  if (laps < 1 || laps > kMaxSquareLaps) {
+    throw std::invalid_argument("laps: must be in [1, " + std::to_string(kMaxSquareLaps) +
+                                "], got " + std::to_string(laps));
   }
   internal::RequirePositive("speed_m_s", speed_m_s);
   internal::RequirePositive("turn_rate_rad_s", turn_rate_rad_s);

@@ -20,6 +20,9 @@ std::string_view ToString(SquareDirection direction);
 // @throws std::invalid_argument starting with "direction" for anything but "cw" or "ccw".
 SquareDirection ParseSquareDirection(std::string_view text);
 
+// The most laps SquarePathOptions accepts (its moves are laid out up front, 16 per lap).
+inline constexpr int kMaxSquareLaps = 10000;
+
 struct SquarePathOptions {
   double side_m = 4.0;  // UMBmark: 4 x 4 m
   SquareDirection direction = SquareDirection::kClockwise;

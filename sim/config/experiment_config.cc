@@ -9,12 +9,14 @@
 #include <sstream>
 #include <vector>
 
+#include "msgs/shortest_number.h"
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_archive.h"
 #include "sim/config/config_error.h"
 #include "sim/config/config_fields.h"
 #include "sim/config/plugin_loader.h"
 #include "sim/config/robot_catalog.h"
+#include "sim/config/yaml_alias_expansion.h"
 #include "sim/config/yaml_fields.h"
 #include "sim/world/mujoco_handles.h"
 
@@ -50,6 +52,12 @@ SpawnPose WorldDefaultSpawn(const std::filesystem::path& world) {
   const int id = mj_name2id(model.get(), mjOBJ_NUMERIC, "spawn_0");
   if (id < 0 || model->numeric_size[id] != 3) return {};
   const mjtNum* data = model->numeric_data + model->numeric_adr[id];
+  if (!std::isfinite(data[0]) || !std::isfinite(data[1]) || !std::isfinite(data[2])) {
+    throw ConfigError(world.string(), "spawn_0",
+                      "expected three finite numbers (x_m y_m theta_deg), got " +
+                          msgs::ShortestNumber(data[0]) + " " + msgs::ShortestNumber(data[1]) +
+                          " " + msgs::ShortestNumber(data[2]));
+  }
   return {data[0], data[1], data[2]};
 }
 
@@ -179,6 +187,7 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
     throw ConfigError(source, "", std::string("not valid YAML: ") + e.what());
   }
   if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  RejectAliasExpansion(root, source);
   RejectDuplicateKeys(root, source);
   NormaliseAliases(root, source);
   for (const std::string& assignment : overrides) {
@@ -231,6 +240,13 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   robot.Finish();
 
   ReadOptions(top.Child("physics"), config.physics);
+  // A run shorter than one step simulates nothing, and would report its figures (an ATE of 0 m)
+  // as if it had run.
+  if (config.duration_s < config.physics.timestep_s) {
+    top.Fail("duration_s", "must be at least one physics step (physics.timestep_s = " +
+                               FormatNumber(config.physics.timestep_s) + " s), got " +
+                               FormatNumber(config.duration_s));
+  }
   // The work is bounded up front: a run of more steps would take days (and beyond 9.2e18 the step
   // count no longer fits a long).
   if (config.duration_s / config.physics.timestep_s > kMaxSimulationSteps) {

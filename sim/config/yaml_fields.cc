@@ -8,6 +8,7 @@
 
 #include "perception/logs/parse_number.h"
 #include "sim/config/config_error.h"
+#include "sim/config/yaml_alias_expansion.h"
 
 namespace plywood::sim {
 namespace {
@@ -211,6 +212,7 @@ void ApplyOverride(YAML::Node root, const std::string& assignment, const std::st
   } catch (const YAML::Exception& e) {
     throw ConfigError(source, path, std::string("value is not valid YAML: ") + e.what());
   }
+  RejectAliasExpansion(value, source);
   std::vector<std::string> keys;
   std::stringstream stream(path);
   for (std::string key; std::getline(stream, key, '.');) {

@@ -8,6 +8,7 @@
 #include "sim/config/config_error.h"
 #include "sim/world/contact_filter.h"
 #include "sim/world/draw_only_geoms.h"
+#include "sim/world/finite_geometry.h"
 #include "sim/world/planar_drive.h"
 #include "sim/world/static_geom_step.h"
 #include "sim/world/upright_pose.h"
@@ -90,6 +91,9 @@ Scene::Scene(const SceneOptions& options) : options_(options) {
                         std::string("does not compile with robot ") + options.robot_mjcf.string() +
                             ": " + e.what());
     }
+  }
+  if (const auto problem = NonFiniteGeometry(model_.get())) {
+    throw ConfigError(options.world_mjcf.string(), "", *problem);
   }
   if (!(options.timestep_s > 0.0) || !std::isfinite(options.timestep_s)) {
     throw std::invalid_argument("timestep_s: must be a finite number > 0");
