@@ -611,7 +611,6 @@ std::optional<msgs::WheelSpeedCommand> SonarExplorer::ReactToBump(
   robot::BodyTwist twist;
   if (input.time_s < backing_off_until_s_) {
     twist.linear_m_s = backing_off_speed_m_s_;
-    twist.angular_rad_s = backing_off_turn_rad_s_;
     return robot::TwistToWheelSpeeds(spec_, twist);
   }
   if (input.bumpers == nullptr) return std::nullopt;
@@ -635,22 +634,12 @@ std::optional<msgs::WheelSpeedCommand> SonarExplorer::ReactToBump(
   const double along = std::cos(2.0 * M_PI * panel / n);
   backing_off_speed_m_s_ =
       along >= 0.0 ? -options_.bump_back_off_speed_m_s : options_.bump_back_off_speed_m_s;
-  // A round body turning about its centre neither nears nor leaves the contact point, and going
-  // straight from a side contact slides along the face. Turning as it goes swings the direction of
-  // travel away from the face: backwards, the contact's bearing towards the front (turn towards
-  // it); forwards, towards the back (turn away from it).
-  const double side = std::sin(2.0 * M_PI * panel / n);
-  backing_off_turn_rad_s_ =
-      options_.bump_back_off_turns
-          ? (backing_off_speed_m_s_ < 0.0 ? 1.0 : -1.0) * options_.turn_rate_rad_s * side
-          : 0.0;
   backing_off_until_s_ = input.time_s + options_.bump_back_off_s;
   // Stop the wheels at once, as a base's bumper circuit does (Update ramps on from here): ramping
   // down under the limit kept pushing into the obstacle for most of a second, and that slip was
   // the drift.
   if (options_.bump_stops_wheels) command_ = {};
   twist.linear_m_s = backing_off_speed_m_s_;
-  twist.angular_rad_s = backing_off_turn_rad_s_;
   return robot::TwistToWheelSpeeds(spec_, twist);
 }
 

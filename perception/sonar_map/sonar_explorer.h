@@ -61,11 +61,6 @@ struct SonarExplorerOptions {
   // from it for this long at this speed.
   double bump_back_off_s = 1.5;
   double bump_back_off_speed_m_s = 0.1;
-  // The back-off also turns, at turn_rate_rad_s times the sine of the panel's bearing, the way
-  // that swings the direction of travel away from the touched face: straight back from a side
-  // panel slid the body along the face (issue 14, generator seed 5: one 1.5 s side contact cost
-  // +10 deg of heading).
-  bool bump_back_off_turns = true;
   // A newly pressed panel sets the commanded wheel speeds to zero at once (the acceleration
   // limit applies again from there).
   bool bump_stops_wheels = true;
@@ -280,7 +275,6 @@ class SonarExplorer final : public robot::Controller {
   std::vector<Eigen::Vector2d> contacts_;  // the bumps alone
   double backing_off_until_s_ = -1.0;
   double backing_off_speed_m_s_ = 0.0;
-  double backing_off_turn_rad_s_ = 0.0;
   double last_replan_s_ = -1e9;
   double last_decay_s_ = -1.0;
   std::vector<Eigen::Vector2d> path_;

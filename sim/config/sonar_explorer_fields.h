@@ -51,7 +51,6 @@ void VisitFields(A& a, perception::SonarExplorerOptions& o) {
   a("max_wheel_accel_rad_s2", o.max_wheel_accel_rad_s2);
   a("bump_back_off_s", o.bump_back_off_s);
   a("bump_back_off_speed_m_s", o.bump_back_off_speed_m_s);
-  a("bump_back_off_turns", o.bump_back_off_turns);
   a("bump_stops_wheels", o.bump_stops_wheels);
   a("front_margin_m", o.front_margin_m);
   a("waypoint_tolerance_m", o.waypoint_tolerance_m);
