@@ -1,5 +1,6 @@
 #include "render/world_preview.h"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -8,6 +9,7 @@
 #include "render/snapshot.h"
 #include "sim/world/ground_truth_walls.h"
 #include "sim/world/mujoco_handles.h"
+#include "sim/world/world_spawns.h"
 
 namespace plywood::render {
 
@@ -30,9 +32,9 @@ void WriteWorldPreview(const std::filesystem::path& world_mjcf, double robot_rea
     }
   }
   for (int k = 0;; ++k) {
-    const int id = mj_name2id(m, mjOBJ_NUMERIC, ("spawn_" + std::to_string(k)).c_str());
-    if (id < 0 || m->numeric_size[id] != 3) break;
-    const mjtNum* v = m->numeric_data + m->numeric_adr[id];
+    const std::optional<std::array<double, 3>> spawn = sim::WorldSpawn(m, k);
+    if (!spawn) break;
+    const std::array<double, 3>& v = *spawn;
     const Eigen::Vector2d p(v[0], v[1]);
     const Rgb colour = k == 0 ? colours::kRed : colours::kBlue;
     DrawCircle(snapshot.picture.image, map, p, robot_reach_m, colour, 2.0);

@@ -1,6 +1,7 @@
 #include "eval/sweep/sweep_cells.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -11,6 +12,7 @@
 #include "sim/config/yaml_text_value.h"
 #include "sim/runner/text_file.h"
 #include "sim/world/mujoco_handles.h"
+#include "sim/world/world_spawns.h"
 
 namespace plywood::eval {
 namespace {
@@ -58,11 +60,12 @@ std::vector<std::string> SpawnOverrides(const std::filesystem::path& world) {
   } catch (const std::exception&) {
     return {};  // the run reports the compile error with its full context
   }
-  const int id = mj_name2id(model.get(), mjOBJ_NUMERIC, "spawn_0");
-  if (id < 0 || model->numeric_size[id] != 3) return {};
-  const mjtNum* data = model->numeric_data + model->numeric_adr[id];
+  const std::optional<std::array<double, 3>> spawn = sim::WorldSpawn(model.get(), 0);
   // A spawn that is not a number is the world's to report when the cell loads it (spawn_0).
-  if (!std::isfinite(data[0]) || !std::isfinite(data[1]) || !std::isfinite(data[2])) return {};
+  if (!spawn ||
+      !std::all_of(spawn->begin(), spawn->end(), [](double v) { return std::isfinite(v); }))
+    return {};
+  const auto& data = *spawn;
   const auto text = [](double v) {
     char buffer[64];
     std::snprintf(buffer, sizeof(buffer), "%.17g", v);

@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -19,6 +20,7 @@
 #include "sim/config/yaml_alias_expansion.h"
 #include "sim/config/yaml_fields.h"
 #include "sim/world/mujoco_handles.h"
+#include "sim/world/world_spawns.h"
 
 namespace plywood::sim {
 namespace {
@@ -49,16 +51,16 @@ SpawnPose WorldDefaultSpawn(const std::filesystem::path& world) {
   } catch (const std::exception&) {
     return {};  // the scene reports the compile error with its full context
   }
-  const int id = mj_name2id(model.get(), mjOBJ_NUMERIC, "spawn_0");
-  if (id < 0 || model->numeric_size[id] != 3) return {};
-  const mjtNum* data = model->numeric_data + model->numeric_adr[id];
-  if (!std::isfinite(data[0]) || !std::isfinite(data[1]) || !std::isfinite(data[2])) {
+  const std::optional<std::array<double, 3>> spawn = WorldSpawn(model.get(), 0);
+  if (!spawn) return {};
+  const auto [x, y, theta] = *spawn;
+  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(theta)) {
     throw ConfigError(world.string(), "spawn_0",
                       "expected three finite numbers (x_m y_m theta_deg), got " +
-                          msgs::ShortestNumber(data[0]) + " " + msgs::ShortestNumber(data[1]) +
-                          " " + msgs::ShortestNumber(data[2]));
+                          msgs::ShortestNumber(x) + " " + msgs::ShortestNumber(y) + " " +
+                          msgs::ShortestNumber(theta));
   }
-  return {data[0], data[1], data[2]};
+  return {x, y, theta};
 }
 
 // Short names a user may write for long keys: sensors.laser.sigma_m is the laser's

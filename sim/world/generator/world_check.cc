@@ -1,11 +1,13 @@
 #include "sim/world/generator/world_check.h"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
 #include "sim/world/ground_truth_walls.h"
 #include "sim/world/mujoco_handles.h"
 #include "sim/world/scene.h"
+#include "sim/world/world_spawns.h"
 
 namespace plywood::sim::worldgen {
 namespace {
@@ -69,13 +71,13 @@ std::vector<std::string> CheckWrittenWorld(const std::filesystem::path& mjcf,
   }
   for (size_t k = 0; k < world.spawns.size(); ++k) {
     const std::string spawn = "spawn_" + std::to_string(k);
-    const int id = mj_name2id(m, mjOBJ_NUMERIC, spawn.c_str());
+    const std::optional<std::array<double, 3>> read = WorldSpawn(m, static_cast<int>(k));
     const SpawnPose& p = world.spawns[k];
-    if (id < 0 || m->numeric_size[id] != 3) {
+    if (!read) {
       defects.push_back(name + ": " + spawn + " missing");
       continue;
     }
-    const mjtNum* v = m->numeric_data + m->numeric_adr[id];
+    const std::array<double, 3>& v = *read;
     if (!Near(v[0], p.x_m) || !Near(v[1], p.y_m) || !Near(v[2], p.yaw_deg)) {
       defects.push_back(name + ": " + spawn + " reads back differently");
     }
