@@ -5,6 +5,7 @@
 
 #include "msgs/wheel_encoders.h"
 #include "robot/drive/diff_drive_spec.h"
+#include "sim/sensors/noise_draws.h"
 
 namespace plywood::sim {
 
@@ -60,7 +61,7 @@ class EncoderSensor {
 
   EncoderSensorOptions options_;
   std::mt19937_64 rng_;
-  std::normal_distribution<double> unit_normal_{0.0, 1.0};
+  NormalDraws unit_normal_;
   bool started_ = false;
   Wheel left_, right_;
 };

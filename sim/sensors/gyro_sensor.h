@@ -4,6 +4,7 @@
 #include <random>
 
 #include "msgs/gyro_rate.h"
+#include "sim/sensors/noise_draws.h"
 
 namespace plywood::sim {
 
@@ -66,7 +67,7 @@ class GyroSensor {
  private:
   GyroSensorOptions options_;
   std::mt19937_64 rng_;
-  std::normal_distribution<double> unit_normal_{0.0, 1.0};
+  NormalDraws unit_normal_;
   double bias_walk_rad_s_ = 0.0;
   bool started_ = false;
   double last_time_s_ = 0.0;

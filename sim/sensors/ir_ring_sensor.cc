@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "sim/config/require_field.h"
+#include "sim/sensors/noise_draws.h"
 #include "sim/sensors/planar_fan.h"
 
 namespace plywood::sim {
@@ -55,7 +56,7 @@ void IrRingSensor::Measure(const Scene& scene, const RayCaster& caster, msgs::Ra
   out->range_min_m = options_.range_min_m;
   out->range_max_m = options_.range_max_m;
   out->readings.resize(sites_.size());
-  std::normal_distribution<double> noise(0.0, options_.sigma_m);
+  NormalDraws noise;
   RayHit hit;
   for (std::size_t k = 0; k < sites_.size(); ++k) {
     const Eigen::Isometry3d X_WS = scene.SitePoseInWorld(sites_[k].id);
@@ -69,7 +70,7 @@ void IrRingSensor::Measure(const Scene& scene, const RayCaster& caster, msgs::Ra
       }
     }
     if (std::isfinite(range_m) && !options_.noise_free && options_.sigma_m > 0.0) {
-      range_m += noise(rng_);
+      range_m += noise(rng_, 0.0, options_.sigma_m);
     }
     msgs::RangeReading& reading = out->readings[k];
     reading.X_RS = sites_[k].X_RS;

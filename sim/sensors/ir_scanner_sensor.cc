@@ -5,6 +5,7 @@
 #include <string>
 
 #include "sim/config/require_field.h"
+#include "sim/sensors/noise_draws.h"
 
 namespace plywood::sim {
 
@@ -63,20 +64,19 @@ void IrScannerSensor::Measure(const Scene& scene, const RayCaster& caster, ScanM
 
   const int n = geometry_.beam_count();
   const double range_max_m = options_.range_max_m;
-  std::normal_distribution<double> noise(0.0, options_.sigma_m);
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  NormalDraws noise;
   for (int i = 0; i < n; ++i) {
     double& r = out->scan.ranges_m[i];
     int& geom_id = out->hit_geom_ids[i];
     if (r < range_max_m && options_.sigma_m > 0.0) {  // a return (misses report range_max_m)
-      r = std::max(0.0, r + noise(rng_));
+      r = std::max(0.0, r + noise(rng_, 0.0, options_.sigma_m));
       if (r >= range_max_m) {
         r = range_max_m;
         geom_id = -1;
       }
     }
-    if (options_.outlier_probability > 0.0 && uniform(rng_) < options_.outlier_probability) {
-      r = options_.range_min_m + uniform(rng_) * (range_max_m - options_.range_min_m);
+    if (options_.outlier_probability > 0.0 && UnitUniform(rng_) < options_.outlier_probability) {
+      r = options_.range_min_m + UnitUniform(rng_) * (range_max_m - options_.range_min_m);
       geom_id = -1;
     }
   }

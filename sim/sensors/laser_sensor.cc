@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "sim/config/require_field.h"
+#include "sim/sensors/noise_draws.h"
 
 namespace plywood::sim {
 namespace {
@@ -92,7 +93,6 @@ void LaserSensor::Measure(const Scene& scene, const RayCaster& caster, ScanMeasu
   const int n = geometry_.beam_count();
   const double range_max_m = options_.range_max_m;
   msgs::LaserScan& scan = out->scan;
-  std::uniform_real_distribution<double> uniform(0.0, 1.0);
   if (options_.mixed_pixels) {
     std::copy(scan.ranges_m.begin(), scan.ranges_m.end(), true_ranges_m_.begin());
     for (int i = 0; i + 1 < n; ++i) {
@@ -102,21 +102,21 @@ void LaserSensor::Measure(const Scene& scene, const RayCaster& caster, ScanMeasu
       const int far = a > b ? i : i + 1;
       const int near = a > b ? i + 1 : i;
       if (!IsDepthEdge(near, far, scan.angle_increment_rad)) continue;
-      if (uniform(rng_) >= options_.mixed_pixel_probability) continue;
+      if (UnitUniform(rng_) >= options_.mixed_pixel_probability) continue;
       const double near_m = std::min(a, b);
-      scan.ranges_m[far] = near_m + uniform(rng_) * std::abs(a - b);
+      scan.ranges_m[far] = near_m + UnitUniform(rng_) * std::abs(a - b);
       out->hit_geom_ids[far] = -1;  // a phantom point on no surface
     }
   }
 
-  std::normal_distribution<double> noise(0.0, options_.range_noise_sigma_m);
+  NormalDraws noise;  // a new pair state per scan, as before
   const double unit_m = options_.RangeResolutionM();
   for (int i = 0; i < n; ++i) {
     double& r = scan.ranges_m[i];
     if (r >= range_max_m) continue;
-    if (options_.range_noise_sigma_m > 0.0) r += noise(rng_);
+    if (options_.range_noise_sigma_m > 0.0) r += noise(rng_, 0.0, options_.range_noise_sigma_m);
     r = std::max(0.0, std::round(r / unit_m) * unit_m);
-    if (r >= range_max_m || uniform(rng_) < options_.dropout_probability) {
+    if (r >= range_max_m || UnitUniform(rng_) < options_.dropout_probability) {
       r = range_max_m;
       out->hit_geom_ids[i] = -1;
     }

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "sim/config/require_field.h"
+#include "sim/sensors/noise_draws.h"
 #include "sim/sensors/planar_fan.h"
 
 namespace plywood::sim {
@@ -82,7 +83,7 @@ void SonarSensor::Measure(const Scene& scene, const RayCaster& caster, msgs::Ran
   }
   caster.CastBatch(ray_origins_W_.data(), ray_dirs_W_.data(), static_cast<int>(rays),
                    options_.range_max_m, /*with_normal=*/true, ray_hits_.data(), ray_found_.get());
-  std::normal_distribution<double> unit_noise(0.0, 1.0);
+  NormalDraws unit_noise;  // a new pair state per ring, as before
   for (std::size_t k = 0; k < sites_.size(); ++k) {
     msgs::RangeReading& reading = out->readings[k];
     reading.X_RS = sites_[k].X_RS;
