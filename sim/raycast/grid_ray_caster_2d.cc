@@ -65,6 +65,22 @@ inline double SmallestRoot(double a, double b, double c) {
   return x1 >= 0 ? x1 : -1;
 }
 
+// mj_ray's test of an upright box's two faces across one local axis (half extent `half_across`)
+// for a horizontal ray at p moving by v per unit t: the smallest t >= 0 at which the ray meets one
+// of them within `half_along` of the box's centre line, or -1. The face the ray moves towards is
+// tried first: the far face's t is never smaller (the numerator and the division by the same v
+// round monotonically), so it is computed only when the near face is missed. Same bits as trying
+// both and keeping the smaller.
+inline double FacePairHit(double half_across, double half_along, double p_across, double p_along,
+                          double v_across, double v_along) {
+  const double near_face = v_across > 0 ? -half_across : half_across;
+  double t = (near_face - p_across) / v_across;
+  if (t >= 0 && std::abs(p_along + t * v_along) <= half_along) return t;
+  t = (-near_face - p_across) / v_across;
+  if (t >= 0 && std::abs(p_along + t * v_along) <= half_along) return t;
+  return -1;
+}
+
 // The nearest hit of one ray so far; exact ties go to the lower geom id, as in mj_ray's loop over
 // geoms.
 struct NearestHit {
@@ -227,6 +243,7 @@ GridRayCaster2D::GridRayCaster2D(const mjModel* model, const mjData* data,
     }
     std::copy(R, R + 9, s.mat);
     s.upright = (type == mjGEOM_BOX || type == mjGEOM_CYLINDER) && R[2] == 0 && R[5] == 0;
+    s.half_height = type == mjGEOM_BOX ? s.size[2] : s.size[1];
     s.z_min = s.pos[2] - half[2] - kPadM;
     s.z_max = s.pos[2] + half[2] + kPadM;
     Aabb box;
@@ -338,6 +355,18 @@ GridRayCaster2D::GridRayCaster2D(const mjModel* model, const mjData* data,
   }
 }
 
+// Inline: every ray passes here. The same bits as Eigen's head<2>().norm() and normalize() of
+// (x, y, 0) (x * x + y * y, its square root, the quotients), with one square root instead of two.
+inline Eigen::Vector3d GridRayCaster2D::LevelledDirection(const Eigen::Vector3d& dir_W) const {
+  const double x = dir_W.x(), y = dir_W.y(), z = dir_W.z();
+  if (z == 0.0) return dir_W;
+  const double squared = x * x + y * y;
+  const double norm = std::sqrt(squared);
+  if (std::abs(z) > level_tolerance_ * norm) return dir_W;
+  if (!(squared > 0.0)) return {x, y, 0.0};
+  return {x / norm, y / norm, 0.0};
+}
+
 double GridRayCaster2D::IntersectShape(const Shape& s, const double* o, const double* v,
                                        bool horizontal) const {
   if (!(s.upright && horizontal)) {
@@ -349,8 +378,7 @@ double GridRayCaster2D::IntersectShape(const Shape& s, const double* o, const do
   const double* R = s.mat;
   const double d0 = o[0] - s.pos[0], d1 = o[1] - s.pos[1], d2 = o[2] - s.pos[2];
   const double lp2 = R[8] * d2;
-  const double half_height = s.type == mjGEOM_BOX ? s.size[2] : s.size[1];
-  if (!(std::abs(lp2) <= half_height)) return -1;
+  if (!(std::abs(lp2) <= s.half_height)) return -1;
   const double lp0 = R[0] * d0 + R[3] * d1 + R[6] * d2;
   const double lp1 = R[1] * d0 + R[4] * d1 + R[7] * d2;
   const double lv0 = R[0] * v[0] + R[3] * v[1];
@@ -364,17 +392,10 @@ double GridRayCaster2D::IntersectShape(const Shape& s, const double* o, const do
   }
 
   double x = -1;
-  if (std::abs(lv0) > mjMINVAL) {
-    for (int side = -1; side <= 1; side += 2) {
-      const double sol = (side * s.size[0] - lp0) / lv0;
-      if (sol >= 0 && std::abs(lp1 + sol * lv1) <= s.size[1] && (x < 0 || sol < x)) x = sol;
-    }
-  }
+  if (std::abs(lv0) > mjMINVAL) x = FacePairHit(s.size[0], s.size[1], lp0, lp1, lv0, lv1);
   if (std::abs(lv1) > mjMINVAL) {
-    for (int side = -1; side <= 1; side += 2) {
-      const double sol = (side * s.size[1] - lp1) / lv1;
-      if (sol >= 0 && std::abs(lp0 + sol * lv0) <= s.size[0] && (x < 0 || sol < x)) x = sol;
-    }
+    const double y = FacePairHit(s.size[1], s.size[0], lp1, lp0, lv1, lv0);
+    if (y >= 0 && (x < 0 || y < x)) x = y;
   }
   return x;
 }
@@ -474,7 +495,7 @@ void GridRayCaster2D::CastRays(const Eigen::Vector3d* origins_W, int origin_step
     c.min_d = d - radius - kFanDistanceSlackM;
     c.shape = index;
     if (c.min_d > max_range_m) return;
-    if (d < kFanNearM + 2.0 * radius) {
+    if (d < kFanNearM + radius) {
       c.lo = 0.0;
       c.hi = 4.0;
     } else {
@@ -490,10 +511,12 @@ void GridRayCaster2D::CastRays(const Eigen::Vector3d* origins_W, int origin_step
         lo = std::min(lo, delta);
         hi = std::max(hi, delta);
       }
-      // From an origin within `radius` of o, a footprint point q is seen at most
-      // asin(radius / (|q - o| - radius)) <= pi/2 radius / (d - radius) away from where o sees
-      // it, and DiamondAngle changes by at most 1 per radian.
-      const double widen = radius > 0.0 ? 1.5707963267948966 * radius / (d - radius) : 0.0;
+      // From an origin p within `radius` of o, a footprint point q is seen at most
+      // asin(radius / |q - o|) away from where o sees it (the angle at q of the triangle o p q;
+      // |q - o| >= d > radius), and asin(x) <= x / sqrt(1 - x^2) (its tangent) for x = radius / d.
+      // DiamondAngle changes by at most 1 per radian.
+      const double x = radius / d;
+      const double widen = radius > 0.0 ? x / std::sqrt(1.0 - x * x) : 0.0;
       c.lo = k0 + lo - widen - kFanAngleSlack;
       c.hi = k0 + hi + widen + kFanAngleSlack;
       if (c.hi - c.lo >= 4.0) {
@@ -786,9 +809,11 @@ bool GridRayCaster2D::CastRay(const Eigen::Vector3d& origin_W, const Eigen::Vect
         const uint32_t index = cell_items[k];
         const Shape& s = shapes[index];
         if (s.z_max < z_lo || s.z_min > z_hi) continue;
-        bool seen = false;
-        for (int r = 0; r < kRecent; ++r) seen |= recent[r] == index;
-        if (seen) continue;
+        static_assert(kRecent == 4);
+        if ((recent[0] == index) | (recent[1] == index) | (recent[2] == index) |
+            (recent[3] == index)) {
+          continue;
+        }
         recent[recent_next] = index;
         recent_next = (recent_next + 1) & (kRecent - 1);
         nearest.Consider(IntersectShape(s, o, v, horizontal), s.geom_id);
@@ -811,15 +836,6 @@ bool GridRayCaster2D::CastRay(const Eigen::Vector3d& origin_W, const Eigen::Vect
   if (!nearest.Report(max_range_m, hit)) return false;
   if (with_normal) SetNormal(origin_W, dir_W, hit);
   return true;
-}
-
-Eigen::Vector3d GridRayCaster2D::LevelledDirection(const Eigen::Vector3d& dir_W) const {
-  if (dir_W.z() == 0.0 || std::abs(dir_W.z()) > level_tolerance_ * dir_W.head<2>().norm()) {
-    return dir_W;
-  }
-  Eigen::Vector3d levelled(dir_W.x(), dir_W.y(), 0.0);
-  levelled.normalize();
-  return levelled;
 }
 
 }  // namespace plywood::sim

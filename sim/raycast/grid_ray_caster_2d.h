@@ -69,11 +69,11 @@ class GridRayCaster2D : public RayCaster {
   // horizontal share one set-up: with c the centre of the origins' bounding box and r the largest
   // distance of an origin from it (0 for a scan's beams), the grid shapes whose z range meets the
   // origins' heights are collected, each with the angular interval its padded floor-plane
-  // footprint spans from c (widened by asin(r / (d - r)) for a footprint d from c, or the whole
-  // circle when d < 2 r) and a lower bound of its distance from any origin, sorted by that bound
-  // into angular bins; a ray then tests only its bin's shapes whose interval holds its direction,
-  // nearest first, and stops at the first shape farther than its nearest hit. The shapes are
-  // collected reach by reach: first those in the cells within 3 m (plus r) of c, then, for the
+  // footprint spans from c (widened by tan(asin(r / d)) for a footprint d from c, or the whole
+  // circle when d < r + 1 mm) and a lower bound of its distance from any origin, sorted by that
+  // bound into angular bins; a ray then tests only its bin's shapes whose interval holds its
+  // direction, nearest first, and stops at the first shape farther than its nearest hit. The shapes
+  // are collected reach by reach: first those in the cells within 3 m (plus r) of c, then, for the
   // rays whose hit is not nearer than that, those under the next stretch (to twice the reach,
   // up to max_range_m) of those rays' angular bins, and so on; a ray is final once its hit lies
   // within the stretch covered. So shapes behind the walls that end most rays are never collected,
@@ -104,6 +104,7 @@ class GridRayCaster2D : public RayCaster {
     double pos[3];        // geom_xpos
     double mat[9];        // geom_xmat (row-major, geom axes as columns)
     double size[3];       // geom_size
+    double half_height;   // size[2] for boxes, size[1] for cylinders: the upright test's z extent
     int geom_id;
     int type;      // mjtGeom
     bool upright;  // local z exactly along world z (mat[2] == mat[5] == 0): 2-D fast path

@@ -468,6 +468,144 @@ TEST_P(RandomWorldTest, RingBatchGivesCastsBitsRayForRay) {
   EXPECT_GT(hit_count, rays / 2);
 }
 
+// IntersectShape tries an upright box's near face first and the far one only when it misses: level
+// rays must still give mj_ray's distance, geom and normal to the last bit, also from inside boxes,
+// along the box axes (one local direction component zero) and grazing faces and corners.
+TEST(GridRayCaster2DTest, LevelRaysGiveMjRaysBitsOnUprightBoxes) {
+  const CompiledWorld w = Compile(RandomWorld(41, 150));
+  const MujocoRayCaster reference(w.model.get(), w.data.get());
+  const GridRayCaster2D grid(w.model.get(), w.data.get());
+  std::vector<int> boxes;
+  for (int g = 0; g < w.model->ngeom; ++g) {
+    const double* R = w.data->geom_xmat + 9 * g;
+    if (w.model->geom_type[g] == mjGEOM_BOX && R[2] == 0 && R[5] == 0 && R[8] > 0.99 &&
+        IsRayVisibleGeom(w.model.get(), g)) {
+      boxes.push_back(g);
+    }
+  }
+  ASSERT_GT(boxes.size(), 60u);
+  std::mt19937_64 rng(41);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), sym(-1.0, 1.0);
+  int rays = 0, hits = 0, inside = 0;
+  for (int i = 0; i < 20000; ++i) {
+    // A point about a random box (inside it for a quarter), aimed at a corner, along an axis of
+    // the box or anywhere.
+    const int g = boxes[rng() % boxes.size()];
+    const double* p = w.data->geom_xpos + 3 * g;
+    const double* R = w.data->geom_xmat + 9 * g;
+    const double* size = w.model->geom_size + 3 * g;
+    const bool in_box = i % 4 == 0;
+    const double lx = in_box ? size[0] * sym(rng) : 3.0 * sym(rng);
+    const double ly = in_box ? size[1] * sym(rng) : 3.0 * sym(rng);
+    const Eigen::Vector3d origin(p[0] + R[0] * lx + R[1] * ly, p[1] + R[3] * lx + R[4] * ly,
+                                 p[2] + size[2] * 0.9 * sym(rng));
+    Eigen::Vector3d dir;
+    if (i % 3 == 0) {
+      const double cx = (rng() % 2 ? 1 : -1) * size[0], cy = (rng() % 2 ? 1 : -1) * size[1];
+      dir = Eigen::Vector3d(p[0] + R[0] * cx + R[1] * cy - origin.x(),
+                            p[1] + R[3] * cx + R[4] * cy - origin.y(), 0.0);
+    } else if (i % 3 == 1) {
+      const int axis = static_cast<int>(rng() % 2);
+      const double sign = rng() % 2 ? 1.0 : -1.0;
+      dir = Eigen::Vector3d(sign * R[axis], sign * R[3 + axis], 0.0);
+    } else {
+      const double a = 2 * M_PI * unit(rng);
+      dir = Eigen::Vector3d(std::cos(a), std::sin(a), 0.0);
+    }
+    if (dir.squaredNorm() == 0) continue;
+    dir.normalize();
+    RayHit a, b;
+    const bool hit = reference.Cast(origin, dir, 30.0, &a);
+    ++rays;
+    ASSERT_EQ(grid.Cast(origin, dir, 30.0, &b), hit) << i;
+    if (!hit) continue;
+    ++hits;
+    inside += in_box && a.geom_id == g;
+    ASSERT_EQ(a.distance_m, b.distance_m) << i;
+    ASSERT_EQ(a.geom_id, b.geom_id) << i;
+    ASSERT_EQ(a.normal_W, b.normal_W) << i;
+  }
+  EXPECT_GT(hits, rays / 2);
+  EXPECT_GT(inside, 1000);  // rays leaving a box through its far face
+}
+
+// A ring whose origins spread as far as the shapes around it lie (a footprint between r and 2 r
+// from the centre, where the angular intervals are widened most), with rays aimed exactly at
+// footprint corners, just beside them and anywhere: CastBatch gives Cast's bits ray for ray.
+TEST(GridRayCaster2DTest, WideRingBatchNearShapesGivesCastsBits) {
+  const CompiledWorld w = Compile(RandomWorld(42, 150));
+  std::vector<int> boxes;
+  for (int g = 0; g < w.model->ngeom; ++g) {
+    const double* R = w.data->geom_xmat + 9 * g;
+    if (w.model->geom_type[g] == mjGEOM_BOX && R[2] == 0 && R[5] == 0 &&
+        IsRayVisibleGeom(w.model.get(), g)) {
+      boxes.push_back(g);
+    }
+  }
+  ASSERT_GT(boxes.size(), 60u);
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), sym(-1.0, 1.0);
+  int rays = 0, hit_count = 0;
+  for (const double cell : {0.13, 0.5, 2.0}) {
+    GridRayCaster2DOptions options;
+    options.cell_size_m = cell;
+    const GridRayCaster2D grid(w.model.get(), w.data.get(), options);
+    for (int ring = 0; ring < 200; ++ring) {
+      const int g = boxes[rng() % boxes.size()];
+      const double* p = w.data->geom_xpos + 3 * g;
+      const double* R = w.data->geom_xmat + 9 * g;
+      const double* size = w.model->geom_size + 3 * g;
+      // The centre 0.05-2 m outside the box's footprint, the ring's radius 0.4-1.0 of that gap.
+      const double gap = 0.05 + 1.95 * unit(rng), a0 = 2 * M_PI * unit(rng);
+      const double reach = std::hypot(size[0], size[1]) + gap;
+      const Eigen::Vector3d centre(p[0] + reach * std::cos(a0), p[1] + reach * std::sin(a0),
+                                   p[2] + 0.5 * size[2] * sym(rng));
+      const double ring_radius = gap * (0.4 + 0.6 * unit(rng));
+      std::vector<Eigen::Vector3d> origins, dirs;
+      const int sonars = 2 + ring % 15;
+      for (int k = 0; k < sonars; ++k) {
+        const double a = 2 * M_PI * k / sonars;
+        const Eigen::Vector3d site =
+            centre + ring_radius * Eigen::Vector3d(std::cos(a), std::sin(a), 0.0);
+        for (int corner = 0; corner < 4; ++corner) {
+          const double cx = (corner & 1 ? 1 : -1) * size[0], cy = (corner & 2 ? 1 : -1) * size[1];
+          const Eigen::Vector2d to(p[0] + R[0] * cx + R[1] * cy - site.x(),
+                                   p[1] + R[3] * cx + R[4] * cy - site.y());
+          const double b = std::atan2(to.y(), to.x());
+          for (const double nudge : {0.0, 1e-12, -1e-12, 1e-7, -1e-7}) {
+            origins.push_back(site);
+            dirs.emplace_back(std::cos(b + nudge), std::sin(b + nudge), 0.0);
+          }
+        }
+        for (int j = 0; j < 5; ++j) {
+          const double b = a + 0.26 * (j - 2) / 2 + (ring % 2 ? M_PI : 0.0);
+          origins.push_back(site);
+          dirs.emplace_back(std::cos(b), std::sin(b), 0.0);
+        }
+      }
+      const int n = static_cast<int>(dirs.size());
+      std::vector<RayHit> hits(n);
+      std::unique_ptr<bool[]> found(new bool[n]);
+      const double range = ring % 3 == 0 ? 30.0 : 5.0;
+      grid.CastBatch(origins.data(), dirs.data(), n, range, /*with_normal=*/true, hits.data(),
+                     found.get());
+      for (int i = 0; i < n; ++i) {
+        RayHit one;
+        const bool hit = grid.Cast(origins[i], dirs[i], range, &one);
+        ++rays;
+        ASSERT_EQ(found[i], hit) << "cell " << cell << " ring " << ring << " ray " << i;
+        if (!hit) continue;
+        ++hit_count;
+        ASSERT_EQ(hits[i].distance_m, one.distance_m) << "ring " << ring << " ray " << i;
+        ASSERT_EQ(hits[i].geom_id, one.geom_id) << "ring " << ring << " ray " << i;
+        ASSERT_EQ(hits[i].normal_W, one.normal_W) << "ring " << ring << " ray " << i;
+      }
+    }
+  }
+  EXPECT_GT(rays, 50000);
+  EXPECT_GT(hit_count, rays / 2);
+}
+
 // The base class's batch (MujocoRayCaster's) is CastWithoutNormal beam by beam.
 TEST(GridRayCaster2DTest, DefaultBatchIsCastWithoutNormal) {
   const CompiledWorld w = Compile(RandomWorld(23, 40));

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "sim/config/require_field.h"
+#include "sim/sensors/foot_in_beam.h"
 #include "sim/sensors/noise_draws.h"
 #include "sim/sensors/planar_fan.h"
 
@@ -123,12 +124,14 @@ double SonarSensor::EchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& ca
 
     // Where, within the fan's plane, the hit surface's plane comes nearest.
     const Eigen::Vector3d n_S = R_WS.transpose() * n_W;
-    const double foot_len = std::hypot(n_S.x(), n_S.y());
-    if (foot_len > 1e-9 && -n_S.x() / foot_len >= cos_half_angle_) {
-      const double t = hit.distance_m * cos_incidence / foot_len;
-      if (t < foot_m) {
-        foot_m = t;
-        foot_dir_S = Eigen::Vector3d(-n_S.x() / foot_len, -n_S.y() / foot_len, 0.0);
+    if (FootMayBeInBeam(n_S.x(), n_S.y(), cos_half_angle_)) {
+      const double foot_len = std::hypot(n_S.x(), n_S.y());
+      if (foot_len > 1e-9 && -n_S.x() / foot_len >= cos_half_angle_) {
+        const double t = hit.distance_m * cos_incidence / foot_len;
+        if (t < foot_m) {
+          foot_m = t;
+          foot_dir_S = Eigen::Vector3d(-n_S.x() / foot_len, -n_S.y() / foot_len, 0.0);
+        }
       }
     }
 
