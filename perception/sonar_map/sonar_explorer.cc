@@ -609,24 +609,17 @@ std::optional<msgs::WheelSpeedCommand> SonarExplorer::ReactToBump(
     const robot::ControllerInput& input) {
   const msgs::Pose2D& X_WR = input.X_WR_estimate;
   robot::BodyTwist twist;
-  const bool backing_off = input.time_s < backing_off_until_s_;
-  const int n = input.bumpers == nullptr ? 0 : static_cast<int>(input.bumpers->pressed.size());
-  int panel = -1;
-  for (int i = 0; i < n && panel < 0; ++i) {
-    if (!input.bumpers->pressed[i]) continue;
-    // While backing off, only a panel on the side the robot backs towards (not a side panel)
-    // counts: it backed into something, and pushing on for the rest of the back-off turned the
-    // body under the wheels (generated rooms: a 1.6 s contact, +9.6 deg of encoder heading).
-    const double along = std::cos(2.0 * M_PI * i / n);
-    if (!backing_off ||
-        (std::abs(along) >= std::sin(M_PI / n) && along * backing_off_speed_m_s_ > 0.0))
-      panel = i;
-  }
-  if (panel < 0) {
-    if (!backing_off) return std::nullopt;
+  if (input.time_s < backing_off_until_s_) {
     twist.linear_m_s = backing_off_speed_m_s_;
     return robot::TwistToWheelSpeeds(spec_, twist);
   }
+  if (input.bumpers == nullptr) return std::nullopt;
+  const auto& pressed = input.bumpers->pressed;
+  const int n = static_cast<int>(pressed.size());
+  int panel = -1;
+  for (int i = 0; i < n && panel < 0; ++i)
+    if (pressed[i]) panel = i;
+  if (panel < 0) return std::nullopt;
   // The sonar missed something (a corner inside its blanking range, or a face seen at a grazing
   // angle): the contact point is in the way from now on, the move is abandoned, and the robot
   // backs away from the panel that touched.
