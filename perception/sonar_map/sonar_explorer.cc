@@ -631,9 +631,18 @@ std::optional<msgs::WheelSpeedCommand> SonarExplorer::ReactToBump(
   path_.clear();
   heading_to_frontier_ = false;
   last_replan_s_ = -1e9;
+  // Away from the panel along the robot's axis. A side panel's arc reaches both the front and the
+  // rear half, and its centre's cosine is 0 up to rounding (+6e-17 left, -2e-16 right): the
+  // contact came from the motion, so the robot backs off against it (backwards when it was not
+  // driving). Deciding by the rounding sent it forwards along the face it touched with a right
+  // panel, pushing into it for the whole back-off (generated rooms: 1.5 s contacts, +10-12 deg of
+  // encoder heading).
   const double along = std::cos(2.0 * M_PI * panel / n);
+  const double moving = robot::WheelSpeedsToTwist(spec_, command_).linear_m_s;
+  const bool side_panel = std::abs(along) < std::sin(M_PI / n);
+  const bool away_is_back = side_panel ? moving >= 0.0 : along >= 0.0;
   backing_off_speed_m_s_ =
-      along >= 0.0 ? -options_.bump_back_off_speed_m_s : options_.bump_back_off_speed_m_s;
+      away_is_back ? -options_.bump_back_off_speed_m_s : options_.bump_back_off_speed_m_s;
   backing_off_until_s_ = input.time_s + options_.bump_back_off_s;
   // Stop the wheels at once, as a base's bumper circuit does (Update ramps on from here): ramping
   // down under the limit kept pushing into the obstacle for most of a second, and that slip was

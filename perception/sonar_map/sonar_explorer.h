@@ -58,7 +58,7 @@ struct SonarExplorerOptions {
   double speed_m_s = 0.2;
   double max_wheel_accel_rad_s2 = 5.0;  // limit on the commanded wheel speeds' rate of change
   // A pressed bump panel (panel i centred at 360 i / n deg, as on the Magellan Pro): back away
-  // from it for this long at this speed.
+  // from it for this long at this speed (from a side panel against the motion that met it).
   double bump_back_off_s = 1.5;
   double bump_back_off_speed_m_s = 0.1;
   // A newly pressed panel sets the commanded wheel speeds to zero at once (the acceleration
