@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "msgs/shortest_number.h"
 
@@ -12,6 +13,11 @@ namespace {
 // MuJoCo resolves a contact deeper than this by pushing the bodies apart; shallower ones are
 // resting contact within its solver's tolerance.
 constexpr double kPenetrationToleranceM = 1e-3;
+
+// How far from z = 0, and from level, a floor plane may be: rounding in a world file's numbers,
+// far below anything the robot would feel.
+constexpr double kFloorToleranceM = 1e-6;
+constexpr double kFloorTiltToleranceRad = 1e-6;
 
 bool IsStaticWorldGeom(const Scene& scene, int geom) {
   const mjModel* m = scene.model();
@@ -34,10 +40,28 @@ std::string At(const msgs::Pose2D& pose) {
 
 std::optional<std::string> MissingFloor(const Scene& scene) {
   const mjModel* m = scene.model();
+  const mjData* d = scene.data();
+  int first_plane = -1;
   for (int g = 0; g < m->ngeom; ++g) {
-    if (m->geom_type[g] == mjGEOM_PLANE && IsStaticWorldGeom(scene, g)) return std::nullopt;
+    if (m->geom_type[g] != mjGEOM_PLANE || !IsStaticWorldGeom(scene, g)) continue;
+    // The robot is placed with its wheels on z = 0: a floor elsewhere, or tilted, drops it or
+    // buries it (a floor 0.3 m up flung the robot round, drift 259 %, exit 0).
+    const mjtNum* r = d->geom_xmat + 9 * g;  // row-major: the plane's normal is column 2
+    const double tilt_rad = std::atan2(std::hypot(r[2], r[5]), r[8]);
+    const double z_m = d->geom_xpos[3 * g + 2];
+    if (std::abs(z_m) <= kFloorToleranceM && std::abs(tilt_rad) <= kFloorTiltToleranceRad) {
+      return std::nullopt;
+    }
+    if (first_plane < 0) first_plane = g;
   }
-  return "the world has no floor (a static plane geom the wheels can stand on)";
+  if (first_plane < 0)
+    return "the world has no floor (a static plane geom the wheels can stand on)";
+  const mjtNum* r = d->geom_xmat + 9 * first_plane;
+  const double tilt_deg = std::atan2(std::hypot(r[2], r[5]), r[8]) * 180.0 / std::numbers::pi;
+  return "the world has no floor at z = 0: its plane " + GeomName(m, first_plane) +
+         " is at z = " + Mm(d->geom_xpos[3 * first_plane + 2]) + " m, tilted " +
+         msgs::ShortestNumber(std::round(tilt_deg * 100.0) / 100.0) +
+         " deg; the robot stands on z = 0, so put a level floor plane there";
 }
 
 std::optional<std::string> SpawnCollision(const Scene& scene) {

@@ -10,7 +10,8 @@ namespace plywood::sim {
 // What makes a compiled scene unfit to simulate, checked after compilation and before the first
 // step. Each returns a description of the problem (for a one-line error), or nullopt when fine.
 
-// The world has no plane geom for the wheels to stand on.
+// The world has no level plane geom at z = 0 for the wheels to stand on (the robot is placed
+// there).
 std::optional<std::string> MissingFloor(const Scene& scene);
 
 // The robot, at its spawn pose, overlaps the world's static geometry (a wall, an obstacle) by more
