@@ -412,6 +412,38 @@ TEST_F(ReliabilityTest, AFloorThatIsNotLevelAtZeroIsRefused) {
   }
 }
 
+// audit s33: a world is static geometry only (worlds/README.md). A free crate in the robot's path
+// ran (exit 0): the robot pushed it about while walls.csv and the laser's ground truth, which skip
+// moving bodies, never saw it; a mocap body is skipped the same way.
+TEST_F(ReliabilityTest, AWorldWithMovingBodiesIsRefused) {
+  const fs::path dir = WorldDir();
+  const std::string fixed =
+      "<geom name=\"floor\" type=\"plane\" size=\"5 5 0.1\"/>"
+      "<geom name=\"wall\" type=\"box\" pos=\"3 0 0.5\" size=\"0.1 3 0.5\"/>";
+  for (const auto& [body, message] : std::vector<std::pair<std::string, std::string>>{
+           {"<body name=\"crate\" pos=\"1 0 0.3\"><freejoint/><geom name=\"crate_box\" "
+            "type=\"box\" size=\"0.2 0.2 0.2\"/></body>",
+            "the world's geom 'crate_box' can move (its body 'crate' has a joint)"},
+           {"<body name=\"door\" pos=\"1 0 0.5\"><joint type=\"hinge\" axis=\"0 0 1\"/><body "
+            "name=\"leaf\"><geom type=\"box\" pos=\"0.4 0 0\" size=\"0.4 0.02 "
+            "0.5\"/></body></body>",
+            "the world's geom #2 can move (its body 'door' has a joint)"},
+           {"<body name=\"marker\" mocap=\"true\" pos=\"1 1 0.2\"><geom name=\"post\" "
+            "type=\"box\" size=\"0.1 0.1 0.2\"/></body>",
+            "the world's geom 'post' can move (its body 'marker' is a mocap body)"}}) {
+    const fs::path world = WriteFile(
+        dir / "moving.xml", "<mujoco><worldbody>" + fixed + body + "</worldbody></mujoco>\n");
+    std::string yaml = HallExperiment(0.0, 0.0);
+    yaml.replace(yaml.find("worlds/hall.xml"), std::string("worlds/hall.xml").size(),
+                 world.string());
+    for (const std::string drive : {"contact", "planar"}) {
+      SCOPED_TRACE(body + " " + drive);
+      ExpectRefused(yaml, "--set physics.drive=" + drive,
+                    {"experiment.yaml: world: ", "moving.xml: " + message});
+    }
+  }
+}
+
 // audit s32: MuJoCo compiles pos="nan 0 0.5" without a word. With the contact drive the geom was
 // nowhere and the run ended with exit 0 (every figure without it); a NaN size was reported as the
 // robot overlapping the geom; the planar drive said only "BoxGrid2D: a box is not finite".

@@ -64,6 +64,27 @@ std::optional<std::string> MissingFloor(const Scene& scene) {
          " deg; the robot stands on z = 0, so put a level floor plane there";
 }
 
+std::optional<std::string> MovableWorldGeometry(const Scene& scene) {
+  const mjModel* m = scene.model();
+  for (int g = 0; g < m->ngeom; ++g) {
+    int moving = -1;  // the body nearest the world with a joint or mocap, on the geom's way up
+    bool robot = scene.IsRobotGeom(g);
+    for (int b = m->geom_bodyid[g]; b != 0 && !robot; b = m->body_parentid[b]) {
+      robot = b == scene.base_body_id();
+      if (m->body_jntnum[b] > 0 || m->body_mocapid[b] >= 0) moving = b;
+    }
+    if (!robot && moving >= 0) {
+      const int b = moving;
+      const char* body = mj_id2name(m, mjOBJ_BODY, b);
+      return "the world's " + GeomName(m, g) + " can move (its body " +
+             (body ? "'" + std::string(body) + "'" : "#" + std::to_string(b)) +
+             (m->body_jntnum[b] > 0 ? " has a joint" : " is a mocap body") +
+             "); the ground truth takes the world as fixed: a world is static geometry only";
+    }
+  }
+  return std::nullopt;
+}
+
 std::optional<std::string> SpawnCollision(const Scene& scene) {
   const mjModel* m = scene.model();
   const mjData* d = scene.data();

@@ -14,6 +14,11 @@ namespace plywood::sim {
 // there).
 std::optional<std::string> MissingFloor(const Scene& scene);
 
+// A geom of the world on a body with a joint or a mocap body: the robot would push it about
+// (a free crate in its path ran, exit 0), while walls.csv, the laser's ground truth and the planar
+// drive take every world geom as fixed.
+std::optional<std::string> MovableWorldGeometry(const Scene& scene);
+
 // The robot, at its spawn pose, overlaps the world's static geometry (a wall, an obstacle) by more
 // than a millimetre. Uses MuJoCo's own contacts from the scene's mj_forward: they test the robot's
 // real collision geoms (the bumper ring's convex hull, wheels, caster, chassis) with the same
