@@ -444,6 +444,46 @@ TEST_F(ReliabilityTest, AWorldWithMovingBodiesIsRefused) {
   }
 }
 
+// audit s33: a world's <option gravity="0 0 9.81"> ran, exit 0: the robot afloat, 6 cm travelled
+// and an encoder drift of 2957 %. A world carries geometry; the physics is the same for every
+// world (the experiment sets only its timestep).
+TEST_F(ReliabilityTest, AWorldThatChangesThePhysicsIsRefused) {
+  const fs::path dir = WorldDir();
+  const std::string fixed =
+      "<worldbody><geom name=\"floor\" type=\"plane\" size=\"5 5 0.1\"/>"
+      "<geom name=\"wall\" type=\"box\" pos=\"3 0 0.5\" size=\"0.1 3 0.5\"/>"
+      "<geom name=\"west_wall\" type=\"box\" pos=\"-3 0 0.5\" size=\"0.1 3 0.5\"/></worldbody>";
+  for (const auto& [option, message] : std::vector<std::pair<std::string, std::string>>{
+           {"<option gravity=\"0 0 9.81\"/>",
+            "the world sets the physics option gravity to 0 0 9.81 (MuJoCo's default 0 0 -9.81)"},
+           {"<option viscosity=\"100\"/>",
+            "the world sets the physics option viscosity to 100 (MuJoCo's default 0)"},
+           {"<option><flag contact=\"disable\"/></option>",
+            "the world sets the physics option disableflags (<flag>) to 16 (MuJoCo's default "
+            "0)"}}) {
+    const fs::path world =
+        WriteFile(dir / "physics.xml", "<mujoco>" + option + fixed + "</mujoco>\n");
+    std::string yaml = HallExperiment(0.0, 0.0);
+    yaml.replace(yaml.find("worlds/hall.xml"), std::string("worlds/hall.xml").size(),
+                 world.string());
+    for (const std::string drive : {"contact", "planar"}) {
+      SCOPED_TRACE(option + " " + drive);
+      ExpectRefused(yaml, "--set physics.drive=" + drive,
+                    {"experiment.yaml: world: ", "physics.xml: " + message});
+    }
+  }
+  // The timestep is the experiment's: a world's own is overridden, as before.
+  const fs::path world =
+      WriteFile(dir / "physics.xml", "<mujoco><option timestep=\"0.5\"/>" + fixed + "</mujoco>\n");
+  std::string yaml = HallExperiment(0.0, 0.0);
+  yaml.replace(yaml.find("worlds/hall.xml"), std::string("worlds/hall.xml").size(), world.string());
+  const fs::path run = Dir();
+  const CliResult result = RunPlywood("run " + WriteFile(run / "experiment.yaml", yaml).string() +
+                                          " --quiet --out " + (run / "out").string(),
+                                      run);
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+}
+
 // audit s32: MuJoCo compiles pos="nan 0 0.5" without a word. With the contact drive the geom was
 // nowhere and the run ended with exit 0 (every figure without it); a NaN size was reported as the
 // robot overlapping the geom; the planar drive said only "BoxGrid2D: a box is not finite".

@@ -64,6 +64,64 @@ std::optional<std::string> MissingFloor(const Scene& scene) {
          " deg; the robot stands on z = 0, so put a level floor plane there";
 }
 
+std::optional<std::string> NonDefaultPhysicsOptions(const Scene& scene) {
+  mjOption defaults;
+  mj_defaultOption(&defaults);
+  const mjOption& o = scene.model()->opt;
+  const auto numbers = [](const mjtNum* v, int n) {
+    std::string text;
+    for (int i = 0; i < n; ++i) text += (i ? " " : "") + msgs::ShortestNumber(v[i]);
+    return text;
+  };
+  // What the world may not change: every option but the timestep (the experiment's
+  // physics.timestep_s), the remote API's rate and the magnetic field (no sensor reads it).
+  const struct {
+    const char* name;
+    const mjtNum* value;
+    const mjtNum* fallback;
+    int n;
+  } reals[] = {{"impratio", &o.impratio, &defaults.impratio, 1},
+               {"tolerance", &o.tolerance, &defaults.tolerance, 1},
+               {"noslip_tolerance", &o.noslip_tolerance, &defaults.noslip_tolerance, 1},
+               {"mpr_tolerance", &o.mpr_tolerance, &defaults.mpr_tolerance, 1},
+               {"gravity", o.gravity, defaults.gravity, 3},
+               {"wind", o.wind, defaults.wind, 3},
+               {"density", &o.density, &defaults.density, 1},
+               {"viscosity", &o.viscosity, &defaults.viscosity, 1},
+               {"o_margin", &o.o_margin, &defaults.o_margin, 1},
+               {"o_solref", o.o_solref, defaults.o_solref, mjNREF},
+               {"o_solimp", o.o_solimp, defaults.o_solimp, mjNIMP}};
+  for (const auto& r : reals) {
+    if (std::equal(r.value, r.value + r.n, r.fallback)) continue;
+    return "the world sets the physics option " + std::string(r.name) + " to " +
+           numbers(r.value, r.n) + " (MuJoCo's default " + numbers(r.fallback, r.n) +
+           "); every world runs with the same physics (the experiment sets only "
+           "physics.timestep_s): remove the world's <option>";
+  }
+  const struct {
+    const char* name;
+    int value;
+    int fallback;
+  } whole[] = {{"integrator", o.integrator, defaults.integrator},
+               {"collision", o.collision, defaults.collision},
+               {"cone", o.cone, defaults.cone},
+               {"jacobian", o.jacobian, defaults.jacobian},
+               {"solver", o.solver, defaults.solver},
+               {"iterations", o.iterations, defaults.iterations},
+               {"noslip_iterations", o.noslip_iterations, defaults.noslip_iterations},
+               {"mpr_iterations", o.mpr_iterations, defaults.mpr_iterations},
+               {"disableflags (<flag>)", o.disableflags, defaults.disableflags},
+               {"enableflags (<flag>)", o.enableflags, defaults.enableflags}};
+  for (const auto& w : whole) {
+    if (w.value == w.fallback) continue;
+    return "the world sets the physics option " + std::string(w.name) + " to " +
+           std::to_string(w.value) + " (MuJoCo's default " + std::to_string(w.fallback) +
+           "); every world runs with the same physics (the experiment sets only "
+           "physics.timestep_s): remove the world's <option>";
+  }
+  return std::nullopt;
+}
+
 std::optional<std::string> MovableWorldGeometry(const Scene& scene) {
   const mjModel* m = scene.model();
   for (int g = 0; g < m->ngeom; ++g) {

@@ -14,6 +14,11 @@ namespace plywood::sim {
 // there).
 std::optional<std::string> MissingFloor(const Scene& scene);
 
+// A physics option (<option> or <flag>) other than MuJoCo's default, the timestep aside: the
+// world would change the physics every experiment and every other world share (a world with
+// gravity="0 0 9.81" ran, the robot afloat, exit 0).
+std::optional<std::string> NonDefaultPhysicsOptions(const Scene& scene);
+
 // A geom of the world on a body with a joint or a mocap body: the robot would push it about
 // (a free crate in its path ran, exit 0), while walls.csv, the laser's ground truth and the planar
 // drive take every world geom as fixed.
