@@ -329,6 +329,16 @@ TEST(SweepCliTest, ADamagedManifestIsExpandedAgainOrNamed) {
             std::string::npos)
       << r.err;
   EXPECT_EQ(Slurp(out / "results.csv"), whole);
+
+  // A file where the sweep keeps its runs: was "plywood: error: filesystem error: cannot create
+  // directories: Not a directory [OUT/runs]", exit 1.
+  fs::remove_all(out / "runs");
+  WriteFile(out / "runs", "not a folder\n");
+  r = RunPlywood(resume + " --quiet", dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err, "plywood: " + (out / "runs").string() +
+                       ": exists and is not a folder (the sweep keeps its runs there): move it "
+                       "away or choose another --out\n");
 }
 
 // The time complete.json of each finished run was written: a run made again gets a new one.

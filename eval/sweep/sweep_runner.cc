@@ -249,12 +249,21 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
 SweepRunOutcome RunSweepCells(const std::vector<SweepCell>& cells, const SweepLayout& layout,
                               const SweepRunOptions& options) {
   const int jobs = options.jobs > 0 ? options.jobs : UsableCores();
-  fs::create_directories(layout.out / "runs");
-  fs::create_directories(layout.out / "logs");
-  fs::create_directories(layout.out / "failures");
   // Partial runs of an interrupted sweep (of this shard) never count: start them again.
   const fs::path partial_root = layout.PartialRoot();
-  fs::create_directories(partial_root);
+  for (const fs::path& folder :
+       {layout.out / "runs", layout.out / "logs", layout.out / "failures", partial_root}) {
+    // A file in a folder's place ended the sweep with "filesystem error: cannot create
+    // directories: Not a directory", exit 1 (audit s33).
+    std::error_code error;
+    if (fs::exists(folder, error) && !fs::is_directory(folder, error)) {
+      throw sim::ConfigError(folder.string(), "",
+                             "exists and is not a folder (the sweep keeps its " +
+                                 folder.filename().string() +
+                                 " there): move it away or choose another --out");
+    }
+    fs::create_directories(folder);
+  }
 
   SweepRunOutcome outcome;
   std::vector<const SweepCell*> todo;
