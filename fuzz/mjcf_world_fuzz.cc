@@ -20,6 +20,7 @@ void FuzzMjcfWorld(std::span<const std::uint8_t> data) {
   try {
     const sim::Scene scene(options);
     sim::MissingFloor(scene);
+    sim::MovableWorldGeometry(scene);
     sim::SpawnCollision(scene);
     sim::SpawnOutsideWorld(scene);
     const sim::GroundTruthWalls walls = sim::ExtractGroundTruthWalls(scene.model());

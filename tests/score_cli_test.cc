@@ -111,6 +111,17 @@ TEST(ScoreCliTest, BadFilesFailWithOneLineNamingFileLineAndField) {
       {"CSV y beyond 1e9 m", "trajectory", "b4.csv",
        "time_s,mine_x_m,mine_y_m,mine_theta_rad\n0,0,-2e9,0\n",
        "b4.csv:2: mine_y_m: must be within 1e+09 m of the origin, got -2e+09"},
+      {"CSV estimate named with a dot (audit s33: scored as odometry.my.est.*, which --out "
+       "nested as estimator 'my')",
+       "trajectory", "b5.csv", "time_s,my.est_x_m,my.est_y_m,my.est_theta_rad\n0,-6.5,0,0\n",
+       "b5.csv:1: my.est_x_m: 'my.est' cannot name a metric"},
+      {"CSV estimate named with a space", "trajectory", "b6.csv",
+       "time_s,my est_x_m,my est_y_m,my est_theta_rad\n0,-6.5,0,0\n",
+       "b6.csv:1: my est_x_m: 'my est' cannot name a metric"},
+      {"lines extractor 'scans' (audit s33: with --out, 'plywood: metrics key 'lines.scans' is "
+       "also an object', naming no file)",
+       "lines", "k5.csv", lines_header + "0,scans,1,0,1,1\n",
+       "k5.csv:2: extractor: 'scans' cannot name an extractor", " --out scores.json"},
       {"TUM not a number", "trajectory", "c.tum", tum_ok + "0.1 0 0 0 0 0 zero 1\n",
        "c.tum:2: qz: not a number"},
       {"TUM times not increasing", "trajectory", "d.tum", "# c\n" + tum_ok + tum_ok,

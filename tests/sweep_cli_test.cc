@@ -275,6 +275,72 @@ TEST(SweepCliTest, KillNineAndResumeGivesTheSameResultsWithoutRedoingRuns) {
   EXPECT_TRUE(fs::is_empty(out / "runs" / ".partial"));
 }
 
+// audit s33: a cells.json cut or edited into other valid JSON was taken as the whole sweep, so
+// the cells it lost never ran (`[]`: "0 runs into OUT", then "5 of 6 runs finished, 1 not run",
+// exit 1 on every resume); a sweep.json field of another type ended a resume or --collect with
+// "plywood: error: [json.exception.type_error.302] ...", exit 1.
+TEST(SweepCliTest, ADamagedManifestIsExpandedAgainOrNamed) {
+  const fs::path dir = MakeTempDir("SweepDamagedManifest");
+  const fs::path sweep = WriteFile(dir / "small.yaml", SmallSweep());
+  const fs::path out = dir / "out";
+  const std::string resume = "sweep " + sweep.string() + " --out " + out.string() + " --jobs 2";
+  ASSERT_EQ(RunPlywood(resume, dir).exit_code, 0);
+  const std::string whole = Slurp(out / "results.csv");
+  const std::string manifest = Slurp(out / "cells.json");
+  const std::string first_cell_only = manifest.substr(0, manifest.find("\n },")) + "\n }\n]\n";
+  const auto remove_a_run = [&] {
+    for (const auto& e : fs::directory_iterator(out / "runs")) {
+      if (e.path().filename() == ".partial") continue;
+      fs::remove_all(e.path());
+      return;
+    }
+  };
+  for (const std::string& cells : {std::string("[]\n"), std::string("{}\n"), first_cell_only}) {
+    SCOPED_TRACE(cells);
+    remove_a_run();
+    WriteFile(out / "cells.json", cells);
+    const auto r = RunPlywood(resume, dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(CountRunDirs(out), 6);
+    EXPECT_EQ(Slurp(out / "results.csv"), whole);
+  }
+
+  const std::string meta = Slurp(out / "sweep.json");
+  const auto with = [&](const std::string& from, const std::string& to) {
+    std::string text = meta;
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return WriteFile(out / "sweep.json", text.replace(at, from.size(), to));
+  };
+  with("\"axes\": [", "\"axes\": 5, \"x\": [");
+  auto r = RunPlywood("sweep --collect " + out.string(), dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err,
+            "plywood: " + (out / "sweep.json").string() + ": axes: expected a list of text\n");
+  WriteFile(out / "sweep.json", "[]\n");
+  r = RunPlywood("sweep --collect " + out.string(), dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err, "plywood: " + (out / "sweep.json").string() + ": expected a JSON object\n");
+  // A resume starts such a sweep again, as it does one whose sweep.json is not JSON.
+  with("\"inputs\": {", "\"inputs\": [], \"x\": {");
+  r = RunPlywood(resume, dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("its sweep.json is damaged (inputs: expected a mapping of file to hash)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(Slurp(out / "results.csv"), whole);
+
+  // A file where the sweep keeps its runs: was "plywood: error: filesystem error: cannot create
+  // directories: Not a directory [OUT/runs]", exit 1.
+  fs::remove_all(out / "runs");
+  WriteFile(out / "runs", "not a folder\n");
+  r = RunPlywood(resume + " --quiet", dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err, "plywood: " + (out / "runs").string() +
+                       ": exists and is not a folder (the sweep keeps its runs there): move it "
+                       "away or choose another --out\n");
+}
+
 // The time complete.json of each finished run was written: a run made again gets a new one.
 std::map<std::string, fs::file_time_type> RunMarkTimes(const fs::path& out) {
   std::map<std::string, fs::file_time_type> times;

@@ -126,6 +126,9 @@ std::vector<LinesCsvRow> ReadLinesCsv(const std::filesystem::path& path,
       table.Fail(csv, "extractor",
                  "'" + row.extractor + "' cannot name a metric (no dots or spaces)");
     }
+    if (row.extractor == "scans") {  // lines.scans is the run's scan count
+      table.Fail(csv, "extractor", "'scans' cannot name an extractor (lines.scans counts scans)");
+    }
     perception::LineSegment& s = row.segment;
     s.start = {table.Number(csv, table.Column("x1_m"), "x1_m"),
                table.Number(csv, table.Column("y1_m"), "y1_m")};

@@ -72,9 +72,6 @@ LogReplaySummary RunLogReplay(const LogReplayRequest& request) {
   sim::LinesConfig lines;
   sim::ReadLinesConfig(sim::YamlFields(lines_node, "--set", ""), lines);
   const auto extractor = perception::MakeLineExtractor(request.extractor, lines.options);
-  if (!perception::IsRegularFile(request.log)) {
-    throw std::invalid_argument(request.log.string() + ": no such log file");
-  }
   perception::CarmenReadOptions read_options;
   read_options.skip_bad = request.skip_bad;
   perception::CarmenLog log;

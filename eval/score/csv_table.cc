@@ -54,7 +54,7 @@ CsvTable ReadCsv(const std::filesystem::path& path, const CsvReadOptions& option
   CsvTable table;
   table.file = path.string();
   if (!perception::IsRegularFile(path)) {
-    throw sim::ConfigError(table.file, "", "no such file");
+    throw sim::ConfigError(table.file, "", perception::WhyNotARegularFile(path));
   }
   std::ifstream in(path, std::ios::binary);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -162,7 +162,9 @@ GridImage ReadPgm(const std::string& file, const std::string& bytes) {
 
 GridImage ReadGridImage(const std::filesystem::path& path) {
   const std::string file = path.string();
-  if (!perception::IsRegularFile(path)) throw sim::ConfigError(file, "", "no such file");
+  if (!perception::IsRegularFile(path)) {
+    throw sim::ConfigError(file, "", perception::WhyNotARegularFile(path));
+  }
   std::ifstream in(path, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (bytes.empty()) throw sim::ConfigError(file, "", "empty file");

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "eval/score/csv_table.h"
+#include "eval/score/score_report.h"
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
 #include "sim/runner/metrics.h"
@@ -43,6 +44,10 @@ std::vector<NamedTrajectory> ReadPlywoodCsv(const std::filesystem::path& path) {
   for (std::size_t c = 1; c < h.size(); c += 3) {
     if (!EndsWith(h[c], "_x_m")) header_error(h[c], "expected a column NAME_x_m");
     const std::string name = h[c].substr(0, h[c].size() - 4);
+    // The name becomes the metric keys odometry.NAME.*: "my.est" would read as estimator "my".
+    if (!IsMetricName(name)) {
+      header_error(h[c], "'" + name + "' cannot name a metric (no dots, commas or spaces)");
+    }
     if (h[c + 1] != name + "_y_m") header_error(h[c + 1], "expected " + name + "_y_m");
     if (h[c + 2] != name + "_theta_rad") header_error(h[c + 2], "expected " + name + "_theta_rad");
     trajectories.push_back({name, {}});
@@ -78,7 +83,7 @@ std::vector<NamedTrajectory> ReadPlywoodCsv(const std::filesystem::path& path) {
 std::vector<NamedTrajectory> ReadTrajectoryFile(const std::filesystem::path& path,
                                                 const std::string& tum_name) {
   if (!perception::IsRegularFile(path)) {
-    throw sim::ConfigError(path.string(), "", "no such file");
+    throw sim::ConfigError(path.string(), "", perception::WhyNotARegularFile(path));
   }
   if (IsPlywoodCsv(path)) return ReadPlywoodCsv(path);
   try {

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "eval/sweep/sweep_csv.h"
+#include "eval/sweep/sweep_meta.h"
 #include "sim/config/config_error.h"
 #include "sim/runner/build_id.h"
 #include "sim/runner/metrics.h"
@@ -108,6 +109,9 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
     meta = nlohmann::json::parse(sim::ReadTextFile(meta_file));
   } catch (const nlohmann::json::exception& e) {
     throw sim::ConfigError(meta_file.string(), "", std::string("not valid JSON: ") + e.what());
+  }
+  if (const auto damage = FindSweepMetaDamage(meta)) {
+    throw sim::ConfigError(meta_file.string(), damage->field, damage->what);
   }
   const std::string sweep_build = meta.value("plywood_build_id", std::string());
   const auto axes = meta.value("axes", std::vector<std::string>{});

@@ -19,6 +19,7 @@
 #include <thread>
 
 #include "eval/sweep/sweep_csv.h"
+#include "eval/sweep/sweep_meta.h"
 #include "sim/config/config_error.h"
 #include "sim/config/yaml_text_value.h"
 #include "sim/runner/build_id.h"
@@ -248,12 +249,21 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
 SweepRunOutcome RunSweepCells(const std::vector<SweepCell>& cells, const SweepLayout& layout,
                               const SweepRunOptions& options) {
   const int jobs = options.jobs > 0 ? options.jobs : UsableCores();
-  fs::create_directories(layout.out / "runs");
-  fs::create_directories(layout.out / "logs");
-  fs::create_directories(layout.out / "failures");
   // Partial runs of an interrupted sweep (of this shard) never count: start them again.
   const fs::path partial_root = layout.PartialRoot();
-  fs::create_directories(partial_root);
+  for (const fs::path& folder :
+       {layout.out / "runs", layout.out / "logs", layout.out / "failures", partial_root}) {
+    // A file in a folder's place ended the sweep with "filesystem error: cannot create
+    // directories: Not a directory", exit 1 (audit s33).
+    std::error_code error;
+    if (fs::exists(folder, error) && !fs::is_directory(folder, error)) {
+      throw sim::ConfigError(folder.string(), "",
+                             "exists and is not a folder (the sweep keeps its " +
+                                 folder.filename().string() +
+                                 " there): move it away or choose another --out");
+    }
+    fs::create_directories(folder);
+  }
 
   SweepRunOutcome outcome;
   std::vector<const SweepCell*> todo;
@@ -325,7 +335,10 @@ std::string WhySweepIsStale(const SweepLayout& layout) {
   const fs::path meta_file = layout.out / "sweep.json";
   if (!fs::is_regular_file(meta_file)) return "";  // nothing expanded yet
   const nlohmann::json meta = nlohmann::json::parse(sim::ReadTextFile(meta_file), nullptr, false);
-  if (!meta.is_object()) return "its sweep.json is damaged";
+  if (const auto damage = FindSweepMetaDamage(meta)) {
+    return "its sweep.json is damaged (" + (damage->field.empty() ? "" : damage->field + ": ") +
+           damage->what + ")";
+  }
   const std::string build = meta.value("plywood_build_id", std::string());
   if (build != sim::ProgramBuildId()) {
     return "it was run by another plywood build (build id " +
@@ -367,7 +380,7 @@ std::optional<std::vector<SweepCell>> ReadSweepManifest(const SweepSpec& spec,
   // config and world, so unchanged cells keep their runs and changed ones run anew).
   const nlohmann::json meta =
       nlohmann::json::parse(sim::ReadTextFile(layout.out / "sweep.json"), nullptr, false);
-  if (!meta.is_object()) return std::nullopt;
+  if (FindSweepMetaDamage(meta)) return std::nullopt;
   const auto recorded = meta.value("inputs", std::map<std::string, std::string>{});
   for (const auto& [file, hash] : InputHashes(spec)) {
     const auto it = recorded.find(file);
@@ -398,6 +411,20 @@ std::optional<std::vector<SweepCell>> ReadSweepManifest(const SweepSpec& spec,
     }
   } catch (const nlohmann::json::exception&) {
     return std::nullopt;  // damaged: expand the sweep again
+  }
+  // A cells.json cut or edited into other valid JSON (`[]`, cells left out) would otherwise be
+  // taken as the whole sweep: the cells it lost would never run, and a resume would report them
+  // "not run" for ever. An id that is not the 16 hex digits of a run folder's name would be
+  // removed and written outside runs/.
+  const auto axes = meta.value("axes", std::vector<std::string>{});
+  if (cells.size() != meta.value("cells", std::size_t{0})) return std::nullopt;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const SweepCell& cell = cells[i];
+    if (cell.index != static_cast<int>(i) || cell.values.size() != axes.size() ||
+        cell.id.size() != 16 ||
+        cell.id.find_first_not_of("0123456789abcdef") != std::string::npos) {
+      return std::nullopt;
+    }
   }
   return cells;
 }

@@ -202,7 +202,9 @@ bool ParseCarmenLine(const std::string& line, CarmenLog* log) {
 
 CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptions& options) {
   if (!IsRegularFile(path)) {
-    throw std::runtime_error(path.string() + ": no such log file");
+    const bool absent = !std::filesystem::exists(path);
+    throw std::runtime_error(path.string() + ": " +
+                             (absent ? std::string("no such log file") : WhyNotARegularFile(path)));
   }
   CarmenLog log;
   LineReader reader(path);

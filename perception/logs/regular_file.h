@@ -1,6 +1,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <system_error>
 
 namespace plywood::perception {
@@ -11,6 +12,15 @@ namespace plywood::perception {
 inline bool IsRegularFile(const std::filesystem::path& path) {
   std::error_code refused;
   return std::filesystem::is_regular_file(path, refused);
+}
+
+// Why `path` is not a regular file, for a one-line error: "no such file" when nothing is there,
+// else "not a regular file (a folder or a device?)" (a folder given as a log read "no such log
+// file", though it was there).
+inline std::string WhyNotARegularFile(const std::filesystem::path& path) {
+  std::error_code refused;
+  return std::filesystem::exists(path, refused) ? "not a regular file (a folder or a device?)"
+                                                : "no such file";
 }
 
 }  // namespace plywood::perception

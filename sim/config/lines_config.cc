@@ -103,7 +103,8 @@ std::unique_ptr<perception::LineExtractor> MakeLineExtractor(const std::string& 
 
 std::vector<std::string> TakenLinesKeys() {
   std::vector<std::string> keys = perception::LineExtractorNames();
-  for (const char* key : {"extractors", "range_cut_m", "scoring"}) keys.push_back(key);
+  // Section keys, and "scans": metrics.json's lines.scans would also be lines.<name>.*.
+  for (const char* key : {"extractors", "range_cut_m", "scoring", "scans"}) keys.push_back(key);
   return keys;
 }
 

@@ -93,6 +93,8 @@ const std::vector<std::string>& KnownEstimators() {
 std::vector<std::string> TakenOdometryKeys() {
   std::vector<std::string> keys = KnownEstimators();
   keys.push_back("calibration");
+  // The ground truth's own name: trajectory.truth.tum and the truth_* columns of trajectory.csv.
+  keys.push_back("truth");
   return keys;
 }
 

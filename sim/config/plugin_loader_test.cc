@@ -113,12 +113,14 @@ TEST_F(RegisteredAlgorithmsTest, NamesMustNotShadowBuiltInsSectionKeysOrEachOthe
   const auto extractor = [](const ParameterMap&) { return std::make_unique<BlindExtractor>(); };
   const auto estimator = [](const robot::OdometryGeometry&, const msgs::Pose2D& X,
                             const ParameterMap&) { return std::make_unique<FrozenOdometry>(X); };
-  for (const char* name : {"ransac", "scoring", "extractors", "test_blind"}) {
+  // audit s33: "scans" (metrics.json's lines.scans) and "truth" (trajectory.truth.tum, whose
+  // truth_* columns an estimator "truth" would have written twice) were accepted.
+  for (const char* name : {"ransac", "scoring", "extractors", "scans", "test_blind"}) {
     perception::AlgorithmRegistry r;
     r.line_extractors.Add({name, extractor});
     rejects(r, std::string("line extractor '") + name + "'");
   }
-  for (const char* name : {"ekf", "calibration", "test_frozen"}) {
+  for (const char* name : {"ekf", "calibration", "truth", "test_frozen"}) {
     perception::AlgorithmRegistry r;
     r.odometry_estimators.Add({name, false, estimator});
     rejects(r, std::string("odometry estimator '") + name + "'");

@@ -171,8 +171,10 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
   }
 
   // A scene that cannot give meaningful results is refused before anything runs.
-  if (const auto problem = MissingFloor(*scene_)) {
-    throw ConfigError(config.source_file, "world", config.world_path.string() + ": " + *problem);
+  for (const auto& check : {MissingFloor, MovableWorldGeometry, NonDefaultPhysicsOptions}) {
+    if (const auto problem = check(*scene_)) {
+      throw ConfigError(config.source_file, "world", config.world_path.string() + ": " + *problem);
+    }
   }
   for (const auto& check : {SpawnOutsideWorld, SpawnCollision}) {
     if (const auto problem = check(*scene_)) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "msgs/shortest_number.h"
 
@@ -12,6 +13,11 @@ namespace {
 // MuJoCo resolves a contact deeper than this by pushing the bodies apart; shallower ones are
 // resting contact within its solver's tolerance.
 constexpr double kPenetrationToleranceM = 1e-3;
+
+// How far from z = 0, and from level, a floor plane may be: rounding in a world file's numbers,
+// far below anything the robot would feel.
+constexpr double kFloorToleranceM = 1e-6;
+constexpr double kFloorTiltToleranceRad = 1e-6;
 
 bool IsStaticWorldGeom(const Scene& scene, int geom) {
   const mjModel* m = scene.model();
@@ -34,10 +40,107 @@ std::string At(const msgs::Pose2D& pose) {
 
 std::optional<std::string> MissingFloor(const Scene& scene) {
   const mjModel* m = scene.model();
+  const mjData* d = scene.data();
+  int first_plane = -1;
   for (int g = 0; g < m->ngeom; ++g) {
-    if (m->geom_type[g] == mjGEOM_PLANE && IsStaticWorldGeom(scene, g)) return std::nullopt;
+    if (m->geom_type[g] != mjGEOM_PLANE || !IsStaticWorldGeom(scene, g)) continue;
+    // The robot is placed with its wheels on z = 0: a floor elsewhere, or tilted, drops it or
+    // buries it (a floor 0.3 m up flung the robot round, drift 259 %, exit 0).
+    const mjtNum* r = d->geom_xmat + 9 * g;  // row-major: the plane's normal is column 2
+    const double tilt_rad = std::atan2(std::hypot(r[2], r[5]), r[8]);
+    const double z_m = d->geom_xpos[3 * g + 2];
+    if (std::abs(z_m) <= kFloorToleranceM && std::abs(tilt_rad) <= kFloorTiltToleranceRad) {
+      return std::nullopt;
+    }
+    if (first_plane < 0) first_plane = g;
   }
-  return "the world has no floor (a static plane geom the wheels can stand on)";
+  if (first_plane < 0)
+    return "the world has no floor (a static plane geom the wheels can stand on)";
+  const mjtNum* r = d->geom_xmat + 9 * first_plane;
+  const double tilt_deg = std::atan2(std::hypot(r[2], r[5]), r[8]) * 180.0 / std::numbers::pi;
+  return "the world has no floor at z = 0: its plane " + GeomName(m, first_plane) +
+         " is at z = " + Mm(d->geom_xpos[3 * first_plane + 2]) + " m, tilted " +
+         msgs::ShortestNumber(std::round(tilt_deg * 100.0) / 100.0) +
+         " deg; the robot stands on z = 0, so put a level floor plane there";
+}
+
+std::optional<std::string> NonDefaultPhysicsOptions(const Scene& scene) {
+  mjOption defaults;
+  mj_defaultOption(&defaults);
+  const mjOption& o = scene.model()->opt;
+  const auto numbers = [](const mjtNum* v, int n) {
+    std::string text;
+    for (int i = 0; i < n; ++i) text += (i ? " " : "") + msgs::ShortestNumber(v[i]);
+    return text;
+  };
+  // What the world may not change: every option but the timestep (the experiment's
+  // physics.timestep_s), the remote API's rate and the magnetic field (no sensor reads it).
+  const struct {
+    const char* name;
+    const mjtNum* value;
+    const mjtNum* fallback;
+    int n;
+  } reals[] = {{"impratio", &o.impratio, &defaults.impratio, 1},
+               {"tolerance", &o.tolerance, &defaults.tolerance, 1},
+               {"noslip_tolerance", &o.noslip_tolerance, &defaults.noslip_tolerance, 1},
+               {"mpr_tolerance", &o.mpr_tolerance, &defaults.mpr_tolerance, 1},
+               {"gravity", o.gravity, defaults.gravity, 3},
+               {"wind", o.wind, defaults.wind, 3},
+               {"density", &o.density, &defaults.density, 1},
+               {"viscosity", &o.viscosity, &defaults.viscosity, 1},
+               {"o_margin", &o.o_margin, &defaults.o_margin, 1},
+               {"o_solref", o.o_solref, defaults.o_solref, mjNREF},
+               {"o_solimp", o.o_solimp, defaults.o_solimp, mjNIMP}};
+  for (const auto& r : reals) {
+    if (std::equal(r.value, r.value + r.n, r.fallback)) continue;
+    return "the world sets the physics option " + std::string(r.name) + " to " +
+           numbers(r.value, r.n) + " (MuJoCo's default " + numbers(r.fallback, r.n) +
+           "); every world runs with the same physics (the experiment sets only "
+           "physics.timestep_s): remove the world's <option>";
+  }
+  const struct {
+    const char* name;
+    int value;
+    int fallback;
+  } whole[] = {{"integrator", o.integrator, defaults.integrator},
+               {"collision", o.collision, defaults.collision},
+               {"cone", o.cone, defaults.cone},
+               {"jacobian", o.jacobian, defaults.jacobian},
+               {"solver", o.solver, defaults.solver},
+               {"iterations", o.iterations, defaults.iterations},
+               {"noslip_iterations", o.noslip_iterations, defaults.noslip_iterations},
+               {"mpr_iterations", o.mpr_iterations, defaults.mpr_iterations},
+               {"disableflags (<flag>)", o.disableflags, defaults.disableflags},
+               {"enableflags (<flag>)", o.enableflags, defaults.enableflags}};
+  for (const auto& w : whole) {
+    if (w.value == w.fallback) continue;
+    return "the world sets the physics option " + std::string(w.name) + " to " +
+           std::to_string(w.value) + " (MuJoCo's default " + std::to_string(w.fallback) +
+           "); every world runs with the same physics (the experiment sets only "
+           "physics.timestep_s): remove the world's <option>";
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> MovableWorldGeometry(const Scene& scene) {
+  const mjModel* m = scene.model();
+  for (int g = 0; g < m->ngeom; ++g) {
+    int moving = -1;  // the body nearest the world with a joint or mocap, on the geom's way up
+    bool robot = scene.IsRobotGeom(g);
+    for (int b = m->geom_bodyid[g]; b != 0 && !robot; b = m->body_parentid[b]) {
+      robot = b == scene.base_body_id();
+      if (m->body_jntnum[b] > 0 || m->body_mocapid[b] >= 0) moving = b;
+    }
+    if (!robot && moving >= 0) {
+      const int b = moving;
+      const char* body = mj_id2name(m, mjOBJ_BODY, b);
+      return "the world's " + GeomName(m, g) + " can move (its body " +
+             (body ? "'" + std::string(body) + "'" : "#" + std::to_string(b)) +
+             (m->body_jntnum[b] > 0 ? " has a joint" : " is a mocap body") +
+             "); the ground truth takes the world as fixed: a world is static geometry only";
+    }
+  }
+  return std::nullopt;
 }
 
 std::optional<std::string> SpawnCollision(const Scene& scene) {

@@ -10,8 +10,19 @@ namespace plywood::sim {
 // What makes a compiled scene unfit to simulate, checked after compilation and before the first
 // step. Each returns a description of the problem (for a one-line error), or nullopt when fine.
 
-// The world has no plane geom for the wheels to stand on.
+// The world has no level plane geom at z = 0 for the wheels to stand on (the robot is placed
+// there).
 std::optional<std::string> MissingFloor(const Scene& scene);
+
+// A physics option (<option> or <flag>) other than MuJoCo's default, the timestep aside: the
+// world would change the physics every experiment and every other world share (a world with
+// gravity="0 0 9.81" ran, the robot afloat, exit 0).
+std::optional<std::string> NonDefaultPhysicsOptions(const Scene& scene);
+
+// A geom of the world on a body with a joint or a mocap body: the robot would push it about
+// (a free crate in its path ran, exit 0), while walls.csv, the laser's ground truth and the planar
+// drive take every world geom as fixed.
+std::optional<std::string> MovableWorldGeometry(const Scene& scene);
 
 // The robot, at its spawn pose, overlaps the world's static geometry (a wall, an obstacle) by more
 // than a millimetre. Uses MuJoCo's own contacts from the scene's mj_forward: they test the robot's
