@@ -98,6 +98,12 @@ void SonarExplorerOptions::Validate() const {
         "narrow_clearance_m: must be > robot_radius_m + front_margin_m and <= path_clearance_m, "
         "got " +
         msgs::ShortestNumber(narrow_clearance_m));
+  if (squeeze_clearance_m != 0.0 && !(squeeze_clearance_m > robot_radius_m + front_margin_m &&
+                                      squeeze_clearance_m <= narrow_clearance_m))
+    throw std::invalid_argument(
+        "squeeze_clearance_m: must be 0 or > robot_radius_m + front_margin_m and <= "
+        "narrow_clearance_m, got " +
+        msgs::ShortestNumber(squeeze_clearance_m));
   RequireInRange("frontier_view_m", frontier_view_m, 0.01, 10.0);
   RequireNonNegative("frontier_wall_band_m", frontier_wall_band_m);
   if (!(frontier_view_m > waypoint_tolerance_m))
@@ -499,6 +505,9 @@ SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here
   usable(out.safe_from_heard, near_heard, heard, options_.path_clearance_m);
   usable(out.narrow_safe, narrow, occupied, options_.narrow_clearance_m);
   usable(out.narrow_safe_from_heard, narrow_heard, heard, options_.narrow_clearance_m);
+  if (options_.squeeze_clearance_m > 0.0)
+    usable(out.squeeze_safe_from_heard, Dilate(heard, W, H, options_.squeeze_clearance_m / res),
+           heard, options_.squeeze_clearance_m);
   return out;
 }
 
@@ -571,6 +580,8 @@ std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToAnyFrontier(
   std::optional<std::vector<Eigen::Vector2d>> path =
       PlanToFrontier(planning, planning.safe_from_heard, here);
   if (!path) path = PlanToFrontier(planning, planning.narrow_safe_from_heard, here);
+  if (!path && !planning.squeeze_safe_from_heard.empty())
+    path = PlanToFrontier(planning, planning.squeeze_safe_from_heard, here);
   return path;
 }
 

@@ -83,6 +83,13 @@ struct SonarExplorerOptions {
   // sonar misses a face's outer 5-10 cm at grazing angles): layout 3 touched a box at seeds 3, 9,
   // 18 (docs/sonar_map.md).
   double narrow_clearance_m = 0.35;
+  // The last resort before "map_complete": a frontier reached by no path at narrow_clearance_m
+  // is approached over free cells this far from the cells heard, i.e. through a gap between heard
+  // faces 2 x this wide (0.56 m at 0.28: the robot is 0.41 m wide). Without it an unknown region
+  // behind a gap 0.45-0.7 m wide (wider than the robot, narrower than 2 narrow_clearance_m) was
+  // never entered and the map guessed it (issue 14 round 22). 0 = off; otherwise between
+  // robot_radius_m + front_margin_m (the front check's corridor) and narrow_clearance_m.
+  double squeeze_clearance_m = 0.0;
   double stop_range_m = 0.3;  // a front echo closer than this aborts the move (into D)
   // Half-width of that corridor beyond the body. It is narrower than path_clearance_m, so that a
   // planned path is not blocked by the cells that shaped it.
@@ -181,6 +188,8 @@ class SonarExplorer final : public robot::Controller {
     // The same with narrow_clearance_m.
     std::vector<char> narrow_safe;
     std::vector<char> narrow_safe_from_heard;
+    // safe_from_heard with squeeze_clearance_m (empty when it is 0).
+    std::vector<char> squeeze_safe_from_heard;
   };
   PlanningCells Planning(const Eigen::Vector2d& here, const std::vector<Rect>& obstacles) const;
   // Waypoints after the robot along the shortest traversable cell path to a goal cell: empty when
@@ -203,7 +212,8 @@ class SonarExplorer final : public robot::Controller {
   std::optional<std::vector<Eigen::Vector2d>> PlanToFrontier(
       const PlanningCells& planning, const std::vector<char>& safe_from_heard,
       const Eigen::Vector2d& here) const;
-  // PlanToFrontier with path_clearance_m, else with narrow_clearance_m.
+  // PlanToFrontier with path_clearance_m, else with narrow_clearance_m, else (when it is set)
+  // with squeeze_clearance_m.
   std::optional<std::vector<Eigen::Vector2d>> PlanToAnyFrontier(const PlanningCells& planning,
                                                                 const Eigen::Vector2d& here) const;
   // While a bump panel is pressed, and for bump_back_off_s after: the command backing away.

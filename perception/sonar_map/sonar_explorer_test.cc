@@ -400,6 +400,18 @@ void ExpectThrowsNaming(const SonarExplorerOptions& options, const std::string& 
   }
 }
 
+TEST(SonarExplorerTest, SqueezeClearanceOutsideFrontCorridorToNarrowClearanceThrowsNamingIt) {
+  SonarExplorerOptions options = ClassicalOptions();
+  options.squeeze_clearance_m = options.robot_radius_m + options.front_margin_m;
+  ExpectThrowsNaming(options, "squeeze_clearance_m");
+  options.squeeze_clearance_m = options.narrow_clearance_m + 0.01;
+  ExpectThrowsNaming(options, "squeeze_clearance_m");
+  options.squeeze_clearance_m = options.narrow_clearance_m;
+  EXPECT_NO_THROW(MakeExplorer(options));
+  options.squeeze_clearance_m = 0.0;
+  EXPECT_NO_THROW(MakeExplorer(options));
+}
+
 TEST(SonarExplorerTest, DefaultClassicalOptionsAreValid) {
   EXPECT_NO_THROW(MakeExplorer(ClassicalOptions()));
 }
