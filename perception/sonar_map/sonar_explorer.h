@@ -85,11 +85,13 @@ struct SonarExplorerOptions {
   double narrow_clearance_m = 0.35;
   // The last resort before "map_complete": a frontier reached by no path at narrow_clearance_m
   // is approached over free cells this far from the cells heard, i.e. through a gap between heard
-  // faces 2 x this wide (0.56 m at 0.28: the robot is 0.41 m wide). Without it an unknown region
-  // behind a gap 0.45-0.7 m wide (wider than the robot, narrower than 2 narrow_clearance_m) was
-  // never entered and the map guessed it (issue 14 round 22). 0 = off; otherwise between
-  // robot_radius_m + front_margin_m (the front check's corridor) and narrow_clearance_m.
-  double squeeze_clearance_m = 0.0;
+  // faces 2 x this wide (0.6 m: the robot is 0.41 m wide). Without it an unknown region behind a
+  // gap wider than the robot but heard narrower than 2 narrow_clearance_m was never entered and
+  // the map guessed it (generated rooms: e up to 0.45-0.57; docs/sonar_map.md rounds 23-24).
+  // 0.28 let a layout run touch a box once, 0.30 touches nothing in the layouts x seeds 1-20.
+  // 0 = off; otherwise between robot_radius_m + front_margin_m (the front check's corridor) and
+  // narrow_clearance_m.
+  double squeeze_clearance_m = 0.30;
   double stop_range_m = 0.3;  // a front echo closer than this aborts the move (into D)
   // Half-width of that corridor beyond the body. It is narrower than path_clearance_m, so that a
   // planned path is not blocked by the cells that shaped it.
