@@ -202,9 +202,7 @@ bool ParseCarmenLine(const std::string& line, CarmenLog* log) {
 
 CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptions& options) {
   if (!IsRegularFile(path)) {
-    const bool absent = !std::filesystem::exists(path);
-    throw std::runtime_error(path.string() + ": " +
-                             (absent ? std::string("no such log file") : WhyNotARegularFile(path)));
+    throw std::runtime_error(path.string() + ": " + WhyNotARegularFile(path, "log file"));
   }
   CarmenLog log;
   LineReader reader(path);

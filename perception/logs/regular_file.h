@@ -14,13 +14,14 @@ inline bool IsRegularFile(const std::filesystem::path& path) {
   return std::filesystem::is_regular_file(path, refused);
 }
 
-// Why `path` is not a regular file, for a one-line error: "no such file" when nothing is there,
+// Why `path` is not a regular file, for a one-line error: "no such <what>" when nothing is there,
 // else "not a regular file (a folder or a device?)" (a folder given as a log read "no such log
 // file", though it was there).
-inline std::string WhyNotARegularFile(const std::filesystem::path& path) {
+inline std::string WhyNotARegularFile(const std::filesystem::path& path,
+                                      const std::string& what = "file") {
   std::error_code refused;
   return std::filesystem::exists(path, refused) ? "not a regular file (a folder or a device?)"
-                                                : "no such file";
+                                                : "no such " + what;
 }
 
 }  // namespace plywood::perception

@@ -416,6 +416,29 @@ TEST_P(RandomWorldTest, ScanBatchGivesCastWithoutNormalsBitsBeamForBeam) {
   }
 }
 
+// CastBatch with normals gives, ray by ray, the very bits Cast gives: whether it hits, and the
+// distance, geom and normal. Counts the rays and the hits; `where` names the batch in a failure.
+void ExpectBatchIsCast(const GridRayCaster2D& grid, const std::vector<Eigen::Vector3d>& origins,
+                       const std::vector<Eigen::Vector3d>& dirs, double range,
+                       const std::string& where, int* rays, int* hit_count) {
+  const int n = static_cast<int>(dirs.size());
+  std::vector<RayHit> hits(n);
+  std::unique_ptr<bool[]> found(new bool[n]);
+  grid.CastBatch(origins.data(), dirs.data(), n, range, /*with_normal=*/true, hits.data(),
+                 found.get());
+  for (int i = 0; i < n; ++i) {
+    RayHit one;
+    const bool hit = grid.Cast(origins[i], dirs[i], range, &one);
+    ++*rays;
+    ASSERT_EQ(found[i], hit) << where << " ray " << i;
+    if (!hit) continue;
+    ++*hit_count;
+    ASSERT_EQ(hits[i].distance_m, one.distance_m) << where << " ray " << i;
+    ASSERT_EQ(hits[i].geom_id, one.geom_id) << where << " ray " << i;
+    ASSERT_EQ(hits[i].normal_W, one.normal_W) << where << " ray " << i;
+  }
+}
+
 // A sonar ring's cones: rays from origins up to 0.3 m apart, with normals. The batch gives, ray by
 // ray, the very bits Cast gives (distance, geom and normal).
 TEST_P(RandomWorldTest, RingBatchGivesCastsBitsRayForRay) {
@@ -446,23 +469,9 @@ TEST_P(RandomWorldTest, RingBatchGivesCastsBitsRayForRay) {
                                        std::sin(pitch)));
       }
     }
-    const int n = static_cast<int>(dirs.size());
-    std::vector<RayHit> hits(n);
-    std::unique_ptr<bool[]> found(new bool[n]);
-    const double range = ring % 2 ? 5.0 : 30.0;
-    grid.CastBatch(origins.data(), dirs.data(), n, range, /*with_normal=*/true, hits.data(),
-                   found.get());
-    for (int i = 0; i < n; ++i) {
-      RayHit one;
-      const bool hit = grid.Cast(origins[i], dirs[i], range, &one);
-      ++rays;
-      ASSERT_EQ(found[i], hit) << "ring " << ring << " ray " << i;
-      if (!hit) continue;
-      ++hit_count;
-      ASSERT_EQ(hits[i].distance_m, one.distance_m) << "ring " << ring << " ray " << i;
-      ASSERT_EQ(hits[i].geom_id, one.geom_id) << "ring " << ring << " ray " << i;
-      ASSERT_EQ(hits[i].normal_W, one.normal_W) << "ring " << ring << " ray " << i;
-    }
+    ExpectBatchIsCast(grid, origins, dirs, ring % 2 ? 5.0 : 30.0, "ring " + std::to_string(ring),
+                      &rays, &hit_count);
+    if (HasFatalFailure()) return;
   }
   EXPECT_GT(rays, 8000);
   EXPECT_GT(hit_count, rays / 2);
@@ -583,23 +592,10 @@ TEST(GridRayCaster2DTest, WideRingBatchNearShapesGivesCastsBits) {
           dirs.emplace_back(std::cos(b), std::sin(b), 0.0);
         }
       }
-      const int n = static_cast<int>(dirs.size());
-      std::vector<RayHit> hits(n);
-      std::unique_ptr<bool[]> found(new bool[n]);
-      const double range = ring % 3 == 0 ? 30.0 : 5.0;
-      grid.CastBatch(origins.data(), dirs.data(), n, range, /*with_normal=*/true, hits.data(),
-                     found.get());
-      for (int i = 0; i < n; ++i) {
-        RayHit one;
-        const bool hit = grid.Cast(origins[i], dirs[i], range, &one);
-        ++rays;
-        ASSERT_EQ(found[i], hit) << "cell " << cell << " ring " << ring << " ray " << i;
-        if (!hit) continue;
-        ++hit_count;
-        ASSERT_EQ(hits[i].distance_m, one.distance_m) << "ring " << ring << " ray " << i;
-        ASSERT_EQ(hits[i].geom_id, one.geom_id) << "ring " << ring << " ray " << i;
-        ASSERT_EQ(hits[i].normal_W, one.normal_W) << "ring " << ring << " ray " << i;
-      }
+      ExpectBatchIsCast(grid, origins, dirs, ring % 3 == 0 ? 30.0 : 5.0,
+                        "cell " + std::to_string(cell) + " ring " + std::to_string(ring), &rays,
+                        &hit_count);
+      if (HasFatalFailure()) return;
     }
   }
   EXPECT_GT(rays, 50000);

@@ -19,6 +19,13 @@ constexpr double kPenetrationToleranceM = 1e-3;
 constexpr double kFloorToleranceM = 1e-6;
 constexpr double kFloorTiltToleranceRad = 1e-6;
 
+// The angle between a plane geom's normal (its local z: column 2 of the row-major geom_xmat) and
+// world z.
+double PlaneTiltRad(const mjData* d, int geom) {
+  const mjtNum* r = d->geom_xmat + 9 * geom;
+  return std::atan2(std::hypot(r[2], r[5]), r[8]);
+}
+
 bool IsStaticWorldGeom(const Scene& scene, int geom) {
   const mjModel* m = scene.model();
   return !scene.IsRobotGeom(geom) && m->body_weldid[m->geom_bodyid[geom]] == 0;
@@ -46,18 +53,16 @@ std::optional<std::string> MissingFloor(const Scene& scene) {
     if (m->geom_type[g] != mjGEOM_PLANE || !IsStaticWorldGeom(scene, g)) continue;
     // The robot is placed with its wheels on z = 0: a floor elsewhere, or tilted, drops it or
     // buries it (a floor 0.3 m up flung the robot round, drift 259 %, exit 0).
-    const mjtNum* r = d->geom_xmat + 9 * g;  // row-major: the plane's normal is column 2
-    const double tilt_rad = std::atan2(std::hypot(r[2], r[5]), r[8]);
     const double z_m = d->geom_xpos[3 * g + 2];
-    if (std::abs(z_m) <= kFloorToleranceM && std::abs(tilt_rad) <= kFloorTiltToleranceRad) {
+    if (std::abs(z_m) <= kFloorToleranceM &&
+        std::abs(PlaneTiltRad(d, g)) <= kFloorTiltToleranceRad) {
       return std::nullopt;
     }
     if (first_plane < 0) first_plane = g;
   }
   if (first_plane < 0)
     return "the world has no floor (a static plane geom the wheels can stand on)";
-  const mjtNum* r = d->geom_xmat + 9 * first_plane;
-  const double tilt_deg = std::atan2(std::hypot(r[2], r[5]), r[8]) * 180.0 / std::numbers::pi;
+  const double tilt_deg = PlaneTiltRad(d, first_plane) * 180.0 / std::numbers::pi;
   return "the world has no floor at z = 0: its plane " + GeomName(m, first_plane) +
          " is at z = " + Mm(d->geom_xpos[3 * first_plane + 2]) + " m, tilted " +
          msgs::ShortestNumber(std::round(tilt_deg * 100.0) / 100.0) +
@@ -72,6 +77,13 @@ std::optional<std::string> NonDefaultPhysicsOptions(const Scene& scene) {
     std::string text;
     for (int i = 0; i < n; ++i) text += (i ? " " : "") + msgs::ShortestNumber(v[i]);
     return text;
+  };
+  const auto refuse = [](const std::string& name, const std::string& value,
+                         const std::string& fallback) {
+    return "the world sets the physics option " + name + " to " + value + " (MuJoCo's default " +
+           fallback +
+           "); every world runs with the same physics (the experiment sets only "
+           "physics.timestep_s): remove the world's <option>";
   };
   // What the world may not change: every option but the timestep (the experiment's
   // physics.timestep_s), the remote API's rate and the magnetic field (no sensor reads it).
@@ -93,10 +105,7 @@ std::optional<std::string> NonDefaultPhysicsOptions(const Scene& scene) {
                {"o_solimp", o.o_solimp, defaults.o_solimp, mjNIMP}};
   for (const auto& r : reals) {
     if (std::equal(r.value, r.value + r.n, r.fallback)) continue;
-    return "the world sets the physics option " + std::string(r.name) + " to " +
-           numbers(r.value, r.n) + " (MuJoCo's default " + numbers(r.fallback, r.n) +
-           "); every world runs with the same physics (the experiment sets only "
-           "physics.timestep_s): remove the world's <option>";
+    return refuse(r.name, numbers(r.value, r.n), numbers(r.fallback, r.n));
   }
   const struct {
     const char* name;
@@ -114,10 +123,7 @@ std::optional<std::string> NonDefaultPhysicsOptions(const Scene& scene) {
                {"enableflags (<flag>)", o.enableflags, defaults.enableflags}};
   for (const auto& w : whole) {
     if (w.value == w.fallback) continue;
-    return "the world sets the physics option " + std::string(w.name) + " to " +
-           std::to_string(w.value) + " (MuJoCo's default " + std::to_string(w.fallback) +
-           "); every world runs with the same physics (the experiment sets only "
-           "physics.timestep_s): remove the world's <option>";
+    return refuse(w.name, std::to_string(w.value), std::to_string(w.fallback));
   }
   return std::nullopt;
 }
