@@ -3,6 +3,7 @@
 // Exit codes: 0 success, 1 a failure during the run, 2 bad input (config, files, usage).
 
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <stdexcept>
@@ -116,6 +117,10 @@ std::string OneLine(std::string text) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A file-size limit (ulimit -f) would kill plywood with SIGXFSZ, without a word, mid-write;
+  // ignored, the write fails with EFBIG and the writer names the file. Children (sweep runs,
+  // ffmpeg) inherit it.
+  std::signal(SIGXFSZ, SIG_IGN);
   try {
     return plywood::apps::Main(argc, argv);
   } catch (const plywood::sim::ConfigError& e) {

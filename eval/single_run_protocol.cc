@@ -3,7 +3,6 @@
 #include <unistd.h>
 
 #include <cstdio>
-#include <fstream>
 #include <optional>
 #include <string>
 
@@ -16,6 +15,7 @@
 #include "sim/runner/experiment_runner.h"
 #include "sim/runner/run_writer.h"
 #include "sim/runner/sensor_log_stream.h"
+#include "sim/runner/text_file.h"
 
 namespace plywood::eval {
 namespace {
@@ -142,7 +142,7 @@ int SingleRunProtocol(const ProtocolContext& context) {
   }
   if (snapshot) snapshot->Finish();
   if (!line_scores.empty()) {
-    std::ofstream(out_dir + "/timing.json") << eval::LineTimingJson(line_scores);
+    sim::WriteTextFile(context.out_dir / "timing.json", eval::LineTimingJson(line_scores));
     WriteLinesCsv(context.out_dir / "lines.csv", LinesCsvRows(line_scores));
     WriteCirclesCsv(context.out_dir / "circles.csv", line_scores);
   }

@@ -2,9 +2,12 @@
 
 #include <png.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <stdexcept>
+#include <string>
 
 namespace plywood::render {
 namespace {
@@ -13,18 +16,46 @@ struct FileCloser {
   void operator()(std::FILE* f) const { std::fclose(f); }
 };
 
+// What went wrong while encoding, kept for the one error line: libpng's default handler would
+// print "libpng error: Write Error" on stderr as a line of its own.
+struct PngWriteState {
+  std::FILE* file = nullptr;
+  std::string error;  // "cannot write: No space left on device" or libpng's message
+};
+
+[[noreturn]] void OnPngError(png_structp png, png_const_charp message) {
+  auto* state = static_cast<PngWriteState*>(png_get_error_ptr(png));
+  if (state->error.empty()) state->error = std::string("PNG encoding failed: ") + message;
+  png_longjmp(png, 1);
+}
+
+void OnPngWarning(png_structp, png_const_charp) {}
+
+void WritePngBytes(png_structp png, png_bytep data, png_size_t size) {
+  auto* state = static_cast<PngWriteState*>(png_get_io_ptr(png));
+  if (std::fwrite(data, 1, size, state->file) != size) {
+    state->error = std::string("cannot write: ") + std::strerror(errno);
+    png_error(png, "write failed");
+  }
+}
+
+void FlushPngBytes(png_structp) {}
+
 }  // namespace
 
 void WritePng(const RgbImage& image, const std::filesystem::path& path) {
   std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "wb"));
   if (!file) throw std::runtime_error(path.string() + ": cannot open for writing");
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  PngWriteState state{.file = file.get(), .error = {}};
+  png_structp png =
+      png_create_write_struct(PNG_LIBPNG_VER_STRING, &state, OnPngError, OnPngWarning);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   if (!png || !info || setjmp(png_jmpbuf(png))) {
     png_destroy_write_struct(&png, &info);
-    throw std::runtime_error(path.string() + ": PNG encoding failed");
+    throw std::runtime_error(path.string() + ": " +
+                             (state.error.empty() ? "PNG encoding failed" : state.error));
   }
-  png_init_io(png, file.get());
+  png_set_write_fn(png, &state, WritePngBytes, FlushPngBytes);
   png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   // Every row "Up"-filtered and zlib at level 3: libpng's default (each row tried with all five
@@ -39,6 +70,10 @@ void WritePng(const RgbImage& image, const std::filesystem::path& path) {
   }
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
+  // The stdio buffer's last bytes are written on closing: a full disk may show only here.
+  if (std::fclose(file.release()) != 0) {
+    throw std::runtime_error(path.string() + ": cannot write: " + std::strerror(errno));
+  }
 }
 
 RgbImage ReadPng(const std::filesystem::path& path) {

@@ -61,5 +61,25 @@ TEST(PngImageTest, UnwritablePathIsNamed) {
   }
 }
 
+// A full disk (/dev/full: every write fails with ENOSPC) is one error naming the file and why,
+// with nothing on stderr: libpng's own handler printed "libpng error: Write Error" as a line of
+// its own, and a picture small enough to sit in stdio's buffer until fclose was "written" without
+// a word.
+TEST(PngImageTest, AFullDiskIsOneErrorNamingTheFileForBigAndSmallPictures) {
+  const std::filesystem::path full = "/dev/full";
+  if (!std::filesystem::exists(full)) GTEST_SKIP() << "no /dev/full";
+  for (const auto& [width, height] : {std::pair{4, 4}, {1024, 653}}) {
+    ::testing::internal::CaptureStderr();
+    try {
+      WritePng(TestPicture(width, height), full);
+      ADD_FAILURE() << width << " x " << height << ": expected std::runtime_error";
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()), "/dev/full: cannot write: No space left on device")
+          << width << " x " << height;
+    }
+    EXPECT_EQ(::testing::internal::GetCapturedStderr(), "") << width << " x " << height;
+  }
+}
+
 }  // namespace
 }  // namespace plywood::render

@@ -25,12 +25,27 @@ VideoEncoder::VideoEncoder(const std::filesystem::path& path, double fps) : path
 }
 
 VideoEncoder::~VideoEncoder() {
-  if (pid_ < 0) return;
-  try {
-    Close();
-  } catch (const std::exception& e) {
-    std::cerr << "plywood: " << e.what() << "\n";
+  if (pid_ >= 0) {
+    try {
+      Close();
+    } catch (const std::exception& e) {
+      std::cerr << "plywood: " << e.what() << "\n";
+    }
   }
+  if (ffmpeg_errors_) std::fclose(ffmpeg_errors_);
+}
+
+std::string VideoEncoder::FfmpegSaid() const {
+  if (!ffmpeg_errors_) return "";
+  std::fflush(ffmpeg_errors_);
+  std::rewind(ffmpeg_errors_);
+  char line[512];
+  while (std::fgets(line, sizeof line, ffmpeg_errors_)) {
+    std::string text = line;
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+    if (!text.empty()) return text;
+  }
+  return "";
 }
 
 void VideoEncoder::Start(int width, int height) {
@@ -59,6 +74,9 @@ void VideoEncoder::Start(int width, int height) {
   posix_spawn_file_actions_adddup2(&actions, fds[0], STDIN_FILENO);
   posix_spawn_file_actions_addclose(&actions, fds[1]);
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  ffmpeg_errors_ = std::tmpfile();
+  if (ffmpeg_errors_)
+    posix_spawn_file_actions_adddup2(&actions, fileno(ffmpeg_errors_), STDERR_FILENO);
   const int error = posix_spawnp(&pid_, "ffmpeg", &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   close(fds[0]);
@@ -87,8 +105,10 @@ void VideoEncoder::AddFrame(const RgbImage& frame) {
       const ssize_t sent = send(pipe_fd_, data, size, MSG_NOSIGNAL);
       if (sent < 0 && errno == EINTR) continue;
       if (sent <= 0) {
-        throw std::runtime_error(path_.string() + ": ffmpeg stopped reading frames (" +
-                                 std::strerror(errno) + ")");
+        const std::string why = std::strerror(errno);
+        const std::string said = FfmpegSaid();
+        throw std::runtime_error(path_.string() + ": ffmpeg stopped reading frames (" + why + ")" +
+                                 (said.empty() ? "" : ": " + said));
       }
       data += sent;
       size -= static_cast<std::size_t>(sent);
@@ -118,6 +138,8 @@ void VideoEncoder::Close() {
   while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
   }
   pid_ = -1;
+  const std::string said = FfmpegSaid();
+  if (!said.empty()) throw std::runtime_error(path_.string() + ": ffmpeg: " + said);
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     throw std::runtime_error(path_.string() + ": ffmpeg failed (exit status " +
                              std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")");

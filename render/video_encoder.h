@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <string>
 
 #include "render/png_image.h"
 
@@ -39,6 +40,10 @@ class VideoEncoder {
   long frames_ = 0;
   pid_t pid_ = -1;
   int pipe_fd_ = -1;
+  // ffmpeg's stderr: ffmpeg exits 0 after "Error writing trailer" (a full disk), so any line it
+  // writes at -loglevel error is a failure, reported as one line of ours.
+  std::FILE* ffmpeg_errors_ = nullptr;
+  std::string FfmpegSaid() const;
 };
 
 }  // namespace plywood::render

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -725,6 +726,34 @@ TEST_F(ReliabilityTest, AKilledRunIsNeverScoredAndTheNextRunCleansUp) {
       "score trajectory " + out.string() + " " + (out / "trajectory.encoder.tum").string(), dir);
   // A robot that stands still has no drift per distance: scored, but refused (section 8).
   ExpectOneLine(scored, {"trajectory.csv", "less than 1 cm"});
+}
+
+// A file-size limit (ulimit -f) made the kernel kill plywood with SIGXFSZ mid-write, without a
+// word. Now the write fails (EFBIG), the run ends with one line naming the file, exit 1, and
+// leaves no result and no staging folder.
+TEST_F(ReliabilityTest, AFileSizeLimitIsAWriteErrorNamingTheFileNotASignal) {
+  const fs::path dir = Dir();
+  const fs::path file = WriteFile(dir / "experiment.yaml",
+                                  HallExperiment(0.0, 0.0, "controller: {type: square_path}\n",
+                                                 "{encoders: {}, laser: {rate_hz: 10}}"));
+  rlimit saved{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &saved), 0);
+  rlimit limited = saved;
+  limited.rlim_cur = 16 * 1024;  // the laser log of 20 s is about 500 kB
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &limited), 0);
+  const CliResult result = RunPlywood(
+      "run " + file.string() + " --quiet --set duration_s=20 --out " + (dir / "out").string(), dir);
+  setrlimit(RLIMIT_FSIZE, &saved);
+  EXPECT_EQ(result.exit_code, 1) << "killed by a signal? " << result.err;
+  EXPECT_EQ(result.err.rfind("plywood: error: " + (dir / "out.partial-").string(), 0), 0u)
+      << result.err;
+  EXPECT_NE(result.err.find(": write failed"), std::string::npos) << result.err;
+  EXPECT_EQ(result.err.find('\n'), result.err.size() - 1) << "not one line: " << result.err;
+  EXPECT_FALSE(fs::exists(dir / "out" / "complete.json"));
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    EXPECT_EQ(entry.path().filename().string().find("out.partial-"), std::string::npos)
+        << entry.path();
+  }
 }
 
 TEST_F(ReliabilityTest, ATruncatedFileMakesARunUnfinished) {

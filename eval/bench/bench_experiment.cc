@@ -89,6 +89,7 @@ BenchFigures RunBench(const BenchOptions& options) {
   {
     std::ofstream out(tiled_path);
     out << TiledWorldMjcf(worlds / "office.xml", 3, 3, 17.0, 11.0);
+    out.close();
     if (!out) throw std::runtime_error(tiled_path.string() + ": cannot write");
   }
   figures.worlds.push_back(MeasureWorld(

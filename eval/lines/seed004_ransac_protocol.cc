@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <stdexcept>
 
 #include "eval/lines/lines_csv.h"
@@ -17,6 +16,7 @@
 #include "sim/config/lines_fields.h"
 #include "sim/config/yaml_fields.h"
 #include "sim/runner/experiment_runner.h"
+#include "sim/runner/text_file.h"
 
 namespace plywood::eval {
 namespace {
@@ -123,7 +123,7 @@ int Seed004RansacProtocol(const ProtocolContext& context) {
     metrics.Set(key + "sigma_alpha_deg", score.SigmaAlphaDeg());
     metrics.Set(key + "false_lines", false_lines);
     metrics.Set(key + "false_lines_on_legs", false_on_legs);
-    std::ofstream(out / ("lines_" + name + ".csv")) << csv;
+    sim::WriteTextFile(out / ("lines_" + name + ".csv"), csv);
 
     if (context.snapshots) {
       render::WorldBounds bounds = render::WorldBounds::Empty();
@@ -149,8 +149,8 @@ int Seed004RansacProtocol(const ProtocolContext& context) {
     }
   }
   WriteLinesCsv(out / "lines.csv", line_rows);
-  std::ofstream(out / "config.yaml") << sim::ExperimentConfigToYaml(context.config);
-  std::ofstream(out / "metrics.json") << metrics.ToJson();
+  sim::WriteTextFile(out / "config.yaml", sim::ExperimentConfigToYaml(context.config));
+  sim::WriteTextFile(out / "metrics.json", metrics.ToJson());
   return 0;
 }
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 #include <string>
 
@@ -11,6 +10,7 @@
 #include "eval/sonar_map/sonar_ground_truth.h"
 #include "perception/sonar_map/sonar_explorer.h"
 #include "render/png_image.h"
+#include "sim/runner/text_file.h"
 #include "sim/world/occupancy_raster.h"
 
 namespace plywood::eval {
@@ -79,9 +79,7 @@ void WriteSonarMap(const sim::ExperimentRunner& runner, const std::string& out_d
   if (explorer == nullptr) return;
   std::filesystem::create_directories(out_dir);
   const std::filesystem::path path = std::filesystem::path(out_dir) / "cognitive_map.json";
-  std::ofstream file(path);
-  file << CognitiveMapToJson(explorer->Map());
-  if (!file) throw std::runtime_error(path.string() + ": cannot write");
+  sim::WriteTextFile(path, CognitiveMapToJson(explorer->Map()));
 }
 
 void WriteSonarMapPictures(const sim::ExperimentRunner& runner, const std::string& out_dir) {

@@ -99,6 +99,8 @@ void Generate(const RandomRoom& room, int poses, const std::filesystem::path& di
   {
     std::ofstream f(world);
     f << RoomMjcf(room);
+    f.close();
+    if (!f) throw std::runtime_error(world.string() + ": cannot write the training room");
   }
   sim::SceneOptions so;
   so.world_mjcf = world;

@@ -56,8 +56,8 @@ SlurmJob WriteSlurmJob(const fs::path& plywood, const fs::path& sweep_file, cons
           std::to_string(job.tasks) + "\" --jobs 1 --no-collect --quiet\n";
   std::ofstream out(job.script, std::ios::binary);
   out << text;
+  out.close();  // checked after closing: a full disk may show only when the buffer is written
   if (!out) throw std::runtime_error("cannot write " + job.script.string());
-  out.close();
   fs::permissions(job.script, fs::perms::owner_exec, fs::perm_options::add);
   return job;
 }

@@ -163,6 +163,7 @@ void SonarNet::Save(const std::filesystem::path& path) const {
   std::ofstream file(path, std::ios::binary);
   if (!file) throw std::runtime_error(path.string() + ": cannot open for writing");
   file << ToText();
+  file.close();  // the last buffered bytes are written here: a full disk shows only now
   if (!file) throw std::runtime_error(path.string() + ": write failed");
 }
 

@@ -95,6 +95,20 @@ TEST(SonarNetTest, CorruptedFilesGiveOneLineErrorsWithLineNumbers) {
   EXPECT_THROW(SonarNet::Load("/nonexistent/weights.txt"), std::runtime_error);
 }
 
+// A small network's text fits in the stream's buffer, which is written only on closing: a full
+// disk (/dev/full) then failed after the check, and `plywood train` reported success.
+TEST(SonarNetTest, SavingOntoAFullDiskIsAnError) {
+  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  const SonarNet net({1}, 1);
+  ASSERT_LT(net.ToText().size(), 1000u);
+  try {
+    net.Save("/dev/full");
+    FAIL() << "expected std::runtime_error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()), "/dev/full: write failed");
+  }
+}
+
 TEST(SonarNetTest, CommittedWeightsLoadAndBeatTheConeModelOnAWall) {
   const auto path = std::filesystem::path(PLYWOOD_SOURCE_ROOT) / "models" / "sonar_net_v1.txt";
   const SonarNet net = SonarNet::Load(path);

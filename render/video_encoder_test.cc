@@ -1,0 +1,55 @@
+#include "render/video_encoder.h"
+
+#include <gtest/gtest.h>
+#include <sys/resource.h>
+
+#include <csignal>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+#include "tests/support/mujoco_test_support.h"
+
+namespace plywood::render {
+namespace {
+
+// Noise compresses badly, so a few frames make a file of some hundred kilobytes.
+RgbImage NoiseFrame(std::mt19937& rng) {
+  RgbImage frame(320, 240);
+  for (std::uint8_t& byte : frame.pixels) byte = static_cast<std::uint8_t>(rng());
+  return frame;
+}
+
+// ffmpeg exits 0 after "Error writing trailer of v.mp4: File too large" (or "No space left on
+// device"), leaving a broken 8 kB file: its error line must fail Close, not pass unnoticed. The
+// disk is made full by a file-size limit of 8 kB, with SIGXFSZ ignored as plywood's main() does.
+TEST(VideoEncoderTest, AVideoFfmpegCouldNotFinishIsAnErrorNamingItsReason) {
+  if (std::system("command -v ffmpeg > /dev/null") != 0) GTEST_SKIP() << "no ffmpeg";
+  const std::filesystem::path video = testing::MakeTempDir("video_encoder") / "v.mp4";
+  std::mt19937 rng(3);
+  rlimit saved{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &saved), 0);
+  const auto previous_handler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit small = saved;
+  small.rlim_cur = 8192;
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
+  std::string error;
+  try {
+    VideoEncoder encoder(video, 10.0);
+    for (int i = 0; i < 30; ++i) encoder.AddFrame(NoiseFrame(rng));
+    encoder.Close();
+  } catch (const std::runtime_error& e) {
+    error = e.what();
+  }
+  setrlimit(RLIMIT_FSIZE, &saved);
+  std::signal(SIGXFSZ, previous_handler);
+  EXPECT_EQ(error.rfind(video.string() + ": ffmpeg", 0), 0u) << error;
+  EXPECT_NE(error.find("File too large"), std::string::npos) << error;
+  EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace plywood::render
