@@ -132,5 +132,11 @@ int main(int argc, char** argv) {
   } catch (const std::exception& e) {
     std::fprintf(stderr, "plywood: error: %s\n", OneLine(e.what()).c_str());
     return 1;
+  } catch (...) {  // a plug-in's algorithm may throw anything; uncaught, it aborted plywood
+    std::fputs(
+        "plywood: error: an exception that is not a std::exception ended the run (thrown by a "
+        "plug-in's algorithm?)\n",
+        stderr);
+    return 1;
   }
 }

@@ -6,10 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
 #include "tests/support/cli_test_support.h"
+#include "tests/support/metrics_json_test_support.h"
 #include "tests/support/mujoco_test_support.h"
 
 namespace plywood {
@@ -117,6 +119,54 @@ TEST_F(PluginErrorsTest, EstimatorThatNeedsTheGyroWithoutIt) {
   ExpectOneLineError(
       {with_plugin_, "sensors.gyro.enabled=false", "odometry={encoder: {}, lab_complementary: {}}"},
       {"odometry.lab_complementary: this estimator needs sensors.gyro"});
+}
+
+// An experiment in the hall whose lines: section runs split_and_merge beside a misbehaving
+// plug-in extractor (tests/data/plugins/misbehaving_algorithms.cc).
+testing::CliResult RunMisbehavingExtractor(const std::string& extractor, const fs::path& dir) {
+  const fs::path experiment =
+      WriteFile(dir / "experiment.yaml",
+                "name: misbehaving\n"
+                "duration_s: 2\n"
+                "world: " +
+                    (SourceRoot() / "worlds/hall.xml").string() +
+                    "\n"
+                    "robot: {model: p3dx, spawn: {x_m: 0, y_m: 0, theta_deg: 0}}\n"
+                    "controller: {type: square_path}\n"
+                    "sensors: {laser: {rate_hz: 5}, encoders: {}}\n"
+                    "plugins: [" +
+                    std::string(PLYWOOD_MISBEHAVING_PLUGIN) +
+                    "]\n"
+                    "lines: {extractors: [split_and_merge, " +
+                    extractor +
+                    "]}\n"
+                    "output: {snapshot: false}\n");
+  return RunPlywood("run " + experiment.string() + " --quiet --out " + (dir / "out").string(), dir);
+}
+
+// An algorithm that throws something that is not a std::exception (here an int) aborted plywood
+// ("terminate called after throwing an instance of 'int'", SIGABRT): now one line, exit 1.
+TEST(PluginMisbehaviourTest, AnAlgorithmThrowingANonStdExceptionEndsTheRunWithOneLine) {
+  const fs::path dir = MakeTempDir("plugin_throws_int");
+  const testing::CliResult result = RunMisbehavingExtractor("throwing_lines", dir);
+  EXPECT_EQ(result.exit_code, 1) << result.err;
+  EXPECT_EQ(result.err,
+            "plywood: error: an exception that is not a std::exception ended the run (thrown by a "
+            "plug-in's algorithm?)\n");
+  EXPECT_FALSE(fs::exists(dir / "out" / "metrics.json"));
+}
+
+// Segments of NaN are false lines: they were scored as found (precision 1, recall 1/3).
+TEST(PluginMisbehaviourTest, NanSegmentsAreScoredAsFalseLines) {
+  const fs::path dir = MakeTempDir("plugin_nan_lines");
+  const testing::CliResult result = RunMisbehavingExtractor("nan_lines", dir);
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const std::map<std::string, std::string> metrics =
+      testing::FlattenMetricsJson(testing::Slurp(dir / "out" / "metrics.json"));
+  EXPECT_EQ(metrics.at("lines.nan_lines.precision"), "0");
+  EXPECT_EQ(metrics.at("lines.nan_lines.recall"), "0");
+  EXPECT_EQ(metrics.at("lines.nan_lines.lines_per_scan"), "1");
+  EXPECT_NE(metrics.at("lines.split_and_merge.recall"), "0");
 }
 
 }  // namespace

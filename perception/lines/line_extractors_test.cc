@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <tuple>
@@ -169,6 +170,31 @@ TEST(LineScoringTest, GateAndOverlapAreApplied) {
   EXPECT_EQ(MatchSegment(SegmentThrough({2.0, -0.5}, {2.06, 0.5}, 50), truth, {}), -1);
   // Only 0.2 of 1.2 m overlaps.
   EXPECT_EQ(MatchSegment(SegmentThrough({2.0, 0.8}, {2.0, 2.0}, 50), truth, {}), -1);
+}
+
+// A segment that is not finite (a plug-in's NaN) is a false line: it used to pass every gate, as
+// NaN fails every comparison, and count as found (precision 1, recall 1/3 in a run's metrics).
+TEST(LineScoringTest, ASegmentThatIsNotFiniteMatchesNothing) {
+  const std::vector<TruthSegment> truth{{{2, -1}, {2, 1}, 20}};
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  LineSegment all_nan;
+  all_nan.alpha_rad = all_nan.r_m = nan;
+  all_nan.start = all_nan.end = Eigen::Vector2d(nan, nan);
+  all_nan.num_points = 5;
+  LineSegment nan_form = SegmentThrough({2.0, -0.5}, {2.0, 0.5}, 50);
+  ASSERT_EQ(MatchSegment(nan_form, truth, {}), 0);
+  nan_form.alpha_rad = nan;
+  LineSegment infinite_end = SegmentThrough({2.0, -0.5}, {2.0, 0.5}, 50);
+  infinite_end.end.y() = inf;
+  for (const LineSegment& s : {all_nan, nan_form, infinite_end}) {
+    EXPECT_EQ(MatchSegment(s, truth, {}), -1);
+    const LineScore score = ScoreScan(std::vector<LineSegment>{s}, truth, 50);
+    EXPECT_EQ(score.extracted, 1);
+    EXPECT_EQ(score.extracted_matched, 0);
+    EXPECT_EQ(score.Precision(), 0.0);
+    EXPECT_EQ(score.Recall(), 0.0);
+  }
 }
 
 TEST(LineScoringTest, ShortSegmentFarFromThePerpendicularFootMatches) {

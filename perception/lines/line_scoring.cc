@@ -79,11 +79,17 @@ std::optional<FaceMatch> MatchFace(const LineSegment& segment, const TruthSegmen
   if (length < 1e-9) return std::nullopt;
   const Eigen::Vector2d u = ab / length;
   const Eigen::Vector2d n(u.y(), -u.x());
+  // A segment that is not finite matches nothing: every test below is written so that NaN fails
+  // it (a NaN segment from a plug-in used to pass them all and count as found).
+  if (!segment.start.allFinite() || !segment.end.allFinite() || !std::isfinite(segment.alpha_rad) ||
+      !std::isfinite(segment.r_m)) {
+    return std::nullopt;
+  }
   FaceMatch match;
   // (1) Both endpoints near the face's line.
   match.endpoint_distance_m =
       std::max(std::abs(n.dot(segment.start - face.a)), std::abs(n.dot(segment.end - face.a)));
-  if (match.endpoint_distance_m > options.max_endpoint_distance_m) return std::nullopt;
+  if (!(match.endpoint_distance_m <= options.max_endpoint_distance_m)) return std::nullopt;
   // (2) Direction, within what the segment's length and points allow.
   const Eigen::Vector2d d = segment.end - segment.start;
   const double segment_length = d.norm();
@@ -91,12 +97,12 @@ std::optional<FaceMatch> MatchFace(const LineSegment& segment, const TruthSegmen
                         ? std::atan2(std::abs(d.x() * u.y() - d.y() * u.x()), std::abs(d.dot(u)))
                         : 0.0;
   match.angle_tolerance_rad = DirectionToleranceRad(segment_length, segment.num_points, options);
-  if (match.angle_rad > match.angle_tolerance_rad) return std::nullopt;
+  if (!(match.angle_rad <= match.angle_tolerance_rad)) return std::nullopt;
   // (3) Overlap of the segment's projection with the face [0, length].
   const double s0 = (segment.start - face.a).dot(u), s1 = (segment.end - face.a).dot(u);
   const double lo = std::min(s0, s1), hi = std::max(s0, s1);
   const double overlap = std::min(hi, length) - std::max(lo, 0.0);
-  if (overlap < 0.0 || overlap < options.min_overlap_fraction * (hi - lo)) return std::nullopt;
+  if (!(overlap >= 0.0 && overlap >= options.min_overlap_fraction * (hi - lo))) return std::nullopt;
   double alpha = 0, r = 0;
   CanonicalNormalForm(std::atan2(n.y(), n.x()), n.dot(face.a), &alpha, &r);
   NormalFormDifference(segment.alpha_rad, segment.r_m, alpha, r, &match.d_alpha_rad, &match.d_r_m);
