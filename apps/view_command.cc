@@ -5,6 +5,7 @@
 // plywood view --bench [EXPERIMENT.yaml] [--bench-seconds S]
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -13,6 +14,7 @@
 
 #include "apps/command.h"
 #include "eval/protocol.h"
+#include "msgs/shortest_number.h"
 #include "plywood_paths.h"
 #include "render/png_image.h"
 #include "sim/config/experiment_config.h"
@@ -57,6 +59,37 @@ viewer::WindowOptions WindowOf(const ViewFlags& flags) {
   }
   window.panel = !flags.no_panel;
   return window;
+}
+
+// Checked before a window opens or a run starts: CLI11's range check lets NaN through
+// (--bench-seconds nan "drew 29.6 frames/s" of a run of 0 s), a --time a live run ignores or a
+// NaN one (shown as 0) read silently, and a screenshot that cannot be written failed only after
+// the whole run, with exit 1.
+void CheckViewFlags(const ViewFlags& flags, bool time_given, bool replay) {
+  if (!(flags.bench_seconds >= 1.0 && flags.bench_seconds <= 600.0)) {
+    throw UsageError("view: --bench-seconds: must be in [1, 600] simulated seconds, got " +
+                     msgs::ShortestNumber(flags.bench_seconds));
+  }
+  if (time_given && !replay) {
+    throw UsageError("view: --time: only a replay (TARGET a run directory) starts at a time; " +
+                     flags.target + " is an experiment");
+  }
+  if (time_given && !(std::isfinite(flags.time_s) && flags.time_s >= 0.0)) {
+    throw UsageError("view: --time: must be a finite number of simulated seconds >= 0, got " +
+                     msgs::ShortestNumber(flags.time_s));
+  }
+  if (flags.screenshot.empty()) return;
+  const std::filesystem::path picture = flags.screenshot;
+  std::error_code error;
+  if (std::filesystem::is_directory(picture, error)) {
+    throw UsageError("view: --screenshot: " + flags.screenshot +
+                     " is a folder; give the PNG file's name");
+  }
+  const std::filesystem::path folder = picture.has_parent_path() ? picture.parent_path() : ".";
+  if (!std::filesystem::is_directory(folder, error)) {
+    throw UsageError("view: --screenshot: " + flags.screenshot + ": no folder " + folder.string() +
+                     " to write it in");
+  }
 }
 
 viewer::Speed SpeedOf(const std::string& text) {
@@ -167,7 +200,9 @@ Command AddViewCommand(CLI::App& app) {
   cli->add_option("--screenshot", flags->screenshot,
                   "write the final frame (replay: the frame at --time) as PNG and close")
       ->type_name("PNG");
-  cli->add_option("--time", flags->time_s, "replay: start at this simulated time")->type_name("S");
+  CLI::Option* time =
+      cli->add_option("--time", flags->time_s, "replay: start at this simulated time")
+          ->type_name("S");
   cli->add_option("--size", flags->size, "window size")->type_name("WxH")->default_str("1280x800");
   cli->add_flag("--no-panel", flags->no_panel, "no Dear ImGui panel");
   cli->add_flag("--quiet", flags->quiet, "no progress and no summary");
@@ -185,12 +220,14 @@ Command AddViewCommand(CLI::App& app) {
       "  plywood view experiments/default.yaml\n"
       "  plywood view runs/default-seed1 --time 30\n"
       "  plywood view --bench");
-  return {cli, [flags, seed] {
+  return {cli, [flags, seed, time] {
             if (flags->bench && flags->target.empty()) {
               flags->target = std::string(PLYWOOD_SOURCE_ROOT) + "/experiments/default.yaml";
             }
             if (flags->target.empty()) throw UsageError("view: TARGET is required");
-            if (std::filesystem::is_directory(flags->target)) return Replay(*flags);
+            const bool replay = std::filesystem::is_directory(flags->target);
+            CheckViewFlags(*flags, time->count() > 0, replay);
+            if (replay) return Replay(*flags);
             std::vector<std::string> overrides = flags->overrides;
             if (seed->count() > 0) overrides.push_back("seed=" + flags->seed);
             const sim::ExperimentConfig config =

@@ -3,6 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "render/png_image.h"
 #include "tests/support/cli_test_support.h"
 #include "tests/support/mujoco_test_support.h"
@@ -69,6 +75,45 @@ TEST_F(ViewCliTest, RefusesARunDirectoryThatDidNotFinishInOneLine) {
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.err.find("metrics.json"), std::string::npos) << result.err;
   EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+}
+
+// audit s34: these were read silently (--time nan showed t = 0, a live run ignored --time,
+// --bench-seconds nan "drew 29.6 frames/s" in a run of 0 s, exit 0) or failed after the whole run
+// (a screenshot into a missing folder or onto a folder, exit 1). Each is refused before a window
+// opens: one line naming the flag, exit 2, nothing written.
+TEST_F(ViewCliTest, FlagsThatCannotBeHonouredAreRefusedBeforeAnythingRuns) {
+  const std::filesystem::path dir = MakeTempDir("view_cli_flags");
+  const std::string experiment = (SourceRoot() / "experiments/default.yaml").string();
+  const std::filesystem::path run = dir / "run";
+  ASSERT_EQ(RunPlywood("run " + experiment + " --set duration_s=1 --quiet --no-snapshot --out " +
+                           run.string(),
+                       dir)
+                .exit_code,
+            0);
+  const std::string live =
+      experiment + " --set duration_s=1 --speed max --exit-at-end --out " + (dir / "live").string();
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {run.string() + " --time nan --screenshot x.png",
+       "view: --time: must be a finite number of simulated seconds >= 0, got nan"},
+      {run.string() + " --time -5 --screenshot x.png", "view: --time: must be a finite number"},
+      {run.string() + " --time 1e999 --screenshot x.png",
+       "view: --time: must be a finite number of simulated seconds >= 0, got inf"},
+      {live + " --time 5", "view: --time: only a replay (TARGET a run directory)"},
+      {"--bench --bench-seconds nan", "view: --bench-seconds: must be in [1, 600]"},
+      {run.string() + " --screenshot " + dir.string(),
+       "view: --screenshot: " + dir.string() + " is a folder"},
+      {live + " --screenshot " + (dir / "no_folder" / "x.png").string(),
+       "view: --screenshot: " + (dir / "no_folder" / "x.png").string() + ": no folder"},
+  };
+  for (const auto& [args, culprit] : cases) {
+    SCOPED_TRACE(args);
+    const testing::CliResult result = RunPlywood("view " + args, dir);
+    EXPECT_EQ(result.exit_code, 2) << result.err;
+    EXPECT_EQ(result.err.rfind("plywood: " + culprit, 0), 0u) << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "live"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
 }
 
 }  // namespace
