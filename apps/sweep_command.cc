@@ -59,16 +59,17 @@ Command AddSweepCommand(CLI::App& app) {
                 "write OUT/slurm/sweep.sbatch (a job array of shards) and submit it with sbatch");
   cli->add_option("--partition", inv.slurm_options.partition, "Slurm partition (with --slurm)")
       ->type_name("P");
-  cli->add_option("--max-parallel", inv.slurm_options.max_parallel,
-                  "at most K array tasks at once (with --slurm; 0: no limit)")
-      ->type_name("K")
-      ->check(CLI::Range(0, 100000))
-      ->capture_default_str();
-  cli->add_option("--tasks", inv.slurm_options.tasks,
-                  "array tasks (with --slurm; 0: one per run, at most 1000)")
-      ->type_name("N")
-      ->check(CLI::Range(0, 100000))
-      ->capture_default_str();
+  CLI::Option* max_parallel =
+      cli->add_option("--max-parallel", inv.slurm_options.max_parallel,
+                      "at most K array tasks at once (with --slurm; 0: no limit)")
+          ->type_name("K")
+          ->check(CLI::Range(0, 100000))
+          ->capture_default_str();
+  CLI::Option* tasks = cli->add_option("--tasks", inv.slurm_options.tasks,
+                                       "array tasks (with --slurm; 0: one per run, at most 1000)")
+                           ->type_name("N")
+                           ->check(CLI::Range(0, 100000))
+                           ->capture_default_str();
   cli->add_flag("--dry-run", inv.dry_run, "with --slurm: write the script, do not submit it");
   cli->add_flag("--bench", inv.bench,
                 "run the sweep twice from scratch, with --jobs 1 and with --jobs N, and print the "
@@ -80,7 +81,7 @@ Command AddSweepCommand(CLI::App& app) {
       "  plywood sweep experiments/sweeps/minimal.yaml --slurm --max-parallel 8\n"
       "  plywood sweep --collect runs/sweeps/minimal");
   return {
-      cli, [flags] {
+      cli, [flags, max_parallel, tasks] {
         eval::SweepInvocation& inv = flags->invocation;
         if (!flags->collect.empty()) {
           if (!flags->sweep.empty()) {
@@ -102,8 +103,17 @@ Command AddSweepCommand(CLI::App& app) {
           inv.shard_index = i;
           inv.shard_count = n;
         }
-        if (!inv.slurm && (inv.dry_run || !inv.slurm_options.partition.empty())) {
-          throw UsageError("sweep: --dry-run and --partition go with --slurm");
+        // --tasks and --max-parallel without --slurm, or --bench with it, were ignored without
+        // a word.
+        if (!inv.slurm && (inv.dry_run || !inv.slurm_options.partition.empty() ||
+                           tasks->count() > 0 || max_parallel->count() > 0)) {
+          throw UsageError(
+              "sweep: --dry-run, --partition, --tasks and --max-parallel go with --slurm");
+        }
+        if (inv.bench && (inv.slurm || !flags->shard.empty())) {
+          throw UsageError(
+              "sweep: --bench runs the whole sweep here, twice; it does not go with --slurm or "
+              "--shard");
         }
         // The name goes into the job script's #SBATCH line: a line break would start a command.
         if (inv.slurm_options.partition.find_first_not_of(

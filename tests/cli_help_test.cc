@@ -171,6 +171,18 @@ TEST(CliHelpTest, UsageErrorsAreOneLineNamingTheCulpritWithExitCode2) {
       {"sweep " + sweep.string() + " --out " + (dir / "sweep").string() +
            " --slurm --dry-run --partition 'debug\ntouch pwned'",
        "sweep: --partition: expected Slurm partition names"},
+      // audit s34: --tasks or --max-parallel without --slurm, and --bench with it, were ignored
+      // (the sweep ran, or only the job script was written); a folder as bench's world read "no
+      // such file".
+      {"sweep " + sweep.string() + " --out " + (dir / "sweep").string() + " --tasks 5",
+       "sweep: --dry-run, --partition, --tasks and --max-parallel go with --slurm"},
+      {"sweep " + sweep.string() + " --out " + (dir / "sweep").string() + " --max-parallel 2",
+       "sweep: --dry-run, --partition, --tasks and --max-parallel go with --slurm"},
+      {"sweep " + sweep.string() + " --out " + (dir / "sweep").string() +
+           " --bench --slurm --dry-run",
+       "sweep: --bench runs the whole sweep here, twice; it does not go with --slurm or --shard"},
+      {"bench --world " + dir.string(),
+       "bench: world: not a regular file (a folder or a device?): " + dir.string()},
   };
   for (const auto& [args, culprit] : cases) {
     SCOPED_TRACE(args);

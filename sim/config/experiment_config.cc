@@ -8,6 +8,7 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <system_error>
 #include <vector>
 
 #include "msgs/shortest_number.h"
@@ -29,14 +30,24 @@ namespace {
 // experiments/ can say "worlds/office.xml"). Absolute paths are taken as they are.
 std::filesystem::path ResolvePath(const std::string& text, const std::filesystem::path& base_dir,
                                   const YamlFields& fields, const std::string& key) {
+  // A folder or a device there is named as such: "no such file: /tmp" misled (bench --world /tmp).
   const std::filesystem::path given(text);
   if (given.is_absolute()) {
-    if (!perception::IsRegularFile(given)) fields.Fail(key, "no such file: " + text);
+    if (!perception::IsRegularFile(given)) {
+      fields.Fail(key, perception::WhyNotARegularFile(given) + ": " + text);
+    }
     return given.lexically_normal();
   }
   for (const auto& base : {base_dir, DataRoot()}) {
     const std::filesystem::path candidate = (base / given).lexically_normal();
     if (perception::IsRegularFile(candidate)) return candidate;
+  }
+  for (const auto& base : {base_dir, DataRoot()}) {
+    const std::filesystem::path candidate = (base / given).lexically_normal();
+    std::error_code refused;
+    if (std::filesystem::exists(candidate, refused)) {
+      fields.Fail(key, perception::WhyNotARegularFile(candidate) + ": " + candidate.string());
+    }
   }
   fields.Fail(key, "no such file: " + text + " (looked in " + base_dir.string() + " and " +
                        DataRoot().string() + ")");
