@@ -562,5 +562,40 @@ TEST(SweepCliTest, ADifferentSweepIntoTheSameDirectoryIsRefused) {
   EXPECT_NE(r.err.find("different sweep"), std::string::npos) << r.err;
 }
 
+// A sweep file that is a FIFO: the sweep opened it before checking it, and opening a FIFO waits
+// for a writer, so `plywood sweep FIFO` hung for ever. Now one line, exit 2, at once. Run with a
+// deadline so that the old behaviour fails instead of hanging the suite.
+TEST(SweepCliTest, ASweepFileThatIsAFifoIsRefusedNotWaitedOn) {
+  const fs::path dir = MakeTempDir("sweep_cli_fifo");
+  const fs::path fifo = dir / "sweep.yaml";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  const fs::path plywood = fs::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood";
+  const fs::path err = dir / "stderr";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    if (!freopen("/dev/null", "w", stdout) || !freopen(err.c_str(), "w", stderr)) _exit(126);
+    execl(plywood.c_str(), plywood.c_str(), "sweep", fifo.c_str(), "--out", (dir / "out").c_str(),
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  bool finished = false;
+  for (int i = 0; i < 3000 && !finished; ++i) {  // 30 s
+    finished = waitpid(pid, &status, WNOHANG) == pid;
+    if (!finished) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  if (!finished) {
+    kill(pid, SIGKILL);
+    waitpid(pid, &status, 0);
+    FAIL() << "plywood sweep waited on the FIFO";
+  }
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  EXPECT_EQ(Slurp(err),
+            "plywood: " + fifo.string() + ": not a regular file (a folder or a device?)\n");
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
 }  // namespace
 }  // namespace plywood

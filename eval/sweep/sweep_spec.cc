@@ -213,10 +213,12 @@ std::vector<std::string> ReadNames(const YAML::Node& node, const sim::YamlFields
 SweepSpec LoadSweepSpec(const fs::path& path) {
   SweepSpec spec;
   spec.source_file = path.string();
-  std::ifstream in(path, std::ios::binary);
-  if (!perception::IsRegularFile(path) || !in) {
-    throw sim::ConfigError(path.string(), "", "no such sweep file (or not readable)");
+  // Checked before opening: opening a FIFO waits for a writer, for ever.
+  if (!perception::IsRegularFile(path)) {
+    throw sim::ConfigError(path.string(), "", perception::WhyNotARegularFile(path, "sweep file"));
   }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw sim::ConfigError(path.string(), "", "cannot read the sweep file");
   std::stringstream text;
   text << in.rdbuf();
   spec.text = text.str();
