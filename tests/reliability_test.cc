@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -442,6 +443,65 @@ TEST_F(ReliabilityTest, AWorldWithMovingBodiesIsRefused) {
       ExpectRefused(yaml, "--set physics.drive=" + drive,
                     {"experiment.yaml: world: ", "moving.xml: " + message});
     }
+  }
+}
+
+// audit s34: a world whose mesh or included file is a FIFO hung `plywood run` for ever (MuJoCo
+// opened it and waited for a writer). Each is refused with one line naming the file, at once; a
+// deadline makes the old behaviour a failure rather than a hung suite.
+TEST_F(ReliabilityTest, AWorldNamingAFifoIsRefusedNotWaitedOn) {
+  const fs::path dir = WorldDir();
+  const fs::path fifo = dir / "part.fifo";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  const std::string walls =
+      "<geom name=\"floor\" type=\"plane\" size=\"5 5 0.1\"/>"
+      "<geom name=\"wall\" type=\"box\" pos=\"3 0 0.5\" size=\"0.1 3 0.5\"/>";
+  const std::vector<std::pair<std::string, std::string>> worlds = {
+      {"<mujoco><asset><mesh name=\"m\" file=\"part.fifo\"/></asset><worldbody>" + walls +
+           "<geom type=\"mesh\" mesh=\"m\" pos=\"2 2 0\"/></worldbody></mujoco>\n",
+       "named by file= in mesh_fifo.xml"},
+      {"<mujoco><include file=\"part.fifo\"/><worldbody>" + walls + "</worldbody></mujoco>\n",
+       "named by file= in include_fifo.xml"},
+  };
+  const fs::path plywood = fs::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood";
+  for (const auto& [mjcf, named_by] : worlds) {
+    const std::string name = named_by.substr(named_by.rfind(' ') + 1);
+    SCOPED_TRACE(name);
+    const fs::path world = WriteFile(dir / name, mjcf);
+    std::string yaml = HallExperiment(0.0, 0.0);
+    yaml.replace(yaml.find("worlds/hall.xml"), std::string("worlds/hall.xml").size(),
+                 world.string());
+    const fs::path run = Dir();
+    const fs::path experiment = WriteFile(run / "experiment.yaml", yaml);
+    const fs::path err = run / "stderr";
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      if (!freopen("/dev/null", "w", stdout) || !freopen(err.c_str(), "w", stderr)) _exit(126);
+      execl(plywood.c_str(), plywood.c_str(), "run", experiment.c_str(), "--quiet", "--out",
+            (run / "out").c_str(), static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    int status = 0;
+    bool finished = false;
+    for (int i = 0; i < 3000 && !finished; ++i) {  // 30 s
+      finished = waitpid(pid, &status, WNOHANG) == pid;
+      if (!finished) usleep(10000);
+    }
+    if (!finished) {
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      ADD_FAILURE() << "plywood run waited on the FIFO";
+      continue;
+    }
+    const std::string line = Slurp(err);
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 2) << line;
+    EXPECT_EQ(line.find('\n'), line.size() - 1) << "not one line: " << line;
+    EXPECT_NE(
+        line.find(fifo.string() + ": not a regular file (a folder or a device?), " + named_by),
+        std::string::npos)
+        << line;
+    EXPECT_FALSE(fs::exists(run / "out" / "metrics.json"));
   }
 }
 

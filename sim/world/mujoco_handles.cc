@@ -1,8 +1,14 @@
 #include "sim/world/mujoco_handles.h"
 
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <mutex>
+#include <sstream>
 #include <stdexcept>
+
+#include "perception/logs/regular_file.h"
+#include "sim/world/referenced_files.h"
 
 namespace plywood::sim {
 namespace {
@@ -33,6 +39,8 @@ std::string LastMujocoWarning() {
 
 MjModelPtr LoadModelFromString(const std::string& mjcf, const std::string& virtual_path) {
   InstallMujocoErrorHandlers();
+  RequireRegularReferencedFiles(mjcf, std::filesystem::path(virtual_path).parent_path(),
+                                std::filesystem::path(virtual_path).filename().string());
   mjVFS vfs;
   mj_defaultVFS(&vfs);
   // The VFS strips directories from its file names, so the model reads as `virtual_path` while the
@@ -51,6 +59,13 @@ MjModelPtr LoadModelFromString(const std::string& mjcf, const std::string& virtu
 
 MjModelPtr LoadModelFromFile(const std::string& path) {
   InstallMujocoErrorHandlers();
+  if (perception::IsRegularFile(path)) {  // else MuJoCo names what is wrong
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    RequireRegularReferencedFiles(text.str(), std::filesystem::path(path).parent_path(),
+                                  std::filesystem::path(path).filename().string());
+  }
   char error[1024] = "";
   mjModel* model = mj_loadXML(path.c_str(), nullptr, error, sizeof(error));
   if (model == nullptr) throw std::runtime_error(error);
