@@ -199,6 +199,58 @@ void Split(const std::vector<Eigen::Vector2i>& cells, double saving, int depth,
 
 }  // namespace
 
+std::vector<Eigen::Vector2i> PeelFreeEdges(const std::vector<Eigen::Vector2i>& cells,
+                                           const std::function<bool(int, int)>& is_free,
+                                           std::vector<Eigen::Vector2i>& rest) {
+  if (cells.empty()) return cells;
+  Eigen::Vector2i lo = cells.front(), hi = cells.front();
+  for (const Eigen::Vector2i& c : cells) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
+  const int width = hi.x() - lo.x() + 1, height = hi.y() - lo.y() + 1;
+  std::vector<char> member(static_cast<std::size_t>(width) * height, 0);
+  for (const Eigen::Vector2i& c : cells)
+    member[static_cast<std::size_t>(c.y() - lo.y()) * width + (c.x() - lo.x())] = 1;
+  auto in = [&](int x, int y) {
+    return member[static_cast<std::size_t>(y - lo.y()) * width + (x - lo.x())] != 0;
+  };
+  // Free cells minus member cells along one row (axis 1) or column (axis 0) of the box [b0, b1].
+  auto excess = [&](int axis, int at, const Eigen::Vector2i& b0, const Eigen::Vector2i& b1) {
+    int n = 0;
+    for (int k = b0[1 - axis]; k <= b1[1 - axis]; ++k) {
+      const int x = axis == 0 ? at : k, y = axis == 0 ? k : at;
+      n += is_free(x, y) ? 1 : 0;
+      n -= in(x, y) ? 1 : 0;
+    }
+    return n;
+  };
+  Eigen::Vector2i b0 = lo, b1 = hi;
+  while (b0.x() <= b1.x() && b0.y() <= b1.y()) {
+    // Edges: x0, x1 (columns), y0, y1 (rows).
+    const std::array<int, 4> excesses{excess(0, b0.x(), b0, b1), excess(0, b1.x(), b0, b1),
+                                      excess(1, b0.y(), b0, b1), excess(1, b1.y(), b0, b1)};
+    const auto best = std::max_element(excesses.begin(), excesses.end());
+    if (*best <= 0) break;
+    switch (best - excesses.begin()) {
+      case 0:
+        ++b0.x();
+        break;
+      case 1:
+        --b1.x();
+        break;
+      case 2:
+        ++b0.y();
+        break;
+      default:
+        --b1.y();
+        break;
+    }
+  }
+  std::vector<Eigen::Vector2i> kept;
+  for (const Eigen::Vector2i& c : cells)
+    (c.x() >= b0.x() && c.x() <= b1.x() && c.y() >= b0.y() && c.y() <= b1.y() ? kept : rest)
+        .push_back(c);
+  return kept;
+}
+
 std::vector<std::vector<Eigen::Vector2i>> SplitIntoRectangles(
     const std::vector<Eigen::Vector2i>& cells, double saving, int max_depth) {
   std::vector<std::vector<Eigen::Vector2i>> pieces;
@@ -257,6 +309,14 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
   // An obstacle's cells: occupied, and no beam axis passed through them.
   auto is_obstacle_occ = [&](int ix, int iy) {
     return is_occ(ix, iy) && !axis_free[static_cast<std::size_t>(iy) * W + ix];
+  };
+
+  // Peeling judges a rectangle's edges by the free space the axes heard, so like them it shapes
+  // the reported map only, not the one the robot plans on.
+  const bool peel_free =
+      options.obstacle_peel_free && beam_free != nullptr && options.beam_free_min_passes > 0;
+  auto is_axis_free = [&](int ix, int iy) {
+    return grid.Contains(ix, iy) && axis_free[static_cast<std::size_t>(iy) * W + ix] != 0;
   };
 
   Eigen::Vector2i c0 = grid.CellAt(inside);
@@ -444,8 +504,26 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
                         [&](const Eigen::Vector2i& c) { return !is_obstacle_occ(c.x(), c.y()); }),
                     cells.end());
       constexpr int kMaxSplitDepth = 3;
-      for (const auto& piece :
-           SplitIntoRectangles(cells, options.obstacle_split_saving, kMaxSplitDepth)) {
+      std::vector<std::vector<Eigen::Vector2i>> pieces =
+          SplitIntoRectangles(cells, options.obstacle_split_saving, kMaxSplitDepth);
+      if (peel_free) {
+        // Each peeled piece's rest is cut and peeled again; it is strictly smaller than the piece
+        // unless everything was peeled (more free than occupied in every row or column: no
+        // obstacle), so this ends.
+        for (std::size_t k = 0; k < pieces.size(); ++k) {
+          std::vector<Eigen::Vector2i> rest;
+          pieces[k] = PeelFreeEdges(pieces[k], is_axis_free, rest);
+          if (pieces[k].empty()) continue;
+          int rest_occupied = 0;
+          for (const auto& c : rest) rest_occupied += is_obstacle_occ(c.x(), c.y());
+          if (rest_occupied < options.min_obstacle_cells) continue;
+          for (auto& more :
+               SplitIntoRectangles(rest, options.obstacle_split_saving, kMaxSplitDepth))
+            pieces.push_back(std::move(more));
+        }
+      }
+      for (const auto& piece : pieces) {
+        if (piece.empty()) continue;
         int piece_occupied = 0;
         for (const auto& c : piece) piece_occupied += is_obstacle_occ(c.x(), c.y());
         // A piece nothing was heard in is space never seen, not an obstacle.

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <vector>
 
 #include "perception/sonar_map/beam_free_grid.h"
@@ -54,6 +55,12 @@ struct CognitiveMapOptions {
   // min_wall_points of them within wall_band_m, an obstacle side at the median of at least this
   // many (and then not snapped). 0: not used.
   int beam_free_min_passes = 2;
+  // With the axes' free space (the reported map only): an obstacle piece's rectangle gives up an
+  // outermost row or column holding more cells the axes passed (>= beam_free_min_passes) than
+  // cells of the piece, and again, so a rectangle does not span space the axes heard free beside
+  // its faces (an L's notch the network painted); the cells given up form pieces of their own.
+  // The network's free cells (P < eps) do not count: it paints them inside a box's face too.
+  bool obstacle_peel_free = true;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
 };
@@ -86,6 +93,14 @@ std::vector<Eigen::Vector2i> TrimThinEnds(const std::vector<Eigen::Vector2i>& ce
 // when no cut saves enough.
 std::vector<std::vector<Eigen::Vector2i>> SplitIntoRectangles(
     const std::vector<Eigen::Vector2i>& cells, double saving, int max_depth);
+
+// The cells of `cells` inside the box left when its outermost rows and columns holding more
+// cells for which is_free(cell) holds (any cell of the box, in `cells` or not) than cells of
+// `cells` are dropped, one at a time (the side with the largest excess first), while any does;
+// `rest` receives the cells dropped. Empty input gives empty output.
+std::vector<Eigen::Vector2i> PeelFreeEdges(const std::vector<Eigen::Vector2i>& cells,
+                                           const std::function<bool(int, int)>& is_free,
+                                           std::vector<Eigen::Vector2i>& rest);
 
 // `inside`: a point known to be free inside the room (the start pose). Sides without enough
 // boundary points fall back to the outermost cell the grid has seen free. `beam_free` (same cells

@@ -381,6 +381,28 @@ TEST(SplitIntoRectanglesTest, CutsAnLIntoItsTwoArmsAndLeavesARectangleWhole) {
   EXPECT_TRUE(SplitIntoRectangles({}, 0.25, 3).empty());
 }
 
+TEST(PeelFreeEdgesTest, DropsRowsHoldingMoreFreeCellsThanCellsAndReturnsThemAsTheRest) {
+  // A 4 x 2 block (x 0-3, y 0-1) with a one-cell arm up its west column to y = 4, everything
+  // beside the arm free: rows 2-4 hold one cell and three free cells each, rows 0-1 four cells.
+  std::vector<Eigen::Vector2i> cells;
+  for (int y = 0; y <= 1; ++y)
+    for (int x = 0; x <= 3; ++x) cells.emplace_back(x, y);
+  for (int y = 2; y <= 4; ++y) cells.emplace_back(0, y);
+  auto free_beside_arm = [](int x, int y) { return x >= 1 && y >= 2; };
+  std::vector<Eigen::Vector2i> rest;
+  const std::vector<Eigen::Vector2i> kept = PeelFreeEdges(cells, free_beside_arm, rest);
+  EXPECT_EQ(kept.size(), 8u);
+  for (const Eigen::Vector2i& c : kept) EXPECT_LE(c.y(), 1) << c.transpose();
+  ASSERT_EQ(rest.size(), 3u);
+  for (const Eigen::Vector2i& c : rest) EXPECT_EQ(c.x(), 0) << c.transpose();
+  // As many free cells as cells in a row is not enough: nothing goes.
+  auto one_free = [](int x, int y) { return x == 3 && y == 4; };
+  rest.clear();
+  EXPECT_EQ(PeelFreeEdges(cells, one_free, rest).size(), cells.size());
+  EXPECT_TRUE(rest.empty());
+  EXPECT_TRUE(PeelFreeEdges({}, free_beside_arm, rest).empty());
+}
+
 TEST(CognitiveMapTest, LShapedPairIsTwoRectanglesNotItsExtent) {
   // Two butted boxes: 1.0 x 0.3 m and 0.3 x 0.7 m on top of its west end.
   const Rect long_arm{1.50, 1.00, 2.50, 1.30}, short_arm{1.50, 1.30, 1.80, 2.00};
@@ -534,6 +556,44 @@ TEST(CognitiveMapTest, OccupiedCellsTheAxesPassedDoNotJoinABoxToTheWall) {
   const BeamFreeGrid once = Beams(from, -0.5 * 3.14159265358979323846, 2.4 - 0.55, 1);
   ExpectRectNear(BuildCognitiveMap(grid, kInside, {}, &once).obstacles.at(0),
                  {kX0, 1.30, 1.55, 1.80});
+}
+
+TEST(CognitiveMapTest, AnLsNotchTheAxesHeardFreeIsNoPartOfItsRectangle) {
+  // An L (1.0 x 0.3 m arm, 0.3 x 0.5 m arm on its west end) whose notch (x 1.80-2.50, y 1.30-1.80)
+  // the network painted occupied along the inner face (y 1.30-1.60, its corner echoes), and axes
+  // heading south from y = 2.4 that heard the long arm's north face (y 1.30) down every column of
+  // the notch but two: those two stay occupied stripes, so no cut of the faces saves a quarter of
+  // the extent and the L was one rectangle over the notch.
+  const Rect long_arm{1.50, 1.00, 2.50, 1.30}, short_arm{1.50, 1.30, 1.80, 1.80};
+  LogOddsGrid grid = Room({long_arm, short_arm});
+  for (int iy = 26; iy <= 31; ++iy)
+    for (int ix = 36; ix <= 49; ++ix)
+      for (int k = 0; k < 6; ++k) grid.Add(ix, iy, 0.98);
+  std::vector<Eigen::Vector2d> from;
+  for (int ix = 36; ix <= 49; ++ix)
+    if (ix != 39 && ix != 44) from.emplace_back((ix + 0.5) * kRes, 2.4);
+  const BeamFreeGrid beams = Beams(from, -0.5 * 3.14159265358979323846, 2.4 - 1.30);
+  auto label_at = [](const CognitiveMap& map, const Eigen::Vector2d& p) {
+    const int k = map.partitions.Find(p);
+    EXPECT_GE(k, 0) << p.transpose();
+    return k >= 0 ? map.partitions.partitions()[k].label : Label::kFree;
+  };
+  const Eigen::Vector2d notch{2.15, 1.45};
+  CognitiveMapOptions off;
+  off.obstacle_peel_free = false;
+  const CognitiveMap before = BuildCognitiveMap(grid, kInside, off, &beams);
+  ASSERT_EQ(before.obstacles.size(), 1u);
+  ExpectRectNear(before.obstacles[0], {1.50, 1.00, 2.50, 1.80});
+  const CognitiveMap after = BuildCognitiveMap(grid, kInside, {}, &beams);
+  // The two arms, and the stripes (more free than occupied cells in each of their rows) nothing.
+  ASSERT_EQ(after.obstacles.size(), 2u);
+  ExpectRectNear(after.obstacles[0], long_arm);
+  ExpectRectNear(after.obstacles[1], short_arm);
+  EXPECT_EQ(label_at(after, notch), Label::kFree);
+  ExpectTilesTheRoom(after);
+  // Without the axes' free space (the map the robot plans on) nothing is peeled.
+  const CognitiveMap planning = BuildCognitiveMap(grid, kInside, {});
+  EXPECT_EQ(label_at(planning, notch), Label::kObstacle);
 }
 
 TEST(CognitiveMapTest, SidesHeardHeadOnByTheAxesArePlacedAtTheirEchoesAndNotSnapped) {
