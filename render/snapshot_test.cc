@@ -140,6 +140,21 @@ TEST(SnapshotTest, OpenGlSnapshotShowsRobotWallsAndPaths) {
   EXPECT_EQ(ReadPng(dir / "snapshot.png").pixels.size(), s.picture.image.pixels.size());
 }
 
+// A plug-in estimator whose path reaches 1e300 m: the GL camera (floats) became infinite and the
+// floor map NaN, and the scale bar cast NaN to int (UBSan: "-nan is outside the range of
+// representable values of type 'int'"). Such a frame is drawn in software, its map finite.
+TEST(SnapshotTest, APathAtTheEdgeOfDoublesIsFramedInSoftwareWithAFiniteMap) {
+  Fixture f = MakeRoom();
+  std::vector<PathOverlay> paths = Paths();
+  paths[1].points_W.push_back({1e300, 0.0});
+  const Snapshot s = RenderSnapshot(f.m.get(), f.d.get(), paths, {});
+  EXPECT_EQ(s.backend, SnapshotBackend::kSoftware);
+  const WorldToPixel& map = s.picture.world_to_pixel;
+  EXPECT_TRUE(std::isfinite(map.pixels_per_m) && map.pixels_per_m > 0) << map.pixels_per_m;
+  EXPECT_TRUE(std::isfinite(map.x_left_m)) << map.x_left_m;
+  EXPECT_TRUE(std::isfinite(map.y_top_m)) << map.y_top_m;
+}
+
 TEST(SnapshotOptionsTest, ValidateNamesNestedAndOwnFields) {
   SnapshotOptions options;
   options.view.longer_side_px = 3;

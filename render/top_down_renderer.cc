@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "msgs/shortest_number.h"
 #include "render/geom_footprint.h"
 #include "render/image_ops.h"
 #include "render/model_textures.h"
@@ -193,6 +194,15 @@ void TopDownRenderer::Aim() {
   gl_->camera.distance = height_m;
   // The floor map this camera yields is what we report, so the two cannot disagree.
   frame_.world_to_pixel = FloorMappingOf(gl_->gl_camera, frame_.width_px, frame_.height_px);
+  // The camera is in floats: a frame reaching past their range (a plug-in's estimate at 1e300 m)
+  // gives an infinite camera and a NaN floor map. The caller then draws in software (doubles).
+  const WorldToPixel& map = frame_.world_to_pixel;
+  if (!std::isfinite(map.pixels_per_m) || !(map.pixels_per_m > 0.0) ||
+      !std::isfinite(map.x_left_m) || !std::isfinite(map.y_top_m)) {
+    const double wide_m = std::max(frame_.shown.width_m(), frame_.shown.height_m());
+    throw std::runtime_error("offscreen rendering: a frame " + msgs::ShortestNumber(wide_m) +
+                             " m wide does not fit OpenGL's float camera");
+  }
 }
 
 TopDownRenderer::~TopDownRenderer() = default;

@@ -12,6 +12,7 @@
 #include <iostream>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <vector>
 
 extern char** environ;
@@ -139,11 +140,15 @@ void VideoEncoder::Close() {
   }
   pid_ = -1;
   const std::string said = FfmpegSaid();
+  const bool failed = !said.empty() || !WIFEXITED(status) || WEXITSTATUS(status) != 0;
+  if (!failed) return;
+  // What ffmpeg left is no playable video: it goes, so that it is never taken for a result (a
+  // device such as /dev/full given as the path stays).
+  std::error_code ignored;
+  if (std::filesystem::is_regular_file(path_, ignored)) std::filesystem::remove(path_, ignored);
   if (!said.empty()) throw std::runtime_error(path_.string() + ": ffmpeg: " + said);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    throw std::runtime_error(path_.string() + ": ffmpeg failed (exit status " +
-                             std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")");
-  }
+  throw std::runtime_error(path_.string() + ": ffmpeg failed (exit status " +
+                           std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")");
 }
 
 }  // namespace plywood::render

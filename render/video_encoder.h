@@ -25,7 +25,8 @@ class VideoEncoder {
 
   // @throws std::runtime_error when the size changes or ffmpeg stopped reading.
   void AddFrame(const RgbImage& frame);
-  // Waits for ffmpeg. @throws std::runtime_error naming the path when it failed.
+  // Waits for ffmpeg. @throws std::runtime_error naming the path when it failed; the file it left
+  // is then removed.
   void Close();
 
   long frames() const { return frames_; }

@@ -24,7 +24,8 @@ RgbImage NoiseFrame(std::mt19937& rng) {
 }
 
 // ffmpeg exits 0 after "Error writing trailer of v.mp4: File too large" (or "No space left on
-// device"), leaving a broken 8 kB file: its error line must fail Close, not pass unnoticed. The
+// device"), leaving a broken 8 kB file: its error line must fail Close, not pass unnoticed, and
+// the broken file must go, so that no unplayable v.mp4 looks like a result. The
 // disk is made full by a file-size limit of 8 kB, with SIGXFSZ ignored as plywood's main() does.
 TEST(VideoEncoderTest, AVideoFfmpegCouldNotFinishIsAnErrorNamingItsReason) {
   if (std::system("command -v ffmpeg > /dev/null") != 0) GTEST_SKIP() << "no ffmpeg";
@@ -49,6 +50,7 @@ TEST(VideoEncoderTest, AVideoFfmpegCouldNotFinishIsAnErrorNamingItsReason) {
   EXPECT_EQ(error.rfind(video.string() + ": ffmpeg", 0), 0u) << error;
   EXPECT_NE(error.find("File too large"), std::string::npos) << error;
   EXPECT_EQ(error.find('\n'), std::string::npos) << error;
+  EXPECT_FALSE(std::filesystem::exists(video)) << "ffmpeg's broken file was left behind";
 }
 
 }  // namespace

@@ -789,8 +789,8 @@ TEST_F(ReliabilityTest, AKilledRunIsNeverScoredAndTheNextRunCleansUp) {
 }
 
 // A file-size limit (ulimit -f) made the kernel kill plywood with SIGXFSZ mid-write, without a
-// word. Now the write fails (EFBIG), the run ends with one line naming the file, exit 1, and
-// leaves no result and no staging folder.
+// word. Now the write fails (EFBIG), the run ends with one line naming the file and the reason
+// ("File too large"), exit 1, and leaves no result and no staging folder.
 TEST_F(ReliabilityTest, AFileSizeLimitIsAWriteErrorNamingTheFileNotASignal) {
   const fs::path dir = Dir();
   const fs::path file = WriteFile(dir / "experiment.yaml",
@@ -807,7 +807,7 @@ TEST_F(ReliabilityTest, AFileSizeLimitIsAWriteErrorNamingTheFileNotASignal) {
   EXPECT_EQ(result.exit_code, 1) << "killed by a signal? " << result.err;
   EXPECT_EQ(result.err.rfind("plywood: error: " + (dir / "out.partial-").string(), 0), 0u)
       << result.err;
-  EXPECT_NE(result.err.find(": write failed"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find(": write failed: File too large"), std::string::npos) << result.err;
   EXPECT_EQ(result.err.find('\n'), result.err.size() - 1) << "not one line: " << result.err;
   EXPECT_FALSE(fs::exists(dir / "out" / "complete.json"));
   for (const auto& entry : fs::directory_iterator(dir)) {

@@ -12,6 +12,7 @@
 #include <random>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "eval/sweep/sweep_csv.h"
 #include "plywood_paths.h"
@@ -562,39 +563,80 @@ TEST(SweepCliTest, ADifferentSweepIntoTheSameDirectoryIsRefused) {
   EXPECT_NE(r.err.find("different sweep"), std::string::npos) << r.err;
 }
 
+struct DeadlineResult {
+  bool finished = false;
+  int exit_code = -1;
+  std::string err;
+};
+
+// `plywood ARGS...`, killed after 30 s: a FIFO waited on fails the test instead of hanging the
+// suite.
+DeadlineResult RunPlywoodWithADeadline(const fs::path& dir, std::vector<std::string> args) {
+  const fs::path plywood = fs::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood";
+  const fs::path err = dir / "stderr";
+  args.insert(args.begin(), plywood.string());
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const pid_t pid = fork();
+  if (pid < 0) return {};
+  if (pid == 0) {
+    if (!freopen("/dev/null", "w", stdout) || !freopen(err.c_str(), "w", stderr)) _exit(126);
+    execv(plywood.c_str(), argv.data());
+    _exit(127);
+  }
+  int status = 0;
+  DeadlineResult result;
+  for (int i = 0; i < 3000 && !result.finished; ++i) {  // 30 s
+    result.finished = waitpid(pid, &status, WNOHANG) == pid;
+    if (!result.finished) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  if (!result.finished) {
+    kill(pid, SIGKILL);
+    waitpid(pid, &status, 0);
+    return result;
+  }
+  if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
+  result.err = Slurp(err);
+  return result;
+}
+
 // A sweep file that is a FIFO: the sweep opened it before checking it, and opening a FIFO waits
-// for a writer, so `plywood sweep FIFO` hung for ever. Now one line, exit 2, at once. Run with a
-// deadline so that the old behaviour fails instead of hanging the suite.
+// for a writer, so `plywood sweep FIFO` hung for ever. Now one line, exit 2, at once.
 TEST(SweepCliTest, ASweepFileThatIsAFifoIsRefusedNotWaitedOn) {
   const fs::path dir = MakeTempDir("sweep_cli_fifo");
   const fs::path fifo = dir / "sweep.yaml";
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
-  const fs::path plywood = fs::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood";
-  const fs::path err = dir / "stderr";
-  const pid_t pid = fork();
-  ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    if (!freopen("/dev/null", "w", stdout) || !freopen(err.c_str(), "w", stderr)) _exit(126);
-    execl(plywood.c_str(), plywood.c_str(), "sweep", fifo.c_str(), "--out", (dir / "out").c_str(),
-          static_cast<char*>(nullptr));
-    _exit(127);
-  }
-  int status = 0;
-  bool finished = false;
-  for (int i = 0; i < 3000 && !finished; ++i) {  // 30 s
-    finished = waitpid(pid, &status, WNOHANG) == pid;
-    if (!finished) std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
-  if (!finished) {
-    kill(pid, SIGKILL);
-    waitpid(pid, &status, 0);
-    FAIL() << "plywood sweep waited on the FIFO";
-  }
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 2);
-  EXPECT_EQ(Slurp(err),
-            "plywood: " + fifo.string() + ": not a regular file (a folder or a device?)\n");
+  const DeadlineResult r =
+      RunPlywoodWithADeadline(dir, {"sweep", fifo.string(), "--out", (dir / "out").string()});
+  ASSERT_TRUE(r.finished) << "plywood sweep waited on the FIFO";
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "plywood: " + fifo.string() + ": not a regular file (a folder or a device?)\n");
   EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
+// A profile named outright was checked to be a regular file, one matched by a glob was not: a
+// FIFO among `profiles: "*.set"` was opened to be hashed and the sweep waited for a writer for
+// ever. Now one line naming the field and the file, exit 2. A folder matched is refused the same.
+TEST(SweepCliTest, AFifoOrAFolderMatchedByAProfilesGlobIsRefusedNotWaitedOn) {
+  for (const bool fifo : {true, false}) {
+    const fs::path dir = MakeTempDir(fifo ? "sweep_glob_fifo" : "sweep_glob_folder");
+    WriteFile(dir / "a.set", "sensors.laser.range_noise_sigma_m=0\n");
+    const fs::path odd = dir / "b.set";
+    if (fifo) {
+      ASSERT_EQ(mkfifo(odd.c_str(), 0600), 0);
+    } else {
+      fs::create_directory(odd);
+    }
+    const fs::path sweep = WriteFile(dir / "s.yaml", SmallSweep("profiles: \"*.set\"\n"));
+    const DeadlineResult r =
+        RunPlywoodWithADeadline(dir, {"sweep", sweep.string(), "--out", (dir / "out").string()});
+    ASSERT_TRUE(r.finished) << "plywood sweep waited on the FIFO";
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.err, "plywood: " + sweep.string() + ": profiles: " + odd.string() +
+                         " (matched by *.set): not a regular file (a folder or a device?)\n");
+    EXPECT_FALSE(fs::exists(dir / "out"));
+  }
 }
 
 }  // namespace

@@ -1,7 +1,6 @@
 #include "eval/bench/bench_experiment.h"
 
 #include <chrono>
-#include <fstream>
 #include <limits>
 #include <stdexcept>
 
@@ -10,6 +9,7 @@
 #include "sim/config/experiment_config.h"
 #include "sim/config/robot_catalog.h"
 #include "sim/config/yaml_text_value.h"
+#include "sim/runner/file_writer.h"
 #include "sim/runner/format_number.h"
 
 namespace plywood::eval {
@@ -87,10 +87,9 @@ BenchFigures RunBench(const BenchOptions& options) {
   const std::filesystem::path tiled_path =
       std::filesystem::temp_directory_path() / "plywood-bench-office-3x3.xml";
   {
-    std::ofstream out(tiled_path);
-    out << TiledWorldMjcf(worlds / "office.xml", 3, 3, 17.0, 11.0);
-    out.close();
-    if (!out) throw std::runtime_error(tiled_path.string() + ": cannot write");
+    sim::FileWriter out(tiled_path);
+    out.out() << TiledWorldMjcf(worlds / "office.xml", 3, 3, 17.0, 11.0);
+    out.Close();
   }
   figures.worlds.push_back(MeasureWorld(
       "hall.xml", BenchConfig((worlds / "hall.xml").string(), options.seconds), options, false));

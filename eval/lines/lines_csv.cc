@@ -8,6 +8,7 @@
 #include "eval/score/csv_table.h"
 #include "eval/score/score_report.h"
 #include "sim/config/config_error.h"
+#include "sim/runner/file_writer.h"
 #include "sim/runner/metrics.h"
 
 namespace plywood::eval {
@@ -37,8 +38,8 @@ std::vector<LinesCsvRow> LinesCsvRows(std::span<const ExtractorScore> scores,
 
 void WriteLinesCsv(const std::filesystem::path& path, std::span<const LinesCsvRow> rows,
                    bool with_room) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw std::runtime_error(path.string() + ": cannot write");
+  sim::FileWriter file(path);
+  std::ostream& out = file.out();
   const auto n = [](double value) { return sim::FormatNumber(value); };
   out << (with_room ? "room," : "")
       << "scan,extractor,x1_m,y1_m,x2_m,y2_m,alpha_rad,r_m,points,truth_segment\n";
@@ -51,8 +52,7 @@ void WriteLinesCsv(const std::filesystem::path& path, std::span<const LinesCsvRo
     if (row.truth_segment >= 0) out << row.truth_segment;
     out << '\n';
   }
-  out.flush();
-  if (!out) throw std::runtime_error(path.string() + ": write failed");
+  file.Close();
 }
 
 std::string CirclesCsvHeader(bool with_room) {
@@ -81,11 +81,9 @@ std::string CirclesCsvRows(std::span<const ExtractorScore> scores, const std::st
 
 void WriteCirclesCsv(const std::filesystem::path& path, std::span<const ExtractorScore> scores,
                      const std::string& room, long first_scan) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw std::runtime_error(path.string() + ": cannot write");
-  out << CirclesCsvHeader(!room.empty()) << CirclesCsvRows(scores, room, first_scan);
-  out.flush();
-  if (!out) throw std::runtime_error(path.string() + ": write failed");
+  sim::FileWriter file(path);
+  file.out() << CirclesCsvHeader(!room.empty()) << CirclesCsvRows(scores, room, first_scan);
+  file.Close();
 }
 
 std::vector<LinesCsvRow> ReadLinesCsv(const std::filesystem::path& path,

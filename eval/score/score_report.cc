@@ -1,9 +1,10 @@
 #include "eval/score/score_report.h"
 
 #include <algorithm>
-#include <fstream>
+#include <stdexcept>
 
 #include "sim/config/config_error.h"
+#include "sim/runner/file_writer.h"
 
 namespace plywood::eval {
 
@@ -25,10 +26,14 @@ void WriteScoreJson(const ScoreReport& report, const std::filesystem::path& out,
   if (fs::is_directory(target)) {
     throw sim::ConfigError(out.string(), "--out", "is a folder; give a file name (scores.json)");
   }
-  std::ofstream json(target, std::ios::binary);
-  json << report.metrics.ToJson();
-  json.flush();
-  if (!json) throw sim::ConfigError(out.string(), "--out", "cannot write the file");
+  try {
+    sim::FileWriter json(target, out.string());
+    json.out() << report.metrics.ToJson();
+    json.Close();
+  } catch (const std::runtime_error& e) {  // "OUT: write failed: No space left on device"
+    const std::string what = e.what();
+    throw sim::ConfigError(out.string(), "--out", what.substr(out.string().size() + 2));
+  }
 }
 
 }  // namespace plywood::eval

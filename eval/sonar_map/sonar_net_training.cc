@@ -15,6 +15,8 @@
 #include "perception/sonar_map/sonar_cell_model.h"
 #include "sim/config/robot_catalog.h"
 #include "sim/raycast/mujoco_ray_caster.h"
+#include "sim/runner/file_writer.h"
+#include "sim/runner/text_file.h"
 #include "sim/sensors/sonar_sensor.h"
 #include "sim/world/occupancy_raster.h"
 #include "sim/world/scene.h"
@@ -97,10 +99,9 @@ void Generate(const RandomRoom& room, int poses, const std::filesystem::path& di
               std::mt19937_64& rng, Dataset* out) {
   const std::filesystem::path world = dir / ("room_" + std::to_string(index) + ".xml");
   {
-    std::ofstream f(world);
-    f << RoomMjcf(room);
-    f.close();
-    if (!f) throw std::runtime_error(world.string() + ": cannot write the training room");
+    sim::FileWriter f(world);
+    f.out() << RoomMjcf(room);
+    f.Close();
   }
   sim::SceneOptions so;
   so.world_mjcf = world;
@@ -246,7 +247,8 @@ SonarNetTrainingReport TrainSonarNet(
   report.net = perception::ScoreProbabilities(p_net, labels);
   report.classical = perception::ScoreProbabilities(p_classical, labels);
   report.base_rate = perception::ScoreProbabilities(p_prior, labels);
-  net.Save(options.out);
+  // Staged and renamed into place: a failed write leaves an earlier file as it was.
+  sim::WriteTextFile(options.out, net.ToText());
   return report;
 }
 

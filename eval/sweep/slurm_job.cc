@@ -1,8 +1,9 @@
 #include "eval/sweep/slurm_job.h"
 
 #include <cstdio>
-#include <fstream>
 #include <stdexcept>
+
+#include "sim/runner/file_writer.h"
 
 namespace plywood::eval {
 namespace {
@@ -54,10 +55,9 @@ SlurmJob WriteSlurmJob(const fs::path& plywood, const fs::path& sweep_file, cons
           Quote(fs::absolute(sweep_file).string()) + " --out " +
           Quote(fs::absolute(out_dir).string()) + " --shard \"${SLURM_ARRAY_TASK_ID}/" +
           std::to_string(job.tasks) + "\" --jobs 1 --no-collect --quiet\n";
-  std::ofstream out(job.script, std::ios::binary);
-  out << text;
-  out.close();  // checked after closing: a full disk may show only when the buffer is written
-  if (!out) throw std::runtime_error("cannot write " + job.script.string());
+  sim::FileWriter out(job.script);
+  out.out() << text;
+  out.Close();  // checked after closing: a full disk may show only when the buffer is written
   fs::permissions(job.script, fs::perms::owner_exec, fs::perm_options::add);
   return job;
 }

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
@@ -50,6 +51,19 @@ std::vector<fs::path> Glob(const fs::path& pattern) {
   return paths;
 }
 
+// Every match must be a regular file, as a file named outright must: a FIFO would be opened (to
+// hash it) and waited on for ever, a folder or a device read as garbage.
+std::vector<fs::path> OnlyRegularFiles(std::vector<fs::path> found, const std::string& text,
+                                       const sim::YamlFields& fields, const std::string& key) {
+  for (const fs::path& p : found) {
+    if (!perception::IsRegularFile(p)) {
+      fields.Fail(key, p.string() + " (matched by " + text +
+                           "): not a regular file (a folder or a device?)");
+    }
+  }
+  return found;
+}
+
 // A glob matches against the sweep file's folder first, then the data root.
 std::vector<fs::path> ResolveGlob(const std::string& text, const fs::path& base_dir,
                                   const sim::YamlFields& fields, const std::string& key) {
@@ -57,11 +71,11 @@ std::vector<fs::path> ResolveGlob(const std::string& text, const fs::path& base_
   if (given.is_absolute()) {
     std::vector<fs::path> found = Glob(given);
     if (found.empty()) fields.Fail(key, "no file matches " + text);
-    return found;
+    return OnlyRegularFiles(std::move(found), text, fields, key);
   }
   for (const fs::path& base : {base_dir, sim::DataRoot()}) {
     std::vector<fs::path> found = Glob((base / given).lexically_normal());
-    if (!found.empty()) return found;
+    if (!found.empty()) return OnlyRegularFiles(std::move(found), text, fields, key);
   }
   fields.Fail(key, "no file matches " + text + " (looked in " + base_dir.string() + " and " +
                        sim::DataRoot().string() + ")");

@@ -1,38 +1,35 @@
 #include "sim/runner/run_writer.h"
 
 #include <charconv>
-#include <fstream>
 #include <functional>
 #include <sstream>
 #include <stdexcept>
 
 #include "perception/logs/carmen_log.h"
 #include "perception/logs/tum_trajectory.h"
+#include "sim/runner/file_writer.h"
 #include "sim/runner/metrics.h"
 #include "sim/runner/sensor_log_lines.h"
 
 namespace plywood::sim {
 namespace {
 
+// One output file, checked when it goes out of scope: a failed write ends the run naming the
+// file and the OS's reason.
 class OutputFile {
  public:
   OutputFile(const std::filesystem::path& dir, const std::string& name,
              std::vector<std::string>* written)
-      : path_(dir / name), out_(path_, std::ios::binary) {
-    if (!out_) throw std::runtime_error(path_.string() + ": cannot write");
+      : file_(dir / name) {
     written->push_back(name);
   }
   ~OutputFile() noexcept(false) {
-    out_.flush();
-    if (!out_ && std::uncaught_exceptions() == 0) {
-      throw std::runtime_error(path_.string() + ": write failed");
-    }
+    if (std::uncaught_exceptions() == 0) file_.Close();
   }
-  std::ostream& out() { return out_; }
+  std::ostream& out() { return file_.out(); }
 
  private:
-  std::filesystem::path path_;
-  std::ofstream out_;
+  FileWriter file_;
 };
 
 std::string N(double value) { return FormatNumber(value); }

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "sim/runner/file_writer.h"
+
 namespace plywood::sim {
 
 std::string ReadTextFile(const std::filesystem::path& path) {
@@ -16,17 +18,30 @@ std::string ReadTextFile(const std::filesystem::path& path) {
 }
 
 void WriteTextFile(const std::filesystem::path& path, const std::string& text) {
+  std::error_code error;
+  // A device or a FIFO (/dev/null, /dev/stdout) is written to: a rename would replace it.
+  if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error)) {
+    FileWriter file(path);
+    file.out() << text;
+    file.Close();
+    return;
+  }
   // The pid keeps two processes writing the same file (Slurm tasks, a sweep and --collect) apart.
   const std::filesystem::path partial = path.string() + ".partial-" + std::to_string(getpid());
-  {
-    std::ofstream out(partial, std::ios::binary);
-    out << text;
-    out.close();
-    if (!out) throw std::runtime_error("cannot write " + path.string());
+  try {
+    FileWriter file(partial, path.string());
+    file.out() << text;
+    file.Close();
+  } catch (const std::runtime_error&) {
+    std::filesystem::remove(partial, error);  // no half file left beside the earlier one
+    throw;
   }
-  std::error_code error;
   std::filesystem::rename(partial, path, error);
-  if (error) throw std::runtime_error("cannot write " + path.string() + ": " + error.message());
+  if (error) {
+    std::error_code ignored;
+    std::filesystem::remove(partial, ignored);
+    throw std::runtime_error("cannot write " + path.string() + ": " + error.message());
+  }
 }
 
 }  // namespace plywood::sim

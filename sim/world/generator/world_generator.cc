@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "sim/runner/file_writer.h"
 #include "sim/world/generator/robot_reach.h"
 #include "sim/world/generator/spawn_placer.h"
 #include "sim/world/generator/world_check.h"
@@ -18,10 +19,13 @@ namespace {
 constexpr int kMaxAttempts = 1000;
 
 void WriteText(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << text;
-  out.close();
-  if (!out) throw std::invalid_argument("out: cannot write " + path.string());
+  try {
+    FileWriter out(path);
+    out.out() << text;
+    out.Close();
+  } catch (const std::runtime_error& e) {
+    throw std::invalid_argument(std::string("out: ") + e.what());
+  }
 }
 
 }  // namespace
