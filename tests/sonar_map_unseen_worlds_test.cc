@@ -112,38 +112,5 @@ TEST(SonarMapUnseenWorldsTest, AGapWiderThanTheRobotIsDrivenThrough) {
   EXPECT_EQ(score.contacts, 0.0);
 }
 
-// Issue 14 round 27: generator seed 7, world 11 (seed 2). Every way on was a gap the squeeze tier
-// judged closed by the front echoes that had stopped earlier moves, placed on their sonars' axes
-// 1-6 cm in front of faces the grid had painted already (an oblique axis's point at the nearest
-// range lies short of the face): the explorer declared the map complete at 120 s, e 0.125. Left
-// out of the squeeze tier where an occupied cell on the echo's arc explains it, they no longer
-// close the gap: e 0.091, complete at 136 s, no contact.
-TEST(SonarMapUnseenWorldsTest, FrontEchoesOfFacesAlreadyHeardDoNotCloseAGap) {
-  const fs::path dir = MakeTempDir("sonar_map_squeeze_echoes");
-  sim::worldgen::GenerateWorldsOptions options;
-  options.family = "seed001";
-  options.count = 12;
-  options.seed = 7;
-  options.out_dir = dir / "worlds";
-  const std::vector<sim::worldgen::GeneratedWorldFile> files =
-      sim::worldgen::GenerateWorlds(options);
-  ASSERT_EQ(files.size(), 12u);
-  const sim::worldgen::GeneratedWorld world = sim::worldgen::GenerateWorld("seed001", 7, 11);
-  ASSERT_FALSE(world.spawns.empty());
-  const sim::worldgen::SpawnPose& spawn = world.spawns.front();
-  const SonarMapScore score =
-      RunSonarMap("seed001_room_1.yaml", dir / "run",
-                  "--seed 2 --set world=" + files[11].mjcf.string() +
-                      " --set robot.spawn.x_m=" + std::to_string(spawn.x_m) +
-                      " --set robot.spawn.y_m=" + std::to_string(spawn.y_m) +
-                      " --set robot.spawn.theta_deg=" + std::to_string(spawn.yaw_deg));
-  ASSERT_FALSE(::testing::Test::HasFatalFailure());
-  std::printf("generator seed 7 world 11 seed 2: e %.4f grid e %.4f, %s\n", score.error,
-              score.grid_error, score.end_reason.c_str());
-  EXPECT_LE(score.error, 0.091 + 0.01);
-  EXPECT_EQ(score.end_reason, "map_complete");
-  EXPECT_EQ(score.contacts, 0.0);
-}
-
 }  // namespace
 }  // namespace plywood

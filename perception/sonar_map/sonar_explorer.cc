@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -41,18 +40,6 @@ void RequireInRange(const std::string& field, double v, double low, double high)
 }
 
 Eigen::Vector2d Position(const msgs::Pose2D& X) { return {X.x_m, X.y_m}; }
-
-// Where a reading's echo is placed: on its transducer's axis at the range (robot frame).
-Eigen::Vector2d EchoPoint(const msgs::RangeReading& r) {
-  return {r.X_RS.x_m + r.range_m * std::cos(r.X_RS.theta_rad),
-          r.X_RS.y_m + r.range_m * std::sin(r.X_RS.theta_rad)};
-}
-
-// A robot-frame point in the world frame.
-Eigen::Vector2d InWorld(const msgs::Pose2D& X_WR, const Eigen::Vector2d& p) {
-  const double c = std::cos(X_WR.theta_rad), s = std::sin(X_WR.theta_rad);
-  return Position(X_WR) + Eigen::Vector2d(c * p.x() - s * p.y(), s * p.x() + c * p.y());
-}
 
 }  // namespace
 
@@ -117,9 +104,6 @@ void SonarExplorerOptions::Validate() const {
         "squeeze_clearance_m: must be 0 or > robot_radius_m + front_margin_m and <= "
         "narrow_clearance_m, got " +
         msgs::ShortestNumber(squeeze_clearance_m));
-  if (!(sonar_half_angle_deg > 0.0 && sonar_half_angle_deg < 90.0))
-    throw std::invalid_argument("sonar_half_angle_deg: must be in (0, 90), got " +
-                                msgs::ShortestNumber(sonar_half_angle_deg));
   RequireInRange("frontier_view_m", frontier_view_m, 0.01, 10.0);
   RequireNonNegative("frontier_wall_band_m", frontier_wall_band_m);
   if (!(frontier_view_m > waypoint_tolerance_m))
@@ -164,7 +148,7 @@ CognitiveMap SonarExplorer::BuildMap(const BeamFreeGrid* beam_free) const {
   return map;
 }
 
-std::optional<msgs::RangeReading> SonarExplorer::FrontBlocked(const msgs::RangeRing& ring) const {
+std::optional<Eigen::Vector2d> SonarExplorer::FrontBlocked(const msgs::RangeRing& ring) const {
   // The echo points in the corridor the robot body sweeps ahead. The sonars up to 60 deg off the
   // axis count, since an obstacle corner met at an angle is heard only by the oblique ones.
   const double kRadius = options_.robot_radius_m;
@@ -172,13 +156,13 @@ std::optional<msgs::RangeReading> SonarExplorer::FrontBlocked(const msgs::RangeR
   for (const auto& r : ring.readings) {
     const double bearing = msgs::WrapAngle(r.X_RS.theta_rad);
     if (!r.echo || std::abs(bearing) > 1.05) continue;
-    const Eigen::Vector2d point = EchoPoint(r);
+    const double along = r.X_RS.x_m + r.range_m * std::cos(bearing);
+    const double side = r.X_RS.y_m + r.range_m * std::sin(bearing);
     // An echo is placed on its sonar's axis but may come from anywhere in the cone: an oblique
     // sonar's echo beside the body (a corner being passed) blocks only inside the body's sweep.
     const double half_width = std::abs(bearing) > 0.5 ? kRadius : kRadius + kSideMargin;
-    if (point.x() > 0.0 && point.x() < options_.stop_range_m + kRadius &&
-        std::abs(point.y()) < half_width)
-      return r;
+    if (along > 0.0 && along < options_.stop_range_m + kRadius && std::abs(side) < half_width)
+      return Eigen::Vector2d(along, side);
   }
   return std::nullopt;
 }
@@ -240,7 +224,6 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
   if (cell.x() >= 0) visits_[cell.y() * grid_.width() + cell.x()] += 1.0;
   const PlanningCells planning = Planning(here, map.obstacles);
   heading_to_circuit_ = false;
-  on_squeeze_path_ = false;
   if (options_.circle_obstacles && PlanCircuit(map, planning, here, time_s)) {
     heading_to_frontier_ = false;
     target_partition_ = -1;
@@ -299,18 +282,15 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
     // when none is left either. Standing on a frontier goal already (the robot came to rest a few
     // centimetres past where it marked one) is arriving there: look from here and from the centre
     // of the robot's cell, which the goal test measures from; then no goal is left in that cell.
-    bool squeeze = false;
-    std::optional<std::vector<Eigen::Vector2d>> frontier =
-        PlanToAnyFrontier(planning, here, &squeeze);
+    std::optional<std::vector<Eigen::Vector2d>> frontier = PlanToAnyFrontier(planning, here);
     if (frontier && frontier->empty()) {
       MarkLooked(here);
       MarkLooked(grid_.CellCentre(cell.x(), cell.y()));
-      frontier = PlanToAnyFrontier(planning, here, &squeeze);
+      frontier = PlanToAnyFrontier(planning, here);
     }
     if (frontier && !frontier->empty()) {
       path_ = std::move(*frontier);
       heading_to_frontier_ = true;
-      on_squeeze_path_ = squeeze;
       target_partition_ = -1;
       return;
     }
@@ -468,27 +448,6 @@ bool SonarExplorer::Abandoned(const Eigen::Vector2d& target) const {
   return false;
 }
 
-bool SonarExplorer::EchoFromOccupied(const FrontEcho& echo, const CellMap& cells) const {
-  // The nearest reflecting point inside the cone sets the range: an occupied cell whose centre
-  // lies at the range (to a cell) within the cone's half-angle of the axis can be that point.
-  const double res = grid_.resolution_m();
-  const double half_angle = options_.sonar_half_angle_deg * std::numbers::pi / 180.0;
-  const Eigen::Vector2i c = grid_.CellAt(echo.transducer);
-  const int r = static_cast<int>(std::ceil((echo.range_m + res) / res)) + 1;
-  for (int dy = -r; dy <= r; ++dy)
-    for (int dx = -r; dx <= r; ++dx) {
-      const int ix = c.x() + dx, iy = c.y() + dy;
-      if (!grid_.Contains(ix, iy) ||
-          cells.cells[static_cast<std::size_t>(iy) * cells.width + ix] != CellState::kOccupied)
-        continue;
-      const Eigen::Vector2d d = grid_.CellCentre(ix, iy) - echo.transducer;
-      if (std::abs(d.norm() - echo.range_m) <= res &&
-          std::abs(msgs::WrapAngle(std::atan2(d.y(), d.x()) - echo.axis_rad)) <= half_angle)
-        return true;
-    }
-  return false;
-}
-
 SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here,
                                                      const std::vector<Rect>& obstacles) const {
   const int W = grid_.width(), H = grid_.height();
@@ -546,34 +505,9 @@ SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here
   usable(out.safe_from_heard, near_heard, heard, options_.path_clearance_m);
   usable(out.narrow_safe, narrow, occupied, options_.narrow_clearance_m);
   usable(out.narrow_safe_from_heard, narrow_heard, heard, options_.narrow_clearance_m);
-  if (options_.squeeze_clearance_m > 0.0) {
-    // A front echo is placed on its sonar's axis but may come from anywhere in the cone: one on a
-    // cell the grid has since heard free, whose range an occupied cell in the cone explains, is
-    // that face heard at a slant (already in `heard`), and placed in a gap it closed gaps the
-    // robot fits through (docs/sonar_map.md, round 27). One nothing explains may be the only
-    // sign of a face the grid missed; a contact point is exact; an echo that stopped a squeeze
-    // move was heard where the squeeze expected none: those stay.
-    std::vector<char> squeeze_heard = heard;
-    std::vector<std::size_t> unexplained;
-    for (const FrontEcho& e : front_echoes_) {
-      const Eigen::Vector2i c = grid_.CellAt(e.point);
-      if (c.x() < 0) continue;
-      const std::size_t i = static_cast<std::size_t>(c.y()) * W + c.x();
-      if (out.cells.cells[i] == CellState::kFree && EchoFromOccupied(e, out.cells))
-        squeeze_heard[i] = 0;
-      else
-        unexplained.push_back(i);
-    }
-    for (std::size_t i : unexplained) squeeze_heard[i] = 1;
-    for (const std::vector<Eigen::Vector2d>* kept : {&contacts_, &squeeze_stops_})
-      for (const Eigen::Vector2d& p : *kept) {
-        const Eigen::Vector2i c = grid_.CellAt(p);
-        if (c.x() >= 0) squeeze_heard[static_cast<std::size_t>(c.y()) * W + c.x()] = 1;
-      }
-    usable(out.squeeze_safe_from_heard,
-           Dilate(squeeze_heard, W, H, options_.squeeze_clearance_m / res), squeeze_heard,
-           options_.squeeze_clearance_m);
-  }
+  if (options_.squeeze_clearance_m > 0.0)
+    usable(out.squeeze_safe_from_heard, Dilate(heard, W, H, options_.squeeze_clearance_m / res),
+           heard, options_.squeeze_clearance_m);
   return out;
 }
 
@@ -642,12 +576,12 @@ std::vector<Eigen::Vector2d> SonarExplorer::CellPathTo(const std::vector<char>& 
 }
 
 std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToAnyFrontier(
-    const PlanningCells& planning, const Eigen::Vector2d& here, bool* squeeze) const {
+    const PlanningCells& planning, const Eigen::Vector2d& here) const {
   std::optional<std::vector<Eigen::Vector2d>> path =
       PlanToFrontier(planning, planning.safe_from_heard, here);
   if (!path) path = PlanToFrontier(planning, planning.narrow_safe_from_heard, here);
-  *squeeze = !path && !planning.squeeze_safe_from_heard.empty();
-  if (*squeeze) path = PlanToFrontier(planning, planning.squeeze_safe_from_heard, here);
+  if (!path && !planning.squeeze_safe_from_heard.empty())
+    path = PlanToFrontier(planning, planning.squeeze_safe_from_heard, here);
   return path;
 }
 
@@ -795,18 +729,13 @@ msgs::WheelSpeedCommand SonarExplorer::Explore(const robot::ControllerInput& inp
   }
   msgs::WheelSpeedCommand command = DriveTo(X_WR, path_.front());
   const robot::BodyTwist twist = robot::WheelSpeedsToTwist(spec_, command);
-  const std::optional<msgs::RangeReading> echo =
+  const std::optional<Eigen::Vector2d> echo =
       twist.linear_m_s > 0.0 && input.sonar != nullptr ? FrontBlocked(*input.sonar) : std::nullopt;
   if (echo) {
     // The planner did not know this echo: it is in the way from now on.
-    blocking_echoes_.push_back(InWorld(X_WR, EchoPoint(*echo)));
-    if (on_squeeze_path_) {
-      squeeze_stops_.push_back(blocking_echoes_.back());
-    } else {
-      front_echoes_.push_back({blocking_echoes_.back(),
-                               InWorld(X_WR, Eigen::Vector2d(echo->X_RS.x_m, echo->X_RS.y_m)),
-                               X_WR.theta_rad + echo->X_RS.theta_rad, echo->range_m});
-    }
+    const double c = std::cos(X_WR.theta_rad), s = std::sin(X_WR.theta_rad);
+    blocking_echoes_.push_back(Position(X_WR) + Eigen::Vector2d(c * echo->x() - s * echo->y(),
+                                                                s * echo->x() + c * echo->y()));
   }
   if (twist.linear_m_s > 0.0 && (echo || MapBlocksFront(X_WR))) {
     // Negative experience: this move cannot be made; forget the path and replan at once.

@@ -92,10 +92,6 @@ struct SonarExplorerOptions {
   // 0 = off; otherwise between robot_radius_m + front_margin_m (the front check's corridor) and
   // narrow_clearance_m.
   double squeeze_clearance_m = 0.30;
-  // The sonar cone's half-angle (the Polaroid 6500's, as the simulated ring's): a front echo came
-  // from the nearest face within this of its axis. The squeeze tier leaves out a blocking echo
-  // that an occupied cell on that arc explains, on a cell the grid has since heard free.
-  double sonar_half_angle_deg = 15.0;
   double stop_range_m = 0.3;  // a front echo closer than this aborts the move (into D)
   // Half-width of that corridor beyond the body. It is narrower than path_clearance_m, so that a
   // planned path is not blocked by the cells that shaped it.
@@ -177,9 +173,8 @@ class SonarExplorer final : public robot::Controller {
   msgs::WheelSpeedCommand Decide(const robot::ControllerInput& input);
   msgs::WheelSpeedCommand Explore(const robot::ControllerInput& input);
   msgs::WheelSpeedCommand DriveTo(const msgs::Pose2D& X_WR, const Eigen::Vector2d& target);
-  // The first reading whose echo point (on its axis) lies in the corridor the body sweeps within
-  // stop_range_m.
-  std::optional<msgs::RangeReading> FrontBlocked(const msgs::RangeRing& ring) const;
+  // The first echo point (robot frame) in the corridor the body sweeps within stop_range_m.
+  std::optional<Eigen::Vector2d> FrontBlocked(const msgs::RangeRing& ring) const;
   void Replan(const msgs::Pose2D& X_WR, double time_s);
   // Whether a target lies within visit_radius_m of one whose move a front echo blocked.
   bool Abandoned(const Eigen::Vector2d& target) const;
@@ -220,10 +215,9 @@ class SonarExplorer final : public robot::Controller {
       const PlanningCells& planning, const std::vector<char>& safe_from_heard,
       const Eigen::Vector2d& here) const;
   // PlanToFrontier with path_clearance_m, else with narrow_clearance_m, else (when it is set)
-  // with squeeze_clearance_m; *squeeze tells whether the last tier was asked.
+  // with squeeze_clearance_m.
   std::optional<std::vector<Eigen::Vector2d>> PlanToAnyFrontier(const PlanningCells& planning,
-                                                                const Eigen::Vector2d& here,
-                                                                bool* squeeze) const;
+                                                                const Eigen::Vector2d& here) const;
   // While a bump panel is pressed, and for bump_back_off_s after: the command backing away.
   std::optional<msgs::WheelSpeedCommand> ReactToBump(const robot::ControllerInput& input);
   // Whether an occupied grid cell lies in the corridor the body sweeps within stop_range_m.
@@ -291,21 +285,6 @@ class SonarExplorer final : public robot::Controller {
   // World points of echoes that blocked a move and of bumps: occupied for the planner.
   std::vector<Eigen::Vector2d> blocking_echoes_;
   std::vector<Eigen::Vector2d> contacts_;  // the bumps alone
-  // Whether path_ leads to a frontier over the squeeze tier's cells, and the echoes that stopped
-  // such a move: the squeeze tier never leaves those out (Planning).
-  bool on_squeeze_path_ = false;
-  std::vector<Eigen::Vector2d> squeeze_stops_;
-  // The other front echoes that stopped a move, with where they were heard from (world frame).
-  struct FrontEcho {
-    Eigen::Vector2d point;
-    Eigen::Vector2d transducer;
-    double axis_rad = 0.0;
-    double range_m = 0.0;
-  };
-  std::vector<FrontEcho> front_echoes_;
-  // Whether an occupied cell of `cells` lies on the echo's arc: the range (to a cell) within
-  // sonar_half_angle_deg of the axis.
-  bool EchoFromOccupied(const FrontEcho& echo, const CellMap& cells) const;
   double backing_off_until_s_ = -1.0;
   double backing_off_speed_m_s_ = 0.0;
   double last_replan_s_ = -1e9;

@@ -412,16 +412,6 @@ TEST(SonarExplorerTest, SqueezeClearanceOutsideFrontCorridorToNarrowClearanceThr
   EXPECT_NO_THROW(MakeExplorer(options));
 }
 
-TEST(SonarExplorerTest, SonarHalfAngleOutsideZeroToNinetyDegreesThrowsNamingIt) {
-  SonarExplorerOptions options = ClassicalOptions();
-  options.sonar_half_angle_deg = 0.0;
-  ExpectThrowsNaming(options, "sonar_half_angle_deg");
-  options.sonar_half_angle_deg = 90.0;
-  ExpectThrowsNaming(options, "sonar_half_angle_deg");
-  options.sonar_half_angle_deg = 15.0;
-  EXPECT_NO_THROW(MakeExplorer(options));
-}
-
 TEST(SonarExplorerTest, DefaultClassicalOptionsAreValid) {
   EXPECT_NO_THROW(MakeExplorer(ClassicalOptions()));
 }

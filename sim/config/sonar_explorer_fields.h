@@ -60,7 +60,6 @@ void VisitFields(A& a, perception::SonarExplorerOptions& o) {
   a("path_clearance_m", o.path_clearance_m);
   a("narrow_clearance_m", o.narrow_clearance_m);
   a("squeeze_clearance_m", o.squeeze_clearance_m);
-  a("sonar_half_angle_deg", o.sonar_half_angle_deg);
   a("frontier_view_m", o.frontier_view_m);
   a("frontier_wall_band_m", o.frontier_wall_band_m);
   a("circle_obstacles", o.circle_obstacles);
