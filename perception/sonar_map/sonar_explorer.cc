@@ -224,7 +224,6 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
   if (cell.x() >= 0) visits_[cell.y() * grid_.width() + cell.x()] += 1.0;
   const PlanningCells planning = Planning(here, map.obstacles);
   heading_to_circuit_ = false;
-  on_squeeze_path_ = false;
   if (options_.circle_obstacles && PlanCircuit(map, planning, here, time_s)) {
     heading_to_frontier_ = false;
     target_partition_ = -1;
@@ -283,18 +282,15 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
     // when none is left either. Standing on a frontier goal already (the robot came to rest a few
     // centimetres past where it marked one) is arriving there: look from here and from the centre
     // of the robot's cell, which the goal test measures from; then no goal is left in that cell.
-    bool squeeze = false;
-    std::optional<std::vector<Eigen::Vector2d>> frontier =
-        PlanToAnyFrontier(planning, here, &squeeze);
+    std::optional<std::vector<Eigen::Vector2d>> frontier = PlanToAnyFrontier(planning, here);
     if (frontier && frontier->empty()) {
       MarkLooked(here);
       MarkLooked(grid_.CellCentre(cell.x(), cell.y()));
-      frontier = PlanToAnyFrontier(planning, here, &squeeze);
+      frontier = PlanToAnyFrontier(planning, here);
     }
     if (frontier && !frontier->empty()) {
       path_ = std::move(*frontier);
       heading_to_frontier_ = true;
-      on_squeeze_path_ = squeeze;
       target_partition_ = -1;
       return;
     }
@@ -509,33 +505,9 @@ SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here
   usable(out.safe_from_heard, near_heard, heard, options_.path_clearance_m);
   usable(out.narrow_safe, narrow, occupied, options_.narrow_clearance_m);
   usable(out.narrow_safe_from_heard, narrow_heard, heard, options_.narrow_clearance_m);
-  if (options_.squeeze_clearance_m > 0.0) {
-    // A front echo is placed on its sonar's axis at the range, but the range is that of the
-    // nearest face inside the cone: met at a slant, the axis point lies up to ~6 cm short of the
-    // face (docs/sonar_map.md, round 27). One on a cell the grid has since heard free closed gaps
-    // the robot fits through at squeeze_clearance_m; the squeeze tier passes it at the front
-    // check's corridor instead, which still keeps the body off the face behind it. A contact point
-    // is exact, and an echo that stopped a squeeze move was heard where the squeeze expected
-    // none: those keep the full clearance.
-    std::vector<char> squeeze_heard(heard.size(), 0), echo_on_free(heard.size(), 0);
-    for (std::size_t i = 0; i < heard.size(); ++i)
-      squeeze_heard[i] = heard[i] && out.cells.cells[i] != CellState::kFree;
-    for (const std::vector<Eigen::Vector2d>* kept : {&contacts_, &squeeze_stops_})
-      for (const Eigen::Vector2d& p : *kept) {
-        const Eigen::Vector2i c = grid_.CellAt(p);
-        if (c.x() >= 0) squeeze_heard[static_cast<std::size_t>(c.y()) * W + c.x()] = 1;
-      }
-    for (std::size_t i = 0; i < heard.size(); ++i) echo_on_free[i] = heard[i] && !squeeze_heard[i];
-    std::vector<char> near_squeeze =
-        Dilate(squeeze_heard, W, H, options_.squeeze_clearance_m / res);
-    const std::vector<char> near_echo =
-        Dilate(echo_on_free, W, H, (options_.robot_radius_m + options_.front_margin_m) / res);
-    for (std::size_t i = 0; i < near_squeeze.size(); ++i) {
-      near_squeeze[i] = near_squeeze[i] || near_echo[i];
-      squeeze_heard[i] = squeeze_heard[i] || echo_on_free[i];
-    }
-    usable(out.squeeze_safe_from_heard, near_squeeze, squeeze_heard, options_.squeeze_clearance_m);
-  }
+  if (options_.squeeze_clearance_m > 0.0)
+    usable(out.squeeze_safe_from_heard, Dilate(heard, W, H, options_.squeeze_clearance_m / res),
+           heard, options_.squeeze_clearance_m);
   return out;
 }
 
@@ -604,12 +576,12 @@ std::vector<Eigen::Vector2d> SonarExplorer::CellPathTo(const std::vector<char>& 
 }
 
 std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToAnyFrontier(
-    const PlanningCells& planning, const Eigen::Vector2d& here, bool* squeeze) const {
+    const PlanningCells& planning, const Eigen::Vector2d& here) const {
   std::optional<std::vector<Eigen::Vector2d>> path =
       PlanToFrontier(planning, planning.safe_from_heard, here);
   if (!path) path = PlanToFrontier(planning, planning.narrow_safe_from_heard, here);
-  *squeeze = !path && !planning.squeeze_safe_from_heard.empty();
-  if (*squeeze) path = PlanToFrontier(planning, planning.squeeze_safe_from_heard, here);
+  if (!path && !planning.squeeze_safe_from_heard.empty())
+    path = PlanToFrontier(planning, planning.squeeze_safe_from_heard, here);
   return path;
 }
 
@@ -764,7 +736,6 @@ msgs::WheelSpeedCommand SonarExplorer::Explore(const robot::ControllerInput& inp
     const double c = std::cos(X_WR.theta_rad), s = std::sin(X_WR.theta_rad);
     blocking_echoes_.push_back(Position(X_WR) + Eigen::Vector2d(c * echo->x() - s * echo->y(),
                                                                 s * echo->x() + c * echo->y()));
-    if (on_squeeze_path_) squeeze_stops_.push_back(blocking_echoes_.back());
   }
   if (twist.linear_m_s > 0.0 && (echo || MapBlocksFront(X_WR))) {
     // Negative experience: this move cannot be made; forget the path and replan at once.

@@ -215,10 +215,9 @@ class SonarExplorer final : public robot::Controller {
       const PlanningCells& planning, const std::vector<char>& safe_from_heard,
       const Eigen::Vector2d& here) const;
   // PlanToFrontier with path_clearance_m, else with narrow_clearance_m, else (when it is set)
-  // with squeeze_clearance_m; *squeeze tells whether the last tier was asked.
+  // with squeeze_clearance_m.
   std::optional<std::vector<Eigen::Vector2d>> PlanToAnyFrontier(const PlanningCells& planning,
-                                                                const Eigen::Vector2d& here,
-                                                                bool* squeeze) const;
+                                                                const Eigen::Vector2d& here) const;
   // While a bump panel is pressed, and for bump_back_off_s after: the command backing away.
   std::optional<msgs::WheelSpeedCommand> ReactToBump(const robot::ControllerInput& input);
   // Whether an occupied grid cell lies in the corridor the body sweeps within stop_range_m.
@@ -286,10 +285,6 @@ class SonarExplorer final : public robot::Controller {
   // World points of echoes that blocked a move and of bumps: occupied for the planner.
   std::vector<Eigen::Vector2d> blocking_echoes_;
   std::vector<Eigen::Vector2d> contacts_;  // the bumps alone
-  // Whether path_ leads to a frontier over the squeeze tier's cells, and the echoes that stopped
-  // such a move: the squeeze tier keeps its full clearance from those (Planning).
-  bool on_squeeze_path_ = false;
-  std::vector<Eigen::Vector2d> squeeze_stops_;
   double backing_off_until_s_ = -1.0;
   double backing_off_speed_m_s_ = 0.0;
   double last_replan_s_ = -1e9;
