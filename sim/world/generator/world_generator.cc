@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "sim/runner/file_writer.h"
+#include "sim/runner/text_file.h"
 #include "sim/world/generator/robot_reach.h"
 #include "sim/world/generator/spawn_placer.h"
 #include "sim/world/generator/world_check.h"
@@ -18,11 +18,11 @@ namespace {
 
 constexpr int kMaxAttempts = 1000;
 
+// Staged and renamed into place: a failed write (a full disk) never leaves a cut world that a
+// later run or a sweep's glob would load.
 void WriteText(const std::filesystem::path& path, const std::string& text) {
   try {
-    FileWriter out(path);
-    out.out() << text;
-    out.Close();
+    WriteTextFile(path, text);
   } catch (const std::runtime_error& e) {
     throw std::invalid_argument(std::string("out: ") + e.what());
   }

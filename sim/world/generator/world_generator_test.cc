@@ -4,9 +4,12 @@
 #include "sim/world/generator/world_generator.h"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 
+#include <csignal>
 #include <fstream>
 #include <sstream>
+#include <string>
 
 #include "sim/world/generator/robot_reach.h"
 #include "sim/world/generator/world_families.h"
@@ -108,6 +111,45 @@ TEST(WorldGeneratorTest, FewerWorldsArePrefixOfMore) {
   EXPECT_EQ(more_index.substr(0, few_index.size()), few_index);
   EXPECT_EQ(std::count(more_index.begin(), more_index.end(), '\n'), 6);
   EXPECT_EQ(more_index.substr(0, more_index.find('\n') + 1), kWorldIndexHeader);
+}
+
+// A failed write (here a file-size limit, as a full disk) names the file and leaves no cut world:
+// each file is staged and renamed into place, so every .xml and .json in the folder is whole and a
+// later run or a sweep's `*.xml` glob never loads half a world.
+TEST(WorldGeneratorTest, AFailedWriteLeavesNoCutWorld) {
+  const fs::path dir = testing::MakeTempDir("worldgen_full");
+  GenerateWorldsOptions options;
+  options.family = "office";
+  options.seed = 7;
+  options.count = 3;
+  options.out_dir = dir;
+  rlimit saved{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &saved), 0);
+  const auto previous_handler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit small = saved;
+  small.rlim_cur = WorldMjcf(GenerateWorld("office", 7, 0)).size() / 2;
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
+  std::string error;
+  try {
+    GenerateWorlds(options);
+  } catch (const std::invalid_argument& e) {
+    error = e.what();
+  }
+  setrlimit(RLIMIT_FSIZE, &saved);
+  std::signal(SIGXFSZ, previous_handler);
+  EXPECT_EQ(error,
+            "out: " + (dir / "office_s7_00000.xml").string() + ": write failed: File too large");
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    const std::string name = entry.path().filename().string();
+    const int index = std::stoi(name.substr(name.find("_0") + 1, 5));
+    const GeneratedWorld world = GenerateWorld("office", 7, index);
+    if (entry.path().extension() == ".xml") {
+      EXPECT_EQ(Read(entry.path()), WorldMjcf(world)) << name << " is cut";
+    } else {
+      EXPECT_EQ(entry.path().extension(), ".json") << name << " left behind";
+      EXPECT_EQ(Read(entry.path()), WorldSidecarJson(world)) << name << " is cut";
+    }
+  }
 }
 
 void ExpectRejected(const GenerateWorldsOptions& options, const std::string& field) {
