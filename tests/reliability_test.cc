@@ -348,6 +348,18 @@ TEST_F(ReliabilityTest, ReplayOfALogWithoutScansIsRefusedNamingTheFile) {
                 {"logs: not a regular file (a folder or a device?)"});
   ExpectOneLine(RunPlywood("replay " + (dir / "absent.log").string(), dir),
                 {"absent.log: no such log file"});
+  // audit5: a dangling symbolic link or a loop read "no such log file" (or "no such experiment
+  // file"), though the name is there: the line now says what it is.
+  fs::create_symlink(dir / "gone.log", dir / "dangling.log");
+  fs::create_symlink(dir / "loop_b", dir / "loop_a");
+  fs::create_symlink(dir / "loop_a", dir / "loop_b");
+  for (const std::string command : {"replay ", "run "}) {
+    ExpectOneLine(RunPlywood(command + (dir / "dangling.log").string(), dir),
+                  {"dangling.log: a symbolic link to " + (dir / "gone.log").string() +
+                   ", which does not exist"});
+    ExpectOneLine(RunPlywood(command + (dir / "loop_a").string(), dir),
+                  {"loop_a: Too many levels of symbolic links"});
+  }
 }
 
 TEST_F(ReliabilityTest, NanOrNegativeRangesInALogAreRefusedWithTheirLine) {
