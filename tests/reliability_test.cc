@@ -360,6 +360,16 @@ TEST_F(ReliabilityTest, ReplayOfALogWithoutScansIsRefusedNamingTheFile) {
     ExpectOneLine(RunPlywood(command + (dir / "loop_a").string(), dir),
                   {"loop_a: Too many levels of symbolic links"});
   }
+  // audit5: a path over PATH_MAX reaching a std::filesystem call without an error_code read
+  // "plywood: error: filesystem error: status: File name too long [PATH]", exit 1.
+  std::string too_long = "d";
+  while (too_long.size() < 5000) too_long += "/" + std::string(200, 'd');
+  for (const std::string& args :
+       {"view " + too_long, "train sonar-net --rooms 1 --test-rooms 1 --out " + too_long + "/n"}) {
+    const CliResult result = RunPlywood(args, dir);
+    ExpectOneLine(result, {"File name too long"});
+    EXPECT_EQ(result.err.find("filesystem error"), std::string::npos) << result.err;
+  }
 }
 
 TEST_F(ReliabilityTest, NanOrNegativeRangesInALogAreRefusedWithTheirLine) {
