@@ -6,8 +6,10 @@
 #include <csignal>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "apps/command.h"
@@ -129,6 +131,17 @@ int main(int argc, char** argv) {
   } catch (const std::invalid_argument& e) {  // UsageError too
     std::fprintf(stderr, "plywood: %s\n", OneLine(e.what()).c_str());
     return 2;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // A name the file system refuses (over PATH_MAX, a link loop) reaching a std::filesystem call
+    // without an error_code read "plywood: error: filesystem error: status: File name too long
+    // [PATH]", exit 1: the path and the reason, and a bad name is bad input (exit 2).
+    const std::error_code code = e.code();
+    const std::string path = e.path1().empty() ? "" : e.path1().string() + ": ";
+    std::fprintf(stderr, "plywood: %s\n", OneLine(path + code.message()).c_str());
+    const bool bad_name =
+        code == std::errc::filename_too_long || code == std::errc::too_many_symbolic_link_levels ||
+        code == std::errc::not_a_directory || code == std::errc::no_such_file_or_directory;
+    return bad_name ? 2 : 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "plywood: error: %s\n", OneLine(e.what()).c_str());
     return 1;

@@ -4,7 +4,9 @@
 // plywood view RUN_DIR [--time T] [--screenshot PNG] [--size WxH]
 // plywood view --bench [EXPERIMENT.yaml] [--bench-seconds S]
 
+#include <charconv>
 #include <chrono>
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -47,11 +49,29 @@ struct ViewFlags {
   bool bench = false;
 };
 
+// All of WIDTHxHEIGHT, digits only: sscanf("%dx%d") took "640x480x3" and " 640x480", and
+// wrapped 99999999999 into 1215752191.
 viewer::WindowOptions WindowOf(const ViewFlags& flags) {
   viewer::WindowOptions window;
-  if (std::sscanf(flags.size.c_str(), "%dx%d", &window.width_px, &window.height_px) != 2) {
-    throw UsageError("--size: expected WIDTHxHEIGHT, got '" + flags.size + "'");
+  const std::string& size = flags.size;
+  const auto parse = [&](std::size_t begin, std::size_t end, int& px, const char* field) {
+    long long value = 0;
+    const auto [ptr, error] = std::from_chars(size.data() + begin, size.data() + end, value);
+    if (begin == end || error == std::errc::invalid_argument || ptr != size.data() + end) {
+      throw UsageError("--size: expected WIDTHxHEIGHT, got '" + size + "'");
+    }
+    if (error == std::errc::result_out_of_range || value < INT_MIN || value > INT_MAX) {
+      throw UsageError(std::string("--size: ") + field + ": must be in [64, 8192], got " +
+                       size.substr(begin, end - begin));
+    }
+    px = static_cast<int>(value);
+  };
+  const std::size_t x = size.find('x');
+  if (x == std::string::npos) {
+    throw UsageError("--size: expected WIDTHxHEIGHT, got '" + size + "'");
   }
+  parse(0, x, window.width_px, "width_px");
+  parse(x + 1, size.size(), window.height_px, "height_px");
   try {
     window.Validate();
   } catch (const std::invalid_argument& e) {

@@ -1,6 +1,7 @@
 #include "render/video_encoder.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
@@ -9,6 +10,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <exception>
 #include <iostream>
 #include <stdexcept>
 #include <string>
@@ -19,14 +21,37 @@ extern char** environ;
 
 namespace plywood::render {
 
-VideoEncoder::VideoEncoder(const std::filesystem::path& path, double fps) : path_(path), fps_(fps) {
+namespace {
+
+std::filesystem::path StagedPath(const std::filesystem::path& path) {
+  std::error_code error;
+  if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error)) {
+    return path;  // a device such as /dev/null: a rename would replace it
+  }
+  return path.parent_path() / (path.stem().string() + ".partial-" + std::to_string(getpid()) +
+                               path.extension().string());
+}
+
+void ReplaceAll(std::string& text, const std::string& from, const std::string& to) {
+  if (from.empty() || from == to) return;
+  for (auto at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) {
+    text.replace(at, from.size(), to);
+  }
+}
+
+}  // namespace
+
+VideoEncoder::VideoEncoder(const std::filesystem::path& path, double fps)
+    : path_(path), staged_(StagedPath(path)), fps_(fps) {
   if (!(fps >= 1.0 && fps <= 240.0)) {
     throw std::invalid_argument("fps: must be in [1, 240], got " + std::to_string(fps));
   }
 }
 
 VideoEncoder::~VideoEncoder() {
-  if (pid_ >= 0) {
+  if (pid_ >= 0 && std::uncaught_exceptions() > 0) {
+    Abandon();
+  } else if (pid_ >= 0) {
     try {
       Close();
     } catch (const std::exception& e) {
@@ -34,6 +59,18 @@ VideoEncoder::~VideoEncoder() {
     }
   }
   if (ffmpeg_errors_) std::fclose(ffmpeg_errors_);
+}
+
+void VideoEncoder::Abandon() {
+  if (pipe_fd_ >= 0) close(pipe_fd_);
+  pipe_fd_ = -1;
+  kill(pid_, SIGTERM);
+  int status = 0;
+  while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+  }
+  pid_ = -1;
+  std::error_code ignored;
+  if (staged_ != path_) std::filesystem::remove(staged_, ignored);
 }
 
 std::string VideoEncoder::FfmpegSaid() const {
@@ -44,6 +81,8 @@ std::string VideoEncoder::FfmpegSaid() const {
   while (std::fgets(line, sizeof line, ffmpeg_errors_)) {
     std::string text = line;
     while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+    // The user gave path_; the staged name is ours.
+    ReplaceAll(text, staged_.string(), path_.string());
     if (!text.empty()) return text;
   }
   return "";
@@ -63,10 +102,11 @@ void VideoEncoder::Start(int width, int height) {
       std::to_string(width + width % 2) + "x" + std::to_string(height + height % 2);
   const std::string rate = std::to_string(fps_);
   std::vector<std::string> args = {
-      "ffmpeg",   "-hide_banner", "-loglevel",  "error",       "-y",      "-f",       "rawvideo",
-      "-pix_fmt", "rgb24",        "-s",         size,          "-r",      rate,       "-i",
-      "pipe:0",   "-an",          "-c:v",       "libx264",     "-preset", "veryfast", "-pix_fmt",
-      "yuv420p",  "-movflags",    "+faststart", path_.string()};
+      "ffmpeg",   "-hide_banner", "-loglevel", "error",      "-y",
+      "-f",       "rawvideo",     "-pix_fmt",  "rgb24",      "-s",
+      size,       "-r",           rate,        "-i",         "pipe:0",
+      "-an",      "-c:v",         "libx264",   "-preset",    "veryfast",
+      "-pix_fmt", "yuv420p",      "-movflags", "+faststart", staged_.string()};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -141,11 +181,19 @@ void VideoEncoder::Close() {
   pid_ = -1;
   const std::string said = FfmpegSaid();
   const bool failed = !said.empty() || !WIFEXITED(status) || WEXITSTATUS(status) != 0;
-  if (!failed) return;
-  // What ffmpeg left is no playable video: it goes, so that it is never taken for a result (a
-  // device such as /dev/full given as the path stays).
-  std::error_code ignored;
-  if (std::filesystem::is_regular_file(path_, ignored)) std::filesystem::remove(path_, ignored);
+  std::error_code error;
+  if (!failed) {
+    if (staged_ == path_) return;
+    std::filesystem::rename(staged_, path_, error);
+    if (!error) return;
+    std::error_code ignored;
+    std::filesystem::remove(staged_, ignored);
+    throw std::runtime_error(path_.string() +
+                             ": cannot move the finished video into place: " + error.message());
+  }
+  // What ffmpeg left is no playable video: it goes, so that it is never taken for a result, and
+  // an earlier file at the path stays (a device given as the path is written in place and stays).
+  if (staged_ != path_) std::filesystem::remove(staged_, error);
   if (!said.empty()) throw std::runtime_error(path_.string() + ": ffmpeg: " + said);
   throw std::runtime_error(path_.string() + ": ffmpeg failed (exit status " +
                            std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")");

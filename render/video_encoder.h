@@ -18,15 +18,16 @@ class VideoEncoder {
   // @throws std::invalid_argument when fps is not in [1, 240]; std::runtime_error naming `path`
   // when ffmpeg cannot be started.
   VideoEncoder(const std::filesystem::path& path, double fps);
-  // Finishes the file if Close was not called (errors then go to stderr).
+  // Finishes the file if Close was not called (errors then go to stderr); while an exception
+  // unwinds (the run failed) the unfinished video is dropped instead and an earlier file stays.
   ~VideoEncoder();
   VideoEncoder(const VideoEncoder&) = delete;
   VideoEncoder& operator=(const VideoEncoder&) = delete;
 
   // @throws std::runtime_error when the size changes or ffmpeg stopped reading.
   void AddFrame(const RgbImage& frame);
-  // Waits for ffmpeg. @throws std::runtime_error naming the path when it failed; the file it left
-  // is then removed.
+  // Waits for ffmpeg and renames its staged file into place. @throws std::runtime_error naming the
+  // path when it failed; the staged file is then removed and an earlier file at the path stays.
   void Close();
 
   long frames() const { return frames_; }
@@ -34,8 +35,12 @@ class VideoEncoder {
 
  private:
   void Start(int width, int height);
+  void Abandon();
 
   std::filesystem::path path_;
+  // ffmpeg writes DIR/STEM.partial-PID.EXT (the extension picks its container) and Close renames
+  // it to path_, so a failed video never replaces an earlier one; a device is written in place.
+  std::filesystem::path staged_;
   double fps_;
   int width_ = 0, height_ = 0;
   long frames_ = 0;

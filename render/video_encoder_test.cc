@@ -7,7 +7,9 @@
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <random>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -51,6 +53,72 @@ TEST(VideoEncoderTest, AVideoFfmpegCouldNotFinishIsAnErrorNamingItsReason) {
   EXPECT_NE(error.find("File too large"), std::string::npos) << error;
   EXPECT_EQ(error.find('\n'), std::string::npos) << error;
   EXPECT_FALSE(std::filesystem::exists(video)) << "ffmpeg's broken file was left behind";
+}
+
+// ffmpeg writes a staged name that Close renames into place: a failed video leaves an earlier file
+// at the path as it was (ffmpeg's -y used to overwrite it before failing), and a good one replaces
+// it. Either way nothing but v.mp4 is left in the folder.
+TEST(VideoEncoderTest, AFailedVideoKeepsTheEarlierFileAndAGoodOneReplacesIt) {
+  if (std::system("command -v ffmpeg > /dev/null") != 0) GTEST_SKIP() << "no ffmpeg";
+  const std::filesystem::path dir = testing::MakeTempDir("video_encoder_staged");
+  const std::filesystem::path video = dir / "v.mp4";
+  const std::string earlier = "an earlier video\n";
+  { std::ofstream(video, std::ios::binary) << earlier; }
+  std::mt19937 rng(5);
+  rlimit saved{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &saved), 0);
+  const auto previous_handler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit small = saved;
+  small.rlim_cur = 8192;
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
+  std::string error;
+  try {
+    VideoEncoder encoder(video, 10.0);
+    for (int i = 0; i < 30; ++i) encoder.AddFrame(NoiseFrame(rng));
+    encoder.Close();
+  } catch (const std::runtime_error& e) {
+    error = e.what();
+  }
+  setrlimit(RLIMIT_FSIZE, &saved);
+  std::signal(SIGXFSZ, previous_handler);
+  EXPECT_EQ(error.rfind(video.string() + ": ffmpeg", 0), 0u) << error;
+  EXPECT_NE(error.find("File too large"), std::string::npos) << error;
+  EXPECT_EQ(error.find(".partial-"), std::string::npos) << "the staged name is ours: " << error;
+  std::stringstream kept;
+  kept << std::ifstream(video, std::ios::binary).rdbuf();
+  EXPECT_EQ(kept.str(), earlier);
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    EXPECT_EQ(entry.path(), video) << "left behind";
+  }
+  {
+    VideoEncoder encoder(video, 10.0);
+    for (int i = 0; i < 3; ++i) encoder.AddFrame(NoiseFrame(rng));
+    encoder.Close();
+  }
+  EXPECT_GT(std::filesystem::file_size(video), earlier.size());
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    EXPECT_EQ(entry.path(), video) << "left behind";
+  }
+}
+
+// A video unfinished when an exception unwinds (the run failed) is dropped, not finished into a
+// short file that looks like the run's video; an earlier file stays.
+TEST(VideoEncoderTest, AVideoAbandonedByAnExceptionLeavesTheEarlierFile) {
+  if (std::system("command -v ffmpeg > /dev/null") != 0) GTEST_SKIP() << "no ffmpeg";
+  const std::filesystem::path dir = testing::MakeTempDir("video_encoder_abandoned");
+  const std::filesystem::path video = dir / "v.mp4";
+  { std::ofstream(video, std::ios::binary) << "earlier"; }
+  std::mt19937 rng(7);
+  try {
+    VideoEncoder encoder(video, 10.0);
+    for (int i = 0; i < 3; ++i) encoder.AddFrame(NoiseFrame(rng));
+    throw std::runtime_error("the run failed");
+  } catch (const std::runtime_error&) {
+  }
+  EXPECT_EQ(std::filesystem::file_size(video), 7u);
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    EXPECT_EQ(entry.path(), video) << "left behind";
+  }
 }
 
 }  // namespace

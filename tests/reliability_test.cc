@@ -348,6 +348,28 @@ TEST_F(ReliabilityTest, ReplayOfALogWithoutScansIsRefusedNamingTheFile) {
                 {"logs: not a regular file (a folder or a device?)"});
   ExpectOneLine(RunPlywood("replay " + (dir / "absent.log").string(), dir),
                 {"absent.log: no such log file"});
+  // audit5: a dangling symbolic link or a loop read "no such log file" (or "no such experiment
+  // file"), though the name is there: the line now says what it is.
+  fs::create_symlink(dir / "gone.log", dir / "dangling.log");
+  fs::create_symlink(dir / "loop_b", dir / "loop_a");
+  fs::create_symlink(dir / "loop_a", dir / "loop_b");
+  for (const std::string command : {"replay ", "run "}) {
+    ExpectOneLine(RunPlywood(command + (dir / "dangling.log").string(), dir),
+                  {"dangling.log: a symbolic link to " + (dir / "gone.log").string() +
+                   ", which does not exist"});
+    ExpectOneLine(RunPlywood(command + (dir / "loop_a").string(), dir),
+                  {"loop_a: Too many levels of symbolic links"});
+  }
+  // audit5: a path over PATH_MAX reaching a std::filesystem call without an error_code read
+  // "plywood: error: filesystem error: status: File name too long [PATH]", exit 1.
+  std::string too_long = "d";
+  while (too_long.size() < 5000) too_long += "/" + std::string(200, 'd');
+  for (const std::string& args :
+       {"view " + too_long, "train sonar-net --rooms 1 --test-rooms 1 --out " + too_long + "/n"}) {
+    const CliResult result = RunPlywood(args, dir);
+    ExpectOneLine(result, {"File name too long"});
+    EXPECT_EQ(result.err.find("filesystem error"), std::string::npos) << result.err;
+  }
 }
 
 TEST_F(ReliabilityTest, NanOrNegativeRangesInALogAreRefusedWithTheirLine) {

@@ -244,6 +244,16 @@ TEST(ScoreCliTest, OutNeverOverwritesTheRunOrTheScoredFile) {
   const auto folder = RunPlywood(
       "score trajectory " + RunDir().string() + " " + tum.string() + " --out " + dir.string(), dir);
   EXPECT_EQ(folder.exit_code, 2) << folder.err;
+  // A symbolic-link loop as --out: one line naming the flag (was an uncaught filesystem_error,
+  // "plywood: error: filesystem error: status: Too many levels of symbolic links", exit 1).
+  fs::create_symlink(dir / "loop_b", dir / "loop_a");
+  fs::create_symlink(dir / "loop_a", dir / "loop_b");
+  const auto loop = RunPlywood("score trajectory " + RunDir().string() + " " + tum.string() +
+                                   " --out " + (dir / "loop_a").string(),
+                               dir);
+  EXPECT_EQ(loop.exit_code, 2) << loop.err;
+  EXPECT_EQ(loop.err, "plywood: " + (dir / "loop_a").string() +
+                          ": --out: cannot be resolved: Too many levels of symbolic links\n");
   EXPECT_EQ(Slurp(RunDir() / "metrics.json"), metrics_before);
   EXPECT_EQ(Slurp(tum), tum_before);
 }

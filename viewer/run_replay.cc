@@ -19,6 +19,7 @@
 #include "sim/sensors/sonar_sensor.h"
 #include "viewer/run_content.h"
 #include "viewer/run_maps_file.h"
+#include "viewer/run_world_check.h"
 #include "viewer/scene_overlays.h"
 
 #if PLYWOOD_HAS_IMGUI
@@ -71,6 +72,9 @@ RunReplayData LoadRunReplay(const std::filesystem::path& run_dir) {
   sim::RequireFinishedRun(run_dir);
   RunReplayData data;
   data.config = eval::LoadRunConfig(run_dir, "plywood view");
+  data.config_yaml = run_dir / "config.yaml";
+  data.walls = eval::ReadWallsCsv(
+      eval::RunFile(run_dir, "walls.csv", "the run's walls, to check its world is unchanged"));
   const std::filesystem::path trajectory =
       eval::RunFile(run_dir, "trajectory.csv", "the run's trajectory");
   data.trajectories = eval::ReadTrajectoryFile(trajectory, "truth");
@@ -119,6 +123,7 @@ ReplayViewer::ReplayViewer(RunReplayData data, const WindowOptions& window)
   options.spawn = data_.trajectories.front().poses.front().pose;
   options.timestep_s = data_.config.physics.timestep_s;
   scene_ = std::make_unique<sim::Scene>(options);
+  RequireWorldAsTheRunSawIt(*scene_, data_.config, data_.walls, data_.config_yaml);
   for (const std::string& name : sim::SonarSensor::DefaultSiteNames()) {
     const std::optional<int> site = scene_->FindSite(name);
     sonar_X_RS_.push_back(site ? scene_->SitePoseInRobot(*site) : msgs::Pose2D{});

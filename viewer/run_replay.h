@@ -9,6 +9,7 @@
 #include "msgs/laser_scan.h"
 #include "msgs/range_ring.h"
 #include "sim/config/experiment_config.h"
+#include "sim/world/ground_truth_walls.h"
 #include "sim/world/scene.h"
 #include "viewer/frame_content.h"
 #include "viewer/view_controls.h"
@@ -31,6 +32,9 @@ struct RunReplayData {
   // The final maps, when the run made them (cognitive_map.json, geometric_map.json).
   std::optional<MapView> map;
   std::optional<GeometricMapView> geometric_map;
+  // walls.csv: the box faces the run's world had, to tell a world file changed since the run.
+  sim::GroundTruthWalls walls;
+  std::filesystem::path config_yaml;
 
   double start_s() const;
   double end_s() const;
@@ -52,7 +56,8 @@ msgs::Pose2D PoseAt(const eval::NamedTrajectory& trajectory, double t_s);
 // timeline slider (Dear ImGui) or , / . seek.
 class ReplayViewer {
  public:
-  // @throws std::runtime_error when no window can be opened; ConfigError for a bad world.
+  // @throws std::runtime_error when no window can be opened; ConfigError for a bad world or one
+  // changed since the run (RequireWorldAsTheRunSawIt).
   ReplayViewer(RunReplayData data, const WindowOptions& window);
   ~ReplayViewer();
 

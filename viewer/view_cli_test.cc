@@ -104,6 +104,14 @@ TEST_F(ViewCliTest, FlagsThatCannotBeHonouredAreRefusedBeforeAnythingRuns) {
        "view: --screenshot: " + dir.string() + " is a folder"},
       {live + " --screenshot " + (dir / "no_folder" / "x.png").string(),
        "view: --screenshot: " + (dir / "no_folder" / "x.png").string() + ": no folder"},
+      {run.string() + " --size 640x480x3 --screenshot x.png",
+       "--size: expected WIDTHxHEIGHT, got '640x480x3'"},
+      {run.string() + " --size ' 640x480' --screenshot x.png",
+       "--size: expected WIDTHxHEIGHT, got ' 640x480'"},
+      {run.string() + " --size 99999999999x100 --screenshot x.png",
+       "--size: width_px: must be in [64, 8192], got 99999999999"},
+      {run.string() + " --size 640x-480 --screenshot x.png",
+       "--size: height_px: must be in [64, 8192], got -480"},
   };
   for (const auto& [args, culprit] : cases) {
     SCOPED_TRACE(args);

@@ -11,7 +11,12 @@ namespace plywood::eval {
 void WriteScoreJson(const ScoreReport& report, const std::filesystem::path& out,
                     const std::filesystem::path& run_dir, const std::filesystem::path& scored) {
   namespace fs = std::filesystem;
-  const fs::path target = fs::weakly_canonical(fs::absolute(out));
+  // The error_code form: a symbolic-link loop as --out threw filesystem_error, a line naming no
+  // flag and exit 1.
+  std::error_code error;
+  const fs::path target = fs::weakly_canonical(fs::absolute(out), error);
+  if (error)
+    throw sim::ConfigError(out.string(), "--out", "cannot be resolved: " + error.message());
   const fs::path run = fs::weakly_canonical(fs::absolute(run_dir));
   const auto [run_end, target_it] =
       std::mismatch(run.begin(), run.end(), target.begin(), target.end());

@@ -290,7 +290,8 @@ ExperimentConfig LoadExperimentConfig(const std::filesystem::path& yaml_path,
                                       const std::vector<std::string>& overrides) {
   std::error_code error;
   if (!std::filesystem::exists(yaml_path, error)) {
-    throw ConfigError(yaml_path.string(), "", "no such experiment file");
+    throw ConfigError(yaml_path.string(), "",
+                      perception::WhyNotARegularFile(yaml_path, "experiment file"));
   }
   if (!std::filesystem::is_regular_file(yaml_path, error)) {
     throw ConfigError(yaml_path.string(), "", "not a regular file (a folder?)");

@@ -66,9 +66,17 @@ fs::path FirstForeignEntry(const fs::path& dir) {
 }
 
 // `path` absolute and without a trailing '/' ("runs/x/" and "runs/x" are one target).
+// A symbolic link is followed to the folder it names: the staging folder goes beside that folder
+// (on its file system), and the finished run is renamed onto it, not onto the link (which failed
+// with "Not a directory" after the whole run).
 fs::path Normalised(const fs::path& path) {
   fs::path p = fs::absolute(path).lexically_normal();
   if (!p.has_filename() && p.has_parent_path()) p = p.parent_path();
+  std::error_code error;
+  if (fs::is_symlink(p, error)) {
+    const fs::path resolved = fs::canonical(p, error);
+    if (!error) p = resolved;
+  }
   return p;
 }
 
@@ -159,6 +167,12 @@ StagedRunDirectory::StagedRunDirectory(const fs::path& target, bool force)
     : given_(target), target_(Normalised(target)) {
   std::error_code error;
   const fs::file_status status = fs::status(target_, error);
+  if (!fs::exists(status) && fs::is_symlink(target_, error)) {
+    throw ConfigError(given_.string(), "",
+                      "is a symbolic link to " + fs::read_symlink(target_, error).string() +
+                          ", which does not exist (or links round in a loop); make that folder "
+                          "or choose another --out");
+  }
   if (!fs::exists(status)) {
     // Made now, so an unwritable place is refused before anything is simulated.
     fs::create_directories(target_, error);

@@ -136,6 +136,37 @@ TEST(RunDirectoryTest, OtherFilesAreNeverDeletedEvenWithForce) {
   EXPECT_TRUE(fs::exists(dir / "thesis.tex"));
 }
 
+// A symbolic link given as the target is followed: the run lands in the folder it names (a rename
+// onto the link itself failed after the whole run). A dangling link or a loop is named at once.
+TEST(RunDirectoryTest, ASymbolicLinkTargetIsFollowedAndADanglingOneNamed) {
+  const fs::path dir = MakeTempDir("run_directory_symlink");
+  fs::create_directory(dir / "real");
+  fs::create_directory_symlink(dir / "real", dir / "link");
+  {
+    StagedRunDirectory staged(dir / "link", false);
+    WriteSmallRun(staged.staging(), "linked");
+    staged.Commit();
+  }
+  EXPECT_TRUE(fs::is_symlink(dir / "link"));
+  EXPECT_TRUE(fs::exists(dir / "real" / "config.yaml"));
+  fs::create_directory_symlink(dir / "nowhere", dir / "dangling");
+  fs::create_directory_symlink(dir / "loop_b", dir / "loop_a");
+  fs::create_directory_symlink(dir / "loop_a", dir / "loop_b");
+  for (const char* name : {"dangling", "loop_a"}) {
+    try {
+      StagedRunDirectory staged(dir / name, false);
+      ADD_FAILURE() << name << " accepted";
+    } catch (const ConfigError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind((dir / name).string() + ": is a symbolic link to ", 0),
+                0u)
+          << e.what();
+    }
+  }
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    EXPECT_EQ(entry.path().string().find(".partial-"), std::string::npos) << entry.path();
+  }
+}
+
 TEST(RunDirectoryTest, PartialOutputOfAKilledRunIsNamedAndThenCleanedUp) {
   const fs::path dir = MakeTempDir("run_directory_killed");
   // What `kill -9` leaves: the empty target and the staging folder of a process that is gone.

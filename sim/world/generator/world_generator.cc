@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <system_error>
 
-#include "sim/runner/file_writer.h"
+#include "sim/runner/text_file.h"
 #include "sim/world/generator/robot_reach.h"
 #include "sim/world/generator/spawn_placer.h"
 #include "sim/world/generator/world_check.h"
@@ -18,11 +18,11 @@ namespace {
 
 constexpr int kMaxAttempts = 1000;
 
+// Staged and renamed into place: a failed write (a full disk) never leaves a cut world that a
+// later run or a sweep's glob would load.
 void WriteText(const std::filesystem::path& path, const std::string& text) {
   try {
-    FileWriter out(path);
-    out.out() << text;
-    out.Close();
+    WriteTextFile(path, text);
   } catch (const std::runtime_error& e) {
     throw std::invalid_argument(std::string("out: ") + e.what());
   }
@@ -117,24 +117,36 @@ std::vector<GeneratedWorldFile> GenerateWorlds(const GenerateWorldsOptions& opti
   RemoveEarlierGeneration(options.out_dir);
   std::vector<GeneratedWorldFile> files;
   std::string index = kWorldIndexHeader;
-  for (int i = 0; i < options.count; ++i) {
-    const GeneratedWorld world = GenerateWorld(options.family, options.seed, i);
-    GeneratedWorldFile file;
-    file.mjcf = options.out_dir / (world.Name() + ".xml");
-    file.sidecar = options.out_dir / (world.Name() + ".json");
-    file.summary = world.summary;
-    WriteText(file.mjcf, WorldMjcf(world));
-    WriteText(file.sidecar, WorldSidecarJson(world));
-    if (options.check_with_mujoco) {
-      const std::vector<std::string> defects = CheckWrittenWorld(file.mjcf, world, LargestRobot());
-      if (!defects.empty()) {
-        throw std::runtime_error("world generator defect: " + defects.front());
+  try {
+    for (int i = 0; i < options.count; ++i) {
+      const GeneratedWorld world = GenerateWorld(options.family, options.seed, i);
+      GeneratedWorldFile file;
+      file.mjcf = options.out_dir / (world.Name() + ".xml");
+      file.sidecar = options.out_dir / (world.Name() + ".json");
+      file.summary = world.summary;
+      files.push_back(file);
+      WriteText(file.mjcf, WorldMjcf(world));
+      WriteText(file.sidecar, WorldSidecarJson(world));
+      if (options.check_with_mujoco) {
+        const std::vector<std::string> defects =
+            CheckWrittenWorld(file.mjcf, world, LargestRobot());
+        if (!defects.empty()) {
+          throw std::runtime_error("world generator defect: " + defects.front());
+        }
       }
+      index += WorldIndexRow(world);
     }
-    index += WorldIndexRow(world);
-    files.push_back(file);
+    WriteText(options.out_dir / "index.csv", index);
+  } catch (...) {
+    // A generation cut short (a full disk) is removed as a whole: a few worlds without index.csv
+    // would look like a smaller generation to a `*.xml` glob and block the next run's folder.
+    std::error_code ignored;
+    for (const GeneratedWorldFile& file : files) {
+      std::filesystem::remove(file.mjcf, ignored);
+      std::filesystem::remove(file.sidecar, ignored);
+    }
+    throw;
   }
-  WriteText(options.out_dir / "index.csv", index);
   return files;
 }
 

@@ -4,9 +4,13 @@
 #include "sim/world/generator/world_generator.h"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 
+#include <algorithm>
+#include <csignal>
 #include <fstream>
 #include <sstream>
+#include <string>
 
 #include "sim/world/generator/robot_reach.h"
 #include "sim/world/generator/world_families.h"
@@ -108,6 +112,50 @@ TEST(WorldGeneratorTest, FewerWorldsArePrefixOfMore) {
   EXPECT_EQ(more_index.substr(0, few_index.size()), few_index);
   EXPECT_EQ(std::count(more_index.begin(), more_index.end(), '\n'), 6);
   EXPECT_EQ(more_index.substr(0, more_index.find('\n') + 1), kWorldIndexHeader);
+}
+
+// A failed write (here a file-size limit, as a full disk) names the file and leaves no cut world
+// (each file is staged and renamed into place) and no part of the generation (a few worlds without
+// index.csv): a later sweep's `*.xml` glob loads nothing half-made and a rerun may use the folder.
+TEST(WorldGeneratorTest, AFailedWriteLeavesNoCutWorld) {
+  const fs::path dir = testing::MakeTempDir("worldgen_full");
+  GenerateWorldsOptions options;
+  options.family = "office";
+  options.seed = 7;
+  options.out_dir = dir;
+  // A limit with room for worlds 0 .. N-1 and not for world N's MJCF: the generation fails part
+  // way.
+  std::size_t room = 0;
+  for (int i = 0; i < 50; ++i) {
+    const GeneratedWorld world = GenerateWorld("office", 7, i);
+    if (i > 0 && WorldMjcf(world).size() > room) {
+      options.count = i + 1;
+      break;
+    }
+    room = std::max({room, WorldMjcf(world).size(), WorldSidecarJson(world).size()});
+  }
+  ASSERT_GT(options.count, 1);
+  rlimit saved{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &saved), 0);
+  const auto previous_handler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit small = saved;
+  small.rlim_cur = room;
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
+  std::string error;
+  try {
+    GenerateWorlds(options);
+  } catch (const std::invalid_argument& e) {
+    error = e.what();
+  }
+  setrlimit(RLIMIT_FSIZE, &saved);
+  std::signal(SIGXFSZ, previous_handler);
+  EXPECT_EQ(error.rfind("out: " + (dir / "office_s7_000").string(), 0), 0u) << error;
+  EXPECT_NE(error.find(".xml: write failed: File too large"), std::string::npos) << error;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    ADD_FAILURE() << entry.path().filename().string() << " left behind";
+  }
+  EXPECT_EQ(GenerateWorlds(options).size(), static_cast<std::size_t>(options.count))
+      << "the folder is usable again";
 }
 
 void ExpectRejected(const GenerateWorldsOptions& options, const std::string& field) {
