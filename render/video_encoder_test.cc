@@ -25,20 +25,15 @@ RgbImage NoiseFrame(std::mt19937& rng) {
   return frame;
 }
 
-// ffmpeg exits 0 after "Error writing trailer of v.mp4: File too large" (or "No space left on
-// device"), leaving a broken 8 kB file: its error line must fail Close, not pass unnoticed, and
-// the broken file must go, so that no unplayable v.mp4 looks like a result. The
-// disk is made full by a file-size limit of 8 kB, with SIGXFSZ ignored as plywood's main() does.
-TEST(VideoEncoderTest, AVideoFfmpegCouldNotFinishIsAnErrorNamingItsReason) {
-  if (std::system("command -v ffmpeg > /dev/null") != 0) GTEST_SKIP() << "no ffmpeg";
-  const std::filesystem::path video = testing::MakeTempDir("video_encoder") / "v.mp4";
-  std::mt19937 rng(3);
+// Encodes 30 noise frames to `video` under a file-size limit of 8 kB (SIGXFSZ ignored, as plywood's
+// main() does), so ffmpeg runs out of room; returns the error Close or AddFrame threw ("" if none).
+std::string EncodeOntoAFullDisk(const std::filesystem::path& video, std::mt19937& rng) {
   rlimit saved{};
-  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &saved), 0);
+  if (getrlimit(RLIMIT_FSIZE, &saved) != 0) return "getrlimit failed";
   const auto previous_handler = std::signal(SIGXFSZ, SIG_IGN);
   rlimit small = saved;
   small.rlim_cur = 8192;
-  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
+  if (setrlimit(RLIMIT_FSIZE, &small) != 0) return "setrlimit failed";
   std::string error;
   try {
     VideoEncoder encoder(video, 10.0);
@@ -49,6 +44,18 @@ TEST(VideoEncoderTest, AVideoFfmpegCouldNotFinishIsAnErrorNamingItsReason) {
   }
   setrlimit(RLIMIT_FSIZE, &saved);
   std::signal(SIGXFSZ, previous_handler);
+  return error;
+}
+
+// ffmpeg exits 0 after "Error writing trailer of v.mp4: File too large" (or "No space left on
+// device"), leaving a broken 8 kB file: its error line must fail Close, not pass unnoticed, and
+// the broken file must go, so that no unplayable v.mp4 looks like a result. The
+// disk is made full by a file-size limit of 8 kB, with SIGXFSZ ignored as plywood's main() does.
+TEST(VideoEncoderTest, AVideoFfmpegCouldNotFinishIsAnErrorNamingItsReason) {
+  if (std::system("command -v ffmpeg > /dev/null") != 0) GTEST_SKIP() << "no ffmpeg";
+  const std::filesystem::path video = testing::MakeTempDir("video_encoder") / "v.mp4";
+  std::mt19937 rng(3);
+  const std::string error = EncodeOntoAFullDisk(video, rng);
   EXPECT_EQ(error.rfind(video.string() + ": ffmpeg", 0), 0u) << error;
   EXPECT_NE(error.find("File too large"), std::string::npos) << error;
   EXPECT_EQ(error.find('\n'), std::string::npos) << error;
@@ -65,22 +72,7 @@ TEST(VideoEncoderTest, AFailedVideoKeepsTheEarlierFileAndAGoodOneReplacesIt) {
   const std::string earlier = "an earlier video\n";
   { std::ofstream(video, std::ios::binary) << earlier; }
   std::mt19937 rng(5);
-  rlimit saved{};
-  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &saved), 0);
-  const auto previous_handler = std::signal(SIGXFSZ, SIG_IGN);
-  rlimit small = saved;
-  small.rlim_cur = 8192;
-  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
-  std::string error;
-  try {
-    VideoEncoder encoder(video, 10.0);
-    for (int i = 0; i < 30; ++i) encoder.AddFrame(NoiseFrame(rng));
-    encoder.Close();
-  } catch (const std::runtime_error& e) {
-    error = e.what();
-  }
-  setrlimit(RLIMIT_FSIZE, &saved);
-  std::signal(SIGXFSZ, previous_handler);
+  const std::string error = EncodeOntoAFullDisk(video, rng);
   EXPECT_EQ(error.rfind(video.string() + ": ffmpeg", 0), 0u) << error;
   EXPECT_NE(error.find("File too large"), std::string::npos) << error;
   EXPECT_EQ(error.find(".partial-"), std::string::npos) << "the staged name is ours: " << error;
