@@ -281,6 +281,9 @@ void CognitiveMapOptions::Validate() const {
   if (!(obstacle_split_saving >= 0.0 && obstacle_split_saving <= 1.0))
     throw std::invalid_argument("obstacle_split_saving: must be in [0, 1]");
   if (beam_free_min_passes < 0) throw std::invalid_argument("beam_free_min_passes: must be >= 0");
+  if (!(std::isfinite(obstacle_peel_net_free_clearance_m) &&
+        obstacle_peel_net_free_clearance_m >= 0.0))
+    throw std::invalid_argument("obstacle_peel_net_free_clearance_m: must be a finite number >= 0");
 }
 
 CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& inside,
@@ -315,8 +318,29 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
   // the reported map only, not the one the robot plans on.
   const bool peel_free =
       options.obstacle_peel_free && beam_free != nullptr && options.beam_free_min_passes > 0;
+  // The network's free cells with no occupied cell within the clearance (none when it is 0).
+  std::vector<char> net_free_clear(occ.size(), 0);
+  if (peel_free && options.obstacle_peel_net_free_clearance_m > 0.0) {
+    const int r =
+        static_cast<int>(std::ceil(options.obstacle_peel_net_free_clearance_m / res - 1e-9));
+    std::vector<char> near_occ(occ.size(), 0);
+    for (int iy = 0; iy < H; ++iy)
+      for (int ix = 0; ix < W; ++ix) {
+        if (!is_occ(ix, iy)) continue;
+        for (int y = std::max(0, iy - r); y <= std::min(H - 1, iy + r); ++y)
+          for (int x = std::max(0, ix - r); x <= std::min(W - 1, ix + r); ++x)
+            near_occ[static_cast<std::size_t>(y) * W + x] = 1;
+      }
+    for (int iy = 0; iy < H; ++iy)
+      for (int ix = 0; ix < W; ++ix) {
+        const std::size_t i = static_cast<std::size_t>(iy) * W + ix;
+        net_free_clear[i] = grid.Probability(ix, iy) < options.eps && near_occ[i] == 0;
+      }
+  }
   auto is_axis_free = [&](int ix, int iy) {
-    return grid.Contains(ix, iy) && axis_free[static_cast<std::size_t>(iy) * W + ix] != 0;
+    if (!grid.Contains(ix, iy)) return false;
+    const std::size_t i = static_cast<std::size_t>(iy) * W + ix;
+    return axis_free[i] != 0 || net_free_clear[i] != 0;
   };
 
   Eigen::Vector2i c0 = grid.CellAt(inside);

@@ -59,8 +59,12 @@ struct CognitiveMapOptions {
   // outermost row or column holding more cells the axes passed (>= beam_free_min_passes) than
   // cells of the piece, and again, so a rectangle does not span space the axes heard free beside
   // its faces (an L's notch the network painted); the cells given up form pieces of their own.
-  // The network's free cells (P < eps) do not count: it paints them inside a box's face too.
   bool obstacle_peel_free = true;
+  // The peel counts the network's free cells (P < eps) too where no occupied cell (P > 1 - eps)
+  // lies within this distance: the network paints cells free inside a box's face, beside its
+  // echoes; like the axes (BeamFreeOptions::stop_short_m) a free cell must lie the range noise
+  // from any echo. It lets the peel free what the network saw and no axis passed. 0: axes only.
+  double obstacle_peel_net_free_clearance_m = 0.05;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
 };

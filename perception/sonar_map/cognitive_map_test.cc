@@ -596,6 +596,38 @@ TEST(CognitiveMapTest, AnLsNotchTheAxesHeardFreeIsNoPartOfItsRectangle) {
   EXPECT_EQ(label_at(planning, notch), Label::kObstacle);
 }
 
+TEST(CognitiveMapTest, AnLsNotchTheNetworkSawFreeAwayFromEchoesIsPeeledWithoutAnyAxis) {
+  // The L of the test above, its notch (x 1.80-2.50, y 1.30-1.80) free in the network's grid but
+  // for one column of corner echoes (x 2.20-2.25) up from the long arm: with that column no cut
+  // saves a quarter of the extent, and no axis passed the notch, so only the network's free cells
+  // can say the notch is no part of the obstacle.
+  LogOddsGrid grid = Room({{1.50, 1.00, 2.50, 1.30}, {1.50, 1.30, 1.80, 1.80}});
+  for (int iy = 26; iy <= 35; ++iy)
+    for (int k = 0; k < 6; ++k) grid.Add(44, iy, 0.98);
+  const BeamFreeGrid no_axes = Beams({}, 0.0, 1.0);
+  auto label_at = [](const CognitiveMap& map, const Eigen::Vector2d& p) {
+    const int k = map.partitions.Find(p);
+    EXPECT_GE(k, 0) << p.transpose();
+    return k >= 0 ? map.partitions.partitions()[k].label : Label::kFree;
+  };
+  const Eigen::Vector2d notch_east{2.40, 1.55}, long_arm_east{2.40, 1.15};
+  CognitiveMapOptions axes_only;
+  axes_only.obstacle_peel_net_free_clearance_m = 0.0;
+  const CognitiveMap before = BuildCognitiveMap(grid, kInside, axes_only, &no_axes);
+  ASSERT_EQ(before.obstacles.size(), 1u);
+  ExpectRectNear(before.obstacles[0], {1.50, 1.00, 2.50, 1.80});
+  CognitiveMapOptions with_net;
+  with_net.obstacle_peel_net_free_clearance_m = 0.05;
+  const CognitiveMap after = BuildCognitiveMap(grid, kInside, with_net, &no_axes);
+  EXPECT_EQ(label_at(before, notch_east), Label::kObstacle);
+  EXPECT_EQ(label_at(after, notch_east), Label::kFree);
+  // The long arm's east end, peeled off with the notch's columns, is an obstacle of its own.
+  EXPECT_EQ(label_at(after, long_arm_east), Label::kObstacle);
+  // The free cells beside the echoes do not count: the column next to the echoes stays in.
+  EXPECT_EQ(label_at(after, {2.275, 1.55}), Label::kObstacle);
+  ExpectTilesTheRoom(after);
+}
+
 TEST(CognitiveMapTest, SidesHeardHeadOnByTheAxesArePlacedAtTheirEchoesAndNotSnapped) {
   // Box A's faces are heard on cell edges by the network, but A truly ends at x = 1.58 and the
   // room's east wall at x = 3.57 (2-3 cm inside cells the grid shows free). Box B's north side
@@ -664,6 +696,12 @@ TEST(CognitiveMapTest, InvalidJoinDistanceOrFillThrowsNamingTheField) {
     CognitiveMapOptions options;
     options.obstacle_split_saving = saving;
     ExpectThrowsNaming(options, "obstacle_split_saving");
+  }
+  for (const double clearance :
+       {-0.05, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    CognitiveMapOptions options;
+    options.obstacle_peel_net_free_clearance_m = clearance;
+    ExpectThrowsNaming(options, "obstacle_peel_net_free_clearance_m");
   }
   // BuildCognitiveMap validates too.
   CognitiveMapOptions options;
