@@ -1,9 +1,7 @@
 #include "render/video_encoder.h"
 
 #include <gtest/gtest.h>
-#include <sys/resource.h>
 
-#include <csignal>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -13,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "tests/support/file_size_limit.h"
 #include "tests/support/mujoco_test_support.h"
 
 namespace plywood::render {
@@ -28,23 +27,16 @@ RgbImage NoiseFrame(std::mt19937& rng) {
 // Encodes 30 noise frames to `video` under a file-size limit of 8 kB (SIGXFSZ ignored, as plywood's
 // main() does), so ffmpeg runs out of room; returns the error Close or AddFrame threw ("" if none).
 std::string EncodeOntoAFullDisk(const std::filesystem::path& video, std::mt19937& rng) {
-  rlimit saved{};
-  if (getrlimit(RLIMIT_FSIZE, &saved) != 0) return "getrlimit failed";
-  const auto previous_handler = std::signal(SIGXFSZ, SIG_IGN);
-  rlimit small = saved;
-  small.rlim_cur = 8192;
-  if (setrlimit(RLIMIT_FSIZE, &small) != 0) return "setrlimit failed";
-  std::string error;
+  const testing::FileSizeLimit limit(8192);
+  if (!limit.active()) return "the file-size limit could not be set";
   try {
     VideoEncoder encoder(video, 10.0);
     for (int i = 0; i < 30; ++i) encoder.AddFrame(NoiseFrame(rng));
     encoder.Close();
   } catch (const std::runtime_error& e) {
-    error = e.what();
+    return e.what();
   }
-  setrlimit(RLIMIT_FSIZE, &saved);
-  std::signal(SIGXFSZ, previous_handler);
-  return error;
+  return "";
 }
 
 // ffmpeg exits 0 after "Error writing trailer of v.mp4: File too large" (or "No space left on

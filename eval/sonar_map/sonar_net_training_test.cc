@@ -1,13 +1,12 @@
 #include "eval/sonar_map/sonar_net_training.h"
 
 #include <gtest/gtest.h>
-#include <sys/resource.h>
 
-#include <csignal>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
+#include "tests/support/file_size_limit.h"
 #include "tests/support/mujoco_test_support.h"
 
 namespace plywood::eval {
@@ -53,23 +52,17 @@ TEST(SonarNetTrainingTest, AFailedSaveLeavesTheEarlierWeightsAsTheyWere) {
   const fs::path dir = testing::MakeTempDir("sonar_net_training_failed_save");
   const fs::path out = dir / "net.txt";
   { std::ofstream(out) << "earlier weights\n"; }
-  rlimit saved{};
-  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &saved), 0);
-  const auto previous_handler = std::signal(SIGXFSZ, SIG_IGN);
-  rlimit small = saved;
-  // A net of 2 x 64 units writes about 70 kB of weights; the training rooms are under 2 kB each.
-  small.rlim_cur = 16 * 1024;
   SonarNetTrainingOptions options = Tiny(out);
   options.train.hidden = {64, 64};
-  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
   std::string error;
   try {
+    // A net of 2 x 64 units writes about 70 kB of weights; the training rooms are under 2 kB each.
+    const testing::FileSizeLimit limit(16 * 1024);
+    ASSERT_TRUE(limit.active());
     TrainSonarNet(options);
   } catch (const std::runtime_error& e) {
     error = e.what();
   }
-  setrlimit(RLIMIT_FSIZE, &saved);
-  std::signal(SIGXFSZ, previous_handler);
   EXPECT_EQ(error, out.string() + ": write failed: File too large");
   EXPECT_EQ(Slurp(out), "earlier weights\n");
   for (const auto& entry : fs::directory_iterator(dir)) EXPECT_EQ(entry.path(), out);

@@ -1,9 +1,7 @@
 #include "sim/runner/file_writer.h"
 
 #include <gtest/gtest.h>
-#include <sys/resource.h>
 
-#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -11,6 +9,7 @@
 #include <string>
 
 #include "sim/runner/text_file.h"
+#include "tests/support/file_size_limit.h"
 #include "tests/support/mujoco_test_support.h"
 
 namespace plywood::sim {
@@ -49,15 +48,12 @@ TEST(FileWriterTest, AFullDiskNamesTheFileAndTheReason) {
 
 TEST(FileWriterTest, AFileSizeLimitNamesTheFileAndTheReason) {
   const fs::path path = testing::MakeTempDir("file_writer_limit") / "big.txt";
-  rlimit saved{};
-  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &saved), 0);
-  const auto previous_handler = std::signal(SIGXFSZ, SIG_IGN);
-  rlimit small = saved;
-  small.rlim_cur = 4096;
-  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
-  const std::string error = WriteAndClose(path, std::string(100000, 'x'));
-  setrlimit(RLIMIT_FSIZE, &saved);
-  std::signal(SIGXFSZ, previous_handler);
+  std::string error;
+  {
+    const testing::FileSizeLimit limit(4096);
+    ASSERT_TRUE(limit.active());
+    error = WriteAndClose(path, std::string(100000, 'x'));
+  }
   EXPECT_EQ(error, path.string() + ": write failed: File too large");
 }
 
@@ -71,20 +67,14 @@ TEST(FileWriterTest, AFailedWriteTextFileKeepsTheEarlierFile) {
   const fs::path dir = testing::MakeTempDir("file_writer_staged");
   const fs::path path = dir / "weights.txt";
   WriteTextFile(path, "earlier\n");
-  rlimit saved{};
-  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &saved), 0);
-  const auto previous_handler = std::signal(SIGXFSZ, SIG_IGN);
-  rlimit small = saved;
-  small.rlim_cur = 4096;
-  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
   std::string error;
   try {
+    const testing::FileSizeLimit limit(4096);
+    ASSERT_TRUE(limit.active());
     WriteTextFile(path, std::string(100000, 'x'));
   } catch (const std::runtime_error& e) {
     error = e.what();
   }
-  setrlimit(RLIMIT_FSIZE, &saved);
-  std::signal(SIGXFSZ, previous_handler);
   EXPECT_EQ(error, path.string() + ": write failed: File too large");
   EXPECT_EQ(ReadTextFile(path), "earlier\n");
   for (const auto& entry : fs::directory_iterator(dir)) {

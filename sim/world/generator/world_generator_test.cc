@@ -4,10 +4,8 @@
 #include "sim/world/generator/world_generator.h"
 
 #include <gtest/gtest.h>
-#include <sys/resource.h>
 
 #include <algorithm>
-#include <csignal>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -16,6 +14,7 @@
 #include "sim/world/generator/world_families.h"
 #include "sim/world/generator/world_mjcf_writer.h"
 #include "sim/world/generator/world_rng.h"
+#include "tests/support/file_size_limit.h"
 #include "tests/support/mujoco_test_support.h"
 
 namespace plywood::sim::worldgen {
@@ -135,20 +134,14 @@ TEST(WorldGeneratorTest, AFailedWriteLeavesNoCutWorld) {
     room = std::max({room, WorldMjcf(world).size(), WorldSidecarJson(world).size()});
   }
   ASSERT_GT(options.count, 1);
-  rlimit saved{};
-  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &saved), 0);
-  const auto previous_handler = std::signal(SIGXFSZ, SIG_IGN);
-  rlimit small = saved;
-  small.rlim_cur = room;
-  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
   std::string error;
   try {
+    const testing::FileSizeLimit limit(room);
+    ASSERT_TRUE(limit.active());
     GenerateWorlds(options);
   } catch (const std::invalid_argument& e) {
     error = e.what();
   }
-  setrlimit(RLIMIT_FSIZE, &saved);
-  std::signal(SIGXFSZ, previous_handler);
   EXPECT_EQ(error.rfind("out: " + (dir / "office_s7_000").string(), 0), 0u) << error;
   EXPECT_NE(error.find(".xml: write failed: File too large"), std::string::npos) << error;
   for (const auto& entry : fs::directory_iterator(dir)) {
