@@ -11,6 +11,7 @@
 #include "sim/world/finite_geometry.h"
 #include "sim/world/planar_drive.h"
 #include "sim/world/static_geom_step.h"
+#include "sim/world/step_skipped_sites.h"
 #include "sim/world/upright_pose.h"
 
 namespace plywood::sim {
@@ -128,6 +129,7 @@ Scene::Scene(const SceneOptions& options) : options_(options) {
   qpos0[6] = std::sin(options.spawn.theta_rad / 2.0);
   InstallTightContactFilter();
   draw_only_geoms_ = DrawOnlyGeoms(model_.get(), kRobotGeomGroup);
+  skip_sites_ = StepCanSkipSites(model_.get());
   data_.reset(mj_makeData(model_.get()));
   mj_resetData(model_.get(), data_.get());
   MakeNearContactPairs();
@@ -203,7 +205,7 @@ void Scene::Step() {
   // mj_step, bit for bit, without recomputing the static world geoms' poses and without placing
   // the draw-only geoms until something asks for data().
   WithNearPairs([&] {
-    if (StepWithStaticWorldGeoms(model_.get(), data_.get(), draw_only_geoms_)) {
+    if (StepWithStaticWorldGeoms(model_.get(), data_.get(), draw_only_geoms_, skip_sites_)) {
       draw_only_stale_ = true;
     }
   });
@@ -221,6 +223,7 @@ void Scene::PlaceDrawOnlyGeoms() const {
   }
   if (!draw_only_stale_) return;
   PlaceGeoms(model_.get(), data_.get(), draw_only_geoms_);
+  if (skip_sites_) PlaceSites(model_.get(), data_.get());
   draw_only_stale_ = false;
 }
 
@@ -294,6 +297,8 @@ Eigen::Isometry3d Scene::SitePoseInWorld(int site_id) const {
     return X_WS;
   }
   if (kinematics_stale_) PlaceDrawOnlyGeoms();
+  // The step left the sites unplaced: this one where mj_step would have put it.
+  if (draw_only_stale_ && skip_sites_) PlaceSite(model_.get(), data_.get(), site_id);
   Eigen::Isometry3d X_WS = Eigen::Isometry3d::Identity();
   const mjtNum* p = data_->site_xpos + 3 * site_id;
   const mjtNum* r = data_->site_xmat + 9 * site_id;

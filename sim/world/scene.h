@@ -49,9 +49,10 @@ class Scene {
   Scene& operator=(const Scene&) = delete;
 
   const mjModel* model() const { return model_.get(); }
-  // The data with every geom placed. Step() leaves the robot's draw-only geoms (DrawOnlyGeoms:
-  // visual wheels, shell, bump panels) where they were; data() and mutable_data() place them first
-  // (on the calling thread), bit for bit where mj_step would have put them. In the planar drive
+  // The data with every geom and site placed. Step() leaves the robot's draw-only geoms
+  // (DrawOnlyGeoms: visual wheels, shell, bump panels) and, when StepCanSkipSites, every site
+  // where they were; data() and mutable_data() place them first (on the calling thread), bit for
+  // bit where mj_step would have put them. In the planar drive
   // Step() places nothing, and these run mj_kinematics, mj_comPos and mj_camlight first (contacts
   // and sensordata stay those of the last mj_forward: the planar drive has none).
   const mjData* data() const {
@@ -62,8 +63,9 @@ class Scene {
     PlaceDrawOnlyGeoms();
     return data_.get();
   }
-  // The data as the last step left it, the draw-only geoms' poses possibly stale: for the step
-  // loop's reads of the state, contacts, bodies and sites, which do not depend on them. In the
+  // The data as the last step left it, the draw-only geoms' and the sites' poses possibly stale
+  // (SitePoseInWorld places a site): for the step loop's reads of the state, contacts and
+  // bodies, which do not depend on them. In the
   // planar drive only qpos, qvel and time are current.
   const mjData* stepped_data() const { return data_.get(); }
 
@@ -132,7 +134,8 @@ class Scene {
   int left_tire_ = -1, right_tire_ = -1;
   std::unique_ptr<NearContactPairs> near_pairs_;
   std::vector<int> draw_only_geoms_;       // DrawOnlyGeoms of the model, skipped by Step()
-  mutable bool draw_only_stale_ = false;   // Step() skipped them since they were last placed
+  bool skip_sites_ = false;                // StepCanSkipSites: Step() leaves every site unplaced
+  mutable bool draw_only_stale_ = false;   // Step() skipped them (and the sites) since placed
   std::unique_ptr<PlanarDrive> planar_;    // DriveMode::kPlanar only
   mutable bool kinematics_stale_ = false;  // the planar drive moved the robot since mj_kinematics
 };

@@ -5,16 +5,21 @@ namespace {
 
 // mj_kinematics with its geom loop over the geoms after the world body's only, `unplaced` aside.
 void KinematicsOfMovingGeoms(mjModel* m, mjData* d, int first_moving_geom,
-                             std::span<const int> unplaced) {
-  const int ngeom = m->ngeom;
-  struct RestoreGeomCount {
+                             std::span<const int> unplaced, bool skip_sites) {
+  const int ngeom = m->ngeom, nsite = m->nsite;
+  struct RestoreCounts {
     mjModel* m;
-    int ngeom;
-    ~RestoreGeomCount() { m->ngeom = ngeom; }
-  } restore{m, ngeom};
-  m->ngeom = 0;  // bodies and sites as usual, no geoms
+    int ngeom, nsite;
+    ~RestoreCounts() {
+      m->ngeom = ngeom;
+      m->nsite = nsite;
+    }
+  } restore{m, ngeom, nsite};
+  m->ngeom = 0;  // bodies as usual, no geoms
+  if (skip_sites) m->nsite = 0;
   mj_kinematics(m, d);
   m->ngeom = ngeom;
+  m->nsite = nsite;
   auto skip = unplaced.begin();
   for (int g = first_moving_geom; g < ngeom; ++g) {
     if (skip != unplaced.end() && *skip == g) {
@@ -27,8 +32,9 @@ void KinematicsOfMovingGeoms(mjModel* m, mjData* d, int first_moving_geom,
 }
 
 // mj_fwdPosition with the narrowed kinematics.
-void PositionStage(mjModel* m, mjData* d, int first_moving_geom, std::span<const int> unplaced) {
-  KinematicsOfMovingGeoms(m, d, first_moving_geom, unplaced);
+void PositionStage(mjModel* m, mjData* d, int first_moving_geom, std::span<const int> unplaced,
+                   bool skip_sites) {
+  KinematicsOfMovingGeoms(m, d, first_moving_geom, unplaced, skip_sites);
   mj_comPos(m, d);
   mj_camlight(m, d);
   mj_tendon(m, d);
@@ -48,7 +54,8 @@ int Resets(const mjData* d) {
 
 void StepWithStaticWorldGeoms(mjModel* m, mjData* d) { StepWithStaticWorldGeoms(m, d, {}); }
 
-bool StepWithStaticWorldGeoms(mjModel* m, mjData* d, std::span<const int> unplaced) {
+bool StepWithStaticWorldGeoms(mjModel* m, mjData* d, std::span<const int> unplaced,
+                              bool skip_sites) {
   // The world body's geoms come first in MuJoCo's geom order.
   const int static_geoms = m->body_geomadr[0] == 0 ? m->body_geomnum[0] : 0;
   if (static_geoms == 0 || m->opt.integrator != mjINT_EULER) {
@@ -64,7 +71,7 @@ bool StepWithStaticWorldGeoms(mjModel* m, mjData* d, std::span<const int> unplac
   if (reset) {
     mj_fwdPosition(m, d);  // a reset zeroed every pose, the static ones too
   } else {
-    PositionStage(m, d, static_geoms, unplaced);
+    PositionStage(m, d, static_geoms, unplaced, skip_sites);
   }
   mj_sensorPos(m, d);
   if (mjENABLED(mjENBL_ENERGY)) mj_energyPos(m, d);
@@ -73,7 +80,8 @@ bool StepWithStaticWorldGeoms(mjModel* m, mjData* d, std::span<const int> unplac
   mj_checkAcc(m, d);
   mj_Euler(m, d);
   // After a reset the geoms hold what the reset left, as after mj_step.
-  return !reset && d->warning[mjWARN_BADQACC].number == bad_accelerations && !unplaced.empty();
+  return !reset && d->warning[mjWARN_BADQACC].number == bad_accelerations &&
+         (!unplaced.empty() || skip_sites);
 }
 
 }  // namespace plywood::sim

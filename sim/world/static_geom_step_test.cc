@@ -13,6 +13,7 @@
 #include "sim/world/draw_only_geoms.h"
 #include "sim/world/near_contact_pairs.h"
 #include "sim/world/scene.h"
+#include "sim/world/step_skipped_sites.h"
 
 namespace plywood::sim {
 namespace {
@@ -68,8 +69,8 @@ TEST(StaticGeomStepTest, BitIdenticalToMjStepOverThousandsOfStepsIntoWalls) {
   for (const std::string robot : {"p3dx", "magellan_pro"}) {
     Compiled a(robot), b(robot), c(robot);
     const mjModel* m = a.model.get();
-    // c steps without placing the draw-only geoms (the robot's visual ones), placed before each
-    // comparison as Scene::data() places them.
+    // c steps without placing the draw-only geoms (the robot's visual ones) and the sites, placed
+    // before each comparison as Scene::data() places them.
     const std::vector<int> draw_only = DrawOnlyGeoms(m, Scene::kRobotGeomGroup);
     const int shell =
         mj_name2id(m, mjOBJ_BODY, (robot == "p3dx" ? "p3dx_shell" : "magellan_shell"));
@@ -78,9 +79,11 @@ TEST(StaticGeomStepTest, BitIdenticalToMjStepOverThousandsOfStepsIntoWalls) {
     const int left = mj_name2id(m, mjOBJ_ACTUATOR, "left_wheel_motor");
     const int right = mj_name2id(m, mjOBJ_ACTUATOR, "right_wheel_motor");
     ASSERT_GE(m->body_geomnum[0], 50);  // the office's walls are in the world body
+    ASSERT_TRUE(StepCanSkipSites(m)) << robot;
+    ASSERT_GE(m->nsite, 16) << robot;  // the sonar ring's transducers at least
     std::mt19937_64 rng(5);
     std::uniform_real_distribution<double> wheel(-12.0, 12.0);
-    int steps_touching_world = 0, steps_left_unplaced = 0;
+    int steps_touching_world = 0, steps_left_unplaced = 0, steps_sites_left_unplaced = 0;
     constexpr int kSteps = 4000;
     for (int step = 0; step < kSteps; ++step) {
       if (step % 300 == 0) {
@@ -102,14 +105,24 @@ TEST(StaticGeomStepTest, BitIdenticalToMjStepOverThousandsOfStepsIntoWalls) {
       }
       {
         const NearContactPairs::Active active = c.pairs->Activate(c.data.get());
-        ASSERT_TRUE(StepWithStaticWorldGeoms(c.model.get(), c.data.get(), draw_only));
+        ASSERT_TRUE(StepWithStaticWorldGeoms(c.model.get(), c.data.get(), draw_only, true));
+        ASSERT_EQ(c.model->nsite, m->nsite);  // restored
       }
       // Unplaced, the draw-only geoms still hold the pose of the step before.
       if (!SameBytes(c.data->geom_xpos + 3 * draw_only[0], a.data->geom_xpos + 3 * draw_only[0],
                      3)) {
         ++steps_left_unplaced;
       }
+      if (!SameBytes(c.data->site_xpos, a.data->site_xpos, 3 * m->nsite)) {
+        ++steps_sites_left_unplaced;
+      }
       PlaceGeoms(c.model.get(), c.data.get(), draw_only);
+      // One site alone (as SitePoseInWorld places it), then all of them.
+      const int one = step % m->nsite;
+      PlaceSite(c.model.get(), c.data.get(), one);
+      ASSERT_TRUE(SameBytes(c.data->site_xpos + 3 * one, a.data->site_xpos + 3 * one, 3)) << step;
+      ASSERT_TRUE(SameBytes(c.data->site_xmat + 9 * one, a.data->site_xmat + 9 * one, 9)) << step;
+      PlaceSites(c.model.get(), c.data.get());
       {
         const mjData *d = b.data.get(), *dc = c.data.get();
         ASSERT_TRUE(SameBytes(d->qpos, dc->qpos, m->nq)) << robot << " step " << step;
@@ -118,6 +131,8 @@ TEST(StaticGeomStepTest, BitIdenticalToMjStepOverThousandsOfStepsIntoWalls) {
         ASSERT_TRUE(SameBytes(d->geom_xpos, dc->geom_xpos, 3 * m->ngeom)) << robot << " " << step;
         ASSERT_TRUE(SameBytes(d->geom_xmat, dc->geom_xmat, 9 * m->ngeom)) << robot << " " << step;
         ASSERT_TRUE(SameContacts(d, dc)) << robot << " step " << step;
+        ASSERT_TRUE(SameBytes(d->site_xpos, dc->site_xpos, 3 * m->nsite)) << robot << " " << step;
+        ASSERT_TRUE(SameBytes(d->site_xmat, dc->site_xmat, 9 * m->nsite)) << robot << " " << step;
       }
       const mjData* da = a.data.get();
       const mjData* db = b.data.get();
@@ -143,6 +158,7 @@ TEST(StaticGeomStepTest, BitIdenticalToMjStepOverThousandsOfStepsIntoWalls) {
                 steps_touching_world, kSteps, a.data->qpos[0], a.data->qpos[1]);
     EXPECT_GT(steps_touching_world, 300) << robot << ": the robot must press into walls";
     EXPECT_GT(steps_left_unplaced, kSteps / 2) << robot << ": the step must skip them";
+    EXPECT_GT(steps_sites_left_unplaced, kSteps / 2) << robot << ": and the sites";
   }
 }
 
@@ -156,6 +172,28 @@ TEST(StaticGeomStepTest, MatchesMjStepAfterABadStateReset) {
   EXPECT_TRUE(SameBytes(a.data->qpos, b.data->qpos, m->nq));
   EXPECT_TRUE(SameBytes(a.data->geom_xpos, b.data->geom_xpos, 3 * m->ngeom));
   EXPECT_EQ(a.model->ngeom, b.model->ngeom);
+}
+
+// Anything in the step that reads sites keeps them placed by the step.
+TEST(StaticGeomStepTest, SitesAreSkippedOnlyWhenNothingInTheStepReadsThem) {
+  const std::string robot_only =
+      "<mujoco><worldbody><body><freejoint/><geom size='0.1'/><site name='s'/>"
+      "<body><joint name='j' axis='0 1 0'/><geom size='0.05'/></body></body></worldbody>";
+  const auto compile = [&](const std::string& tail) {
+    return LoadModelFromString(robot_only + tail + "</mujoco>", "sites_test.xml");
+  };
+  EXPECT_TRUE(StepCanSkipSites(compile("").get()));
+  EXPECT_TRUE(StepCanSkipSites(compile("<actuator><velocity joint='j' kv='5'/></actuator>").get()));
+  EXPECT_FALSE(
+      StepCanSkipSites(compile("<sensor><framepos objtype='site' objname='s'/></sensor>").get()));
+  EXPECT_FALSE(
+      StepCanSkipSites(compile("<actuator><motor site='s' gear='1 0 0 0 0 0'/></actuator>").get()));
+  EXPECT_FALSE(StepCanSkipSites(
+      compile("<tendon><fixed><joint joint='j' coef='1'/></fixed></tendon>").get()));
+  const MjModelPtr m = compile("");
+  mjcb_control = [](const mjModel*, mjData*) {};
+  EXPECT_FALSE(StepCanSkipSites(m.get()));
+  mjcb_control = nullptr;
 }
 
 }  // namespace
