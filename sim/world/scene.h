@@ -49,10 +49,9 @@ class Scene {
   Scene& operator=(const Scene&) = delete;
 
   const mjModel* model() const { return model_.get(); }
-  // The data with every geom and site placed. Step() leaves the robot's draw-only geoms
-  // (DrawOnlyGeoms: visual wheels, shell, bump panels) and, when StepCanSkipSites, every site
-  // where they were; data() and mutable_data() place them first (on the calling thread), bit for
-  // bit where mj_step would have put them. In the planar drive
+  // Every geom and site placed. Step() leaves the robot's draw-only geoms (DrawOnlyGeoms: visual
+  // wheels, shell, bump panels) and the sites (if StepCanSkipSites) where they were; these place
+  // them first (calling thread), bit for bit where mj_step would have put them. In the planar drive
   // Step() places nothing, and these run mj_kinematics, mj_comPos and mj_camlight first (contacts
   // and sensordata stay those of the last mj_forward: the planar drive has none).
   const mjData* data() const {
@@ -63,10 +62,9 @@ class Scene {
     PlaceDrawOnlyGeoms();
     return data_.get();
   }
-  // The data as the last step left it, the draw-only geoms' and the sites' poses possibly stale
-  // (SitePoseInWorld places a site): for the step loop's reads of the state, contacts and
-  // bodies, which do not depend on them. In the
-  // planar drive only qpos, qvel and time are current.
+  // The data as the last step left it, the draw-only geoms' and sites' poses possibly stale: for
+  // the step loop's reads of the state, contacts and bodies (SitePoseInWorld places a site). In
+  // the planar drive only qpos, qvel and time are current.
   const mjData* stepped_data() const { return data_.get(); }
 
   DriveMode drive() const { return options_.drive; }
