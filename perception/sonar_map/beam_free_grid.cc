@@ -50,7 +50,6 @@ void BeamFreeGrid::Integrate(const msgs::RangeRing& ring, const msgs::Pose2D& X_
     const msgs::Pose2D X_WS = X_WR * reading.X_RS;
     const Eigen::Vector2d from(X_WS.x_m, X_WS.y_m);
     const Eigen::Vector2d dir(std::cos(heading), std::sin(heading));
-    viewpoints_.push_back({from, heading, length});
     // Sampled at a fifth of a cell: every cell the axis crosses by more than that is counted once.
     const double step = 0.2 * res;
     const int samples = static_cast<int>(std::floor(length / step));

@@ -55,15 +55,6 @@ class BeamFreeGrid {
     double lateral;
   };
   const std::vector<FaceEcho>& face_echoes() const { return face_echoes_; }
-  // Where each such reading was taken: the transducer's position, its axis' heading and how far
-  // it heard nothing (the echo's range less stop_short_m). The cells the peel finds unheard are
-  // judged from these (BuildCognitiveMap): did a sonar ever face one and hear its echo beyond it.
-  struct Viewpoint {
-    Eigen::Vector2d from;
-    double heading_rad;
-    double free_m;
-  };
-  const std::vector<Viewpoint>& viewpoints() const { return viewpoints_; }
   int width() const { return width_; }
   int height() const { return height_; }
 
@@ -75,7 +66,6 @@ class BeamFreeGrid {
   std::vector<int> passes_;
   std::vector<int> echoes_[4];
   std::vector<FaceEcho> face_echoes_;
-  std::vector<Viewpoint> viewpoints_;
 };
 
 }  // namespace plywood::perception

@@ -201,8 +201,7 @@ void Split(const std::vector<Eigen::Vector2i>& cells, double saving, int depth,
 
 std::vector<Eigen::Vector2i> PeelFreeEdges(const std::vector<Eigen::Vector2i>& cells,
                                            const std::function<bool(int, int)>& is_free,
-                                           std::vector<Eigen::Vector2i>& rest,
-                                           const std::function<bool(int, int)>& is_piece) {
+                                           std::vector<Eigen::Vector2i>& rest) {
   if (cells.empty()) return cells;
   Eigen::Vector2i lo = cells.front(), hi = cells.front();
   for (const Eigen::Vector2i& c : cells) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
@@ -219,7 +218,7 @@ std::vector<Eigen::Vector2i> PeelFreeEdges(const std::vector<Eigen::Vector2i>& c
     for (int k = b0[1 - axis]; k <= b1[1 - axis]; ++k) {
       const int x = axis == 0 ? at : k, y = axis == 0 ? k : at;
       n += is_free(x, y) ? 1 : 0;
-      n -= in(x, y) || (is_piece && is_piece(x, y)) ? 1 : 0;
+      n -= in(x, y) ? 1 : 0;
     }
     return n;
   };
@@ -285,9 +284,6 @@ void CognitiveMapOptions::Validate() const {
   if (!(std::isfinite(obstacle_peel_net_free_clearance_m) &&
         obstacle_peel_net_free_clearance_m >= 0.0))
     throw std::invalid_argument("obstacle_peel_net_free_clearance_m: must be a finite number >= 0");
-  if (!(obstacle_peel_view_cone_rad >= 0.0 &&
-        obstacle_peel_view_cone_rad <= 0.5 * 3.14159265358979323846))
-    throw std::invalid_argument("obstacle_peel_view_cone_rad: must be in [0, pi/2]");
 }
 
 CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& inside,
@@ -345,55 +341,6 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
     if (!grid.Contains(ix, iy)) return false;
     const std::size_t i = static_cast<std::size_t>(iy) * W + ix;
     return axis_free[i] != 0 || net_free_clear[i] != 0;
-  };
-  // The cells the peel finds unheard, judged by where the sonar stood (obstacle_peel_viewpoints):
-  // 1 where some reading faced the cell with nothing occupied in the way and heard its echo
-  // beyond (free), 0 where none did (the piece's); computed once per cell.
-  const bool peel_viewpoints = peel_free && options.obstacle_peel_viewpoints;
-  const bool peel_net_free_faced = peel_free && options.obstacle_peel_net_free_faced;
-  std::vector<signed char> faced(peel_viewpoints || peel_net_free_faced ? occ.size() : 0, -1);
-  auto is_unheard = [&](int ix, int iy) {
-    return grid.Contains(ix, iy) && !is_axis_free(ix, iy) && !is_occ(ix, iy) &&
-           grid.Probability(ix, iy) >= options.obstacle_free_p;
-  };
-  auto is_faced = [&](int ix, int iy) {
-    signed char& known = faced[static_cast<std::size_t>(iy) * W + ix];
-    if (known >= 0) return known != 0;
-    known = 0;
-    const Eigen::Vector2d cell = grid.CellCentre(ix, iy);
-    const double cos_cone = std::cos(options.obstacle_peel_view_cone_rad);
-    for (const BeamFreeGrid::Viewpoint& view : beam_free->viewpoints()) {
-      const Eigen::Vector2d d = cell - view.from;
-      const double distance = d.norm();
-      if (distance > view.free_m || distance <= 0.0) continue;
-      if (d.dot(Eigen::Vector2d(std::cos(view.heading_rad), std::sin(view.heading_rad))) <
-          cos_cone * distance)
-        continue;
-      // The line from the transducer, sampled at a fifth of a cell, must cross no occupied cell.
-      const int samples = static_cast<int>(std::ceil(distance / (0.2 * res)));
-      bool clear = true;
-      for (int k = 0; k < samples && clear; ++k) {
-        const Eigen::Vector2i c = grid.CellAt(view.from + (static_cast<double>(k) / samples) * d);
-        if (c.x() >= 0 && (c.x() != ix || c.y() != iy) && is_occ(c.x(), c.y())) clear = false;
-      }
-      if (clear) {
-        known = 1;
-        break;
-      }
-    }
-    return known != 0;
-  };
-  auto is_peel_free = [&](int ix, int iy) {
-    if (peel_net_free_faced) {
-      if (!grid.Contains(ix, iy)) return false;
-      const std::size_t i = static_cast<std::size_t>(iy) * W + ix;
-      return axis_free[i] != 0 || (net_free_clear[i] != 0 && is_faced(ix, iy));
-    }
-    if (is_axis_free(ix, iy)) return true;
-    return peel_viewpoints && is_unheard(ix, iy) && is_faced(ix, iy);
-  };
-  auto is_peel_piece = [&](int ix, int iy) {
-    return peel_viewpoints && is_unheard(ix, iy) && !is_faced(ix, iy);
   };
 
   Eigen::Vector2i c0 = grid.CellAt(inside);
@@ -589,7 +536,7 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
         // obstacle), so this ends.
         for (std::size_t k = 0; k < pieces.size(); ++k) {
           std::vector<Eigen::Vector2i> rest;
-          pieces[k] = PeelFreeEdges(pieces[k], is_peel_free, rest, is_peel_piece);
+          pieces[k] = PeelFreeEdges(pieces[k], is_axis_free, rest);
           if (pieces[k].empty()) continue;
           int rest_occupied = 0;
           for (const auto& c : rest) rest_occupied += is_obstacle_occ(c.x(), c.y());

@@ -65,22 +65,6 @@ struct CognitiveMapOptions {
   // echoes; like the axes (BeamFreeOptions::stop_short_m) a free cell must lie the range noise
   // from any echo. It lets the peel free what the network saw and no axis passed. 0: axes only.
   double obstacle_peel_net_free_clearance_m = 0.05;
-  // The peel weighs the cells it finds unheard (not the piece's, not free for it, not occupied,
-  // P >= obstacle_free_p) by where the sonar stood (BeamFreeGrid::viewpoints): a cell some reading
-  // faced (within obstacle_peel_view_cone_rad of its axis, nearer than its echo less the range
-  // margin, with no occupied cell on the line from the transducer) would have echoed had anything
-  // been there, so it counts as free; a cell no reading faced so (in the shadow of the faces heard
-  // from every place the sonar stood, or never in range) counts as the piece's. A box's foot
-  // against a wall, behind its heard face, stays; a gap beside a box that a sonar looked into goes.
-  bool obstacle_peel_viewpoints = false;
-  // The network's free cells count for the peel (obstacle_peel_net_free_clearance_m) only where a
-  // reading faced them as above: elsewhere the network's free label is its guess of space no sonar
-  // could have heard (inside a box behind its heard face).
-  bool obstacle_peel_net_free_faced = false;
-  // Within this of a beam's axis any face square to the nearest grid axis is met within the
-  // specular incidence limit (about 20 deg for plywood) when the axis is within
-  // BeamFreeOptions::axis_tolerance_rad (10 deg) of that grid axis: 20 - 10 deg.
-  double obstacle_peel_view_cone_rad = 10.0 * 3.14159265358979323846 / 180.0;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
 };
@@ -117,12 +101,10 @@ std::vector<std::vector<Eigen::Vector2i>> SplitIntoRectangles(
 // The cells of `cells` inside the box left when its outermost rows and columns holding more
 // cells for which is_free(cell) holds (any cell of the box, in `cells` or not) than cells of
 // `cells` are dropped, one at a time (the side with the largest excess first), while any does;
-// `rest` receives the cells dropped. Empty input gives empty output. `is_piece` (may be empty):
-// cells of the box outside `cells` that count as cells of `cells` (never together with is_free).
+// `rest` receives the cells dropped. Empty input gives empty output.
 std::vector<Eigen::Vector2i> PeelFreeEdges(const std::vector<Eigen::Vector2i>& cells,
                                            const std::function<bool(int, int)>& is_free,
-                                           std::vector<Eigen::Vector2i>& rest,
-                                           const std::function<bool(int, int)>& is_piece = {});
+                                           std::vector<Eigen::Vector2i>& rest);
 
 // `inside`: a point known to be free inside the room (the start pose). Sides without enough
 // boundary points fall back to the outermost cell the grid has seen free. `beam_free` (same cells
