@@ -313,5 +313,20 @@ TEST(CliTrainTest, TrainingNeverWritesTheShippedWeights) {
   EXPECT_EQ(fs::last_write_time(shipped), mtime);
 }
 
+// audit s35: an --out where no file can be made (/sys here; a read-only file system alike) was
+// found only when the trained weights were saved, as exit 1 after the whole training.
+TEST(CliTrainTest, AnOutThatCannotBeWrittenIsRefusedBeforeTraining) {
+  if (!fs::is_directory("/sys/kernel")) GTEST_SKIP() << "no /sys";
+  const fs::path dir = MakeTempDir("cli_train_unwritable");
+  const CliResult r = RunPlywood(
+      "train sonar-net --rooms 1 --test-rooms 1 --poses 2 --epochs 1 --out /sys/plywood_n.txt",
+      dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(IsOneLine(r.err)) << r.err;
+  EXPECT_EQ(r.err.rfind("plywood: train: --out: /sys/plywood_n.txt: cannot write there: ", 0), 0u)
+      << r.err;
+  EXPECT_EQ(r.out.find("data:"), std::string::npos) << "training started: " << r.out;
+}
+
 }  // namespace
 }  // namespace plywood

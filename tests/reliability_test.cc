@@ -260,6 +260,10 @@ TEST_F(ReliabilityTest, RunsOfMoreThanAHundredMillionStepsAreRefused) {
   ExpectRefused(HallExperiment(0.0, 0.0), "--set duration_s=9.3e16", {"duration_s", "steps"});
   ExpectRefused(HallExperiment(0.0, 0.0), "--set physics.timestep_s=1e-9",
                 {"physics.timestep_s", "steps"});
+  // audit s35: a quotient past the largest double read "= null steps" (JSON's word for it).
+  ExpectRefused(HallExperiment(0.0, 0.0), "--set duration_s=1e308",
+                {"experiment.yaml: duration_s: duration_s / physics.timestep_s = inf steps, more "
+                 "than the limit of 1e+08"});
 }
 
 // audit s32: a run shorter than one physics step simulated nothing and reported its figures (an ATE

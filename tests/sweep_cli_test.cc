@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <map>
@@ -360,6 +361,111 @@ void SetRecordedBuild(const fs::path& file, const std::string& id) {
   const std::size_t from = at + key.size();
   text.replace(from, text.find('"', from) - from, id);
   WriteFile(file, text);
+}
+
+// audit s35: a profile (`profiles:`, a file of --set lines) saved with a UTF-8 byte-order mark was
+// refused as "<BOM>sensors: unknown key", blamed on the experiment; a key set twice in one profile
+// silently kept the second value; a value the experiment refuses named neither the profile file
+// nor its line.
+TEST(SweepCliTest, ProfileFilesAreReadWithABomAndNameTheirLine) {
+  const fs::path dir = MakeTempDir("SweepProfiles");
+  const auto sweep_of = [&](const std::string& profile, const std::string& text) {
+    WriteFile(dir / profile, text);
+    return WriteFile(dir / ("s_" + profile + ".yaml"),
+                     "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
+                         "\nseeds: [1]\nprofiles: [" + profile + "]\n");
+  };
+  const fs::path bom = sweep_of("bom.set",
+                                "\xEF\xBB\xBFsensors.encoders.slip_sigma=0.03\r\n"
+                                "# a comment\r\nsensors.gyro.bias_rad_s=0.01\r\n");
+  const fs::path out = dir / "out_bom";
+  const auto r =
+      RunPlywood("sweep " + bom.string() + " --slurm --dry-run --out " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string cells = Slurp(out / "cells.json");
+  EXPECT_NE(cells.find("\"sensors.encoders.slip_sigma=0.03\""), std::string::npos) << cells;
+  EXPECT_NE(cells.find("\"sensors.gyro.bias_rad_s=0.01\""), std::string::npos) << cells;
+
+  const std::vector<std::pair<fs::path, std::string>> refused = {
+      {sweep_of("twice.set",
+                "sensors.encoders.slip_sigma=0.03\n# worn\nsensors.encoders.slip_sigma = 0.05\n"),
+       (dir / "twice.set").string() +
+           ": line 3: sensors.encoders.slip_sigma: already set on line 1 (one of the two values "
+           "would be lost): remove one"},
+      {sweep_of("word.set", "sensors.gyro.bias_rad_s=0.01\nsensors.encoders.slip_sigma=abc\n"),
+       "profiles: " + (dir / "word.set").string() +
+           ": line 2: " + (SourceRoot() / "experiments/default.yaml").string() +
+           ": sensors.encoders.slip_sigma: expected a finite number, got 'abc'"}};
+  for (const auto& [sweep, expected] : refused) {
+    SCOPED_TRACE(sweep.string());
+    const fs::path bad_out = dir / ("out_" + sweep.stem().string());
+    const auto bad = RunPlywood("sweep " + sweep.string() + " --out " + bad_out.string(), dir);
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+    EXPECT_NE(bad.err.find(expected), std::string::npos) << bad.err;
+    EXPECT_EQ(CountRunDirs(bad_out), 0);
+  }
+}
+
+// audit s35: a sweep refused for a bad value left its --out holding its sweep.lock, and the
+// corrected sweep into the same --out was refused: "holds files that are not a sweep (no
+// sweep.yaml); choose another --out".
+TEST(SweepCliTest, ASweepRefusedForABadValueRunsIntoTheSameOutOnceCorrected) {
+  const fs::path dir = MakeTempDir("SweepRefusedThenFixed");
+  const std::string head = "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
+                           "\nseeds: [1]\nset:\n  output.snapshot: [false]\n";
+  const fs::path sweep = WriteFile(dir / "s.yaml", head + "  duration_s: [-1]\n");
+  const fs::path out = dir / "out";
+  const std::string command = "sweep " + sweep.string() + " --out " + out.string() + " --quiet";
+  const auto refused = RunPlywood(command, dir);
+  ASSERT_EQ(refused.exit_code, 2) << refused.err;
+  WriteFile(sweep, head + "  duration_s: [1]\n");
+  const auto fixed = RunPlywood(command, dir);
+  EXPECT_EQ(fixed.exit_code, 0) << fixed.err;
+  EXPECT_EQ(CountRunDirs(out), 1);
+  // A folder with a file of anyone else's is still refused.
+  const fs::path other = dir / "other";
+  WriteFile(other / "sweep.lock", "");
+  WriteFile(other / "notes.txt", "mine\n");
+  const auto mixed = RunPlywood("sweep " + sweep.string() + " --out " + other.string(), dir);
+  EXPECT_EQ(mixed.exit_code, 2);
+  EXPECT_NE(mixed.err.find("holds files that are not a sweep"), std::string::npos) << mixed.err;
+}
+
+// audit s35: a cell's id hashed the world file's own text only, so a resumed sweep kept the runs
+// made before a file the world includes was edited (here its west wall moved 1 m in): stale
+// results, no word. The files a world names are now part of its hash.
+TEST(SweepCliTest, AnEditedFileTheWorldIncludesRunsItsCellsAnew) {
+  const fs::path dir = MakeTempDir("SweepIncludedWorld");
+  const std::string hall = Slurp(SourceRoot() / "worlds/hall.xml");
+  const std::size_t open = hall.find('>', hall.find("<mujoco")) + 1;
+  const std::string body = hall.substr(open, hall.rfind("</mujoco>") - open);
+  const fs::path walls =
+      WriteFile(dir / "walls.xml", "<mujoco model=\"walls\">" + body + "</mujoco>\n");
+  WriteFile(dir / "room.xml",
+            "<mujoco model=\"room\">\n  <include file=\"walls.xml\"/>\n</mujoco>\n");
+  const fs::path sweep = WriteFile(
+      dir / "s.yaml", "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
+                          "\nseeds: [1]\nworlds: [room.xml]\nset:\n  duration_s: [1]\n"
+                          "  output.snapshot: [false]\n");
+  const fs::path out = dir / "out";
+  const std::string command = "sweep " + sweep.string() + " --out " + out.string() + " --quiet";
+  const auto walls_of_tabled_run = [&] {
+    const auto rows = eval::ParseCsv(Slurp(out / "results.csv"));
+    return rows.size() == 2 ? Slurp(out / "runs" / rows[1][0] / "walls.csv") : "no table";
+  };
+  ASSERT_EQ(RunPlywood(command, dir).exit_code, 0);
+  EXPECT_NE(walls_of_tabled_run().find(",-4.018"), std::string::npos) << walls_of_tabled_run();
+
+  const std::string west = "pos=\"-4.009 0 0.5\"";
+  std::string moved = Slurp(walls);
+  ASSERT_NE(moved.find(west), std::string::npos);
+  moved.replace(moved.find(west), west.size(), "pos=\"-3.009 0 0.5\"");
+  WriteFile(walls, moved);
+  const auto r = RunPlywood(command, dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(walls_of_tabled_run().find(",-3.018"), std::string::npos)
+      << "the run in the table is of the world before the edit: " << walls_of_tabled_run();
 }
 
 TEST(SweepCliTest, ResultsOfAnotherBuildOrOfChangedInputsAreNeverKept) {

@@ -1,14 +1,24 @@
 // `plywood view` as a user runs it, under Xvfb (started by the test; the program exits 77, a
 // visible skip, without it).
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
+#include "plywood_paths.h"
 #include "render/png_image.h"
 #include "tests/support/cli_test_support.h"
 #include "tests/support/mujoco_test_support.h"
@@ -21,6 +31,23 @@ using testing::MakeTempDir;
 using testing::RunPlywood;
 using testing::Slurp;
 using testing::SourceRoot;
+
+// Whether the X server on `display` shows a window: one of the root's children is mapped
+// (xwininfo, Debian's x11-utils). GLFW maps its window only once the GL context exists; killed
+// before, Mesa's GLX can crash inside glfwCreateWindow (docs/errors.md, sixth pass).
+bool DisplayShowsAWindow(int display) {
+  const std::string on = " -display :" + std::to_string(display);
+  const std::string command = "for w in $(xwininfo -root -children" + on +
+                              " 2>/dev/null | awk '/^ +0x/{print $1}'); do xwininfo -id $w" + on +
+                              " 2>/dev/null; done";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return false;
+  std::string text;
+  char buffer[256];
+  while (std::fgets(buffer, sizeof(buffer), pipe) != nullptr) text += buffer;
+  pclose(pipe);
+  return text.find("IsViewable") != std::string::npos;
+}
 
 class ViewCliTest : public ::testing::Test {
  protected:
@@ -122,6 +149,65 @@ TEST_F(ViewCliTest, FlagsThatCannotBeHonouredAreRefusedBeforeAnythingRuns) {
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "live"));
   EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+}
+
+// audit s35: an X server killed under a live view ended plywood through Xlib's own handler, "X
+// connection to :N broken (explicit kill or server shutdown).", a line naming neither plywood nor
+// the view. Now plywood's own line, exit 1 (the run failed; its staging folder is left, as a
+// killed run's, for the next run into --out to remove).
+TEST_F(ViewCliTest, AnXServerKilledMidViewEndsItWithOneLineOfPlywoods) {
+  if (std::system("xwininfo -version >/dev/null 2>&1") != 0) GTEST_SKIP() << "no xwininfo";
+  const std::filesystem::path dir = MakeTempDir("view_cli_x_lost");
+  const std::string saved_display = std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "";
+  std::string why_not;
+  auto server = testing::XvfbDisplay::Start(&why_not);  // its own, to kill; DISPLAY points at it
+  ASSERT_TRUE(server) << why_not;
+  const int display = server->display();
+  const std::string plywood = (std::filesystem::path(PLYWOOD_BINARY_DIR) / "apps/plywood").string();
+  const std::string experiment = (SourceRoot() / "experiments/default.yaml").string();
+  const std::string out = (dir / "out").string();
+  std::vector<std::string> args = {plywood,   "view",   experiment, "--speed", "1",
+                                   "--quiet", "--size", "320x240",  "--out",   out};
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  const std::string err_file = (dir / "err.txt").string();
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err_file.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = -1;
+  ASSERT_EQ(posix_spawn(&pid, plywood.c_str(), &actions, nullptr, argv.data(), ::environ), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  setenv("DISPLAY", saved_display.c_str(), 1);  // the suite's own display for the other tests
+
+  // The window is up (the run is simulating) before the server goes.
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!DisplayShowsAWindow(display) && std::chrono::steady_clock::now() < give_up) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  ASSERT_TRUE(DisplayShowsAWindow(display)) << "no window within 60 s: " << Slurp(err_file);
+  server.reset();  // kills the X server by its pid
+
+  int status = 0;
+  pid_t done = 0;
+  while ((done = waitpid(pid, &status, WNOHANG)) == 0 &&
+         std::chrono::steady_clock::now() < give_up) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  if (done == 0) {  // never: the view went on without its X server
+    kill(pid, SIGKILL);
+    waitpid(pid, &status, 0);
+    FAIL() << "plywood view kept running after its X server was killed";
+  }
+  ASSERT_TRUE(WIFEXITED(status)) << "ended by signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  const std::string err = Slurp(err_file);
+  EXPECT_EQ(err.rfind("plywood: view: lost the X display :" + std::to_string(display), 0), 0u)
+      << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "metrics.json"));
 }
 
 }  // namespace

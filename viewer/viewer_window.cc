@@ -13,6 +13,7 @@
 #include "sim/world/mujoco_handles.h"
 #include "sim/world/scene.h"
 #include "viewer/gl_driver_pin.h"
+#include "viewer/x_connection_loss.h"
 
 #if PLYWOOD_HAS_IMGUI
 #include <imgui.h>
@@ -111,6 +112,7 @@ ViewerWindow::ViewerWindow(const mjModel* m, const WindowOptions& options)
   g.owner = this;
   glfwSetErrorCallback([](int, const char* message) { LastGlfwError() = message; });
   if (!glfwInit()) throw std::runtime_error("viewer: cannot start GLFW: " + LastGlfwError());
+  InstallXConnectionLossHandler();
   glfwWindowHint(GLFW_SAMPLES, 0);
   glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
   g.window = glfwCreateWindow(options.width_px, options.height_px, options.title.c_str(), nullptr,

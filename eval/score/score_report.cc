@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "sim/config/config_error.h"
-#include "sim/runner/file_writer.h"
+#include "sim/runner/text_file.h"
 
 namespace plywood::eval {
 
@@ -31,13 +31,15 @@ void WriteScoreJson(const ScoreReport& report, const std::filesystem::path& out,
   if (fs::is_directory(target)) {
     throw sim::ConfigError(out.string(), "--out", "is a folder; give a file name (scores.json)");
   }
+  // Staged beside the target and renamed into place (WriteTextFile): written in place, a full
+  // disk or a file-size limit left an earlier scores file cut to 0 bytes.
   try {
-    sim::FileWriter json(target, out.string());
-    json.out() << report.metrics.ToJson();
-    json.Close();
-  } catch (const std::runtime_error& e) {  // "OUT: write failed: No space left on device"
-    const std::string what = e.what();
-    throw sim::ConfigError(out.string(), "--out", what.substr(out.string().size() + 2));
+    sim::WriteTextFile(target, report.metrics.ToJson());
+  } catch (const std::runtime_error& e) {  // "TARGET: write failed: No space left on device"
+    std::string what = e.what();
+    const std::string prefix = target.string() + ": ";
+    if (what.rfind(prefix, 0) == 0) what = what.substr(prefix.size());
+    throw sim::ConfigError(out.string(), "--out", what);
   }
 }
 

@@ -1,8 +1,11 @@
 #include "eval/sonar_map/sonar_net_training.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -204,6 +207,20 @@ void RefuseShippedSonarNet(const std::filesystem::path& out) {
   }
 }
 
+void RequireWritablePlace(const std::filesystem::path& out) {
+  // A file of the name the weights are staged under (sim::WriteTextFile), made and removed: a
+  // read-only file system or a folder plywood may not write in (/sys) was found only when the
+  // trained weights were saved, minutes later, as exit 1.
+  const std::string probe = out.string() + ".partial-" + std::to_string(getpid());
+  const int fd = open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    throw std::invalid_argument("train: --out: " + out.string() +
+                                ": cannot write there: " + std::strerror(errno));
+  }
+  close(fd);
+  unlink(probe.c_str());
+}
+
 SonarNetTrainingReport TrainSonarNet(
     const SonarNetTrainingOptions& options,
     const std::function<void(const SonarNetDataSummary&)>& on_data) {
@@ -214,6 +231,7 @@ SonarNetTrainingReport TrainSonarNet(
   report.out = options.out;
   // Before the long part, so an unwritable place fails at once.
   if (options.out.has_parent_path()) std::filesystem::create_directories(options.out.parent_path());
+  RequireWritablePlace(options.out);
 
   std::mt19937_64 rng(train.seed);
   Dataset train_set, test_set;

@@ -39,6 +39,10 @@ std::filesystem::path ShippedSonarNetPath();
 // relative, through symbolic links or a hard link).
 void RefuseShippedSonarNet(const std::filesystem::path& out);
 
+// @throws std::invalid_argument "train: --out: OUT: cannot write there: REASON" when no file can be
+// made beside `out` (a read-only file system, a folder of /sys), so training does not start.
+void RequireWritablePlace(const std::filesystem::path& out);
+
 // Generates labelled sonar data in random rooms (2-5 m by 2-4.5 m with 0-3 boxes; never the seed
 // 001 evaluation rooms): for each robot pose a sonar ring and the 14 x 14 local grid's cells
 // labelled from the reachable-space ground truth. Trains the sonar interpretation network on the

@@ -6,12 +6,14 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <utility>
 
 #include "sim/config/config_error.h"
 #include "sim/config/experiment_config.h"
 #include "sim/config/yaml_text_value.h"
 #include "sim/runner/text_file.h"
 #include "sim/world/mujoco_handles.h"
+#include "sim/world/referenced_files.h"
 #include "sim/world/world_spawns.h"
 
 namespace plywood::eval {
@@ -106,7 +108,7 @@ std::string CulpritField(const SweepSpec& spec, const SweepCell& cell,
 // the same wherever the sweep folder (and the worlds generated into it) lies.
 std::string IdentityText(const sim::ExperimentConfig& config) {
   std::string text = sim::ExperimentConfigToYaml(config);
-  const std::string world_id = "world-content-" + StableHash(sim::ReadTextFile(config.world_path));
+  const std::string world_id = "world-content-" + WorldContentHash(config.world_path);
   for (const std::string& path : {config.world_path.string(), config.world}) {
     if (path.empty()) continue;
     for (std::size_t at = text.find(path); at != std::string::npos;
@@ -151,23 +153,88 @@ std::string StableHash(const std::string& text) {
   return hex;
 }
 
-std::vector<std::string> ReadProfile(const std::filesystem::path& path) {
+namespace {
+
+struct ProfileLine {
+  int number = 0;    // 1-based, in the file
+  std::string text;  // "key.path=value"
+};
+
+// The --set lines of a profile file with their line numbers.
+std::vector<ProfileLine> ReadProfileLines(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw sim::ConfigError(path.string(), "", "cannot read the profile");
-  std::vector<std::string> lines;
+  std::vector<ProfileLine> lines;
+  std::map<std::string, int> key_lines;  // key -> the line that set it
   int number = 0;
   for (std::string line; std::getline(in, line);) {
     ++number;
+    // A UTF-8 byte-order mark (an editor's "UTF-8 with BOM") was read as part of the first key:
+    // "\xEF\xBB\xBFsensors: unknown key", blamed on the experiment.
+    if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
     while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
     const auto start = line.find_first_not_of(' ');
     if (start == std::string::npos || line[start] == '#') continue;
     line = line.substr(start);
-    if (line.find('=') == std::string::npos || line.front() == '=') {
+    const auto eq = line.find('=');
+    if (eq == std::string::npos || eq == 0) {
       throw sim::ConfigError(path.string(), "line " + std::to_string(number),
                              "expected key.path=value");
     }
-    lines.push_back(line);
+    // A key set twice in one profile silently took the second value; an experiment refuses a
+    // YAML key given twice.
+    std::string key = line.substr(0, eq);
+    while (!key.empty() && key.back() == ' ') key.pop_back();
+    if (const auto [first, inserted] = key_lines.emplace(key, number); !inserted) {
+      throw sim::ConfigError(path.string(), "line " + std::to_string(number),
+                             key + ": already set on line " + std::to_string(first->second) +
+                                 " (one of the two values would be lost): remove one");
+    }
+    lines.push_back({number, line});
   }
+  return lines;
+}
+
+// "PROFILE: line N" for the first line of `profile` the experiment refuses by itself (just
+// "PROFILE" when only lines together are refused).
+std::string ProfileCulprit(const std::filesystem::path& experiment,
+                           const std::filesystem::path& profile) {
+  for (const ProfileLine& line : ReadProfileLines(profile)) {
+    try {
+      sim::LoadExperimentConfig(experiment, {line.text});
+    } catch (const sim::ConfigError&) {
+      return profile.string() + ": line " + std::to_string(line.number);
+    }
+  }
+  return profile.string();
+}
+
+}  // namespace
+
+std::string WorldContentHash(const std::filesystem::path& world) {
+  const std::string text = sim::ReadTextFile(world);
+  std::string content = text;
+  // The files it includes or names (meshes, textures) are part of the world: an edited
+  // <include file="walls.xml"/> left the cell's id, so a resumed sweep kept the old wall's results.
+  // A world that names none hashes as before.
+  const std::filesystem::path dir = world.parent_path();
+  std::vector<std::filesystem::path> files;
+  try {
+    files = sim::ReferencedFiles(text, dir, world.filename().string());
+  } catch (const std::runtime_error& e) {  // a FIFO or a device named by file=
+    throw sim::ConfigError(world.string(), "", e.what());
+  }
+  const std::filesystem::path canonical_dir = std::filesystem::weakly_canonical(dir);
+  for (const std::filesystem::path& file : files) {
+    content +=
+        "\n-- " + file.lexically_relative(canonical_dir).string() + "\n" + sim::ReadTextFile(file);
+  }
+  return StableHash(content);
+}
+
+std::vector<std::string> ReadProfile(const std::filesystem::path& path) {
+  std::vector<std::string> lines;
+  for (ProfileLine& line : ReadProfileLines(path)) lines.push_back(std::move(line.text));
   return lines;
 }
 
@@ -181,7 +248,16 @@ void CheckSweepOverrides(const SweepSpec& spec) {
       }
     };
     check({}, "experiment");
-    for (const auto& profile : spec.profiles) check(ReadProfile(profile), "profiles");
+    for (const auto& profile : spec.profiles) {
+      const std::vector<std::string> lines = ReadProfile(profile);
+      try {
+        sim::LoadExperimentConfig(experiment, lines);
+      } catch (const sim::ConfigError& e) {
+        // Named by the profile file and line (was only "profiles", then the experiment).
+        throw sim::ConfigError(spec.source_file, "profiles: " + ProfileCulprit(experiment, profile),
+                               e.what());
+      }
+    }
     for (const auto& axis : spec.axes) {
       for (const auto& value : axis.values) check({axis.key + "=" + value}, "set." + axis.key);
     }

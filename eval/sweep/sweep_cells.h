@@ -52,6 +52,10 @@ void CheckSweepOverrides(const SweepSpec& spec);
 // @throws sim::ConfigError naming the file and line.
 std::vector<std::string> ReadProfile(const std::filesystem::path& path);
 
+// StableHash of a world file's text and of every file it names (sim::ReferencedFiles), by their
+// names relative to its folder: what a cell's id and sweep.json's inputs take the world to be.
+std::string WorldContentHash(const std::filesystem::path& world);
+
 // FNV-1a, 64 bit, as 16 hex digits: stable across machines and compilers.
 std::string StableHash(const std::string& text);
 

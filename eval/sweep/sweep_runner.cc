@@ -118,9 +118,10 @@ class Progress {
 // The hash of every file the cells are made from, by path.
 std::map<std::string, std::string> InputHashes(const SweepSpec& spec) {
   std::map<std::string, std::string> hashes;
-  for (const auto* files : {&spec.experiments, &spec.profiles, &spec.world_files}) {
+  for (const auto* files : {&spec.experiments, &spec.profiles}) {
     for (const fs::path& file : *files) hashes[file.string()] = StableHash(sim::ReadTextFile(file));
   }
+  for (const fs::path& world : spec.world_files) hashes[world.string()] = WorldContentHash(world);
   return hashes;
 }
 
@@ -156,6 +157,23 @@ SweepFolderLock::~SweepFolderLock() {
   for (int fd : fds_) close(fd);
 }
 
+namespace {
+
+// Whether `out` holds nothing but the lock files a sweep takes (SweepFolderLock): what a sweep
+// refused for a bad sweep file leaves behind. Such a folder was "holds files that are not a sweep",
+// so the corrected sweep could not run into it.
+bool HoldsOnlySweepLocks(const fs::path& out) {
+  for (const auto& entry : fs::directory_iterator(out)) {
+    const std::string name = entry.path().filename().string();
+    const bool lock = name == "sweep.lock" || (name.rfind("shard-", 0) == 0 && name.size() > 5 &&
+                                               name.compare(name.size() - 5, 5, ".lock") == 0);
+    if (!lock || !entry.is_regular_file()) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 void PrepareSweepFolder(const SweepSpec& spec, const fs::path& out) {
   std::error_code error;
   if (fs::exists(out, error)) {
@@ -163,7 +181,7 @@ void PrepareSweepFolder(const SweepSpec& spec, const fs::path& out) {
       throw sim::ConfigError(out.string(), "", "exists and is not a folder; choose another --out");
     }
     const fs::path copy = out / "sweep.yaml";
-    if (!fs::is_empty(out) && !fs::is_regular_file(copy)) {
+    if (!HoldsOnlySweepLocks(out) && !fs::is_regular_file(copy)) {
       throw sim::ConfigError(out.string(), "",
                              "holds files that are not a sweep (no sweep.yaml); choose another "
                              "--out");

@@ -216,6 +216,10 @@ CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptio
     }
   };
   for (; next_line(); ++number) {
+    // A UTF-8 byte-order mark (an editor's "UTF-8 with BOM") made the first line an unknown
+    // message, skipped without a word: a log's PARAM front_laser_max was lost, its scans scored
+    // against their largest range instead.
+    if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
     const std::size_t before = log.lasers.size();
     try {
       ParseCarmenLine(line, &log);

@@ -210,6 +210,21 @@ TEST(CarmenLogTest, AnInfiniteOrNonPositiveFrontLaserMaxIsRefusedWithItsLine) {
   }
 }
 
+// audit s35: a UTF-8 byte-order mark before the first line made it an unknown message, skipped
+// without a word: the PARAM front_laser_max was lost (scans scored against their largest range,
+// 3 m here) or the first scan dropped.
+TEST(CarmenLogTest, AByteOrderMarkBeforeTheFirstLineKeepsThatLine) {
+  const std::string bom = "\xEF\xBB\xBF";
+  const CarmenLog param =
+      ReadCarmenLog(WriteTemp("bom_param.log", bom + "PARAM front_laser_max 8 host 0\n" +
+                                                   Flaser("1 2 3", 3) + Flaser("2 2 2", 3)));
+  ASSERT_EQ(param.lasers.size(), 2u);
+  EXPECT_EQ(param.lasers[0].scan.range_max_m, 8.0);
+  const CarmenLog scan = ReadCarmenLog(WriteTemp("bom_scan.log", bom + Flaser("1 2 3", 3)));
+  ASSERT_EQ(scan.lasers.size(), 1u);
+  EXPECT_EQ(scan.lasers[0].line_number, 1u);
+}
+
 TEST(CarmenLogTest, AllZeroRangesWithoutAParamLeaveTheMaximumRangeUnknownAndAreRefused) {
   // Found by fuzzing: the largest range in the log stood in for the maximum, and was 0.
   const auto path = WriteTemp("zeros.log", Flaser("0 0 0", 3));

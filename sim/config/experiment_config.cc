@@ -266,7 +266,9 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
     const bool step_is_odd = config.physics.timestep_s < kMinTimestepS;
     top.Fail(step_is_odd ? "physics.timestep_s" : "duration_s",
              "duration_s / physics.timestep_s = " +
-                 FormatNumber(std::ceil(config.duration_s / config.physics.timestep_s)) +
+                 // ShortestNumber: a quotient past DBL_MAX (duration_s 1e308) reads "inf"
+                 // steps; FormatNumber, made for JSON, wrote "null steps".
+                 msgs::ShortestNumber(std::ceil(config.duration_s / config.physics.timestep_s)) +
                  " steps, more than the limit of " + FormatNumber(kMaxSimulationSteps));
   }
   ReadControllerConfig(top.Child("controller"), config.nominal, config.controller);

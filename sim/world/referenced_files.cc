@@ -1,5 +1,6 @@
 #include "sim/world/referenced_files.h"
 
+#include <algorithm>
 #include <cctype>
 #include <fstream>
 #include <set>
@@ -55,8 +56,10 @@ std::string ReadText(const fs::path& path) {
   return text.str();
 }
 
+// Checks the files `text` names and appends each one found (a regular file) to `found`, once.
 void Check(const std::string& text, const fs::path& dir, const fs::path& file_dir,
-           const std::string& source_name, std::set<fs::path>& scanned, int depth) {
+           const std::string& source_name, std::set<fs::path>& scanned,
+           std::vector<fs::path>& found, int depth) {
   const std::vector<Attribute> attributes = Attributes(text);
   std::vector<fs::path> folders = {dir, file_dir};
   for (const Attribute& a : attributes) {
@@ -79,11 +82,12 @@ void Check(const std::string& text, const fs::path& dir, const fs::path& file_di
                                  perception::WhyNotARegularFile(candidate) + ", named by " +
                                  a.name + "= in " + source_name);
       }
-      // An included model names files of its own.
       const fs::path key = fs::weakly_canonical(candidate);
+      if (std::find(found.begin(), found.end(), key) == found.end()) found.push_back(key);
+      // An included model names files of its own.
       if (candidate.extension() == ".xml" && depth < 16 && scanned.insert(key).second) {
         Check(ReadText(candidate), dir, candidate.parent_path(), candidate.filename().string(),
-              scanned, depth + 1);
+              scanned, found, depth + 1);
       }
     }
   }
@@ -94,7 +98,16 @@ void Check(const std::string& text, const fs::path& dir, const fs::path& file_di
 void RequireRegularReferencedFiles(const std::string& mjcf, const fs::path& dir,
                                    const std::string& source_name) {
   std::set<fs::path> scanned;
-  Check(mjcf, dir, dir, source_name, scanned, 0);
+  std::vector<fs::path> found;
+  Check(mjcf, dir, dir, source_name, scanned, found, 0);
+}
+
+std::vector<fs::path> ReferencedFiles(const std::string& mjcf, const fs::path& dir,
+                                      const std::string& source_name) {
+  std::set<fs::path> scanned;
+  std::vector<fs::path> found;
+  Check(mjcf, dir, dir, source_name, scanned, found, 0);
+  return found;
 }
 
 }  // namespace plywood::sim

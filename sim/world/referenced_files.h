@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace plywood::sim {
 
@@ -14,5 +15,13 @@ namespace plywood::sim {
 // <attribute>= in <file>" for the first such name.
 void RequireRegularReferencedFiles(const std::string& mjcf, const std::filesystem::path& dir,
                                    const std::string& source_name);
+
+// The files an MJCF text names, found as RequireRegularReferencedFiles looks for them (included
+// files' own names too), each once, canonical, in the order first named: what a world is made of
+// besides its own text. A name found nowhere is left out.
+// @throws std::runtime_error as RequireRegularReferencedFiles does.
+std::vector<std::filesystem::path> ReferencedFiles(const std::string& mjcf,
+                                                   const std::filesystem::path& dir,
+                                                   const std::string& source_name);
 
 }  // namespace plywood::sim
