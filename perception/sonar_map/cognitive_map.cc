@@ -80,13 +80,14 @@ std::optional<double> SideFromEchoes(const std::vector<BeamFreeGrid::FaceEcho>& 
 
 // The room side `side` moved out (sign -1 for x0 / y0, +1 for x1 / y1) to the farthest face that
 // at least min_echoes echoes heard from `direction` place within `agree` of each other (their
-// middle one), counting only faces more than `overrun` beyond the side; `side` when none.
+// middle one), counting only faces more than `overrun` beyond `fitted` (the side as the boundary
+// points placed it, before any free space moved it); `side` when none lies beyond it.
 double FarthestAgreedFace(const std::vector<BeamFreeGrid::FaceEcho>& echoes,
-                          BeamFreeGrid::Direction direction, double side, double sign,
-                          double overrun, int min_echoes, double agree) {
+                          BeamFreeGrid::Direction direction, double side, double fitted,
+                          double sign, double overrun, int min_echoes, double agree) {
   std::vector<double> faces;
   for (const BeamFreeGrid::FaceEcho& echo : echoes)
-    if (echo.direction == direction && sign * (echo.face - side) > overrun)
+    if (echo.direction == direction && sign * (echo.face - fitted) > overrun)
       faces.push_back(echo.face);
   std::sort(faces.begin(), faces.end());
   const std::size_t n = static_cast<std::size_t>(min_echoes);
@@ -398,6 +399,7 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
   // A side fitted well inside space the sonar saw free is an obstacle face against a wall that was
   // never heard (layout 3): no room wall has free space behind it, so the side moves out to the
   // outermost column (row) with at least min_wall_points free cells.
+  const Rect fitted = map.room;
   {
     std::vector<int> free_in_column(W, 0), free_in_row(H, 0);
     for (int iy = 0; iy < H; ++iy)
@@ -449,31 +451,48 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
       // The same from the faces those echoes place (BeamFreeGrid::face_echoes): min_echoes of them
       // within one cell of each other. Two axes 7 and 10 deg off the grid axis that heard the same
       // wall 2 m away put their echo points in different cells (world 19 seed 2), not their faces.
+      // The overrun is counted from the fitted side: a side the free columns already moved out
+      // (past an obstacle's face) still reaches the wall the axes heard beyond them, however near
+      // that wall lies to the outermost free column (seed 11 world 15 s1: columns to 2.45 m, the
+      // east wall heard at 2.73 m).
       const auto& echoes = beam_free->face_echoes();
-      map.room.x0 = FarthestAgreedFace(echoes, BeamFreeGrid::kWest, map.room.x0, -1.0, overrun,
-                                       min_echoes, res);
-      map.room.x1 = FarthestAgreedFace(echoes, BeamFreeGrid::kEast, map.room.x1, 1.0, overrun,
-                                       min_echoes, res);
-      map.room.y0 = FarthestAgreedFace(echoes, BeamFreeGrid::kSouth, map.room.y0, -1.0, overrun,
-                                       min_echoes, res);
-      map.room.y1 = FarthestAgreedFace(echoes, BeamFreeGrid::kNorth, map.room.y1, 1.0, overrun,
-                                       min_echoes, res);
+      map.room.x0 = FarthestAgreedFace(echoes, BeamFreeGrid::kWest, map.room.x0, fitted.x0, -1.0,
+                                       overrun, min_echoes, res);
+      map.room.x1 = FarthestAgreedFace(echoes, BeamFreeGrid::kEast, map.room.x1, fitted.x1, 1.0,
+                                       overrun, min_echoes, res);
+      map.room.y0 = FarthestAgreedFace(echoes, BeamFreeGrid::kSouth, map.room.y0, fitted.y0, -1.0,
+                                       overrun, min_echoes, res);
+      map.room.y1 = FarthestAgreedFace(echoes, BeamFreeGrid::kNorth, map.room.y1, fitted.y1, 1.0,
+                                       overrun, min_echoes, res);
     }
   }
   // Each side at the faces the sonar axes pointing that way heard head-on within the wall band of
   // it, when at least min_wall_points did (the fit above places it to a 5 cm cell and the network's
   // blur: about 5 mm short per side).
+  // A side the free space moved out stays at or beyond it (within a cell, the columns' grain):
+  // the faces heard within the band inside it are the obstacle's the fit had found, with space
+  // seen free behind them (seed 11 world 15 s1: the L's face at 2.37 m, columns free to 2.45 m).
   if (beam_free != nullptr && options.beam_free_min_passes > 0) {
     const auto& echoes = beam_free->face_echoes();
     const Rect r0 = map.room;
-    map.room.x0 = SideFromEchoes(echoes, BeamFreeGrid::kWest, r0.x0, r0.y0, r0.y1, band, min_pts)
-                      .value_or(r0.x0);
-    map.room.x1 = SideFromEchoes(echoes, BeamFreeGrid::kEast, r0.x1, r0.y0, r0.y1, band, min_pts)
-                      .value_or(r0.x1);
-    map.room.y0 = SideFromEchoes(echoes, BeamFreeGrid::kSouth, r0.y0, r0.x0, r0.x1, band, min_pts)
-                      .value_or(r0.y0);
-    map.room.y1 = SideFromEchoes(echoes, BeamFreeGrid::kNorth, r0.y1, r0.x0, r0.x1, band, min_pts)
-                      .value_or(r0.y1);
+    // The echoes' side, unless it lies more than a cell inside a side free space moved out.
+    auto placed = [res](std::optional<double> side, double moved, double fitted, double sign) {
+      if (!side) return moved;
+      if (moved != fitted && sign * (moved - *side) > res) return moved;
+      return *side;
+    };
+    map.room.x0 =
+        placed(SideFromEchoes(echoes, BeamFreeGrid::kWest, r0.x0, r0.y0, r0.y1, band, min_pts),
+               r0.x0, fitted.x0, -1.0);
+    map.room.x1 =
+        placed(SideFromEchoes(echoes, BeamFreeGrid::kEast, r0.x1, r0.y0, r0.y1, band, min_pts),
+               r0.x1, fitted.x1, 1.0);
+    map.room.y0 =
+        placed(SideFromEchoes(echoes, BeamFreeGrid::kSouth, r0.y0, r0.x0, r0.x1, band, min_pts),
+               r0.y0, fitted.y0, -1.0);
+    map.room.y1 =
+        placed(SideFromEchoes(echoes, BeamFreeGrid::kNorth, r0.y1, r0.x0, r0.x1, band, min_pts),
+               r0.y1, fitted.y1, 1.0);
   }
   if (map.room.x1 - map.room.x0 < res || map.room.y1 - map.room.y0 < res) {
     map.room = {inside.x() - res, inside.y() - res, inside.x() + res, inside.y() + res};

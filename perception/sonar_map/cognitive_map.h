@@ -19,7 +19,8 @@ struct CognitiveMapOptions {
   int min_obstacle_cells = 6;     // smaller occupied blobs inside the room are noise
   double wall_band_m = 0.15;      // occupied cells this close inside a wall line belong to it
   double min_passage_m = 0.45;    // free-free stretches narrower than the robot go into D
-  // A room side with more free space than this beyond it is an obstacle face, not the wall.
+  // A room side with more free space than this beyond it is an obstacle face, not the wall (the
+  // faces the axes agree on count from the fitted side, however far free columns moved it out).
   double side_free_overrun_m = 0.3;
   // An obstacle blob grows over every cell not seen free with P below this (<= eps): corner
   // echoes off the junction of an obstacle and a wall make its face look faintly free.

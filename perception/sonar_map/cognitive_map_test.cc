@@ -499,8 +499,9 @@ TEST(CognitiveMapTest, AWallHeardThroughTwoGapsOnlyIsPlacedFromTheEchoes) {
   EXPECT_EQ(beams.Echoes(11, 22, BeamFreeGrid::kWest), 2);
   EXPECT_EQ(beams.Echoes(11, 22, BeamFreeGrid::kEast), 0);
   const CognitiveMap after = BuildCognitiveMap(grid, kInside, {}, &beams);
-  // The echo's cell [0.55, 0.60]: its centre.
-  EXPECT_NEAR(after.room.x0, 0.575, kTol);
+  // The echo's cell [0.55, 0.60] moves the side out to its centre, and the face the echoes agree
+  // on, more than side_free_overrun_m beyond the fitted side, to the wall.
+  EXPECT_NEAR(after.room.x0, 0.56, 1e-9);
   EXPECT_NEAR(after.room.x1, kX1, kTol);
   // One echo is not enough (beam_free_min_passes 2): the side stays on the boxes. (One through
   // each gap is enough: the two place the same face, see the next test.)
@@ -529,6 +530,30 @@ TEST(CognitiveMapTest, AWallHeardOnceEachByTwoTiltedAxesIsPlacedAtTheFaceTheyAgr
   ring.readings[0].range_m = 2.5 - 0.70;
   apart.Integrate(ring, {2.5, 1.125, kPi - 0.12});
   EXPECT_NEAR(BuildCognitiveMap(grid, kInside, {}, &apart).room.x0, 1.55, kTol);
+}
+
+TEST(CognitiveMapTest, ASideTheFreeColumnsMovedOutStaysBeyondThemAndReachesTheWallHeardPastThem) {
+  // The boxes' faces at x 1.50-1.55 with a wide gap (rows 12-20, y 0.60-1.05) through which the
+  // network saw free space west to x = 0.75; nothing else west of the faces was seen. The fit puts
+  // the west side on the faces; the free columns (>= 5 free cells each) move it out to 0.75.
+  LogOddsGrid grid = BoxFacesWithGaps({12, 13, 14, 15, 16, 17, 18, 19, 20});
+  for (int iy = 12; iy <= 20; ++iy)
+    for (int ix = 15; ix <= 30; ++ix) Mark(grid, ix, iy, 0.02);
+  EXPECT_NEAR(BuildCognitiveMap(grid, kInside, {}).room.x0, 0.75, kTol);
+  constexpr double kPi = 3.14159265358979323846;
+  msgs::RangeRing ring;
+  ring.readings.push_back({msgs::Pose2D{0.0, 0.0, 0.0}, 1.30 - 0.85, true});
+  // Five axes heard a box's east face at x = 0.85, inside the free columns, head-on: within the
+  // wall band of 0.75, enough to place a side, but space seen free lies behind it.
+  BeamFreeGrid box(TestGridGeometry(), {});
+  for (int iy = 12; iy <= 20; iy += 2) box.Integrate(ring, {1.30, (iy + 0.5) * kRes, kPi});
+  EXPECT_NEAR(BuildCognitiveMap(grid, kInside, {}, &box).room.x0, 0.75, kTol);
+  // Two axes past the box heard the west wall (x = 0.55), 0.2 m beyond the free columns (less
+  // than side_free_overrun_m), 1 m beyond the fitted side: the side is the wall.
+  BeamFreeGrid wall = box;
+  ring.readings[0].range_m = 1.30 - 0.55;
+  for (int k = 0; k < 2; ++k) wall.Integrate(ring, {1.30, 0.875, kPi});
+  EXPECT_NEAR(BuildCognitiveMap(grid, kInside, {}, &wall).room.x0, 0.55, 1e-9);
 }
 
 TEST(CognitiveMapTest, OccupiedCellsTheAxesPassedDoNotJoinABoxToTheWall) {
