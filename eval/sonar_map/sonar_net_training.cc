@@ -211,7 +211,7 @@ void RequireWritablePlace(const std::filesystem::path& out) {
   // A file of the name the weights are staged under (sim::WriteTextFile), made and removed: a
   // read-only file system or a folder plywood may not write in (/sys) was found only when the
   // trained weights were saved, minutes later, as exit 1.
-  const std::string probe = out.string() + ".partial-" + std::to_string(getpid());
+  const std::string probe = sim::StagedTextFilePath(out).string();
   const int fd = open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
   if (fd < 0) {
     throw std::invalid_argument("train: --out: " + out.string() +

@@ -17,6 +17,10 @@ std::string ReadTextFile(const std::filesystem::path& path) {
   return text.str();
 }
 
+std::filesystem::path StagedTextFilePath(const std::filesystem::path& path) {
+  return path.string() + ".partial-" + std::to_string(getpid());
+}
+
 void WriteTextFile(const std::filesystem::path& path, const std::string& text) {
   std::error_code error;
   // A device or a FIFO (/dev/null, /dev/stdout) is written to: a rename would replace it.
@@ -26,8 +30,7 @@ void WriteTextFile(const std::filesystem::path& path, const std::string& text) {
     file.Close();
     return;
   }
-  // The pid keeps two processes writing the same file (Slurm tasks, a sweep and --collect) apart.
-  const std::filesystem::path partial = path.string() + ".partial-" + std::to_string(getpid());
+  const std::filesystem::path partial = StagedTextFilePath(path);
   try {
     FileWriter file(partial, path.string());
     file.out() << text;

@@ -97,9 +97,7 @@ void Check(const std::string& text, const fs::path& dir, const fs::path& file_di
 
 void RequireRegularReferencedFiles(const std::string& mjcf, const fs::path& dir,
                                    const std::string& source_name) {
-  std::set<fs::path> scanned;
-  std::vector<fs::path> found;
-  Check(mjcf, dir, dir, source_name, scanned, found, 0);
+  ReferencedFiles(mjcf, dir, source_name);
 }
 
 std::vector<fs::path> ReferencedFiles(const std::string& mjcf, const fs::path& dir,
