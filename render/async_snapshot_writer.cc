@@ -29,16 +29,27 @@ AsyncSnapshotWriter::~AsyncSnapshotWriter() {
 
 void AsyncSnapshotWriter::Write(const mjData* d, std::vector<PathOverlay> paths,
                                 std::filesystem::path path) {
-  Request request{sim::MjDataPtr(mj_copyData(nullptr, model_.get(), d)), std::move(paths),
+  sim::MjDataPtr spare;
+  {
+    std::lock_guard lock(mutex_);
+    if (written_) throw std::logic_error("AsyncSnapshotWriter::Write: called twice");
+    spare = std::move(spare_data_);
+  }
+  // Into the thread's spare data when it is ready (its pages already touched), else a new copy.
+  Request request{sim::MjDataPtr(mj_copyData(spare.release(), model_.get(), d)), std::move(paths),
                   std::move(path)};
   if (!request.data) throw std::runtime_error("snapshot: mj_copyData failed");
   {
     std::lock_guard lock(mutex_);
-    if (written_) throw std::logic_error("AsyncSnapshotWriter::Write: called twice");
     written_ = true;
     request_ = std::move(request);
   }
   requested_.notify_one();
+}
+
+bool AsyncSnapshotWriter::HandOverDataReady() {
+  std::lock_guard lock(mutex_);
+  return spare_data_ != nullptr;
 }
 
 SnapshotBackend AsyncSnapshotWriter::Finish() {
@@ -53,6 +64,17 @@ SnapshotBackend AsyncSnapshotWriter::Finish() {
 
 void AsyncSnapshotWriter::Work() {
   try {
+    // Write's destination, made first (a few ms): Write comes at the end of the run, or at once
+    // when the writer is made after it (then there is nothing to make).
+    bool spare_wanted = false;
+    {
+      std::lock_guard lock(mutex_);
+      spare_wanted = !written_;
+    }
+    if (sim::MjDataPtr spare(spare_wanted ? mj_makeData(model_.get()) : nullptr); spare) {
+      std::lock_guard lock(mutex_);
+      if (!written_) spare_data_ = std::move(spare);
+    }
     // Everything GL lives and dies on this thread, where its context is current.
     std::unique_ptr<TopDownRenderer> renderer;
     std::string why_software;

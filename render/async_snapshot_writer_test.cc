@@ -2,12 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iterator>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "render/offscreen_context.h"
 #include "sim/world/mujoco_handles.h"
@@ -70,10 +72,20 @@ class AsyncSnapshotWriterTest : public ::testing::Test {
     mj_forward(m_.get(), d_.get());
   }
   // The same picture through WriteSnapshot, and the writer's, as file bytes.
-  void ExpectSameBytesAsWriteSnapshot(const std::vector<PathOverlay>& paths) {
+  // With `into_ready_data`, Write is called once the thread's mjData for it is ready (as at the
+  // end of a run), else at once (usually before).
+  void ExpectSameBytesAsWriteSnapshot(const std::vector<PathOverlay>& paths,
+                                      bool into_ready_data = false) {
     AsyncSnapshotWriter writer(m_.get(), options_);
     MoveRobot();
+    if (into_ready_data) {
+      // Not a timing assertion: waits for the thread's first step, however long it takes.
+      while (!writer.HandOverDataReady()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
     writer.Write(d_.get(), paths, dir_ / "async.png");
+    if (into_ready_data) {
+      EXPECT_FALSE(writer.HandOverDataReady());  // taken by Write
+    }
     const mjtNum x = d_->qpos[0];
     d_->qpos[0] = 5.0;  // Write copied the state: changing it now must not show
     mj_forward(m_.get(), d_.get());
@@ -96,6 +108,12 @@ TEST_F(AsyncSnapshotWriterTest, OpenGlPngIsByteIdenticalToWriteSnapshot) {
   if (!OffscreenRenderingAvailable()) GTEST_SKIP() << "no offscreen OpenGL context here";
   ExpectSameBytesAsWriteSnapshot(PathsBeyondTheRoom());
   ExpectSameBytesAsWriteSnapshot(PathsFarSouth());
+}
+
+TEST_F(AsyncSnapshotWriterTest, WriteIntoTheThreadsReadyDataGivesTheSameBytes) {
+  if (!OffscreenRenderingAvailable()) GTEST_SKIP() << "no offscreen OpenGL context here";
+  ExpectSameBytesAsWriteSnapshot(PathsBeyondTheRoom(), true);
+  ExpectSameBytesAsWriteSnapshot(PathsFarSouth(), true);
 }
 
 TEST_F(AsyncSnapshotWriterTest, SoftwarePngIsByteIdenticalToWriteSnapshot) {
