@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "apps/command.h"
+#include "apps/decimal_whole_number.h"
 #include "eval/bench/bench_experiment.h"
 #include "sim/config/experiment_config.h"
 #include "sim/runner/format_number.h"
@@ -104,6 +105,7 @@ Command AddBenchCommand(CLI::App& app) {
       ->capture_default_str();
   cli->add_option("--repeats", options->repeats, "repetitions per figure; the fastest is printed")
       ->type_name("N")
+      ->transform(DecimalWholeNumber())
       ->capture_default_str();
   cli->add_option("--min-wall", options->min_wall_s,
                   "wall seconds each repetition runs at least (whole runs of --seconds)")

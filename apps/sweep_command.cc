@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "apps/command.h"
+#include "apps/decimal_whole_number.h"
 #include "eval/sweep/sweep.h"
 
 namespace plywood::apps {
@@ -45,6 +46,7 @@ Command AddSweepCommand(CLI::App& app) {
       ->type_name("DIR");
   cli->add_option("--jobs", inv.jobs, "runs at once (0: one per core)")
       ->type_name("N")
+      ->transform(DecimalWholeNumber())
       ->check(CLI::Range(0, 4096))
       ->capture_default_str();
   cli->add_option("--out", inv.out, "sweep directory")
@@ -63,11 +65,13 @@ Command AddSweepCommand(CLI::App& app) {
       cli->add_option("--max-parallel", inv.slurm_options.max_parallel,
                       "at most K array tasks at once (with --slurm; 0: no limit)")
           ->type_name("K")
+          ->transform(DecimalWholeNumber())
           ->check(CLI::Range(0, 100000))
           ->capture_default_str();
   CLI::Option* tasks = cli->add_option("--tasks", inv.slurm_options.tasks,
                                        "array tasks (with --slurm; 0: one per run, at most 1000)")
                            ->type_name("N")
+                           ->transform(DecimalWholeNumber())
                            ->check(CLI::Range(0, 100000))
                            ->capture_default_str();
   cli->add_flag("--dry-run", inv.dry_run, "with --slurm: write the script, do not submit it");

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "apps/command.h"
+#include "apps/decimal_whole_number.h"
 #include "eval/sonar_map/sonar_net_training.h"
 
 namespace plywood::apps {
@@ -79,18 +80,22 @@ Command AddTrainCommand(CLI::App& app) {
       ->capture_default_str();
   cli->add_option("--rooms", o.rooms, "random training rooms")
       ->type_name("N")
+      ->transform(DecimalWholeNumber())
       ->check(kCount)
       ->capture_default_str();
   cli->add_option("--test-rooms", o.test_rooms, "held-out rooms")
       ->type_name("N")
+      ->transform(DecimalWholeNumber())
       ->check(kCount)
       ->capture_default_str();
   cli->add_option("--poses", o.poses, "robot poses per room, one sonar ring each")
       ->type_name("N")
+      ->transform(DecimalWholeNumber())
       ->check(kCount)
       ->capture_default_str();
   cli->add_option("--epochs", o.train.epochs, "training epochs")
       ->type_name("N")
+      ->transform(DecimalWholeNumber())
       ->check(kCount)
       ->capture_default_str();
   cli->add_option("--hidden", flags->hidden, "tanh units of each hidden layer")
@@ -98,6 +103,7 @@ Command AddTrainCommand(CLI::App& app) {
       ->capture_default_str();
   cli->add_option("--seed", flags->seed, "seed of the rooms, poses, noise and initial weights")
       ->type_name("N")
+      ->transform(DecimalWholeNumber())
       ->check(kCount)
       ->capture_default_str();
   cli->add_flag("--quiet", flags->quiet, "print nothing");

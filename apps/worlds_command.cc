@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "apps/command.h"
+#include "apps/decimal_whole_number.h"
 #include "render/world_preview.h"
 #include "sim/world/generator/robot_reach.h"
 #include "sim/world/generator/world_families.h"
@@ -40,6 +41,7 @@ Command AddWorldsCommand(CLI::App& app) {
       ->required();
   generate->add_option("--count", flags->count, "how many worlds")
       ->type_name("N")
+      ->transform(DecimalWholeNumber())
       ->required()
       ->check(CLI::Range(1, sim::worldgen::kMaxWorldCount));
   generate->add_option("--seed", flags->seed, "seed of the draws; world i depends only on it")

@@ -948,5 +948,49 @@ TEST_F(ReliabilityTest, CsvOutputsHaveOneHeaderRowAndTimesAtTheStepPrecision) {
             "time_s,angle_min_rad,angle_increment_rad,range_max_m,range_0_");
 }
 
+// --- The seventh pass (docs/errors.md) --------------------------------------------------------
+
+// Subnormal numbers (1e-320) pass every "finite and > 0" check, but their reciprocal is infinite:
+// a wheel radius of 1e-320 m ended the run on a NaN wheel speed (exit 1), a track of 1e-320 m or a
+// gyro rate or quantisation step of 1e-320 ran to the end with every odometry figure null, exit 0.
+TEST_F(ReliabilityTest, SubnormalLengthsRatesAndStepsAreRefusedBeforeTheRun) {
+  const std::string yaml = HallExperiment(0.0, 0.0, "", "{encoders: {}, gyro: {}}");
+  for (const auto& [set, message] : std::vector<std::pair<std::string, std::string>>{
+           {"robot.nominal.wheel_radius_m=1e-320",
+            "robot.nominal.wheel_radius_m: must be in [0.001, 10] m, got 1e-320"},
+           {"robot.nominal.track_m=1e-320",
+            "robot.nominal.track_m: must be in [0.01, 100] m, got 1e-320"},
+           {"robot.nominal.wheel_radius_m=1e300",
+            "robot.nominal.wheel_radius_m: must be in [0.001, 10] m, got 1e+300"},
+           {"sensors.gyro.rate_hz=1e-320",
+            "sensors.gyro.rate_hz: its period 1 / rate_hz is not a finite number of seconds, got "
+            "1e-320"},
+           {"sensors.encoders.rate_hz=4.9e-324", "sensors.encoders.rate_hz: its period"},
+           {"sensors.gyro.quantisation_rad_s=1e-320",
+            "sensors.gyro.quantisation_rad_s: must be in [0, 35] rad/s, either 0 (off) or at least "
+            "1e-09, got 1e-320"}}) {
+    SCOPED_TRACE(set);
+    ExpectRefused(yaml, "--set " + set, {"experiment.yaml", message});
+  }
+  // The limits themselves run.
+  EXPECT_EQ(Run(yaml, "--set robot.nominal.track_m=0.01 --set sensors.gyro.quantisation_rad_s=1e-9")
+                .exit_code,
+            0);
+}
+
+// Every sensor option is printed in shortest form: the encoders' and bumpers' checks read
+// "got -0.000000" for -1e-9 and 301 digits for 1e300 (std::to_string).
+TEST_F(ReliabilityTest, SensorLimitsArePrintedInShortestForm) {
+  const std::string yaml = HallExperiment(0.0, 0.0, "", "{encoders: {}, bumpers: {}}");
+  ExpectRefused(yaml, "--set sensors.encoders.slip_sigma=-1e-9",
+                {"sensors.encoders.slip_sigma: must be in [0, 0.5], got -1e-09\n"});
+  ExpectRefused(yaml, "--set sensors.encoders.slip_sigma=1e300",
+                {"sensors.encoders.slip_sigma: must be in [0, 0.5], got 1e+300\n"});
+  ExpectRefused(yaml, "--set sensors.encoders.rate_hz=-1e-9",
+                {"sensors.encoders.rate_hz: must be a finite number > 0, got -1e-09\n"});
+  ExpectRefused(yaml, "--set sensors.bumpers.rate_hz=0",
+                {"sensors.bumpers.rate_hz: must be a finite number > 0, got 0\n"});
+}
+
 }  // namespace
 }  // namespace plywood

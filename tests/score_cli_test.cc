@@ -118,6 +118,12 @@ TEST(ScoreCliTest, BadFilesFailWithOneLineNamingFileLineAndField) {
       {"CSV estimate named with a space", "trajectory", "b6.csv",
        "time_s,my est_x_m,my est_y_m,my est_theta_rad\n0,-6.5,0,0\n",
        "b6.csv:1: my est_x_m: 'my est' cannot name a metric"},
+      {"CSV estimate named in Latin-1 (seventh pass: scored, and written by --out, under the key "
+       "'m\\ufffd', not the name in the file)",
+       "trajectory", "b7.csv", "time_s,m\xe9_x_m,m\xe9_y_m,m\xe9_theta_rad\n0,-6.5,0,0\n",
+       "b7.csv:1: m\xe9_x_m: 'm\xe9' cannot name a metric (no dots, commas or spaces; UTF-8 text)"},
+      {"lines extractor named in Latin-1 (seventh pass)", "lines", "k6.csv",
+       lines_header + "0,m\xe9,1,0,1,1\n", "k6.csv:2: extractor: 'm\xe9' cannot name a metric"},
       {"lines extractor 'scans' (audit s33: with --out, 'plywood: metrics key 'lines.scans' is "
        "also an object', naming no file)",
        "lines", "k5.csv", lines_header + "0,scans,1,0,1,1\n",

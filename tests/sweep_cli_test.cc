@@ -745,5 +745,98 @@ TEST(SweepCliTest, AFifoOrAFolderMatchedByAProfilesGlobIsRefusedNotWaitedOn) {
   }
 }
 
+// --- The seventh pass (docs/errors.md) --------------------------------------------------------
+
+// A sweep's seeds are read as an experiment's `seed:` is: decimal digits. yaml-cpp's own
+// conversion read `010` as octal (seed 8, where `plywood run --seed 010` runs seed 10) and `0x10`
+// as 16 (which an experiment refuses).
+TEST(SweepCliTest, SeedsAreReadInDecimalAsAnExperimentReadsThem) {
+  const fs::path dir = MakeTempDir("SweepDecimalSeeds");
+  const std::string experiment =
+      "experiment: " + (SourceRoot() / "experiments/default.yaml").string() + "\n";
+  const fs::path octal = WriteFile(dir / "octal.yaml", experiment + "seeds: [010, 7]\n");
+  const auto r = RunPlywood(
+      "sweep " + octal.string() + " --slurm --dry-run --out " + (dir / "octal").string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto cells = eval::ParseCsv(Slurp(dir / "octal" / "cells.csv"));
+  ASSERT_EQ(cells.size(), 3u);
+  const auto seed = std::find(cells[0].begin(), cells[0].end(), "seed") - cells[0].begin();
+  EXPECT_EQ(cells[1][seed], "10");
+  EXPECT_EQ(cells[2][seed], "7");
+  for (const char* bad : {"[0x10]", "{from: 0x1, to: 3}", "[1.5]"}) {
+    const fs::path hex = WriteFile(dir / "hex.yaml", experiment + "seeds: " + bad + "\n");
+    const auto refused = RunPlywood(
+        "sweep " + hex.string() + " --slurm --dry-run --out " + (dir / "hex").string(), dir);
+    EXPECT_EQ(refused.exit_code, 2) << bad << ": " << refused.err;
+    EXPECT_EQ(refused.err.rfind("plywood: " + hex.string() + ": seeds", 0), 0u) << refused.err;
+    EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
+    EXPECT_NE(refused.err.find("decimal"), std::string::npos) << refused.err;
+  }
+}
+
+// Two world files of one name in different folders are two worlds: summary.csv (and its plots)
+// used to label both by the stem, pooling their runs into one group, one mean over two worlds.
+TEST(SweepCliTest, TwoWorldFilesOfOneNameAreSummarisedApart) {
+  const fs::path dir = MakeTempDir("SweepSameWorldName");
+  const std::string hall = Slurp(SourceRoot() / "worlds/hall.xml");
+  fs::create_directories(dir / "a");
+  fs::create_directories(dir / "b");
+  const fs::path a = WriteFile(dir / "a" / "room.xml", hall);
+  const fs::path b = WriteFile(dir / "b" / "room.xml", hall + "<!-- the second room -->\n");
+  const fs::path sweep = WriteFile(
+      dir / "same.yaml", "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
+                             "\nseeds: [1]\nworlds: [" + a.string() + ", " + b.string() +
+                             "]\nset:\n  duration_s: [0.5]\n  output.snapshot: [false]\n"
+                             "metrics: [truth.distance_m]\ngroup_by: [world]\n");
+  const auto r =
+      RunPlywood("sweep " + sweep.string() + " --out " + (dir / "out").string() + " --jobs 2", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto summary = eval::ParseCsv(Slurp(dir / "out" / "summary.csv"));
+  ASSERT_EQ(summary.size(), 3u) << Slurp(dir / "out" / "summary.csv");  // header + one per world
+  EXPECT_EQ(summary[0][0], "world");
+  EXPECT_EQ(summary[1][0], a.string());
+  EXPECT_EQ(summary[2][0], b.string());
+  EXPECT_EQ(summary[1][2], "1");  // n
+  EXPECT_EQ(summary[2][2], "1");
+}
+
+// cells.json and sweep.json hold paths and values as JSON text, which must be UTF-8: a world file
+// named in Latin-1, or such an axis value, ended the sweep with nlohmann's "[json.exception.
+// type_error.316] invalid UTF-8 byte at index 12: 0xFF", exit 1, naming neither.
+TEST(SweepCliTest, APathOrAValueThatIsNotUtf8IsRefusedNamingItsField) {
+  const fs::path dir = MakeTempDir("SweepNotUtf8");
+  fs::create_directories(dir / "w");
+  WriteFile(dir / "w" /
+                "h\xff"
+                "all.xml",
+            Slurp(SourceRoot() / "worlds/hall.xml"));
+  const std::string experiment =
+      "experiment: " + (SourceRoot() / "experiments/default.yaml").string() + "\n";
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"worlds: [\"w/*.xml\"]\n", ": worlds: the path"},
+      {"set: {name: [\"a\xff"
+       "b\"]}\n",
+       ": set.name: the value"}};
+  for (const auto& [yaml, field] : cases) {
+    const fs::path sweep = WriteFile(dir / "s.yaml", experiment + yaml);
+    const auto r = RunPlywood("sweep " + sweep.string() + " --out " + (dir / "out").string(), dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.err.rfind("plywood: " + sweep.string() + field, 0), 0u) << r.err;
+    EXPECT_NE(r.err.find("not UTF-8"), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(CountRunDirs(dir / "out"), 0);
+  }
+  // A profile's line is kept in cells.json too.
+  const fs::path profile = WriteFile(dir / "p.set",
+                                     "# a comment\nname=a\xff"
+                                     "b\n");
+  const fs::path sweep = WriteFile(dir / "p.yaml", experiment + "profiles: [p.set]\n");
+  const auto r = RunPlywood("sweep " + sweep.string() + " --out " + (dir / "out").string(), dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("plywood: " + profile.string() + ": line 2: not UTF-8", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(CountRunDirs(dir / "out"), 0);
+}
+
 }  // namespace
 }  // namespace plywood

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "tests/support/cli_test_support.h"
 #include "tests/support/mujoco_test_support.h"
@@ -71,6 +72,35 @@ TEST(WorldsCliTest, BadInputNamesTheField) {
 
 namespace plywood {
 namespace {
+
+// Whole-number flags are read in decimal, as an experiment's numbers are: CLI11's own conversion
+// (strtoll base 0) made `--count 010` 8 worlds and took `--count 0x2` as 2 (seventh pass).
+TEST(WorldsCliTest, WholeNumberFlagsAreReadInDecimal) {
+  namespace fs = std::filesystem;
+  const fs::path dir = testing::MakeTempDir("worlds_cli_decimal");
+  ASSERT_EQ(
+      testing::RunPlywood(
+          "worlds generate room --count 010 --seed 2 --quiet --out " + (dir / "a").string(), dir)
+          .exit_code,
+      0);
+  int xml = 0;
+  for (const auto& e : fs::directory_iterator(dir / "a")) xml += e.path().extension() == ".xml";
+  EXPECT_EQ(xml, 10);
+  for (const std::string& args : std::vector<std::string>{
+           "worlds generate room --count 0x2 --seed 2 --out " + (dir / "b").string(),
+           "train sonar-net --seed 0x10 --out " + (dir / "n.txt").string(),
+           "train sonar-net --epochs 0b1 --out " + (dir / "n.txt").string(),
+           "sweep s.yaml --jobs 0x2", "bench --repeats 0x1"}) {
+    SCOPED_TRACE(args);
+    const auto r = testing::RunPlywood(args, dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.err.rfind("plywood: ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find("expected a whole number in decimal digits"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "not one line: " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(dir / "b"));
+  EXPECT_FALSE(fs::exists(dir / "n.txt"));
+}
 
 TEST(WorldsCliTest, ASecondGenerationReplacesTheFirstAndNothingElse) {
   namespace fs = std::filesystem;

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <string>
 
+#include "sim/config/utf8_text.h"
 #include "sim/runner/metrics.h"
 
 namespace plywood::eval {
@@ -21,9 +22,11 @@ void WriteScoreJson(const ScoreReport& report, const std::filesystem::path& out,
                     const std::filesystem::path& run_dir, const std::filesystem::path& scored);
 
 // Whether `name` can be one part of a dotted metrics key: not empty, no dot, no white space, no
-// comma or quote (it also goes into CSV and JSON).
+// comma or quote (it also goes into CSV and JSON), and UTF-8 text (JSON's: other bytes would be
+// written as U+FFFD, a key other than the name given).
 inline bool IsMetricName(const std::string& name) {
-  return !name.empty() && name.find_first_of(". \t\r\n,\"") == std::string::npos;
+  return !name.empty() && name.find_first_of(". \t\r\n,\"") == std::string::npos &&
+         sim::IsUtf8(name);
 }
 
 }  // namespace plywood::eval

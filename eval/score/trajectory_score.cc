@@ -82,7 +82,9 @@ ScoreReport ScoreTrajectoryFile(const std::filesystem::path& run_dir,
 
   std::string name = options.name.empty() ? TrajectoryNameOf(file) : options.name;
   if (!IsMetricName(name)) {
-    throw sim::ConfigError("--name", "", "'" + name + "' cannot name a metric (no dots or spaces)");
+    throw sim::ConfigError(
+        "--name", "",
+        "'" + name + "' cannot name a metric (no dots, commas or spaces; UTF-8 text)");
   }
   std::vector<NamedTrajectory> estimates = ReadTrajectoryFile(file, name);
   std::erase_if(estimates, [](const NamedTrajectory& t) { return t.name == "truth"; });

@@ -10,6 +10,7 @@
 
 #include "sim/config/config_error.h"
 #include "sim/config/experiment_config.h"
+#include "sim/config/utf8_text.h"
 #include "sim/config/yaml_text_value.h"
 #include "sim/runner/text_file.h"
 #include "sim/world/mujoco_handles.h"
@@ -189,6 +190,12 @@ std::vector<ProfileLine> ReadProfileLines(const std::filesystem::path& path) {
       throw sim::ConfigError(path.string(), "line " + std::to_string(number),
                              key + ": already set on line " + std::to_string(first->second) +
                                  " (one of the two values would be lost): remove one");
+    }
+    // The line is kept in cells.json, JSON text: other bytes than UTF-8 ended the sweep with
+    // nlohmann's "invalid UTF-8 byte", naming neither the profile nor its line.
+    if (!sim::IsUtf8(line)) {
+      throw sim::ConfigError(path.string(), "line " + std::to_string(number),
+                             "not UTF-8 text (a sweep records its lines in cells.json)");
     }
     lines.push_back({number, line});
   }

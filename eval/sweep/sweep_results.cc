@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include "eval/sweep/sweep_csv.h"
 #include "eval/sweep/sweep_meta.h"
@@ -231,8 +232,17 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
     if (values.size() > 1) group(axes[a], 6 + a);
   }
   // Files are labelled by their stem in the summary ("seed001_room_1"); results.csv keeps paths.
-  const auto label = [](std::size_t index, const std::string& value) {
-    return index == 1 || index == 2 ? fs::path(value).stem().string() : value;
+  // Two files of one stem (a/room.xml and b/room.xml) keep their paths: labelled alike, their
+  // runs would be pooled into one group, one mean over two worlds.
+  std::map<std::pair<std::size_t, std::string>, std::set<std::string>> files_of_stem;
+  for (const Row& row : finished) {
+    for (std::size_t i : {1, 2})
+      files_of_stem[{i, fs::path(row.cell[i]).stem().string()}].insert(row.cell[i]);
+  }
+  const auto label = [&](std::size_t index, const std::string& value) {
+    if (index != 1 && index != 2) return value;
+    const std::string stem = fs::path(value).stem().string();
+    return files_of_stem[{index, stem}].size() > 1 ? value : stem;
   };
   std::vector<std::vector<std::string>> groups;
   std::map<std::vector<std::string>, std::vector<const Row*>> members;

@@ -5,13 +5,16 @@
 
 #include <algorithm>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <utility>
 
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
+#include "sim/config/decimal_whole_number.h"
 #include "sim/config/robot_catalog.h"
+#include "sim/config/utf8_text.h"
 #include "sim/config/yaml_alias_expansion.h"
 #include "sim/config/yaml_fields.h"
 #include "sim/world/generator/world_families.h"
@@ -89,14 +92,14 @@ std::string ScalarText(const YAML::Node& node) {
 }
 
 void ReadSeeds(const YAML::Node& node, const sim::YamlFields& top, SweepSpec& spec) {
+  // Read as an experiment's `seed:` is, so `seeds: [010]` runs seed 10, not 8 (yaml-cpp's octal).
   const auto seed_of = [&](const YAML::Node& n, const std::string& field) -> std::uint64_t {
-    try {
-      const long long value = n.as<long long>();
-      if (value < 0) top.Fail(field, "a seed must be >= 0, got " + n.Scalar());
-      return static_cast<std::uint64_t>(value);
-    } catch (const YAML::Exception&) {
-      top.Fail(field, "expected a whole number, got '" + ScalarText(n) + "'");
-    }
+    const std::string text = ScalarText(n);
+    const std::optional<std::uint64_t> seed =
+        n.IsScalar() ? sim::ParseDecimalWholeNumber(text) : std::nullopt;
+    if (seed) return *seed;
+    if (n.IsScalar() && text.starts_with('-')) top.Fail(field, "a seed must be >= 0, got " + text);
+    top.Fail(field, "expected a whole number in decimal digits (at most 19), got '" + text + "'");
   };
   if (node.IsSequence()) {
     if (node.size() == 0) top.Fail("seeds", "empty list: give at least one seed");
@@ -222,6 +225,23 @@ std::vector<std::string> ReadNames(const YAML::Node& node, const sim::YamlFields
   return names;
 }
 
+// cells.json and sweep.json hold every path and axis value as JSON text, which must be UTF-8.
+void RequireUtf8(const SweepSpec& spec, const sim::YamlFields& top) {
+  const auto check = [&](const std::string& field, const std::string& text, bool is_path) {
+    if (sim::IsUtf8(text)) return;
+    top.Fail(field, std::string(is_path ? "the path '" : "the value '") + text +
+                        "' is not UTF-8 text (a sweep records it in cells.json): " +
+                        (is_path ? "rename the file" : "write it in UTF-8"));
+  };
+  for (const fs::path& p : spec.experiments) check("experiment", p.string(), true);
+  for (const fs::path& p : spec.profiles) check("profiles", p.string(), true);
+  for (const fs::path& p : spec.world_files) check("worlds", p.string(), true);
+  for (const SweepAxis& axis : spec.axes) {
+    check("set", axis.key, false);
+    for (const std::string& value : axis.values) check("set." + axis.key, value, false);
+  }
+}
+
 }  // namespace
 
 SweepSpec LoadSweepSpec(const fs::path& path) {
@@ -289,6 +309,7 @@ SweepSpec LoadSweepSpec(const fs::path& path) {
     }
   }
   top.Finish();
+  RequireUtf8(spec, top);
   return spec;
 }
 

@@ -153,6 +153,12 @@ YAML::Node WithEmptyContainersInFlowStyle(const YAML::Node& node) {
 void RequireRatesTheClockCanKeep(const YamlFields& top, const ExperimentConfig& config) {
   const double step_rate_hz = 1.0 / config.physics.timestep_s;
   const auto require = [&](const std::string& field, double rate_hz) {
+    // A subnormal rate (1e-320 Hz) has an infinite period: its schedule's times, and every figure
+    // computed from its samples, became NaN (metrics.json null, exit 0).
+    if (!std::isfinite(1.0 / rate_hz)) {
+      top.Fail(field, "its period 1 / rate_hz is not a finite number of seconds, got " +
+                          FormatNumber(rate_hz));
+    }
     if (rate_hz <= step_rate_hz * (1.0 + 1e-9)) return;
     top.Fail(field, "must be at most 1 / physics.timestep_s = " + FormatNumber(step_rate_hz) +
                         " Hz (one sample per physics step), got " + FormatNumber(rate_hz));

@@ -8,6 +8,7 @@
 
 #include "perception/logs/parse_number.h"
 #include "sim/config/config_error.h"
+#include "sim/config/decimal_whole_number.h"
 #include "sim/config/yaml_alias_expansion.h"
 
 namespace plywood::sim {
@@ -87,11 +88,9 @@ void YamlFields::Get(const std::string& key, std::uint64_t* value) {
   if (!Has(key)) return;
   used_.insert(key);
   const std::string text = Scalar(key, "a whole number").Scalar();
-  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos ||
-      text.size() > 19) {
-    Fail(key, "expected a non-negative whole number, got '" + text + "'");
-  }
-  *value = std::stoull(text);
+  const std::optional<std::uint64_t> parsed = ParseDecimalWholeNumber(text);
+  if (!parsed) Fail(key, "expected a non-negative whole number, got '" + text + "'");
+  *value = *parsed;
 }
 
 void YamlFields::Get(const std::string& key, bool* value) {

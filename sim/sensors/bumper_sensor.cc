@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "msgs/shortest_number.h"
 #include "sim/world/scene.h"
 
 namespace plywood::sim {
@@ -31,7 +32,7 @@ double AngularDistance(double a, double b) {
 void BumperSensorOptions::Validate() const {
   if (!std::isfinite(rate_hz) || rate_hz <= 0.0) {
     throw std::invalid_argument("rate_hz: must be a finite number > 0, got " +
-                                std::to_string(rate_hz));
+                                msgs::ShortestNumber(rate_hz));
   }
 }
 

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/shortest_number.h"
 #include "sim/world/scene.h"
 
 namespace plywood::sim {
@@ -15,12 +16,12 @@ void EncoderSensorOptions::Validate() const {
   }
   if (!std::isfinite(rate_hz) || rate_hz <= 0.0) {
     throw std::invalid_argument("rate_hz: must be a finite number > 0, got " +
-                                std::to_string(rate_hz));
+                                msgs::ShortestNumber(rate_hz));
   }
   // Beyond ~0.5 a Gaussian slip would regularly reverse a wheel's count.
   if (!std::isfinite(slip_sigma) || slip_sigma < 0.0 || slip_sigma > 0.5) {
     throw std::invalid_argument("slip_sigma: must be in [0, 0.5], got " +
-                                std::to_string(slip_sigma));
+                                msgs::ShortestNumber(slip_sigma));
   }
 }
 

@@ -38,8 +38,13 @@ void GyroSensorOptions::Validate() const {
   Require(
       std::isfinite(scale_factor_error) && scale_factor_error > -1.0 && scale_factor_error <= 1.0,
       "scale_factor_error", "in (-1, 1]", scale_factor_error);
-  Require(rate(quantisation_rad_s) && quantisation_rad_s >= 0.0, "quantisation_rad_s",
-          "in [0, 35] rad/s", quantisation_rad_s);
+  // 0 is off; a step below 1e-9 rad/s (finer than any gyro's least significant bit, ~1e-5) made
+  // rate / step infinite at 1e-320 (subnormal): every gyro reading NaN, every figure null.
+  constexpr double kMinQuantisationRadS = 1e-9;
+  Require(rate(quantisation_rad_s) &&
+              (quantisation_rad_s == 0.0 || quantisation_rad_s >= kMinQuantisationRadS),
+          "quantisation_rad_s", "in [0, 35] rad/s, either 0 (off) or at least 1e-09",
+          quantisation_rad_s);
 }
 
 GyroSensor::GyroSensor(const GyroSensorOptions& options, std::uint64_t seed)

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/shortest_number.h"
+
 namespace plywood::sim {
 namespace {
 
@@ -17,7 +19,7 @@ bool Reached(double time_s, double target_s) {
 SensorSchedule::SensorSchedule(double rate_hz) : rate_hz_(rate_hz) {
   if (!(rate_hz > 0.0) || !std::isfinite(rate_hz)) {
     throw std::invalid_argument("rate_hz: must be a finite number > 0, got " +
-                                std::to_string(rate_hz));
+                                msgs::ShortestNumber(rate_hz));
   }
 }
 
