@@ -1,7 +1,8 @@
 #pragma once
 
-#include <string_view>
 #include <utf8.h>  // utfcpp (Debian libutfcpp-dev)
+
+#include <string_view>
 
 namespace plywood::sim {
 
