@@ -32,6 +32,10 @@ struct CognitiveMapOptions {
   // 0.3-0.45 m that the grid narrowed (a face it places is 0.08 m short to 0.13 m out, 10-90 %)
   // and the scorer counts as free: generated rooms, seed 1, mean e 0.0187 -> 0.0162 with 0.2 m.
   double obstacle_join_m = 0.2;
+  // With the axes' free space (the reported map only): a piece within obstacle_join_m of a room
+  // side is not extended to it when the strip between them holds a cell the peel counts as heard
+  // free (obstacle_peel_free's cells): the gap was seen.
+  bool obstacle_wall_join_seen_free = false;
   // The rectangles span the blob's occupied cells (the faces heard) only, not the unknown cells
   // the blob grew over: a box's unheard inside lies between its faces anyway, while the unseen
   // gap between a box and a wall made the box reach the wall.
