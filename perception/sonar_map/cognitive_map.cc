@@ -668,14 +668,38 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
         merged = true;
       }
   }
-  // Pieces that close to a room side are extended to it.
+  // Pieces that close to a room side are extended to it, unless (the reported map, with
+  // obstacle_wall_join_seen_free) the strip's line along the side holds a cell the peel counts as
+  // heard free: then the space behind the piece was heard, and the piece's side there is the
+  // network's blur of a face it did not hear head-on, not a box against the wall.
+  const bool wall_join_seen_free = peel_free && options.obstacle_wall_join_seen_free;
+  auto strip_seen_free = [&](double x0, double y0, double x1, double y1) {
+    if (!wall_join_seen_free || x1 - x0 <= 0.0 || y1 - y0 <= 0.0) return false;
+    const Eigen::Vector2i a = grid.CellAt({x0, y0}), b = grid.CellAt({x1, y1});
+    for (int iy = std::max(0, a.y()); iy <= std::min(H - 1, b.y()); ++iy)
+      for (int ix = std::max(0, a.x()); ix <= std::min(W - 1, b.x()); ++ix) {
+        const Eigen::Vector2d c = grid.CellCentre(ix, iy);
+        if (c.x() > x0 && c.x() < x1 && c.y() > y0 && c.y() < y1 && is_axis_free(ix, iy))
+          return true;
+      }
+    return false;
+  };
   std::vector<int> kept_blob;
   for (std::size_t k = 0; k < blobs.size(); ++k) {
     Rect r = blobs[k];
-    if (r.x0 - map.room.x0 < join) r.x0 = map.room.x0;
-    if (map.room.x1 - r.x1 < join) r.x1 = map.room.x1;
-    if (r.y0 - map.room.y0 < join) r.y0 = map.room.y0;
-    if (map.room.y1 - r.y1 < join) r.y1 = map.room.y1;
+    const Rect& room = map.room;
+    if (r.x0 - room.x0 < join &&
+        !strip_seen_free(room.x0, r.y0, std::min(r.x0, room.x0 + res), r.y1))
+      r.x0 = room.x0;
+    if (room.x1 - r.x1 < join &&
+        !strip_seen_free(std::max(r.x1, room.x1 - res), r.y0, room.x1, r.y1))
+      r.x1 = room.x1;
+    if (r.y0 - room.y0 < join &&
+        !strip_seen_free(r.x0, room.y0, r.x1, std::min(r.y0, room.y0 + res)))
+      r.y0 = room.y0;
+    if (room.y1 - r.y1 < join &&
+        !strip_seen_free(r.x0, std::max(r.y1, room.y1 - res), r.x1, room.y1))
+      r.y1 = room.y1;
     if (!measured[k][0]) r.x0 = Snap(r.x0, xs, options.snap_distance_m);
     if (!measured[k][2]) r.x1 = Snap(r.x1, xs, options.snap_distance_m);
     if (!measured[k][1]) r.y0 = Snap(r.y0, ys, options.snap_distance_m);

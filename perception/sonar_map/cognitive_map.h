@@ -32,6 +32,14 @@ struct CognitiveMapOptions {
   // 0.3-0.45 m that the grid narrowed (a face it places is 0.08 m short to 0.13 m out, 10-90 %)
   // and the scorer counts as free: generated rooms, seed 1, mean e 0.0187 -> 0.0162 with 0.2 m.
   double obstacle_join_m = 0.2;
+  // With the axes' free space (the reported map only): a piece within obstacle_join_m of a room
+  // side is not extended to it when a cell of the strip's line along that side (within one cell of
+  // it, across the piece's span) counts as heard free for the peel (obstacle_peel_free's cells):
+  // the sonar heard the space along the wall behind the piece, so there is a gap, and the piece's
+  // side near the wall is the network's blur of a face it did not hear head-on. A box flush with
+  // the wall has its own back there, never heard free. Issue 14 round 34: generated rooms, p90
+  // 0.0786 -> 0.0660 (seed 10), held-out seeds 18 / 19 0.0474 -> 0.0436, 0.0581 -> 0.0545.
+  bool obstacle_wall_join_seen_free = true;
   // The rectangles span the blob's occupied cells (the faces heard) only, not the unknown cells
   // the blob grew over: a box's unheard inside lies between its faces anyway, while the unseen
   // gap between a box and a wall made the box reach the wall.

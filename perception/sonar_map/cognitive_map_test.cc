@@ -583,6 +583,47 @@ TEST(CognitiveMapTest, OccupiedCellsTheAxesPassedDoNotJoinABoxToTheWall) {
                  {kX0, 1.30, 1.55, 1.80});
 }
 
+TEST(CognitiveMapTest, ABoxIsNotExtendedToAWallWhenTheLineAlongTheWallBehindItWasHeardFree) {
+  // A box 0.30 m from the west wall (inner face 0.55), its west face never heard head-on: the
+  // network's blur paints occupied cells 0.15 m out from it (x 0.70-0.85), within obstacle_join_m
+  // of the wall, so the box was extended to the wall across the 0.30 m gap (issue 14 round 34:
+  // the largest class of the runs in (0.05, 0.10]).
+  const Rect box{0.85, 1.30, 1.35, 1.80};
+  LogOddsGrid grid = Room({box});
+  for (int iy = 26; iy <= 35; ++iy)
+    for (int ix = 14; ix <= 16; ++ix)
+      for (int k = 0; k < 6; ++k) grid.Add(ix, iy, 0.98);
+  // The test's room sides lie on cell edges, so the blob's side 0.15 m from the wall is also
+  // within the snap distance (d_e, 0.15 m) of it; a smaller d_e keeps snapping out of the test (in
+  // a run the fitted side lies anywhere, and a blob 0.15-0.2 m from it is joined, not snapped).
+  CognitiveMapOptions options;
+  options.snap_distance_m = 0.1;
+  const Rect extended{kX0, 1.30, 1.35, 1.80};
+  ExpectRectNear(BuildCognitiveMap(grid, kInside, options).obstacles.at(0), extended);
+  // Axes heading south along the wall (x 0.575, from y = 2.4 to the south wall at 0.55) heard the
+  // strip's line next to the wall free behind the box: a gap, not a box against the wall.
+  const double south = -0.5 * 3.14159265358979323846;
+  const BeamFreeGrid along_wall = Beams({{0.575, 2.4}}, south, 2.4 - 0.55);
+  const CognitiveMap map = BuildCognitiveMap(grid, kInside, options, &along_wall);
+  ASSERT_EQ(map.obstacles.size(), 1u);
+  ExpectRectNear(map.obstacles[0], {0.70, 1.30, 1.35, 1.80});
+  const int strip = map.partitions.Find({0.60, 1.55});
+  ASSERT_GE(strip, 0);
+  EXPECT_EQ(map.partitions.partitions()[strip].label, Label::kFree);
+  ExpectTilesTheRoom(map);
+  // Heard once (beam_free_min_passes 2), or off: extended as before.
+  const BeamFreeGrid once = Beams({{0.575, 2.4}}, south, 2.4 - 0.55, 1);
+  ExpectRectNear(BuildCognitiveMap(grid, kInside, options, &once).obstacles.at(0), extended);
+  CognitiveMapOptions off = options;
+  off.obstacle_wall_join_seen_free = false;
+  ExpectRectNear(BuildCognitiveMap(grid, kInside, off, &along_wall).obstacles.at(0), extended);
+  // Free cells heard only beside the piece, not along the wall, are no evidence of a gap (a box
+  // flush with the wall has its own back there, never heard free).
+  const BeamFreeGrid beside_piece = Beams({{0.675, 2.4}}, south, 2.4 - 0.55);
+  ExpectRectNear(BuildCognitiveMap(grid, kInside, options, &beside_piece).obstacles.at(0),
+                 extended);
+}
+
 TEST(CognitiveMapTest, AnLsNotchTheAxesHeardFreeIsNoPartOfItsRectangle) {
   // An L (1.0 x 0.3 m arm, 0.3 x 0.5 m arm on its west end) whose notch (x 1.80-2.50, y 1.30-1.80)
   // the network painted occupied along the inner face (y 1.30-1.60, its corner echoes), and axes
