@@ -121,9 +121,7 @@ std::vector<LinesCsvRow> ReadLinesCsv(const std::filesystem::path& path,
     if (row.scan < 0) table.Fail(csv, "scan", "must be >= 0, got " + std::to_string(row.scan));
     row.extractor = extractor < 0 ? default_extractor : csv.fields[extractor];
     if (!IsMetricName(row.extractor)) {
-      table.Fail(
-          csv, "extractor",
-          "'" + row.extractor + "' cannot name a metric (no dots, commas or spaces; UTF-8 text)");
+      table.Fail(csv, "extractor", NotAMetricName(row.extractor));
     }
     if (row.extractor == "scans") {  // lines.scans is the run's scan count
       table.Fail(csv, "extractor", "'scans' cannot name an extractor (lines.scans counts scans)");

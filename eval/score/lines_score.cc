@@ -15,9 +15,7 @@ ScoreReport ScoreLinesFile(const std::filesystem::path& run_dir, const std::file
   const RunLaserScans run = LoadRunLaserScans(run_dir);
   const std::string name = options.name.empty() ? TrajectoryNameOf(file) : options.name;
   if (!IsMetricName(name)) {
-    throw sim::ConfigError(
-        "--name", "",
-        "'" + name + "' cannot name a metric (no dots, commas or spaces; UTF-8 text)");
+    throw sim::ConfigError("--name", "", NotAMetricName(name));
   }
   const std::vector<LinesCsvRow> rows = ReadLinesCsv(file, name);
 

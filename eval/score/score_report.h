@@ -29,4 +29,9 @@ inline bool IsMetricName(const std::string& name) {
          sim::IsUtf8(name);
 }
 
+// What an error says of a `name` IsMetricName refuses: the rule, once for every reader.
+inline std::string NotAMetricName(const std::string& name) {
+  return "'" + name + "' cannot name a metric (no dots, commas or spaces; UTF-8 text)";
+}
+
 }  // namespace plywood::eval

@@ -46,8 +46,7 @@ std::vector<NamedTrajectory> ReadPlywoodCsv(const std::filesystem::path& path) {
     const std::string name = h[c].substr(0, h[c].size() - 4);
     // The name becomes the metric keys odometry.NAME.*: "my.est" would read as estimator "my".
     if (!IsMetricName(name)) {
-      header_error(h[c],
-                   "'" + name + "' cannot name a metric (no dots, commas or spaces; UTF-8 text)");
+      header_error(h[c], NotAMetricName(name));
     }
     if (h[c + 1] != name + "_y_m") header_error(h[c + 1], "expected " + name + "_y_m");
     if (h[c + 2] != name + "_theta_rad") header_error(h[c + 2], "expected " + name + "_theta_rad");

@@ -82,9 +82,7 @@ ScoreReport ScoreTrajectoryFile(const std::filesystem::path& run_dir,
 
   std::string name = options.name.empty() ? TrajectoryNameOf(file) : options.name;
   if (!IsMetricName(name)) {
-    throw sim::ConfigError(
-        "--name", "",
-        "'" + name + "' cannot name a metric (no dots, commas or spaces; UTF-8 text)");
+    throw sim::ConfigError("--name", "", NotAMetricName(name));
   }
   std::vector<NamedTrajectory> estimates = ReadTrajectoryFile(file, name);
   std::erase_if(estimates, [](const NamedTrajectory& t) { return t.name == "truth"; });
