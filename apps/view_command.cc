@@ -9,9 +9,12 @@
 #include <climits>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <initializer_list>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "apps/command.h"
@@ -112,6 +115,31 @@ void CheckViewFlags(const ViewFlags& flags, bool time_given, bool replay) {
   }
 }
 
+// A flag the chosen mode does not read was dropped without a word: `view RUN --seed 3` or `--set
+// duration_s=5` replayed the run as it was, `view RUN --bench` replayed instead of benchmarking,
+// `--bench --out DIR` wrote nothing there, `--bench-seconds 60` without --bench ran the
+// experiment's own duration.
+void RefuseFlagsTheModeIgnores(const CLI::App& cli, const ViewFlags& flags, bool replay) {
+  const auto refuse_given = [&](std::initializer_list<const char*> names, const std::string& why) {
+    for (const char* name : names) {
+      if (cli.count(name) > 0) throw UsageError("view: " + std::string(name) + ": " + why);
+    }
+  };
+  if (replay) {
+    refuse_given({"--bench", "--bench-seconds", "--seed", "--set", "--out", "--force", "--speed",
+                  "--paused", "--exit-at-end"},
+                 "only a live run (TARGET an experiment) takes it; " + flags.target +
+                     " is a run directory, replayed as it was recorded");
+    return;
+  }
+  if (flags.bench) {
+    refuse_given({"--out", "--force", "--screenshot", "--speed", "--paused", "--exit-at-end"},
+                 "--bench runs at 1x with every overlay on and writes no run; leave it out");
+    return;
+  }
+  refuse_given({"--bench-seconds"}, "only --bench takes it (a live run lasts duration_s)");
+}
+
 viewer::Speed SpeedOf(const std::string& text) {
   if (text == "1") return viewer::Speed::kRealTime;
   if (text == "10") return viewer::Speed::kTenTimes;
@@ -119,8 +147,22 @@ viewer::Speed SpeedOf(const std::string& text) {
   throw UsageError("--speed: expected 1, 10 or max, got '" + text + "'");
 }
 
+// Without a display GLFW's own line ended the view, exit 1: "plywood: error: viewer: cannot start
+// GLFW: X11: The DISPLAY environment variable is missing". A missing display is known before any
+// window: refused as the usage it is, with the ways out, after the target's own checks.
+void RequireDisplay() {
+  const char* x11 = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  if ((x11 != nullptr && *x11 != '\0') || (wayland != nullptr && *wayland != '\0')) return;
+  throw UsageError(
+      "view: no display to open a window on (DISPLAY is not set): run it in a desktop session or "
+      "under xvfb-run; plywood run writes the same results without a window");
+}
+
 int Replay(const ViewFlags& flags) {
-  viewer::ReplayViewer replay(viewer::LoadRunReplay(flags.target), WindowOf(flags));
+  viewer::RunReplayData data = viewer::LoadRunReplay(flags.target);
+  RequireDisplay();
+  viewer::ReplayViewer replay(std::move(data), WindowOf(flags));
   if (flags.screenshot.empty()) {
     if (flags.time_s >= 0.0) replay.controls().set_paused(true);
     if (flags.time_s >= 0.0) replay.ShowAt(flags.time_s);
@@ -240,18 +282,20 @@ Command AddViewCommand(CLI::App& app) {
       "  plywood view experiments/default.yaml\n"
       "  plywood view runs/default-seed1 --time 30\n"
       "  plywood view --bench");
-  return {cli, [flags, seed, time] {
+  return {cli, [cli, flags, seed, time] {
             if (flags->bench && flags->target.empty()) {
               flags->target = std::string(PLYWOOD_SOURCE_ROOT) + "/experiments/default.yaml";
             }
             if (flags->target.empty()) throw UsageError("view: TARGET is required");
             const bool replay = std::filesystem::is_directory(flags->target);
+            RefuseFlagsTheModeIgnores(*cli, *flags, replay);
             CheckViewFlags(*flags, time->count() > 0, replay);
             if (replay) return Replay(*flags);
             std::vector<std::string> overrides = flags->overrides;
             if (seed->count() > 0) overrides.push_back("seed=" + flags->seed);
             const sim::ExperimentConfig config =
                 sim::LoadExperimentConfig(flags->target, overrides);
+            RequireDisplay();
             return flags->bench ? Bench(*flags, config) : Live(*flags, config);
           }};
 #else

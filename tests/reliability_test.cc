@@ -992,5 +992,61 @@ TEST_F(ReliabilityTest, SensorLimitsArePrintedInShortestForm) {
                 {"sensors.bumpers.rate_hz: must be a finite number > 0, got 0\n"});
 }
 
+// audit s37: a rate legal in itself but far below 1 / duration_s (sensors.gyro.rate_hz: 1e-300)
+// ran to exit 0: the gyro read once at t = 0 and once at the end, off its schedule, with the noise
+// of a mean over the part of its 1e300 s period that had passed (sigma * sqrt(1e300 s / 2 s)),
+// and a 2 s seed004_exploration reported an EKF ate_rms_m of 1e142 m. Every rate field alike must
+// give a period within the run (1 Hz at least in runs shorter than 1 s).
+TEST_F(ReliabilityTest, RatesWhosePeriodOutlastsTheRunAreRefused) {
+  const std::string yaml = HallExperiment(0.0, 0.0, "controller: {type: square_path, side_m: 1}\n",
+                                          "{encoders: {}, gyro: {}, laser: {}}");
+  for (const std::string field :
+       {"sensors.gyro.rate_hz", "sensors.encoders.rate_hz", "sensors.laser.rate_hz",
+        "controller.rate_hz", "output.trajectory_rate_hz"}) {
+    SCOPED_TRACE(field);
+    ExpectRefused(yaml, "--set duration_s=2 --set " + field + "=1e-300",
+                  {"experiment.yaml: " + field +
+                   ": must be at least 0.5 Hz (one period within duration_s = 2 s): a longer "
+                   "period samples only at t = 0, got 1e-300\n"});
+  }
+  ExpectRefused(yaml, "--set sensors.gyro.rate_hz=0.9",
+                {"experiment.yaml: sensors.gyro.rate_hz: must be at least 1 Hz (the floor for "
+                 "runs shorter than 1 s): a longer period samples only at t = 0, got 0.9\n"});
+  // The limits themselves run: one period in a 2 s run, 1 Hz in a 0.5 s one.
+  EXPECT_EQ(Run(yaml, "--set duration_s=2 --set sensors.gyro.rate_hz=0.5").exit_code, 0);
+  EXPECT_EQ(Run(yaml, "--set sensors.gyro.rate_hz=1").exit_code, 0);
+}
+
+// audit s37: a run's name or world file in bytes that are not UTF-8 ran: metrics.json wrote
+// run.world as "h\uFFFDll.xml" (nlohmann's replacement, a name no file has) and config.yaml held
+// the name's raw bytes, which YAML readers refuse.
+TEST_F(ReliabilityTest, ANameOrWorldFileThatIsNotUtf8IsRefusedNamingItsField) {
+  const fs::path world = WorldDir() / "h\xe9ll.xml";
+  fs::copy_file(testing::SourceRoot() / "worlds/hall.xml", world,
+                fs::copy_options::overwrite_existing);
+  const std::string yaml = HallExperiment(0.0, 0.0);
+  ExpectRefused(yaml, "--set 'world=" + world.string() + "'",
+                {"experiment.yaml: world: the path '",
+                 "h\\xE9ll.xml' is not UTF-8 text "
+                 "(metrics.json records it): rename the file\n"});
+  ExpectRefused(yaml, "--set 'name=r\xff'",
+                {"experiment.yaml: name: 'r\\xFF' is not UTF-8 text (config.yaml records it): "
+                 "write it in UTF-8\n"});
+  // UTF-8 names run.
+  EXPECT_EQ(Run(yaml, "--set 'name=h\xc3\xa9ll'").exit_code, 0);
+}
+
+// audit s37: YAML tags the readers do not know (`duration_s: !custom 1`) were dropped without a
+// word, the scalar read as written. YAML's own core-schema tags still pass.
+TEST_F(ReliabilityTest, UnknownYamlTagsAreRefusedNamingTheirField) {
+  ExpectRefused(HallExperiment(0.0, 0.0, "seed: !custom 7\n"), "",
+                {"experiment.yaml: seed: the YAML tag '!custom' means nothing here"});
+  ExpectRefused(HallExperiment(0.0, 0.0, "lines: {extractors: [!<tag:x.org,2026:a> ransac]}\n"), "",
+                {"experiment.yaml: lines.extractors[0]: the YAML tag 'tag:x.org,2026:a'"});
+  ExpectRefused(HallExperiment(0.0, 0.0), "--set 'seed=!custom 7'",
+                {"experiment.yaml: seed: the YAML tag '!custom'"});
+  EXPECT_EQ(Run(HallExperiment(0.0, 0.0, "seed: !!int 7\n"), "").exit_code, 0);
+}
+
 }  // namespace
 }  // namespace plywood

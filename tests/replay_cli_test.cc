@@ -102,5 +102,21 @@ TEST(ReplayCliTest, ExtractorOptionsAreSetByKeyAndBadKeysAreNamed) {
   }
 }
 
+// audit s37: a log without PARAM front_laser_max is scored against its largest range. One absurd
+// range (1e300) became that maximum, so every no-return reading at the scanner's real maximum
+// (8 m here, 81.91 m in the Intel log) counted as a hit: exit 0, rays_explained another number.
+TEST(ReplayCliTest, ARangeNoLaserMeasuresIsRefusedWithItsLine) {
+  const fs::path dir = testing::MakeTempDir("replay_cli_huge_range");
+  std::string huge = GoodLine(0.1);
+  huge.replace(huge.find(' ', 11) + 1, 1, "1e300 ");
+  const fs::path log = testing::WriteFile(dir / "huge.log", GoodLine(0.0) + huge + GoodLine(0.2));
+  const Result r = RunPlywood("replay " + log.string() + " --out " + (dir / "out").string(), dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err, "plywood: " + log.string() +
+                       ":2: FLASER range: must be at most 10000 m (no robot's laser measures "
+                       "further), got 1e300\n");
+  EXPECT_FALSE(fs::exists(dir / "out" / "metrics.json"));
+}
+
 }  // namespace
 }  // namespace plywood

@@ -264,5 +264,34 @@ TEST(ScoreCliTest, OutNeverOverwritesTheRunOrTheScoredFile) {
   EXPECT_EQ(Slurp(tum), tum_before);
 }
 
+// audit s37: a file saved "UTF-8 with BOM" by an editor or a spreadsheet was refused with a
+// misleading line: a lines CSV with "\xEF\xBB\xBFscan: unknown column" (the mark invisible), a
+// trajectory.csv-layout file read as TUM ("tx: expected 8 fields ..., got 1"), a TUM file whose
+// first comment line was read as data ("line: expected 8 fields ..., got 17"). The mark is skipped,
+// as the CARMEN log and profile readers skip it: each scores as the file without it.
+TEST(ScoreCliTest, FilesWithAByteOrderMarkScoreAsWithout) {
+  const fs::path dir = testing::MakeTempDir("score_cli_bom");
+  for (const auto& [kind, file] :
+       std::vector<std::pair<std::string, std::string>>{{"lines", "lines.csv"},
+                                                        {"trajectory", "trajectory.csv"},
+                                                        {"trajectory", "trajectory.fused.tum"}}) {
+    SCOPED_TRACE(file);
+    const fs::path plain = testing::WriteFile(dir / file, Slurp(RunDir() / file));
+    const fs::path marked =
+        testing::WriteFile(dir / ("bom_" + file), "\xEF\xBB\xBF" + Slurp(RunDir() / file));
+    const auto expected = RunPlywood(
+        "score " + kind + " " + RunDir().string() + " " + plain.string() + " --name e", dir);
+    ASSERT_EQ(expected.exit_code, 0) << expected.err;
+    const auto r = RunPlywood(
+        "score " + kind + " " + RunDir().string() + " " + marked.string() + " --name e", dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    // The figures agree; the header line names the file.
+    const auto figures = [](const std::string& out) {
+      return out.substr(out.rfind('\n', out.size() - 2));
+    };
+    EXPECT_EQ(figures(r.out), figures(expected.out)) << r.out;
+  }
+}
+
 }  // namespace
 }  // namespace plywood

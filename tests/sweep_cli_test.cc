@@ -171,6 +171,10 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
       {"nested_aliases",
        {"experiment: " + experiment + "\n" + testing::NestedYamlAliases("laugh"),
         "the document expands to more than 1000000 YAML nodes"}},
+      // audit s37: a tag the reader knows nothing of was dropped, the value read as written.
+      {"unknown_tag",
+       {"experiment: " + experiment + "\nseeds: [!custom 1]\n",
+        "seeds[0]: the YAML tag '!custom' means nothing here"}},
   };
   for (const auto& [name, c] : cases) {
     SCOPED_TRACE(name);
@@ -836,6 +840,43 @@ TEST(SweepCliTest, APathOrAValueThatIsNotUtf8IsRefusedNamingItsField) {
   EXPECT_EQ(r.err.rfind("plywood: " + profile.string() + ": line 2: not UTF-8", 0), 0u) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_EQ(CountRunDirs(dir / "out"), 0);
+}
+
+// audit s37: a collect writes results.csv, failures.csv, summary.csv and plots one after another. A
+// collect that stopped after results.csv (killed, or refused as here: the sweep's metric is in no
+// run's metrics.json) left the previous collect's summary.csv beside the new results.csv, a summary
+// of runs that results.csv no longer holds. The earlier files now go before anything is written.
+TEST(SweepCliTest, ACollectThatStopsPartWayLeavesNoOlderSummary) {
+  const fs::path dir = MakeTempDir("SweepStaleSummary");
+  const fs::path sweep =
+      WriteFile(dir / "stale.yaml",
+                "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
+                    "\nseeds: [1]\nworlds: [" + (SourceRoot() / "worlds/hall.xml").string() +
+                    "]\nset:\n  duration_s: [0.5]\n  output.snapshot: [false]\n"
+                    "metrics: [truth.distance_m]\n");
+  const fs::path out = dir / "out";
+  const auto first = RunPlywood("sweep " + sweep.string() + " --out " + out.string(), dir);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  ASSERT_TRUE(fs::is_regular_file(out / "summary.csv"));
+  // The run is redone by an experiment that no longer reports the metric: same length, so the
+  // run's complete.json (which records each file's size) still vouches for it.
+  fs::path run;
+  for (const auto& e : fs::directory_iterator(out / "runs"))
+    if (e.is_directory() && e.path().filename().string()[0] != '.') run = e.path();
+  ASSERT_FALSE(run.empty());
+  std::string metrics = Slurp(run / "metrics.json");
+  const std::size_t at = metrics.find("\"distance_m\"");
+  ASSERT_NE(at, std::string::npos) << metrics;
+  metrics.replace(at, 12, "\"distanxe_m\"");
+  WriteFile(run / "metrics.json", metrics);
+
+  const auto again = RunPlywood("sweep --collect " + out.string(), dir);
+  EXPECT_EQ(again.exit_code, 2) << again.err;
+  EXPECT_NE(again.err.find("'truth.distance_m' is in no run's metrics.json"), std::string::npos)
+      << again.err;
+  ASSERT_TRUE(fs::is_regular_file(out / "results.csv"));
+  EXPECT_NE(Slurp(out / "results.csv").find("truth.distanxe_m"), std::string::npos);
+  EXPECT_FALSE(fs::exists(out / "summary.csv")) << "the previous collect's summary.csv was left";
 }
 
 }  // namespace

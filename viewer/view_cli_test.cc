@@ -139,6 +139,15 @@ TEST_F(ViewCliTest, FlagsThatCannotBeHonouredAreRefusedBeforeAnythingRuns) {
        "--size: width_px: must be in [64, 8192], got 99999999999"},
       {run.string() + " --size 640x-480 --screenshot x.png",
        "--size: height_px: must be in [64, 8192], got -480"},
+      // audit s37: flags the mode does not read were dropped without a word.
+      {run.string() + " --seed 3 --screenshot x.png",
+       "view: --seed: only a live run (TARGET an experiment) takes it; " + run.string() +
+           " is a run directory, replayed as it was recorded"},
+      {run.string() + " --set duration_s=5 --screenshot x.png", "view: --set: only a live run"},
+      {run.string() + " --bench --screenshot x.png", "view: --bench: only a live run"},
+      {"--bench --out " + (dir / "live").string(),
+       "view: --out: --bench runs at 1x with every overlay on and writes no run"},
+      {live + " --bench-seconds 5", "view: --bench-seconds: only --bench takes it"},
   };
   for (const auto& [args, culprit] : cases) {
     SCOPED_TRACE(args);
@@ -208,6 +217,35 @@ TEST_F(ViewCliTest, AnXServerKilledMidViewEndsItWithOneLineOfPlywoods) {
       << err;
   EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
   EXPECT_FALSE(std::filesystem::exists(dir / "out" / "metrics.json"));
+}
+
+// audit s37: without a display the view ended on GLFW's line, exit 1: "plywood: error: viewer:
+// cannot start GLFW: X11: The DISPLAY environment variable is missing". Now a usage line with the
+// ways out, exit 2, after the target's own checks and before any run folder is made.
+TEST_F(ViewCliTest, WithoutADisplayTheViewIsRefusedInOneLineBeforeAnythingRuns) {
+  const std::filesystem::path dir = MakeTempDir("view_cli_no_display");
+  const std::string experiment = (SourceRoot() / "experiments/default.yaml").string();
+  const std::string display = std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "";
+  const std::string wayland = std::getenv("WAYLAND_DISPLAY") ? std::getenv("WAYLAND_DISPLAY") : "";
+  unsetenv("DISPLAY");
+  unsetenv("WAYLAND_DISPLAY");
+  const testing::CliResult live = RunPlywood(
+      "view " + experiment + " --set duration_s=1 --out " + (dir / "live").string(), dir);
+  const testing::CliResult bench = RunPlywood("view --bench", dir);
+  const testing::CliResult bad = RunPlywood("view " + experiment + " --set duration_s=-1", dir);
+  if (!display.empty()) setenv("DISPLAY", display.c_str(), 1);
+  if (!wayland.empty()) setenv("WAYLAND_DISPLAY", wayland.c_str(), 1);
+  for (const testing::CliResult* result : {&live, &bench}) {
+    EXPECT_EQ(result->exit_code, 2) << result->err;
+    EXPECT_EQ(result->err,
+              "plywood: view: no display to open a window on (DISPLAY is not set): run it in a "
+              "desktop session or under xvfb-run; plywood run writes the same results without a "
+              "window\n");
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "live"));
+  // A bad experiment is still named first.
+  EXPECT_EQ(bad.exit_code, 2) << bad.err;
+  EXPECT_NE(bad.err.find("duration_s: must be a finite number > 0"), std::string::npos) << bad.err;
 }
 
 }  // namespace

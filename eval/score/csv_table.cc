@@ -61,7 +61,9 @@ CsvTable ReadCsv(const std::filesystem::path& path, const CsvReadOptions& option
   if (!in && !in.eof()) throw sim::ConfigError(table.file, "", "cannot read the file");
 
   std::size_t line = 1;
-  std::size_t i = 0;
+  // A UTF-8 byte-order mark (an editor's "UTF-8 with BOM") was read as part of the first column's
+  // name: "\xEF\xBB\xBFscan: unknown column", the mark invisible in the message.
+  std::size_t i = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
   bool have_header = !options.header;
   while (i < text.size()) {
     CsvRow row;

@@ -17,7 +17,9 @@ namespace {
 
 bool IsPlywoodCsv(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
+  bool first_line = true;  // a UTF-8 byte-order mark there hid "time_s" (read as a TUM file)
   for (std::string line; std::getline(in, line);) {
+    if (std::exchange(first_line, false) && line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);
     const auto first = line.find_first_not_of(" \t\r");
     if (first == std::string::npos || line[first] == '#') continue;
     return line.compare(first, 6, "time_s") == 0;

@@ -63,6 +63,34 @@ std::string Fixed(double value, const char* format) {
   return buffer;
 }
 
+// Each file is written whole (WriteTextFile renames it into place), but the set is written one
+// file after another: a collect killed after results.csv, or stopped by an error there ("'m' is
+// in no run's metrics.json"), or whose plotting failed, left the previous collect's summary.csv
+// and plots beside the new results.csv, as if they summarised it. They go first; a collect that
+// does not finish leaves fewer files, never older ones.
+void RemoveCollectedFiles(const fs::path& out_dir) {
+  for (const char* name : {"summary.csv", "failures.csv", "results.csv"}) {
+    std::error_code error;
+    fs::remove(out_dir / name, error);
+    if (error) {
+      throw sim::ConfigError((out_dir / name).string(), "",
+                             "cannot remove the previous collect's file: " + error.message());
+    }
+  }
+  std::error_code error;
+  const fs::path plots = out_dir / "plots";
+  if (!fs::is_directory(plots, error)) return;
+  for (const auto& entry : fs::directory_iterator(plots, error)) {
+    if (entry.path().extension() != ".png") continue;
+    std::error_code removed;
+    fs::remove(entry.path(), removed);
+    if (removed) {
+      throw sim::ConfigError(entry.path().string(), "",
+                             "cannot remove the previous collect's plot: " + removed.message());
+    }
+  }
+}
+
 }  // namespace
 
 double StudentT95(int dof) {
@@ -114,6 +142,7 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
   if (const auto damage = FindSweepMetaDamage(meta)) {
     throw sim::ConfigError(meta_file.string(), damage->field, damage->what);
   }
+  RemoveCollectedFiles(out_dir);
   const std::string sweep_build = meta.value("plywood_build_id", std::string());
   const auto axes = meta.value("axes", std::vector<std::string>{});
   auto chosen = meta.value("metrics", std::vector<std::string>{});

@@ -17,6 +17,7 @@
 #include "sim/config/utf8_text.h"
 #include "sim/config/yaml_alias_expansion.h"
 #include "sim/config/yaml_fields.h"
+#include "sim/config/yaml_tags.h"
 #include "sim/world/generator/world_families.h"
 
 namespace plywood::eval {
@@ -265,6 +266,7 @@ SweepSpec LoadSweepSpec(const fs::path& path) {
   if (!root.IsMap()) throw sim::ConfigError(path.string(), "", "expected a mapping");
   sim::RejectAliasExpansion(root, spec.source_file);
   sim::RejectDuplicateKeys(root, spec.source_file);  // a repeated axis would silently win
+  sim::RejectNonStandardTags(root, spec.source_file);
   const fs::path base_dir = fs::absolute(path).parent_path();
   sim::YamlFields top(root, spec.source_file, "");
   spec.name = path.stem().string();

@@ -45,7 +45,9 @@ std::size_t ParseCount(const std::string& token, const std::string& what, int mi
   return static_cast<std::size_t>(value);
 }
 
-// n ranges from t[first]; a negative range is refused.
+constexpr double kMaxLaserRangeM = 10000.0;
+
+// n ranges from t[first]; a negative range, or one beyond kMaxLaserRangeM, is refused.
 std::vector<double> ParseRanges(const std::vector<std::string>& t, std::size_t first, std::size_t n,
                                 const std::string& kind) {
   const std::string field = kind + " range";  // once per scan, not per beam
@@ -53,6 +55,13 @@ std::vector<double> ParseRanges(const std::vector<std::string>& t, std::size_t f
   for (std::size_t i = 0; i < n; ++i) {
     const double r = ParseNumber(t[first + i], field.c_str());
     if (r < 0.0) throw std::runtime_error(field + ": negative range " + t[first + i]);
+    // A log without PARAM front_laser_max is scored against its largest range: one absurd value
+    // (1e300) became the maximum, every no-return reading (81.91 m on a SICK) then counted as a
+    // hit and rays_explained changed without a word. No robot's laser measures 10 km.
+    if (r > kMaxLaserRangeM) {
+      throw std::runtime_error(field + ": must be at most 10000 m (no robot's laser measures " +
+                               "further), got " + t[first + i]);
+    }
     ranges[i] = r;
   }
   return ranges;

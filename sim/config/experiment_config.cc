@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cmath>
@@ -18,8 +19,10 @@
 #include "sim/config/config_fields.h"
 #include "sim/config/plugin_loader.h"
 #include "sim/config/robot_catalog.h"
+#include "sim/config/utf8_text.h"
 #include "sim/config/yaml_alias_expansion.h"
 #include "sim/config/yaml_fields.h"
+#include "sim/config/yaml_tags.h"
 #include "sim/world/mujoco_handles.h"
 #include "sim/world/world_spawns.h"
 
@@ -159,6 +162,20 @@ void RequireRatesTheClockCanKeep(const YamlFields& top, const ExperimentConfig& 
       top.Fail(field, "its period 1 / rate_hz is not a finite number of seconds, got " +
                           FormatNumber(rate_hz));
     }
+    // A period longer than the run samples only at t = 0: the rate means nothing, and the gyro's
+    // one read at the end, off its schedule, carried the noise of a mean over the part of its
+    // period that had passed, sigma * sqrt(period / elapsed): at 1e-300 Hz an EKF ate_rms_m of
+    // 1e142 m in a 2 s run. Runs shorter than 1 s (smoke runs) keep every rate of 1 Hz or more.
+    const double longest_period_s = std::max(config.duration_s, 1.0);
+    if (rate_hz * longest_period_s < 1.0 - 1e-9) {
+      const std::string floor =
+          config.duration_s >= 1.0
+              ? FormatNumber(1.0 / longest_period_s) +
+                    " Hz (one period within duration_s = " + FormatNumber(config.duration_s) + " s)"
+              : std::string("1 Hz (the floor for runs shorter than 1 s)");
+      top.Fail(field, "must be at least " + floor +
+                          ": a longer period samples only at t = 0, got " + FormatNumber(rate_hz));
+    }
     if (rate_hz <= step_rate_hz * (1.0 + 1e-9)) return;
     top.Fail(field, "must be at most 1 / physics.timestep_s = " + FormatNumber(step_rate_hz) +
                         " Hz (one sample per physics step), got " + FormatNumber(rate_hz));
@@ -213,6 +230,7 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
     if (!root.IsMap()) break;  // reported below as "expected a mapping"
     ApplyOverride(root, AliasedAssignment(assignment), "--set " + assignment);
   }
+  RejectNonStandardTags(root, source);  // after the overrides: a --set value may carry one too
 
   ExperimentConfig config;
   config.source_file = source;
@@ -225,6 +243,13 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
       config.name == "." || config.name.find("..") != std::string::npos) {
     top.Fail("name",
              "must be a plain folder name (no '/', '\\' or '..'), got '" + config.name + "'");
+  }
+  // config.yaml records the name as YAML text, which must be UTF-8 (a name of Latin-1 bytes, or
+  // the stem of a file so named, wrote a config.yaml other YAML readers refuse).
+  if (!IsUtf8(config.name)) {
+    top.Fail("name",
+             "'" + EscapeHighBytes(config.name) + "' is not UTF-8 text (config.yaml records it): " +
+                 (top.Has("name") ? "write it in UTF-8" : "rename the file or give a name:"));
   }
   top.Get("seed", &config.seed);
   top.Get("protocol", &config.protocol);
@@ -240,6 +265,12 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   }
   if (!top.Has("world")) top.Fail("world", "missing: give the world's MJCF file");
   top.Get("world", &config.world);
+  // metrics.json records the world file's name (run.world) as JSON text: bytes that are not UTF-8
+  // (a file named in Latin-1) were written as U+FFFD, a name no file has.
+  if (!IsUtf8(config.world)) {
+    top.Fail("world", "the path '" + EscapeHighBytes(config.world) +
+                          "' is not UTF-8 text (metrics.json records it): rename the file");
+  }
   config.world_path = ResolvePath(config.world, base_dir, top, "world");
 
   YamlFields robot = top.Child("robot");
