@@ -684,26 +684,45 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
       }
     return false;
   };
+  // A side the strip's evidence kept off the wall is not snapped onto it either (with
+  // obstacle_wall_snap_seen_free): d_e is smaller than obstacle_join_m, so the snap would join
+  // every such side nearer than d_e anyway. It may still snap to other lines.
+  const bool wall_snap_seen_free = options.obstacle_wall_snap_seen_free;
+  auto snap_off_wall = [&](double value, const std::vector<double>& earlier, bool off_wall,
+                           double wall) {
+    if (!off_wall || !wall_snap_seen_free) return Snap(value, earlier, options.snap_distance_m);
+    std::vector<double> others;
+    for (double e : earlier)
+      if (e != wall) others.push_back(e);
+    return Snap(value, others, options.snap_distance_m);
+  };
   std::vector<int> kept_blob;
   for (std::size_t k = 0; k < blobs.size(); ++k) {
     Rect r = blobs[k];
     const Rect& room = map.room;
-    if (r.x0 - room.x0 < join &&
-        !strip_seen_free(room.x0, r.y0, std::min(r.x0, room.x0 + res), r.y1))
-      r.x0 = room.x0;
-    if (room.x1 - r.x1 < join &&
-        !strip_seen_free(std::max(r.x1, room.x1 - res), r.y0, room.x1, r.y1))
-      r.x1 = room.x1;
-    if (r.y0 - room.y0 < join &&
-        !strip_seen_free(r.x0, room.y0, r.x1, std::min(r.y0, room.y0 + res)))
-      r.y0 = room.y0;
-    if (room.y1 - r.y1 < join &&
-        !strip_seen_free(r.x0, std::max(r.y1, room.y1 - res), r.x1, room.y1))
-      r.y1 = room.y1;
-    if (!measured[k][0]) r.x0 = Snap(r.x0, xs, options.snap_distance_m);
-    if (!measured[k][2]) r.x1 = Snap(r.x1, xs, options.snap_distance_m);
-    if (!measured[k][1]) r.y0 = Snap(r.y0, ys, options.snap_distance_m);
-    if (!measured[k][3]) r.y1 = Snap(r.y1, ys, options.snap_distance_m);
+    // Which sides (x0, y0, x1, y1) lie within obstacle_join_m of the room side with the strip's
+    // line along it heard free; the others that near are extended to it.
+    std::array<bool, 4> off_wall{false, false, false, false};
+    if (r.x0 - room.x0 < join) {
+      off_wall[0] = strip_seen_free(room.x0, r.y0, std::min(r.x0, room.x0 + res), r.y1);
+      if (!off_wall[0]) r.x0 = room.x0;
+    }
+    if (room.x1 - r.x1 < join) {
+      off_wall[2] = strip_seen_free(std::max(r.x1, room.x1 - res), r.y0, room.x1, r.y1);
+      if (!off_wall[2]) r.x1 = room.x1;
+    }
+    if (r.y0 - room.y0 < join) {
+      off_wall[1] = strip_seen_free(r.x0, room.y0, r.x1, std::min(r.y0, room.y0 + res));
+      if (!off_wall[1]) r.y0 = room.y0;
+    }
+    if (room.y1 - r.y1 < join) {
+      off_wall[3] = strip_seen_free(r.x0, std::max(r.y1, room.y1 - res), r.x1, room.y1);
+      if (!off_wall[3]) r.y1 = room.y1;
+    }
+    if (!measured[k][0]) r.x0 = snap_off_wall(r.x0, xs, off_wall[0], room.x0);
+    if (!measured[k][2]) r.x1 = snap_off_wall(r.x1, xs, off_wall[2], room.x1);
+    if (!measured[k][1]) r.y0 = snap_off_wall(r.y0, ys, off_wall[1], room.y0);
+    if (!measured[k][3]) r.y1 = snap_off_wall(r.y1, ys, off_wall[3], room.y1);
     if (r.x1 - r.x0 < res || r.y1 - r.y0 < res) continue;
     xs.insert(xs.end(), {r.x0, r.x1});
     ys.insert(ys.end(), {r.y0, r.y1});

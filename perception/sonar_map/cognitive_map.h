@@ -40,6 +40,12 @@ struct CognitiveMapOptions {
   // the wall has its own back there, never heard free. Issue 14 round 34: generated rooms, p90
   // 0.0786 -> 0.0660 (seed 10), held-out seeds 18 / 19 0.0474 -> 0.0436, 0.0581 -> 0.0545.
   bool obstacle_wall_join_seen_free = true;
+  // With obstacle_wall_join_seen_free: a side that evidence kept off the room side is not snapped
+  // (snap_distance_m) onto it either; it may still snap to other lines. d_e (0.15 m) is below
+  // obstacle_join_m, so the snap joined every piece nearer than d_e to the wall whatever the strip
+  // held. Issue 14 round 35: generated rooms, p90 0.0660 -> 0.0620 (seed 10), 0.0676 -> 0.0599
+  // (seed 5); held-out seeds 20 / 21: 11 / 13 runs down, none up.
+  bool obstacle_wall_snap_seen_free = true;
   // The rectangles span the blob's occupied cells (the faces heard) only, not the unknown cells
   // the blob grew over: a box's unheard inside lies between its faces anyway, while the unseen
   // gap between a box and a wall made the box reach the wall.

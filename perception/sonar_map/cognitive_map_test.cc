@@ -624,6 +624,45 @@ TEST(CognitiveMapTest, ABoxIsNotExtendedToAWallWhenTheLineAlongTheWallBehindItWa
                  extended);
 }
 
+TEST(CognitiveMapTest, ABoxIsNotSnappedToAWallWhenTheLineAlongTheWallBehindItWasHeardFree) {
+  // The box of the test above, 0.30 m from the west wall, its west face's blur painted out to
+  // x 0.70, 0.15 m from the wall. Snapping (d_e) pulled such a side onto the wall whatever the
+  // strip behind it held: d_e is below obstacle_join_m, so round 34's evidence acted only for
+  // pieces 0.15-0.2 m from the wall (issue 14 round 35). In a run the fitted side lies anywhere
+  // on the cell grid and a piece's side 0.125-0.15 m from it; here both lie on cell edges, exactly
+  // 0.15 m apart, so a d_e of 0.18 m (still below obstacle_join_m) stands in for that.
+  const Rect box{0.85, 1.30, 1.35, 1.80};
+  LogOddsGrid grid = Room({box});
+  for (int iy = 26; iy <= 35; ++iy)
+    for (int ix = 14; ix <= 16; ++ix)
+      for (int k = 0; k < 6; ++k) grid.Add(ix, iy, 0.98);
+  CognitiveMapOptions options;
+  options.snap_distance_m = 0.18;
+  options.obstacle_wall_snap_seen_free = true;
+  const Rect extended{kX0, 1.30, 1.35, 1.80};
+  ExpectRectNear(BuildCognitiveMap(grid, kInside, options).obstacles.at(0), extended);
+  // Axes heading south along the wall (x 0.575) heard the strip's line next to the wall free: the
+  // piece keeps its own side and the strip is free.
+  const double south = -0.5 * 3.14159265358979323846;
+  const BeamFreeGrid along_wall = Beams({{0.575, 2.4}}, south, 2.4 - 0.55);
+  const CognitiveMap map = BuildCognitiveMap(grid, kInside, options, &along_wall);
+  ASSERT_EQ(map.obstacles.size(), 1u);
+  ExpectRectNear(map.obstacles[0], {0.70, 1.30, 1.35, 1.80});
+  const int strip = map.partitions.Find({0.60, 1.55});
+  ASSERT_GE(strip, 0);
+  EXPECT_EQ(map.partitions.partitions()[strip].label, Label::kFree);
+  ExpectTilesTheRoom(map);
+  // Without the rule the snap joins it to the wall across the heard strip.
+  CognitiveMapOptions off = options;
+  off.obstacle_wall_snap_seen_free = false;
+  ExpectRectNear(BuildCognitiveMap(grid, kInside, off, &along_wall).obstacles.at(0), extended);
+  // Free cells heard only beside the piece, not along the wall, are no evidence of a gap: a box
+  // flush with the wall keeps being joined to it.
+  const BeamFreeGrid beside_piece = Beams({{0.675, 2.4}}, south, 2.4 - 0.55);
+  ExpectRectNear(BuildCognitiveMap(grid, kInside, options, &beside_piece).obstacles.at(0),
+                 extended);
+}
+
 TEST(CognitiveMapTest, AnLsNotchTheAxesHeardFreeIsNoPartOfItsRectangle) {
   // An L (1.0 x 0.3 m arm, 0.3 x 0.5 m arm on its west end) whose notch (x 1.80-2.50, y 1.30-1.80)
   // the network painted occupied along the inner face (y 1.30-1.60, its corner echoes), and axes

@@ -24,6 +24,7 @@ void VisitFields(A& a, perception::SonarExplorerOptions& o) {
   a("side_free_overrun_m", o.map.side_free_overrun_m);
   a("obstacle_join_m", o.map.obstacle_join_m);
   a("obstacle_wall_join_seen_free", o.map.obstacle_wall_join_seen_free);
+  a("obstacle_wall_snap_seen_free", o.map.obstacle_wall_snap_seen_free);
   a("obstacle_free_p", o.map.obstacle_free_p);
   a("fit_obstacle_sides", o.map.fit_obstacle_sides);
   a("obstacle_min_fill", o.map.obstacle_min_fill);
