@@ -142,6 +142,40 @@ std::vector<Eigen::Vector2i> TrimThinEnds(const std::vector<Eigen::Vector2i>& ce
 
 namespace {
 
+// TrimThinEnds' result `kept` with every dropped end restored whose cells (those of `cells` beyond
+// the kept cells' extent on that side) hold at least min_echoes echo points (`echoes`: per cell,
+// row-major over a grid `width` cells wide): such an end is a face heard head-on, not a wedge.
+std::vector<Eigen::Vector2i> RestoreHeardEnds(const std::vector<Eigen::Vector2i>& cells,
+                                              const std::vector<Eigen::Vector2i>& kept,
+                                              const std::vector<int>& echoes, int width,
+                                              int min_echoes) {
+  if (kept.empty()) return kept;
+  int x0 = kept.front().x(), x1 = x0, y0 = kept.front().y(), y1 = y0;
+  for (const Eigen::Vector2i& c : kept) {
+    x0 = std::min(x0, c.x()), x1 = std::max(x1, c.x());
+    y0 = std::min(y0, c.y()), y1 = std::max(y1, c.y());
+  }
+  int heard[4] = {0, 0, 0, 0};  // beyond x0, x1, y0, y1
+  int ax0 = x0, ax1 = x1, ay0 = y0, ay1 = y1;
+  for (const Eigen::Vector2i& c : cells) {
+    const int n = echoes[static_cast<std::size_t>(c.y()) * width + c.x()];
+    if (c.x() < x0) heard[0] += n;
+    if (c.x() > x1) heard[1] += n;
+    if (c.y() < y0) heard[2] += n;
+    if (c.y() > y1) heard[3] += n;
+    ax0 = std::min(ax0, c.x()), ax1 = std::max(ax1, c.x());
+    ay0 = std::min(ay0, c.y()), ay1 = std::max(ay1, c.y());
+  }
+  if (heard[0] >= min_echoes) x0 = ax0;
+  if (heard[1] >= min_echoes) x1 = ax1;
+  if (heard[2] >= min_echoes) y0 = ay0;
+  if (heard[3] >= min_echoes) y1 = ay1;
+  std::vector<Eigen::Vector2i> out;
+  for (const Eigen::Vector2i& c : cells)
+    if (c.x() >= x0 && c.x() <= x1 && c.y() >= y0 && c.y() <= y1) out.push_back(c);
+  return out;
+}
+
 long ExtentArea(const std::vector<Eigen::Vector2i>& cells) {
   if (cells.empty()) return 0;
   Eigen::Vector2i lo = cells.front(), hi = cells.front();
@@ -344,6 +378,20 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
     return axis_free[i] != 0 || net_free_clear[i] != 0;
   };
 
+  // Echo points of the grid-aligned axes in each obstacle cell (the trim keeps an end holding
+  // enough of them; the reported map only, like the peel).
+  const bool trim_keeps_heard_ends = peel_free && options.obstacle_trim_keeps_heard_ends;
+  std::vector<int> heard_echoes;
+  if (trim_keeps_heard_ends) {
+    heard_echoes.assign(occ.size(), 0);
+    for (int iy = 0; iy < H; ++iy)
+      for (int ix = 0; ix < W; ++ix)
+        if (is_obstacle_occ(ix, iy))
+          for (const auto d : {BeamFreeGrid::kWest, BeamFreeGrid::kEast, BeamFreeGrid::kSouth,
+                               BeamFreeGrid::kNorth})
+            heard_echoes[static_cast<std::size_t>(iy) * W + ix] += beam_free->Echoes(ix, iy, d);
+  }
+
   Eigen::Vector2i c0 = grid.CellAt(inside);
   if (c0.x() < 0) throw std::invalid_argument("inside: the point is outside the grid");
 
@@ -538,7 +586,12 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
       for (const auto& c : cells) occupied_cells += is_obstacle_occ(c.x(), c.y());
       if (occupied_cells < options.min_obstacle_cells) continue;
       // Rows and columns are judged full with the unknown inside, which fills them.
-      if (options.obstacle_min_fill > 0.0) cells = TrimThinEnds(cells, options.obstacle_min_fill);
+      if (options.obstacle_min_fill > 0.0) {
+        std::vector<Eigen::Vector2i> kept = TrimThinEnds(cells, options.obstacle_min_fill);
+        if (trim_keeps_heard_ends && kept.size() < cells.size())
+          kept = RestoreHeardEnds(cells, kept, heard_echoes, W, options.beam_free_min_passes);
+        cells = std::move(kept);
+      }
       // The blob's unknown cells join the faces heard, but the space never seen between an
       // obstacle and a wall is no part of the obstacle: its sides come from the faces alone.
       if (options.obstacle_from_faces)

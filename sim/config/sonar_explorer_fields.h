@@ -28,6 +28,7 @@ void VisitFields(A& a, perception::SonarExplorerOptions& o) {
   a("obstacle_free_p", o.map.obstacle_free_p);
   a("fit_obstacle_sides", o.map.fit_obstacle_sides);
   a("obstacle_min_fill", o.map.obstacle_min_fill);
+  a("obstacle_trim_keeps_heard_ends", o.map.obstacle_trim_keeps_heard_ends);
   a("obstacle_split_saving", o.map.obstacle_split_saving);
   a("obstacle_from_faces", o.map.obstacle_from_faces);
   a("beam_free_min_passes", o.map.beam_free_min_passes);
