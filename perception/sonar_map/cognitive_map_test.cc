@@ -583,16 +583,23 @@ TEST(CognitiveMapTest, OccupiedCellsTheAxesPassedDoNotJoinABoxToTheWall) {
                  {kX0, 1.30, 1.55, 1.80});
 }
 
+// A box 0.30 m from the west wall (inner face 0.55, box x 0.85-1.35, y 1.30-1.80) whose west face
+// was never heard head-on: the network's blur paints occupied cells 0.15 m out from it (x
+// 0.70-0.85).
+LogOddsGrid BoxBlurredTowardTheWestWall() {
+  LogOddsGrid grid = Room({{0.85, 1.30, 1.35, 1.80}});
+  for (int iy = 26; iy <= 35; ++iy)
+    for (int ix = 14; ix <= 16; ++ix)
+      for (int k = 0; k < 6; ++k) grid.Add(ix, iy, 0.98);
+  return grid;
+}
+
 TEST(CognitiveMapTest, ABoxIsNotExtendedToAWallWhenTheLineAlongTheWallBehindItWasHeardFree) {
   // A box 0.30 m from the west wall (inner face 0.55), its west face never heard head-on: the
   // network's blur paints occupied cells 0.15 m out from it (x 0.70-0.85), within obstacle_join_m
   // of the wall, so the box was extended to the wall across the 0.30 m gap (issue 14 round 34:
   // the largest class of the runs in (0.05, 0.10]).
-  const Rect box{0.85, 1.30, 1.35, 1.80};
-  LogOddsGrid grid = Room({box});
-  for (int iy = 26; iy <= 35; ++iy)
-    for (int ix = 14; ix <= 16; ++ix)
-      for (int k = 0; k < 6; ++k) grid.Add(ix, iy, 0.98);
+  const LogOddsGrid grid = BoxBlurredTowardTheWestWall();
   // The test's room sides lie on cell edges, so the blob's side 0.15 m from the wall is also
   // within the snap distance (d_e, 0.15 m) of it; a smaller d_e keeps snapping out of the test (in
   // a run the fitted side lies anywhere, and a blob 0.15-0.2 m from it is joined, not snapped).
@@ -631,11 +638,7 @@ TEST(CognitiveMapTest, ABoxIsNotSnappedToAWallWhenTheLineAlongTheWallBehindItWas
   // pieces 0.15-0.2 m from the wall (issue 14 round 35). In a run the fitted side lies anywhere
   // on the cell grid and a piece's side 0.125-0.15 m from it; here both lie on cell edges, exactly
   // 0.15 m apart, so a d_e of 0.18 m (still below obstacle_join_m) stands in for that.
-  const Rect box{0.85, 1.30, 1.35, 1.80};
-  LogOddsGrid grid = Room({box});
-  for (int iy = 26; iy <= 35; ++iy)
-    for (int ix = 14; ix <= 16; ++ix)
-      for (int k = 0; k < 6; ++k) grid.Add(ix, iy, 0.98);
+  const LogOddsGrid grid = BoxBlurredTowardTheWestWall();
   CognitiveMapOptions options;
   options.snap_distance_m = 0.18;
   options.obstacle_wall_snap_seen_free = true;
