@@ -7,6 +7,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "perception/logs/byte_order_mark.h"
 #include "perception/logs/parse_number.h"
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
@@ -63,7 +64,8 @@ CsvTable ReadCsv(const std::filesystem::path& path, const CsvReadOptions& option
   std::size_t line = 1;
   // A UTF-8 byte-order mark (an editor's "UTF-8 with BOM") was read as part of the first column's
   // name: "\xEF\xBB\xBFscan: unknown column", the mark invisible in the message.
-  std::size_t i = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
+  std::size_t i =
+      text.starts_with(perception::kUtf8ByteOrderMark) ? perception::kUtf8ByteOrderMark.size() : 0;
   bool have_header = !options.header;
   while (i < text.size()) {
     CsvRow row;

@@ -8,6 +8,7 @@
 
 #include "eval/score/csv_table.h"
 #include "eval/score/score_report.h"
+#include "perception/logs/byte_order_mark.h"
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
 #include "sim/runner/metrics.h"
@@ -19,7 +20,7 @@ bool IsPlywoodCsv(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   bool first_line = true;  // a UTF-8 byte-order mark there hid "time_s" (read as a TUM file)
   for (std::string line; std::getline(in, line);) {
-    if (std::exchange(first_line, false) && line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);
+    if (std::exchange(first_line, false)) perception::DropUtf8ByteOrderMark(line);
     const auto first = line.find_first_not_of(" \t\r");
     if (first == std::string::npos || line[first] == '#') continue;
     return line.compare(first, 6, "time_s") == 0;

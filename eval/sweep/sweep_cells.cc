@@ -8,6 +8,7 @@
 #include <map>
 #include <utility>
 
+#include "perception/logs/byte_order_mark.h"
 #include "sim/config/config_error.h"
 #include "sim/config/experiment_config.h"
 #include "sim/config/utf8_text.h"
@@ -172,7 +173,7 @@ std::vector<ProfileLine> ReadProfileLines(const std::filesystem::path& path) {
     ++number;
     // A UTF-8 byte-order mark (an editor's "UTF-8 with BOM") was read as part of the first key:
     // "\xEF\xBB\xBFsensors: unknown key", blamed on the experiment.
-    if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
+    if (number == 1) perception::DropUtf8ByteOrderMark(line);
     while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
     const auto start = line.find_first_not_of(' ');
     if (start == std::string::npos || line[start] == '#') continue;

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "perception/logs/byte_order_mark.h"
 #include "perception/logs/fixed_decimals.h"
 #include "perception/logs/parse_number.h"
 #include "perception/logs/regular_file.h"
@@ -228,7 +229,7 @@ CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptio
     // A UTF-8 byte-order mark (an editor's "UTF-8 with BOM") made the first line an unknown
     // message, skipped without a word: a log's PARAM front_laser_max was lost, its scans scored
     // against their largest range instead.
-    if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
+    if (number == 1) DropUtf8ByteOrderMark(line);
     const std::size_t before = log.lasers.size();
     try {
       ParseCarmenLine(line, &log);

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "perception/logs/byte_order_mark.h"
 #include "perception/logs/parse_number.h"
 
 namespace plywood::perception {
@@ -70,7 +71,7 @@ std::vector<TimedPose> ReadTumTrajectory(const std::filesystem::path& path) {
     ++line_number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     // A UTF-8 byte-order mark hid the first line's comment sign: "line: expected 8 fields, got 17".
-    if (line_number == 1 && line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);
+    if (line_number == 1) DropUtf8ByteOrderMark(line);
     const auto fail = [&](const std::string& field, const std::string& what) {
       throw std::invalid_argument(path.string() + ":" + std::to_string(line_number) + ": " + field +
                                   ": " + what);

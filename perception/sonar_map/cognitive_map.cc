@@ -142,6 +142,13 @@ std::vector<Eigen::Vector2i> TrimThinEnds(const std::vector<Eigen::Vector2i>& ce
 
 namespace {
 
+// The smallest box of cells [lo, hi] holding every cell of `cells` (not empty).
+std::pair<Eigen::Vector2i, Eigen::Vector2i> CellExtent(const std::vector<Eigen::Vector2i>& cells) {
+  Eigen::Vector2i lo = cells.front(), hi = cells.front();
+  for (const Eigen::Vector2i& c : cells) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
+  return {lo, hi};
+}
+
 // TrimThinEnds' result `kept` with every dropped end restored whose cells (those of `cells` beyond
 // the kept cells' extent on that side) hold at least min_echoes echo points (`echoes`: per cell,
 // row-major over a grid `width` cells wide): such an end is a face heard head-on, not a wedge.
@@ -150,36 +157,29 @@ std::vector<Eigen::Vector2i> RestoreHeardEnds(const std::vector<Eigen::Vector2i>
                                               const std::vector<int>& echoes, int width,
                                               int min_echoes) {
   if (kept.empty()) return kept;
-  int x0 = kept.front().x(), x1 = x0, y0 = kept.front().y(), y1 = y0;
-  for (const Eigen::Vector2i& c : kept) {
-    x0 = std::min(x0, c.x()), x1 = std::max(x1, c.x());
-    y0 = std::min(y0, c.y()), y1 = std::max(y1, c.y());
-  }
-  int heard[4] = {0, 0, 0, 0};  // beyond x0, x1, y0, y1
-  int ax0 = x0, ax1 = x1, ay0 = y0, ay1 = y1;
+  auto [lo, hi] = CellExtent(kept);
+  const auto [all_lo, all_hi] = CellExtent(cells);
+  int heard[4] = {0, 0, 0, 0};  // beyond lo.x, hi.x, lo.y, hi.y
   for (const Eigen::Vector2i& c : cells) {
     const int n = echoes[static_cast<std::size_t>(c.y()) * width + c.x()];
-    if (c.x() < x0) heard[0] += n;
-    if (c.x() > x1) heard[1] += n;
-    if (c.y() < y0) heard[2] += n;
-    if (c.y() > y1) heard[3] += n;
-    ax0 = std::min(ax0, c.x()), ax1 = std::max(ax1, c.x());
-    ay0 = std::min(ay0, c.y()), ay1 = std::max(ay1, c.y());
+    if (c.x() < lo.x()) heard[0] += n;
+    if (c.x() > hi.x()) heard[1] += n;
+    if (c.y() < lo.y()) heard[2] += n;
+    if (c.y() > hi.y()) heard[3] += n;
   }
-  if (heard[0] >= min_echoes) x0 = ax0;
-  if (heard[1] >= min_echoes) x1 = ax1;
-  if (heard[2] >= min_echoes) y0 = ay0;
-  if (heard[3] >= min_echoes) y1 = ay1;
+  if (heard[0] >= min_echoes) lo.x() = all_lo.x();
+  if (heard[1] >= min_echoes) hi.x() = all_hi.x();
+  if (heard[2] >= min_echoes) lo.y() = all_lo.y();
+  if (heard[3] >= min_echoes) hi.y() = all_hi.y();
   std::vector<Eigen::Vector2i> out;
   for (const Eigen::Vector2i& c : cells)
-    if (c.x() >= x0 && c.x() <= x1 && c.y() >= y0 && c.y() <= y1) out.push_back(c);
+    if ((c.array() >= lo.array()).all() && (c.array() <= hi.array()).all()) out.push_back(c);
   return out;
 }
 
 long ExtentArea(const std::vector<Eigen::Vector2i>& cells) {
   if (cells.empty()) return 0;
-  Eigen::Vector2i lo = cells.front(), hi = cells.front();
-  for (const Eigen::Vector2i& c : cells) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
+  const auto [lo, hi] = CellExtent(cells);
   return static_cast<long>(hi.x() - lo.x() + 1) * (hi.y() - lo.y() + 1);
 }
 
@@ -238,8 +238,7 @@ std::vector<Eigen::Vector2i> PeelFreeEdges(const std::vector<Eigen::Vector2i>& c
                                            const std::function<bool(int, int)>& is_free,
                                            std::vector<Eigen::Vector2i>& rest) {
   if (cells.empty()) return cells;
-  Eigen::Vector2i lo = cells.front(), hi = cells.front();
-  for (const Eigen::Vector2i& c : cells) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
+  const auto [lo, hi] = CellExtent(cells);
   const int width = hi.x() - lo.x() + 1, height = hi.y() - lo.y() + 1;
   std::vector<char> member(static_cast<std::size_t>(width) * height, 0);
   for (const Eigen::Vector2i& c : cells)

@@ -594,6 +594,17 @@ LogOddsGrid BoxBlurredTowardTheWestWall() {
   return grid;
 }
 
+// The map of BoxBlurredTowardTheWestWall's room when the strip behind the box was heard free: the
+// box keeps its own (blurred) west side at x 0.70 and the strip between it and the wall is free.
+void ExpectTheBoxKeptOffTheWestWall(const CognitiveMap& map) {
+  ASSERT_EQ(map.obstacles.size(), 1u);
+  ExpectRectNear(map.obstacles[0], {0.70, 1.30, 1.35, 1.80});
+  const int strip = map.partitions.Find({0.60, 1.55});
+  ASSERT_GE(strip, 0);
+  EXPECT_EQ(map.partitions.partitions()[strip].label, Label::kFree);
+  ExpectTilesTheRoom(map);
+}
+
 TEST(CognitiveMapTest, ABoxIsNotExtendedToAWallWhenTheLineAlongTheWallBehindItWasHeardFree) {
   // A box 0.30 m from the west wall (inner face 0.55), its west face never heard head-on: the
   // network's blur paints occupied cells 0.15 m out from it (x 0.70-0.85), within obstacle_join_m
@@ -611,13 +622,7 @@ TEST(CognitiveMapTest, ABoxIsNotExtendedToAWallWhenTheLineAlongTheWallBehindItWa
   // strip's line next to the wall free behind the box: a gap, not a box against the wall.
   const double south = -0.5 * 3.14159265358979323846;
   const BeamFreeGrid along_wall = Beams({{0.575, 2.4}}, south, 2.4 - 0.55);
-  const CognitiveMap map = BuildCognitiveMap(grid, kInside, options, &along_wall);
-  ASSERT_EQ(map.obstacles.size(), 1u);
-  ExpectRectNear(map.obstacles[0], {0.70, 1.30, 1.35, 1.80});
-  const int strip = map.partitions.Find({0.60, 1.55});
-  ASSERT_GE(strip, 0);
-  EXPECT_EQ(map.partitions.partitions()[strip].label, Label::kFree);
-  ExpectTilesTheRoom(map);
+  ExpectTheBoxKeptOffTheWestWall(BuildCognitiveMap(grid, kInside, options, &along_wall));
   // Heard once (beam_free_min_passes 2), or off: extended as before.
   const BeamFreeGrid once = Beams({{0.575, 2.4}}, south, 2.4 - 0.55, 1);
   ExpectRectNear(BuildCognitiveMap(grid, kInside, options, &once).obstacles.at(0), extended);
@@ -648,13 +653,7 @@ TEST(CognitiveMapTest, ABoxIsNotSnappedToAWallWhenTheLineAlongTheWallBehindItWas
   // piece keeps its own side and the strip is free.
   const double south = -0.5 * 3.14159265358979323846;
   const BeamFreeGrid along_wall = Beams({{0.575, 2.4}}, south, 2.4 - 0.55);
-  const CognitiveMap map = BuildCognitiveMap(grid, kInside, options, &along_wall);
-  ASSERT_EQ(map.obstacles.size(), 1u);
-  ExpectRectNear(map.obstacles[0], {0.70, 1.30, 1.35, 1.80});
-  const int strip = map.partitions.Find({0.60, 1.55});
-  ASSERT_GE(strip, 0);
-  EXPECT_EQ(map.partitions.partitions()[strip].label, Label::kFree);
-  ExpectTilesTheRoom(map);
+  ExpectTheBoxKeptOffTheWestWall(BuildCognitiveMap(grid, kInside, options, &along_wall));
   // Without the rule the snap joins it to the wall across the heard strip.
   CognitiveMapOptions off = options;
   off.obstacle_wall_snap_seen_free = false;
