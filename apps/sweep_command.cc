@@ -59,8 +59,9 @@ Command AddSweepCommand(CLI::App& app) {
   cli->add_flag("--quiet", inv.quiet, "no progress, no table");
   cli->add_flag("--slurm", inv.slurm,
                 "write OUT/slurm/sweep.sbatch (a job array of shards) and submit it with sbatch");
-  cli->add_option("--partition", inv.slurm_options.partition, "Slurm partition (with --slurm)")
-      ->type_name("P");
+  CLI::Option* partition_flag =
+      cli->add_option("--partition", inv.slurm_options.partition, "Slurm partition (with --slurm)")
+          ->type_name("P");
   CLI::Option* max_parallel =
       cli->add_option("--max-parallel", inv.slurm_options.max_parallel,
                       "at most K array tasks at once (with --slurm; 0: no limit)")
@@ -85,7 +86,7 @@ Command AddSweepCommand(CLI::App& app) {
       "  plywood sweep experiments/sweeps/minimal.yaml --slurm --max-parallel 8\n"
       "  plywood sweep --collect runs/sweeps/minimal");
   return {
-      cli, [flags, max_parallel, tasks] {
+      cli, [flags, max_parallel, tasks, partition_flag] {
         eval::SweepInvocation& inv = flags->invocation;
         if (!flags->collect.empty()) {
           if (!flags->sweep.empty()) {
@@ -109,8 +110,8 @@ Command AddSweepCommand(CLI::App& app) {
         }
         // --tasks and --max-parallel without --slurm, or --bench with it, were ignored without
         // a word.
-        if (!inv.slurm && (inv.dry_run || !inv.slurm_options.partition.empty() ||
-                           tasks->count() > 0 || max_parallel->count() > 0)) {
+        if (!inv.slurm && (inv.dry_run || partition_flag->count() > 0 || tasks->count() > 0 ||
+                           max_parallel->count() > 0)) {
           throw UsageError(
               "sweep: --dry-run, --partition, --tasks and --max-parallel go with --slurm");
         }
@@ -120,9 +121,17 @@ Command AddSweepCommand(CLI::App& app) {
               "--shard");
         }
         // The name goes into the job script's #SBATCH line: a line break would start a command.
-        if (inv.slurm_options.partition.find_first_not_of(
+        // An empty name in a list (',', 'a,,b', 'a,') is no partition: sbatch refuses the script
+        // only when it is submitted, after the dry run said it was fine. (--partition '' alone
+        // means Slurm's default partition, as when it is not given.)
+        const std::string& partition = inv.slurm_options.partition;
+        const bool empty_name =
+            !partition.empty() && (partition.front() == ',' || partition.back() == ',' ||
+                                   partition.find(",,") != std::string::npos);
+        if (partition.find_first_not_of(
                 "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.-,") !=
-            std::string::npos) {
+                std::string::npos ||
+            empty_name) {
           throw UsageError(
               "sweep: --partition: expected Slurm partition names (letters, digits, '_', '.', "
               "'-'; ',' between several), got '" +

@@ -15,15 +15,15 @@ namespace plywood::eval {
 const std::vector<Protocol>& Protocols() {
   static const std::vector<Protocol> protocols{
       {"single", "one run: sensors, estimators, controller and every post-run scorer",
-       SingleRunProtocol},
+       SingleRunProtocol, nullptr},
       {"seed000_rooms", "seed 000: two back-to-back LMS 200 in each room, every line extractor",
-       Seed000Protocol},
+       Seed000Protocol, CheckSeed000Options},
       {"seed004_ransac", "seed 004: RANSAC lines on the point cloud of a whole run",
-       Seed004RansacProtocol},
+       Seed004RansacProtocol, CheckSeed004RansacOptions},
       {"umbmark", "Borenstein & Feng's UMBmark: 5 + 5 squares, calibration, 5 + 5 again",
-       UmbmarkProtocol},
+       UmbmarkProtocol, CheckUmbmarkOptions},
       {"weighted_gain_search", "seed 004: grid search of the weighted fusion's gains",
-       WeightedGainProtocol},
+       WeightedGainProtocol, CheckWeightedGainOptions},
   };
   return protocols;
 }
@@ -36,6 +36,11 @@ const Protocol& FindProtocol(const sim::ExperimentConfig& config) {
   }
   throw sim::ConfigError(config.source_file, "protocol",
                          "unknown protocol '" + config.protocol + "' (known: " + known + ")");
+}
+
+void CheckProtocolOptions(const sim::ExperimentConfig& config) {
+  const Protocol& protocol = FindProtocol(config);
+  if (protocol.check_options) protocol.check_options(config);
 }
 
 void RequireObservableProtocol(const sim::ExperimentConfig& config, const std::string& what) {

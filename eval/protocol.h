@@ -31,6 +31,10 @@ struct Protocol {
   std::string name;
   std::string summary;  // one line for --help
   std::function<int(const ProtocolContext&)> run;
+  // Reads the protocol's own section (config.protocol_options) as `run` does, running nothing, so
+  // a sweep refuses a bad option when it loads rather than in every cell. Null: no options.
+  // @throws sim::ConfigError naming the field.
+  std::function<void(const sim::ExperimentConfig&)> check_options;
 };
 
 // Every protocol, "single" first. Each lives in its own eval/<capability>/<name>_protocol.cc.
@@ -38,6 +42,10 @@ const std::vector<Protocol>& Protocols();
 
 // The protocol named by config.protocol. @throws sim::ConfigError naming `protocol` when unknown.
 const Protocol& FindProtocol(const sim::ExperimentConfig& config);
+
+// Reads config.protocol's options (Protocol::check_options) without running anything.
+// @throws sim::ConfigError naming `protocol` when unknown, or the bad option.
+void CheckProtocolOptions(const sim::ExperimentConfig& config);
 
 // @throws sim::ConfigError naming `protocol` when config.protocol cannot show its run to an
 // observer (`what`, e.g. "the viewer", names who asked).

@@ -183,6 +183,16 @@ TEST(CliHelpTest, UsageErrorsAreOneLineNamingTheCulpritWithExitCode2) {
        "sweep: --bench runs the whole sweep here, twice; it does not go with --slurm or --shard"},
       {"bench --world " + dir.string(),
        "bench: world: not a regular file (a folder or a device?): " + dir.string()},
+      // s38: an empty name in a partition list passed the dry run (sbatch refuses it only when
+      // submitted); --partition '' without --slurm was ignored.
+      {"sweep " + sweep.string() + " --out " + (dir / "sweep").string() +
+           " --slurm --dry-run --partition debug,,gpu",
+       "sweep: --partition: expected Slurm partition names"},
+      {"sweep " + sweep.string() + " --out " + (dir / "sweep").string() +
+           " --slurm --dry-run --partition ,",
+       "sweep: --partition: expected Slurm partition names"},
+      {"sweep " + sweep.string() + " --out " + (dir / "sweep").string() + " --partition ''",
+       "sweep: --dry-run, --partition, --tasks and --max-parallel go with --slurm"},
   };
   for (const auto& [args, culprit] : cases) {
     SCOPED_TRACE(args);

@@ -1048,5 +1048,87 @@ TEST_F(ReliabilityTest, UnknownYamlTagsAreRefusedNamingTheirField) {
   EXPECT_EQ(Run(HallExperiment(0.0, 0.0, "seed: !!int 7\n"), "").exit_code, 0);
 }
 
+// s38: legal but absurd values ran. A spawn heading of 1e300 deg (its double's spacing is 1e284
+// deg: no heading at all), a range noise larger than the sensor's whole range (most readings
+// clipped), a forward speed beyond the wheels' limit (capped without a word: speed_m_s 1e300 drove
+// at 1.2 m/s).
+TEST_F(ReliabilityTest, AbsurdHeadingsNoisesAndSpeedsAreRefusedNamingTheirField) {
+  const std::string yaml =
+      HallExperiment(0.0, 0.0, "controller: {type: waypoints, waypoints: [[1, 0]]}\n",
+                     "{encoders: {}, laser: {}}");
+  ExpectRefused(yaml, "--set robot.spawn.theta_deg=1e300",
+                {"experiment.yaml: robot.spawn.theta_deg: must be in [-360, 360] deg (one turn "
+                 "either way holds every heading), got 1e+300\n"});
+  ExpectRefused(yaml, "--set robot.spawn.theta_deg=-361", {"robot.spawn.theta_deg: ", "got -361"});
+  ExpectRefused(yaml, "--set sensors.laser.range_noise_sigma_m=1e300",
+                {"experiment.yaml: sensors.laser.range_noise_sigma_m: must be at most range_max_m "
+                 "(8 m): a larger noise leaves no geometry in the scan, got 1e+300\n"});
+  ExpectRefused(yaml, "--set controller.speed_m_s=1e300",
+                {"experiment.yaml: controller.speed_m_s: 1e+300 needs more than "
+                 "max_wheel_speed_rad_s allows (1.19925 m/s)\n"});
+  ExpectRefused(HallExperiment(0.0, 0.0, "controller: {type: wall_following, speed_m_s: 2}\n",
+                               "{encoders: {}, laser: {}}"),
+                "", {"controller.speed_m_s: 2 needs more than max_wheel_speed_rad_s allows"});
+  // The limits themselves run: a full turn back, a noise of the whole range, the top speed.
+  EXPECT_EQ(Run(yaml, "--set robot.spawn.theta_deg=-360").exit_code, 0);
+  EXPECT_EQ(Run(yaml, "--set sensors.laser.range_noise_sigma_m=8").exit_code, 0);
+  EXPECT_EQ(Run(yaml, "--set controller.speed_m_s=1.19925").exit_code, 0);
+}
+
+// s38: a world's spawn_0 of fewer than three numbers (data="-2") was taken for none and the robot
+// started at the origin; a heading of 1e300 in it ran.
+TEST_F(ReliabilityTest, AWorldSpawnThatIsNotThreeNumbersIsRefused) {
+  const fs::path dir = WorldDir();
+  const std::string hall = Slurp(testing::SourceRoot() / "worlds/hall.xml");
+  const std::string spawn = "data=\"-2 -2 0\"";
+  ASSERT_NE(hall.find(spawn), std::string::npos);
+  const std::string yaml =
+      "name: w\nduration_s: 0.5\nworld: WORLD\nrobot: {model: p3dx}\n"
+      "sensors: {encoders: {}}\noutput: {snapshot: false}\n";
+  for (const auto& [data, message] : std::vector<std::pair<std::string, std::string>>{
+           {"data=\"-2\"", "spawn_0: expected three numbers (x_m y_m theta_deg), got 1\n"},
+           {"data=\"-2 -2 1e300\"",
+            "spawn_0: the heading must be in [-360, 360] deg (one turn either way holds every "
+            "heading), got 1e+300\n"}}) {
+    SCOPED_TRACE(data);
+    std::string text = hall;
+    text.replace(text.find(spawn), spawn.size(), data);
+    const fs::path world = WriteFile(dir / "odd_spawn.xml", text);
+    std::string e = yaml;
+    e.replace(e.find("WORLD"), 5, world.string());
+    ExpectRefused(e, "", {world.string() + ": " + message});
+  }
+}
+
+// s38: a plane besides the floor is an infinite half-space the ground truth does not hold. A
+// vertical plane through x = 0 threw the robot 1 m in one step (truth x -2 -> -1.03, "reached" its
+// waypoint, drift 100 %, exit 0); a second floor 0.2 m up buried it (0.19 m driven of 0.44 m).
+TEST_F(ReliabilityTest, APlaneBesidesTheFloorIsRefused) {
+  const fs::path dir = WorldDir();
+  const std::string hall = Slurp(testing::SourceRoot() / "worlds/hall.xml");
+  const std::string anchor = "<!-- walls -->";
+  ASSERT_NE(hall.find(anchor), std::string::npos);
+  for (const auto& [geom, message] : std::vector<std::pair<std::string, std::string>>{
+           {"<geom name=\"vwall\" type=\"plane\" zaxis=\"1 0 0\" size=\"4 4 0.05\"/>",
+            "its plane geom 'vwall' is at z = 0 m, tilted 90 deg beside the floor"},
+           {"<geom name=\"floor2\" type=\"plane\" pos=\"0 0 0.2\" size=\"4 4 0.05\"/>",
+            "its plane geom 'floor2' is at z = 0.2 m, tilted 0 deg beside the floor"}}) {
+    SCOPED_TRACE(geom);
+    std::string text = hall;
+    text.replace(text.find(anchor), anchor.size(), geom);
+    const fs::path world = WriteFile(dir / "planes.xml", text);
+    ExpectRefused(HallExperiment(-2.0, -2.0), "--set world=" + world.string(),
+                  {"experiment.yaml: world: ", "planes.xml: " + message});
+  }
+  // A second level floor at z = 0 (tiles of one floor) still runs.
+  std::string tiles = hall;
+  tiles.replace(tiles.find(anchor), anchor.size(),
+                "<geom name=\"tile\" type=\"plane\" pos=\"1 1 0\" size=\"1 1 0.05\"/>");
+  EXPECT_EQ(
+      Run(HallExperiment(-2.0, -2.0), "--set world=" + WriteFile(dir / "tiles.xml", tiles).string())
+          .exit_code,
+      0);
+}
+
 }  // namespace
 }  // namespace plywood

@@ -92,7 +92,15 @@ TEST(ReplayCliTest, ExtractorOptionsAreSetByKeyAndBadKeysAreNamed) {
       {"split_and_merge.min_pointz=5", "split_and_merge.min_pointz: unknown key"},
       {"split_and_merge.min_points=1", "split_and_merge.min_points: must be >= 2"},
       {"split_and_merge.min_points=many", "split_and_merge.min_points"},
-      {"nonsense", "expected key.path=value"}};
+      {"nonsense", "expected key.path=value"},
+      // s38: options of an extractor that is not run, and the `lines:` keys replay never reads,
+      // were dropped without a word (exit 0).
+      {"ransac.min_inliers=5",
+       "plywood: --set: ransac.min_inliers: the replay runs only 'split_and_merge' (--extractor) "
+       "and reads "
+       "only its options (split_and_merge.KEY=VALUE): this one would be ignored"},
+      {"range_cut_m=3", "--set: range_cut_m: the replay runs only 'split_and_merge'"},
+      {"scoring.max_alpha_diff_deg=3", "--set: scoring.max_alpha_diff_deg: the replay runs only"}};
   for (const auto& [assignment, message] : bad) {
     const Result r = RunPlywood(
         "replay " + log.string() + " --set " + assignment + " --out " + (dir / "c").string(), dir);

@@ -175,6 +175,16 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
       {"unknown_tag",
        {"experiment: " + experiment + "\nseeds: [!custom 1]\n",
         "seeds[0]: the YAML tag '!custom' means nothing here"}},
+      // s38: a protocol's own option as an axis was checked only as each cell ran (every cell
+      // failed, exit 1).
+      {"protocol_option",
+       {"experiment: " + (SourceRoot() / "experiments/seed000_rooms.yaml").string() +
+            "\nset: {seed000_rooms.rig_at: [junk]}\n",
+        "set.seed000_rooms.rig_at"}},
+      {"umbmark_option",
+       {"experiment: " + (SourceRoot() / "experiments/umbmark.yaml").string() +
+            "\nset: {umbmark.runs_per_direction: [0]}\n",
+        "set.umbmark.runs_per_direction"}},
   };
   for (const auto& [name, c] : cases) {
     SCOPED_TRACE(name);

@@ -12,6 +12,7 @@
 #include "render/overlay.h"
 #include "render/png_image.h"
 #include "render/world_to_pixel.h"
+#include "sim/config/config_error.h"
 #include "sim/config/lines_config.h"
 #include "sim/config/yaml_fields.h"
 #include "sim/runner/json_text.h"
@@ -56,6 +57,20 @@ void WriteSegmentsPicture(const perception::CarmenLog& log, const perception::Re
   render::WritePng(image, path);
 }
 
+// The replay runs one extractor and reads nothing else of `lines:`: a --set of another extractor
+// (or of range_cut_m, scoring, extractors) would be dropped without a word.
+void RequireOptionsOfTheExtractorRun(const LogReplayRequest& request) {
+  for (const std::string& assignment : request.overrides) {
+    const std::string key = assignment.substr(0, assignment.find('='));
+    const std::string section = key.substr(0, key.find('.'));
+    if (section == request.extractor) continue;
+    throw sim::ConfigError("--set", key,
+                           "the replay runs only '" + request.extractor +
+                               "' (--extractor) and reads only its options (" + request.extractor +
+                               ".KEY=VALUE): this one would be ignored");
+  }
+}
+
 }  // namespace
 
 std::filesystem::path DefaultReplayDirectory(const std::filesystem::path& log,
@@ -71,6 +86,7 @@ LogReplaySummary RunLogReplay(const LogReplayRequest& request) {
   }
   sim::LinesConfig lines;
   sim::ReadLinesConfig(sim::YamlFields(lines_node, "--set", ""), lines);
+  RequireOptionsOfTheExtractorRun(request);
   const auto extractor = perception::MakeLineExtractor(request.extractor, lines.options);
   perception::CarmenReadOptions read_options;
   read_options.skip_bad = request.skip_bad;

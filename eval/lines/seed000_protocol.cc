@@ -49,6 +49,10 @@ void WriteRoomPicture(const eval::Seed000RoomResult& result, const sim::LinesCon
 
 }  // namespace
 
+void CheckSeed000Options(const sim::ExperimentConfig& config) {
+  eval::RoomsToRun(config, eval::ReadSeed000RoomsOptions(config));
+}
+
 int Seed000Protocol(const ProtocolContext& context) {
   const sim::ExperimentConfig& config = context.config;
   const eval::Seed000RoomsOptions options = eval::ReadSeed000RoomsOptions(config);

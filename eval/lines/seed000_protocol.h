@@ -10,5 +10,8 @@ namespace plywood::eval {
 // and recall / precision per extractor and room; writes metrics.json (seed000.<room>.* and
 // lines.<extractor>.* over all rooms), rooms.csv, timing.json, config.yaml and <room>.png.
 int Seed000Protocol(const ProtocolContext& context);
+// Reads the `seed000_rooms:` section and picks the rooms as the protocol does.
+// @throws sim::ConfigError.
+void CheckSeed000Options(const sim::ExperimentConfig& config);
 
 }  // namespace plywood::eval

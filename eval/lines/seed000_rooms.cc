@@ -63,6 +63,12 @@ std::vector<Seed000Room> RoomsToRun(const sim::ExperimentConfig& config,
       std::filesystem::equivalent(options.rooms.front().world_path, config.world_path)) {
     return options.rooms;
   }
+  // A later room's world (--set world=worlds/seed000_room_2.xml) runs alone, but as its entry says
+  // (its range cut and paper line count), not with the top-level range_cut_m meant for other
+  // worlds.
+  for (const Seed000Room& room : options.rooms) {
+    if (std::filesystem::equivalent(room.world_path, config.world_path)) return {room};
+  }
   Seed000Room user;
   user.world = config.world;
   user.world_path = config.world_path;

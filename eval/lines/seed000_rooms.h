@@ -28,8 +28,9 @@ struct Seed000Room {
 //     scans: 10                 # back-to-back scan pairs per room (independent noise)
 //     range_cut_m: 4            # for a world given with --set world=PATH
 //     rooms: [{world: worlds/seed000_room_1.xml, range_cut_m: 4, paper_lines: 7}, ...]
-// The rooms run when the experiment's `world` is the first room's (the file's default); any
-// other world (--set world=PATH) runs alone with range_cut_m, sensors at its origin.
+// The rooms run when the experiment's `world` is the first room's (the file's default); a later
+// room's world runs that room alone, as its entry says; any other world (--set world=PATH) runs
+// alone with range_cut_m, sensors at its origin (or at robot.spawn, rig_at: spawn).
 struct Seed000RoomsOptions {
   int scans = 10;
   double range_cut_m = 4.0;

@@ -96,5 +96,23 @@ TEST(Seed000RoomsTest, RigAtRejectsAnythingElse) {
   EXPECT_THROW(ReadSeed000RoomsOptions(Config({"seed000_rooms.rig_at=corner"})), std::exception);
 }
 
+// A later room given as the world runs alone with its own entry (seed000_room_2's paper cut is
+// 3.5 m, paper_lines 4), not with the top-level range_cut_m (4 m) meant for worlds outside the
+// list.
+TEST(Seed000RoomsTest, ALaterRoomGivenAsTheWorldRunsWithItsOwnEntry) {
+  const auto config = Config({"world=worlds/seed000_room_2.xml"});
+  const std::vector<Seed000Room> rooms = RoomsToRun(config, ReadSeed000RoomsOptions(config));
+  ASSERT_EQ(rooms.size(), 1u);
+  EXPECT_EQ(rooms.front().world, "worlds/seed000_room_2.xml");
+  EXPECT_EQ(rooms.front().range_cut_m, 3.5);
+  EXPECT_EQ(rooms.front().paper_lines, 4);
+  // A world outside the list still runs alone with range_cut_m.
+  const auto hall = Config({"seed000_rooms.range_cut_m=6"});
+  const std::vector<Seed000Room> alone = RoomsToRun(hall, ReadSeed000RoomsOptions(hall));
+  ASSERT_EQ(alone.size(), 1u);
+  EXPECT_EQ(alone.front().range_cut_m, 6.0);
+  EXPECT_EQ(alone.front().paper_lines, 0);
+}
+
 }  // namespace
 }  // namespace plywood::eval

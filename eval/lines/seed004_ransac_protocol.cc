@@ -42,27 +42,42 @@ Cloud Accumulate(const sim::RunRecord& record, bool odometry, int scan_stride, i
   return cloud;
 }
 
+// The `seed004_ransac:` section: scan_stride, beam_stride and ransac: {...}.
+struct Seed004RansacOptions {
+  int scan_stride = 5, beam_stride = 4;
+  perception::RansacOptions ransac;
+};
+
+// @throws sim::ConfigError naming the field.
+Seed004RansacOptions ReadSeed004RansacOptions(const sim::ExperimentConfig& config) {
+  Seed004RansacOptions options;
+  options.ransac.min_inliers = 150;
+  options.ransac.min_points = 100;
+  options.ransac.max_lines = 200;
+  sim::YamlFields fields(config.protocol_options, config.source_file, config.protocol);
+  fields.Get("scan_stride", &options.scan_stride);
+  fields.Get("beam_stride", &options.beam_stride);
+  if (options.scan_stride < 1) fields.Fail("scan_stride", "must be >= 1");
+  if (options.beam_stride < 1) fields.Fail("beam_stride", "must be >= 1");
+  sim::YamlReadArchive archive(fields.Child("ransac"));
+  VisitFields(archive, options.ransac);
+  archive.fields().Finish();
+  archive.fields().Validate(options.ransac);
+  fields.Finish();
+  return options;
+}
+
 }  // namespace
+
+void CheckSeed004RansacOptions(const sim::ExperimentConfig& config) {
+  ReadSeed004RansacOptions(config);
+}
 
 int Seed004RansacProtocol(const ProtocolContext& context) {
   sim::ExperimentConfig config = context.config;
-  int scan_stride = 5, beam_stride = 4;
-  perception::RansacOptions ransac;
-  ransac.min_inliers = 150;
-  ransac.min_points = 100;
-  ransac.max_lines = 200;
-  {
-    sim::YamlFields fields(config.protocol_options, config.source_file, config.protocol);
-    fields.Get("scan_stride", &scan_stride);
-    fields.Get("beam_stride", &beam_stride);
-    if (scan_stride < 1) fields.Fail("scan_stride", "must be >= 1");
-    if (beam_stride < 1) fields.Fail("beam_stride", "must be >= 1");
-    sim::YamlReadArchive archive(fields.Child("ransac"));
-    VisitFields(archive, ransac);
-    archive.fields().Finish();
-    archive.fields().Validate(ransac);
-    fields.Finish();
-  }
+  const Seed004RansacOptions options = ReadSeed004RansacOptions(config);
+  const int scan_stride = options.scan_stride, beam_stride = options.beam_stride;
+  const perception::RansacOptions& ransac = options.ransac;
   if (!config.sensors.laser) {
     throw sim::ConfigError(config.source_file, "sensors.laser", "missing: the cloud needs a laser");
   }

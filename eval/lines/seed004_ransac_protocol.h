@@ -14,5 +14,7 @@ namespace plywood::eval {
 // and config.yaml.
 //   seed004_ransac: {scan_stride: 5, beam_stride: 4, ransac: {distance_threshold_m: 0.03, ...}}
 int Seed004RansacProtocol(const ProtocolContext& context);
+// Reads the `seed004_ransac:` section as the protocol does. @throws sim::ConfigError.
+void CheckSeed004RansacOptions(const sim::ExperimentConfig& config);
 
 }  // namespace plywood::eval

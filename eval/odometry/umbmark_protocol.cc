@@ -30,6 +30,8 @@ std::string RunsCsv(const eval::UmbmarkOutcome& outcome) {
 
 }  // namespace
 
+void CheckUmbmarkOptions(const sim::ExperimentConfig& config) { eval::ReadUmbmarkOptions(config); }
+
 int UmbmarkProtocol(const ProtocolContext& context) {
   const sim::ExperimentConfig& config = context.config;
   const eval::UmbmarkOptions options = eval::ReadUmbmarkOptions(config);

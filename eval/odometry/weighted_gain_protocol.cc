@@ -26,11 +26,23 @@ void VisitFields(A& a, GainGridOptions& o) {
 
 namespace plywood::eval {
 
-int WeightedGainProtocol(const ProtocolContext& context) {
-  const sim::ExperimentConfig& config = context.config;
+namespace {
+
+// @throws sim::ConfigError naming the field.
+robot::GainGridOptions ReadGainGrid(const sim::ExperimentConfig& config) {
   robot::GainGridOptions grid;
   sim::ReadOptions(
       sim::YamlFields(config.protocol_options, config.source_file, "weighted_gain_search"), grid);
+  return grid;
+}
+
+}  // namespace
+
+void CheckWeightedGainOptions(const sim::ExperimentConfig& config) { ReadGainGrid(config); }
+
+int WeightedGainProtocol(const ProtocolContext& context) {
+  const sim::ExperimentConfig& config = context.config;
+  const robot::GainGridOptions grid = ReadGainGrid(config);
   const robot::OdometryGeometry geometry =
       robot::CalibratedGeometry(config.nominal, config.odometry.calibration);
 

@@ -11,5 +11,7 @@ namespace plywood::eval {
 // and reports the pair with the lowest drift: metrics.json `weighted_gain_search.encoder_gain`,
 // `.gyro_gain`, `.drift_percent`, `.unit_drift_percent` (gains 1/1), plus the run's own outputs.
 int WeightedGainProtocol(const ProtocolContext& context);
+// Reads the `weighted_gain_search:` section as the protocol does. @throws sim::ConfigError.
+void CheckWeightedGainOptions(const sim::ExperimentConfig& config);
 
 }  // namespace plywood::eval

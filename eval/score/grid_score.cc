@@ -41,6 +41,22 @@ OccupancyError ScoreGridImage(const OccupancyTruth& truth, const GridImage& imag
   placement.Validate();
   const Eigen::Vector2d low = truth.raster.CellCentre(truth.x0, truth.y0);
   const Eigen::Vector2d high = truth.raster.CellCentre(truth.x1, truth.y1);
+  // The scored area's sides in pixels. A pixel edge r mislabels up to r / 2 on each side of every
+  // boundary, about 1 / n_x + 1 / n_y of a box n_x x n_y px wide: below kMinPixelsAcross the
+  // pixels alone would decide e (at 1e300 m/px one pixel held the world and e read 0).
+  const Eigen::Vector2d extent_m =
+      (high - low).array() + truth.raster.resolution_m;  // cell centres to cell edges
+  const double pixels_across = extent_m.minCoeff() / placement.resolution_m;
+  if (!(pixels_across >= kMinPixelsAcross)) {
+    char what[512];
+    std::snprintf(what, sizeof(what),
+                  "--resolution: %g m per pixel leaves the scored area (%g x %g m) %.3g px across "
+                  "its shorter side; at least %g are needed, or the pixels alone decide e: use at "
+                  "most %g m",
+                  placement.resolution_m, extent_m.x(), extent_m.y(), pixels_across,
+                  kMinPixelsAcross, extent_m.minCoeff() / kMinPixelsAcross);
+    throw std::invalid_argument(what);
+  }
   int x = 0, y = 0;
   if (!PixelOf(image, placement, low, &x, &y) || !PixelOf(image, placement, high, &x, &y)) {
     char what[512];

@@ -20,10 +20,15 @@ struct GridPlacement {
   void Validate() const;
 };
 
+// The fewest pixels a map may put across the scored area's shorter side (docs/errors.md, s38).
+inline constexpr double kMinPixelsAcross = 10.0;
+
 // Seed 001's occupancy error of `image` (eval/sonar_map/sonar_ground_truth.h): every truth cell of
 // the scored area is compared with the pixel holding its centre; unknown (grey) pixels below the
 // threshold count as free, like seed 001's unseen cells.
-// @throws sim::ConfigError "FILE: size: ..." when the image does not cover the scored area.
+// @throws sim::ConfigError "FILE: size: ..." when the image does not cover the scored area;
+// std::invalid_argument "--resolution: ..." when it puts fewer than kMinPixelsAcross pixels across
+// the scored area's shorter side.
 OccupancyError ScoreGridImage(const OccupancyTruth& truth, const GridImage& image,
                               const GridPlacement& placement, const std::string& file);
 

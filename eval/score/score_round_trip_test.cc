@@ -235,6 +235,36 @@ TEST(ScoreGridTest, TheTruthItselfScoresZeroAndCoarserCopiesStayWithinTheirDiscr
             0.0);
 }
 
+// s38: `--resolution 1e300` put the whole world in one pixel and scored e 0. A map must put at
+// least kMinPixelsAcross pixels across the scored area's shorter side.
+TEST(ScoreGridTest, AGridOfFewerThanTenPixelsAcrossTheScoredAreaIsRefused) {
+  const auto truth = LoadRunOccupancyTruth(RunDir());
+  const Eigen::Vector2d low = truth->raster.CellCentre(truth->x0, truth->y0);
+  const Eigen::Vector2d high = truth->raster.CellCentre(truth->x1, truth->y1);
+  const Eigen::Vector2d extent = (high - low).array() + 0.01;
+  const auto copy_at = [&](double r) {
+    GridPlacement placement{r, low - Eigen::Vector2d(0.005 + r, 0.005 + r), 0.5};
+    const int w = int(std::ceil(extent.x() / r)) + 2, h = int(std::ceil(extent.y() / r)) + 2;
+    return ScoreGridImage(*truth, TruthImage(*truth, placement, w, h), placement, "copy");
+  };
+  // Ten pixels across: scored, and within the discretisation a truth copy allows.
+  const OccupancyError ten = copy_at(extent.minCoeff() / kMinPixelsAcross);
+  EXPECT_GT(ten.Error(), 0.0);
+  EXPECT_LT(ten.Error(), 1.0);
+  // Fewer (9.5, one, and 1e300 m per pixel, which scored e 0): refused, naming the flag.
+  for (const double r : {extent.minCoeff() / 9.5, extent.minCoeff(), 1e300}) {
+    SCOPED_TRACE(r);
+    std::string refusal = "scored";
+    try {
+      copy_at(r);
+    } catch (const std::invalid_argument& e) {
+      refusal = e.what();
+    }
+    EXPECT_EQ(refusal.rfind("--resolution: ", 0), 0u) << refusal;
+    EXPECT_NE(refusal.find("at least 10 are needed"), std::string::npos) << refusal;
+  }
+}
+
 TEST(ScoreGridTest, AnAllFreeGridScoresTheAreaThatIsNotFree) {
   const auto truth = LoadRunOccupancyTruth(RunDir());
   double box = 0.0, free = 0.0;

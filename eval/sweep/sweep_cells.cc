@@ -8,6 +8,7 @@
 #include <map>
 #include <utility>
 
+#include "eval/protocol.h"
 #include "perception/logs/byte_order_mark.h"
 #include "sim/config/config_error.h"
 #include "sim/config/experiment_config.h"
@@ -92,7 +93,7 @@ std::string CulpritField(const SweepSpec& spec, const SweepCell& cell,
                          const std::vector<std::string>& profile_lines) {
   const auto fails = [&](const std::vector<std::string>& overrides) {
     try {
-      sim::LoadExperimentConfig(cell.experiment, overrides);
+      eval::CheckProtocolOptions(sim::LoadExperimentConfig(cell.experiment, overrides));
       return false;
     } catch (const sim::ConfigError&) {
       return true;
@@ -314,6 +315,8 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
             sim::ExperimentConfig config;
             try {
               config = sim::LoadExperimentConfig(experiment, cell.overrides);
+              // The protocol's own options too: a bad one fails here, not in every cell's run.
+              CheckProtocolOptions(config);
             } catch (const sim::ConfigError& e) {
               throw sim::ConfigError(spec.source_file, CulpritField(spec, cell, profile_lines),
                                      e.what());

@@ -118,6 +118,9 @@ SonarExplorer::SonarExplorer(const robot::DiffDriveSpec& spec, const SonarExplor
     : spec_(spec), options_(options), model_(std::move(model)) {
   spec_.Validate();
   options_.Validate();
+  robot::internal::RequireDrivableSpeed(spec_, "speed_m_s", options_.speed_m_s);
+  robot::internal::RequireDrivableSpeed(spec_, "bump_back_off_speed_m_s",
+                                        options_.bump_back_off_speed_m_s);
   if (!model_) throw std::invalid_argument("sonar_model: no model given");
   if (options_.misses_say_nothing) model_ = std::make_shared<EchoGatedModel>(model_);
   robot::WallFollowingOptions follow;

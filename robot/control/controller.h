@@ -11,6 +11,7 @@
 #include "msgs/range_ring.h"
 #include "msgs/shortest_number.h"
 #include "msgs/wheel_speed_command.h"
+#include "robot/drive/diff_drive_spec.h"
 
 namespace plywood::robot {
 
@@ -64,6 +65,19 @@ inline void RequirePositive(const std::string& field, double value) {
   if (!std::isfinite(value) || value <= 0.0) {
     throw std::invalid_argument(field + ": must be a finite number > 0, got " +
                                 msgs::ShortestNumber(value));
+  }
+}
+
+// A forward speed the wheels can drive: beyond max_wheel_speed_rad_s x wheel_radius_m the wheel
+// limits cap it, so the run would not be the one written (speed_m_s: 1e300 drove at 1.2 m/s).
+inline void RequireDrivableSpeed(const DiffDriveSpec& spec, const std::string& field,
+                                 double speed_m_s) {
+  const double max_rim_m_s = spec.max_wheel_speed_rad_s * spec.wheel_radius_m;
+  if (speed_m_s > max_rim_m_s) {
+    throw std::invalid_argument(field + ": " + msgs::ShortestNumber(speed_m_s) +
+                                " needs more than max_wheel_speed_rad_s allows (" +
+                                msgs::ShortestNumber(std::round(max_rim_m_s * 1e6) / 1e6) +
+                                " m/s)");
   }
 }
 

@@ -165,6 +165,7 @@ WallFollowingController::WallFollowingController(const DiffDriveSpec& spec,
       relevant_range_m_(RelevantRange(options)) {
   spec_.Validate();
   options_.Validate();
+  internal::RequireDrivableSpeed(spec_, "speed_m_s", options_.speed_m_s);
 }
 
 void WallFollowingController::AddPoint(const msgs::Pose2D& X_WR, const msgs::Pose2D& X_RS,

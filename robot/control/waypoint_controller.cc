@@ -26,6 +26,7 @@ WaypointController::WaypointController(const DiffDriveSpec& spec, const Waypoint
     : spec_(spec), options_(options) {
   spec_.Validate();
   options_.Validate();
+  internal::RequireDrivableSpeed(spec_, "speed_m_s", options_.speed_m_s);
 }
 
 msgs::WheelSpeedCommand WaypointController::Update(const ControllerInput& input) {

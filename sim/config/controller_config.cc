@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <stdexcept>
+#include <utility>
+#include <vector>
 
+#include "robot/control/controller.h"
 #include "sim/config/config_archive.h"
 #include "sim/config/config_fields.h"
 #include "sim/config/plugin_loader.h"
@@ -34,6 +38,32 @@ const std::vector<std::string>& BuiltInControllerTypes() {
   return types;
 }
 
+namespace {
+
+// The forward speeds must be ones the robot's wheels can drive (beyond them the wheel limits cap
+// the speed without a word): checked against the experiment's nominal spec as the file is read,
+// so the line names the field before anything runs (the controllers check it again).
+void RequireDrivableSpeeds(const YamlFields& fields, const robot::DiffDriveSpec& nominal,
+                           const ControllerConfig& config) {
+  std::vector<std::pair<const char*, double>> speeds;
+  if (config.type == "square_path") speeds = {{"speed_m_s", config.square_path.speed_m_s}};
+  if (config.type == "waypoints") speeds = {{"speed_m_s", config.waypoints.speed_m_s}};
+  if (config.type == "wall_following") speeds = {{"speed_m_s", config.wall_following.speed_m_s}};
+  if (config.type == "sonar_explorer") {
+    speeds = {{"speed_m_s", config.sonar_explorer.speed_m_s},
+              {"bump_back_off_speed_m_s", config.sonar_explorer.bump_back_off_speed_m_s}};
+  }
+  for (const auto& [field, speed_m_s] : speeds) {
+    try {
+      robot::internal::RequireDrivableSpeed(nominal, field, speed_m_s);
+    } catch (const std::invalid_argument& e) {
+      fields.FailValidation(e.what());
+    }
+  }
+}
+
+}  // namespace
+
 void ReadControllerConfig(YamlFields fields, const robot::DiffDriveSpec& nominal,
                           ControllerConfig& config) {
   fields.Get("type", &config.type);
@@ -64,6 +94,7 @@ void ReadControllerConfig(YamlFields fields, const robot::DiffDriveSpec& nominal
   if (config.type == "wheel_script") fields.Validate(config.wheel_script);
   if (config.type == "wall_following") fields.Validate(config.wall_following);
   if (config.type == "sonar_explorer") fields.Validate(config.sonar_explorer);
+  RequireDrivableSpeeds(fields, nominal, config);
 }
 
 YAML::Node WriteControllerConfig(ControllerConfig& config) {

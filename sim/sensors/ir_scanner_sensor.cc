@@ -22,6 +22,11 @@ void IrScannerOptions::Validate() const {
   RequireField(std::isfinite(range_min_m) && range_min_m >= 0.0 && range_min_m < range_max_m,
                "range_min_m", "must be in [0, range_max_m)", range_min_m);
   RequireField(std::isfinite(sigma_m) && sigma_m >= 0.0, "sigma_m", "must be >= 0", sigma_m);
+  // As the laser's: a sigma beyond the whole range leaves no geometry in the readings.
+  RequireField(sigma_m <= range_max_m, "sigma_m",
+               "must be at most range_max_m (" + msgs::ShortestNumber(range_max_m) +
+                   " m): a larger noise leaves no geometry in the readings",
+               sigma_m);
   RequireField(outlier_probability >= 0.0 && outlier_probability <= 1.0, "outlier_probability",
                "must be in [0, 1]", outlier_probability);
   RequireField(std::isfinite(rate_hz) && rate_hz > 0.0, "rate_hz", "must be > 0", rate_hz);

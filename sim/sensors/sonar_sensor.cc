@@ -35,6 +35,11 @@ void SonarOptions::Validate() const {
                "range_min_m", "must be in [0, range_max_m)", range_min_m);
   RequireField(std::isfinite(range_noise_fraction) && range_noise_fraction >= 0.0,
                "range_noise_fraction", "must be >= 0", range_noise_fraction);
+  // As the laser's sigma bound: a sigma beyond the reading itself leaves no geometry in it.
+  RequireField(range_noise_fraction <= 1.0, "range_noise_fraction",
+               "must be at most 1 (sigma = range_noise_fraction x range: more is noise larger than "
+               "the reading)",
+               range_noise_fraction);
   RequireField(std::isfinite(rate_hz) && rate_hz > 0.0, "rate_hz", "must be > 0", rate_hz);
 }
 

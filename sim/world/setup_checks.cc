@@ -69,6 +69,23 @@ std::optional<std::string> MissingFloor(const Scene& scene) {
          " deg; the robot stands on z = 0, so put a level floor plane there";
 }
 
+std::optional<std::string> PlaneThatIsNotTheFloor(const Scene& scene) {
+  const mjModel* m = scene.model();
+  const mjData* d = scene.data();
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (m->geom_type[g] != mjGEOM_PLANE || !IsStaticWorldGeom(scene, g)) continue;
+    const double z_m = d->geom_xpos[3 * g + 2];
+    const double tilt_rad = PlaneTiltRad(d, g);
+    if (std::abs(z_m) <= kFloorToleranceM && std::abs(tilt_rad) <= kFloorTiltToleranceRad) continue;
+    const double tilt_deg = tilt_rad * 180.0 / std::numbers::pi;
+    return "its plane " + GeomName(m, g) + " is at z = " + Mm(z_m) + " m, tilted " +
+           msgs::ShortestNumber(std::round(tilt_deg * 100.0) / 100.0) +
+           " deg beside the floor: a plane is an infinite half-space that walls.csv, the laser's "
+           "ground truth and the occupancy truth do not hold; make walls of boxes";
+  }
+  return std::nullopt;
+}
+
 std::optional<std::string> NonDefaultPhysicsOptions(const Scene& scene) {
   mjOption defaults;
   mj_defaultOption(&defaults);

@@ -14,6 +14,12 @@ namespace plywood::sim {
 // there).
 std::optional<std::string> MissingFloor(const Scene& scene);
 
+// A static plane geom besides the level floor at z = 0 (a second floor 0.2 m up, a vertical
+// plane as a wall): physics and the sensors see an infinite half-space the ground truth (walls,
+// rasters) leaves out (a plane at x = 0 threw the robot 1 m in one step, exit 0). Checked after
+// MissingFloor.
+std::optional<std::string> PlaneThatIsNotTheFloor(const Scene& scene);
+
 // A physics option (<option> or <flag>) other than MuJoCo's default, the timestep aside: the
 // world would change the physics every experiment and every other world share (a world with
 // gravity="0 0 9.81" ran, the robot afloat, exit 0).

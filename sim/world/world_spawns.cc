@@ -11,4 +11,9 @@ std::optional<std::array<double, 3>> WorldSpawn(const mjModel* m, int k) {
   return std::array<double, 3>{v[0], v[1], v[2]};
 }
 
+int WorldSpawnValueCount(const mjModel* m, int k) {
+  const int id = mj_name2id(m, mjOBJ_NUMERIC, ("spawn_" + std::to_string(k)).c_str());
+  return id < 0 ? -1 : m->numeric_size[id];
+}
+
 }  // namespace plywood::sim

@@ -13,4 +13,8 @@ namespace plywood::sim {
 // entry.
 std::optional<std::array<double, 3>> WorldSpawn(const mjModel* m, int k);
 
+// How many numbers spawn K holds (3 when well formed), or -1 when the model has no spawn K: a
+// reader tells a malformed entry (data="-2") from a missing one.
+int WorldSpawnValueCount(const mjModel* m, int k);
+
 }  // namespace plywood::sim
