@@ -889,5 +889,39 @@ TEST(SweepCliTest, ACollectThatStopsPartWayLeavesNoOlderSummary) {
   EXPECT_FALSE(fs::exists(out / "summary.csv")) << "the previous collect's summary.csv was left";
 }
 
+// s38: a world whose spawn_0 is malformed (one number, a 1e300 heading) was skipped when the sweep
+// placed the robot at each world's spawn: the cell ran at the experiment's own robot.spawn, a spot
+// the world never named (exit 0).
+TEST(SweepCliTest, AWorldSpawnTheSweepCannotUseIsRefusedAtLoad) {
+  const fs::path dir = MakeTempDir("SweepOddSpawn");
+  const std::string hall = Slurp(SourceRoot() / "worlds/hall.xml");
+  const std::string spawn = "data=\"-2 -2 0\"";
+  ASSERT_NE(hall.find(spawn), std::string::npos);
+  const fs::path experiment =
+      WriteFile(dir / "e.yaml",
+                "name: e\nduration_s: 0.2\nworld: " + (SourceRoot() / "worlds/hall.xml").string() +
+                    "\nrobot: {model: p3dx, spawn: {x_m: 0, y_m: 0, theta_deg: 0}}\n"
+                    "sensors: {encoders: {}}\noutput: {snapshot: false}\n");
+  for (const auto& [data, got] : std::vector<std::pair<std::string, std::string>>{
+           {"data=\"-2\"", "got 1 number"}, {"data=\"-2 -2 1e300\"", "got -2 -2 1e+300"}}) {
+    SCOPED_TRACE(data);
+    std::string text = hall;
+    text.replace(text.find(spawn), spawn.size(), data);
+    const fs::path world = WriteFile(dir / "odd.xml", text);
+    const fs::path sweep = WriteFile(dir / "s.yaml", "experiment: " + experiment.string() +
+                                                         "\nworlds: [" + world.string() + "]\n");
+    const fs::path out = dir / "out";
+    fs::remove_all(out);
+    const auto r = RunPlywood("sweep " + sweep.string() + " --out " + out.string(), dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(world.string() + ": spawn_0: the sweep places the robot here"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find(got), std::string::npos) << r.err;
+    EXPECT_EQ(CountRunDirs(out), 0);
+  }
+}
+
 }  // namespace
 }  // namespace plywood
