@@ -498,3 +498,40 @@ TEST(SimplifyPathTest, WindingCorridorKeepsEveryTurn) {
 
 }  // namespace
 }  // namespace plywood::perception
+
+namespace plywood::perception {
+namespace {
+
+// Two boxes meeting on the diagonal: one fills x <= 10, y >= 20 (corner cell (10, 20)), the other
+// x >= 19, y <= 11 (corner cell (19, 11)), 12.7 cells (0.64 m in 5 cm cells) apart. The cells
+// keeping 6 cells (0.30 m) from both form a chain of single cells touching at their corners: the
+// side-cell rule finds no way from (0, 0) to (39, 39) through the mouth; passing the corners finds
+// one, and each diagonal step's midpoint still keeps sqrt(36 - 1/2) cells from every box cell.
+TEST(ShortestCellPathTest, ADiagonalMouthIsPassedOnlyPastTheCellCorners) {
+  constexpr int kN = 40;
+  std::vector<char> blocked(kN * kN, 0);
+  for (int iy = 0; iy < kN; ++iy)
+    for (int ix = 0; ix < kN; ++ix)
+      blocked[iy * kN + ix] = (ix <= 10 && iy >= 20) || (ix >= 19 && iy <= 11);
+  const std::vector<char> near = Dilate(blocked, kN, kN, 6.0 - 1e-9);
+  std::vector<char> traversable(blocked.size(), 0), goal(blocked.size(), 0);
+  for (std::size_t i = 0; i < blocked.size(); ++i) traversable[i] = !near[i];
+  goal[kN * kN - 1] = 1;
+  EXPECT_TRUE(ShortestCellPath(traversable, goal, kN, kN, {0, 0}).empty());
+  const std::vector<Eigen::Vector2i> path =
+      ShortestCellPath(traversable, goal, kN, kN, {0, 0}, /*diagonal_past_corners=*/true);
+  ASSERT_FALSE(path.empty());
+  EXPECT_EQ(path.back(), Eigen::Vector2i(kN - 1, kN - 1));
+  for (std::size_t k = 0; k + 1 < path.size(); ++k) {
+    const Eigen::Vector2d mid = 0.5 * (path[k] + path[k + 1]).cast<double>();
+    for (int iy = 0; iy < kN; ++iy)
+      for (int ix = 0; ix < kN; ++ix)
+        if (blocked[iy * kN + ix]) {
+          EXPECT_GE((path[k] - Eigen::Vector2i(ix, iy)).squaredNorm(), 36);
+          EXPECT_GE((mid - Eigen::Vector2d(ix, iy)).norm(), std::sqrt(35.5) - 1e-9);
+        }
+  }
+}
+
+}  // namespace
+}  // namespace plywood::perception
