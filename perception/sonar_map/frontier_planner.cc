@@ -91,8 +91,7 @@ std::vector<char> ClearMask(const CellMap& map, double radius_cells) {
 
 std::vector<Eigen::Vector2i> ShortestCellPath(const std::vector<char>& traversable,
                                               const std::vector<char>& goal, int width, int height,
-                                              const Eigen::Vector2i& start,
-                                              bool diagonal_past_corners) {
+                                              const Eigen::Vector2i& start) {
   if (start.x() < 0 || start.y() < 0 || start.x() >= width || start.y() >= height) return {};
   const std::size_t n = static_cast<std::size_t>(width) * height;
   std::vector<double> dist(n, std::numeric_limits<double>::infinity());
@@ -122,8 +121,7 @@ std::vector<Eigen::Vector2i> ShortestCellPath(const std::vector<char>& traversab
         if (dx == 0 && dy == 0) continue;
         const int nx = ix + dx, ny = iy + dy;
         if (!ok(nx, ny)) continue;
-        if (dx != 0 && dy != 0 && !diagonal_past_corners && !(ok(ix + dx, iy) && ok(ix, iy + dy)))
-          continue;
+        if (dx != 0 && dy != 0 && !(ok(ix + dx, iy) && ok(ix, iy + dy))) continue;
         const double nd = d + ((dx != 0 && dy != 0) ? std::sqrt(2.0) : 1.0);
         const long j = static_cast<long>(Index(nx, ny, width));
         if (nd < dist[j]) {

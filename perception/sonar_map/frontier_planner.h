@@ -33,15 +33,10 @@ std::vector<char> Dilate(const std::vector<char>& mask, int width, int height, d
 // Dijkstra over the 8-connected `traversable` cells (steps cost 1 and sqrt 2; a diagonal step
 // needs both side cells traversable) from `start` (always allowed) to the nearest cell with
 // goal set. Returns the cells start..goal, or empty when no goal is reachable. Ties are broken by
-// the lowest cell index, so the answer is deterministic. With diagonal_past_corners a diagonal step
-// needs only its two end cells: when every traversable cell keeps a clearance c (in cells) from
-// the blocking cells, the step's midpoint still keeps sqrt(c^2 - 1/2) (0.298 m of 0.30 m), and a
-// passage between two corners met on the diagonal is a chain of single cells touching at their
-// corners, which the side-cell rule cuts.
+// the lowest cell index, so the answer is deterministic.
 std::vector<Eigen::Vector2i> ShortestCellPath(const std::vector<char>& traversable,
                                               const std::vector<char>& goal, int width, int height,
-                                              const Eigen::Vector2i& start,
-                                              bool diagonal_past_corners = false);
+                                              const Eigen::Vector2i& start);
 // Line of sight between two cell centres: every cell the segment passes through is traversable
 // (the segment is sampled every quarter cell; the end cells are not checked). Unlike
 // ShortestCellPath it lets a segment through the shared corner of two diagonal blocked cells and

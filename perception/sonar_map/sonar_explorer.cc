@@ -8,7 +8,6 @@
 
 #include "msgs/shortest_number.h"
 #include "perception/sonar_map/echo_gated_model.h"
-#include "perception/sonar_map/echo_passage.h"
 #include "perception/sonar_map/escape_cells.h"
 #include "perception/sonar_map/frontier_planner.h"
 #include "perception/sonar_map/obstacle_circuit.h"
@@ -105,12 +104,6 @@ void SonarExplorerOptions::Validate() const {
         "squeeze_clearance_m: must be 0 or > robot_radius_m + front_margin_m and <= "
         "narrow_clearance_m, got " +
         msgs::ShortestNumber(squeeze_clearance_m));
-  if (squeeze_echo_min_passes < 1)
-    throw std::invalid_argument("squeeze_echo_min_passes: must be >= 1, got " +
-                                std::to_string(squeeze_echo_min_passes));
-  RequireInRange("squeeze_echo_keep_m", squeeze_echo_keep_m, 0.0, 1.0);
-  RequirePositive("squeeze_echo_speed_m_s", squeeze_echo_speed_m_s);
-  RequireInRange("squeeze_echo_known_m", squeeze_echo_known_m, 0.0, 1.0);
   RequireInRange("frontier_view_m", frontier_view_m, 0.01, 10.0);
   RequireNonNegative("frontier_wall_band_m", frontier_wall_band_m);
   if (!(frontier_view_m > waypoint_tolerance_m))
@@ -184,10 +177,7 @@ msgs::WheelSpeedCommand SonarExplorer::DriveTo(const msgs::Pose2D& X_WR,
   twist.angular_rad_s = w;
   // Trajectories parallel to x or y: turn on the spot first, drive once aligned.
   if (std::abs(heading_error) < 0.2)
-    twist.linear_m_s = std::min(through_echo_passage_
-                                    ? std::min(options_.speed_m_s, options_.squeeze_echo_speed_m_s)
-                                    : options_.speed_m_s,
-                                0.1 + d.norm());
+    twist.linear_m_s = std::min(options_.speed_m_s, 0.1 + d.norm());
   return robot::TwistToWheelSpeeds(spec_, twist);
 }
 
@@ -234,7 +224,6 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
   if (cell.x() >= 0) visits_[cell.y() * grid_.width() + cell.x()] += 1.0;
   const PlanningCells planning = Planning(here, map.obstacles);
   heading_to_circuit_ = false;
-  through_echo_passage_ = false;
   if (options_.circle_obstacles && PlanCircuit(map, planning, here, time_s)) {
     heading_to_frontier_ = false;
     target_partition_ = -1;
@@ -293,19 +282,15 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
     // when none is left either. Standing on a frontier goal already (the robot came to rest a few
     // centimetres past where it marked one) is arriving there: look from here and from the centre
     // of the robot's cell, which the goal test measures from; then no goal is left in that cell.
-    bool on_echoes = false;
-    std::optional<std::vector<Eigen::Vector2d>> frontier =
-        PlanToAnyFrontier(planning, here, &on_echoes);
+    std::optional<std::vector<Eigen::Vector2d>> frontier = PlanToAnyFrontier(planning, here);
     if (frontier && frontier->empty()) {
       MarkLooked(here);
       MarkLooked(grid_.CellCentre(cell.x(), cell.y()));
-      frontier = PlanToAnyFrontier(planning, here, &on_echoes);
+      frontier = PlanToAnyFrontier(planning, here);
     }
     if (frontier && !frontier->empty()) {
       path_ = std::move(*frontier);
       heading_to_frontier_ = true;
-      through_echo_passage_ = on_echoes;
-      if (on_echoes) echo_passage_paint_ = planning.axis_free_paint;
       target_partition_ = -1;
       return;
     }
@@ -523,39 +508,16 @@ SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here
   if (options_.squeeze_clearance_m > 0.0)
     usable(out.squeeze_safe_from_heard, Dilate(heard, W, H, options_.squeeze_clearance_m / res),
            heard, options_.squeeze_clearance_m);
-  if (options_.squeeze_clearance_m > 0.0 && options_.squeeze_on_echoes) {
-    // The grid's occupied cells less the axes' free paint; echoes that blocked a move and bumps
-    // stay whatever the axes say.
-    std::vector<char> grid_occupied(heard.size(), 0);
-    for (std::size_t i = 0; i < heard.size(); ++i)
-      grid_occupied[i] = out.cells.cells[i] == CellState::kOccupied;
-    std::vector<char> echoed = HeardWithoutAxisFreePaint(
-        grid_occupied, beam_free_, options_.squeeze_echo_min_passes,
-        static_cast<int>(std::lround(options_.squeeze_echo_keep_m / res)));
-    out.axis_free_paint.assign(heard.size(), 0);
-    for (std::size_t i = 0; i < heard.size(); ++i) {
-      out.axis_free_paint[i] = grid_occupied[i] && !echoed[i];
-      echoed[i] = heard[i] && !out.axis_free_paint[i];
-    }
-    for (const Eigen::Vector2d& e : blocking_echoes_) {
-      const Eigen::Vector2i c = grid_.CellAt(e);
-      if (c.x() >= 0) echoed[static_cast<std::size_t>(c.y()) * W + c.x()] = 1;
-    }
-    usable(out.echo_squeeze_safe_from_heard,
-           Dilate(echoed, W, H, options_.squeeze_clearance_m / res), echoed,
-           options_.squeeze_clearance_m);
-  }
   return out;
 }
 
 std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::CellPath(
     const std::vector<char>& traversable, const std::vector<char>& goal,
-    const Eigen::Vector2d& here, bool diagonal_past_corners) const {
+    const Eigen::Vector2d& here) const {
   const int W = grid_.width(), H = grid_.height();
   const Eigen::Vector2i start = grid_.CellAt(here);
   if (start.x() < 0) return std::nullopt;
-  const std::vector<Eigen::Vector2i> cells =
-      ShortestCellPath(traversable, goal, W, H, start, diagonal_past_corners);
+  const std::vector<Eigen::Vector2i> cells = ShortestCellPath(traversable, goal, W, H, start);
   if (cells.empty()) return std::nullopt;
   const std::vector<Eigen::Vector2i> path = SimplifyPath(cells, traversable, W, H);
   std::vector<Eigen::Vector2d> waypoints;
@@ -614,23 +576,18 @@ std::vector<Eigen::Vector2d> SonarExplorer::CellPathTo(const std::vector<char>& 
 }
 
 std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToAnyFrontier(
-    const PlanningCells& planning, const Eigen::Vector2d& here, bool* on_echoes) const {
-  *on_echoes = false;
+    const PlanningCells& planning, const Eigen::Vector2d& here) const {
   std::optional<std::vector<Eigen::Vector2d>> path =
       PlanToFrontier(planning, planning.safe_from_heard, here);
   if (!path) path = PlanToFrontier(planning, planning.narrow_safe_from_heard, here);
   if (!path && !planning.squeeze_safe_from_heard.empty())
     path = PlanToFrontier(planning, planning.squeeze_safe_from_heard, here);
-  if (!path && !planning.echo_squeeze_safe_from_heard.empty()) {
-    path = PlanToFrontier(planning, planning.echo_squeeze_safe_from_heard, here, true);
-    *on_echoes = path.has_value();
-  }
   return path;
 }
 
 std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToFrontier(
     const PlanningCells& planning, const std::vector<char>& safe_from_heard,
-    const Eigen::Vector2d& here, bool diagonal_past_corners) const {
+    const Eigen::Vector2d& here) const {
   const int W = grid_.width(), H = grid_.height();
   const double res = grid_.resolution_m();
   // Unknown cells next to an occupied one are the edge of a wall the sonar has heard, not space
@@ -656,7 +613,7 @@ std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToFrontier(
       traversable[i] = safe_from_heard[i] && planning.cells.cells[i] == CellState::kFree;
       goal[i] = near_frontier[i] && traversable[i] && !Abandoned(grid_.CellCentre(ix, iy));
     }
-  return CellPath(traversable, goal, here, diagonal_past_corners);
+  return CellPath(traversable, goal, here);
 }
 
 std::optional<msgs::WheelSpeedCommand> SonarExplorer::ReactToBump(
@@ -684,7 +641,6 @@ std::optional<msgs::WheelSpeedCommand> SonarExplorer::ReactToBump(
   if (perimeter_done_ && !path_.empty()) GiveUpMove(Position(X_WR));
   path_.clear();
   heading_to_frontier_ = false;
-  through_echo_passage_ = false;
   last_replan_s_ = -1e9;
   // Away from the panel along the robot's axis. A side panel's arc reaches both the front and the
   // rear half, and its centre's cosine is 0 up to rounding (+6e-17 left, -2e-16 right): the
@@ -707,20 +663,6 @@ std::optional<msgs::WheelSpeedCommand> SonarExplorer::ReactToBump(
   return robot::TwistToWheelSpeeds(spec_, twist);
 }
 
-bool SonarExplorer::NearHeardCell(const Eigen::Vector2d& p) const {
-  const Eigen::Vector2i c = grid_.CellAt(p);
-  if (c.x() < 0) return false;
-  const int r = static_cast<int>(std::ceil(options_.squeeze_echo_known_m / grid_.resolution_m()));
-  for (int dy = -r; dy <= r; ++dy)
-    for (int dx = -r; dx <= r; ++dx) {
-      const int ix = c.x() + dx, iy = c.y() + dy;
-      if (grid_.Contains(ix, iy) && grid_.Probability(ix, iy) > 1.0 - options_.map.eps &&
-          (grid_.CellCentre(ix, iy) - p).norm() <= options_.squeeze_echo_known_m)
-        return true;
-    }
-  return false;
-}
-
 bool SonarExplorer::MapBlocksFront(const msgs::Pose2D& X_WR) const {
   // Occupied cells heard earlier in the corridor the body sweeps ahead: a corner the sonar heard
   // from elsewhere stays there when the sonar now misses it (specular, or inside 0.15 m).
@@ -737,10 +679,6 @@ bool SonarExplorer::MapBlocksFront(const msgs::Pose2D& X_WR) const {
     for (int dx = -r; dx <= r; ++dx) {
       const int ix = c.x() + dx, iy = c.y() + dy;
       if (!grid_.Contains(ix, iy) || grid_.Probability(ix, iy) <= 1.0 - options_.map.eps) continue;
-      // A passage measured by the axes' echoes is passed between the faces they heard.
-      if (through_echo_passage_ &&
-          echo_passage_paint_[static_cast<std::size_t>(iy) * grid_.width() + ix])
-        continue;
       const Eigen::Vector2d d = grid_.CellCentre(ix, iy) - here;
       const double along = d.dot(ahead);
       const double side = ahead.x() * d.y() - ahead.y() * d.x();
@@ -791,17 +729,13 @@ msgs::WheelSpeedCommand SonarExplorer::Explore(const robot::ControllerInput& inp
   }
   msgs::WheelSpeedCommand command = DriveTo(X_WR, path_.front());
   const robot::BodyTwist twist = robot::WheelSpeedsToTwist(spec_, command);
-  std::optional<Eigen::Vector2d> echo =
+  const std::optional<Eigen::Vector2d> echo =
       twist.linear_m_s > 0.0 && input.sonar != nullptr ? FrontBlocked(*input.sonar) : std::nullopt;
   if (echo) {
+    // The planner did not know this echo: it is in the way from now on.
     const double c = std::cos(X_WR.theta_rad), s = std::sin(X_WR.theta_rad);
-    const Eigen::Vector2d point = Position(X_WR) + Eigen::Vector2d(c * echo->x() - s * echo->y(),
-                                                                   s * echo->x() + c * echo->y());
-    // In a passage measured by the echoes, a face the map holds is left to MapBlocksFront.
-    if (through_echo_passage_ && NearHeardCell(point))
-      echo.reset();
-    else
-      blocking_echoes_.push_back(point);  // the planner did not know it: in the way from now on
+    blocking_echoes_.push_back(Position(X_WR) + Eigen::Vector2d(c * echo->x() - s * echo->y(),
+                                                                s * echo->x() + c * echo->y()));
   }
   if (twist.linear_m_s > 0.0 && (echo || MapBlocksFront(X_WR))) {
     // Negative experience: this move cannot be made; forget the path and replan at once.

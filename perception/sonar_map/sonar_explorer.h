@@ -92,22 +92,6 @@ struct SonarExplorerOptions {
   // 0 = off; otherwise between robot_radius_m + front_margin_m (the front check's corridor) and
   // narrow_clearance_m.
   double squeeze_clearance_m = 0.30;
-  // After that, before "map_complete": the squeeze again, with the heard cells the grid-aligned
-  // sonar axes saw through and heard no face near dropped (echo_passage.h): the network paints a
-  // box corner out by a few centimetres, so a 0.62-0.65 m passage between two corners is heard
-  // narrower than 2 squeeze_clearance_m (generated seed 22: 4-5 m^2 never entered behind one).
-  // Such a path is driven at squeeze_echo_speed_m_s, and while on it the grid's occupied cells
-  // dropped so do not stop the move (echoes, bumps and the other cells still do). Needs
-  // squeeze_clearance_m > 0.
-  bool squeeze_on_echoes = true;
-  int squeeze_echo_min_passes = 2;    // axes through a cell that make its paint droppable
-  double squeeze_echo_keep_m = 0.05;  // a cell this close to an axis echo stays (a face heard)
-  double squeeze_echo_speed_m_s = 0.1;
-  // On such a path a front echo whose point (on its sonar's axis) lies this close to an occupied
-  // grid cell is that face, heard from the cone's edge: the occupied cells' own front check
-  // (MapBlocksFront) decides about it, since an oblique sonar places a corner the path keeps
-  // 0.30 m from at 0.20 m beside the body (generated seed 22 world 18: every passage try stopped).
-  double squeeze_echo_known_m = 0.15;
   double stop_range_m = 0.3;  // a front echo closer than this aborts the move (into D)
   // Half-width of that corridor beyond the body. It is narrower than path_clearance_m, so that a
   // planned path is not blocked by the cells that shaped it.
@@ -208,19 +192,13 @@ class SonarExplorer final : public robot::Controller {
     std::vector<char> narrow_safe_from_heard;
     // safe_from_heard with squeeze_clearance_m (empty when it is 0).
     std::vector<char> squeeze_safe_from_heard;
-    // The same from the heard cells less the axes' free paint (squeeze_on_echoes; else empty),
-    // and the occupied grid cells that paint was.
-    std::vector<char> echo_squeeze_safe_from_heard;
-    std::vector<char> axis_free_paint;
   };
   PlanningCells Planning(const Eigen::Vector2d& here, const std::vector<Rect>& obstacles) const;
   // Waypoints after the robot along the shortest traversable cell path to a goal cell: empty when
   // the robot's cell is a goal, nullopt when no goal can be reached.
-  // diagonal_past_corners: as ShortestCellPath's.
   std::optional<std::vector<Eigen::Vector2d>> CellPath(const std::vector<char>& traversable,
                                                        const std::vector<char>& goal,
-                                                       const Eigen::Vector2d& here,
-                                                       bool diagonal_past_corners = false) const;
+                                                       const Eigen::Vector2d& here) const;
   bool LegsClear(const PlanningCells& planning, const Eigen::Vector2d& here,
                  const std::vector<Eigen::Vector2d>& path) const;
   std::vector<Eigen::Vector2d> SafePathTo(const PlanningCells& planning, const CognitiveMap& map,
@@ -235,17 +213,13 @@ class SonarExplorer final : public robot::Controller {
   // frontier is left or none can be reached.
   std::optional<std::vector<Eigen::Vector2d>> PlanToFrontier(
       const PlanningCells& planning, const std::vector<char>& safe_from_heard,
-      const Eigen::Vector2d& here, bool diagonal_past_corners = false) const;
+      const Eigen::Vector2d& here) const;
   // PlanToFrontier with path_clearance_m, else with narrow_clearance_m, else (when it is set)
-  // with squeeze_clearance_m, else (squeeze_on_echoes) with that from the cells the echoes leave;
-  // `on_echoes` says whether the last one found the path.
+  // with squeeze_clearance_m.
   std::optional<std::vector<Eigen::Vector2d>> PlanToAnyFrontier(const PlanningCells& planning,
-                                                                const Eigen::Vector2d& here,
-                                                                bool* on_echoes) const;
+                                                                const Eigen::Vector2d& here) const;
   // While a bump panel is pressed, and for bump_back_off_s after: the command backing away.
   std::optional<msgs::WheelSpeedCommand> ReactToBump(const robot::ControllerInput& input);
-  // Whether an occupied grid cell lies within squeeze_echo_known_m of world point `p`.
-  bool NearHeardCell(const Eigen::Vector2d& p) const;
   // Whether an occupied grid cell lies in the corridor the body sweeps within stop_range_m.
   bool MapBlocksFront(const msgs::Pose2D& X_WR) const;
   // The sideways offset (left positive) of the nearest contact point in that corridor, if any.
@@ -316,10 +290,6 @@ class SonarExplorer final : public robot::Controller {
   double last_replan_s_ = -1e9;
   double last_decay_s_ = -1.0;
   std::vector<Eigen::Vector2d> path_;
-  // Whether path_ goes through a passage measured by the axes' echoes (squeeze_on_echoes), and the
-  // grid cells of paint it was planned without.
-  bool through_echo_passage_ = false;
-  std::vector<char> echo_passage_paint_;
   int target_partition_ = -1;
   std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> failed_moves_;  // from, to points
   std::vector<Eigen::Vector2d> abandoned_;  // final targets of blocked moves: never tried again

@@ -65,11 +65,6 @@ void VisitFields(A& a, perception::SonarExplorerOptions& o) {
   a("path_clearance_m", o.path_clearance_m);
   a("narrow_clearance_m", o.narrow_clearance_m);
   a("squeeze_clearance_m", o.squeeze_clearance_m);
-  a("squeeze_on_echoes", o.squeeze_on_echoes);
-  a("squeeze_echo_min_passes", o.squeeze_echo_min_passes);
-  a("squeeze_echo_keep_m", o.squeeze_echo_keep_m);
-  a("squeeze_echo_speed_m_s", o.squeeze_echo_speed_m_s);
-  a("squeeze_echo_known_m", o.squeeze_echo_known_m);
   a("frontier_view_m", o.frontier_view_m);
   a("frontier_wall_band_m", o.frontier_wall_band_m);
   a("circle_obstacles", o.circle_obstacles);
