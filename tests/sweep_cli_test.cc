@@ -903,7 +903,8 @@ TEST(SweepCliTest, AWorldSpawnTheSweepCannotUseIsRefusedAtLoad) {
                     "\nrobot: {model: p3dx, spawn: {x_m: 0, y_m: 0, theta_deg: 0}}\n"
                     "sensors: {encoders: {}}\noutput: {snapshot: false}\n");
   for (const auto& [data, got] : std::vector<std::pair<std::string, std::string>>{
-           {"data=\"-2\"", "got 1 number"}, {"data=\"-2 -2 1e300\"", "got -2 -2 1e+300"}}) {
+           {"data=\"-2\"", "expected three numbers (x_m y_m theta_deg), got 1"},
+           {"data=\"-2 -2 1e300\"", "the heading must be in [-360, 360] deg"}}) {
     SCOPED_TRACE(data);
     std::string text = hall;
     text.replace(text.find(spawn), spawn.size(), data);

@@ -2,14 +2,12 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
 #include <utility>
 
 #include "eval/protocol.h"
-#include "msgs/shortest_number.h"
 #include "perception/logs/byte_order_mark.h"
 #include "sim/config/config_error.h"
 #include "sim/config/experiment_config.h"
@@ -66,24 +64,14 @@ std::vector<std::string> SpawnOverrides(const std::filesystem::path& world) {
   } catch (const std::exception&) {
     return {};  // the run reports the compile error with its full context
   }
-  const std::optional<std::array<double, 3>> spawn = sim::WorldSpawn(model.get(), 0);
-  const int count = sim::WorldSpawnValueCount(model.get(), 0);
-  if (count < 0) return {};
   // A malformed spawn_0 was skipped here: with the experiment's own robot.spawn the cell then ran
   // there, in a world that named another spot, without a word (s38).
-  if (!spawn ||
-      !std::all_of(spawn->begin(), spawn->end(), [](double v) { return std::isfinite(v); }) ||
-      !(std::abs((*spawn)[2]) <= sim::kMaxSpawnTurnDeg)) {
-    std::string got = std::to_string(count) + (count == 1 ? " number" : " numbers");
-    if (spawn) {
-      got = msgs::ShortestNumber((*spawn)[0]) + " " + msgs::ShortestNumber((*spawn)[1]) + " " +
-            msgs::ShortestNumber((*spawn)[2]);
-    }
+  if (const auto problem = sim::WorldSpawnProblem(model.get(), 0)) {
     throw sim::ConfigError(world.string(), "spawn_0",
-                           "the sweep places the robot here, so it must be three finite numbers "
-                           "(x_m y_m theta_deg, the heading in [-360, 360]), got " +
-                               got);
+                           "the sweep places the robot here: " + *problem);
   }
+  const std::optional<std::array<double, 3>> spawn = sim::WorldSpawn(model.get(), 0);
+  if (!spawn) return {};
   const auto& data = *spawn;
   const auto text = [](double v) {
     char buffer[64];

@@ -65,26 +65,12 @@ SpawnPose WorldDefaultSpawn(const std::filesystem::path& world) {
   } catch (const std::exception&) {
     return {};  // the scene reports the compile error with its full context
   }
-  const std::optional<std::array<double, 3>> spawn = WorldSpawn(model.get(), 0);
-  // A spawn_0 of one or two numbers was taken for none: the robot started at the origin.
-  if (const int count = WorldSpawnValueCount(model.get(), 0); count >= 0 && count != 3) {
-    throw ConfigError(world.string(), "spawn_0",
-                      "expected three numbers (x_m y_m theta_deg), got " + std::to_string(count));
+  if (const auto problem = WorldSpawnProblem(model.get(), 0)) {
+    throw ConfigError(world.string(), "spawn_0", *problem);
   }
+  const std::optional<std::array<double, 3>> spawn = WorldSpawn(model.get(), 0);
   if (!spawn) return {};
   const auto [x, y, theta] = *spawn;
-  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(theta)) {
-    throw ConfigError(world.string(), "spawn_0",
-                      "expected three finite numbers (x_m y_m theta_deg), got " +
-                          msgs::ShortestNumber(x) + " " + msgs::ShortestNumber(y) + " " +
-                          msgs::ShortestNumber(theta));
-  }
-  if (!(std::abs(theta) <= kMaxSpawnTurnDeg)) {  // as SpawnPose::Validate
-    throw ConfigError(world.string(), "spawn_0",
-                      "the heading must be in [-360, 360] deg (one turn either way holds every "
-                      "heading), got " +
-                          msgs::ShortestNumber(theta));
-  }
   return {x, y, theta};
 }
 

@@ -22,12 +22,9 @@ struct SpawnPose {
   double x_m = 0.0;
   double y_m = 0.0;
   double theta_deg = 0.0;
-  // theta_deg within one turn either way (kMaxSpawnTurnDeg): every heading can be written there,
-  // and a larger value names no new heading; far beyond it the double loses the degree (1e300
-  // deg is no heading at all: its spacing is 1e284 deg).
+  // theta_deg within one turn either way (kMaxSpawnTurnDeg, sim/world/world_spawns.h).
   void Validate() const;
 };
-inline constexpr double kMaxSpawnTurnDeg = 360.0;
 
 struct PhysicsOptions {
   double timestep_s = 0.01;

@@ -1,6 +1,10 @@
 #include "sim/world/world_spawns.h"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
+
+#include "msgs/shortest_number.h"
 
 namespace plywood::sim {
 
@@ -11,9 +15,24 @@ std::optional<std::array<double, 3>> WorldSpawn(const mjModel* m, int k) {
   return std::array<double, 3>{v[0], v[1], v[2]};
 }
 
-int WorldSpawnValueCount(const mjModel* m, int k) {
+std::optional<std::string> WorldSpawnProblem(const mjModel* m, int k) {
   const int id = mj_name2id(m, mjOBJ_NUMERIC, ("spawn_" + std::to_string(k)).c_str());
-  return id < 0 ? -1 : m->numeric_size[id];
+  if (id < 0) return std::nullopt;
+  // A spawn of one or two numbers (data="-2") is malformed, not missing.
+  if (m->numeric_size[id] != 3) {
+    return "expected three numbers (x_m y_m theta_deg), got " + std::to_string(m->numeric_size[id]);
+  }
+  const mjtNum* v = m->numeric_data + m->numeric_adr[id];
+  if (!std::all_of(v, v + 3, [](double x) { return std::isfinite(x); })) {
+    return "expected three finite numbers (x_m y_m theta_deg), got " + msgs::ShortestNumber(v[0]) +
+           " " + msgs::ShortestNumber(v[1]) + " " + msgs::ShortestNumber(v[2]);
+  }
+  if (!(std::abs(v[2]) <= kMaxSpawnTurnDeg)) {
+    return "the heading must be in [-360, 360] deg (one turn either way holds every heading), "
+           "got " +
+           msgs::ShortestNumber(v[2]);
+  }
+  return std::nullopt;
 }
 
 }  // namespace plywood::sim

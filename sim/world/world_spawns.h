@@ -4,6 +4,7 @@
 
 #include <array>
 #include <optional>
+#include <string>
 
 namespace plywood::sim {
 
@@ -13,8 +14,13 @@ namespace plywood::sim {
 // entry.
 std::optional<std::array<double, 3>> WorldSpawn(const mjModel* m, int k);
 
-// How many numbers spawn K holds (3 when well formed), or -1 when the model has no spawn K: a
-// reader tells a malformed entry (data="-2") from a missing one.
-int WorldSpawnValueCount(const mjModel* m, int k);
+// The most a spawn heading may turn either way: every heading can be written within one turn, and
+// far beyond it the double loses the degree (1e300 deg: spacing 1e284 deg).
+inline constexpr double kMaxSpawnTurnDeg = 360.0;
+
+// What makes spawn K unusable as a pose (not three numbers, not finite, a heading beyond
+// kMaxSpawnTurnDeg), as one line for a "FILE: spawn_K: ..." error; nullopt when it is well formed
+// or the model has none. One rule for every reader that places a robot there.
+std::optional<std::string> WorldSpawnProblem(const mjModel* m, int k);
 
 }  // namespace plywood::sim
