@@ -157,6 +157,10 @@ TEST(CliHelpTest, UsageErrorsAreOneLineNamingTheCulpritWithExitCode2) {
       {"train sonar-net --hidden 0,16", "train: --hidden: layer sizes must be in [1, 256]"},
       {"train sonar-net --hidden 4,4,4,4,4,4,4,4", "train: --hidden: at most 7 layers"},
       {"train sonar-net --out " + dir.string(), "train: --out: " + dir.string() + " is a folder"},
+      // s39: each ring keeps its labelled cells in memory; this grew until memory ran out.
+      {"train sonar-net --rooms 100000 --poses 100000 --out " + (dir / "n.txt").string(),
+       "train: --poses: (rooms + test_rooms) x poses = 10001500000 sonar rings, more than the "
+       "limit of 100000"},
       // audit s32: a bench shorter than one step printed "0 x real time" and "-nan rays per wall
       // second" with exit 0; a video into a missing folder or onto a folder failed after the run
       // with ffmpeg's line and two of ours (exit 1); --video-fps nan named "fps"; a line break in

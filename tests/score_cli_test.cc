@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <fstream>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "sim/runner/run_directory.h"
 #include "tests/support/cli_test_support.h"
@@ -115,6 +117,11 @@ TEST(ScoreCliTest, BadFilesFailWithOneLineNamingFileLineAndField) {
        "nested as estimator 'my')",
        "trajectory", "b5.csv", "time_s,my.est_x_m,my.est_y_m,my.est_theta_rad\n0,-6.5,0,0\n",
        "b5.csv:1: my.est_x_m: 'my.est' cannot name a metric"},
+      {"CSV heading beyond 1e9 rad (s39: 1e300 was scored as some angle, heading_error_deg "
+       "-41.4, exit 0)",
+       "trajectory", "b8.csv", "time_s,mine_x_m,mine_y_m,mine_theta_rad\n0,-6.5,0,1e300\n",
+       "b8.csv:2: mine_theta_rad: must be within 1e+09 rad of 0 (beyond it a double cannot hold a "
+       "heading to 1e-6 rad), got 1e+300"},
       {"CSV estimate named with a space", "trajectory", "b6.csv",
        "time_s,my est_x_m,my est_y_m,my est_theta_rad\n0,-6.5,0,0\n",
        "b6.csv:1: my est_x_m: 'my est' cannot name a metric"},
@@ -279,11 +286,13 @@ TEST(ScoreCliTest, FilesWithAByteOrderMarkScoreAsWithout) {
     const fs::path plain = testing::WriteFile(dir / file, Slurp(RunDir() / file));
     const fs::path marked =
         testing::WriteFile(dir / ("bom_" + file), "\xEF\xBB\xBF" + Slurp(RunDir() / file));
-    const auto expected = RunPlywood(
-        "score " + kind + " " + RunDir().string() + " " + plain.string() + " --name e", dir);
+    // --name names a TUM file's one estimate (the CSVs name theirs, and refuse it since s39).
+    const std::string name = file.ends_with(".tum") ? " --name e" : "";
+    const auto expected =
+        RunPlywood("score " + kind + " " + RunDir().string() + " " + plain.string() + name, dir);
     ASSERT_EQ(expected.exit_code, 0) << expected.err;
-    const auto r = RunPlywood(
-        "score " + kind + " " + RunDir().string() + " " + marked.string() + " --name e", dir);
+    const auto r =
+        RunPlywood("score " + kind + " " + RunDir().string() + " " + marked.string() + name, dir);
     EXPECT_EQ(r.exit_code, 0) << r.err;
     // The figures agree; the header line names the file.
     const auto figures = [](const std::string& out) {
@@ -291,6 +300,96 @@ TEST(ScoreCliTest, FilesWithAByteOrderMarkScoreAsWithout) {
     };
     EXPECT_EQ(figures(r.out), figures(expected.out)) << r.out;
   }
+}
+
+// s39 tenth pass: --name names a TUM file's one estimate, or the extractor of a lines file without
+// an extractor column. A trajectory.csv-layout file (its header names its estimates) or a lines
+// file with an extractor column dropped it without a word: the figures came out under the file's
+// names, and --out wrote them there.
+TEST(ScoreCliTest, ANameTheFileWouldOverruleIsRefused) {
+  const fs::path dir = testing::MakeTempDir("score_cli_name");
+  const std::vector<std::tuple<std::string, std::string, std::string>> cases = {
+      {"trajectory", "trajectory.csv",
+       "trajectory.csv:1: header: names the file's estimates (NAME_x_m, ...), so --name mine "
+       "would be ignored: leave --name out"},
+      {"lines", "lines.csv",
+       "lines.csv:1: extractor: the column names each row's extractor, so --name mine would be "
+       "ignored: leave --name out"}};
+  for (const auto& [kind, file, expected] : cases) {
+    SCOPED_TRACE(file);
+    const auto r =
+        RunPlywood("score " + kind + " " + RunDir().string() + " " + (RunDir() / file).string() +
+                       " --name mine --out " + (dir / "s.json").string(),
+                   dir);
+    EXPECT_EQ(r.exit_code, 2) << r.out;
+    EXPECT_EQ(r.err, "plywood: " + (RunDir() / expected).string() + "\n");
+    EXPECT_FALSE(fs::exists(dir / "s.json"));
+  }
+  // Where the file names nothing, --name still names the figures.
+  const std::string lines = Slurp(RunDir() / "lines.csv");
+  std::string without_extractor;
+  for (std::size_t at = 0; at < lines.size();) {
+    const std::size_t end = lines.find('\n', at) + 1;
+    const std::string line = lines.substr(at, end - at);
+    at = end;
+    const std::size_t first = line.find(','), second = line.find(',', first + 1);
+    if (line.substr(first + 1, second - first - 1) == "ransac") continue;  // one extractor
+    without_extractor += line.substr(0, first) + line.substr(second);
+  }
+  const fs::path bare = testing::WriteFile(dir / "bare.csv", without_extractor);
+  for (const auto& [kind, file] : std::vector<std::pair<std::string, fs::path>>{
+           {"trajectory", RunDir() / "trajectory.fused.tum"}, {"lines", bare}}) {
+    SCOPED_TRACE(file);
+    const auto r = RunPlywood("score " + kind + " " + RunDir().string() + " " + file.string() +
+                                  " --name mine --out " + (dir / "s.json").string(),
+                              dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto scored = testing::FlattenMetricsJson(Slurp(dir / "s.json"));
+    EXPECT_TRUE(scored.count(kind == "lines" ? "lines.mine.recall" : "odometry.mine.ate_rms_m"))
+        << Slurp(dir / "s.json");
+    fs::remove(dir / "s.json");
+  }
+}
+
+// s39 tenth pass: score grid compiles the world file the run's config.yaml names as it is now, so
+// a world edited since the run (a wall moved 1 cm) was scored against without a word; the replay
+// already refused it. walls.csv is the run's record of its world.
+TEST(ScoreCliTest, AGridOfARunWhoseWorldChangedSinceIsRefused) {
+  const fs::path dir = testing::MakeTempDir("score_cli_grid_world");
+  const std::string office = Slurp(testing::SourceRoot() / "worlds" / "office.xml");
+  const fs::path world = testing::WriteFile(dir / "office.xml", office);
+  const fs::path yaml = testing::WriteFile(
+      dir / "e.yaml", "name: grid_world\nduration_s: 0.5\nworld: " + world.string() +
+                          "\nrobot: {model: p3dx, spawn: {x_m: -6.5, y_m: 0.0, theta_deg: 0}}\n"
+                          "controller: {type: idle}\nsensors: {laser: {}}\n"
+                          "output: {snapshot: false}\n");
+  const fs::path run = dir / "run";
+  ASSERT_EQ(RunPlywood("run " + yaml.string() + " --quiet --out " + run.string(), dir).exit_code,
+            0);
+  std::string pgm = "P2\n200 200\n1\n";  // all free, 20 x 20 m at 0.1 m from (-10, -10)
+  for (int i = 0; i < 200 * 200; ++i) pgm += "1\n";
+  const fs::path map = testing::WriteFile(dir / "map.pgm", pgm);
+  const std::string score =
+      "score grid " + run.string() + " " + map.string() + " --resolution 0.1 --origin -10,-10";
+  const auto unchanged = RunPlywood(score, dir);
+  ASSERT_EQ(unchanged.exit_code, 0) << unchanged.err;
+
+  const std::string from = R"(name="wall_1" class="wall" pos="8.009 )";
+  const std::size_t at = office.find(from);
+  ASSERT_NE(at, std::string::npos);
+  std::string moved = office;
+  moved.replace(at, from.size(), R"(name="wall_1" class="wall" pos="8.019 )");
+  testing::WriteFile(world, moved);
+  const auto r = RunPlywood(score, dir);
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_EQ(r.err.rfind("plywood: " + (run / "config.yaml").string() + ": world: " +
+                            world.string() + " changed since the run (walls.csv segment ",
+                        0),
+            0u)
+      << r.err;
+  EXPECT_NE(r.err.find("; the grid would be scored against another world\n"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
 }  // namespace

@@ -357,6 +357,49 @@ TEST(SweepCliTest, ADamagedManifestIsExpandedAgainOrNamed) {
                        "away or choose another --out\n");
 }
 
+// s39 tenth pass: cells.csv, which --collect reads, cut at a line's end or with a row repeated
+// was taken as the whole sweep: results.csv and summary.csv held 2 of 6 cells, "2 of 2 runs
+// finished", exit 0, on --collect and on a resume alike.
+TEST(SweepCliTest, ACutOrEditedCellsCsvIsRewrittenByAResumeAndNamedByACollect) {
+  const fs::path dir = MakeTempDir("SweepCutCellsCsv");
+  const fs::path sweep = WriteFile(dir / "small.yaml", SmallSweep());
+  const fs::path out = dir / "out";
+  const std::string resume = "sweep " + sweep.string() + " --out " + out.string() + " --jobs 2";
+  ASSERT_EQ(RunPlywood(resume, dir).exit_code, 0);
+  const std::string whole = Slurp(out / "results.csv");
+  const std::string cells = Slurp(out / "cells.csv");
+  std::vector<std::string> lines;
+  for (std::size_t at = 0; at < cells.size();) {
+    const std::size_t end = cells.find('\n', at) + 1;
+    lines.push_back(cells.substr(at, end - at));
+    at = end;
+  }
+  ASSERT_EQ(lines.size(), 7u);  // the header and 6 cells
+  const std::string cut = lines[0] + lines[1] + lines[2];
+  const std::string repeated =
+      lines[0] + lines[1] + lines[1] + lines[3] + lines[4] + lines[5] + lines[6];
+  const std::string csv = (out / "cells.csv").string();
+  const std::vector<std::pair<std::string, std::string>> damage = {
+      {cut, "plywood: " + csv +
+                ": lists 2 cells, sweep.json says 6 (cut or edited?): run the "
+                "sweep again"},
+      {repeated, "plywood: " + csv + ": line 3: index: expected 1, got '0' (cut or edited?)"}};
+  for (const auto& [text, error] : damage) {
+    SCOPED_TRACE(text);
+    WriteFile(out / "cells.csv", text);
+    auto r = RunPlywood("sweep --collect " + out.string(), dir);
+    EXPECT_EQ(r.exit_code, 2) << r.out;
+    EXPECT_EQ(r.err.rfind(error, 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    // A resume expands the sweep again, rewriting cells.csv; no run is made again.
+    r = RunPlywood(resume, dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(Slurp(out / "cells.csv"), cells);
+    EXPECT_EQ(Slurp(out / "results.csv"), whole);
+    EXPECT_NE(r.out.find("6 of 6 runs finished"), std::string::npos) << r.out;
+  }
+}
+
 // The time complete.json of each finished run was written: a run made again gets a new one.
 std::map<std::string, fs::file_time_type> RunMarkTimes(const fs::path& out) {
   std::map<std::string, fs::file_time_type> times;

@@ -10,6 +10,7 @@
 
 #include "eval/score/csv_table.h"
 #include "eval/score/run_directory.h"
+#include "eval/score/run_world_check.h"
 #include "perception/logs/carmen_log.h"
 #include "render/geom_footprint.h"
 #include "render/overlay.h"
@@ -19,7 +20,6 @@
 #include "sim/sensors/sonar_sensor.h"
 #include "viewer/run_content.h"
 #include "viewer/run_maps_file.h"
-#include "viewer/run_world_check.h"
 #include "viewer/scene_overlays.h"
 
 #if PLYWOOD_HAS_IMGUI
@@ -123,7 +123,8 @@ ReplayViewer::ReplayViewer(RunReplayData data, const WindowOptions& window)
   options.spawn = data_.trajectories.front().poses.front().pose;
   options.timestep_s = data_.config.physics.timestep_s;
   scene_ = std::make_unique<sim::Scene>(options);
-  RequireWorldAsTheRunSawIt(*scene_, data_.config, data_.walls, data_.config_yaml);
+  eval::RequireWorldAsTheRunSawIt(*scene_, data_.config, data_.walls, data_.config_yaml,
+                                  "a replay would show the run in another world");
   for (const std::string& name : sim::SonarSensor::DefaultSiteNames()) {
     const std::optional<int> site = scene_->FindSite(name);
     sonar_X_RS_.push_back(site ? scene_->SitePoseInRobot(*site) : msgs::Pose2D{});

@@ -87,7 +87,8 @@ void WriteCirclesCsv(const std::filesystem::path& path, std::span<const Extracto
 }
 
 std::vector<LinesCsvRow> ReadLinesCsv(const std::filesystem::path& path,
-                                      const std::string& default_extractor) {
+                                      const std::string& default_extractor,
+                                      bool extractor_named_by_user) {
   const CsvTable table = ReadCsv(path);
   const auto header_error = [&](const std::string& field, const std::string& what) {
     throw sim::ConfigError(table.file + ":" + std::to_string(table.header_line), field, what);
@@ -113,6 +114,12 @@ std::vector<LinesCsvRow> ReadLinesCsv(const std::filesystem::path& path,
     header_error(alpha < 0 ? "alpha_rad" : "r_m", "alpha_rad and r_m come together or not at all");
   const int extractor = table.Column("extractor"), points = table.Column("points"),
             truth = table.Column("truth_segment");
+  // `--name mine` on a file with an extractor column was dropped without a word: the figures came
+  // out under the column's names.
+  if (extractor >= 0 && extractor_named_by_user) {
+    header_error("extractor", "the column names each row's extractor, so --name " +
+                                  default_extractor + " would be ignored: leave --name out");
+  }
   std::vector<LinesCsvRow> rows;
   for (const CsvRow& csv : table.rows) {
     LinesCsvRow row;

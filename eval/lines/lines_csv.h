@@ -48,11 +48,14 @@ std::string CirclesCsvHeader(bool with_room);
 // A segments file as `plywood score lines` takes it: a header row naming the columns, in any
 // order. Required: scan, x1_m, y1_m, x2_m, y2_m. Optional: extractor (else every row is
 // `default_extractor`), alpha_rad and r_m together (else the line through the endpoints), points,
-// truth_segment (read and checked, not used: the scorer matches again).
+// truth_segment (read and checked, not used: the scorer matches again). When
+// `extractor_named_by_user` (score's --name), a file with an extractor column is refused: the
+// name would be ignored.
 // @throws sim::ConfigError "FILE:LINE: FIELD: what is wrong" for an unknown or missing column, a
 // wrong column count, a non-numeric, non-finite or negative field, a zero-length segment without a
 // normal form, a normal form more than 1 mm off the endpoints, an empty file.
 std::vector<LinesCsvRow> ReadLinesCsv(const std::filesystem::path& path,
-                                      const std::string& default_extractor);
+                                      const std::string& default_extractor,
+                                      bool extractor_named_by_user = false);
 
 }  // namespace plywood::eval

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "eval/score/run_directory.h"
+#include "eval/score/run_world_check.h"
 #include "sim/config/config_error.h"
 #include "sim/runner/experiment_runner.h"
 
@@ -80,6 +81,12 @@ OccupancyError ScoreGridImage(const OccupancyTruth& truth, const GridImage& imag
 std::unique_ptr<OccupancyTruth> LoadRunOccupancyTruth(const std::filesystem::path& run_dir) {
   const sim::ExperimentConfig config = LoadRunConfig(run_dir, "plywood score grid");
   const sim::ExperimentRunner runner(config);  // the scene as the run built it; nothing runs
+  // The truth is the world file as it is now: an edited one was scored without a word.
+  RequireWorldAsTheRunSawIt(
+      runner.scene(), config,
+      ReadWallsCsv(
+          RunFile(run_dir, "walls.csv", "the run's walls, to check its world is unchanged")),
+      run_dir / "config.yaml", "the grid would be scored against another world");
   return MakeOccupancyTruth(runner.scene().model(), {config.spawn.x_m, config.spawn.y_m},
                             (run_dir / "config.yaml").string());
 }

@@ -17,7 +17,7 @@ ScoreReport ScoreLinesFile(const std::filesystem::path& run_dir, const std::file
   if (!IsMetricName(name)) {
     throw sim::ConfigError("--name", "", NotAMetricName(name));
   }
-  const std::vector<LinesCsvRow> rows = ReadLinesCsv(file, name);
+  const std::vector<LinesCsvRow> rows = ReadLinesCsv(file, name, !options.name.empty());
 
   // Segments by extractor (in order of first appearance), then by scan, in file order.
   std::vector<ExtractorScore> scores;

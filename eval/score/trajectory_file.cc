@@ -16,6 +16,11 @@
 namespace plywood::eval {
 namespace {
 
+// The largest |heading| a CSV trajectory may hold. Unwrapped headings are fine, but doubles are
+// spaced 1.2e-7 rad at 1e9 rad (the scores print 1e-4 deg, 1.7e-6 rad) and 1e284 rad at 1e300,
+// where a heading of 1e300 was scored as some angle (heading_error_deg -41.4, exit 0).
+constexpr double kMaxHeadingRad = 1e9;
+
 bool IsPlywoodCsv(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   bool first_line = true;  // a UTF-8 byte-order mark there hid "time_s" (read as a TUM file)
@@ -33,7 +38,8 @@ bool EndsWith(const std::string& text, const std::string& suffix) {
          text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
-std::vector<NamedTrajectory> ReadPlywoodCsv(const std::filesystem::path& path) {
+std::vector<NamedTrajectory> ReadPlywoodCsv(const std::filesystem::path& path,
+                                            const std::string& name_flag) {
   const CsvTable table = ReadCsv(path, {.comments = true});
   const auto header_error = [&](const std::string& field, const std::string& what) {
     throw sim::ConfigError(table.file + ":" + std::to_string(table.header_line), field, what);
@@ -42,6 +48,12 @@ std::vector<NamedTrajectory> ReadPlywoodCsv(const std::filesystem::path& path) {
   if (h.size() < 4 || (h.size() - 1) % 3 != 0) {
     header_error("header", "expected time_s then groups NAME_x_m,NAME_y_m,NAME_theta_rad, got " +
                                std::to_string(h.size()) + " columns");
+  }
+  // The header names every estimate: `--name other` was dropped without a word and the figures
+  // came out under the header's name.
+  if (!name_flag.empty()) {
+    header_error("header", "names the file's estimates (NAME_x_m, ...), so --name " + name_flag +
+                               " would be ignored: leave --name out");
   }
   std::vector<NamedTrajectory> trajectories;
   for (std::size_t c = 1; c < h.size(); c += 3) {
@@ -75,6 +87,12 @@ std::vector<NamedTrajectory> ReadPlywoodCsv(const std::filesystem::path& path) {
                      "must be within 1e+09 m of the origin, got " + sim::FormatNumber(v));
         }
       }
+      if (std::abs(pose.pose.theta_rad) > kMaxHeadingRad) {
+        table.Fail(row, h[c + 2],
+                   "must be within 1e+09 rad of 0 (beyond it a double cannot hold a heading to "
+                   "1e-6 rad), got " +
+                       sim::FormatNumber(pose.pose.theta_rad));
+      }
       trajectories[k].poses.push_back(pose);
     }
   }
@@ -84,11 +102,12 @@ std::vector<NamedTrajectory> ReadPlywoodCsv(const std::filesystem::path& path) {
 }  // namespace
 
 std::vector<NamedTrajectory> ReadTrajectoryFile(const std::filesystem::path& path,
-                                                const std::string& tum_name) {
+                                                const std::string& tum_name,
+                                                const std::string& name_flag) {
   if (!perception::IsRegularFile(path)) {
     throw sim::ConfigError(path.string(), "", perception::WhyNotARegularFile(path));
   }
-  if (IsPlywoodCsv(path)) return ReadPlywoodCsv(path);
+  if (IsPlywoodCsv(path)) return ReadPlywoodCsv(path, name_flag);
   try {
     return {{tum_name, perception::ReadTumTrajectory(path)}};
   } catch (const std::invalid_argument& e) {

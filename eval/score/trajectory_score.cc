@@ -84,7 +84,7 @@ ScoreReport ScoreTrajectoryFile(const std::filesystem::path& run_dir,
   if (!IsMetricName(name)) {
     throw sim::ConfigError("--name", "", NotAMetricName(name));
   }
-  std::vector<NamedTrajectory> estimates = ReadTrajectoryFile(file, name);
+  std::vector<NamedTrajectory> estimates = ReadTrajectoryFile(file, name, options.name);
   std::erase_if(estimates, [](const NamedTrajectory& t) { return t.name == "truth"; });
   if (estimates.empty()) {
     throw sim::ConfigError(file.string(), "header", "no estimate to score (only truth columns)");

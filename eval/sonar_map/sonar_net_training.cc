@@ -19,6 +19,7 @@
 #include "sim/config/robot_catalog.h"
 #include "sim/raycast/mujoco_ray_caster.h"
 #include "sim/runner/file_writer.h"
+#include "sim/runner/format_number.h"
 #include "sim/runner/text_file.h"
 #include "sim/sensors/sonar_sensor.h"
 #include "sim/world/occupancy_raster.h"
@@ -181,6 +182,16 @@ void SonarNetTrainingOptions::Validate() const {
   count("rooms", rooms);
   count("test_rooms", test_rooms);
   count("poses", poses);
+  // Each ring keeps its 14 x 14 labelled cells in memory (about 20 kB with the classical model's
+  // points): --rooms 100000 --poses 100000 (1e10 rings, 200 TB) was accepted and grew until the
+  // memory ran out. 100000 rings is about 2 GB; the defaults make 1875.
+  const double rings = (static_cast<double>(rooms) + test_rooms) * poses;
+  if (rings > static_cast<double>(kMaxSonarRings)) {
+    throw std::invalid_argument(
+        "poses: (rooms + test_rooms) x poses = " + sim::FormatNumber(rings) +
+        " sonar rings, more than the limit of " + std::to_string(kMaxSonarRings) +
+        " (each keeps its 196 labelled cells, about 20 kB, in memory)");
+  }
   train.Validate();
   if (out.empty()) throw std::invalid_argument("out: needs a file name");
   std::error_code error;

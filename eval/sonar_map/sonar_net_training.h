@@ -8,6 +8,9 @@
 
 namespace plywood::eval {
 
+// The most sonar rings ((rooms + test_rooms) x poses) one training makes: about 2 GB of cells.
+inline constexpr long kMaxSonarRings = 100000;
+
 struct SonarNetTrainingOptions {
   int rooms = 60;       // random training rooms
   int test_rooms = 15;  // held-out rooms, scored after training

@@ -170,11 +170,27 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
   }
   SweepCollectOutcome outcome;
   std::set<std::string> metric_keys;
+  // A manifest cut at a line's end (or a row deleted or repeated) lost or doubled cells:
+  // results.csv and summary.csv left them out without a word, and "2 of 2 runs finished".
+  const std::size_t expected_cells = meta.value("cells", std::size_t{0});
+  if (meta.contains("cells") && rows.size() - 1 != expected_cells) {
+    throw sim::ConfigError(
+        manifest.string(), "",
+        "lists " + std::to_string(rows.size() - 1) + " cells, sweep.json says " +
+            std::to_string(expected_cells) +
+            " (cut or edited?): run the sweep again (plywood sweep SWEEP --out " +
+            out_dir.string() + "), which rewrites it and reruns nothing finished");
+  }
   for (std::size_t r = 1; r < rows.size(); ++r) {
     const auto& row = rows[r];
     if (row.size() != rows[0].size()) {
       throw sim::ConfigError(manifest.string(), "line " + std::to_string(r + 1),
                              "expected " + std::to_string(rows[0].size()) + " fields");
+    }
+    if (row[0] != std::to_string(r - 1)) {
+      throw sim::ConfigError(manifest.string(), "line " + std::to_string(r + 1),
+                             "index: expected " + std::to_string(r - 1) + ", got '" + row[0] +
+                                 "' (cut or edited?): run the sweep again, which rewrites it");
     }
     ++outcome.cells;
     const std::string& id = row[1];

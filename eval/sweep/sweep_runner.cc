@@ -210,6 +210,26 @@ bool InShard(const SweepCell& cell, int shard_index, int shard_count) {
   return shard_count <= 1 || cell.index % shard_count == shard_index;
 }
 
+namespace {
+
+// cells.csv: one row per cell, as --collect reads it.
+std::string CellsCsv(const std::vector<std::string>& axes, const std::vector<SweepCell>& cells) {
+  std::vector<std::string> header{"index",  "id",      "experiment", "world",
+                                  "family", "profile", "seed"};
+  for (const auto& k : axes) header.push_back(k);
+  std::string csv = CsvLine(header);
+  for (const SweepCell& cell : cells) {
+    std::vector<std::string> row{
+        std::to_string(cell.index), cell.id, cell.experiment, cell.world, cell.family, cell.profile,
+        std::to_string(cell.seed)};
+    for (const auto& v : cell.values) row.push_back(v);
+    csv += CsvLine(row);
+  }
+  return csv;
+}
+
+}  // namespace
+
 void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cells,
                         const SweepLayout& layout) {
   fs::create_directories(layout.out);
@@ -235,17 +255,6 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
   meta["inputs"] = InputHashes(spec);
   meta["plywood_build_id"] = sim::ProgramBuildId();
 
-  std::vector<std::string> header{"index",  "id",      "experiment", "world",
-                                  "family", "profile", "seed"};
-  for (const auto& k : keys) header.push_back(k);
-  std::string csv = CsvLine(header);
-  for (const SweepCell& cell : cells) {
-    std::vector<std::string> row{
-        std::to_string(cell.index), cell.id, cell.experiment, cell.world, cell.family, cell.profile,
-        std::to_string(cell.seed)};
-    for (const auto& v : cell.values) row.push_back(v);
-    csv += CsvLine(row);
-  }
   nlohmann::ordered_json full = nlohmann::ordered_json::array();
   for (const SweepCell& cell : cells) {
     full.push_back({{"index", cell.index},
@@ -260,7 +269,7 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
   }
   sim::WriteTextFile(layout.out / "sweep.json", meta.dump(2) + "\n");
   sim::WriteTextFile(layout.out / "cells.json", full.dump(1) + "\n");
-  sim::WriteTextFile(layout.out / "cells.csv", csv);
+  sim::WriteTextFile(layout.out / "cells.csv", CellsCsv(keys, cells));
   if (!fs::exists(copy)) sim::WriteTextFile(copy, spec.text);
 }
 
@@ -443,6 +452,13 @@ std::optional<std::vector<SweepCell>> ReadSweepManifest(const SweepSpec& spec,
         cell.id.find_first_not_of("0123456789abcdef") != std::string::npos) {
       return std::nullopt;
     }
+  }
+  // cells.csv is what --collect reads: one cut at a line's end (or edited) lost its cells from
+  // results.csv and summary.csv while the resume said "2 of 2 runs finished". Expanding again
+  // rewrites it.
+  const fs::path cells_csv = layout.out / "cells.csv";
+  if (!fs::is_regular_file(cells_csv) || sim::ReadTextFile(cells_csv) != CellsCsv(axes, cells)) {
+    return std::nullopt;
   }
   return cells;
 }

@@ -1,4 +1,4 @@
-#include "viewer/run_world_check.h"
+#include "eval/score/run_world_check.h"
 
 #include <algorithm>
 #include <optional>
@@ -7,7 +7,7 @@
 #include "msgs/shortest_number.h"
 #include "sim/config/config_error.h"
 
-namespace plywood::viewer {
+namespace plywood::eval {
 namespace {
 
 std::string Describe(const sim::WallSegment& s) {
@@ -24,7 +24,8 @@ bool Same(const sim::WallSegment& a, const sim::WallSegment& b) {
 
 void RequireWorldAsTheRunSawIt(const sim::Scene& scene, const sim::ExperimentConfig& config,
                                const sim::GroundTruthWalls& run_walls,
-                               const std::filesystem::path& config_yaml) {
+                               const std::filesystem::path& config_yaml,
+                               const std::string& consequence) {
   // The height the run cut the world at (sim::ExperimentRunner): its laser's, else its IR
   // scanner's, else every height.
   sim::GroundTruthOptions options;
@@ -37,9 +38,9 @@ void RequireWorldAsTheRunSawIt(const sim::Scene& scene, const sim::ExperimentCon
   if (site) options.height_m = scene.SitePoseInWorld(*site).translation().z();
   const sim::GroundTruthWalls now = sim::ExtractGroundTruthWalls(scene.model(), options);
   const auto changed = [&](const std::string& how) {
-    throw sim::ConfigError(config_yaml.string(), "world",
-                           config.world_path.string() + " changed since the run (" + how +
-                               "); a replay would show the run in another world");
+    throw sim::ConfigError(
+        config_yaml.string(), "world",
+        config.world_path.string() + " changed since the run (" + how + "); " + consequence);
   };
   const std::size_t n = std::min(now.segments.size(), run_walls.segments.size());
   for (std::size_t i = 0; i < n; ++i) {
@@ -54,4 +55,4 @@ void RequireWorldAsTheRunSawIt(const sim::Scene& scene, const sim::ExperimentCon
   }
 }
 
-}  // namespace plywood::viewer
+}  // namespace plywood::eval

@@ -1,6 +1,6 @@
 // A replay of a run whose world file changed since the run is refused, naming config.yaml's world;
 // the unchanged world passes. No window: the check needs the compiled world only.
-#include "viewer/run_world_check.h"
+#include "eval/score/run_world_check.h"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@
 #include "sim/config/robot_catalog.h"
 #include "tests/support/mujoco_test_support.h"
 
-namespace plywood::viewer {
+namespace plywood::eval {
 namespace {
 
 namespace fs = std::filesystem;
@@ -36,7 +36,8 @@ void Check(const fs::path& run_dir) {
   options.spawn = {config.spawn.x_m, config.spawn.y_m, config.spawn.theta_deg * M_PI / 180.0};
   const sim::Scene scene(options);
   RequireWorldAsTheRunSawIt(scene, config, eval::ReadWallsCsv(run_dir / "walls.csv"),
-                            run_dir / "config.yaml");
+                            run_dir / "config.yaml",
+                            "a replay would show the run in another world");
 }
 
 TEST(RunWorldCheckTest, AWorldChangedSinceTheRunIsRefusedNamingConfigYamlsWorld) {
@@ -72,4 +73,4 @@ TEST(RunWorldCheckTest, AWorldChangedSinceTheRunIsRefusedNamingConfigYamlsWorld)
 }
 
 }  // namespace
-}  // namespace plywood::viewer
+}  // namespace plywood::eval
