@@ -7,6 +7,7 @@
 #include <string>
 
 #include "msgs/shortest_number.h"
+#include "perception/sonar_map/contact_clearance.h"
 #include "perception/sonar_map/echo_gated_model.h"
 #include "perception/sonar_map/escape_cells.h"
 #include "perception/sonar_map/frontier_planner.h"
@@ -104,6 +105,11 @@ void SonarExplorerOptions::Validate() const {
         "squeeze_clearance_m: must be 0 or > robot_radius_m + front_margin_m and <= "
         "narrow_clearance_m, got " +
         msgs::ShortestNumber(squeeze_clearance_m));
+  if (contact_clearance_m != 0.0 &&
+      !(contact_clearance_m > robot_radius_m && contact_clearance_m <= 10.0))
+    throw std::invalid_argument(
+        "contact_clearance_m: must be 0 or > robot_radius_m (and <= 10), got " +
+        msgs::ShortestNumber(contact_clearance_m));
   RequireInRange("frontier_view_m", frontier_view_m, 0.01, 10.0);
   RequireNonNegative("frontier_wall_band_m", frontier_wall_band_m);
   if (!(frontier_view_m > waypoint_tolerance_m))
@@ -458,6 +464,11 @@ SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here
   PlanningCells out;
   out.cells = CellMap{W, H, std::vector<CellState>(static_cast<std::size_t>(W) * H)};
   std::vector<char> occupied(out.cells.cells.size(), 0), heard(out.cells.cells.size(), 0);
+  std::vector<char> touched(out.cells.cells.size(), 0);
+  for (const Eigen::Vector2d& p : contacts_) {
+    const Eigen::Vector2i c = grid_.CellAt(p);
+    if (c.x() >= 0) touched[static_cast<std::size_t>(c.y()) * W + c.x()] = 1;
+  }
   for (int iy = 0; iy < H; ++iy)
     for (int ix = 0; ix < W; ++ix) {
       const std::size_t i = static_cast<std::size_t>(iy) * W + ix;
@@ -482,10 +493,22 @@ SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here
         if (grid_.CellAt(e) == Eigen::Vector2i(ix, iy)) heard[i] = 1;
       occupied[i] = heard[i] || in_obstacle;
     }
-  const std::vector<char> near = Dilate(occupied, W, H, options_.path_clearance_m / res);
-  const std::vector<char> near_heard = Dilate(heard, W, H, options_.path_clearance_m / res);
-  const std::vector<char> narrow = Dilate(occupied, W, H, options_.narrow_clearance_m / res);
-  const std::vector<char> narrow_heard = Dilate(heard, W, H, options_.narrow_clearance_m / res);
+  const double contact_cells = options_.contact_clearance_m / res;
+  const auto blocked = [&](const std::vector<char>& mask, double clearance_m) {
+    return BlockedCells(mask, touched, W, H, clearance_m / res, contact_cells);
+  };
+  const std::vector<char> near = blocked(occupied, options_.path_clearance_m);
+  const std::vector<char> near_heard = blocked(heard, options_.path_clearance_m);
+  const std::vector<char> narrow = blocked(occupied, options_.narrow_clearance_m);
+  const std::vector<char> narrow_heard = blocked(heard, options_.narrow_clearance_m);
+  const std::vector<char> squeeze_heard = options_.squeeze_clearance_m > 0.0
+                                              ? blocked(heard, options_.squeeze_clearance_m)
+                                              : std::vector<char>{};
+  // A robot backing off a contact leaves getting no nearer to it either.
+  for (std::size_t i = 0; i < touched.size(); ++i) {
+    heard[i] = heard[i] || touched[i];
+    occupied[i] = occupied[i] || touched[i];
+  }
   // The robot may be closer than the clearance to something (after a blocked move, in a narrow
   // passage): the free cells within path_clearance_m of it stay usable so that it can leave, as
   // long as they are no nearer to what that clearance keeps it from than its own cell
@@ -509,8 +532,7 @@ SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here
   usable(out.narrow_safe, narrow, occupied, options_.narrow_clearance_m);
   usable(out.narrow_safe_from_heard, narrow_heard, heard, options_.narrow_clearance_m);
   if (options_.squeeze_clearance_m > 0.0)
-    usable(out.squeeze_safe_from_heard, Dilate(heard, W, H, options_.squeeze_clearance_m / res),
-           heard, options_.squeeze_clearance_m);
+    usable(out.squeeze_safe_from_heard, squeeze_heard, heard, options_.squeeze_clearance_m);
   return out;
 }
 
@@ -639,8 +661,7 @@ std::optional<msgs::WheelSpeedCommand> SonarExplorer::ReactToBump(
   // backs away from the panel that touched.
   const double bearing = X_WR.theta_rad + 2.0 * M_PI * panel / n;
   const Eigen::Vector2d direction(std::cos(bearing), std::sin(bearing));
-  blocking_echoes_.push_back(Position(X_WR) + (options_.robot_radius_m + 0.02) * direction);
-  contacts_.push_back(blocking_echoes_.back());
+  contacts_.push_back(Position(X_WR) + (options_.robot_radius_m + 0.02) * direction);
   if (perimeter_done_ && !path_.empty()) GiveUpMove(Position(X_WR));
   path_.clear();
   heading_to_frontier_ = false;

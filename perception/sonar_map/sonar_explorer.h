@@ -92,6 +92,13 @@ struct SonarExplorerOptions {
   // 0 = off; otherwise between robot_radius_m + front_margin_m (the front check's corridor) and
   // narrow_clearance_m.
   double squeeze_clearance_m = 0.30;
+  // A point a bump panel touched keeps every path's centre min(this, the tier's clearance) away,
+  // not the tier's clearance: it is exact to the body (the panel's arc), whereas a heard cell's
+  // face may lie anywhere in the cell and the beam. With the tier's clearance, a contact at a box
+  // corner the sonar never heard closed a 0.61 m gap the robot fits for good (generated world 46
+  // of seed 22; docs/sonar_map.md round 37a). 0 = a contact blocks like a heard cell; otherwise
+  // more than robot_radius_m (0.25: the front check's corridor).
+  double contact_clearance_m = 0.25;
   double stop_range_m = 0.3;  // a front echo closer than this aborts the move (into D)
   // Half-width of that corridor beyond the body. It is narrower than path_clearance_m, so that a
   // planned path is not blocked by the cells that shaped it.
@@ -282,9 +289,10 @@ class SonarExplorer final : public robot::Controller {
   void MarkLooked(const Eigen::Vector2d& at);
   std::vector<char> looked_;  // cells within frontier_view_m of a frontier goal the robot reached
   bool heading_to_frontier_ = false;
-  // World points of echoes that blocked a move and of bumps: occupied for the planner.
+  // World points of echoes that blocked a move: occupied for the planner.
   std::vector<Eigen::Vector2d> blocking_echoes_;
-  std::vector<Eigen::Vector2d> contacts_;  // the bumps alone
+  // Points bump panels touched: kept contact_clearance_m from by the planner.
+  std::vector<Eigen::Vector2d> contacts_;
   double backing_off_until_s_ = -1.0;
   double backing_off_speed_m_s_ = 0.0;
   double last_replan_s_ = -1e9;

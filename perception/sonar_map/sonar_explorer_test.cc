@@ -412,6 +412,18 @@ TEST(SonarExplorerTest, SqueezeClearanceOutsideFrontCorridorToNarrowClearanceThr
   EXPECT_NO_THROW(MakeExplorer(options));
 }
 
+TEST(SonarExplorerTest, ContactClearanceNotAboveTheRobotRadiusThrowsNamingIt) {
+  SonarExplorerOptions options = ClassicalOptions();
+  options.contact_clearance_m = options.robot_radius_m;
+  ExpectThrowsNaming(options, "contact_clearance_m");
+  options.contact_clearance_m = -0.25;
+  ExpectThrowsNaming(options, "contact_clearance_m");
+  options.contact_clearance_m = options.robot_radius_m + 0.01;
+  EXPECT_NO_THROW(MakeExplorer(options));
+  options.contact_clearance_m = 0.0;
+  EXPECT_NO_THROW(MakeExplorer(options));
+}
+
 TEST(SonarExplorerTest, DefaultClassicalOptionsAreValid) {
   EXPECT_NO_THROW(MakeExplorer(ClassicalOptions()));
 }

@@ -65,6 +65,7 @@ void VisitFields(A& a, perception::SonarExplorerOptions& o) {
   a("path_clearance_m", o.path_clearance_m);
   a("narrow_clearance_m", o.narrow_clearance_m);
   a("squeeze_clearance_m", o.squeeze_clearance_m);
+  a("contact_clearance_m", o.contact_clearance_m);
   a("frontier_view_m", o.frontier_view_m);
   a("frontier_wall_band_m", o.frontier_wall_band_m);
   a("circle_obstacles", o.circle_obstacles);
