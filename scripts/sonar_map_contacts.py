@@ -19,7 +19,7 @@ import sys
 from collections import Counter
 
 
-def episodes(run, metrics):
+def episodes(run):
     traj = {round(float(r['time_s']), 2): r
             for r in csv.DictReader(open(os.path.join(run, 'trajectory.csv')))}
     faces = list(csv.DictReader(open(os.path.join(run, 'walls.csv'))))
@@ -32,7 +32,7 @@ def episodes(run, metrics):
         pressed = row['pressed_panels']
         pose = traj.get(round(float(row['time_s']), 2))
         if pressed and not previous and pose is not None:
-            panel = int(pressed.split(';')[0].split(' ')[0])
+            panel = int(pressed.split()[0])  # space-separated indices
             bearing = float(pose['truth_theta_rad']) + math.radians(22.5 * panel)
             cx = float(pose['truth_x_m']) + 0.205 * math.cos(bearing)
             cy = float(pose['truth_y_m']) + 0.205 * math.sin(bearing)
@@ -65,7 +65,7 @@ def main(dirs):
                 continue
             cell = cells.get(os.path.basename(run), {})
             name = '%s s%s' % (os.path.basename(cell.get('world', run)), cell.get('seed', '?'))
-            per_run[name] = list(episodes(run, metrics))
+            per_run[name] = list(episodes(run))
     caught = {k: v for k, v in per_run.items() if len(v) > 10}
     rest = [e for k, v in per_run.items() if k not in caught for e in v]
     print('runs with a contact: %d, episodes: %d' % (len(per_run), sum(map(len, per_run.values()))))
