@@ -42,6 +42,9 @@ void RequireInRange(const std::string& field, double v, double low, double high)
 
 Eigen::Vector2d Position(const msgs::Pose2D& X) { return {X.x_m, X.y_m}; }
 
+// A heading error below this counts as aligned: DriveTo drives on from here.
+constexpr double kAlignedRad = 0.2;
+
 }  // namespace
 
 void SonarExplorerOptions::Validate() const {
@@ -185,7 +188,7 @@ msgs::WheelSpeedCommand SonarExplorer::DriveTo(const msgs::Pose2D& X_WR,
       std::clamp(2.0 * heading_error, -options_.turn_rate_rad_s, options_.turn_rate_rad_s);
   twist.angular_rad_s = w;
   // Trajectories parallel to x or y: turn on the spot first, drive once aligned.
-  if (std::abs(heading_error) < 0.2)
+  if (std::abs(heading_error) < kAlignedRad)
     twist.linear_m_s = std::min(options_.speed_m_s, 0.1 + d.norm());
   return robot::TwistToWheelSpeeds(spec_, twist);
 }
@@ -641,10 +644,70 @@ std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToFrontier(
   return CellPath(traversable, goal, here);
 }
 
+bool SonarExplorer::StartWedgeTurn(const robot::ControllerInput& input) {
+  if (!options_.bump_wedge_turns || !backing_off_from_ || wedge_heading_rad_ ||
+      input.bumpers == nullptr)
+    return false;
+  // While backing off, or as long again after: the wheels ramp from the back-off into the
+  // planner's turn for ~0.5 s, still rolling on (generated world 32 of seed 30: the second corner
+  // was touched 0.2-0.3 s after each back-off ended).
+  if (input.time_s >= backing_off_until_s_ + options_.bump_back_off_s) {
+    backing_off_from_.reset();
+    return false;
+  }
+  const msgs::Pose2D& X_WR = input.X_WR_estimate;
+  const Eigen::Vector2d here = Position(X_WR);
+  const Eigen::Vector2d first = *backing_off_from_;
+  const auto& pressed = input.bumpers->pressed;
+  const int n = static_cast<int>(pressed.size());
+  for (int panel = 0; panel < n; ++panel) {
+    if (!pressed[panel]) continue;
+    const double bearing = X_WR.theta_rad + 2.0 * M_PI * panel / n;
+    const Eigen::Vector2d second = here + (options_.robot_radius_m + 0.02) *
+                                              Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
+    // The same half as the first contact: that contact still pressed as the robot leaves it.
+    if ((first - here).dot(second - here) >= 0.0) continue;
+    contacts_.push_back(second);
+    if (perimeter_done_ && !path_.empty()) GiveUpMove(here);
+    path_.clear();
+    heading_to_frontier_ = false;
+    last_replan_s_ = -1e9;
+    backing_off_until_s_ = -1.0;
+    backing_off_from_.reset();
+    if (options_.bump_stops_wheels) command_ = {};
+    // Along the gap: perpendicular to the line through the two contacts, towards the side of it
+    // the robot stands on (it backed off into that side, away from both points).
+    const Eigen::Vector2d line = second - first;
+    Eigen::Vector2d along_gap(-line.y(), line.x());
+    if (along_gap.dot(here - first) < 0.0) along_gap = -along_gap;
+    wedge_heading_rad_ = std::atan2(along_gap.y(), along_gap.x());
+    // Bounded: when the encoder heading does not come round (a wheel held), the turn is given up
+    // after twice its time at turn_rate_rad_s plus one back-off.
+    wedge_turn_until_s_ = input.time_s +
+                          2.0 * std::abs(msgs::WrapAngle(*wedge_heading_rad_ - X_WR.theta_rad)) /
+                              options_.turn_rate_rad_s +
+                          options_.bump_back_off_s;
+    return true;
+  }
+  return false;
+}
+
 std::optional<msgs::WheelSpeedCommand> SonarExplorer::ReactToBump(
     const robot::ControllerInput& input) {
   const msgs::Pose2D& X_WR = input.X_WR_estimate;
   robot::BodyTwist twist;
+  if (StartWedgeTurn(input) || wedge_heading_rad_) {
+    // The body is round: the turn on the spot touches nothing, and panels pressed meanwhile are
+    // the two contacts it turns between.
+    const double error = msgs::WrapAngle(*wedge_heading_rad_ - X_WR.theta_rad);
+    if (std::abs(error) > kAlignedRad && input.time_s < wedge_turn_until_s_) {
+      twist.angular_rad_s =
+          std::clamp(2.0 * error, -options_.turn_rate_rad_s, options_.turn_rate_rad_s);
+      return robot::TwistToWheelSpeeds(spec_, twist);
+    }
+    // Along the gap (or given up): the planner takes over, the two contacts blocking their cells.
+    wedge_heading_rad_.reset();
+  }
   if (input.time_s < backing_off_until_s_) {
     twist.linear_m_s = backing_off_speed_m_s_;
     return robot::TwistToWheelSpeeds(spec_, twist);
@@ -679,6 +742,7 @@ std::optional<msgs::WheelSpeedCommand> SonarExplorer::ReactToBump(
   backing_off_speed_m_s_ =
       away_is_back ? -options_.bump_back_off_speed_m_s : options_.bump_back_off_speed_m_s;
   backing_off_until_s_ = input.time_s + options_.bump_back_off_s;
+  backing_off_from_ = contacts_.back();
   // Stop the wheels at once, as a base's bumper circuit does (Update ramps on from here): ramping
   // down under the limit kept pushing into the obstacle for most of a second, and that slip was
   // the drift.

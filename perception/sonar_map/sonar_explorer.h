@@ -64,6 +64,14 @@ struct SonarExplorerOptions {
   // A newly pressed panel sets the commanded wheel speeds to zero at once (the acceleration
   // limit applies again from there).
   bool bump_stops_wheels = true;
+  // A contact on the opposite half of the body from the one the robot is backing off (while the
+  // back-off runs, or within bump_back_off_s after) means the axis is wedged between two obstacles,
+  // e.g. a gap between two box corners met on the diagonal: backing off from the second drove it
+  // into the first again, for the whole run (generated world 32 of seed 30: 112 contacts). The
+  // body is round, so the robot turns on the spot until its axis lies along the gap
+  // (perpendicular to the line between the two contact points, facing the side of that line it
+  // stands on) and replans. Off: it backs off from the second contact as from any other.
+  bool bump_wedge_turns = true;
   double turn_rate_rad_s = 0.8;
   double replan_period_s = 2.0;
   double visit_decay = 0.95;         // lambda: c(p) <- lambda c(p) at every replan
@@ -173,6 +181,9 @@ class SonarExplorer final : public robot::Controller {
   // consecutive ones meet (not yet used for the map's rectangles).
   const std::vector<ObstacleOutline>& closed_outlines() const { return outlines_; }
   int rings_integrated() const { return rings_integrated_; }
+  // Whether the robot is turning on the spot out of a wedge between two contacts
+  // (bump_wedge_turns).
+  bool turning_out_of_wedge() const { return wedge_heading_rad_.has_value(); }
 
  private:
   CognitiveMap BuildMap(const BeamFreeGrid* beam_free) const;
@@ -295,6 +306,16 @@ class SonarExplorer final : public robot::Controller {
   std::vector<Eigen::Vector2d> contacts_;
   double backing_off_until_s_ = -1.0;
   double backing_off_speed_m_s_ = 0.0;
+  // The contact point the back-off under way (or ended within bump_back_off_s) leaves: a contact
+  // on the far side of the robot from it is a wedge.
+  std::optional<Eigen::Vector2d> backing_off_from_;
+  // A turn on the spot out of a wedge: the heading it turns to and when it is given up.
+  std::optional<double> wedge_heading_rad_;
+  double wedge_turn_until_s_ = -1.0;
+  // A pressed panel whose contact point lies on the far side of the robot from the one the back-off
+  // leaves, while it runs or within bump_back_off_s after: starts the turn out of the wedge, true
+  // if so.
+  bool StartWedgeTurn(const robot::ControllerInput& input);
   double last_replan_s_ = -1e9;
   double last_decay_s_ = -1.0;
   std::vector<Eigen::Vector2d> path_;

@@ -256,6 +256,135 @@ TEST(SonarExplorerTest, SidePanelMetDrivingForwardBacksOffBackwardsOnEitherSide)
   }
 }
 
+// Issue 14, generator seed 30 world 32: the robot stood in a ~0.5 m diagonal gap between two box
+// corners; the front right panel touched one, the back-off along the axis drove the rear left panel
+// into the other, whose back-off drove the front right panel into the first, for the whole run
+// (112 contacts). A contact on the opposite half of the body while backing off is a wedge: the
+// robot turns on the spot (the body is round: nothing is touched) until its axis lies along the
+// gap, perpendicular to the line through the two contact points, facing the side of that line it
+// stands on. Here the pose follows the commands (no slip). The first contact, and its panel still
+// pressed with a neighbour on the same half, back off as before.
+TEST(SonarExplorerTest, OppositeContactWhileBackingOffTurnsOnTheSpotAlongTheGap) {
+  SonarExplorerOptions options = ClassicalOptions();
+  options.perimeter_avoids_contacts = false;
+  auto explorer = MakeExplorer(options);
+  const robot::DiffDriveSpec spec = robot::MagellanProSpec();
+  const double contact_radius = options.robot_radius_m + 0.02;  // where the explorer puts a contact
+  msgs::Pose2D pose;
+  msgs::RangeRing ring;
+  int k = 0;
+  const auto tick = [&](const msgs::Bumpers* bumpers) {
+    const double t = k * kDt;
+    if (k % 10 == 0) ring = RoomRing(t);
+    ++k;
+    robot::ControllerInput input;
+    input.time_s = t;
+    input.sonar = &ring;
+    input.bumpers = bumpers;
+    input.X_WR_estimate = pose;
+    const robot::BodyTwist twist = robot::WheelSpeedsToTwist(spec, explorer->Update(input));
+    pose.x_m += twist.linear_m_s * std::cos(pose.theta_rad) * kDt;
+    pose.y_m += twist.linear_m_s * std::sin(pose.theta_rad) * kDt;
+    pose.theta_rad += twist.angular_rad_s * kDt;
+    return twist;
+  };
+  robot::BodyTwist twist;
+  while (k < 100) twist = tick(nullptr);
+  ASSERT_GT(twist.linear_m_s, 0.05);  // driving forward when the bump comes
+  constexpr int kFrontRight = 14, kRearLeft = 6;
+  const auto panel_point = [&](int panel) {
+    const double a = pose.theta_rad + 2.0 * std::numbers::pi * panel / kSonars;
+    return Eigen::Vector2d(pose.x_m + contact_radius * std::cos(a),
+                           pose.y_m + contact_radius * std::sin(a));
+  };
+  const Eigen::Vector2d first = panel_point(kFrontRight);
+  const msgs::Bumpers front_right = Pressed(k * kDt, kFrontRight);
+  msgs::Bumpers same_half = Pressed(k * kDt, kFrontRight);
+  same_half.pressed[kFrontRight - 1] = true;
+  const msgs::Bumpers none = Pressed(k * kDt, -1);
+  // 0.8 s of back-off, the first 0.3 s with the panel (and its neighbour) still pressed.
+  for (int j = 0; j < 80; ++j) {
+    twist = tick(j == 0 ? &front_right : j < 30 ? &same_half : &none);
+    EXPECT_LE(twist.linear_m_s, 0.0) << j;
+    EXPECT_FALSE(explorer->turning_out_of_wedge()) << j;
+  }
+  EXPECT_NEAR(twist.linear_m_s, -options.bump_back_off_speed_m_s, 1e-9);
+  const Eigen::Vector2d here(pose.x_m, pose.y_m);
+  const Eigen::Vector2d second = panel_point(kRearLeft);
+  ASSERT_LT((first - here).dot(second - here), 0.0);  // the opposite half
+  // The gap's axis, facing the robot's side of the line through the two contacts.
+  Eigen::Vector2d along_gap(first.y() - second.y(), second.x() - first.x());
+  if (along_gap.dot(here - first) < 0.0) along_gap = -along_gap;
+  const double wanted = std::atan2(along_gap.y(), along_gap.x());
+  const double turn = msgs::WrapAngle(wanted - pose.theta_rad);
+  ASSERT_GT(std::abs(turn), 0.5);
+  const msgs::Bumpers rear_left = Pressed(k * kDt, kRearLeft);
+  const int turn_start = k;
+  // The second panel stays pressed for 0.5 s: the robot turns against it.
+  for (int j = 0; j < 1000; ++j) {
+    const msgs::Pose2D before = pose;
+    twist = tick(j < 50 ? &rear_left : &none);
+    if (!explorer->turning_out_of_wedge()) {
+      // Aligned as DriveTo counts it (0.2 rad), on the spot where the second contact came.
+      EXPECT_LT(std::abs(msgs::WrapAngle(before.theta_rad - wanted)), 0.2 + 0.01);
+      EXPECT_NEAR(before.x_m, here.x(), 1e-9);
+      EXPECT_NEAR(before.y_m, here.y(), 1e-9);
+      break;
+    }
+    ASSERT_NEAR(twist.linear_m_s, 0.0, 1e-9) << j;    // on the spot
+    ASSERT_GT(twist.angular_rad_s * turn, 0.0) << j;  // the short way round
+    ASSERT_LE(std::abs(twist.angular_rad_s), options.turn_rate_rad_s + 1e-9) << j;
+  }
+  EXPECT_FALSE(explorer->turning_out_of_wedge()) << "still turning after 10 s";
+  EXPECT_LT((k - turn_start) * kDt, std::abs(turn) / options.turn_rate_rad_s + 1.0);
+}
+
+// The same wedge met right after the back-off: the first contact's back-off ran its full time with
+// nothing pressed, and the rear panel touches as the wheels ramp down from it. Main backed off
+// from it forwards, into the first contact again. Here the pose never moves (the wheels are held,
+// or the encoders do not see the turn): the turn is given up after twice its time at the turn
+// rate plus one back-off, so that it cannot spin for ever.
+TEST(SonarExplorerTest, OppositeContactRightAfterTheBackOffTurnsInsteadOfBackingOffAgain) {
+  SonarExplorerOptions options = ClassicalOptions();
+  options.perimeter_avoids_contacts = false;
+  auto explorer = MakeExplorer(options);
+  Driver driver(*explorer);
+  for (int k = 0; k < 100; ++k) driver.Tick();
+  constexpr int kFrontRight = 14, kRearLeft = 7;  // 157.5 deg apart
+  const msgs::Bumpers front_right = Pressed(driver.time_s(), kFrontRight);
+  const msgs::Bumpers rear_left = Pressed(driver.time_s(), kRearLeft);
+  const msgs::Bumpers none = Pressed(driver.time_s(), -1);
+  driver.Tick(&front_right);
+  const double back_off_end = driver.time_s() - kDt + options.bump_back_off_s;
+  while (driver.time_s() < back_off_end - kDt / 2.0) EXPECT_LT(Speed(driver.Tick(&none)), 0.0);
+  driver.Tick(&rear_left);
+  EXPECT_TRUE(explorer->turning_out_of_wedge());
+  const double turn_start = driver.time_s() - kDt;
+  // The pose stays at the origin, heading 0: the gap's axis, facing the robot's side of the line
+  // through the two contacts.
+  const double contact_radius = options.robot_radius_m + 0.02;
+  const auto panel_point = [&](int panel) {
+    const double a = 2.0 * std::numbers::pi * panel / kSonars;
+    return Eigen::Vector2d(contact_radius * std::cos(a), contact_radius * std::sin(a));
+  };
+  const Eigen::Vector2d first = panel_point(kFrontRight), second = panel_point(kRearLeft);
+  Eigen::Vector2d along_gap(first.y() - second.y(), second.x() - first.x());
+  if (along_gap.dot(-first) < 0.0) along_gap = -along_gap;
+  const double turn = std::atan2(along_gap.y(), along_gap.x());
+  ASSERT_GT(std::abs(turn), 0.5);
+  const double give_up =
+      turn_start + 2.0 * std::abs(turn) / options.turn_rate_rad_s + options.bump_back_off_s;
+  const robot::DiffDriveSpec spec = robot::MagellanProSpec();
+  while (explorer->turning_out_of_wedge() && driver.time_s() < give_up + 1.0) {
+    const robot::BodyTwist twist = robot::WheelSpeedsToTwist(spec, driver.Tick(&none));
+    if (!explorer->turning_out_of_wedge()) break;
+    ASSERT_NEAR(twist.linear_m_s, 0.0, 1e-9) << driver.time_s();    // neither back nor forwards
+    ASSERT_GT(twist.angular_rad_s * turn, 0.0) << driver.time_s();  // the short way round
+  }
+  EXPECT_FALSE(explorer->turning_out_of_wedge());
+  EXPECT_NEAR(driver.time_s() - kDt, give_up, kDt + 1e-9);
+}
+
 TEST(SonarExplorerTest, RearBumpFromRestRampsUpToTheBackOffSpeed) {
   const SonarExplorerOptions options = ClassicalOptions();
   auto explorer = MakeExplorer(options);

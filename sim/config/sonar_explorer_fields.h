@@ -57,6 +57,7 @@ void VisitFields(A& a, perception::SonarExplorerOptions& o) {
   a("bump_back_off_s", o.bump_back_off_s);
   a("bump_back_off_speed_m_s", o.bump_back_off_speed_m_s);
   a("bump_stops_wheels", o.bump_stops_wheels);
+  a("bump_wedge_turns", o.bump_wedge_turns);
   a("front_margin_m", o.front_margin_m);
   a("waypoint_tolerance_m", o.waypoint_tolerance_m);
   a("explore_max_s", o.explore_max_s);
