@@ -602,6 +602,14 @@ TEST_F(ReliabilityTest, AWorldThatChangesTheRobotIsRefused) {
                      "a <compiler> or <default> setting of the world applies to the robot's file"});
     }
   }
+  // A contact exclusion between the world and a robot body: the wheel fell through the floor.
+  for (const std::string drive : {"contact", "planar"}) {
+    SCOPED_TRACE("exclude " + drive);
+    ExpectRefused(
+        experiment("<contact><exclude body1=\"world\" body2=\"left_wheel\"/></contact>"),
+        "--set physics.drive=" + drive,
+        {"robot_changes.xml: it gives the robot 2 contact exclusions with the world, its file 1"});
+  }
   // The robot's own names in the message: the Magellan Pro's sonar sites turned by radians.
   std::string magellan = experiment("<compiler angle=\"radian\"/>");
   magellan.replace(magellan.find("model: p3dx"), std::string("model: p3dx").size(),
@@ -611,6 +619,8 @@ TEST_F(ReliabilityTest, AWorldThatChangesTheRobotIsRefused) {
   // default classes of the world's own.
   for (const std::string settings :
        {"<compiler angle=\"degree\" eulerseq=\"xyz\"/>",
+        "<worldbody><body name=\"shelf\"><geom type=\"box\" pos=\"2 2 0.5\" size=\"0.1 0.1 "
+        "0.5\"/></body></worldbody><contact><exclude body1=\"world\" body2=\"shelf\"/></contact>",
         "<default><default class=\"plywood_wall\"><geom friction=\"0.3 0.005 0.0001\"/>"
         "</default></default>"}) {
     SCOPED_TRACE(settings);

@@ -172,6 +172,29 @@ std::optional<std::string> RobotChangedByWorld(const mjModel* scene, const mjMod
     c.Field("forcerange", scene->actuator_forcerange, alone->actuator_forcerange, 2);
   }
   if (c.problem()) return "it changes the robot: " + *c.problem() + hint;
+  // Contact pairs and exclusions between the robot and the world: a world's <exclude body1="world"
+  // body2="left_wheel"/> dropped the wheel through the floor (drift 80 %, exit 0). Pairs between
+  // two of the robot's geoms are left alone (the scene adds placeholders of its own).
+  // Signatures are (body1 + 1) << 16 + body2 + 1.
+  const auto touching_the_world = [](const int* signature, int n, int base, int end) {
+    const auto on_robot = [&](int body) { return body >= base && body < end; };
+    int count = 0;
+    for (int i = 0; i < n; ++i) {
+      if (on_robot((signature[i] >> 16) - 1) != on_robot((signature[i] & 0xFFFF) - 1)) ++count;
+    }
+    return count;
+  };
+  if (auto p =
+          added("contact exclusions with the world",
+                touching_the_world(scene->exclude_signature, scene->nexclude, base_s, end_s),
+                touching_the_world(alone->exclude_signature, alone->nexclude, base_a, end_a))) {
+    return p;
+  }
+  if (auto p = added("contact pairs with the world",
+                     touching_the_world(scene->pair_signature, scene->npair, base_s, end_s),
+                     touching_the_world(alone->pair_signature, alone->npair, base_a, end_a))) {
+    return p;
+  }
   if (auto p = added("equality constraints", scene->neq, alone->neq)) return p;
   if (auto p = added("tendons", scene->ntendon, alone->ntendon)) return p;
   return std::nullopt;
