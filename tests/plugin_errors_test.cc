@@ -73,6 +73,14 @@ TEST_F(PluginErrorsTest, LibraryBuiltForAnotherPlywood) {
                       "built for plywood 0.0.1, gcc 4.8.5", "rebuild the plug-in"});
 }
 
+// audit s40: a plywood_plugin_abi() that returns a null pointer ended the run with
+// `plywood: error: basic_string: construction from null is not valid`, exit 1, naming nothing.
+TEST_F(PluginErrorsTest, LibraryWhoseAbiFunctionReturnsNullIsRefused) {
+  ExpectOneLineError({std::string("plugins=[") + PLYWOOD_NULL_ABI_PLUGIN + "]"},
+                     {std::string("plugins[0]: ") + PLYWOOD_NULL_ABI_PLUGIN,
+                      "plywood_plugin_abi() returns a null pointer", "PLYWOOD_PLUGIN"});
+}
+
 TEST_F(PluginErrorsTest, PluginsMustBeAList) {
   ExpectOneLineError({"plugins=" + plugin_}, {"plugins: expected a list"});
 }

@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <cmath>
@@ -569,6 +570,97 @@ TEST_F(ReliabilityTest, AWorldThatChangesThePhysicsIsRefused) {
                                           " --quiet --out " + (run / "out").string(),
                                       run);
   EXPECT_EQ(result.exit_code, 0) << result.err;
+}
+
+// audit s40: a world's <compiler> and <default> settings apply to the robot's file too, which is
+// included after it. A world written with angle="radian" (common in MJCF from elsewhere) read
+// the robot's euler="90 0 0" tires and its sonars' bearings as radians, and a <default> geom
+// friction reached the chassis; both ran with exit 0.
+TEST_F(ReliabilityTest, AWorldThatChangesTheRobotIsRefused) {
+  const fs::path dir = WorldDir();
+  const std::string fixed =
+      "<worldbody><geom name=\"floor\" type=\"plane\" size=\"5 5 0.1\"/>"
+      "<geom name=\"wall\" type=\"box\" pos=\"3 0 0.5\" size=\"0.1 3 0.5\"/>"
+      "<geom name=\"west_wall\" type=\"box\" pos=\"-3 0 0.5\" size=\"0.1 3 0.5\"/></worldbody>";
+  const auto experiment = [&](const std::string& settings) {
+    const fs::path world =
+        WriteFile(dir / "robot_changes.xml", "<mujoco>" + settings + fixed + "</mujoco>\n");
+    std::string yaml = HallExperiment(0.0, 0.0, "", "{sonar: {}, encoders: {}}");
+    yaml.replace(yaml.find("worlds/hall.xml"), std::string("worlds/hall.xml").size(),
+                 world.string());
+    return yaml;
+  };
+  for (const std::string settings :
+       {"<compiler angle=\"radian\"/>", "<compiler eulerseq=\"zyx\"/>",
+        "<default><geom friction=\"0.2 0.005 0.0001\"/></default>",
+        "<default><joint frictionloss=\"5\"/></default>", "<compiler settotalmass=\"100\"/>"}) {
+    for (const std::string drive : {"contact", "planar"}) {
+      SCOPED_TRACE(settings + " " + drive);
+      ExpectRefused(experiment(settings), "--set physics.drive=" + drive,
+                    {"robot_changes.xml: it changes the robot: ", "in this world, ",
+                     "in the robot's file alone",
+                     "a <compiler> or <default> setting of the world applies to the robot's file"});
+    }
+  }
+  // A contact exclusion between the world and a robot body: the wheel fell through the floor.
+  for (const std::string drive : {"contact", "planar"}) {
+    SCOPED_TRACE("exclude " + drive);
+    ExpectRefused(
+        experiment("<contact><exclude body1=\"world\" body2=\"left_wheel\"/></contact>"),
+        "--set physics.drive=" + drive,
+        {"robot_changes.xml: it gives the robot 2 contact exclusions with the world, its file 1"});
+  }
+  // The robot's own names in the message: the Magellan Pro's sonar sites turned by radians.
+  std::string magellan = experiment("<compiler angle=\"radian\"/>");
+  magellan.replace(magellan.find("model: p3dx"), std::string("model: p3dx").size(),
+                   "model: magellan_pro");
+  ExpectRefused(magellan, "", {"robot_changes.xml: it changes the robot: "});
+  // Settings that leave the robot as its file says still run: MuJoCo's defaults written out, and
+  // default classes of the world's own.
+  for (const std::string settings :
+       {"<compiler angle=\"degree\" eulerseq=\"xyz\"/>",
+        "<worldbody><body name=\"shelf\"><geom type=\"box\" pos=\"2 2 0.5\" size=\"0.1 0.1 "
+        "0.5\"/></body></worldbody><contact><exclude body1=\"world\" body2=\"shelf\"/></contact>",
+        "<default><default class=\"plywood_wall\"><geom friction=\"0.3 0.005 0.0001\"/>"
+        "</default></default>"}) {
+    SCOPED_TRACE(settings);
+    const CliResult result = Run(experiment(settings));
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+  }
+}
+
+// audit s40: YAML::Load keeps a file's first document and drops the rest without a word, so an
+// experiment pasted together from two (a '---' line between) ran with the first half's settings.
+TEST_F(ReliabilityTest, AnExperimentOfTwoYamlDocumentsIsRefused) {
+  const std::string yaml = HallExperiment(0.0, 0.0);
+  const int lines = static_cast<int>(std::count(yaml.begin(), yaml.end(), '\n'));
+  ExpectRefused(yaml + "---\nduration_s: 0.2\n", "",
+                {"experiment.yaml: line " + std::to_string(lines + 2) +
+                 ": a second YAML document begins here (after a '---' line), which would be "
+                 "ignored"});
+  // An empty document after the first (a trailing '---'), or a '---' before the only one, runs.
+  for (const std::string& text : {yaml + "---\n", "---\n" + yaml, yaml + "...\n"}) {
+    const CliResult result = Run(text);
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+  }
+}
+
+// audit s40: yaml-cpp makes an alias the very node its anchor names, so a --set (or a sweep axis,
+// which is one) of a key whose value the file aliased elsewhere changed both places: with the
+// laser's rate anchored and the sonar's an alias of it, --set sensors.laser.rate_hz=5 ran the
+// sonar at 5 Hz too.
+TEST_F(ReliabilityTest, AnOverrideChangesOnlyItsOwnKeyWhereTheFileUsedAnAlias) {
+  const std::string yaml =
+      HallExperiment(0.0, 0.0, "", "{laser: {rate_hz: &rate 10}, sonar: {rate_hz: *rate}}");
+  const fs::path dir = Dir();
+  const fs::path file = WriteFile(dir / "experiment.yaml", yaml);
+  const CliResult result = RunPlywood("run " + file.string() + " --quiet --out " +
+                                          (dir / "out").string() + " --set sensors.laser.rate_hz=5",
+                                      dir);
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const YAML::Node config = YAML::LoadFile((dir / "out" / "config.yaml").string());
+  EXPECT_EQ(config["sensors"]["laser"]["rate_hz"].as<double>(), 5.0);
+  EXPECT_EQ(config["sensors"]["sonar"]["rate_hz"].as<double>(), 10.0);
 }
 
 // audit s32: MuJoCo compiles pos="nan 0 0.5" without a word. With the contact drive the geom was

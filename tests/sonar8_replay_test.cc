@@ -151,5 +151,29 @@ TEST(Sonar8LogTest, MalformedLineGivesItsNumber) {
   EXPECT_THROW(perception::LoadSonar8Log(dir), std::runtime_error);
 }
 
+// audit s40: measurement.txt and poses.txt as folders (a folder opens as a stream that reads
+// nothing), or as two empty files, loaded as a log of no rings without a word: the grid was
+// integrated from nothing.
+TEST(Sonar8LogTest, FoldersOrEmptyFilesAreRefusedNamingTheFile) {
+  const auto dir = std::filesystem::path(PLYWOOD_BINARY_DIR) / "test_tmp" / "sonar8_empty";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "measurement.txt");
+  std::filesystem::create_directories(dir / "poses.txt");
+  const auto expect_error = [&](const std::string& text) {
+    try {
+      perception::LoadSonar8Log(dir);
+      ADD_FAILURE() << "no error, expected: " << text;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
+    }
+  };
+  expect_error((dir / "measurement.txt").string() + ": not a regular file (a folder or a device?)");
+  std::filesystem::remove_all(dir / "measurement.txt");
+  std::filesystem::remove_all(dir / "poses.txt");
+  std::ofstream(dir / "measurement.txt") << "";
+  std::ofstream(dir / "poses.txt") << "\n";
+  expect_error((dir / "measurement.txt").string() + ": no measurement line");
+}
+
 }  // namespace
 }  // namespace plywood

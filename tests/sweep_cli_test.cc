@@ -181,6 +181,11 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
        {"experiment: " + (SourceRoot() / "experiments/seed000_rooms.yaml").string() +
             "\nset: {seed000_rooms.rig_at: [junk]}\n",
         "set.seed000_rooms.rig_at"}},
+      // audit s40: a second YAML document (after '---') was dropped without a word: this sweep
+      // was refused for a missing experiment, one with its axes there ran without them.
+      {"two_documents",
+       {"seeds: [1]\n---\nexperiment: " + experiment + "\n",
+        "line 3: a second YAML document begins here"}},
       {"umbmark_option",
        {"experiment: " + (SourceRoot() / "experiments/umbmark.yaml").string() +
             "\nset: {umbmark.runs_per_direction: [0]}\n",
@@ -461,6 +466,54 @@ TEST(SweepCliTest, ProfileFilesAreReadWithABomAndNameTheirLine) {
     EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
     EXPECT_NE(bad.err.find(expected), std::string::npos) << bad.err;
     EXPECT_EQ(CountRunDirs(bad_out), 0);
+  }
+}
+
+// audit s40: cells apply the world, then the profile's lines, then the set axes and the seed. A
+// profile's `world=` therefore replaced the sweep's worlds axis in every cell, while results.csv
+// and summary.csv labelled the runs with the axis's worlds. And the laser's short key
+// sensors.laser.sigma_m slipped past the check for a key set twice in one profile: the second
+// line won without a word.
+TEST(SweepCliTest, AProfileThatLosesOrOverridesTheSweepsOwnValuesIsRefused) {
+  const fs::path dir = MakeTempDir("SweepProfileOverridden");
+  const std::string experiment = (SourceRoot() / "experiments/default.yaml").string();
+  const auto sweep_of = [&](const std::string& name, const std::string& profile,
+                            const std::string& rest) {
+    WriteFile(dir / (name + ".set"), profile);
+    return WriteFile(dir / (name + ".yaml"),
+                     "experiment: " + experiment + "\nprofiles: [" + name + ".set]\n" + rest);
+  };
+  const std::vector<std::pair<fs::path, std::string>> refused = {
+      {sweep_of("world", "sensors.encoders.slip_sigma=0.05\nworld=worlds/hall.xml\n",
+                "seeds: [1]\nworlds: [worlds/office.xml]\n"),
+       "world.yaml: profiles: " + (dir / "world.set").string() +
+           ": line 2: world: the profile would replace the sweep's worlds in every cell"},
+      {sweep_of("twice", "sensors.laser.sigma_m=0.05\nsensors.laser.range_noise_sigma_m=0.01\n",
+                "seeds: [1]\n"),
+       (dir / "twice.set").string() +
+           ": line 2: sensors.laser.range_noise_sigma_m: already set on line 1 (as "
+           "sensors.laser.sigma_m, the same key) (one of the two values would be lost)"}};
+  for (const auto& [sweep, expected] : refused) {
+    SCOPED_TRACE(sweep.string());
+    const fs::path out = dir / ("out_" + sweep.stem().string());
+    const auto r =
+        RunPlywood("sweep " + sweep.string() + " --slurm --dry-run --out " + out.string(), dir);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out / "cells.json"));
+  }
+  // A set axis still overrides a profile line of its key, on purpose (ekf_gyro_gain.yaml sweeps
+  // the gain its profiles hold), and a profile's world= without a worlds axis is its world.
+  for (const fs::path& fine :
+       {sweep_of("axis", "sensors.encoders.slip_sigma=0.05\n",
+                 "seeds: [1]\nset: {sensors.encoders.slip_sigma: [0.01, 0.02]}\n"),
+        sweep_of("own_world", "world=worlds/hall.xml\nrobot.spawn.x_m=0\n", "seeds: [1]\n")}) {
+    SCOPED_TRACE(fine.string());
+    const auto r = RunPlywood("sweep " + fine.string() + " --slurm --dry-run --out " +
+                                  (dir / "out_fine").string() + fine.stem().string(),
+                              dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
   }
 }
 

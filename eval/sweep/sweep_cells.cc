@@ -163,6 +163,7 @@ namespace {
 struct ProfileLine {
   int number = 0;    // 1-based, in the file
   std::string text;  // "key.path=value"
+  std::string key;   // the key path it sets (sim::CanonicalKeyPath of the written one)
 };
 
 // The --set lines of a profile file with their line numbers.
@@ -170,7 +171,7 @@ std::vector<ProfileLine> ReadProfileLines(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw sim::ConfigError(path.string(), "", "cannot read the profile");
   std::vector<ProfileLine> lines;
-  std::map<std::string, int> key_lines;  // key -> the line that set it
+  std::map<std::string, std::pair<int, std::string>> key_lines;  // key -> line, key as written
   int number = 0;
   for (std::string line; std::getline(in, line);) {
     ++number;
@@ -190,9 +191,14 @@ std::vector<ProfileLine> ReadProfileLines(const std::filesystem::path& path) {
     // YAML key given twice.
     std::string key = line.substr(0, eq);
     while (!key.empty() && key.back() == ' ') key.pop_back();
-    if (const auto [first, inserted] = key_lines.emplace(key, number); !inserted) {
+    // By the key the line sets: sensors.laser.sigma_m and range_noise_sigma_m are one setting.
+    const std::string canonical = sim::CanonicalKeyPath(key);
+    if (const auto [first, inserted] = key_lines.emplace(canonical, std::pair{number, key});
+        !inserted) {
+      const auto& [first_number, first_key] = first->second;
       throw sim::ConfigError(path.string(), "line " + std::to_string(number),
-                             key + ": already set on line " + std::to_string(first->second) +
+                             key + ": already set on line " + std::to_string(first_number) +
+                                 (first_key == key ? "" : " (as " + first_key + ", the same key)") +
                                  " (one of the two values would be lost): remove one");
     }
     // The line is kept in cells.json, JSON text: other bytes than UTF-8 ended the sweep with
@@ -201,9 +207,17 @@ std::vector<ProfileLine> ReadProfileLines(const std::filesystem::path& path) {
       throw sim::ConfigError(path.string(), "line " + std::to_string(number),
                              "not UTF-8 text (a sweep records its lines in cells.json)");
     }
-    lines.push_back({number, line});
+    lines.push_back({number, line, canonical});
   }
   return lines;
+}
+
+// Cells apply the world, then the profile's lines, then the set axes and the seed: an axis or
+// `seeds` overrides a profile line on purpose (ekf_gyro_gain.yaml sweeps the gain its profiles
+// hold), but a profile's `world=` overrode the `worlds` axis, whose labels results.csv and
+// summary.csv kept: every cell ran the profile's world, named as another.
+bool ProfileOverridesTheWorldsAxis(const SweepSpec& spec, const std::string& key) {
+  return key == "world" && (!spec.world_files.empty() || !spec.generated.empty());
 }
 
 // "PROFILE: line N" for the first line of `profile` the experiment refuses by itself (just
@@ -260,6 +274,14 @@ void CheckSweepOverrides(const SweepSpec& spec) {
     };
     check({}, "experiment");
     for (const auto& profile : spec.profiles) {
+      for (const ProfileLine& line : ReadProfileLines(profile)) {
+        if (!ProfileOverridesTheWorldsAxis(spec, line.key)) continue;
+        throw sim::ConfigError(
+            spec.source_file,
+            "profiles: " + profile.string() + ": line " + std::to_string(line.number),
+            "world: the profile would replace the sweep's worlds in every cell, which results.csv "
+            "would still label with the worlds axis: give worlds in the sweep, not in a profile");
+      }
       const std::vector<std::string> lines = ReadProfile(profile);
       try {
         sim::LoadExperimentConfig(experiment, lines);

@@ -16,6 +16,7 @@
 #include "sim/config/robot_catalog.h"
 #include "sim/config/utf8_text.h"
 #include "sim/config/yaml_alias_expansion.h"
+#include "sim/config/yaml_document.h"
 #include "sim/config/yaml_fields.h"
 #include "sim/config/yaml_tags.h"
 #include "sim/world/generator/world_families.h"
@@ -257,12 +258,7 @@ SweepSpec LoadSweepSpec(const fs::path& path) {
   std::stringstream text;
   text << in.rdbuf();
   spec.text = text.str();
-  YAML::Node root;
-  try {
-    root = YAML::Load(spec.text);
-  } catch (const YAML::Exception& e) {
-    throw sim::ConfigError(path.string(), "", std::string("not valid YAML: ") + e.what());
-  }
+  const YAML::Node root = sim::LoadOneYamlDocument(spec.text, path.string());
   if (!root.IsMap()) throw sim::ConfigError(path.string(), "", "expected a mapping");
   sim::RejectAliasExpansion(root, spec.source_file);
   sim::RejectDuplicateKeys(root, spec.source_file);  // a repeated axis would silently win

@@ -203,6 +203,15 @@ bool ParseCarmenLine(const std::string& line, CarmenLog* log) {
       if (!(range_max > 0.0)) {
         throw std::runtime_error("PARAM front_laser_max: must be > 0, got " + t[2]);
       }
+      // One value serves every FLASER scan of the log, those before the line too: a second,
+      // different one (two logs joined with cat) silently rescored the first log's scans.
+      const auto earlier = log->params.find(t[1]);
+      if (earlier != log->params.end() && ParseFiniteNumber(earlier->second) != range_max) {
+        throw std::runtime_error("PARAM front_laser_max: given again as " + t[2] +
+                                 " after an earlier " + earlier->second +
+                                 ": one maximum range serves every FLASER scan of the log, so a "
+                                 "log of two lasers cannot be scored as one; split it");
+      }
     }
     log->params[t[1]] = t[2];
     return true;

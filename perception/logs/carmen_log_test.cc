@@ -210,6 +210,30 @@ TEST(CarmenLogTest, AnInfiniteOrNonPositiveFrontLaserMaxIsRefusedWithItsLine) {
   }
 }
 
+// audit s40: one PARAM front_laser_max serves every FLASER scan of a log, those before it too. Two
+// logs joined with cat (an 8 m laser's, then an 81.91 m one's) were read without a word, the first
+// log's scans scored against 81.91 m: its no-return readings at 8 m counted as valid rays.
+TEST(CarmenLogTest, ASecondDifferentFrontLaserMaxIsRefusedWithItsLine) {
+  const auto path =
+      WriteTemp("joined.log", "PARAM front_laser_max 8 host 0\n" + Flaser("1 2 8", 3) +
+                                  "PARAM front_laser_max 81.91 host 0\n" + Flaser("1 2 3", 3));
+  try {
+    ReadCarmenLog(path);
+    ADD_FAILURE() << "no error for a second front_laser_max";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("joined.log:3: PARAM front_laser_max: given again as "
+                                         "81.91 after an earlier 8"),
+              std::string::npos)
+        << e.what();
+  }
+  // The same value again (a log's header repeated, or spelt 8.000000) is one maximum: read.
+  const CarmenLog same = ReadCarmenLog(
+      WriteTemp("same.log", "PARAM front_laser_max 8 host 0\n" + Flaser("1 2 8", 3) +
+                                "PARAM front_laser_max 8.000000 host 0\n" + Flaser("1 2 3", 3)));
+  ASSERT_EQ(same.lasers.size(), 2u);
+  EXPECT_EQ(same.lasers[0].scan.range_max_m, 8.0);
+}
+
 // audit s35: a UTF-8 byte-order mark before the first line made it an unknown message, skipped
 // without a word: the PARAM front_laser_max was lost (scans scored against their largest range,
 // 3 m here) or the first scan dropped.

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "perception/logs/parse_number.h"
+#include "perception/logs/regular_file.h"
 
 namespace plywood::perception {
 namespace {
@@ -15,6 +16,10 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 std::vector<std::vector<double>> ReadColumns(const std::filesystem::path& path, int columns) {
+  // A folder opens as a stream that reads nothing (a log of 0 rings, no error); a FIFO would be
+  // waited on for ever.
+  if (!IsRegularFile(path))
+    throw std::runtime_error(path.string() + ": " + WhyNotARegularFile(path));
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path.string() + ": cannot open");
   std::vector<std::vector<double>> rows;
@@ -46,6 +51,11 @@ std::vector<std::vector<double>> ReadColumns(const std::filesystem::path& path, 
 std::vector<Sonar8Record> LoadSonar8Log(const std::filesystem::path& folder) {
   const auto m = ReadColumns(folder / "measurement.txt", 9);
   const auto p = ReadColumns(folder / "poses.txt", 4);
+  // Two empty files made a log of no rings: a grid integrated from nothing, without a word.
+  if (m.empty()) {
+    throw std::runtime_error((folder / "measurement.txt").string() +
+                             ": no measurement line: an empty log has nothing to map");
+  }
   if (m.size() != p.size())
     throw std::runtime_error((folder / "poses.txt").string() + ": " + std::to_string(p.size()) +
                              " poses for " + std::to_string(m.size()) + " measurements");

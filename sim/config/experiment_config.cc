@@ -21,6 +21,7 @@
 #include "sim/config/robot_catalog.h"
 #include "sim/config/utf8_text.h"
 #include "sim/config/yaml_alias_expansion.h"
+#include "sim/config/yaml_document.h"
 #include "sim/config/yaml_fields.h"
 #include "sim/config/yaml_tags.h"
 #include "sim/world/mujoco_handles.h"
@@ -91,13 +92,11 @@ void NormaliseAliases(YAML::Node root, const std::string& source) {
   laser.remove("sigma_m");
 }
 
-constexpr const char* kLaserSigmaAlias = "sensors.laser.sigma_m=";
-
 // "--set sensors.laser.sigma_m=V" sets the long key, whatever the file spelled.
 std::string AliasedAssignment(const std::string& assignment) {
-  if (assignment.rfind(kLaserSigmaAlias, 0) != 0) return assignment;
-  return "sensors.laser.range_noise_sigma_m=" +
-         assignment.substr(std::string(kLaserSigmaAlias).size());
+  const auto equals = assignment.find('=');
+  if (equals == std::string::npos) return assignment;  // refused by ApplyOverride
+  return CanonicalKeyPath(assignment.substr(0, equals)) + assignment.substr(equals);
 }
 
 // `plugins: [libmine.so, ...]`: each file resolved like `world` and loaded (plugin_loader.h).
@@ -220,16 +219,13 @@ void OutputOptions::Validate() const {
 ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::string& source,
                                        const std::filesystem::path& base_dir,
                                        const std::vector<std::string>& overrides) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml_text);
-  } catch (const YAML::Exception& e) {
-    // yaml-cpp's own text carries the line and column.
-    throw ConfigError(source, "", std::string("not valid YAML: ") + e.what());
-  }
+  YAML::Node root = LoadOneYamlDocument(yaml_text, source);
   if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
   RejectAliasExpansion(root, source);
   RejectDuplicateKeys(root, source);
+  // An override (or the sigma_m alias below) changes one place only, even where the file wrote an
+  // alias of an anchored value.
+  root = CopyWithoutSharedNodes(root);
   NormaliseAliases(root, source);
   for (const std::string& assignment : overrides) {
     if (!root.IsMap()) break;  // reported below as "expected a mapping"
@@ -349,6 +345,11 @@ ExperimentConfig LoadExperimentConfig(const std::filesystem::path& yaml_path,
   text << in.rdbuf();
   return ParseExperimentConfig(text.str(), yaml_path.string(),
                                std::filesystem::absolute(yaml_path).parent_path(), overrides);
+}
+
+std::string CanonicalKeyPath(const std::string& key_path) {
+  if (key_path == "sensors.laser.sigma_m") return "sensors.laser.range_noise_sigma_m";
+  return key_path;
 }
 
 std::string ExperimentConfigToYaml(const ExperimentConfig& const_config) {

@@ -83,6 +83,11 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
                                        const std::filesystem::path& base_dir,
                                        const std::vector<std::string>& overrides = {});
 
+// The key path an override of `key_path` sets: the long name of a short one a user may write
+// (sensors.laser.sigma_m is sensors.laser.range_noise_sigma_m), else `key_path` itself. Two
+// overrides set the same value exactly when their canonical paths are equal.
+std::string CanonicalKeyPath(const std::string& key_path);
+
 // The fully resolved config (every default spelled out), loadable again by LoadExperimentConfig.
 std::string ExperimentConfigToYaml(const ExperimentConfig& config);
 

@@ -95,7 +95,16 @@ void LoadPlugin(const std::filesystem::path& library) {
                                 " entry point; define it with PLYWOOD_PLUGIN from "
                                 "perception/plugins/plugin.h (docs/plugins.md)");
   }
-  const std::string plugin_abi = abi();
+  // A null pointer made std::string throw std::logic_error: exit 1 with libstdc++'s words.
+  const char* claimed_abi = abi();
+  if (claimed_abi == nullptr) {
+    dlclose(handle);
+    throw std::invalid_argument(name + ": its " + perception::kPluginAbiSymbol +
+                                "() returns a null pointer, not the build it was made for; define "
+                                "it with PLYWOOD_PLUGIN from perception/plugins/plugin.h "
+                                "(docs/plugins.md)");
+  }
+  const std::string plugin_abi = claimed_abi;
   if (plugin_abi != PLYWOOD_PLUGIN_ABI) {
     dlclose(handle);
     throw std::invalid_argument(

@@ -10,6 +10,7 @@
 #include "sim/world/draw_only_geoms.h"
 #include "sim/world/finite_geometry.h"
 #include "sim/world/planar_drive.h"
+#include "sim/world/robot_changed_by_world.h"
 #include "sim/world/static_geom_step.h"
 #include "sim/world/step_skipped_sites.h"
 #include "sim/world/upright_pose.h"
@@ -95,6 +96,19 @@ Scene::Scene(const SceneOptions& options) : options_(options) {
   }
   if (const auto problem = NonFiniteGeometry(model_.get())) {
     throw ConfigError(options.world_mjcf.string(), "", *problem);
+  }
+  // The world's <compiler> and <default> settings reach the robot's file too (angle="radian"
+  // turned its sonars and wheels, exit 0): the robot must compile as it does alone.
+  MjModelPtr robot_alone;
+  try {
+    robot_alone = LoadModelFromFile(robot.string());
+  } catch (const std::exception&) {
+    // The checks below name what such a robot file lacks.
+  }
+  if (robot_alone) {
+    if (const auto problem = RobotChangedByWorld(model_.get(), robot_alone.get())) {
+      throw ConfigError(options.world_mjcf.string(), "", *problem);
+    }
   }
   if (!(options.timestep_s > 0.0) || !std::isfinite(options.timestep_s)) {
     throw std::invalid_argument("timestep_s: must be a finite number > 0");
