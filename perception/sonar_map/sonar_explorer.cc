@@ -644,6 +644,21 @@ std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToFrontier(
   return CellPath(traversable, goal, here);
 }
 
+Eigen::Vector2d SonarExplorer::ContactPoint(const msgs::Pose2D& X_WR, int panel, int panels) const {
+  const double bearing = X_WR.theta_rad + 2.0 * M_PI * panel / panels;
+  return Position(X_WR) +
+         (options_.robot_radius_m + 0.02) * Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
+}
+
+void SonarExplorer::KeepContactAndDropMove(const msgs::Pose2D& X_WR,
+                                           const Eigen::Vector2d& contact) {
+  contacts_.push_back(contact);
+  if (perimeter_done_ && !path_.empty()) GiveUpMove(Position(X_WR));
+  path_.clear();
+  heading_to_frontier_ = false;
+  last_replan_s_ = -1e9;
+}
+
 bool SonarExplorer::StartWedgeTurn(const robot::ControllerInput& input) {
   if (!options_.bump_wedge_turns || !backing_off_from_ || wedge_heading_rad_ ||
       input.bumpers == nullptr)
@@ -662,16 +677,10 @@ bool SonarExplorer::StartWedgeTurn(const robot::ControllerInput& input) {
   const int n = static_cast<int>(pressed.size());
   for (int panel = 0; panel < n; ++panel) {
     if (!pressed[panel]) continue;
-    const double bearing = X_WR.theta_rad + 2.0 * M_PI * panel / n;
-    const Eigen::Vector2d second = here + (options_.robot_radius_m + 0.02) *
-                                              Eigen::Vector2d(std::cos(bearing), std::sin(bearing));
+    const Eigen::Vector2d second = ContactPoint(X_WR, panel, n);
     // The same half as the first contact: that contact still pressed as the robot leaves it.
     if ((first - here).dot(second - here) >= 0.0) continue;
-    contacts_.push_back(second);
-    if (perimeter_done_ && !path_.empty()) GiveUpMove(here);
-    path_.clear();
-    heading_to_frontier_ = false;
-    last_replan_s_ = -1e9;
+    KeepContactAndDropMove(X_WR, second);
     backing_off_until_s_ = -1.0;
     backing_off_from_.reset();
     if (options_.bump_stops_wheels) command_ = {};
@@ -722,13 +731,7 @@ std::optional<msgs::WheelSpeedCommand> SonarExplorer::ReactToBump(
   // The sonar missed something (a corner inside its blanking range, or a face seen at a grazing
   // angle): the contact point is in the way from now on, the move is abandoned, and the robot
   // backs away from the panel that touched.
-  const double bearing = X_WR.theta_rad + 2.0 * M_PI * panel / n;
-  const Eigen::Vector2d direction(std::cos(bearing), std::sin(bearing));
-  contacts_.push_back(Position(X_WR) + (options_.robot_radius_m + 0.02) * direction);
-  if (perimeter_done_ && !path_.empty()) GiveUpMove(Position(X_WR));
-  path_.clear();
-  heading_to_frontier_ = false;
-  last_replan_s_ = -1e9;
+  KeepContactAndDropMove(X_WR, ContactPoint(X_WR, panel, n));
   // Away from the panel along the robot's axis. A side panel's arc reaches both the front and the
   // rear half, and its centre's cosine is 0 up to rounding (+6e-17 left, -2e-16 right): the
   // contact came from the motion, so the robot backs off against it (backwards when it was not

@@ -316,6 +316,11 @@ class SonarExplorer final : public robot::Controller {
   // leaves, while it runs or within bump_back_off_s after: starts the turn out of the wedge, true
   // if so.
   bool StartWedgeTurn(const robot::ControllerInput& input);
+  // Where a pressed panel (of `panels` round the body) touched: on its centre line, 2 cm beyond
+  // the body's radius.
+  Eigen::Vector2d ContactPoint(const msgs::Pose2D& X_WR, int panel, int panels) const;
+  // A bump: the contact point is in the way from now on and the move under way is abandoned.
+  void KeepContactAndDropMove(const msgs::Pose2D& X_WR, const Eigen::Vector2d& contact);
   double last_replan_s_ = -1e9;
   double last_decay_s_ = -1.0;
   std::vector<Eigen::Vector2d> path_;
