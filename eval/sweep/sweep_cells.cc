@@ -274,15 +274,18 @@ void CheckSweepOverrides(const SweepSpec& spec) {
     };
     check({}, "experiment");
     for (const auto& profile : spec.profiles) {
-      for (const ProfileLine& line : ReadProfileLines(profile)) {
-        if (!ProfileOverridesTheWorldsAxis(spec, line.key)) continue;
-        throw sim::ConfigError(
-            spec.source_file,
-            "profiles: " + profile.string() + ": line " + std::to_string(line.number),
-            "world: the profile would replace the sweep's worlds in every cell, which results.csv "
-            "would still label with the worlds axis: give worlds in the sweep, not in a profile");
+      std::vector<std::string> lines;
+      for (ProfileLine& line : ReadProfileLines(profile)) {
+        if (ProfileOverridesTheWorldsAxis(spec, line.key)) {
+          throw sim::ConfigError(
+              spec.source_file,
+              "profiles: " + profile.string() + ": line " + std::to_string(line.number),
+              "world: the profile would replace the sweep's worlds in every cell, which "
+              "results.csv would still label with the worlds axis: give worlds in the sweep, not "
+              "in a profile");
+        }
+        lines.push_back(std::move(line.text));
       }
-      const std::vector<std::string> lines = ReadProfile(profile);
       try {
         sim::LoadExperimentConfig(experiment, lines);
       } catch (const sim::ConfigError& e) {
