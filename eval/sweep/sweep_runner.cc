@@ -256,7 +256,7 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
   std::map<std::string, std::string> inputs = InputHashes(spec);
   for (const SweepCell& cell : cells) {
     for (const fs::path& file : cell.read_files) {
-      inputs[file.string()] = StableHash(sim::ReadTextFile(file));
+      if (!inputs.count(file.string())) inputs[file.string()] = StableHash(sim::ReadTextFile(file));
     }
   }
   meta["inputs"] = inputs;
