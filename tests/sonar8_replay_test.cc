@@ -151,6 +151,43 @@ TEST(Sonar8LogTest, MalformedLineGivesItsNumber) {
   EXPECT_THROW(perception::LoadSonar8Log(dir), std::runtime_error);
 }
 
+// audit s41: a negative range was read as "no echo", which the cone model takes as free space out
+// to the 5 m maximum: the grid was painted free where nothing was measured, without a word. Lines
+// are named as they stand in the file (blank lines counted), in poses.txt too.
+TEST(Sonar8LogTest, ANegativeRangeIsRefusedNamingItsLineAndTransducer) {
+  const auto dir = std::filesystem::path(PLYWOOD_BINARY_DIR) / "test_tmp" / "sonar8_negative";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "measurement.txt") << "1 5110 5110 2320 2360 5110 5110 2160 1190\n\n"
+                                         << "2 5110 5110 -300 2360 5110 5110 2160 1190\n";
+  std::ofstream(dir / "poses.txt") << "1 0 0 0\n2 0 0 0\n";
+  try {
+    perception::LoadSonar8Log(dir);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find((dir / "measurement.txt").string() +
+                                         ": line 3: r3: negative range -300 mm"),
+              std::string::npos)
+        << e.what();
+  }
+  std::ofstream(dir / "measurement.txt") << "1 5110 5110 2320 2360 5110 5110 2160 1190\n"
+                                         << "2 5110 5110 2320 2360 5110 5110 2160 1190\n";
+  std::ofstream(dir / "poses.txt") << "1 0 0 0\n\n3 0 0 0\n";
+  try {
+    perception::LoadSonar8Log(dir);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find((dir / "poses.txt").string() +
+                                         ": line 3: timestamp differs from line 2 of "
+                                         "measurement.txt"),
+              std::string::npos)
+        << e.what();
+  }
+  // -0 is no negative range: a reading below the usable 170 mm, no echo.
+  std::ofstream(dir / "measurement.txt") << "1 -0 5110 2320 2360 5110 5110 2160 1190\n";
+  std::ofstream(dir / "poses.txt") << "1 0 0 0\n";
+  EXPECT_FALSE(perception::LoadSonar8Log(dir).front().ring.readings[0].echo);
+}
+
 // audit s40: measurement.txt and poses.txt as folders (a folder opens as a stream that reads
 // nothing), or as two empty files, loaded as a log of no rings without a word: the grid was
 // integrated from nothing.

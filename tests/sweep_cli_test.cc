@@ -190,6 +190,14 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
        {"experiment: " + (SourceRoot() / "experiments/umbmark.yaml").string() +
             "\nset: {umbmark.runs_per_direction: [0]}\n",
         "set.umbmark.runs_per_direction"}},
+      // audit s41: the laser's short and long noise keys as two zipped axes: each cell ran the
+      // second axis's value, results.csv labelled it with the first's too (sigma_m 0.01 ran 0.03).
+      {"one_key_as_two_axes",
+       {"experiment: " + experiment +
+            "\nset:\n  sensors.laser.sigma_m: [0.01, 0.02]\n"
+            "  sensors.laser.range_noise_sigma_m: [0.03, 0.04]\n"
+            "zip: [sensors.laser.sigma_m, sensors.laser.range_noise_sigma_m]\n",
+        "set.sensors.laser.range_noise_sigma_m: the same key as set.sensors.laser.sigma_m"}},
   };
   for (const auto& [name, c] : cases) {
     SCOPED_TRACE(name);
@@ -578,6 +586,49 @@ TEST(SweepCliTest, AnEditedFileTheWorldIncludesRunsItsCellsAnew) {
       << "the run in the table is of the world before the edit: " << walls_of_tabled_run();
 }
 
+// audit s41: a cell's id hashed the weights file's path, not its contents, and the sweep's inputs
+// left it out: after `plywood train sonar-net --out` rewrote the weights a sweep named, the resume
+// kept the finished runs of the old network (occupancy.grid_error 0.0045 where a run of the new
+// network gives 0) and ran only new cells with the new one. The weights (and plug-ins) are hashed
+// into the id and recorded in sweep.json's inputs, so the cells run anew.
+TEST(SweepCliTest, RetrainedSonarNetWeightsRunTheirCellsAnew) {
+  const fs::path dir = MakeTempDir("SweepRetrainedWeights");
+  const fs::path weights = dir / "net.txt";
+  fs::copy_file(SourceRoot() / "models/sonar_net_v1.txt", weights);
+  const fs::path sweep = WriteFile(
+      dir / "s.yaml", "experiment: " + (SourceRoot() / "experiments/seed001_room_1.yaml").string() +
+                          "\nseeds: [1]\nset:\n  duration_s: [20]\n  output.snapshot: [false]\n"
+                          "  controller.weights_file: [" +
+                          weights.string() + "]\n");
+  const fs::path out = dir / "out";
+  const std::string command = "sweep " + sweep.string() + " --out " + out.string() + " --quiet";
+  const auto tabled_metrics = [&] {
+    const auto rows = eval::ParseCsv(Slurp(out / "results.csv"));
+    return rows.size() == 2 ? Slurp(out / "runs" / rows[1][0] / "metrics.json") : "no table";
+  };
+  ASSERT_EQ(RunPlywood(command, dir).exit_code, 0);
+  const std::string first = tabled_metrics();
+
+  const auto trained = RunPlywood(
+      "train sonar-net --rooms 2 --test-rooms 1 --poses 3 --epochs 1 "
+      "--hidden 4 --quiet --out " +
+          weights.string(),
+      dir);
+  ASSERT_EQ(trained.exit_code, 0) << trained.err;
+  const auto r = RunPlywood(command, dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto fresh =
+      RunPlywood("run " + (SourceRoot() / "experiments/seed001_room_1.yaml").string() +
+                     " --set duration_s=20 --set output.snapshot=false --set "
+                     "controller.weights_file=" +
+                     weights.string() + " --quiet --out " + (dir / "fresh").string(),
+                 dir);
+  ASSERT_EQ(fresh.exit_code, 0) << fresh.err;
+  const std::string expected = Slurp(dir / "fresh" / "metrics.json");
+  ASSERT_NE(expected, first) << "the two networks give the same figures: the test shows nothing";
+  EXPECT_EQ(tabled_metrics(), expected) << "the table holds the old network's run";
+}
+
 TEST(SweepCliTest, ResultsOfAnotherBuildOrOfChangedInputsAreNeverKept) {
   const fs::path dir = MakeTempDir("SweepStale");
   // The experiment is a copy, so the test can change it.
@@ -904,6 +955,32 @@ TEST(SweepCliTest, TwoWorldFilesOfOneNameAreSummarisedApart) {
   const auto summary = eval::ParseCsv(Slurp(dir / "out" / "summary.csv"));
   ASSERT_EQ(summary.size(), 3u) << Slurp(dir / "out" / "summary.csv");  // header + one per world
   EXPECT_EQ(summary[0][0], "world");
+  EXPECT_EQ(summary[1][0], a.string());
+  EXPECT_EQ(summary[2][0], b.string());
+  EXPECT_EQ(summary[1][2], "1");  // n
+  EXPECT_EQ(summary[2][2], "1");
+}
+
+// audit s41: two profiles of one name in different folders (a/noise.set, b/noise.set) were both
+// labelled `noise` in cells.csv and results.csv, so summary.csv pooled their runs: one group,
+// n 4, one mean over two noise profiles. They are labelled by path, as world files are.
+TEST(SweepCliTest, TwoProfilesOfOneNameAreSummarisedApart) {
+  const fs::path dir = MakeTempDir("SweepSameProfileName");
+  fs::create_directories(dir / "a");
+  fs::create_directories(dir / "b");
+  const fs::path a = WriteFile(dir / "a" / "noise.set", "sensors.encoders.slip_sigma=0\n");
+  const fs::path b = WriteFile(dir / "b" / "noise.set", "sensors.encoders.slip_sigma=0.05\n");
+  const fs::path sweep = WriteFile(
+      dir / "same.yaml", "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
+                             "\nseeds: [1]\nprofiles: [" + a.string() + ", " + b.string() +
+                             "]\nset:\n  duration_s: [0.5]\n  output.snapshot: [false]\n"
+                             "metrics: [truth.distance_m]\n");
+  const auto r =
+      RunPlywood("sweep " + sweep.string() + " --out " + (dir / "out").string() + " --jobs 2", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto summary = eval::ParseCsv(Slurp(dir / "out" / "summary.csv"));
+  ASSERT_EQ(summary.size(), 3u) << Slurp(dir / "out" / "summary.csv");  // header + one each
+  EXPECT_EQ(summary[0][0], "profile");
   EXPECT_EQ(summary[1][0], a.string());
   EXPECT_EQ(summary[2][0], b.string());
   EXPECT_EQ(summary[1][2], "1");  // n

@@ -54,6 +54,18 @@ GridImage ReadPng(const std::filesystem::path& path) {
   const auto* wide = reinterpret_cast<const png_uint_16*>(buffer.data());
   for (std::size_t i = 0; i < image.brightness.size(); ++i) {
     const std::size_t p = channels * i;
+    // A pixel's colour says free or occupied; a transparent one's shows whatever lies beneath. A
+    // map tool writing unknown cells as transparent black had them scored occupied, e 1.0.
+    if (!sixteen && buffer[p + 3] != 255) {
+      const int column = static_cast<int>(i % decoded.width);
+      const int row = static_cast<int>(i / decoded.width);
+      throw sim::ConfigError(
+          file, "pixel " + std::to_string(i),
+          "(column " + std::to_string(column) + ", row " + std::to_string(row) +
+              ") is transparent (alpha " + std::to_string(buffer[p + 3]) +
+              " of 255): its colour alone does not say free or occupied; save the map without "
+              "transparency, flattened onto the colour such pixels mean");
+    }
     image.brightness[i] = sixteen ? (wide[p] + wide[p + 1] + wide[p + 2]) / (3.0 * 65535.0)
                                   : (buffer[p] + buffer[p + 1] + buffer[p + 2]) / (3.0 * 255.0);
   }

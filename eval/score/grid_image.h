@@ -19,10 +19,12 @@ struct GridImage {
 };
 
 // Reads a PNG (libpng; 8 or 16 bits as stored, colour pixels the mean of R, G and B; an 8-bit
-// alpha channel is ignored, a 16-bit one refused) or a PGM, plain (P2) or raw (P5),
+// alpha channel must be opaque in every pixel, a 16-bit one is refused) or a PGM, plain (P2) or
+// raw (P5),
 // maxval 1..65535, '#' comments in the header; the format is told by the first bytes, not the name.
 // @throws sim::ConfigError "FILE[:LINE]: FIELD: what is wrong" for an unreadable, truncated or
-// corrupt file, a bad PGM header field (magic, width, height, maxval) or sample (pixel N).
+// corrupt file, a bad PGM header field (magic, width, height, maxval) or sample (pixel N), or a
+// PNG pixel that is not opaque (pixel N).
 GridImage ReadGridImage(const std::filesystem::path& path);
 
 }  // namespace plywood::eval

@@ -51,8 +51,8 @@ TEST(GridImageTest, PngValuesAreReadAsStored) {
   EXPECT_EQ(image.At(1, 0), 128 / 255.0);
   EXPECT_EQ(image.At(0, 1), 1.0);
   EXPECT_EQ(image.At(1, 1), 205 / 255.0);
-  // Transparent white stays white (libpng would composite it onto black); colour is averaged.
-  const std::uint8_t rgba[] = {255, 255, 255, 0, 30, 60, 90, 255};
+  // Opaque pixels of an image with an alpha channel read by their colour, averaged.
+  const std::uint8_t rgba[] = {255, 255, 255, 255, 30, 60, 90, 255};
   image = ReadGridImage(WritePng("rgba.png", PNG_FORMAT_RGBA, 2, 1, rgba));
   EXPECT_EQ(image.At(0, 0), 1.0);
   EXPECT_EQ(image.At(1, 0), 60 / 255.0);
@@ -61,6 +61,23 @@ TEST(GridImageTest, PngValuesAreReadAsStored) {
   image = ReadGridImage(WritePng("wide.png", PNG_FORMAT_LINEAR_Y, 3, 1, wide));
   EXPECT_EQ(image.At(1, 0), 32768 / 65535.0);
   EXPECT_EQ(image.At(2, 0), 1.0);
+}
+
+// audit s41: an 8-bit alpha channel was ignored, so a pixel was read by the colour beneath its
+// transparency: a map tool writing unknown cells as transparent black had them scored occupied
+// (e 1.0 for an all-unknown map), as transparent white free. Any pixel not opaque is refused.
+TEST(GridImageTest, APngPixelThatIsNotOpaqueIsRefusedNamingIt) {
+  const std::uint8_t clear_black[] = {255, 255, 255, 255, 255, 255, 255, 255,
+                                      255, 255, 255, 255, 0,   0,   0,   0};  // 2 x 2
+  EXPECT_NE(ErrorOf(WritePng("clear.png", PNG_FORMAT_RGBA, 2, 2, clear_black))
+                .find("clear.png: pixel 3: (column 1, row 1) is transparent (alpha 0 of 255)"),
+            std::string::npos)
+      << ErrorOf(Dir() / "clear.png");
+  const std::uint8_t grey_alpha[] = {255, 255, 255, 128};  // grey + alpha, half transparent
+  EXPECT_NE(ErrorOf(WritePng("half.png", PNG_FORMAT_GA, 2, 1, grey_alpha))
+                .find("half.png: pixel 1: (column 1, row 0) is transparent (alpha 128 of 255)"),
+            std::string::npos)
+      << ErrorOf(Dir() / "half.png");
 }
 
 TEST(GridImageTest, PgmPlainAndRawWithCommentsAndWideSamples) {

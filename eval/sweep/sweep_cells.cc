@@ -9,8 +9,10 @@
 
 #include "eval/protocol.h"
 #include "perception/logs/byte_order_mark.h"
+#include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
 #include "sim/config/experiment_config.h"
+#include "sim/config/robot_catalog.h"
 #include "sim/config/utf8_text.h"
 #include "sim/config/yaml_text_value.h"
 #include "sim/runner/text_file.h"
@@ -109,6 +111,20 @@ std::string CulpritField(const SweepSpec& spec, const SweepCell& cell,
   return "experiment";
 }
 
+// The sonar-net weights and plug-in libraries a run of `config` reads, those that exist (a missing
+// one is refused by the run, naming its field).
+std::vector<std::filesystem::path> FilesReadBesidesTheWorld(const sim::ExperimentConfig& config) {
+  std::vector<std::filesystem::path> files;
+  const perception::SonarExplorerOptions& explorer = config.controller.sonar_explorer;
+  if (config.controller.type == "sonar_explorer" && explorer.sonar_model == "net") {
+    const std::filesystem::path weights = explorer.weights_file;
+    files.push_back(weights.is_relative() ? sim::DataRoot() / weights : weights);
+  }
+  for (const std::filesystem::path& library : config.plugins) files.push_back(library);
+  std::erase_if(files, [](const auto& file) { return !perception::IsRegularFile(file); });
+  return files;
+}
+
 // The resolved config with the world named by its contents rather than its path: a cell's id is
 // the same wherever the sweep folder (and the worlds generated into it) lies.
 std::string IdentityText(const sim::ExperimentConfig& config) {
@@ -120,6 +136,12 @@ std::string IdentityText(const sim::ExperimentConfig& config) {
          at = text.find(path, at + world_id.size())) {
       text.replace(at, path.size(), world_id);
     }
+  }
+  // Files the run reads besides the world, by content too: a sweep resumed after its sonar-net
+  // weights were retrained into the same file (or a plug-in rebuilt) kept every finished cell's
+  // results of the old network beside new cells of the new one, without a word.
+  for (const std::filesystem::path& file : FilesReadBesidesTheWorld(config)) {
+    text += "\n-- " + file.string() + " content " + StableHash(sim::ReadTextFile(file));
   }
   return text;
 }
@@ -304,7 +326,14 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
   std::vector<SweepWorld> world_axis = worlds;
   if (world_axis.empty()) world_axis.push_back({});  // the experiment's own world
   std::vector<std::pair<std::string, std::vector<std::string>>> profiles;
-  for (const auto& p : spec.profiles) profiles.emplace_back(p.stem().string(), ReadProfile(p));
+  for (const auto& p : spec.profiles) {
+    // Labelled by stem ("bad"), unless another profile shares it (a/noise.set, b/noise.set): the
+    // summary groups by this label, so their runs were pooled into one mean over two profiles.
+    const bool stem_shared =
+        std::count_if(spec.profiles.begin(), spec.profiles.end(),
+                      [&](const auto& other) { return other.stem() == p.stem(); }) > 1;
+    profiles.emplace_back(stem_shared ? p.string() : p.stem().string(), ReadProfile(p));
+  }
   if (profiles.empty()) profiles.push_back({});
   const std::vector<std::vector<std::string>> combos = AxisCombinations(spec);
   const bool sets_spawn = SetsSpawn(spec);
@@ -350,6 +379,7 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
             }
             cell.seed = config.seed;
             cell.id = StableHash(IdentityText(config));
+            cell.read_files = FilesReadBesidesTheWorld(config);
             if (const auto first = ids.find(cell.id); first != ids.end()) {
               throw sim::ConfigError(spec.source_file, RepeatedField(spec),
                                      "cell " + std::to_string(cell.index) + " repeats cell " +

@@ -20,6 +20,9 @@ struct SweepCell {
   std::uint64_t seed = 0;
   std::vector<std::string> values;  // one per SweepSpec::axes
   std::vector<std::string> overrides;
+  // Files the run reads besides its world (sonar-net weights, plug-ins), hashed into `id` and
+  // recorded in sweep.json's inputs; not kept in cells.json.
+  std::vector<std::filesystem::path> read_files;
 };
 
 // A world the sweep runs in, with the family it was drawn from (empty for files).

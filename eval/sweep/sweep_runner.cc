@@ -20,6 +20,7 @@
 
 #include "eval/sweep/sweep_csv.h"
 #include "eval/sweep/sweep_meta.h"
+#include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
 #include "sim/config/yaml_text_value.h"
 #include "sim/runner/build_id.h"
@@ -252,7 +253,13 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
   meta["metrics"] = spec.metrics;
   meta["group_by"] = spec.group_by;
   meta["cells"] = cells.size();
-  meta["inputs"] = InputHashes(spec);
+  std::map<std::string, std::string> inputs = InputHashes(spec);
+  for (const SweepCell& cell : cells) {
+    for (const fs::path& file : cell.read_files) {
+      if (!inputs.count(file.string())) inputs[file.string()] = StableHash(sim::ReadTextFile(file));
+    }
+  }
+  meta["inputs"] = inputs;
   meta["plywood_build_id"] = sim::ProgramBuildId();
 
   nlohmann::ordered_json full = nlohmann::ordered_json::array();
@@ -409,15 +416,28 @@ std::optional<std::vector<SweepCell>> ReadSweepManifest(const SweepSpec& spec,
       nlohmann::json::parse(sim::ReadTextFile(layout.out / "sweep.json"), nullptr, false);
   if (FindSweepMetaDamage(meta)) return std::nullopt;
   const auto recorded = meta.value("inputs", std::map<std::string, std::string>{});
-  for (const auto& [file, hash] : InputHashes(spec)) {
+  const auto changed = [&](const std::string& file) {
+    if (!quiet) {
+      std::fprintf(stderr,
+                   "plywood sweep: %s changed since the sweep was expanded: expanding it "
+                   "again (cells it changed run anew)\n",
+                   file.c_str());
+    }
+  };
+  const std::map<std::string, std::string> inputs = InputHashes(spec);
+  for (const auto& [file, hash] : inputs) {
     const auto it = recorded.find(file);
     if (it == recorded.end() || it->second != hash) {
-      if (!quiet) {
-        std::fprintf(stderr,
-                     "plywood sweep: %s changed since the sweep was expanded: expanding it "
-                     "again (cells it changed run anew)\n",
-                     file.c_str());
-      }
+      changed(file);
+      return std::nullopt;
+    }
+  }
+  // The files cells read besides their worlds (sonar-net weights, plug-ins), recorded as they
+  // were: a sweep resumed after the weights were retrained in place kept the old network's runs.
+  for (const auto& [file, hash] : recorded) {
+    if (inputs.count(file)) continue;
+    if (!perception::IsRegularFile(file) || StableHash(sim::ReadTextFile(file)) != hash) {
+      changed(file);
       return std::nullopt;
     }
   }

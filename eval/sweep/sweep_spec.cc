@@ -13,6 +13,7 @@
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
 #include "sim/config/decimal_whole_number.h"
+#include "sim/config/experiment_config.h"
 #include "sim/config/robot_catalog.h"
 #include "sim/config/utf8_text.h"
 #include "sim/config/yaml_alias_expansion.h"
@@ -206,6 +207,14 @@ void ReadAxes(const YAML::Node& node, const sim::YamlFields& top, SweepSpec& spe
     }
     if (key == "seed" || key == "world") {
       top.Fail(field, "use the sweep's own seeds: / worlds: axes");
+    }
+    // sensors.laser.sigma_m and range_noise_sigma_m are one key: as two axes each cell ran the
+    // later one's value while results.csv labelled it with both.
+    for (const SweepAxis& earlier : spec.axes) {
+      if (sim::CanonicalKeyPath(earlier.key) == sim::CanonicalKeyPath(key)) {
+        top.Fail(field, "the same key as set." + earlier.key +
+                            " (each cell would run one axis's value under both labels): give one");
+      }
     }
     SweepAxis axis{key, {}};
     if (!entry.second.IsSequence()) top.Fail(field, "expected a list of values");

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "msgs/shortest_number.h"
 #include "perception/logs/parse_number.h"
 #include "perception/logs/regular_file.h"
 
@@ -15,14 +16,20 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-std::vector<std::vector<double>> ReadColumns(const std::filesystem::path& path, int columns) {
+// One line's numbers, with its 1-based line number in the file (blank lines are skipped).
+struct Row {
+  int line = 0;
+  std::vector<double> values;
+};
+
+std::vector<Row> ReadColumns(const std::filesystem::path& path, int columns) {
   // A folder opens as a stream that reads nothing (a log of 0 rings, no error); a FIFO would be
   // waited on for ever.
   if (!IsRegularFile(path))
     throw std::runtime_error(path.string() + ": " + WhyNotARegularFile(path));
   std::ifstream in(path);
   if (!in) throw std::runtime_error(path.string() + ": cannot open");
-  std::vector<std::vector<double>> rows;
+  std::vector<Row> rows;
   std::string line;
   for (int n = 1; std::getline(in, line); ++n) {
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
@@ -41,7 +48,7 @@ std::vector<std::vector<double>> ReadColumns(const std::filesystem::path& path, 
       throw std::runtime_error(path.string() + ": line " + std::to_string(n) + ": expected " +
                                std::to_string(columns) + " numbers, got " +
                                std::to_string(row.size()));
-    rows.push_back(row);
+    rows.push_back({n, row});
   }
   return rows;
 }
@@ -62,18 +69,29 @@ std::vector<Sonar8Record> LoadSonar8Log(const std::filesystem::path& folder) {
   constexpr std::array<double, 8> kBearingDeg{-90, -37.5, -22.5, -7.5, 7.5, 22.5, 37.5, 90};
   std::vector<Sonar8Record> out;
   for (std::size_t i = 0; i < m.size(); ++i) {
-    if (m[i][0] != p[i][0])
-      throw std::runtime_error((folder / "poses.txt").string() + ": line " + std::to_string(i + 1) +
-                               ": timestamp differs from measurement.txt");
+    if (m[i].values[0] != p[i].values[0])
+      throw std::runtime_error((folder / "poses.txt").string() + ": line " +
+                               std::to_string(p[i].line) + ": timestamp differs from line " +
+                               std::to_string(m[i].line) + " of measurement.txt");
+    const std::vector<double>& pose = p[i].values;
     Sonar8Record r;
-    r.X_WR = {p[i][1] / 1000.0, p[i][2] / 1000.0, msgs::WrapAngle(p[i][3] / 10.0 * kPi / 180.0)};
-    r.ring.time_s = m[i][0] / 1000.0;
+    r.X_WR = {pose[1] / 1000.0, pose[2] / 1000.0, msgs::WrapAngle(pose[3] / 10.0 * kPi / 180.0)};
+    r.ring.time_s = m[i].values[0] / 1000.0;
     r.ring.range_min_m = 0.17;
     r.ring.range_max_m = 5.0;
     for (int k = 0; k < 8; ++k) {
       msgs::RangeReading reading;
       reading.X_RS = {0.0, 0.0, kBearingDeg[k] * kPi / 180.0};
-      const double range_m = m[i][k + 1] / 1000.0;
+      const double range_mm = m[i].values[k + 1];
+      // A negative range was taken for "no echo", and a miss clears its whole cone out to 5 m:
+      // the grid was painted free where nothing was measured.
+      if (range_mm < 0.0) {
+        throw std::runtime_error((folder / "measurement.txt").string() + ": line " +
+                                 std::to_string(m[i].line) + ": r" + std::to_string(k + 1) +
+                                 ": negative range " + msgs::ShortestNumber(range_mm) +
+                                 " mm (no echo is written 5110)");
+      }
+      const double range_m = range_mm / 1000.0;
       reading.echo = range_m >= 0.17 && range_m <= 5.0;
       reading.range_m = reading.echo ? range_m : 0.0;
       r.ring.readings.push_back(reading);
