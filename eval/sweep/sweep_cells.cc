@@ -140,8 +140,9 @@ std::string IdentityText(const sim::ExperimentConfig& config) {
   // Files the run reads besides the world, by content too: a sweep resumed after its sonar-net
   // weights were retrained into the same file (or a plug-in rebuilt) kept every finished cell's
   // results of the old network beside new cells of the new one, without a word.
+  // By content alone: the weights' absolute path (the data root) differs between checkouts.
   for (const std::filesystem::path& file : FilesReadBesidesTheWorld(config)) {
-    text += "\n-- " + file.string() + " content " + StableHash(sim::ReadTextFile(file));
+    text += "\n-- read-file-content-" + StableHash(sim::ReadTextFile(file));
   }
   return text;
 }
