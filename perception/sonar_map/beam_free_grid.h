@@ -21,6 +21,16 @@ struct BeamFreeOptions {
   double stop_short_m = 0.05;
   // Echoes farther than this are not used.
   double max_range_m = 5.0;
+  // A transducer whose axis lies more than axis_tolerance_rad but at most this off a grid axis
+  // places the face it heard too (oblique_face_echoes), for moving the room's sides out only: an
+  // axis-parallel wall echoes at all only while the cone's ray nearest its normal meets it within
+  // the sonar's incidence limit, and that ray's echo is the nearest, so the reading is the wall's
+  // distance over cos(off - half_angle_rad). 35 deg is the beam's half-angle plus the 20 deg a
+  // smooth plywood face still echoes at (the axis-to-normal angle Pioneer users see a wall at).
+  // 0 (or anything up to axis_tolerance_rad): no oblique faces.
+  double oblique_face_max_rad = 0.0;
+  // The beam's half-angle (Polaroid 6500: about 15 deg, 30 deg full opening).
+  double half_angle_rad = 15.0 * 3.14159265358979323846 / 180.0;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
 };
@@ -55,17 +65,35 @@ class BeamFreeGrid {
     double lateral;
   };
   const std::vector<FaceEcho>& face_echoes() const { return face_echoes_; }
+  // The same for the transducers between axis_tolerance_rad and oblique_face_max_rad off a grid
+  // axis: the face perpendicular to that grid axis lies range * cos(max(off - half_angle_rad, 0))
+  // from the transducer along it (the cone's ray nearest the face's normal heard it; inside the
+  // beam that ray is the normal itself), `lateral` where that ray meets it; `from_face` and
+  // `from_lateral` are the transducer's coordinates the same way round, so that ray runs from
+  // (from_face, from_lateral) to (face, lateral). Such an axis passes convex corners it never
+  // hears, so it gives no Passes and no Echoes.
+  struct ObliqueFaceEcho {
+    FaceEcho echo;
+    double from_face;
+    double from_lateral;
+  };
+  const std::vector<ObliqueFaceEcho>& oblique_face_echoes() const { return oblique_face_echoes_; }
   int width() const { return width_; }
   int height() const { return height_; }
 
  private:
   std::size_t Index(int ix, int iy) const { return static_cast<std::size_t>(iy) * width_ + ix; }
+  // The grid direction of the axis `off` away from `heading` (std::remainder(heading, pi / 2)).
+  static Direction AxisDirection(double heading, double off);
+  void AddObliqueFace(const msgs::RangeReading& reading, const msgs::Pose2D& X_WR, double heading,
+                      double off);
   LogOddsGridOptions geometry_;
   BeamFreeOptions options_;
   int width_ = 0, height_ = 0;
   std::vector<int> passes_;
   std::vector<int> echoes_[4];
   std::vector<FaceEcho> face_echoes_;
+  std::vector<ObliqueFaceEcho> oblique_face_echoes_;
 };
 
 }  // namespace plywood::perception

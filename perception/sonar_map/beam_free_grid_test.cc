@@ -94,6 +94,39 @@ TEST(BeamFreeGridTest, EchoesPlaceTheFaceAtTheRangeAlongTheGridAxis) {
   EXPECT_NEAR(grid.face_echoes()[1].lateral, 2.52, 1e-12);
 }
 
+TEST(BeamFreeGridTest, AnObliqueTransducerPlacesTheFaceItsRayNearestTheNormalHeard) {
+  BeamFreeOptions options;
+  options.oblique_face_max_rad = 35.0 * kPi / 180.0;
+  BeamFreeGrid grid(Geometry(), options);
+  // 25 deg off +x from (1.02, 1.22), echo at 1.0 m: the cone's edge ray, 10 deg off the x axis
+  // towards +y, is the one nearest a face perpendicular to x, so the face lies at x = 1.02 +
+  // cos 10 deg and that ray meets it at y = 1.22 + sin 10 deg.
+  grid.Integrate(Ring(0.0, 1.0), {1.02, 1.22, 25.0 * kPi / 180.0});
+  // 12 deg off -y from (2.52, 3.02), 0.4 m: the normal itself is inside the 15 deg cone.
+  grid.Integrate(Ring(0.0, 0.4), {2.52, 3.02, -0.5 * kPi + 12.0 * kPi / 180.0});
+  // 40 deg off: no plywood face echoes that obliquely (the edge ray meets it at 25 deg).
+  grid.Integrate(Ring(0.0, 1.0), {1.02, 1.22, 40.0 * kPi / 180.0});
+  ASSERT_EQ(grid.oblique_face_echoes().size(), 2u);
+  const BeamFreeGrid::ObliqueFaceEcho& east = grid.oblique_face_echoes()[0];
+  EXPECT_EQ(east.echo.direction, BeamFreeGrid::kEast);
+  EXPECT_NEAR(east.echo.face, 1.02 + std::cos(10.0 * kPi / 180.0), 1e-12);
+  EXPECT_NEAR(east.echo.lateral, 1.22 + std::sin(10.0 * kPi / 180.0), 1e-12);
+  EXPECT_NEAR(east.from_face, 1.02, 1e-12);
+  EXPECT_NEAR(east.from_lateral, 1.22, 1e-12);
+  const BeamFreeGrid::ObliqueFaceEcho& south = grid.oblique_face_echoes()[1];
+  EXPECT_EQ(south.echo.direction, BeamFreeGrid::kSouth);
+  EXPECT_NEAR(south.echo.face, 2.62, 1e-12);
+  EXPECT_NEAR(south.echo.lateral, 2.52, 1e-12);
+  // They place no axis face and pass no cell: an oblique axis passes corners it never hears.
+  EXPECT_TRUE(grid.face_echoes().empty());
+  for (int iy = 0; iy < 80; ++iy)
+    for (int ix = 0; ix < 80; ++ix) ASSERT_EQ(grid.Passes(ix, iy), 0) << ix << " " << iy;
+  // Off by default.
+  BeamFreeGrid plain(Geometry(), {});
+  plain.Integrate(Ring(0.0, 1.0), {1.02, 1.22, 25.0 * kPi / 180.0});
+  EXPECT_TRUE(plain.oblique_face_echoes().empty());
+}
+
 TEST(BeamFreeGridTest, AReadingAtTheBlankingRangeFreesNothingAndPlacesNoFace) {
   BeamFreeGrid grid(Geometry(), {});
   // The receiver's blanking time: a face 0.05-0.15 m away is reported at range_min_m, so the
@@ -122,6 +155,12 @@ TEST(BeamFreeGridTest, OutsideTheGridIsNoPassAndBadOptionsThrow) {
   EXPECT_THROW(BeamFreeGrid(Geometry(), bad), std::invalid_argument);
   bad = {};
   bad.stop_short_m = -0.1;
+  EXPECT_THROW(BeamFreeGrid(Geometry(), bad), std::invalid_argument);
+  bad = {};
+  bad.oblique_face_max_rad = 1.0;
+  EXPECT_THROW(BeamFreeGrid(Geometry(), bad), std::invalid_argument);
+  bad = {};
+  bad.half_angle_rad = -0.1;
   EXPECT_THROW(BeamFreeGrid(Geometry(), bad), std::invalid_argument);
 }
 

@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "msgs/shortest_number.h"
 #include "perception/sonar_map/line_fit.h"
@@ -478,6 +479,8 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
     // face it heard bounds the room no nearer than the echo. A side moves out to the outermost
     // such echo heard at least beam_free_min_passes times in one cell, by more than the overrun.
     if (beam_free != nullptr && options.beam_free_min_passes > 0) {
+      // The sides before any echo moved them (the oblique faces below may move only those).
+      const Rect before_echoes = map.room;
       const int min_echoes = options.beam_free_min_passes;
       for (int iy = 0; iy < H; ++iy)
         for (int ix = 0; ix < W; ++ix) {
@@ -511,6 +514,76 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
                                        overrun, min_echoes, res);
       map.room.y1 = FarthestAgreedFace(echoes, BeamFreeGrid::kNorth, map.room.y1, fitted.y1, 1.0,
                                        overrun, min_echoes, res);
+      // The same from the oblique transducers' faces (BeamFreeOptions::oblique_face_max_rad; none
+      // when it is off): a wall behind a box the robot stood in front of is heard through the gap
+      // beside the box by the transducers 22.5 deg round from the one facing it. Such a reading is
+      // the wall's only while the cone's ray nearest the wall's normal reached it, so a face counts
+      // only when that ray crossed the side it would move out where the grid holds nothing heard
+      // (a face heard on that line, the wall itself or a box, would have echoed first: a reading
+      // that claims a wall beyond it came from elsewhere, a concave corner farther on heard once
+      // that ray was blocked), and lands within the room's other two sides; and like a room
+      // side's boundary points, min_wall_points of them, heard from as many transducer cells,
+      // must agree within a cell.
+      const auto& oblique = beam_free->oblique_face_echoes();
+      if (!oblique.empty()) {
+        auto through = [&](BeamFreeGrid::Direction direction, double side, double v0, double v1) {
+          const bool along_x = direction == BeamFreeGrid::kWest || direction == BeamFreeGrid::kEast;
+          std::map<std::pair<int, int>, std::vector<BeamFreeGrid::FaceEcho>> by_cell;
+          for (const BeamFreeGrid::ObliqueFaceEcho& o : oblique) {
+            const BeamFreeGrid::FaceEcho& echo = o.echo;
+            if (echo.direction != direction || echo.lateral < v0 || echo.lateral > v1) continue;
+            const double span = echo.face - o.from_face;
+            if (std::abs(span) < 1e-9 || (side - o.from_face) / span <= 0.0 ||
+                (side - o.from_face) / span >= 1.0)
+              continue;  // the side is not between the transducer and the face
+            const double v =
+                o.from_lateral + (echo.lateral - o.from_lateral) * ((side - o.from_face) / span);
+            // The cells on the line and a cell either side of it (the side lies on a cell's edge,
+            // the face heard there in the cell beyond it).
+            bool heard = false;
+            for (const double du : {-res, 0.0, res}) {
+              const Eigen::Vector2i cell = grid.CellAt(along_x ? Eigen::Vector2d(side + du, v)
+                                                               : Eigen::Vector2d(v, side + du));
+              heard = heard || (cell.x() >= 0 && is_occ(cell.x(), cell.y()));
+            }
+            if (heard) continue;
+            // One face per transducer cell (their median): a robot standing still hears the same
+            // corner again every ring, while a wall agrees with itself from wherever it is heard.
+            const Eigen::Vector2i at =
+                grid.CellAt(along_x ? Eigen::Vector2d(o.from_face, o.from_lateral)
+                                    : Eigen::Vector2d(o.from_lateral, o.from_face));
+            by_cell[{at.x(), at.y()}].push_back(echo);
+          }
+          std::vector<BeamFreeGrid::FaceEcho> kept;
+          for (auto& [cell, faces] : by_cell) {
+            std::sort(faces.begin(), faces.end(),
+                      [](const BeamFreeGrid::FaceEcho& a, const BeamFreeGrid::FaceEcho& b) {
+                        return a.face < b.face;
+                      });
+            kept.push_back(faces[faces.size() / 2]);
+          }
+          return kept;
+        };
+        // Only a side no head-on echo moved: those place a face to the range noise, these to
+        // the cone's edge, and the farthest of many such faces agreeing lies a few cm out (a box
+        // flush with the wall was then no longer joined to it).
+        if (map.room.x0 == before_echoes.x0)
+          map.room.x0 = FarthestAgreedFace(
+              through(BeamFreeGrid::kWest, map.room.x0, map.room.y0, map.room.y1),
+              BeamFreeGrid::kWest, map.room.x0, fitted.x0, -1.0, overrun, min_pts, res);
+        if (map.room.x1 == before_echoes.x1)
+          map.room.x1 = FarthestAgreedFace(
+              through(BeamFreeGrid::kEast, map.room.x1, map.room.y0, map.room.y1),
+              BeamFreeGrid::kEast, map.room.x1, fitted.x1, 1.0, overrun, min_pts, res);
+        if (map.room.y0 == before_echoes.y0)
+          map.room.y0 = FarthestAgreedFace(
+              through(BeamFreeGrid::kSouth, map.room.y0, map.room.x0, map.room.x1),
+              BeamFreeGrid::kSouth, map.room.y0, fitted.y0, -1.0, overrun, min_pts, res);
+        if (map.room.y1 == before_echoes.y1)
+          map.room.y1 = FarthestAgreedFace(
+              through(BeamFreeGrid::kNorth, map.room.y1, map.room.x0, map.room.x1),
+              BeamFreeGrid::kNorth, map.room.y1, fitted.y1, 1.0, overrun, min_pts, res);
+      }
     }
   }
   // Each side at the faces the sonar axes pointing that way heard head-on within the wall band of

@@ -532,6 +532,61 @@ TEST(CognitiveMapTest, AWallHeardOnceEachByTwoTiltedAxesIsPlacedAtTheFaceTheyAgr
   EXPECT_NEAR(BuildCognitiveMap(grid, kInside, {}, &apart).room.x0, 1.55, kTol);
 }
 
+// The beam-free grid of one reading from each transducer position y of `from_y` at x 2.0, 25 deg
+// off -x towards +y, each hearing a face perpendicular to x at x = `face_x` with the cone's edge
+// ray (10 deg off -x); oblique faces kept up to `oblique_face_max_deg` off a grid axis.
+BeamFreeGrid ObliqueBeams(const std::vector<double>& from_y, double face_x,
+                          double oblique_face_max_deg = 35.0) {
+  constexpr double kPi = 3.14159265358979323846;
+  BeamFreeOptions options;
+  options.oblique_face_max_rad = oblique_face_max_deg * kPi / 180.0;
+  BeamFreeGrid beams(TestGridGeometry(), options);
+  msgs::RangeRing ring;
+  const double tilt = 10.0 * kPi / 180.0;
+  ring.readings.push_back({msgs::Pose2D{0.0, 0.0, 0.0}, (2.0 - face_x) / std::cos(tilt), true});
+  for (double y : from_y) beams.Integrate(ring, {2.0, y, kPi - 25.0 * kPi / 180.0});
+  return beams;
+}
+
+TEST(CognitiveMapTest, AWallHeardByObliqueTransducersThroughAGapBesideABoxIsTheRoomSide) {
+  // The boxes' faces at x 1.50-1.55 (column 30) with a 0.25 m gap at rows 32-36 (y 1.60-1.85),
+  // unknown beyond: the fit puts the west side on the faces, and no axis within 10 deg of -x got
+  // through. Five transducers 25 deg off -x at y 1.53-1.73 (five cells) heard the west wall
+  // (x 0.55) with the edge ray of their cone, which crosses x = 1.55 at y 1.61-1.81, in the gap.
+  const LogOddsGrid grid = BoxFacesWithGaps({32, 33, 34, 35, 36});
+  const std::vector<double> from{1.53, 1.58, 1.63, 1.68, 1.73};
+  const BeamFreeGrid through = ObliqueBeams(from, 0.55);
+  EXPECT_TRUE(through.face_echoes().empty());
+  EXPECT_NEAR(BuildCognitiveMap(grid, kInside, {}, &through).room.x0, 0.55, 1e-9);
+  // Without the oblique faces (main's map) the side stays on the boxes.
+  const BeamFreeGrid none = ObliqueBeams(from, 0.55, 0.0);
+  EXPECT_NEAR(BuildCognitiveMap(grid, kInside, {}, &none).room.x0, 1.55, kTol);
+  // A side two head-on echoes moved (to a face at x 0.75 heard through the gap) is theirs: the
+  // oblique faces, placed to the cone's edge, move only sides no head-on echo placed.
+  BeamFreeGrid head_on = through;
+  msgs::RangeRing ring;
+  ring.readings.push_back({msgs::Pose2D{0.0, 0.0, 0.0}, 2.0 - 0.75, true});
+  for (int k = 0; k < 2; ++k) head_on.Integrate(ring, {2.0, 1.625, 3.14159265358979323846});
+  EXPECT_NEAR(BuildCognitiveMap(grid, kInside, {}, &head_on).room.x0, 0.75, 1e-9);
+  // Four agreeing faces are fewer than a room side's min_wall_points: no move.
+  const BeamFreeGrid four = ObliqueBeams({1.53, 1.58, 1.63, 1.68}, 0.55);
+  EXPECT_NEAR(BuildCognitiveMap(grid, kInside, {}, &four).room.x0, 1.55, kTol);
+  // Five readings from one transducer cell are one: a robot standing still hears the same echo
+  // every ring, whatever it came from.
+  const BeamFreeGrid still = ObliqueBeams({1.63, 1.63, 1.63, 1.63, 1.63}, 0.55);
+  EXPECT_NEAR(BuildCognitiveMap(grid, kInside, {}, &still).room.x0, 1.55, kTol);
+  // The same readings where the gap is elsewhere (rows 20-22): their edge rays cross x = 1.55 on a
+  // face the grid heard, which would have echoed first; such a reading came from farther on (a
+  // concave corner once that ray was blocked), not from a wall at the placed face.
+  const LogOddsGrid shut = BoxFacesWithGaps({20, 21, 22});
+  EXPECT_NEAR(BuildCognitiveMap(shut, kInside, {}, &through).room.x0, 1.55, kTol);
+  // Rays through a gap at rows 47-50 that would meet the face beyond the room's north side
+  // (y 2.55): no wall of this room.
+  const BeamFreeGrid beyond = ObliqueBeams({2.298, 2.32, 2.37, 2.42, 2.46}, 0.55);
+  const LogOddsGrid gap_north = BoxFacesWithGaps({47, 48, 49, 50});
+  EXPECT_NEAR(BuildCognitiveMap(gap_north, kInside, {}, &beyond).room.x0, 1.55, kTol);
+}
+
 TEST(CognitiveMapTest, ASideTheFreeColumnsMovedOutStaysBeyondThemAndReachesTheWallHeardPastThem) {
   // The boxes' faces at x 1.50-1.55 with a wide gap (rows 12-20, y 0.60-1.05) through which the
   // network saw free space west to x = 0.75; nothing else west of the faces was seen. The fit puts

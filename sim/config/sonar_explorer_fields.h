@@ -37,6 +37,8 @@ void VisitFields(A& a, perception::SonarExplorerOptions& o) {
   a("beam_free_axis_tolerance_rad", o.beam_free.axis_tolerance_rad);
   a("beam_free_stop_short_m", o.beam_free.stop_short_m);
   a("beam_free_max_range_m", o.beam_free.max_range_m);
+  a("beam_free_oblique_face_max_rad", o.beam_free.oblique_face_max_rad);
+  a("beam_free_half_angle_rad", o.beam_free.half_angle_rad);
   a("wall_distance_m", o.wall_distance_m);
   a("perimeter_turn_rad", o.perimeter_turn_rad);
   a("perimeter_max_s", o.perimeter_max_s);
