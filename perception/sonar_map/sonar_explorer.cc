@@ -48,7 +48,13 @@ constexpr double kAlignedRad = 0.2;
 }  // namespace
 
 void SonarExplorerOptions::Validate() const {
-  beam_free.Validate();
+  // The beam-free grid's options are read as beam_free_<field>: its own messages name <field>
+  // alone, which is no key a user can find.
+  try {
+    beam_free.Validate();
+  } catch (const std::invalid_argument& e) {
+    throw std::invalid_argument(std::string("beam_free_") + e.what());
+  }
   if (sonar_model != "net" && sonar_model != "classical")
     throw std::invalid_argument("sonar_model: must be net or classical, got '" + sonar_model + "'");
   if (sonar_model == "net" && weights_file.empty())

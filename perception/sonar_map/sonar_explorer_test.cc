@@ -553,6 +553,20 @@ TEST(SonarExplorerTest, ContactClearanceNotAboveTheRobotRadiusThrowsNamingIt) {
   EXPECT_NO_THROW(MakeExplorer(options));
 }
 
+// The beam-free grid's fields are the experiment's beam_free_* keys: an error named max_range_m
+// pointed the user at another key (the sonar's own range).
+TEST(SonarExplorerTest, BadBeamFreeOptionsThrowNamingTheirExperimentKeys) {
+  SonarExplorerOptions options = ClassicalOptions();
+  options.beam_free.max_range_m = -1.0;
+  ExpectThrowsNaming(options, "beam_free_max_range_m");
+  options = ClassicalOptions();
+  options.beam_free.oblique_face_max_rad = 2.0;
+  ExpectThrowsNaming(options, "beam_free_oblique_face_max_rad");
+  options = ClassicalOptions();
+  options.beam_free.half_angle_rad = std::nan("");
+  ExpectThrowsNaming(options, "beam_free_half_angle_rad");
+}
+
 TEST(SonarExplorerTest, DefaultClassicalOptionsAreValid) {
   EXPECT_NO_THROW(MakeExplorer(ClassicalOptions()));
 }
