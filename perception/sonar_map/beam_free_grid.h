@@ -27,8 +27,10 @@ struct BeamFreeOptions {
   // the sonar's incidence limit, and that ray's echo is the nearest, so the reading is the wall's
   // distance over cos(off - half_angle_rad). 35 deg is the beam's half-angle plus the 20 deg a
   // smooth plywood face still echoes at (the axis-to-normal angle Pioneer users see a wall at).
-  // 0 (or anything up to axis_tolerance_rad): no oblique faces.
-  double oblique_face_max_rad = 0.0;
+  // The default, 30 deg, keeps 5 deg of that incidence margin for the heading's error: from 31-35
+  // deg off, a few degrees of encoder heading turned a corner's echo into a wall's and put a side
+  // 0.8-1.1 m beyond a wall (issue 14 round 39c). 0 (or up to axis_tolerance_rad): none.
+  double oblique_face_max_rad = 30.0 * 3.14159265358979323846 / 180.0;
   // The beam's half-angle (Polaroid 6500: about 15 deg, 30 deg full opening).
   double half_angle_rad = 15.0 * 3.14159265358979323846 / 180.0;
   // @throws std::invalid_argument naming the field.
