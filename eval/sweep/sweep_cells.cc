@@ -127,7 +127,8 @@ std::vector<std::filesystem::path> FilesReadBesidesTheWorld(const sim::Experimen
 
 // The resolved config with the world named by its contents rather than its path: a cell's id is
 // the same wherever the sweep folder (and the worlds generated into it) lies.
-std::string IdentityText(const sim::ExperimentConfig& config) {
+std::string IdentityText(const sim::ExperimentConfig& config,
+                         const std::vector<std::pair<std::filesystem::path, std::string>>& read) {
   std::string text = sim::ExperimentConfigToYaml(config);
   const std::string world_id = "world-content-" + WorldContentHash(config.world_path);
   for (const std::string& path : {config.world_path.string(), config.world}) {
@@ -141,9 +142,7 @@ std::string IdentityText(const sim::ExperimentConfig& config) {
   // weights were retrained into the same file (or a plug-in rebuilt) kept every finished cell's
   // results of the old network beside new cells of the new one, without a word.
   // By content alone: the weights' absolute path (the data root) differs between checkouts.
-  for (const std::filesystem::path& file : FilesReadBesidesTheWorld(config)) {
-    text += "\n-- read-file-content-" + StableHash(sim::ReadTextFile(file));
-  }
+  for (const auto& [file, hash] : read) text += "\n-- read-file-content-" + hash;
   return text;
 }
 
@@ -340,6 +339,14 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
   const bool sets_spawn = SetsSpawn(spec);
   std::vector<SweepCell> cells;
   std::map<std::string, int> ids;
+  // Each file cells read besides their worlds, hashed once: every cell of a sweep reads the same
+  // weights or plug-in (a plug-in is megabytes).
+  std::map<std::filesystem::path, std::string> content_hashes;
+  const auto content_hash = [&](const std::filesystem::path& file) {
+    auto [it, added] = content_hashes.try_emplace(file);
+    if (added) it->second = StableHash(sim::ReadTextFile(file));
+    return it->second;
+  };
   for (const auto& experiment : spec.experiments) {
     for (const SweepWorld& world : world_axis) {
       std::vector<std::string> world_overrides;
@@ -379,8 +386,10 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
                                      e.what());
             }
             cell.seed = config.seed;
-            cell.id = StableHash(IdentityText(config));
-            cell.read_files = FilesReadBesidesTheWorld(config);
+            for (const std::filesystem::path& file : FilesReadBesidesTheWorld(config)) {
+              cell.read_files.emplace_back(file, content_hash(file));
+            }
+            cell.id = StableHash(IdentityText(config, cell.read_files));
             if (const auto first = ids.find(cell.id); first != ids.end()) {
               throw sim::ConfigError(spec.source_file, RepeatedField(spec),
                                      "cell " + std::to_string(cell.index) + " repeats cell " +

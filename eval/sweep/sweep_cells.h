@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "eval/sweep/sweep_spec.h"
@@ -20,9 +21,10 @@ struct SweepCell {
   std::uint64_t seed = 0;
   std::vector<std::string> values;  // one per SweepSpec::axes
   std::vector<std::string> overrides;
-  // Files the run reads besides its world (sonar-net weights, plug-ins), hashed into `id` and
-  // recorded in sweep.json's inputs; not kept in cells.json.
-  std::vector<std::filesystem::path> read_files;
+  // Files the run reads besides its world (sonar-net weights, plug-ins) with their contents'
+  // hashes, in the order the run reads them: part of `id` and of sweep.json's inputs; not kept
+  // in cells.json.
+  std::vector<std::pair<std::filesystem::path, std::string>> read_files;
 };
 
 // A world the sweep runs in, with the family it was drawn from (empty for files).

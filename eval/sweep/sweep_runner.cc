@@ -255,9 +255,7 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
   meta["cells"] = cells.size();
   std::map<std::string, std::string> inputs = InputHashes(spec);
   for (const SweepCell& cell : cells) {
-    for (const fs::path& file : cell.read_files) {
-      if (!inputs.count(file.string())) inputs[file.string()] = StableHash(sim::ReadTextFile(file));
-    }
+    for (const auto& [file, hash] : cell.read_files) inputs.try_emplace(file.string(), hash);
   }
   meta["inputs"] = inputs;
   meta["plywood_build_id"] = sim::ProgramBuildId();
