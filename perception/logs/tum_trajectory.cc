@@ -1,5 +1,6 @@
 #include "perception/logs/tum_trajectory.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -104,6 +105,17 @@ std::vector<TimedPose> ReadTumTrajectory(const std::filesystem::path& path) {
     const double norm = std::sqrt(v[4] * v[4] + v[5] * v[5] + v[6] * v[6] + v[7] * v[7]);
     if (!(std::abs(norm - 1.0) <= 1e-3)) {
       fail("qw", "the quaternion's norm is " + Shortest(norm) + ", expected 1");
+    }
+    // A planar quaternion written w first read as yaw 0 at every heading: heading_error_deg of
+    // the robot's whole turn, exit 0. cos(tilt) = 1 - 2 (qx^2 + qy^2) for a unit quaternion.
+    const double cos_tilt = 1.0 - 2.0 * (v[4] * v[4] + v[5] * v[5]) / (norm * norm);
+    const double tilt_deg = std::acos(std::clamp(cos_tilt, -1.0, 1.0)) * 180.0 / std::numbers::pi;
+    if (tilt_deg > kMaxTumTiltDeg) {
+      fail("qx", "the quaternion tilts the pose " + Shortest(std::round(tilt_deg * 10.0) / 10.0) +
+                     " deg from level (qx " + words[4] + ", qy " + words[5] + "), more than the " +
+                     Shortest(kMaxTumTiltDeg) +
+                     " deg a robot on a level floor can: TUM's order is qx qy "
+                     "qz qw; was it written w first?");
     }
     if (!poses.empty() && !(v[0] > poses.back().time_s)) {
       fail("timestamp", Shortest(v[0]) + " s does not come after line " +

@@ -40,11 +40,18 @@ struct TimedPose {
 // overflow (a TUM x of 1e300 gave ate_rms_m = inf and a 300-digit final error, exit 0).
 inline constexpr double kMaxTrajectoryCoordinateM = 1e9;
 
+// The largest tilt (deg) of a TUM pose, the angle its quaternion turns the z axis away from up.
+// Plywood's floors are level (a tilted one is refused), so a ground robot's pose is level; 45 deg
+// is halfway to the 90 deg at which a heading means nothing. A planar quaternion written w first
+// (qw qx qy qz, a common slip) reads as a tilt of 180 deg less the heading, whose yaw is 0.
+inline constexpr double kMaxTumTiltDeg = 45.0;
+
 // Reads a TUM file into planar poses (tz is ignored; the heading is HeadingOfQuaternion).
 // @throws std::invalid_argument "FILE:LINE: FIELD: what is wrong" (FIELD one of timestamp, tx, ty,
 // tz, qx, qy, qz, qw) for a wrong number of fields, a field that is not a finite number, a tx or
-// ty beyond kMaxTrajectoryCoordinateM, a quaternion whose norm is not 1 within 1e-3, timestamps
-// that do not increase; "FILE: ..." for an unreadable file or one without poses.
+// ty beyond kMaxTrajectoryCoordinateM, a quaternion whose norm is not 1 within 1e-3 or that tilts
+// the pose beyond kMaxTumTiltDeg, timestamps that do not increase; "FILE: ..." for an unreadable
+// file or one without poses.
 std::vector<TimedPose> ReadTumTrajectory(const std::filesystem::path& path);
 
 }  // namespace plywood::perception

@@ -72,6 +72,39 @@ TEST(TumTrajectoryTest, TiltedQuaternionsGiveTheirYaw) {
   EXPECT_NEAR(HeadingOfQuaternion(qx, qy, qz, qw), y, 1e-12);
 }
 
+// s42 thirteenth pass: a planar quaternion written w first (qw qx qy qz) read as yaw 0 at every
+// heading, so a robot that turned 88 deg scored heading_error_deg 88 with exit 0. Its first pose
+// (heading 0: "1 0 0 0") reads as a 180 deg roll, which no robot on a level floor has.
+TEST(TumTrajectoryTest, AQuaternionWrittenWFirstIsRefusedAsATiltedPose) {
+  const std::string w_first = "0 0 0 0 1 0 0 0\n";
+  EXPECT_NE(ReadError("w_first.tum", w_first)
+                .find("w_first.tum:1: qx: the quaternion tilts the pose 180 deg from level (qx 1, "
+                      "qy 0), more than the 45 deg a robot on a level floor can: TUM's order is "
+                      "qx qy qz qw; was it written w first?"),
+            std::string::npos)
+      << ReadError("w_first.tum", w_first);
+  // Heading 60 deg written w first: cos 30, 0, 0, sin 30 reads as a 120 deg roll.
+  EXPECT_NE(ReadError("w_first_60.tum", "0 0 0 0 0.8660254037844387 0 0 0.5\n")
+                .find("w_first_60.tum:1: qx: the quaternion tilts the pose 120 deg from level"),
+            std::string::npos);
+  // A pitch of 46 deg is refused, naming qx (the pair qx, qy tilts); 44 deg still reads, as a
+  // real estimator's few degrees of roll and pitch do.
+  const auto pitched = [](double deg) {
+    const double half = deg * kPi / 360.0;
+    std::ostringstream line;
+    line.precision(17);
+    line << "0 0 0 0 0 " << std::sin(half) << " 0 " << std::cos(half) << "\n";
+    return line.str();
+  };
+  EXPECT_NE(ReadError("pitch46.tum", pitched(46))
+                .find("pitch46.tum:1: qx: the quaternion tilts "
+                      "the pose 46 deg from level"),
+            std::string::npos)
+      << ReadError("pitch46.tum", pitched(46));
+  EXPECT_EQ(ReadError("pitch44.tum", pitched(44)), "");
+  EXPECT_EQ(ReadTumTrajectory(WriteTemp("pitch44.tum", pitched(44))).front().pose.theta_rad, 0.0);
+}
+
 TEST(TumTrajectoryTest, WrittenPosesReadBackExactly) {
   std::ostringstream text;
   text << "# comment\n";
