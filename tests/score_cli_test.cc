@@ -140,6 +140,8 @@ TEST(ScoreCliTest, BadFilesFailWithOneLineNamingFileLineAndField) {
       {"TUM times not increasing", "trajectory", "d.tum", "# c\n" + tum_ok + tum_ok,
        "d.tum:3: timestamp: 0 s does not come after"},
       {"TUM empty", "trajectory", "e.tum", "", "e.tum: empty"},
+      {"TUM written w first (s42)", "trajectory", "w.tum", "0 0 0 0 1 0 0 0\n",
+       "w.tum:1: qx: the quaternion tilts the pose 180 deg from level"},
       {"TUM outside the run", "trajectory", "f.tum", tum_ok + "2 0 0 0 0 0 0 1\n99 0 0 0 0 0 0 1\n",
        "f.tum:3: timestamp: 99 s falls outside the run"},
       {"TUM ends before the run", "trajectory", "g.tum", tum_ok + "1 0 0 0 0 0 0 1\n",
@@ -179,6 +181,8 @@ TEST(ScoreCliTest, BadFilesFailWithOneLineNamingFileLineAndField) {
       {"PGM sample beyond maxval", "grid", "p2.pgm", "P2\n2 2\n9\n0 0\n0 10\n",
        "p2.pgm:5: pixel 3: expected a whole number in 0..9", grid_flags},
       {"not an image", "grid", "q.pgm", "hello", "q.pgm: not a PNG or PGM", grid_flags},
+      {"PGM rows padded (s42)", "grid", "s.pgm", "P5\n3 2\n255\n" + std::string(8, '\x7f'),
+       "s.pgm: pixels: 2 bytes follow the 3 x 2 samples", grid_flags},
       {"image too small for the flags", "grid", "r.pgm", "P2\n2 2\n1\n1 1 1 1\n",
        "r.pgm: size: 2 x 2 px at 0.05 m/px", grid_flags},
   };

@@ -167,6 +167,20 @@ GridImage ReadPgm(const std::string& file, const std::string& bytes) {
     }
     image.brightness[i] = static_cast<double>(sample) / maxval;
   }
+  // Bytes after the samples were ignored: a map tool padding each row to a 4-byte stride, or a
+  // header whose width, height or maxval (1 or 2 bytes a sample) is wrong, gave a sheared or
+  // garbled map, scored with exit 0. Trailing whitespace (a final line break) is harmless.
+  const std::size_t end = start + count * sample_bytes;
+  const std::size_t extra = bytes.find_first_not_of(" \t\r\n", end);
+  if (extra != std::string::npos) {
+    throw sim::ConfigError(
+        file, "pixels",
+        std::to_string(bytes.size() - end) + " bytes follow the " + std::to_string(image.width) +
+            " x " + std::to_string(image.height) + " samples of " + std::to_string(sample_bytes) +
+            (sample_bytes == 1 ? " byte" : " bytes") + " (maxval " + std::to_string(maxval) +
+            "): rows padded to a stride, a wrong width, height or maxval, or a second image? "
+            "Write exactly width x height samples");
+  }
   return image;
 }
 

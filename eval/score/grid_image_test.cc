@@ -93,6 +93,36 @@ TEST(GridImageTest, PgmPlainAndRawWithCommentsAndWideSamples) {
   EXPECT_EQ(image.brightness, (std::vector<double>{32768 / 65535.0, 1.0}));
 }
 
+// s42 thirteenth pass: bytes after a P5 image's samples were ignored. A map tool that pads each
+// row to a 4-byte stride, or writes 16-bit samples under maxval 255, gave a sheared or garbled
+// map, scored with exit 0.
+TEST(GridImageTest, BytesAfterARawPgmsSamplesAreRefused) {
+  const auto write = [](const std::string& name, const std::string& header,
+                        const std::string& data) {
+    std::ofstream(Dir() / name, std::ios::binary) << header << data;
+    return Dir() / name;
+  };
+  // 3 x 2, each row padded with one zero byte to a stride of 4.
+  const fs::path padded =
+      write("padded.pgm", "P5\n3 2\n255\n", std::string("\xff\x00\xff\0\x00\xff\x00\0", 8));
+  EXPECT_NE(ErrorOf(padded).find("padded.pgm: pixels: 2 bytes follow the 3 x 2 samples of 1 byte "
+                                 "(maxval 255): rows padded to a stride"),
+            std::string::npos)
+      << ErrorOf(padded);
+  // 16-bit samples under a maxval that says 8 bits.
+  const fs::path wide = write("wide.pgm", "P5\n2 1\n255\n", std::string("\xff\xff\x00\x00", 4));
+  EXPECT_NE(ErrorOf(wide).find("wide.pgm: pixels: 2 bytes follow the 2 x 1 samples"),
+            std::string::npos)
+      << ErrorOf(wide);
+  // A second image after the first (a netpbm sequence): only one is a map.
+  const fs::path two = write("two.pgm", "P5\n1 1\n255\n\xff", "P5\n1 1\n255\n\x7f");
+  EXPECT_NE(ErrorOf(two).find("two.pgm: pixels: 12 bytes follow"), std::string::npos)
+      << ErrorOf(two);
+  // A final line break (or other whitespace) after the samples still reads.
+  const fs::path newline = write("newline.pgm", "P5\n2 1\n255\n", std::string("\xff\x00\n", 3));
+  EXPECT_EQ(ReadGridImage(newline).brightness, (std::vector<double>{1.0, 0.0}));
+}
+
 TEST(GridImageTest, BrokenImagesAreNamed) {
   const std::vector<std::uint8_t> grey(64 * 64, 200);
   const fs::path good = WritePng("cut.png", PNG_FORMAT_GRAY, 64, 64, grey.data());
