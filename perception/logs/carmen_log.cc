@@ -11,6 +11,7 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <unordered_map>
 
 #include "perception/logs/byte_order_mark.h"
 #include "perception/logs/fixed_decimals.h"
@@ -27,6 +28,13 @@ double ParseNumber(const std::string& token, const char* field) {
     throw std::runtime_error(std::string(field) + ": not a finite number: '" + token + "'");
   }
   return *value;
+}
+
+// A time stamp as CARMEN writes it (%.6f): 1e9-odd seconds since 1970 in full.
+std::string FormatTime(double time_s) {
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.6f", time_s);
+  return text;
 }
 
 std::vector<std::string> Tokens(const std::string& line) {
@@ -234,6 +242,8 @@ CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptio
       throw std::runtime_error(path.string() + ":" + std::to_string(number) + ": " + e.what());
     }
   };
+  // The line of each scan's time stamp, FLASER's and ROBOTLASER1's apart.
+  std::unordered_map<double, std::size_t> scan_lines[2];
   for (; next_line(); ++number) {
     // A UTF-8 byte-order mark (an editor's "UTF-8 with BOM") made the first line an unknown
     // message, skipped without a word: a log's PARAM front_laser_max was lost, its scans scored
@@ -242,6 +252,25 @@ CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptio
     const std::size_t before = log.lasers.size();
     try {
       ParseCarmenLine(line, &log);
+      if (log.lasers.size() > before) {
+        // Some converters write every scan twice, as FLASER and as ROBOTLASER1 at one time stamp:
+        // the replay counted each scan twice (scans, lines, circles and valid_rays doubled).
+        const std::size_t type = line.find_first_not_of(" \t");
+        const bool robot_laser = line.compare(type, 11, "ROBOTLASER1") == 0;
+        const double time_s = log.lasers.back().scan.time_s;
+        const auto other = scan_lines[!robot_laser].find(time_s);
+        if (other != scan_lines[!robot_laser].end()) {
+          log.lasers.pop_back();
+          const std::string kind = robot_laser ? "ROBOTLASER1" : "FLASER";
+          throw std::runtime_error(
+              kind + " ipc_timestamp: " + FormatTime(time_s) + " s is line " +
+              std::to_string(other->second) + "'s " + (robot_laser ? "FLASER" : "ROBOTLASER1") +
+              " scan again: the log records each scan twice, as FLASER and ROBOTLASER1 (a laser "
+              "gives one scan at a time), so the replay would count it twice; keep one kind "
+              "(grep -v '^FLASER' keeps ROBOTLASER1, which carries the beams' angles)");
+        }
+        scan_lines[robot_laser].try_emplace(time_s, number);
+      }
     } catch (const std::exception& e) {
       if (!options.skip_bad) {
         throw std::runtime_error(path.string() + ":" + std::to_string(number) + ": " + e.what());

@@ -9,6 +9,7 @@
 #include <iterator>
 #include <numbers>
 #include <sstream>
+#include <tuple>
 #include <utility>
 
 #include "plywood_paths.h"
@@ -232,6 +233,46 @@ TEST(CarmenLogTest, ASecondDifferentFrontLaserMaxIsRefusedWithItsLine) {
                                 "PARAM front_laser_max 8.000000 host 0\n" + Flaser("1 2 3", 3)));
   ASSERT_EQ(same.lasers.size(), 2u);
   EXPECT_EQ(same.lasers[0].scan.range_max_m, 8.0);
+}
+
+// s42 thirteenth pass: some converters write every scan twice, as FLASER and as ROBOTLASER1 at one
+// time stamp. The replay counted each scan twice: scans, lines, circles and valid_rays doubled.
+TEST(CarmenLogTest, AScanWrittenAsBothFlaserAndRobotLaser1IsRefusedWithItsLine) {
+  // The FLASER scan of Flaser("1 2 3", 3) (-90 deg, pi / 2 apart, at 100.25 s) as ROBOTLASER1.
+  const std::string robot_laser =
+      "ROBOTLASER1 0 -1.5707963267948966 3.1415926535897931 1.5707963267948966 8 0 0 3 1 2 3 0 "
+      "1.0 2.0 0.5 1.1 2.1 0.6 0 0 0 0 0 100.25 host 100.3\n";
+  const std::string later = "FLASER 3 1 2 3 1.0 2.0 0.5 1.1 2.1 0.6 101.25 host 101.3\n";
+  for (const auto& [name, text, line, kind, first] :
+       {std::tuple{"both.log", Flaser("1 2 3", 3) + robot_laser + later, "2", "ROBOTLASER1",
+                   "line 1's FLASER"},
+        std::tuple{"both_rl_first.log", robot_laser + Flaser("1 2 3", 3) + later, "2", "FLASER",
+                   "line 1's ROBOTLASER1"}}) {
+    SCOPED_TRACE(name);
+    const auto path = WriteTemp(name, text);
+    try {
+      ReadCarmenLog(path);
+      ADD_FAILURE() << "no error for a scan given twice";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(
+          std::string(e.what()).find(std::string(name) + ":" + line + ": " + kind +
+                                     " ipc_timestamp: 100.250000 s is " + first + " scan again"),
+          std::string::npos)
+          << e.what();
+    }
+    // --skip-bad passes over the second copy: each scan once.
+    CarmenReadOptions options;
+    options.skip_bad = true;
+    const CarmenLog log = ReadCarmenLog(path, options);
+    EXPECT_EQ(log.lasers.size(), 2u);
+    EXPECT_EQ(log.skipped_lines, 1u);
+  }
+  // Both kinds for different scans are two scans, and one kind at one time twice is left as it
+  // was (the log's content).
+  EXPECT_EQ(ReadCarmenLog(WriteTemp("mixed.log", robot_laser + later)).lasers.size(), 2u);
+  EXPECT_EQ(ReadCarmenLog(WriteTemp("same_kind.log", Flaser("1 2 3", 3) + Flaser("1 2 3", 3)))
+                .lasers.size(),
+            2u);
 }
 
 // audit s35: a UTF-8 byte-order mark before the first line made it an unknown message, skipped
