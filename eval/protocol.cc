@@ -15,15 +15,15 @@ namespace plywood::eval {
 const std::vector<Protocol>& Protocols() {
   static const std::vector<Protocol> protocols{
       {"single", "one run: sensors, estimators, controller and every post-run scorer",
-       SingleRunProtocol, nullptr},
+       SingleRunProtocol, nullptr, nullptr},
       {"seed000_rooms", "seed 000: two back-to-back LMS 200 in each room, every line extractor",
-       Seed000Protocol, CheckSeed000Options},
+       Seed000Protocol, CheckSeed000Options, Seed000OtherWorlds},
       {"seed004_ransac", "seed 004: RANSAC lines on the point cloud of a whole run",
-       Seed004RansacProtocol, CheckSeed004RansacOptions},
+       Seed004RansacProtocol, CheckSeed004RansacOptions, nullptr},
       {"umbmark", "Borenstein & Feng's UMBmark: 5 + 5 squares, calibration, 5 + 5 again",
-       UmbmarkProtocol, CheckUmbmarkOptions},
+       UmbmarkProtocol, CheckUmbmarkOptions, nullptr},
       {"weighted_gain_search", "seed 004: grid search of the weighted fusion's gains",
-       WeightedGainProtocol, CheckWeightedGainOptions},
+       WeightedGainProtocol, CheckWeightedGainOptions, nullptr},
   };
   return protocols;
 }
@@ -41,6 +41,12 @@ const Protocol& FindProtocol(const sim::ExperimentConfig& config) {
 void CheckProtocolOptions(const sim::ExperimentConfig& config) {
   const Protocol& protocol = FindProtocol(config);
   if (protocol.check_options) protocol.check_options(config);
+}
+
+std::vector<std::filesystem::path> ProtocolOtherWorlds(const sim::ExperimentConfig& config) {
+  const Protocol& protocol = FindProtocol(config);
+  return protocol.other_worlds ? protocol.other_worlds(config)
+                               : std::vector<std::filesystem::path>{};
 }
 
 void RequireObservableProtocol(const sim::ExperimentConfig& config, const std::string& what) {

@@ -35,6 +35,10 @@ struct Protocol {
   // a sweep refuses a bad option when it loads rather than in every cell. Null: no options.
   // @throws sim::ConfigError naming the field.
   std::function<void(const sim::ExperimentConfig&)> check_options;
+  // The world files a run of `config` reads besides config.world_path (seed 000's other rooms),
+  // so a sweep hashes them into its cells' ids. Null: none.
+  // @throws sim::ConfigError naming the field, as check_options.
+  std::function<std::vector<std::filesystem::path>(const sim::ExperimentConfig&)> other_worlds;
 };
 
 // Every protocol, "single" first. Each lives in its own eval/<capability>/<name>_protocol.cc.
@@ -46,6 +50,10 @@ const Protocol& FindProtocol(const sim::ExperimentConfig& config);
 // Reads config.protocol's options (Protocol::check_options) without running anything.
 // @throws sim::ConfigError naming `protocol` when unknown, or the bad option.
 void CheckProtocolOptions(const sim::ExperimentConfig& config);
+
+// The world files config.protocol reads besides config.world_path (Protocol::other_worlds).
+// @throws sim::ConfigError naming `protocol` when unknown, or a bad option.
+std::vector<std::filesystem::path> ProtocolOtherWorlds(const sim::ExperimentConfig& config);
 
 // @throws sim::ConfigError naming `protocol` when config.protocol cannot show its run to an
 // observer (`what`, e.g. "the viewer", names who asked).

@@ -586,6 +586,52 @@ TEST(SweepCliTest, AnEditedFileTheWorldIncludesRunsItsCellsAnew) {
       << "the run in the table is of the world before the edit: " << walls_of_tabled_run();
 }
 
+// s42 thirteenth pass: a sweep of a seed000_rooms experiment runs every room of its list when its
+// world is the first room's, but a cell's id hashed only that first world: a resume after a later
+// room's world was edited (a wall moved 0.5 m) kept the finished run of the old room
+// (lines.split_and_merge.sigma_alpha_deg 0.0941 where a fresh run gives 0.0666), without a word.
+// The protocol names the other worlds it reads (Protocol::other_worlds); they are hashed into the
+// id and recorded in sweep.json's inputs, so the cell runs anew.
+TEST(SweepCliTest, AnEditedLaterRoomOfSeed000RoomsRunsItsCellAnew) {
+  const fs::path dir = MakeTempDir("SweepSeed000Rooms");
+  for (const char* room : {"seed000_room_1.xml", "seed000_room_2.xml"}) {
+    fs::copy_file(SourceRoot() / "worlds" / room, dir / room);
+  }
+  const fs::path experiment = WriteFile(
+      dir / "e.yaml",
+      "name: rooms\nprotocol: seed000_rooms\nseed: 1\nduration_s: 1\nworld: seed000_room_1.xml\n"
+      "robot: {model: p3dx}\n"
+      "sensors: {laser: {resolution_deg: 0.5, range_max_m: 8, range_noise_sigma_m: 0.01}}\n"
+      "lines: {extractors: [split_and_merge]}\noutput: {snapshot: false}\n"
+      "seed000_rooms:\n  scans: 2\n  rooms:\n"
+      "    - {world: seed000_room_1.xml, range_cut_m: 4.0, paper_lines: 7}\n"
+      "    - {world: seed000_room_2.xml, range_cut_m: 3.5, paper_lines: 4}\n");
+  const fs::path sweep = WriteFile(dir / "s.yaml", "experiment: e.yaml\nseeds: [1]\n");
+  const fs::path out = dir / "out";
+  const std::string command = "sweep " + sweep.string() + " --out " + out.string() + " --quiet";
+  const auto tabled_metrics = [&] {
+    const auto rows = eval::ParseCsv(Slurp(out / "results.csv"));
+    return rows.size() == 2 ? Slurp(out / "runs" / rows[1][0] / "metrics.json") : "no table";
+  };
+  ASSERT_EQ(RunPlywood(command, dir).exit_code, 0);
+  const std::string first = tabled_metrics();
+
+  const fs::path room_2 = dir / "seed000_room_2.xml";
+  std::string moved = Slurp(room_2);
+  const std::string south = "pos=\"0.509 -1.009 0.5\"";
+  ASSERT_NE(moved.find(south), std::string::npos);
+  moved.replace(moved.find(south), south.size(), "pos=\"0.509 -0.509 0.5\"");
+  WriteFile(room_2, moved);
+  const auto r = RunPlywood(command, dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto fresh =
+      RunPlywood("run " + experiment.string() + " --quiet --out " + (dir / "fresh").string(), dir);
+  ASSERT_EQ(fresh.exit_code, 0) << fresh.err;
+  const std::string expected = Slurp(dir / "fresh" / "metrics.json");
+  ASSERT_NE(expected, first) << "the two rooms give the same figures: the test shows nothing";
+  EXPECT_EQ(tabled_metrics(), expected) << "the table holds the run of the room before the edit";
+}
+
 // audit s41: a cell's id hashed the weights file's path, not its contents, and the sweep's inputs
 // left it out: after `plywood train sonar-net --out` rewrote the weights a sweep named, the resume
 // kept the finished runs of the old network (occupancy.grid_error 0.0045 where a run of the new

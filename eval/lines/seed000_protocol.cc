@@ -53,6 +53,17 @@ void CheckSeed000Options(const sim::ExperimentConfig& config) {
   eval::RoomsToRun(config, eval::ReadSeed000RoomsOptions(config));
 }
 
+std::vector<std::filesystem::path> Seed000OtherWorlds(const sim::ExperimentConfig& config) {
+  std::vector<std::filesystem::path> worlds;
+  for (const eval::Seed000Room& room :
+       eval::RoomsToRun(config, eval::ReadSeed000RoomsOptions(config))) {
+    if (!std::filesystem::equivalent(room.world_path, config.world_path)) {
+      worlds.push_back(room.world_path);
+    }
+  }
+  return worlds;
+}
+
 int Seed000Protocol(const ProtocolContext& context) {
   const sim::ExperimentConfig& config = context.config;
   const eval::Seed000RoomsOptions options = eval::ReadSeed000RoomsOptions(config);

@@ -13,5 +13,8 @@ int Seed000Protocol(const ProtocolContext& context);
 // Reads the `seed000_rooms:` section and picks the rooms as the protocol does.
 // @throws sim::ConfigError.
 void CheckSeed000Options(const sim::ExperimentConfig& config);
+// The rooms' world files the protocol runs besides config.world_path: the later rooms when the
+// experiment's world is the first room's, else none. @throws sim::ConfigError.
+std::vector<std::filesystem::path> Seed000OtherWorlds(const sim::ExperimentConfig& config);
 
 }  // namespace plywood::eval

@@ -111,10 +111,13 @@ std::string CulpritField(const SweepSpec& spec, const SweepCell& cell,
   return "experiment";
 }
 
-// The sonar-net weights and plug-in libraries a run of `config` reads, those that exist (a missing
-// one is refused by the run, naming its field).
+// The sonar-net weights, plug-in libraries and the protocol's other worlds (seed 000's later
+// rooms) a run of `config` reads, those that exist (a missing one is refused by the run, naming
+// its field).
 std::vector<std::filesystem::path> FilesReadBesidesTheWorld(const sim::ExperimentConfig& config) {
-  std::vector<std::filesystem::path> files;
+  // A sweep of seed000_rooms.yaml resumed after a later room's world was edited kept the old
+  // room's results: only the first room, the experiment's world, was in the cell's id.
+  std::vector<std::filesystem::path> files = ProtocolOtherWorlds(config);
   const perception::SonarExplorerOptions& explorer = config.controller.sonar_explorer;
   if (config.controller.type == "sonar_explorer" && explorer.sonar_model == "net") {
     const std::filesystem::path weights = explorer.weights_file;
@@ -279,6 +282,10 @@ std::string WorldContentHash(const std::filesystem::path& world) {
   return StableHash(content);
 }
 
+std::string ReadFileContentHash(const std::filesystem::path& file) {
+  return file.extension() == ".xml" ? WorldContentHash(file) : StableHash(sim::ReadTextFile(file));
+}
+
 std::vector<std::string> ReadProfile(const std::filesystem::path& path) {
   std::vector<std::string> lines;
   for (ProfileLine& line : ReadProfileLines(path)) lines.push_back(std::move(line.text));
@@ -344,7 +351,7 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
   std::map<std::filesystem::path, std::string> content_hashes;
   const auto content_hash = [&](const std::filesystem::path& file) {
     auto [it, added] = content_hashes.try_emplace(file);
-    if (added) it->second = StableHash(sim::ReadTextFile(file));
+    if (added) it->second = ReadFileContentHash(file);
     return it->second;
   };
   for (const auto& experiment : spec.experiments) {

@@ -61,6 +61,11 @@ std::vector<std::string> ReadProfile(const std::filesystem::path& path);
 // names relative to its folder: what a cell's id and sweep.json's inputs take the world to be.
 std::string WorldContentHash(const std::filesystem::path& world);
 
+// The hash a sweep records for a file its cells read besides their world: WorldContentHash for an
+// MJCF world (.xml: seed 000's other rooms), else StableHash of the file's bytes (sonar-net
+// weights, plug-ins).
+std::string ReadFileContentHash(const std::filesystem::path& file);
+
 // FNV-1a, 64 bit, as 16 hex digits: stable across machines and compilers.
 std::string StableHash(const std::string& text);
 

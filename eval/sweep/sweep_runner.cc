@@ -430,11 +430,12 @@ std::optional<std::vector<SweepCell>> ReadSweepManifest(const SweepSpec& spec,
       return std::nullopt;
     }
   }
-  // The files cells read besides their worlds (sonar-net weights, plug-ins), recorded as they
-  // were: a sweep resumed after the weights were retrained in place kept the old network's runs.
+  // The files cells read besides their worlds (sonar-net weights, plug-ins, seed 000's later
+  // rooms), recorded as they were: a sweep resumed after the weights were retrained in place kept
+  // the old network's runs.
   for (const auto& [file, hash] : recorded) {
     if (inputs.count(file)) continue;
-    if (!perception::IsRegularFile(file) || StableHash(sim::ReadTextFile(file)) != hash) {
+    if (!perception::IsRegularFile(file) || ReadFileContentHash(file) != hash) {
       changed(file);
       return std::nullopt;
     }
