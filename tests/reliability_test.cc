@@ -572,6 +572,44 @@ TEST_F(ReliabilityTest, AWorldThatChangesThePhysicsIsRefused) {
   EXPECT_EQ(result.exit_code, 0) << result.err;
 }
 
+// s42 thirteenth pass: a world's <size nconmax="1"/> ran, exit 0: MuJoCo dropped every contact
+// beyond the first with only a warning, the wheels lost the floor and a 10 s waypoint run in the
+// hall gave the encoder ate_rms_m 3.06 m instead of 0.0017 (njmax="2": 0.39 m).
+TEST_F(ReliabilityTest, AWorldThatShrinksMujocosContactListIsRefused) {
+  const fs::path dir = WorldDir();
+  const std::string fixed =
+      "<worldbody><geom name=\"floor\" type=\"plane\" size=\"5 5 0.1\"/>"
+      "<geom name=\"wall\" type=\"box\" pos=\"3 0 0.5\" size=\"0.1 3 0.5\"/>"
+      "<geom name=\"west_wall\" type=\"box\" pos=\"-3 0 0.5\" size=\"0.1 3 0.5\"/></worldbody>";
+  const auto experiment = [&](const std::string& size) {
+    const fs::path world = WriteFile(dir / "size.xml", "<mujoco>" + size + fixed + "</mujoco>\n");
+    std::string yaml = HallExperiment(0.0, 0.0);
+    yaml.replace(yaml.find("worlds/hall.xml"), std::string("worlds/hall.xml").size(),
+                 world.string());
+    return yaml;
+  };
+  for (const auto& [size, message] : std::vector<std::pair<std::string, std::string>>{
+           {"<size nconmax=\"1\"/>",
+            "the world's <size> sets nconmax to 1, below MuJoCo's default 100: MuJoCo drops the "
+            "contacts beyond it"},
+           {"<size njmax=\"2\"/>",
+            "the world's <size> sets njmax to 2, below MuJoCo's default 500: MuJoCo drops the "
+            "constraint rows beyond it"}}) {
+    for (const std::string drive : {"contact", "planar"}) {
+      SCOPED_TRACE(size + " " + drive);
+      ExpectRefused(experiment(size), "--set physics.drive=" + drive,
+                    {"experiment.yaml: world: ", "size.xml: " + message});
+    }
+  }
+  // Room for more contacts changes nothing: it runs.
+  const fs::path run = Dir();
+  const CliResult result = RunPlywood(
+      "run " + WriteFile(run / "experiment.yaml", experiment("<size nconmax=\"1000\"/>")).string() +
+          " --quiet --out " + (run / "out").string(),
+      run);
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+}
+
 // audit s40: a world's <compiler> and <default> settings apply to the robot's file too, which is
 // included after it. A world written with angle="radian" (common in MJCF from elsewhere) read
 // the robot's euler="90 0 0" tires and its sonars' bearings as radians, and a <default> geom

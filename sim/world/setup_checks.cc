@@ -4,8 +4,10 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 #include "msgs/shortest_number.h"
+#include "sim/world/mujoco_handles.h"
 
 namespace plywood::sim {
 namespace {
@@ -141,6 +143,31 @@ std::optional<std::string> NonDefaultPhysicsOptions(const Scene& scene) {
   for (const auto& w : whole) {
     if (w.value == w.fallback) continue;
     return refuse(w.name, std::to_string(w.value), std::to_string(w.fallback));
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> ShrunkContactLists(const Scene& scene) {
+  // MuJoCo's own sizes (2.2.2: 100 contacts, 500 constraint rows), from a model with nothing in it.
+  static const std::pair<int, int> defaults = [] {
+    const MjModelPtr empty = LoadModelFromString("<mujoco/>", "mujoco_defaults.xml");
+    return std::pair{empty->nconmax, empty->njmax};
+  }();
+  const mjModel* m = scene.model();
+  const struct {
+    const char* name;
+    int value;
+    int fallback;
+    const char* what;
+  } sizes[] = {{"nconmax", m->nconmax, defaults.first, "contacts"},
+               {"njmax", m->njmax, defaults.second, "constraint rows"}};
+  for (const auto& size : sizes) {
+    if (size.value >= size.fallback) continue;
+    return "the world's <size> sets " + std::string(size.name) + " to " +
+           std::to_string(size.value) + ", below MuJoCo's default " +
+           std::to_string(size.fallback) + ": MuJoCo drops the " + size.what +
+           " beyond it with only a warning (the wheels lose the floor); every world runs with "
+           "the same physics: remove the world's <size>";
   }
   return std::nullopt;
 }
