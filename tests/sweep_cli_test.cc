@@ -198,6 +198,19 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
             "  sensors.laser.range_noise_sigma_m: [0.03, 0.04]\n"
             "zip: [sensors.laser.sigma_m, sensors.laser.range_noise_sigma_m]\n",
         "set.sensors.laser.range_noise_sigma_m: the same key as set.sensors.laser.sigma_m"}},
+      // s42b: a metric or group listed twice ran: summary.csv held each of the metric's rows
+      // twice, or two seed columns.
+      {"repeated_metric",
+       {"experiment: " + experiment +
+            "\nmetrics: [odometry.encoder.ate_rms_m, odometry.encoder.ate_rms_m]\n",
+        "metrics: 'odometry.encoder.ate_rms_m' is listed twice"}},
+      {"repeated_group",
+       {"experiment: " + experiment + "\ngroup_by: [seed, seed]\n",
+        "group_by: 'seed' is listed twice"}},
+      {"repeated_zip_key",
+       {"experiment: " + experiment +
+            "\nset: {duration_s: [2, 3]}\nzip: [duration_s, duration_s]\n",
+        "zip: 'duration_s' is listed twice"}},
   };
   for (const auto& [name, c] : cases) {
     SCOPED_TRACE(name);
