@@ -887,6 +887,24 @@ TEST(SweepCliTest, WorldPathsThatLookLikeYamlAreRunAsThemselves) {
             "plywood: --out: a Slurm job cannot write to a folder whose path holds a line "
             "break\n");
   EXPECT_FALSE(fs::exists(dir / "b\ntouch pwned"));
+
+  // s42b: sbatch reads a backslash in the task logs' file name as "expand no %a" (every task
+  // would write one log). A space, '#' or '%' is quoted (tests/sweep_slurm_test.sh runs one).
+  r = RunPlywood(
+      "sweep " + files.string() + " --out '" + (dir / "c\\d").string() + "' --slurm --dry-run",
+      dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err,
+            "plywood: --out: a Slurm job cannot write to a folder whose path holds a backslash "
+            "(sbatch reads it as 'expand no %a' in the task logs' name)\n");
+  r = RunPlywood(
+      "sweep " + files.string() + " --out '" + (dir / "e #1 100%").string() + "' --slurm --dry-run",
+      dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(Slurp(dir / "e #1 100%" / "slurm" / "sweep.sbatch")
+                .find("#SBATCH --output=\"" + (dir / "e #1 100%%" / "slurm").string() +
+                      "/task-%a.log\"\n"),
+            std::string::npos);
 }
 
 TEST(SweepCliTest, UnsafeOrUnclearOutputsAreRefused) {
