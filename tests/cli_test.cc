@@ -85,6 +85,18 @@ TEST_F(BadInputTest, UnknownNestedKeyNamesItsPath) {
       {"experiment.yaml", "sensors.sonar.bogus", "unknown key"});
 }
 
+// s42b: a null or empty key was "plywood: experiment.yaml: unknown key (known here: ...)",
+// naming no field; it is named as YAML writes a null, or as "".
+TEST_F(BadInputTest, ANullOrEmptyKeyIsNamed) {
+  ExpectOneLineError(SmallExperiment() + "~: 5\n", "",
+                     {"experiment.yaml: ~: unknown key: a key that is null or empty"});
+  ExpectOneLineError(
+      Replace(SmallExperiment(), "sonar: {rate_hz: 10}", "sonar: {rate_hz: 10, null: 1}"), "",
+      {"experiment.yaml: sensors.sonar.~: unknown key"});
+  ExpectOneLineError(SmallExperiment() + "\"\": 5\n", "",
+                     {"experiment.yaml: \"\": unknown key: a key that is null or empty"});
+}
+
 TEST_F(BadInputTest, WrongType) {
   ExpectOneLineError(Replace(SmallExperiment(), "duration_s: 3", "duration_s: three"), "",
                      {"experiment.yaml", "duration_s", "number"});

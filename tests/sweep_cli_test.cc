@@ -198,6 +198,19 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
             "  sensors.laser.range_noise_sigma_m: [0.03, 0.04]\n"
             "zip: [sensors.laser.sigma_m, sensors.laser.range_noise_sigma_m]\n",
         "set.sensors.laser.range_noise_sigma_m: the same key as set.sensors.laser.sigma_m"}},
+      // s42b: a metric or group listed twice ran: summary.csv held each of the metric's rows
+      // twice, or two seed columns.
+      {"repeated_metric",
+       {"experiment: " + experiment +
+            "\nmetrics: [odometry.encoder.ate_rms_m, odometry.encoder.ate_rms_m]\n",
+        "metrics: 'odometry.encoder.ate_rms_m' is listed twice"}},
+      {"repeated_group",
+       {"experiment: " + experiment + "\ngroup_by: [seed, seed]\n",
+        "group_by: 'seed' is listed twice"}},
+      {"repeated_zip_key",
+       {"experiment: " + experiment +
+            "\nset: {duration_s: [2, 3]}\nzip: [duration_s, duration_s]\n",
+        "zip: 'duration_s' is listed twice"}},
   };
   for (const auto& [name, c] : cases) {
     SCOPED_TRACE(name);
@@ -632,6 +645,41 @@ TEST(SweepCliTest, AnEditedLaterRoomOfSeed000RoomsRunsItsCellAnew) {
   EXPECT_EQ(tabled_metrics(), expected) << "the table holds the run of the room before the edit";
 }
 
+// audit s42b: a generated world in OUT/worlds edited by hand was left out of sweep.json's inputs,
+// so a resume kept the manifest and ran the unfinished cells in the edited file under the
+// generator's label and id (points_per_line 99.67 where the generator's world gives 97.56, exit
+// 0). The generated worlds are now recorded as inputs and a set edited by hand is written anew.
+TEST(SweepCliTest, AGeneratedWorldEditedByHandIsWrittenAnewOnResume) {
+  const fs::path dir = MakeTempDir("SweepEditedGeneratedWorld");
+  const fs::path sweep = WriteFile(
+      dir / "s.yaml", "experiment: " + (SourceRoot() / "experiments/seed000_rooms.yaml").string() +
+                          "\nworlds: {family: room, count: 2, seed: 1}\nseeds: [1]\nset:\n"
+                          "  seed000_rooms.rig_at: [spawn]\n  seed000_rooms.scans: [2]\n"
+                          "  output.snapshot: [false]\n");
+  const fs::path out = dir / "out";
+  const std::string command = "sweep " + sweep.string() + " --out " + out.string() + " --quiet";
+  const auto second_row = [&] {
+    const auto rows = eval::ParseCsv(Slurp(out / "results.csv"));
+    return rows.size() == 3 ? rows[2] : std::vector<std::string>{};
+  };
+  ASSERT_EQ(RunPlywood(command, dir).exit_code, 0);
+  const std::vector<std::string> first = second_row();
+  ASSERT_EQ(first.size() > 2 ? first[2] : "", "worlds/room-seed1/room_s1_00001.xml");
+  const std::string generated = Slurp(out / first[2]);
+
+  // Move a wall of the second world 0.3 m and lose its cell's run, as a kill before it finished.
+  std::string edited = generated;
+  const std::string wall = "pos=\"3.570664 -0.676607 0.5\"";
+  ASSERT_NE(edited.find(wall), std::string::npos);
+  edited.replace(edited.find(wall), wall.size(), "pos=\"3.270664 -0.676607 0.5\"");
+  WriteFile(out / first[2], edited);
+  fs::remove_all(out / "runs" / first[0]);
+  const auto r = RunPlywood(command, dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(Slurp(out / first[2]), generated) << "the edited world was kept";
+  EXPECT_EQ(second_row(), first) << "the unfinished cell ran the edited world";
+}
+
 // audit s41: a cell's id hashed the weights file's path, not its contents, and the sweep's inputs
 // left it out: after `plywood train sonar-net --out` rewrote the weights a sweep named, the resume
 // kept the finished runs of the old network (occupancy.grid_error 0.0045 where a run of the new
@@ -839,6 +887,24 @@ TEST(SweepCliTest, WorldPathsThatLookLikeYamlAreRunAsThemselves) {
             "plywood: --out: a Slurm job cannot write to a folder whose path holds a line "
             "break\n");
   EXPECT_FALSE(fs::exists(dir / "b\ntouch pwned"));
+
+  // s42b: sbatch reads a backslash in the task logs' file name as "expand no %a" (every task
+  // would write one log). A space, '#' or '%' is quoted (tests/sweep_slurm_test.sh runs one).
+  r = RunPlywood(
+      "sweep " + files.string() + " --out '" + (dir / "c\\d").string() + "' --slurm --dry-run",
+      dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err,
+            "plywood: --out: a Slurm job cannot write to a folder whose path holds a backslash "
+            "(sbatch reads it as 'expand no %a' in the task logs' name)\n");
+  r = RunPlywood(
+      "sweep " + files.string() + " --out '" + (dir / "e #1 100%").string() + "' --slurm --dry-run",
+      dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(Slurp(dir / "e #1 100%" / "slurm" / "sweep.sbatch")
+                .find("#SBATCH --output=\"" + (dir / "e #1 100%%" / "slurm").string() +
+                      "/task-%a.log\"\n"),
+            std::string::npos);
 }
 
 TEST(SweepCliTest, UnsafeOrUnclearOutputsAreRefused) {

@@ -111,15 +111,22 @@ wait_for_job() {
 
 "$plywood" sweep "$work/sweep.yaml" --out "$work/local" --quiet
 
-# 1. The job array gives the same bytes as the local sweep.
-out=$("$plywood" sweep "$work/sweep.yaml" --out "$work/cluster" --slurm --max-parallel 2)
+# 1. The job array gives the same bytes as the local sweep. The folder's name holds what sbatch
+# reads specially in an #SBATCH line (a space ends the value, '#' starts a comment, '%' starts a
+# file name pattern): the task logs went to "$work/cluster" (a file), not into the folder (s42b).
+cluster="$work/cluster #1 at 100%a"
+out=$("$plywood" sweep "$work/sweep.yaml" --out "$cluster" --slurm --max-parallel 2)
 echo "$out"
 job=$(echo "$out" | awk '/submitted job/ {print $3}')
 [ -n "$job" ] || { echo "FAIL: no job id"; exit 1; }
 wait_for_job "$job"
-"$plywood" sweep --collect "$work/cluster" --quiet
-cmp "$work/local/results.csv" "$work/cluster/results.csv"
-echo "slurm: job array results byte-identical to the local sweep"
+"$plywood" sweep --collect "$cluster" --quiet
+cmp "$work/local/results.csv" "$cluster/results.csv"
+for task in 0 1 2 3 4 5; do
+  [ -f "$cluster/slurm/task-$task.log" ] || {
+    echo "FAIL: no task log $cluster/slurm/task-$task.log:"; ls -la "$work"; exit 1; }
+done
+echo "slurm: job array results byte-identical to the local sweep, task logs in the sweep folder"
 
 # 2. scancel part-way, submit again: resumes, same bytes, finished runs not redone.
 out=$("$plywood" sweep "$work/sweep.yaml" --out "$work/cancelled" --slurm --max-parallel 1)

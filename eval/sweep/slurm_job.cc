@@ -22,12 +22,33 @@ std::string Quote(const std::string& text) {
   return quoted + "'";
 }
 
+// An #SBATCH line's value as sbatch reads it back: unquoted, a space ends it and '#' starts a
+// comment, and in a file name '%' starts a pattern (%a, %j). `--out 'runs/cluster #1'` sent every
+// task's log to the file runs/cluster, outside the sweep folder. In double quotes a backslash
+// escapes the next character; "%%" is a '%'. `pattern` is appended as it is (task-%a.log).
+std::string SbatchFileName(const std::string& folder, const std::string& pattern) {
+  std::string quoted = "\"";
+  for (char c : folder) {
+    if (c == '"') quoted += '\\';
+    quoted += c;
+    if (c == '%') quoted += '%';
+  }
+  return quoted + "/" + pattern + "\"";
+}
+
 }  // namespace
 
 void RequireSlurmSafeFolder(const fs::path& out_dir) {
   if (fs::absolute(out_dir).string().find_first_of("\n\r") != std::string::npos) {
     throw std::invalid_argument(
         "--out: a Slurm job cannot write to a folder whose path holds a line break");
+  }
+  // sbatch takes a backslash in a file name for "expand no %a", and the task logs would share
+  // one file.
+  if (fs::absolute(out_dir).string().find('\\') != std::string::npos) {
+    throw std::invalid_argument(
+        "--out: a Slurm job cannot write to a folder whose path holds a backslash (sbatch reads it "
+        "as 'expand no %a' in the task logs' name)");
   }
 }
 
@@ -46,7 +67,7 @@ SlurmJob WriteSlurmJob(const fs::path& plywood, const fs::path& sweep_file, cons
   text += "#SBATCH --job-name=plywood-sweep\n";
   text += "#SBATCH --array=" + array + "\n";
   text += "#SBATCH --cpus-per-task=1\n";
-  text += "#SBATCH --output=" + (dir / "task-%a.log").string() + "\n";
+  text += "#SBATCH --output=" + SbatchFileName(dir.string(), "task-%a.log") + "\n";
   if (!options.partition.empty()) text += "#SBATCH --partition=" + options.partition + "\n";
   text += "# Task I of " + std::to_string(job.tasks) +
           " runs the cells whose index % N == I; re-submitting after scancel resumes.\n";

@@ -62,7 +62,7 @@ int Collect(const fs::path& out_dir, bool quiet) {
 std::vector<SweepCell> Cells(const SweepSpec& spec, const SweepLayout& layout, bool quiet) {
   if (auto cells = ReadSweepManifest(spec, layout, quiet)) return *cells;
   CheckSweepOverrides(spec);  // before generating worlds: bad input leaves nothing behind
-  const std::vector<SweepWorld> worlds = PrepareSweepWorlds(spec, layout.out);
+  const std::vector<SweepWorld> worlds = PrepareSweepWorlds(spec, layout.out, quiet);
   std::vector<SweepCell> cells = ExpandCells(spec, worlds);
   WriteSweepManifest(spec, cells, layout);
   return cells;

@@ -256,6 +256,11 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
   std::map<std::string, std::string> inputs = InputHashes(spec);
   for (const SweepCell& cell : cells) {
     for (const auto& [file, hash] : cell.read_files) inputs.try_emplace(file.string(), hash);
+    // A generated world edited by hand in OUT/worlds was run by the unfinished cells under the
+    // generator's label on resume. Recorded relative to OUT, as cells name it, so the folder moves.
+    if (!cell.family.empty()) {
+      inputs.try_emplace(cell.world, ReadFileContentHash(layout.out / cell.world));
+    }
   }
   meta["inputs"] = inputs;
   meta["plywood_build_id"] = sim::ProgramBuildId();
@@ -435,8 +440,9 @@ std::optional<std::vector<SweepCell>> ReadSweepManifest(const SweepSpec& spec,
   // the old network's runs.
   for (const auto& [file, hash] : recorded) {
     if (inputs.count(file)) continue;
-    if (!perception::IsRegularFile(file) || ReadFileContentHash(file) != hash) {
-      changed(file);
+    const fs::path path = fs::path(file).is_relative() ? layout.out / file : fs::path(file);
+    if (!perception::IsRegularFile(path) || ReadFileContentHash(path) != hash) {
+      changed(path.string());
       return std::nullopt;
     }
   }

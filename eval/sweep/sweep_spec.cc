@@ -231,6 +231,11 @@ std::vector<std::string> ReadNames(const YAML::Node& node, const sim::YamlFields
   std::vector<std::string> names;
   for (const auto& item : node) {
     if (!item.IsScalar()) top.Fail(field, "expected a list of names");
+    // metrics: [m, m] wrote every summary.csv row of m twice, group_by: [seed, seed] two seed
+    // columns: one table counted twice by whatever reads it.
+    if (std::find(names.begin(), names.end(), item.Scalar()) != names.end()) {
+      top.Fail(field, "'" + item.Scalar() + "' is listed twice: give each once");
+    }
     names.push_back(item.Scalar());
   }
   return names;

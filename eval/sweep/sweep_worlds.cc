@@ -2,10 +2,13 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <stdexcept>
 
 #include "sim/config/config_error.h"
+#include "sim/runner/text_file.h"
 #include "sim/world/generator/world_families.h"
 #include "sim/world/generator/world_generator.h"
 
@@ -21,11 +24,28 @@ int IndexRows(const fs::path& index) {
   return rows;
 }
 
+// The first file of `fresh` whose bytes `kept` does not hold under the same name, or "".
+std::string FirstDifferentFile(const fs::path& fresh, const fs::path& kept) {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(fresh)) files.push_back(entry.path().filename());
+  std::sort(files.begin(), files.end());
+  for (const fs::path& file : files) {
+    if (!fs::is_regular_file(kept / file) ||
+        sim::ReadTextFile(kept / file) != sim::ReadTextFile(fresh / file)) {
+      return (kept / file).string();
+    }
+  }
+  return "";
+}
+
 // The generator's worlds of one family, written once under OUT/worlds/FAMILY-seedS (into a
 // temporary folder renamed at the end, so a killed sweep never leaves half a set). World i does not
-// depend on the count, so a larger count only adds worlds.
+// depend on the count, so a larger count only adds worlds. A set already there is made again and
+// compared whenever the sweep is expanded: one edited by hand (a resume notices it through
+// sweep.json's inputs) is written anew, or its unfinished cells ran the edit under the
+// generator's label.
 std::vector<SweepWorld> Generated(const SweepSpec& spec, const GeneratedWorlds& generated,
-                                  const fs::path& out_dir) {
+                                  const fs::path& out_dir, bool quiet) {
   try {
     sim::worldgen::FindWorldFamily(generated.family);
   } catch (const std::invalid_argument& e) {
@@ -34,12 +54,13 @@ std::vector<SweepWorld> Generated(const SweepSpec& spec, const GeneratedWorlds& 
   }
   const fs::path dir =
       out_dir / "worlds" / (generated.family + "-seed" + std::to_string(generated.seed));
-  if (IndexRows(dir / "index.csv") < generated.count) {
+  {
+    const int kept_rows = IndexRows(dir / "index.csv");
     const fs::path partial = dir.string() + ".partial-" + std::to_string(getpid());
     fs::remove_all(partial);
     sim::worldgen::GenerateWorldsOptions options;
     options.family = generated.family;
-    options.count = generated.count;
+    options.count = std::max(generated.count, kept_rows);
     options.seed = generated.seed;
     options.out_dir = partial;
     try {
@@ -47,9 +68,20 @@ std::vector<SweepWorld> Generated(const SweepSpec& spec, const GeneratedWorlds& 
     } catch (const std::invalid_argument& e) {
       throw sim::ConfigError(spec.source_file, "worlds", e.what());
     }
-    fs::remove_all(dir);
-    fs::create_directories(dir.parent_path());
-    fs::rename(partial, dir);
+    const std::string edited = kept_rows < generated.count ? "" : FirstDifferentFile(partial, dir);
+    if (kept_rows >= generated.count && edited.empty()) {
+      fs::remove_all(partial);
+    } else {
+      if (!edited.empty() && !quiet) {
+        std::fprintf(stderr,
+                     "plywood sweep: %s is not what the generator writes (edited by hand?): "
+                     "writing %s again\n",
+                     edited.c_str(), dir.c_str());
+      }
+      fs::remove_all(dir);
+      fs::create_directories(dir.parent_path());
+      fs::rename(partial, dir);
+    }
   }
   // index.csv lists the worlds in index order; its first column is the MJCF file's name.
   std::vector<SweepWorld> worlds;
@@ -70,11 +102,12 @@ std::vector<SweepWorld> Generated(const SweepSpec& spec, const GeneratedWorlds& 
 
 }  // namespace
 
-std::vector<SweepWorld> PrepareSweepWorlds(const SweepSpec& spec, const fs::path& out_dir) {
+std::vector<SweepWorld> PrepareSweepWorlds(const SweepSpec& spec, const fs::path& out_dir,
+                                           bool quiet) {
   std::vector<SweepWorld> worlds;
   for (const auto& path : spec.world_files) worlds.push_back({path, "", ""});
   for (const auto& generated : spec.generated) {
-    for (SweepWorld& w : Generated(spec, generated, out_dir)) worlds.push_back(std::move(w));
+    for (SweepWorld& w : Generated(spec, generated, out_dir, quiet)) worlds.push_back(std::move(w));
   }
   return worlds;
 }

@@ -184,8 +184,18 @@ TEST(CarmenLogTest, MalformedRobotLaser1LinesNameTheLine) {
       {with(4, "-0.5"), "ROBOTLASER1 angular_resolution: must be > 0"},
       {with(4, "4"), "ROBOTLASER1 angular_resolution: must be > 0"},
       {with(2, "1e300"), "ROBOTLASER1 start_angle: must be in [-2 pi, 2 pi] rad, got 1e300"},
+      // s42b: a fov the resolution does not span (a log thinned to every second beam that kept
+      // its resolution: the beams were read into half the fan, without a word).
+      {with(3, "2"),
+       "ROBOTLASER1 field_of_view: 2 rad, but 3 beams at angular_resolution 0.5 rad span 1 rad "
+       "(1.5 counting n steps): the beams' angles are unknown"},
+      {with(4, "0.25"), "ROBOTLASER1 field_of_view: 1 rad, but 3 beams at angular_resolution 0.25"},
+      {with(3, "0.5"), "ROBOTLASER1 field_of_view: 0.5 rad"},
   };
   EXPECT_EQ(ReadCarmenLog(WriteTemp("robotlaser_ok.log", good + good)).lasers.size(), 2u);
+  // A fov of n steps (some writers count so) or rounded to a few decimals still reads.
+  EXPECT_EQ(ReadCarmenLog(WriteTemp("fov_n.log", with(3, "1.5") + with(3, "1.0004"))).lasers.size(),
+            2u);
   for (const auto& [bad, message] : cases) {
     try {
       ReadCarmenLog(WriteTemp("bad.log", good + bad + good));

@@ -174,7 +174,13 @@ void YamlFields::Finish() const {
     if (used_.count(key)) continue;
     std::string known;
     for (const std::string& k : known_) known += (known.empty() ? "" : ", ") + k;
-    Fail(key, "unknown key" + (known.empty() ? std::string() : " (known here: " + known + ")"));
+    known = known.empty() ? std::string() : " (known here: " + known + ")";
+    // `~: 5` (or `null:`, `"":`) was "plywood: e.yaml: unknown key", naming no field.
+    if (key.empty() || entry.first.IsNull()) {
+      Fail(entry.first.IsNull() ? "~" : "\"\"",
+           "unknown key: a key that is null or empty names no setting" + known);
+    }
+    Fail(key, "unknown key" + known);
   }
 }
 
