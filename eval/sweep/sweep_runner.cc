@@ -258,8 +258,9 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
     for (const auto& [file, hash] : cell.read_files) inputs.try_emplace(file.string(), hash);
     // A generated world edited by hand in OUT/worlds was run by the unfinished cells under the
     // generator's label on resume. Recorded relative to OUT, as cells name it, so the folder moves.
-    if (!cell.family.empty()) {
-      inputs.try_emplace(cell.world, ReadFileContentHash(layout.out / cell.world));
+    // Hashed once per world, not once per cell that runs it.
+    if (!cell.family.empty() && !inputs.contains(cell.world)) {
+      inputs.emplace(cell.world, ReadFileContentHash(layout.out / cell.world));
     }
   }
   meta["inputs"] = inputs;

@@ -68,8 +68,9 @@ std::vector<SweepWorld> Generated(const SweepSpec& spec, const GeneratedWorlds& 
     } catch (const std::invalid_argument& e) {
       throw sim::ConfigError(spec.source_file, "worlds", e.what());
     }
-    const std::string edited = kept_rows < generated.count ? "" : FirstDifferentFile(partial, dir);
-    if (kept_rows >= generated.count && edited.empty()) {
+    const bool complete = kept_rows >= generated.count;
+    const std::string edited = complete ? FirstDifferentFile(partial, dir) : "";
+    if (complete && edited.empty()) {
       fs::remove_all(partial);
     } else {
       if (!edited.empty() && !quiet) {
