@@ -64,9 +64,9 @@ std::optional<std::string> GeomTheGroundTruthCannotHold(const Scene& scene, doub
       what = std::string(type == mjGEOM_BOX ? "a box" : "a cylinder") + " tilted " +
              msgs::ShortestNumber(std::round(tilt_deg * 100.0) / 100.0) + " deg from upright";
     } else {
-      const char* names[] = {"plane",     "height field", "sphere", "capsule",
-                             "ellipsoid", "cylinder",     "box",    "mesh"};
-      what = std::string("a ") + (type >= 0 && type < 8 ? names[type] : "shape");
+      const char* names[] = {"a plane",      "a height field", "a sphere", "a capsule",
+                             "an ellipsoid", "a cylinder",     "a box",    "a mesh"};
+      what = type >= 0 && type < 8 ? names[type] : "a shape";
     }
     return "its " + GeomName(m, g) + " is " + what + " within reach of z = " + Mm(height_m) +
            " m, where this run is scored: the 2-D ground truth (walls.csv, the line and occupancy "
