@@ -128,6 +128,14 @@ TEST(CliHelpTest, UsageErrorsAreOneLineNamingTheCulpritWithExitCode2) {
   const fs::path sweep = SourceRoot() / "experiments" / "sweeps" / "minimal.yaml";
   const fs::path folder_mp4 = dir / "folder.mp4";
   fs::create_directories(folder_mp4);
+  // A room whose origin (the bench's robot stands there: the world has no spawn_0) holds a crate.
+  std::string crate_room = Slurp(SourceRoot() / "worlds" / "seed000_room_1.xml");
+  crate_room.replace(crate_room.find("<!-- walls -->"), std::string("<!-- walls -->").size(),
+                     "<geom name=\"crate\" type=\"box\" pos=\"0 0 0.5\" size=\"0.3 0.3 0.5\"/>");
+  crate_room.erase(
+      crate_room.find("<custom>"),
+      crate_room.find("</custom>") + std::string("</custom>").size() - crate_room.find("<custom>"));
+  const fs::path crate_world = WriteFile(dir / "crate_room.xml", crate_room);
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"fly", "fly"},
       {"--colour", "--colour"},
@@ -187,6 +195,13 @@ TEST(CliHelpTest, UsageErrorsAreOneLineNamingTheCulpritWithExitCode2) {
        "sweep: --bench runs the whole sweep here, twice; it does not go with --slurm or --shard"},
       {"bench --world " + dir.string(),
        "bench: world: not a regular file (a folder or a device?): " + dir.string()},
+      // s43: the bench has no spawn to give, yet its robot's spawn in a crate was refused as
+      // "bench: robot.spawn: ...; choose a free spawn".
+      {"bench --seconds 0.1 --repeats 1 --world " + crate_world.string(),
+       "bench: --world: " + crate_world.string() +
+           ": the bench's robot stands at the world's spawn_0 (the origin without one): the robot "
+           "at (0, 0) overlaps geom 'crate' of the world by 128 mm (its geom 'chassis'); give the "
+           "world a free spawn_0"},
       // s38: an empty name in a partition list passed the dry run (sbatch refuses it only when
       // submitted); --partition '' without --slurm was ignored.
       {"sweep " + sweep.string() + " --out " + (dir / "sweep").string() +
@@ -208,6 +223,26 @@ TEST(CliHelpTest, UsageErrorsAreOneLineNamingTheCulpritWithExitCode2) {
   }
   EXPECT_FALSE(fs::exists(dir / "sweep" / "slurm" / "sweep.sbatch"));
   EXPECT_FALSE(fs::exists(dir / "v.mp4"));
+}
+
+// s43: with --min-wall 0 each repetition ran no run at all: every world's line read "0 x real
+// time, 0.0 s simulated in 0.000 s wall, 0 steps, 0 geoms", the rays per wall second "-nan", exit
+// 0. A repetition is at least one run; --seconds 0.1 at the 0.01 s step is 10 steps.
+TEST(CliHelpTest, ABenchWithoutAWallTimeFloorStillRunsEachWorldOnce) {
+  const fs::path dir = MakeTempDir("cli_bench_min_wall");
+  const CliResult r = RunPlywood("bench --seconds 0.1 --repeats 1 --min-wall 0 --world " +
+                                     (SourceRoot() / "worlds" / "hall.xml").string(),
+                                 dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // The itemised world's line: "hall.xml: N x real time, 0.1 s simulated in W s wall, 10 steps, G
+  // geoms".
+  const std::size_t start = r.out.find("hall.xml: ");
+  ASSERT_NE(start, std::string::npos) << r.out;
+  const std::string itemised = r.out.substr(start, r.out.find('\n', start) - start);
+  EXPECT_NE(itemised.find(", 0.1 s simulated in "), std::string::npos) << itemised;
+  EXPECT_NE(itemised.find(" s wall, 10 steps, "), std::string::npos) << itemised;
+  EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find(" 0 geoms"), std::string::npos) << r.out;
 }
 
 // A short run of a small room, written to `out`.

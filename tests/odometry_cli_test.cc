@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <yaml-cpp/yaml.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -69,6 +70,29 @@ TEST(OdometryCliTest, GyroEstimatorWithoutGyro) {
 TEST(OdometryCliTest, BadIntegration) {
   ExpectOneLineError("BadIntegration", kExperiment, "--set odometry.encoder.integration=euler",
                      {"experiment.yaml", "odometry.encoder.integration", "midpoint or arc"});
+}
+
+// audit s43: scripts/profile_args, the way a noise profile reaches `plywood run`, passed a CRLF
+// line's CR on into the value ("slip_sigma: expected a finite number, got '0.003 '", the CR shown
+// as a space) and a ' # comment' after a value as the arguments '#' and its words ("--set #:
+// expected key.path=value"); the sweep reads such a profile. Now it reads the lines as the sweep
+// does, and takes a profile file by its path too.
+TEST(OdometryCliTest, AProfileWithCrlfLinesAndCommentsReachesTheRunAsTheSweepReadsIt) {
+  const fs::path dir = testing::MakeTempDir("ProfileArgs");
+  const fs::path experiment = testing::WriteFile(dir / "experiment.yaml", kExperiment);
+  const fs::path profile = testing::WriteFile(
+      dir / "worn.set",
+      "\xEF\xBB\xBF# a worn drive\r\nsensors.encoders.slip_sigma=0.003 # worn tyres\r\n\r\n"
+      "odometry.encoder.gain=1.01  \r\n");
+  const fs::path script = testing::SourceRoot() / "scripts" / "profile_args";
+  const testing::CliResult result = testing::RunPlywood(
+      "run " + experiment.string() + " --quiet --out " + (dir / "out").string() + " $(" +
+          script.string() + " " + profile.string() + ")",
+      dir);
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const YAML::Node config = YAML::LoadFile((dir / "out" / "config.yaml").string());
+  EXPECT_EQ(config["sensors"]["encoders"]["slip_sigma"].as<double>(), 0.003);
+  EXPECT_EQ(config["odometry"]["encoder"]["gain"].as<double>(), 1.01);
 }
 
 }  // namespace

@@ -21,6 +21,9 @@ sim::RunRecord ScanFrom(const sim::ExperimentConfig& base, const Eigen::Vector2d
   config.sensors = sim::SensorSuiteConfig{};
   config.sensors.laser = base.sensors.laser;
   config.output.snapshot = false;
+  // The rig's scans are scored against the ground truth: the runner's checks of a scored run apply
+  // (a world geom the truth cannot hold is refused) whether or not the experiment lists `lines:`.
+  config.lines.given = true;
   // Just long enough for `scans` scans at the laser's rate (one at t = 0).
   config.duration_s = (static_cast<double>(scans) - 0.5) / base.sensors.laser->rate_hz;
   const auto spawn = [&](const Eigen::Vector2d& site_R) {

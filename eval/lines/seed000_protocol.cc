@@ -114,7 +114,8 @@ int Seed000Protocol(const ProtocolContext& context) {
       metrics.Set(key + "." + s.name + ".reduction", reduction);
       metrics.Set(key + "." + s.name + ".recall", s.score.Recall());
       metrics.Set(key + "." + s.name + ".precision", s.score.Precision());
-      csv += stem + "," + sim::FormatNumber(room.range_cut_m) + "," +
+      // Quoted as in lines.csv: a world named 'a,b.xml' shifted every column of its rows (s43).
+      csv += CsvField(stem) + "," + sim::FormatNumber(room.range_cut_m) + "," +
              sim::FormatNumber(result.WallsVisible()) + "," + std::to_string(room.paper_lines) +
              "," + s.name + "," + sim::FormatNumber(lines_per_scan) + "," +
              sim::FormatNumber(result.PointsPerScan()) + "," + sim::FormatNumber(reduction) + "," +

@@ -7,6 +7,7 @@
 #include "sim/config/config_error.h"
 #include "sim/config/robot_catalog.h"
 #include "sim/config/yaml_fields.h"
+#include "sim/runner/spawn_refused.h"
 
 namespace plywood::eval {
 namespace {
@@ -76,6 +77,7 @@ std::vector<Seed000Room> RoomsToRun(const sim::ExperimentConfig& config,
   if (options.rig_at == "spawn") {
     user.rig_W = {config.spawn.x_m, config.spawn.y_m};
     user.rig_theta_deg = config.spawn.theta_deg;
+    user.rig_at_spawn = true;
   }
   return {user};
 }
@@ -122,8 +124,19 @@ Seed000RoomResult RunSeed000Room(const sim::ExperimentConfig& config, const Seed
   room_config.world_path = room.world_path;
   Seed000RoomResult result;
   result.room = room;
-  result.rig = TakeBackToBackScans(room_config, room.rig_W,
-                                   room.rig_theta_deg * std::numbers::pi / 180.0, scans);
+  try {
+    result.rig = TakeBackToBackScans(room_config, room.rig_W,
+                                     room.rig_theta_deg * std::numbers::pi / 180.0, scans);
+  } catch (const sim::SpawnRefused& e) {
+    // At the origin the rig ignores robot.spawn, so the runner's "robot.spawn: ...; choose a free
+    // spawn" named a key whose change would not help (s43): name rig_at, which would.
+    if (room.rig_at_spawn) throw;
+    throw sim::ConfigError(
+        config.source_file, "seed000_rooms.rig_at",
+        "origin: the rig does not fit at the origin of " + room.world_path.filename().string() +
+            ": " + e.problem() +
+            "; set seed000_rooms.rig_at: spawn with a robot.spawn where it fits");
+  }
   if (median_of_scans) {
     MedianOfScans(&result.rig.front);
     MedianOfScans(&result.rig.back);

@@ -21,6 +21,8 @@ struct Seed000Room {
   // Where the rig stands, facing +x rotated by rig_theta_deg (the paper: each room's origin).
   Eigen::Vector2d rig_W = Eigen::Vector2d::Zero();
   double rig_theta_deg = 0.0;
+  // True when rig_W is the experiment's robot.spawn (rig_at: spawn), false at the origin.
+  bool rig_at_spawn = false;
 };
 
 // The `seed000_rooms:` section of `protocol: seed000_rooms`:

@@ -8,6 +8,8 @@
 #include "eval/score/run_world_check.h"
 #include "sim/config/config_error.h"
 #include "sim/runner/experiment_runner.h"
+#include "sim/world/occupancy_raster.h"
+#include "sim/world/setup_checks.h"
 
 namespace plywood::eval {
 namespace {
@@ -87,6 +89,13 @@ std::unique_ptr<OccupancyTruth> LoadRunOccupancyTruth(const std::filesystem::pat
       ReadWallsCsv(
           RunFile(run_dir, "walls.csv", "the run's walls, to check its world is unchanged")),
       run_dir / "config.yaml", "the grid would be scored against another world");
+  // The occupancy truth leaves out what it cannot describe (a tilted box, a sphere): a grid that
+  // maps it would be scored wrong for it.
+  if (const auto problem = sim::GeomTheGroundTruthCannotHold(
+          runner.scene(), sim::OccupancyRasterOptions{}.height_m)) {
+    throw sim::ConfigError((run_dir / "config.yaml").string(), "world",
+                           config.world_path.string() + ": " + *problem);
+  }
   return MakeOccupancyTruth(runner.scene().model(), {config.spawn.x_m, config.spawn.y_m},
                             (run_dir / "config.yaml").string());
 }

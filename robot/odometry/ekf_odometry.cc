@@ -50,6 +50,10 @@ constexpr double kBrakingMS2 = 0.5;
 void EkfOdometryOptions::Validate() const {
   increments.Validate();
   RequirePositive("gyro_noise_rad_s", gyro_noise_rad_s);
+  if (gyro_noise_rad_s > 35.0) {  // the bound of sensors.gyro; see the loop below
+    throw std::invalid_argument("gyro_noise_rad_s: must be in (0, 35] rad/s, got " +
+                                msgs::ShortestNumber(gyro_noise_rad_s));
+  }
   if (!std::isfinite(gyro_gain) || gyro_gain < 0.5 || gyro_gain > 2.0) {
     throw std::invalid_argument("gyro_gain: must be in [0.5, 2], got " +
                                 msgs::ShortestNumber(gyro_gain));
@@ -72,11 +76,19 @@ void EkfOdometryOptions::Validate() const {
   RequireNonNegative("stop_displacement_sigma_m", stop_displacement_sigma_m);
   RequireNonNegative("braking_window_s", braking_window_s);
   RequireNonNegative("wheel_speed_change_sigma_s", wheel_speed_change_sigma_s);
-  // Either at 1e300 made the filter's covariance inf and every odometry.ekf figure null, exit 0
-  // (fuzz30). The bounds are 10x the largest stop displacement and a 10 s lead of the wheels.
+  // Any of these at 1e300 (squared past the largest double) made the filter's covariance inf and
+  // every odometry.ekf figure null, exit 0 (fuzz30; the gyro and slip ones at s43). The bounds:
+  // 10x the largest stop displacement, a 10 s lead of the wheels, the widest gyro (35 rad/s, the
+  // bound of sensors.gyro), a scale or turn error of 100 % and the encoders' largest slip_sigma.
   for (const auto& [field, value, limit, unit] :
        {std::tuple{"stop_displacement_sigma_m", stop_displacement_sigma_m, 1.0, " m"},
-        std::tuple{"wheel_speed_change_sigma_s", wheel_speed_change_sigma_s, 10.0, " s"}}) {
+        std::tuple{"wheel_speed_change_sigma_s", wheel_speed_change_sigma_s, 10.0, " s"},
+        std::tuple{"gyro_bias_sigma_rad_s", gyro_bias_sigma_rad_s, 35.0, " rad/s"},
+        std::tuple{"gyro_bias_random_walk_rad_s_per_sqrt_s", gyro_bias_random_walk_rad_s_per_sqrt_s,
+                   35.0, " rad/s per sqrt(s)"},
+        std::tuple{"gyro_scale_sigma", gyro_scale_sigma, 1.0, ""},
+        std::tuple{"encoder_turn_sigma", encoder_turn_sigma, 1.0, ""},
+        std::tuple{"wheel_slip_sigma", wheel_slip_sigma, 0.5, ""}}) {
     if (value > limit) {
       throw std::invalid_argument(std::string(field) + ": must be in [0, " +
                                   msgs::ShortestNumber(limit) + "]" + unit + ", got " +

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/shortest_number.h"
+
 namespace plywood::robot::internal {
 
 // A heading gain (seed 004's factor c): finite and within a factor of two of 1, since anything
@@ -11,7 +13,7 @@ namespace plywood::robot::internal {
 inline void RequireGain(const std::string& field, double value) {
   if (!std::isfinite(value) || value < 0.5 || value > 2.0) {
     throw std::invalid_argument(field + ": must be a finite number in [0.5, 2], got " +
-                                std::to_string(value));
+                                msgs::ShortestNumber(value));
   }
 }
 

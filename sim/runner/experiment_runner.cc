@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "msgs/shortest_number.h"
 #include "robot/control/controller.h"
@@ -17,7 +18,9 @@
 #include "sim/config/odometry_config.h"
 #include "sim/config/robot_catalog.h"
 #include "sim/raycast/grid_ray_caster_2d.h"
+#include "sim/runner/spawn_refused.h"
 #include "sim/sensors/sensor_schedule.h"
+#include "sim/world/occupancy_raster.h"
 #include "sim/world/physical_deviation.h"
 #include "sim/world/setup_checks.h"
 
@@ -179,8 +182,7 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
   }
   for (const auto& check : {SpawnOutsideWorld, SpawnCollision}) {
     if (const auto problem = check(*scene_)) {
-      throw ConfigError(config.source_file, "robot.spawn",
-                        *problem + " in " + config.world_path.filename().string());
+      throw SpawnRefused(config.source_file, *problem, config.world_path.filename().string());
     }
   }
   RequireControllerSensors(config);
@@ -270,6 +272,20 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
         scene_->SitePoseInWorld(p.ir_scanner->sensor.site_id()).translation().z();
   }
   record_.walls = ExtractGroundTruthWalls(scene_->model(), truth_options);
+  // The slices a run is scored in against the 2-D ground truth: its line scores' and geometric
+  // map's at the scanner's height, the sonar explorer's occupancy truth at the raster's.
+  std::vector<double> scored_heights_m;
+  if ((config.lines.given || config.geometric_map.given) && truth_options.height_m) {
+    scored_heights_m.push_back(*truth_options.height_m);
+  }
+  if (config.controller.type == "sonar_explorer") {
+    scored_heights_m.push_back(OccupancyRasterOptions{}.height_m);
+  }
+  for (const double height_m : scored_heights_m) {
+    if (const auto problem = GeomTheGroundTruthCannotHold(*scene_, height_m)) {
+      throw ConfigError(config.source_file, "world", config.world_path.string() + ": " + *problem);
+    }
+  }
   p.segments_of_geom.resize(scene_->model()->ngeom);
   p.labels_stamp.assign(scene_->model()->ngeom, 0u);
   for (std::size_t i = 0; i < record_.walls.segments.size(); ++i) {

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "msgs/shortest_number.h"
+#include "sim/world/ground_truth_walls.h"
 #include "sim/world/mujoco_handles.h"
 
 namespace plywood::sim {
@@ -46,6 +47,34 @@ std::string At(const msgs::Pose2D& pose) {
 }
 
 }  // namespace
+
+std::optional<std::string> GeomTheGroundTruthCannotHold(const Scene& scene, double height_m) {
+  const mjModel* m = scene.model();
+  GroundTruthOptions options;
+  options.height_m = height_m;
+  const GroundTruthWalls walls = ExtractGroundTruthWalls(m, options);
+  for (const int g : walls.unrepresented_geom_ids) {
+    if (!IsStaticWorldGeom(scene, g)) continue;
+    const int type = m->geom_type[g];
+    std::string what;
+    if (type == mjGEOM_BOX || type == mjGEOM_CYLINDER) {
+      const double tilt_deg =
+          std::acos(std::clamp(std::abs(scene.data()->geom_xmat[9 * g + 8]), 0.0, 1.0)) * 180.0 /
+          std::numbers::pi;
+      what = std::string(type == mjGEOM_BOX ? "a box" : "a cylinder") + " tilted " +
+             msgs::ShortestNumber(std::round(tilt_deg * 100.0) / 100.0) + " deg from upright";
+    } else {
+      const char* names[] = {"a plane",      "a height field", "a sphere", "a capsule",
+                             "an ellipsoid", "a cylinder",     "a box",    "a mesh"};
+      what = type >= 0 && type < 8 ? names[type] : "a shape";
+    }
+    return "its " + GeomName(m, g) + " is " + what + " within reach of z = " + Mm(height_m) +
+           " m, where this run is scored: the 2-D ground truth (walls.csv, the line and occupancy "
+           "scores) holds only upright boxes and cylinders, so it would score what the sensors "
+           "see of it as wrong; make it of upright boxes or cylinders (worlds/README.md)";
+  }
+  return std::nullopt;
+}
 
 std::optional<std::string> MissingFloor(const Scene& scene) {
   const mjModel* m = scene.model();
