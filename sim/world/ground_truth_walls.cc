@@ -1,6 +1,7 @@
 #include "sim/world/ground_truth_walls.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -59,28 +60,40 @@ Classification Classify(const mjModel* m, int g, const GroundTruthOptions& optio
   const Pose3 X_WG = GeomPoseInWorld(m, g);
   const double tilt_rad =
       std::atan2(std::hypot(X_WG.R(0, 2), X_WG.R(1, 2)), std::abs(X_WG.R(2, 2)));
-  const bool upright = tilt_rad <= options.max_tilt_rad;
-  if (!upright || (type != mjGEOM_BOX && type != mjGEOM_CYLINDER)) {
+  // A sphere is upright in any orientation; a capsule is an upright cylinder with round ends.
+  const bool upright = type == mjGEOM_SPHERE || tilt_rad <= options.max_tilt_rad;
+  const bool prism_or_round = type == mjGEOM_BOX || type == mjGEOM_CYLINDER ||
+                              type == mjGEOM_SPHERE || type == mjGEOM_CAPSULE;
+  if (!upright || !prism_or_round) {
     const double rbound = m->geom_rbound[g];
     return SpansHeight(options, X_WG.p.z() - rbound, X_WG.p.z() + rbound)
                ? Classification::kUnrepresented
                : Classification::kSkip;
   }
   const mjtNum* size = m->geom_size + 3 * g;
-  const double half_height = type == mjGEOM_BOX ? size[2] : size[1];
+  // Half the height of the straight-sided part, and what the round ends add above and below it.
+  const bool round_ends = type == mjGEOM_SPHERE || type == mjGEOM_CAPSULE;
+  const double half_height = type == mjGEOM_BOX ? size[2] : (type == mjGEOM_SPHERE ? 0.0 : size[1]);
+  const double end_m = round_ends ? size[0] : 0.0;
   UprightGeom geom;
   geom.shape = type == mjGEOM_BOX ? UprightGeom::Shape::kBox : UprightGeom::Shape::kCylinder;
   geom.geom_id = g;
   geom.centre_W = X_WG.p.head<2>();
   geom.R_WG = X_WG.R.topLeftCorner<2, 2>();
+  geom.z_min_m = X_WG.p.z() - half_height - end_m;
+  geom.z_max_m = X_WG.p.z() + half_height + end_m;
+  if (!SpansHeight(options, geom.z_min_m, geom.z_max_m)) return Classification::kSkip;
   if (type == mjGEOM_BOX) {
     geom.half_size_xy = Eigen::Vector2d(size[0], size[1]);
+  } else if (round_ends && options.height_m) {
+    // The disc where the slice cuts a round end: a sphere of radius r cut dz from its centre.
+    const double dz = std::max(0.0, std::abs(*options.height_m - X_WG.p.z()) - half_height);
+    const double r2 = size[0] * size[0] - dz * dz;
+    if (!(r2 > 0.0)) return Classification::kSkip;  // the slice only touches the pole
+    geom.radius_m = std::sqrt(r2);
   } else {
-    geom.radius_m = size[0];
+    geom.radius_m = size[0];  // a cylinder's disc, or a round shape's outline seen from above
   }
-  geom.z_min_m = X_WG.p.z() - half_height;
-  geom.z_max_m = X_WG.p.z() + half_height;
-  if (!SpansHeight(options, geom.z_min_m, geom.z_max_m)) return Classification::kSkip;
   *out = geom;
   return Classification::kUpright;
 }

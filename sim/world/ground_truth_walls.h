@@ -24,7 +24,9 @@ struct GroundTruthOptions {
 
 // A static, upright box or cylinder of the world, seen from above: the prism
 // {p : R_WG^T (p - centre_W) in [-half_size_xy, +half_size_xy]} x [z_min_m, z_max_m] for a box,
-// the disc |p - centre_W| <= radius_m for a cylinder.
+// the disc |p - centre_W| <= radius_m for a cylinder. Spheres and upright capsules are kCylinder:
+// with GroundTruthOptions::height_m their radius is the disc the slice cuts at that height, else
+// their outline seen from above; z_min_m / z_max_m include their round ends.
 struct UprightGeom {
   enum class Shape { kBox, kCylinder };
   Shape shape = Shape::kBox;
@@ -66,7 +68,7 @@ struct WallCircle {
 struct GroundTruthWalls {
   std::vector<WallSegment> segments;  // four per box, in geom order then face order
   std::vector<WallCircle> circles;
-  // Static geoms that the 2-D description cannot represent (tilted boxes and cylinders, spheres,
+  // Static geoms that the 2-D description cannot represent (tilted boxes, cylinders and
   // capsules, ellipsoids, meshes, ...), never including planes: callers may warn or fall back to
   // mj_ray for them.
   std::vector<int> unrepresented_geom_ids;
@@ -75,16 +77,16 @@ struct GroundTruthWalls {
 // True when the geom's body is welded to the world: no joint anywhere in its chain, not mocap.
 bool IsStaticGeom(const mjModel* model, int geom_id);
 
-// The static upright boxes and cylinders of `model` (world alone or world + robot) that pass
-// `options`, in geom order. Poses come from the model alone (body_pos/quat composed down the body
-// tree with geom_pos/quat), so no mjData is needed and qpos does not matter.
+// The static upright boxes, cylinders, capsules and spheres of `model` (world alone or world +
+// robot) that pass `options`, in geom order. Poses come from the model alone (body_pos/quat
+// composed down the body tree with geom_pos/quat), so no mjData is needed and qpos does not matter.
 // @throws std::invalid_argument if `options` is invalid.
 std::vector<UprightGeom> ExtractUprightGeoms(const mjModel* model,
                                              const GroundTruthOptions& options = {});
 
 // The world's wall segments (four vertical faces per upright box) and circles (upright
-// cylinders), skipping planes and the robot's geoms. See UprightGeom for what "static" and
-// "upright" mean.
+// cylinders and capsules, spheres), skipping planes and the robot's geoms. See UprightGeom for what
+// "static" and "upright" mean.
 // @throws std::invalid_argument if `options` is invalid.
 GroundTruthWalls ExtractGroundTruthWalls(const mjModel* model,
                                          const GroundTruthOptions& options = {});

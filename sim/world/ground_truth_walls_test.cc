@@ -6,8 +6,10 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "sim/world/mujoco_handles.h"
 #include "sim/world/scene.h"
@@ -68,6 +70,9 @@ constexpr char kInlineWorld[] = R"(
     <geom name="column" type="cylinder" pos="2 2 0.5" size="0.15 0.5"/>
     <geom name="lying_cylinder" type="cylinder" pos="-2 2 0.1" size="0.1 0.5" euler="90 0 0"/>
     <geom name="ball" type="sphere" pos="0 -3 0.2" size="0.2"/>
+    <geom name="egg" type="ellipsoid" pos="-4 0 0.2" size="0.1 0.15 0.2"/>
+    <geom name="post" type="capsule" pos="4 -2 0.5" size="0.1 0.3"/>
+    <geom name="lying_capsule" type="capsule" pos="-4 -2 0.1" size="0.1 0.3" euler="90 0 0"/>
     <geom name="table_top" type="box" pos="0 -2 0.735" size="0.6 0.3 0.015"/>
     <geom name="static_robot_group" type="box" pos="4 4 0.5" size="0.1 0.1 0.5" group="3"/>
     <body name="shelf" pos="2 0 0" euler="0 0 90">
@@ -142,14 +147,63 @@ TEST(GroundTruthWallsTest, UpsideDownBoxKeepsNormalsOutward) {
 TEST(GroundTruthWallsTest, CylindersBecomeCirclesAndOtherShapesAreReported) {
   const MjModelPtr m = Load(kInlineWorld);
   const GroundTruthWalls walls = ExtractGroundTruthWalls(m.get());
-  ASSERT_EQ(walls.circles.size(), 1u);
+  // The column, the ball and the upright capsule, in geom order; seen from above (no slice) a
+  // round shape is its outline.
+  ASSERT_EQ(walls.circles.size(), 3u);
   EXPECT_EQ(walls.circles[0].geom_id, GeomId(m.get(), "column"));
   ExpectNear(walls.circles[0].centre, {2, 2}, "column centre");
   EXPECT_DOUBLE_EQ(walls.circles[0].radius_m, 0.15);
+  EXPECT_EQ(walls.circles[1].geom_id, GeomId(m.get(), "ball"));
+  EXPECT_DOUBLE_EQ(walls.circles[1].radius_m, 0.2);
+  EXPECT_EQ(walls.circles[2].geom_id, GeomId(m.get(), "post"));
+  ExpectNear(walls.circles[2].centre, {4, -2}, "post centre");
+  EXPECT_DOUBLE_EQ(walls.circles[2].radius_m, 0.1);
   std::vector<int> expected = {GeomId(m.get(), "tilted_box"), GeomId(m.get(), "lying_cylinder"),
-                               GeomId(m.get(), "ball")};
+                               GeomId(m.get(), "egg"), GeomId(m.get(), "lying_capsule")};
   std::sort(expected.begin(), expected.end());
   EXPECT_EQ(walls.unrepresented_geom_ids, expected);
+}
+
+// A slice through a sphere of radius r, dz from its centre, is a disc of radius sqrt(r^2 - dz^2);
+// a capsule is a cylinder between two such half-spheres.
+TEST(GroundTruthWallsTest, SlicesThroughRoundEndsAreTheirDiscs) {
+  const MjModelPtr m = Load(kInlineWorld);
+  const auto radius_at = [&](const std::string& name, double height_m) -> std::optional<double> {
+    GroundTruthOptions slice;
+    slice.height_m = height_m;
+    for (const WallCircle& c : ExtractGroundTruthWalls(m.get(), slice).circles) {
+      if (c.geom_id == GeomId(m.get(), name)) return c.radius_m;
+    }
+    return std::nullopt;
+  };
+  // The ball: centre z 0.2, r 0.2.
+  EXPECT_NEAR(*radius_at("ball", 0.2), 0.2, kTol);
+  EXPECT_NEAR(*radius_at("ball", 0.34), std::sqrt(0.2 * 0.2 - 0.14 * 0.14), kTol);
+  EXPECT_NEAR(*radius_at("ball", 0.05), std::sqrt(0.2 * 0.2 - 0.15 * 0.15), kTol);
+  EXPECT_FALSE(radius_at("ball", 0.41).has_value());
+  EXPECT_FALSE(radius_at("ball", 0.4).has_value());  // the pole only
+  // The post: centre z 0.5, straight part 0.2-0.8, ends to 0.1 and 0.9, r 0.1.
+  EXPECT_NEAR(*radius_at("post", 0.34), 0.1, kTol);
+  EXPECT_NEAR(*radius_at("post", 0.8), 0.1, kTol);
+  EXPECT_NEAR(*radius_at("post", 0.86), std::sqrt(0.1 * 0.1 - 0.06 * 0.06), kTol);
+  EXPECT_NEAR(*radius_at("post", 0.15), std::sqrt(0.1 * 0.1 - 0.05 * 0.05), kTol);
+  EXPECT_FALSE(radius_at("post", 0.95).has_value());
+  // The occupancy prism agrees: a point 0.09 m from the post's axis is inside at 0.34 m, outside
+  // where the end's disc is 0.08 m.
+  GroundTruthOptions low, end;
+  low.height_m = 0.34;
+  end.height_m = 0.86;
+  for (const auto& [options, inside] : {std::pair{low, true}, std::pair{end, false}}) {
+    bool found = false;
+    for (const UprightGeom& u : ExtractUprightGeoms(m.get(), options)) {
+      if (u.geom_id != GeomId(m.get(), "post")) continue;
+      found = true;
+      EXPECT_EQ(u.ContainsXY({4.09, -2}), inside);
+      EXPECT_NEAR(u.z_min_m, 0.1, kTol);
+      EXPECT_NEAR(u.z_max_m, 0.9, kTol);
+    }
+    EXPECT_TRUE(found);
+  }
 }
 
 TEST(GroundTruthWallsTest, RobotFloorAndMovingGeomsAreExcluded) {

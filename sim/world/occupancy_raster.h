@@ -61,8 +61,9 @@ struct OccupancyRaster {
 OccupancyRaster RasteriseOccupancy(const std::vector<UprightGeom>& geoms,
                                    const OccupancyRasterOptions& options);
 
-// Rasterises the static upright boxes and cylinders of a compiled model (world alone or world +
-// robot). Tilted or round-ended static geoms are not represented (see ExtractGroundTruthWalls).
+// Rasterises the static upright boxes, cylinders, capsules and spheres of a compiled model (world
+// alone or world + robot). Tilted static geoms, ellipsoids and meshes are not represented (see
+// ExtractGroundTruthWalls).
 // @throws std::invalid_argument as above.
 OccupancyRaster RasteriseOccupancy(const mjModel* model, const OccupancyRasterOptions& options);
 

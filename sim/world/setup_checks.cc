@@ -70,8 +70,8 @@ std::optional<std::string> GeomTheGroundTruthCannotHold(const Scene& scene, doub
     }
     return "its " + GeomName(m, g) + " is " + what + " within reach of z = " + Mm(height_m) +
            " m, where this run is scored: the 2-D ground truth (walls.csv, the line and occupancy "
-           "scores) holds only upright boxes and cylinders, so it would score what the sensors "
-           "see of it as wrong; make it of upright boxes or cylinders (worlds/README.md)";
+           "scores) holds only upright boxes, cylinders and capsules, and spheres, so it would "
+           "score what the sensors see of it as wrong; make it of those (worlds/README.md)";
   }
   return std::nullopt;
 }
