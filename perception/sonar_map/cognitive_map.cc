@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "msgs/shortest_number.h"
+#include "perception/sonar_map/cell_clusters.h"
 #include "perception/sonar_map/line_fit.h"
 
 namespace plywood::perception {
@@ -381,6 +382,11 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
   // Echo points of the grid-aligned axes in each obstacle cell (the trim keeps an end holding
   // enough of them; the reported map only, like the peel).
   const bool trim_keeps_heard_ends = peel_free && options.obstacle_trim_keeps_heard_ends;
+  // Like the peel, from the reported map only: the robot plans on main's obstacles.
+  const bool cut_unheard_gaps = options.obstacle_cut_unheard_gaps && beam_free != nullptr &&
+                                options.beam_free_min_passes > 0 && options.obstacle_from_faces;
+  // Cells that may lie between two faces of one piece: a gap up to obstacle_join_m.
+  const int join_gap_cells = static_cast<int>(std::floor(options.obstacle_join_m / res + 1e-9));
   std::vector<int> heard_echoes;
   if (trim_keeps_heard_ends) {
     heard_echoes.assign(occ.size(), 0);
@@ -672,8 +678,16 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
                         [&](const Eigen::Vector2i& c) { return !is_obstacle_occ(c.x(), c.y()); }),
                     cells.end());
       constexpr int kMaxSplitDepth = 3;
-      std::vector<std::vector<Eigen::Vector2i>> pieces =
-          SplitIntoRectangles(cells, options.obstacle_split_saving, kMaxSplitDepth);
+      std::vector<std::vector<Eigen::Vector2i>> pieces;
+      if (cut_unheard_gaps) {
+        // Faces farther apart than obstacle_join_m with nothing heard between: one obstacle each.
+        for (const auto& group : ClustersWithinGap(cells, join_gap_cells))
+          for (auto& piece :
+               SplitIntoRectangles(group, options.obstacle_split_saving, kMaxSplitDepth))
+            pieces.push_back(std::move(piece));
+      } else {
+        pieces = SplitIntoRectangles(cells, options.obstacle_split_saving, kMaxSplitDepth);
+      }
       if (peel_free) {
         // Each peeled piece's rest is cut and peeled again; it is strictly smaller than the piece
         // unless everything was peeled (more free than occupied in every row or column: no
