@@ -678,15 +678,26 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
                         [&](const Eigen::Vector2i& c) { return !is_obstacle_occ(c.x(), c.y()); }),
                     cells.end());
       constexpr int kMaxSplitDepth = 3;
-      std::vector<std::vector<Eigen::Vector2i>> pieces;
+      std::vector<std::vector<Eigen::Vector2i>> pieces =
+          SplitIntoRectangles(cells, options.obstacle_split_saving, kMaxSplitDepth);
       if (cut_unheard_gaps) {
-        // Faces farther apart than obstacle_join_m with nothing heard between: one obstacle each.
-        for (const auto& group : ClustersWithinGap(cells, join_gap_cells))
-          for (auto& piece :
-               SplitIntoRectangles(group, options.obstacle_split_saving, kMaxSplitDepth))
-            pieces.push_back(std::move(piece));
-      } else {
-        pieces = SplitIntoRectangles(cells, options.obstacle_split_saving, kMaxSplitDepth);
+        // A piece whose faces lie farther apart than obstacle_join_m with nothing heard between
+        // them: one obstacle each, cut as a blob is. Pieces the cut above already separated keep
+        // their order (sides snap to earlier lines).
+        std::vector<std::vector<Eigen::Vector2i>> apart;
+        for (auto& piece : pieces) {
+          std::vector<std::vector<Eigen::Vector2i>> groups =
+              ClustersWithinGap(piece, join_gap_cells);
+          if (groups.size() == 1) {
+            apart.push_back(std::move(piece));
+            continue;
+          }
+          for (const auto& group : groups)
+            for (auto& more :
+                 SplitIntoRectangles(group, options.obstacle_split_saving, kMaxSplitDepth))
+              apart.push_back(std::move(more));
+        }
+        pieces = std::move(apart);
       }
       if (peel_free) {
         // Each peeled piece's rest is cut and peeled again; it is strictly smaller than the piece
