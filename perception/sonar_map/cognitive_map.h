@@ -94,7 +94,7 @@ struct CognitiveMapOptions {
   // boxes whose gap the robot never saw became one blob, and when no cut saved
   // obstacle_split_saving a rectangle spanned both and the gap (issue 14 round 41b, class C).
   // Closer faces stay one piece, as obstacle_join_m would join them anyway.
-  bool obstacle_cut_unheard_gaps = false;
+  bool obstacle_cut_unheard_gaps = true;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
 };
