@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "msgs/shortest_number.h"
+#include "perception/sonar_map/cell_clusters.h"
 #include "perception/sonar_map/line_fit.h"
 
 namespace plywood::perception {
@@ -381,6 +382,11 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
   // Echo points of the grid-aligned axes in each obstacle cell (the trim keeps an end holding
   // enough of them; the reported map only, like the peel).
   const bool trim_keeps_heard_ends = peel_free && options.obstacle_trim_keeps_heard_ends;
+  // Like the peel, from the reported map only: the robot plans on main's obstacles.
+  const bool cut_unheard_gaps = options.obstacle_cut_unheard_gaps && beam_free != nullptr &&
+                                options.beam_free_min_passes > 0 && options.obstacle_from_faces;
+  // Cells that may lie between two faces of one piece: a gap up to obstacle_join_m.
+  const int join_gap_cells = static_cast<int>(std::floor(options.obstacle_join_m / res + 1e-9));
   std::vector<int> heard_echoes;
   if (trim_keeps_heard_ends) {
     heard_echoes.assign(occ.size(), 0);
@@ -674,6 +680,25 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
       constexpr int kMaxSplitDepth = 3;
       std::vector<std::vector<Eigen::Vector2i>> pieces =
           SplitIntoRectangles(cells, options.obstacle_split_saving, kMaxSplitDepth);
+      if (cut_unheard_gaps) {
+        // A piece whose faces lie farther apart than obstacle_join_m with nothing heard between
+        // them: one obstacle each, cut as a blob is. Pieces the cut above already separated keep
+        // their order (sides snap to earlier lines).
+        std::vector<std::vector<Eigen::Vector2i>> apart;
+        for (auto& piece : pieces) {
+          std::vector<std::vector<Eigen::Vector2i>> groups =
+              ClustersWithinGap(piece, join_gap_cells);
+          if (groups.size() == 1) {
+            apart.push_back(std::move(piece));
+            continue;
+          }
+          for (const auto& group : groups)
+            for (auto& more :
+                 SplitIntoRectangles(group, options.obstacle_split_saving, kMaxSplitDepth))
+              apart.push_back(std::move(more));
+        }
+        pieces = std::move(apart);
+      }
       if (peel_free) {
         // Each peeled piece's rest is cut and peeled again; it is strictly smaller than the piece
         // unless everything was peeled (more free than occupied in every row or column: no

@@ -87,6 +87,14 @@ struct CognitiveMapOptions {
   // echoes; like the axes (BeamFreeOptions::stop_short_m) a free cell must lie the range noise
   // from any echo. It lets the peel free what the network saw and no axis passed. 0: axes only.
   double obstacle_peel_net_free_clearance_m = 0.05;
+  // (The reported map, with the axes' free space and obstacle_from_faces.) A piece (after the
+  // cut into rectangles) whose faces lie more than obstacle_join_m apart, joined only by cells
+  // never heard free (the unknown the blob grows over), is cut into one obstacle per group of
+  // faces, each cut into rectangles again: the blob grows over every cell not seen free, so two
+  // boxes whose gap the robot never saw became one blob, and when no cut saved
+  // obstacle_split_saving a rectangle spanned both and the gap (issue 14 round 41b, class C).
+  // Closer faces stay one piece, as obstacle_join_m would join them anyway.
+  bool obstacle_cut_unheard_gaps = true;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
 };

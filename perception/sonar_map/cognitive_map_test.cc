@@ -879,6 +879,75 @@ TEST(CognitiveMapTest, SidesHeardHeadOnByTheAxesArePlacedAtTheirEchoesAndNotSnap
   EXPECT_NEAR(too_few.obstacles.at(1).x1, 1.55, kTol);
 }
 
+// Room() whose free space leaves out `unseen` too: cells the sonar never heard (unknown).
+LogOddsGrid RoomWithUnseen(const std::vector<Rect>& obstacles, const Rect& unseen) {
+  LogOddsGrid grid(TestGridGeometry());
+  auto inside = [&](const Rect& r, int ix, int iy) { return r.Contains(grid.CellCentre(ix, iy)); };
+  for (int iy = kWallY0; iy <= kWallY1; ++iy)
+    for (int ix = kWallX0; ix <= kWallX1; ++ix) {
+      bool face = ix == kWallX0 || ix == kWallX1 || iy == kWallY0 || iy == kWallY1;
+      bool hidden = inside(unseen, ix, iy);
+      for (const Rect& o : obstacles) {
+        const Rect inner{o.x0 + kRes, o.y0 + kRes, o.x1 - kRes, o.y1 - kRes};
+        face = face || (inside(o, ix, iy) && !inside(inner, ix, iy));
+        hidden = hidden || inside(inner, ix, iy);
+      }
+      if (face)
+        Mark(grid, ix, iy, 0.98);
+      else if (!hidden)
+        Mark(grid, ix, iy, 0.02);
+    }
+  return grid;
+}
+
+TEST(CognitiveMapTest, BoxesWhoseGapWasNeverHeardAreSeparateObstaclesNotOneRectangle) {
+  // An L open to the north-east (1.6 x 0.3 m arm, 0.3 x 0.8 m arm on its west end) and a box in
+  // its notch, 0.4 m from the long arm and 0.5 m from the short one, the space between them never
+  // heard: one blob through the unknown, whose extent no single cut shrinks by a quarter (each
+  // box overlaps the other's rows and columns), so main's map made it one rectangle over the gap.
+  const Rect long_arm{1.00, 0.90, 2.60, 1.20}, short_arm{1.00, 1.20, 1.30, 2.00};
+  const Rect box{1.80, 1.60, 2.60, 2.00};
+  const Rect gap{1.30, 1.20, 2.60, 2.00};
+  const LogOddsGrid grid = RoomWithUnseen({long_arm, short_arm, box}, gap);
+  const BeamFreeGrid no_axes = Beams({}, 0.0, 1.0);
+  auto label_at = [](const CognitiveMap& map, const Eigen::Vector2d& p) {
+    const int k = map.partitions.Find(p);
+    EXPECT_GE(k, 0) << p.transpose();
+    return k >= 0 ? map.partitions.partitions()[k].label : Label::kFree;
+  };
+  const Eigen::Vector2d in_gap{1.55, 1.40};
+  CognitiveMapOptions off;
+  off.obstacle_cut_unheard_gaps = false;
+  const CognitiveMap before = BuildCognitiveMap(grid, kInside, off, &no_axes);
+  ASSERT_EQ(before.obstacles.size(), 1u);
+  ExpectRectNear(before.obstacles[0], {1.00, 0.90, 2.60, 2.00});
+  CognitiveMapOptions on;
+  on.obstacle_cut_unheard_gaps = true;
+  const CognitiveMap after = BuildCognitiveMap(grid, kInside, on, &no_axes);
+  // The L's two arms (cut as any L is) and the box, each its own rectangle; the gap is no obstacle.
+  // (Either arm may keep the corner: both cuts save the same.)
+  ASSERT_EQ(after.obstacles.size(), 3u);
+  EXPECT_NEAR(TotalArea(after.obstacles), long_arm.Area() + short_arm.Area() + box.Area(), kTol);
+  for (const Rect& o : after.obstacles)
+    for (const Eigen::Vector2d& p :
+         {Eigen::Vector2d(o.x0 + 0.01, o.y0 + 0.01), Eigen::Vector2d(o.x1 - 0.01, o.y1 - 0.01)})
+      EXPECT_TRUE(long_arm.Contains(p) || short_arm.Contains(p) || box.Contains(p))
+          << p.transpose();
+  EXPECT_EQ(label_at(after, in_gap), Label::kFree);
+  ExpectTilesTheRoom(after);
+  // The map the robot plans on (no axes' grid) keeps main's rectangle.
+  const CognitiveMap planning = BuildCognitiveMap(grid, kInside, on);
+  ASSERT_EQ(planning.obstacles.size(), 1u);
+  EXPECT_EQ(label_at(planning, in_gap), Label::kObstacle);
+  // A box nearer than obstacle_join_m (0.15 m from both arms) is one piece with the L: faces of
+  // one obstacle the sonar heard with a short stretch missing are not cut apart.
+  const Rect near_box{1.45, 1.35, 2.60, 2.00};
+  const LogOddsGrid near = RoomWithUnseen({long_arm, short_arm, near_box}, gap);
+  const CognitiveMap joined = BuildCognitiveMap(near, kInside, on, &no_axes);
+  ASSERT_EQ(joined.obstacles.size(), 1u);
+  ExpectRectNear(joined.obstacles[0], {1.00, 0.90, 2.60, 2.00});
+}
+
 TEST(CognitiveMapTest, InvalidJoinDistanceOrFillThrowsNamingTheField) {
   EXPECT_NO_THROW(CognitiveMapOptions{}.Validate());
   for (const double join :
