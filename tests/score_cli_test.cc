@@ -398,7 +398,8 @@ TEST(ScoreCliTest, AGridOfARunWhoseWorldChangedSinceIsRefused) {
 
 // s43 fifteenth pass: the occupancy truth holds no tilted geom (upright boxes, cylinders, capsules
 // and spheres only), so a world's box tilted half a degree (seed 001's obstacle) was free space to
-// it: a grid that mapped the box was scored wrong for it, exit 0. The run itself (no scoring) still runs; score grid refuses.
+// it: a grid that mapped the box was scored wrong for it, exit 0. The run itself (no scoring) still
+// runs; score grid refuses.
 TEST(ScoreCliTest, AGridOfAWorldWhoseGeomTheTruthCannotHoldIsRefused) {
   const fs::path dir = testing::MakeTempDir("score_cli_grid_tilted");
   std::string room = Slurp(testing::SourceRoot() / "worlds" / "seed001_room_2.xml");
