@@ -93,8 +93,10 @@ struct CognitiveMapOptions {
   // faces, each cut into rectangles again: the blob grows over every cell not seen free, so two
   // boxes whose gap the robot never saw became one blob, and when no cut saved
   // obstacle_split_saving a rectangle spanned both and the gap (issue 14 round 41b, class C).
-  // Closer faces stay one piece, as obstacle_join_m would join them anyway.
-  bool obstacle_cut_unheard_gaps = true;
+  // Closer faces stay one piece, as obstacle_join_m would join them anyway. Off: with the
+  // classical model a box whose interior was never heard and only opposite faces were (more than
+  // obstacle_join_m apart) is cut into its faces and peeled away (docs/sonar_map.md, round 41b).
+  bool obstacle_cut_unheard_gaps = false;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
 };
