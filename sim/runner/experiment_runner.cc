@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "msgs/shortest_number.h"
@@ -180,9 +181,11 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
       throw ConfigError(config.source_file, "world", config.world_path.string() + ": " + *problem);
     }
   }
-  for (const auto& check : {SpawnOutsideWorld, SpawnCollision}) {
+  for (const auto& [check, advice] :
+       {std::pair{&SpawnOutsideWorld, ""}, std::pair{&SpawnCollision, "; choose a free spawn"}}) {
     if (const auto problem = check(*scene_)) {
-      throw SpawnRefused(config.source_file, *problem, config.world_path.filename().string());
+      throw SpawnRefused(config.source_file, *problem, advice,
+                         config.world_path.filename().string());
     }
   }
   RequireControllerSensors(config);

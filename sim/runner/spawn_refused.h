@@ -13,19 +13,17 @@ namespace plywood::sim {
 // to a key whose change would not help (s43).
 class SpawnRefused : public ConfigError {
  public:
-  SpawnRefused(const std::string& file, const std::string& problem, const std::string& world_name)
-      : ConfigError(file, "robot.spawn", problem + " in " + world_name),
-        problem_(WithoutAdvice(problem)) {}
+  // `advice` (e.g. "; choose a free spawn") follows the problem in the robot.spawn message only.
+  SpawnRefused(const std::string& file, const std::string& problem, const std::string& advice,
+               const std::string& world_name)
+      : ConfigError(file, "robot.spawn", problem + advice + " in " + world_name),
+        problem_(problem) {}
 
-  // The problem without the runner's advice, e.g. "the robot at (0, 0) overlaps geom 'col' of
-  // the world by 128 mm (its geom 'chassis')".
+  // The problem alone, e.g. "the robot at (0, 0) overlaps geom 'col' of the world by 128 mm (its
+  // geom 'chassis')".
   const std::string& problem() const { return problem_; }
 
  private:
-  static std::string WithoutAdvice(const std::string& problem) {
-    return problem.substr(0, problem.find("; choose a free spawn"));
-  }
-
   std::string problem_;
 };
 

@@ -56,17 +56,16 @@ std::optional<std::string> GeomTheGroundTruthCannotHold(const Scene& scene, doub
   for (const int g : walls.unrepresented_geom_ids) {
     if (!IsStaticWorldGeom(scene, g)) continue;
     const int type = m->geom_type[g];
-    std::string what;
-    if (type == mjGEOM_BOX || type == mjGEOM_CYLINDER) {
+    const char* names[] = {"a plane",      "a height field", "a sphere", "a capsule",
+                           "an ellipsoid", "a cylinder",     "a box",    "a mesh"};
+    std::string what = type >= 0 && type < 8 ? names[type] : "a shape";
+    if (type == mjGEOM_BOX || type == mjGEOM_CYLINDER || type == mjGEOM_CAPSULE) {
+      // Only tilted ones reach here: upright ones the truth holds.
       const double tilt_deg =
           std::acos(std::clamp(std::abs(scene.data()->geom_xmat[9 * g + 8]), 0.0, 1.0)) * 180.0 /
           std::numbers::pi;
-      what = std::string(type == mjGEOM_BOX ? "a box" : "a cylinder") + " tilted " +
-             msgs::ShortestNumber(std::round(tilt_deg * 100.0) / 100.0) + " deg from upright";
-    } else {
-      const char* names[] = {"a plane",      "a height field", "a sphere", "a capsule",
-                             "an ellipsoid", "a cylinder",     "a box",    "a mesh"};
-      what = type >= 0 && type < 8 ? names[type] : "a shape";
+      what += " tilted " + msgs::ShortestNumber(std::round(tilt_deg * 100.0) / 100.0) +
+              " deg from upright";
     }
     return "its " + GeomName(m, g) + " is " + what + " within reach of z = " + Mm(height_m) +
            " m, where this run is scored: the 2-D ground truth (walls.csv, the line and occupancy "
@@ -235,7 +234,7 @@ std::optional<std::string> SpawnCollision(const Scene& scene) {
     if (m->geom_type[world_geom] == mjGEOM_PLANE) continue;  // the wheels stand on the floor
     return "the robot at " + At(scene.TruePose()) + " overlaps " + GeomName(m, world_geom) +
            " of the world by " + msgs::ShortestNumber(std::round(-c.dist * 1000.0)) + " mm (its " +
-           GeomName(m, robot_geom) + "); choose a free spawn";
+           GeomName(m, robot_geom) + ")";
   }
   return std::nullopt;
 }

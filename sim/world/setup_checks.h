@@ -44,12 +44,12 @@ std::optional<std::string> MovableWorldGeometry(const Scene& scene);
 std::optional<std::string> SpawnCollision(const Scene& scene);
 
 // A static geom of the world near `height_m` (within its bounding radius) that the 2-D ground
-// truth cannot describe: a sphere, capsule, ellipsoid or mesh, or a box or cylinder tilted from
-// upright (ExtractGroundTruthWalls' unrepresented_geom_ids). The sensors see it while walls.csv,
-// the line scores' truth and the occupancy truth leave it out, so a run scored against that truth
-// scores it wrong without a word (s43: a seed000 panel leaning 5 deg took split_and_merge's
-// precision from 1 to 0.75; a seed 001 obstacle tilted 0.5 deg left the map's truth, e 0.0106 ->
-// 0.0259). Checked only for runs that score against the truth at that height.
+// truth cannot describe: an ellipsoid, a mesh or a height field, or a box, cylinder or capsule
+// tilted from upright (ExtractGroundTruthWalls' unrepresented_geom_ids). The sensors see it while
+// walls.csv, the line scores' truth and the occupancy truth leave it out, so a run scored against
+// that truth scores it wrong without a word (s43: a seed000 panel leaning 5 deg took
+// split_and_merge's precision from 1 to 0.75; a seed 001 obstacle tilted 0.5 deg left the map's
+// truth, e 0.0106 -> 0.0259). Checked only for runs that score against the truth at that height.
 std::optional<std::string> GeomTheGroundTruthCannotHold(const Scene& scene, double height_m);
 
 // The spawn lies outside the horizontal bounding box of the world's static geometry (floor
