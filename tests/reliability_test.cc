@@ -1448,5 +1448,131 @@ TEST_F(ReliabilityTest, APlaneBesidesTheFloorIsRefused) {
       0);
 }
 
+// s44: world geoms that the sensors, the ground truth and the robot's physics would each take
+// differently. Each ran with exit 0 before: a crate in group 3 stopped the robot unseen and
+// unbumped (seed 001: encoder ate_rms_m 0.0027 -> 0.755 m), a transparent crate was held by the
+// truth but heard by no sonar (e 0.022 -> 0.049), a floor that collides with nothing let the robot
+// fall (encoder heading off by 73 deg), a crate of that kind at the seed 000 rig's origin was
+// scored as the room.
+TEST_F(ReliabilityTest, AWorldGeomTheSensorsTruthAndRobotWouldTakeDifferentlyIsRefused) {
+  const fs::path dir = WorldDir();
+  const std::string hall = Slurp(testing::SourceRoot() / "worlds/hall.xml");
+  const std::string anchor = "<!-- walls -->";
+  const std::string floor = "<geom name=\"floor\" type=\"plane\"";
+  ASSERT_NE(hall.find(anchor), std::string::npos);
+  ASSERT_NE(hall.find(floor), std::string::npos);
+  const std::string crate =
+      "<geom name=\"crate\" type=\"box\" pos=\"0 0 0.25\" size=\"0.3 0.3 0.25\" ";
+  struct Case {
+    std::string world;
+    std::string message;
+  };
+  const auto with = [&](const std::string& what, const std::string& by) {
+    std::string text = hall;
+    text.replace(text.find(what), what.size(), by);
+    return text;
+  };
+  for (const Case& c : std::vector<Case>{
+           {with(anchor, crate + "group=\"3\"/>"),
+            "its box geom 'crate' is in geom group 3, the robot's: the sensors' rays, the ground "
+            "truth, the bumpers and the spawn check skip that group"},
+           {with(floor, floor + " group=\"3\""), "its plane geom 'floor' is in geom group 3"},
+           {with(anchor, crate + "rgba=\"0.5 0.5 0.5 0\"/>"),
+            "its box geom 'crate' is fully transparent (its rgba has alpha 0): MuJoCo's rays skip "
+            "it, so no laser, sonar or IR beam sees it"},
+           {with(anchor,
+                 "<geom name=\"crate\" type=\"box\" pos=\"0 0 0.25\" size=\"0.3 0.3 "
+                 "0.25\" material=\"clear\"/>")
+                .replace(hall.find("<asset>"), 7,
+                         "<asset><material name=\"clear\" rgba=\"1 1 1 0\"/>"),
+            "its box geom 'crate' is fully transparent (its material 'clear' has alpha 0)"},
+           {with(anchor, crate + "contype=\"0\" conaffinity=\"0\"/>"),
+            "its box geom 'crate' collides with no geom of the robot (contype 0, conaffinity 0; "
+            "the robot's 1 and 1): the robot would drive through it"},
+           {with(floor, floor + " contype=\"2\" conaffinity=\"2\""),
+            "its plane geom 'floor' collides with no geom of the robot (contype 2, conaffinity 2; "
+            "the robot's 1 and 1): the robot would fall through it"}}) {
+    SCOPED_TRACE(c.message);
+    const fs::path world = WriteFile(dir / "odd.xml", c.world);
+    ExpectRefused(HallExperiment(-2.0, -2.0), "--set world=" + world.string(),
+                  {"experiment.yaml: world: ", "odd.xml: " + c.message});
+  }
+  // The robot at the crate itself (the spawn check reads contacts, which such a crate never
+  // makes): refused for the crate, not run from inside it.
+  ExpectRefused(
+      HallExperiment(0.0, 0.0),
+      "--set world=" +
+          WriteFile(dir / "odd.xml", with(anchor, crate + "contype=\"0\" conaffinity=\"0\"/>"))
+              .string(),
+      {"odd.xml: its box geom 'crate' collides with no geom of the robot"});
+  // Still run: a lamp of that kind above the robot, a half-transparent crate, a crate in group 2.
+  for (const std::string& geom :
+       {std::string("<geom name=\"lamp\" type=\"box\" pos=\"0 0 2.5\" size=\"0.3 0.3 0.05\" "
+                    "contype=\"0\" conaffinity=\"0\"/>"),
+        crate + "rgba=\"0.5 0.5 0.5 0.4\"/>", crate + "group=\"2\"/>"}) {
+    SCOPED_TRACE(geom);
+    EXPECT_EQ(Run(HallExperiment(-2.0, -2.0),
+                  "--set world=" + WriteFile(dir / "fine.xml", with(anchor, geom)).string())
+                  .exit_code,
+              0);
+  }
+}
+
+// s44: a world geom's contact margin, gap or priority changes how the robot's own geoms make
+// contact (its tires' and casters' priority 1 is there so that their friction, condim and solref
+// decide, "whatever the world's"). Each ran with exit 0 before: in the 40 s square_hall run a
+// floor with margin 0.03 took the encoder's ate_rms_m from 0.094 to 0.428 m, gap 0.03 to 0.432 m,
+// priority 2 with friction 0.05 to 0.177 m, priority 1 with friction 3 to 0.404 m.
+TEST_F(ReliabilityTest, AWorldGeomThatChangesTheRobotsContactsIsRefused) {
+  const fs::path dir = WorldDir();
+  const std::string hall = Slurp(testing::SourceRoot() / "worlds/hall.xml");
+  const std::string floor = "<geom name=\"floor\" type=\"plane\"";
+  ASSERT_NE(hall.find(floor), std::string::npos);
+  const auto with = [&](const std::string& attributes) {
+    std::string text = hall;
+    text.replace(text.find(floor), floor.size(), floor + " " + attributes);
+    return text;
+  };
+  for (const auto& [attributes, message] : std::vector<std::pair<std::string, std::string>>{
+           {"margin=\"0.03\"",
+            "its plane geom 'floor' sets margin 0.03 m and gap 0 m: MuJoCo holds the robot's "
+            "contacts with it 0.03 m apart"},
+           {"gap=\"0.03\"",
+            "its plane geom 'floor' sets margin 0 m and gap 0.03 m: MuJoCo holds the robot's "
+            "contacts with it 0.03 m deep"},
+           {"priority=\"2\" friction=\"0.05 0.005 0.0001\"",
+            "its plane geom 'floor' sets contact priority 2, at least the robot's 1"},
+           {"priority=\"1\" friction=\"3 0.005 0.0001\"",
+            "its plane geom 'floor' sets contact priority 1, at least the robot's 1"}}) {
+    SCOPED_TRACE(attributes);
+    const fs::path world = WriteFile(dir / "contacts.xml", with(attributes));
+    ExpectRefused(HallExperiment(-2.0, -2.0), "--set world=" + world.string(),
+                  {"experiment.yaml: world: ", "contacts.xml: " + message});
+  }
+  // A margin its gap cancels (contacts found early, never acted on), and a world friction below
+  // the robot's priority, still run.
+  for (const std::string& attributes : {std::string("margin=\"0.01\" gap=\"0.01\""),
+                                        std::string("friction=\"0.05 0.005 0.0001\"")}) {
+    SCOPED_TRACE(attributes);
+    EXPECT_EQ(Run(HallExperiment(-2.0, -2.0),
+                  "--set world=" + WriteFile(dir / "fine.xml", with(attributes)).string())
+                  .exit_code,
+              0);
+  }
+}
+
+// s44: a seed 001 map of a world of nothing but a floor (and `score grid` of a run there) was
+// refused as "plywood: bounds_W: unset and there is no geometry to take it from", naming neither
+// the file nor the field.
+TEST_F(ReliabilityTest, AMapOfAWorldWithoutWallsIsRefusedNamingTheWorld) {
+  const fs::path dir = WorldDir();
+  const fs::path world = WriteFile(dir / "bare.xml",
+                                   "<mujoco model=\"bare\"><worldbody><geom name=\"floor\" "
+                                   "type=\"plane\" size=\"5 5 0.05\"/></worldbody></mujoco>\n");
+  ExpectRefused(ExplorerExperiment(0.0, 0.0), "--set world=" + world.string(),
+                {"experiment.yaml: world: the world holds no wall or obstacle",
+                 "there is no room to score a map of"});
+}
+
 }  // namespace
 }  // namespace plywood

@@ -4,6 +4,7 @@
 
 #include "sim/config/config_error.h"
 #include "sim/runner/format_number.h"
+#include "sim/world/ground_truth_walls.h"
 
 namespace plywood::eval {
 
@@ -41,6 +42,13 @@ ReachableSpace ComputeReachableSpace(const sim::OccupancyRaster& raster,
 std::unique_ptr<OccupancyTruth> MakeOccupancyTruth(const mjModel* model,
                                                    const Eigen::Vector2d& start_W,
                                                    const std::string& spawn_source) {
+  // The raster spans the world's upright geoms; a world of nothing but a floor has no extent (was
+  // "plywood: bounds_W: unset ...", naming neither the file nor the world).
+  if (sim::ExtractUprightGeoms(model).empty()) {
+    throw sim::ConfigError(spawn_source, "world",
+                           "the world holds no wall or obstacle (no upright box, cylinder, capsule "
+                           "or sphere at any height): there is no room to score a map of");
+  }
   auto truth = std::make_unique<OccupancyTruth>();
   sim::OccupancyRasterOptions options;
   options.resolution_m = 0.01;

@@ -39,8 +39,8 @@ struct OccupancyTruth {
 
 // A scorer never reports a number against empty ground truth:
 // @throws sim::ConfigError naming `spawn_source` (the experiment or the run's config.yaml) and
-// robot.spawn when no free space is reachable from `start_W` (e would be 0 / 0), and
-// std::invalid_argument when the model has no static geometry to rasterise.
+// robot.spawn when no free space is reachable from `start_W` (e would be 0 / 0), and naming it
+// and world when the model has no upright static geometry to rasterise (a floor alone).
 std::unique_ptr<OccupancyTruth> MakeOccupancyTruth(const mjModel* model,
                                                    const Eigen::Vector2d& start_W,
                                                    const std::string& spawn_source);

@@ -175,8 +175,10 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
   }
 
   // A scene that cannot give meaningful results is refused before anything runs.
-  for (const auto& check : {MissingFloor, PlaneThatIsNotTheFloor, MovableWorldGeometry,
-                            NonDefaultPhysicsOptions, ShrunkContactLists}) {
+  for (const auto& check :
+       {WorldGeomInTheRobotsGroup, WorldGeomTheRobotPassesThrough, MissingFloor,
+        PlaneThatIsNotTheFloor, MovableWorldGeometry, WorldGeomNoSensorSees,
+        WorldGeomThatChangesTheRobotsContacts, NonDefaultPhysicsOptions, ShrunkContactLists}) {
     if (const auto problem = check(*scene_)) {
       throw ConfigError(config.source_file, "world", config.world_path.string() + ": " + *problem);
     }

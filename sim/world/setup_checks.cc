@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "msgs/shortest_number.h"
+#include "sim/raycast/mujoco_ray_caster.h"
 #include "sim/world/ground_truth_walls.h"
 #include "sim/world/mujoco_handles.h"
 
@@ -46,6 +47,23 @@ std::string At(const msgs::Pose2D& pose) {
   return "(" + msgs::ShortestNumber(pose.x_m) + ", " + msgs::ShortestNumber(pose.y_m) + ")";
 }
 
+// True when the geom hangs under the robot's base body (the robot's own, whatever its group).
+bool IsOnTheRobot(const Scene& scene, int geom) {
+  const mjModel* m = scene.model();
+  for (int b = m->geom_bodyid[geom]; b != 0; b = m->body_parentid[b]) {
+    if (b == scene.base_body_id()) return true;
+  }
+  return false;
+}
+
+// "plane geom 'floor'", "box geom 'crate'": the shape first, for the checks that name planes too.
+std::string ShapeAndName(const mjModel* m, int geom) {
+  const char* shapes[] = {"plane",     "height field", "sphere", "capsule",
+                          "ellipsoid", "cylinder",     "box",    "mesh"};
+  const int type = m->geom_type[geom];
+  return std::string(type >= 0 && type < 8 ? shapes[type] : "shape") + " " + GeomName(m, geom);
+}
+
 }  // namespace
 
 std::optional<std::string> GeomTheGroundTruthCannotHold(const Scene& scene, double height_m) {
@@ -71,6 +89,109 @@ std::optional<std::string> GeomTheGroundTruthCannotHold(const Scene& scene, doub
            " m, where this run is scored: the 2-D ground truth (walls.csv, the line and occupancy "
            "scores) holds only upright boxes, cylinders and capsules, and spheres, so it would "
            "score what the sensors see of it as wrong; make it of those (worlds/README.md)";
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> WorldGeomInTheRobotsGroup(const Scene& scene) {
+  const mjModel* m = scene.model();
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (m->geom_group[g] != Scene::kRobotGeomGroup || IsOnTheRobot(scene, g)) continue;
+    return "its " + ShapeAndName(m, g) + " is in geom group " +
+           std::to_string(Scene::kRobotGeomGroup) +
+           ", the robot's: the sensors' rays, the ground truth, the bumpers and the spawn check "
+           "skip that group as the robot's, while the robot still collides with it (an invisible "
+           "wall); put it in another group (worlds/README.md)";
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> WorldGeomTheRobotPassesThrough(const Scene& scene) {
+  const mjModel* m = scene.model();
+  const mjData* d = scene.data();
+  // What the robot's geoms collide with, all together, and how high the robot reaches.
+  int robot_contype = 0, robot_conaffinity = 0;
+  double robot_top_m = 0.0;
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (!IsOnTheRobot(scene, g)) continue;
+    robot_contype |= m->geom_contype[g];
+    robot_conaffinity |= m->geom_conaffinity[g];
+    if (m->geom_contype[g] || m->geom_conaffinity[g]) {
+      robot_top_m = std::max(robot_top_m, d->geom_xpos[3 * g + 2] + m->geom_rbound[g]);
+    }
+  }
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (IsOnTheRobot(scene, g) || m->body_weldid[m->geom_bodyid[g]] != 0) continue;
+    if ((m->geom_contype[g] & robot_conaffinity) || (robot_contype & m->geom_conaffinity[g])) {
+      continue;
+    }
+    // A plane is infinite; anything else only matters where the robot could meet it.
+    const bool plane = m->geom_type[g] == mjGEOM_PLANE;
+    const double z_m = d->geom_xpos[3 * g + 2], rbound = m->geom_rbound[g];
+    if (!plane && (z_m - rbound > robot_top_m || z_m + rbound < 0.0)) continue;
+    return "its " + ShapeAndName(m, g) + " collides with no geom of the robot (contype " +
+           std::to_string(m->geom_contype[g]) + ", conaffinity " +
+           std::to_string(m->geom_conaffinity[g]) + "; the robot's " +
+           std::to_string(robot_contype) + " and " + std::to_string(robot_conaffinity) +
+           "): the robot would " +
+           (plane ? std::string("fall through it") : std::string("drive through it")) +
+           " while its sensors see it" +
+           (plane ? std::string("") : std::string(" and the ground truth holds it")) +
+           "; leave contype and conaffinity at 1 (worlds/README.md)";
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> WorldGeomThatChangesTheRobotsContacts(const Scene& scene) {
+  const mjModel* m = scene.model();
+  int robot_priority = 0;
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (IsOnTheRobot(scene, g)) robot_priority = std::max(robot_priority, m->geom_priority[g]);
+  }
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (IsOnTheRobot(scene, g)) continue;
+    if (m->geom_margin[g] != m->geom_gap[g]) {
+      const double held_m = m->geom_margin[g] - m->geom_gap[g];
+      return "its " + ShapeAndName(m, g) + " sets margin " +
+             msgs::ShortestNumber(m->geom_margin[g]) + " m and gap " +
+             msgs::ShortestNumber(m->geom_gap[g]) +
+             " m: MuJoCo holds the robot's contacts with it " +
+             msgs::ShortestNumber(std::abs(held_m)) + " m " +
+             (held_m > 0 ? "apart (the robot rides above a floor so written and stops short of a "
+                           "wall)"
+                         : "deep (the robot sinks into a floor so written and into a wall)") +
+             ", so its wheels and sensors are not where its file puts them; remove margin and gap "
+             "(worlds/README.md)";
+    }
+    if (robot_priority > 0 && m->geom_priority[g] >= robot_priority) {
+      return "its " + ShapeAndName(m, g) + " sets contact priority " +
+             std::to_string(m->geom_priority[g]) + ", at least the robot's " +
+             std::to_string(robot_priority) +
+             ": its friction, condim and solref would override or mix into those of the robot's "
+             "wheels and casters, which the robot's file sets whatever the world's; remove "
+             "priority (worlds/README.md)";
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> WorldGeomNoSensorSees(const Scene& scene) {
+  const mjModel* m = scene.model();
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (IsOnTheRobot(scene, g) || m->body_weldid[m->geom_bodyid[g]] != 0 ||
+        m->geom_type[g] == mjGEOM_PLANE || IsRayVisibleGeom(m, g)) {
+      continue;
+    }
+    const int material = m->geom_matid[g];
+    const char* material_name = material >= 0 ? mj_id2name(m, mjOBJ_MATERIAL, material) : nullptr;
+    const std::string whose =
+        material < 0 ? std::string("its rgba")
+                     : "its material " + (material_name ? "'" + std::string(material_name) + "'"
+                                                        : "#" + std::to_string(material));
+    return "its " + ShapeAndName(m, g) + " is fully transparent (" + whose +
+           " has alpha 0): MuJoCo's rays skip it, so no laser, sonar or IR beam sees it, while "
+           "the robot collides with it and the ground truth holds it; give it an alpha above 0 "
+           "(worlds/README.md)";
   }
   return std::nullopt;
 }
