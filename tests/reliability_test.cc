@@ -1479,13 +1479,18 @@ TEST_F(ReliabilityTest, AWorldGeomTheSensorsTruthAndRobotWouldTakeDifferentlyIsR
            {with(floor, floor + " group=\"3\""), "its plane geom 'floor' is in geom group 3"},
            {with(anchor, crate + "rgba=\"0.5 0.5 0.5 0\"/>"),
             "its box geom 'crate' is fully transparent (its rgba has alpha 0): MuJoCo's rays skip "
-            "it, so no laser, sonar or IR beam sees it"},
+            "it, so no laser, sonar or IR beam sees what the ground truth and the robot's bumpers "
+            "and wheels take for an obstacle"},
            {with(anchor,
                  "<geom name=\"crate\" type=\"box\" pos=\"0 0 0.25\" size=\"0.3 0.3 "
                  "0.25\" material=\"clear\"/>")
                 .replace(hall.find("<asset>"), 7,
                          "<asset><material name=\"clear\" rgba=\"1 1 1 0\"/>"),
             "its box geom 'crate' is fully transparent (its material 'clear' has alpha 0)"},
+           {with(anchor, crate + "rgba=\"1 1 1 0\" contype=\"0\" conaffinity=\"0\"/>"),
+            "its box geom 'crate' is fully transparent (its rgba has alpha 0): MuJoCo's rays skip "
+            "it, so no laser, sonar or IR beam sees what the ground truth takes (the robot passes "
+            "through it too) for an obstacle"},
            {with(anchor, crate + "contype=\"0\" conaffinity=\"0\"/>"),
             "its box geom 'crate' collides with no geom of the robot (contype 0, conaffinity 0; "
             "the robot's 1 and 1): the robot would drive through it"},

@@ -56,6 +56,31 @@ bool IsOnTheRobot(const Scene& scene, int geom) {
   return false;
 }
 
+// What the robot's geoms collide with, all together (MuJoCo's contype / conaffinity bits), and
+// the top of its colliding geoms' bounding spheres.
+struct RobotContactMasks {
+  int contype = 0, conaffinity = 0;
+  double top_m = 0.0;
+
+  explicit RobotContactMasks(const Scene& scene);
+  bool CollidesWith(const mjModel* m, int geom) const {
+    return (m->geom_contype[geom] & conaffinity) || (contype & m->geom_conaffinity[geom]);
+  }
+};
+
+RobotContactMasks::RobotContactMasks(const Scene& scene) {
+  const mjModel* m = scene.model();
+  const mjData* d = scene.data();
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (!IsOnTheRobot(scene, g)) continue;
+    contype |= m->geom_contype[g];
+    conaffinity |= m->geom_conaffinity[g];
+    if (m->geom_contype[g] || m->geom_conaffinity[g]) {
+      top_m = std::max(top_m, d->geom_xpos[3 * g + 2] + m->geom_rbound[g]);
+    }
+  }
+}
+
 // "plane geom 'floor'", "box geom 'crate'": the shape first, for the checks that name planes too.
 std::string ShapeAndName(const mjModel* m, int geom) {
   const char* shapes[] = {"plane",     "height field", "sphere", "capsule",
@@ -109,34 +134,27 @@ std::optional<std::string> WorldGeomInTheRobotsGroup(const Scene& scene) {
 std::optional<std::string> WorldGeomTheRobotPassesThrough(const Scene& scene) {
   const mjModel* m = scene.model();
   const mjData* d = scene.data();
-  // What the robot's geoms collide with, all together, and how high the robot reaches.
-  int robot_contype = 0, robot_conaffinity = 0;
-  double robot_top_m = 0.0;
+  const RobotContactMasks robot(scene);
   for (int g = 0; g < m->ngeom; ++g) {
-    if (!IsOnTheRobot(scene, g)) continue;
-    robot_contype |= m->geom_contype[g];
-    robot_conaffinity |= m->geom_conaffinity[g];
-    if (m->geom_contype[g] || m->geom_conaffinity[g]) {
-      robot_top_m = std::max(robot_top_m, d->geom_xpos[3 * g + 2] + m->geom_rbound[g]);
-    }
-  }
-  for (int g = 0; g < m->ngeom; ++g) {
-    if (IsOnTheRobot(scene, g) || m->body_weldid[m->geom_bodyid[g]] != 0) continue;
-    if ((m->geom_contype[g] & robot_conaffinity) || (robot_contype & m->geom_conaffinity[g])) {
+    if (IsOnTheRobot(scene, g) || m->body_weldid[m->geom_bodyid[g]] != 0 ||
+        robot.CollidesWith(m, g)) {
       continue;
     }
-    // A plane is infinite; anything else only matters where the robot could meet it.
+    // A plane is infinite; anything else only matters where the robot could meet it, and one no
+    // ray sees either is WorldGeomNoSensorSees'.
     const bool plane = m->geom_type[g] == mjGEOM_PLANE;
     const double z_m = d->geom_xpos[3 * g + 2], rbound = m->geom_rbound[g];
-    if (!plane && (z_m - rbound > robot_top_m || z_m + rbound < 0.0)) continue;
+    if (!plane && (z_m - rbound > robot.top_m || z_m + rbound < 0.0 || !IsRayVisibleGeom(m, g))) {
+      continue;
+    }
     return "its " + ShapeAndName(m, g) + " collides with no geom of the robot (contype " +
            std::to_string(m->geom_contype[g]) + ", conaffinity " +
            std::to_string(m->geom_conaffinity[g]) + "; the robot's " +
-           std::to_string(robot_contype) + " and " + std::to_string(robot_conaffinity) +
+           std::to_string(robot.contype) + " and " + std::to_string(robot.conaffinity) +
            "): the robot would " +
-           (plane ? std::string("fall through it") : std::string("drive through it")) +
-           " while its sensors see it" +
-           (plane ? std::string("") : std::string(" and the ground truth holds it")) +
+           (plane ? std::string("fall through it")
+                  : std::string("drive through it while its sensors see it and the ground truth "
+                                "holds it")) +
            "; leave contype and conaffinity at 1 (worlds/README.md)";
   }
   return std::nullopt;
@@ -189,9 +207,12 @@ std::optional<std::string> WorldGeomNoSensorSees(const Scene& scene) {
                      : "its material " + (material_name ? "'" + std::string(material_name) + "'"
                                                         : "#" + std::to_string(material));
     return "its " + ShapeAndName(m, g) + " is fully transparent (" + whose +
-           " has alpha 0): MuJoCo's rays skip it, so no laser, sonar or IR beam sees it, while "
-           "the robot collides with it and the ground truth holds it; give it an alpha above 0 "
-           "(worlds/README.md)";
+           " has alpha 0): MuJoCo's rays skip it, so no laser, sonar or IR beam sees what the "
+           "ground truth" +
+           (RobotContactMasks(scene).CollidesWith(m, g)
+                ? " and the robot's bumpers and wheels take"
+                : " takes (the robot passes through it too)") +
+           " for an obstacle; give it an alpha above 0 (worlds/README.md)";
   }
   return std::nullopt;
 }
