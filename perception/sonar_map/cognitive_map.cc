@@ -11,7 +11,7 @@
 #include <utility>
 
 #include "msgs/shortest_number.h"
-#include "perception/sonar_map/cell_clusters.h"
+#include "perception/sonar_map/faces_heard_apart.h"
 #include "perception/sonar_map/line_fit.h"
 
 namespace plywood::perception {
@@ -682,12 +682,13 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
           SplitIntoRectangles(cells, options.obstacle_split_saving, kMaxSplitDepth);
       if (cut_unheard_gaps) {
         // A piece whose faces lie farther apart than obstacle_join_m with nothing heard between
-        // them: one obstacle each, cut as a blob is. Pieces the cut above already separated keep
-        // their order (sides snap to earlier lines).
+        // them, and a face of one heard from the side the other lies on: one obstacle each, cut
+        // as a blob is (faces heard only from outside are one box seen from two sides). Pieces
+        // the cut above already separated keep their order (sides snap to earlier lines).
         std::vector<std::vector<Eigen::Vector2i>> apart;
         for (auto& piece : pieces) {
           std::vector<std::vector<Eigen::Vector2i>> groups =
-              ClustersWithinGap(piece, join_gap_cells);
+              ClustersHeardApart(piece, join_gap_cells, *beam_free, options.beam_free_min_passes);
           if (groups.size() == 1) {
             apart.push_back(std::move(piece));
             continue;

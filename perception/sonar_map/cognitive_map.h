@@ -90,13 +90,17 @@ struct CognitiveMapOptions {
   // (The reported map, with the axes' free space and obstacle_from_faces.) A piece (after the
   // cut into rectangles) whose faces lie more than obstacle_join_m apart, joined only by cells
   // never heard free (the unknown the blob grows over), is cut into one obstacle per group of
-  // faces, each cut into rectangles again: the blob grows over every cell not seen free, so two
-  // boxes whose gap the robot never saw became one blob, and when no cut saved
-  // obstacle_split_saving a rectangle spanned both and the gap (issue 14 round 41b, class C).
-  // Closer faces stay one piece, as obstacle_join_m would join them anyway. Off: with the
-  // classical model a box whose interior was never heard and only opposite faces were (more than
-  // obstacle_join_m apart) is cut into its faces and peeled away (docs/sonar_map.md, round 41b).
-  bool obstacle_cut_unheard_gaps = false;
+  // faces, each cut into rectangles again, where a face heard in one group faces the other: at
+  // least beam_free_min_passes echoes of the axes in one group's cells came from a transducer on
+  // the side where the other group wholly lies (ClustersHeardApart). The blob grows over every
+  // cell not seen free, so two boxes whose gap the robot never saw became one blob, and when no
+  // cut saved obstacle_split_saving a rectangle spanned both and the gap (issue 14 round 41b,
+  // class C). A box's faces all lie behind any face of it heard head-on, as seen from where it
+  // was heard, so one box seen from two sides (opposite faces heard from outside, its inside
+  // never) stays one: round 41b's cut without that cue cut such a box into its faces (classical
+  // model, generator seed 44 world 9 s2 0.031 -> 0.103; issue 14 round 42b). Closer faces stay
+  // one piece, as obstacle_join_m would join them anyway.
+  bool obstacle_cut_unheard_gaps = true;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
 };

@@ -900,7 +900,7 @@ LogOddsGrid RoomWithUnseen(const std::vector<Rect>& obstacles, const Rect& unsee
   return grid;
 }
 
-TEST(CognitiveMapTest, BoxesWhoseGapWasNeverHeardAreSeparateObstaclesNotOneRectangle) {
+TEST(CognitiveMapTest, BoxesHeardApartAcrossAGapNeverHeardAreSeparateObstaclesNotOneRectangle) {
   // An L open to the north-east (1.6 x 0.3 m arm, 0.3 x 0.8 m arm on its west end) and a box in
   // its notch, 0.4 m from the long arm and 0.5 m from the short one, the space between them never
   // heard: one blob through the unknown, whose extent no single cut shrinks by a quarter (each
@@ -909,25 +909,37 @@ TEST(CognitiveMapTest, BoxesWhoseGapWasNeverHeardAreSeparateObstaclesNotOneRecta
   const Rect box{1.80, 1.60, 2.60, 2.00};
   const Rect gap{1.30, 1.20, 2.60, 2.00};
   const LogOddsGrid grid = RoomWithUnseen({long_arm, short_arm, box}, gap);
-  const BeamFreeGrid no_axes = Beams({}, 0.0, 1.0);
   auto label_at = [](const CognitiveMap& map, const Eigen::Vector2d& p) {
     const int k = map.partitions.Find(p);
     EXPECT_GE(k, 0) << p.transpose();
     return k >= 0 ? map.partitions.partitions()[k].label : Label::kFree;
   };
-  const Eigen::Vector2d in_gap{1.55, 1.40};
+  const Eigen::Vector2d in_gap{1.55, 1.30};
+  // The short arm's east face heard head-on from the east along one row between the long arm and
+  // the box (y 1.40-1.45, echo at x 1.28): the box lies wholly on that side of the face, so it is
+  // no part of the L. The rest of the gap stays unheard.
+  constexpr double kPi = 3.14159265358979323846;
+  const BeamFreeGrid heard = Beams({{2.40, 1.425}}, kPi, 1.12);
   CognitiveMapOptions off;
   off.obstacle_cut_unheard_gaps = false;
-  const CognitiveMap before = BuildCognitiveMap(grid, kInside, off, &no_axes);
+  const CognitiveMap before = BuildCognitiveMap(grid, kInside, off, &heard);
   ASSERT_EQ(before.obstacles.size(), 1u);
   ExpectRectNear(before.obstacles[0], {1.00, 0.90, 2.60, 2.00});
-  CognitiveMapOptions on;
-  on.obstacle_cut_unheard_gaps = true;
-  const CognitiveMap after = BuildCognitiveMap(grid, kInside, on, &no_axes);
+  // On by default.
+  const CognitiveMap after = BuildCognitiveMap(grid, kInside, {}, &heard);
   // The L's two arms (cut as any L is) and the box, each its own rectangle; the gap is no obstacle.
   // (Either arm may keep the corner: both cuts save the same.)
   ASSERT_EQ(after.obstacles.size(), 3u);
-  EXPECT_NEAR(TotalArea(after.obstacles), long_arm.Area() + short_arm.Area() + box.Area(), kTol);
+  // The echoes place the short arm's east side (x 1.28, not the cell edge 1.30): the three tile
+  // the L and the box but the 2 cm strip the echoes moved that side in by.
+  const auto short_piece =
+      std::find_if(after.obstacles.begin(), after.obstacles.end(),
+                   [](const Rect& o) { return o.Contains(Eigen::Vector2d(1.15, 1.80)); });
+  ASSERT_NE(short_piece, after.obstacles.end());
+  EXPECT_NEAR(short_piece->x1, 1.28, kTol);
+  EXPECT_NEAR(
+      TotalArea(after.obstacles),
+      long_arm.Area() + short_arm.Area() + box.Area() - 0.02 * (short_arm.y1 - short_arm.y0), kTol);
   for (const Rect& o : after.obstacles)
     for (const Eigen::Vector2d& p :
          {Eigen::Vector2d(o.x0 + 0.01, o.y0 + 0.01), Eigen::Vector2d(o.x1 - 0.01, o.y1 - 0.01)})
@@ -936,16 +948,59 @@ TEST(CognitiveMapTest, BoxesWhoseGapWasNeverHeardAreSeparateObstaclesNotOneRecta
   EXPECT_EQ(label_at(after, in_gap), Label::kFree);
   ExpectTilesTheRoom(after);
   // The map the robot plans on (no axes' grid) keeps main's rectangle.
-  const CognitiveMap planning = BuildCognitiveMap(grid, kInside, on);
+  const CognitiveMap planning = BuildCognitiveMap(grid, kInside, {});
   ASSERT_EQ(planning.obstacles.size(), 1u);
   EXPECT_EQ(label_at(planning, in_gap), Label::kObstacle);
+  // Nothing heard that says two things (no face heard from between them): one rectangle, as a
+  // box heard on two sides must stay (next test).
+  const BeamFreeGrid no_axes = Beams({}, 0.0, 1.0);
+  const CognitiveMap unheard = BuildCognitiveMap(grid, kInside, {}, &no_axes);
+  ASSERT_EQ(unheard.obstacles.size(), 1u);
+  ExpectRectNear(unheard.obstacles[0], {1.00, 0.90, 2.60, 2.00});
   // A box nearer than obstacle_join_m (0.15 m from both arms) is one piece with the L: faces of
   // one obstacle the sonar heard with a short stretch missing are not cut apart.
   const Rect near_box{1.45, 1.35, 2.60, 2.00};
   const LogOddsGrid near = RoomWithUnseen({long_arm, short_arm, near_box}, gap);
-  const CognitiveMap joined = BuildCognitiveMap(near, kInside, on, &no_axes);
+  const CognitiveMap joined = BuildCognitiveMap(near, kInside, {}, &heard);
   ASSERT_EQ(joined.obstacles.size(), 1u);
   ExpectRectNear(joined.obstacles[0], {1.00, 0.90, 2.60, 2.00});
+}
+
+TEST(CognitiveMapTest, OneBoxHeardFromOutsideOnFacesFarApartStaysOneObstacle) {
+  // Generator seed 44 world 9 s2 (classical model), by hand: a 0.8 x 0.8 m box whose east and
+  // south faces were heard head-on from outside and the west end of its north face faintly; its
+  // west face and inside never heard. The north stretch lies more than obstacle_join_m from the
+  // L of the other two faces, joined to it by unknown cells only. No face was heard from the side
+  // the other group lies on (each group lies behind the other's faces): one box, whose extent is
+  // the faces'. Round 41b's cut without that cue made the L two slivers and the box was lost.
+  const Rect box{1.60, 1.20, 2.40, 2.00};
+  LogOddsGrid grid = RoomWithUnseen({}, box);
+  auto cell = [](double v) { return static_cast<int>(std::floor(v / kRes + 1e-9)); };
+  for (int iy = cell(1.20); iy < cell(2.00); ++iy) Mark(grid, cell(2.35), iy, 0.98);  // east
+  for (int ix = cell(1.60); ix < cell(2.40); ++ix) Mark(grid, ix, cell(1.20), 0.98);  // south
+  for (int ix = cell(1.60); ix < cell(1.90); ++ix) Mark(grid, ix, cell(1.95), 0.98);  // north
+  constexpr double kPi = 3.14159265358979323846;
+  BeamFreeGrid beams(TestGridGeometry(), {});
+  msgs::RangeRing ring;
+  ring.readings.push_back({msgs::Pose2D{0.0, 0.0, 0.0}, 0.62, true});
+  for (const double y : {1.325, 1.525, 1.725, 1.925})
+    for (int k = 0; k < 2; ++k) beams.Integrate(ring, {3.00, y, kPi});  // echo at x 2.38
+  ring.readings[0].range_m = 0.42;
+  for (const double x : {1.725, 1.925, 2.125, 2.325})
+    for (int k = 0; k < 2; ++k) beams.Integrate(ring, {x, 0.80, 0.5 * kPi});  // echo at y 1.22
+  // The box, its east and south sides where the echoes put them (2 cm inside the cell edges).
+  const Rect placed{box.x0, 1.22, 2.38, box.y1};
+  CognitiveMapOptions on;
+  on.obstacle_cut_unheard_gaps = true;
+  const CognitiveMap map = BuildCognitiveMap(grid, kInside, on, &beams);
+  ASSERT_EQ(map.obstacles.size(), 1u);
+  ExpectRectNear(map.obstacles[0], placed);
+  // So does main's map, which does not cut.
+  CognitiveMapOptions off;
+  off.obstacle_cut_unheard_gaps = false;
+  const CognitiveMap uncut = BuildCognitiveMap(grid, kInside, off, &beams);
+  ASSERT_EQ(uncut.obstacles.size(), 1u);
+  ExpectRectNear(uncut.obstacles[0], placed);
 }
 
 TEST(CognitiveMapTest, InvalidJoinDistanceOrFillThrowsNamingTheField) {
