@@ -12,6 +12,7 @@
 #include "perception/sonar_map/escape_cells.h"
 #include "perception/sonar_map/frontier_planner.h"
 #include "perception/sonar_map/obstacle_circuit.h"
+#include "perception/sonar_map/unknown_share.h"
 #include "robot/drive/diff_drive_kinematics.h"
 
 namespace plywood::perception {
@@ -126,6 +127,9 @@ void SonarExplorerOptions::Validate() const {
   RequireInRange("circuit_reach_m", circuit_reach_m, waypoint_tolerance_m, 1.0);
   RequirePositive("circuit_max_s", circuit_max_s);
   RequireNonNegative("circuit_same_m", circuit_same_m);
+  if (!(complete_unknown_share_max > 0.0 && complete_unknown_share_max <= 1.0))
+    throw std::invalid_argument("complete_unknown_share_max: must be in (0, 1], got " +
+                                msgs::ShortestNumber(complete_unknown_share_max));
 }
 
 SonarExplorer::SonarExplorer(const robot::DiffDriveSpec& spec, const SonarExplorerOptions& options,
@@ -305,6 +309,21 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
       MarkLooked(here);
       MarkLooked(grid_.CellCentre(cell.x(), cell.y()));
       frontier = PlanToAnyFrontier(planning, here);
+    }
+    // Nothing left, but more of the room the robot reports unknown than complete_unknown_share_max
+    // allows: the goals given up after blocked moves are tried once more (the blocked legs often
+    // stopped on a face beyond their ends, from one spot).
+    if (!(frontier && !frontier->empty()) && !abandoned_retried_ && !abandoned_.empty() &&
+        options_.complete_unknown_share_max < 1.0 &&
+        UnknownShareOfRoom(planning.cells, grid_, Map().room) >
+            options_.complete_unknown_share_max) {
+      std::vector<Eigen::Vector2d> given_up;
+      given_up.swap(abandoned_);
+      frontier = PlanToAnyFrontier(planning, here);
+      if (frontier && !frontier->empty())
+        abandoned_retried_ = true;
+      else
+        abandoned_ = std::move(given_up);
     }
     if (frontier && !frontier->empty()) {
       path_ = std::move(*frontier);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numbers>
 #include <stdexcept>
@@ -550,6 +551,16 @@ TEST(SonarExplorerTest, ContactClearanceNotAboveTheRobotRadiusThrowsNamingIt) {
   options.contact_clearance_m = options.robot_radius_m + 0.01;
   EXPECT_NO_THROW(MakeExplorer(options));
   options.contact_clearance_m = 0.0;
+  EXPECT_NO_THROW(MakeExplorer(options));
+}
+
+TEST(SonarExplorerTest, CompleteUnknownShareMaxOutsideZeroToOneThrowsNamingIt) {
+  SonarExplorerOptions options = ClassicalOptions();
+  for (const double bad : {0.0, -0.5, 1.01, std::numeric_limits<double>::quiet_NaN()}) {
+    options.complete_unknown_share_max = bad;
+    ExpectThrowsNaming(options, "complete_unknown_share_max");
+  }
+  options.complete_unknown_share_max = 1.0;  // off
   EXPECT_NO_THROW(MakeExplorer(options));
 }
 

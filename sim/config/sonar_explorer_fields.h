@@ -77,6 +77,7 @@ void VisitFields(A& a, perception::SonarExplorerOptions& o) {
   a("circuit_narrow", o.circuit_narrow);
   a("circuit_max_s", o.circuit_max_s);
   a("circuit_same_m", o.circuit_same_m);
+  a("complete_unknown_share_max", o.complete_unknown_share_max);
 }
 
 }  // namespace plywood::sim
