@@ -25,6 +25,9 @@ TruthScan MakeTruthScanAt(std::span<const sim::LaserRecord* const> records,
   TruthScan out;
   if (records.empty()) return out;
   if (poses.size() != records.size()) throw std::invalid_argument("X_WS: one pose per record");
+  if (walls.surface_of_segment.size() != walls.segments.size()) {
+    throw std::invalid_argument("walls: segments not joined into surfaces (JoinContinuingFaces)");
+  }
   const msgs::Pose2D X_WS0 = poses[0];
   std::vector<msgs::LaserScan> scans;
   std::vector<double> offsets;
@@ -47,18 +50,21 @@ TruthScan MakeTruthScanAt(std::span<const sim::LaserRecord* const> records,
                        record->hit_segment_ids.end());
   }
   const msgs::Pose2D X_S0W = X_WS0.Inverse();
-  out.truth.resize(walls.segments.size());
-  for (std::size_t k = 0; k < walls.segments.size(); ++k) {
+  out.truth.resize(walls.surfaces.size());
+  out.truth_segment_ids.resize(walls.surfaces.size());
+  for (std::size_t k = 0; k < walls.surfaces.size(); ++k) {
     const auto to_sensor = [&](const Eigen::Vector2d& p_W) {
       const msgs::Pose2D p = X_S0W * msgs::Pose2D{p_W.x(), p_W.y(), 0.0};
       return Eigen::Vector2d(p.x_m, p.y_m);
     };
-    out.truth[k].a = to_sensor(walls.segments[k].a);
-    out.truth[k].b = to_sensor(walls.segments[k].b);
+    out.truth[k].a = to_sensor(walls.surfaces[k].a);
+    out.truth[k].b = to_sensor(walls.surfaces[k].b);
+    out.truth_segment_ids[k] = walls.surfaces[k].segments.front();
   }
+  // A beam on any face of a surface observes the surface.
   for (int beam : out.points.beam_index) {
     const int segment = hit_segment[beam];
-    if (segment >= 0) ++out.truth[segment].observed_rays;
+    if (segment >= 0) ++out.truth[walls.surface_of_segment[segment]].observed_rays;
   }
   return out;
 }
@@ -85,7 +91,8 @@ std::vector<ExtractorScore> ScoreExtractors(std::span<const TruthScan> scans,
       result.score.Add(ScoreScanLines(lines, scan, config.scoring));
       ScanLines found;
       for (const perception::LineSegment& line : lines) {
-        found.matched_truth.push_back(perception::MatchSegment(line, scan.truth, config.scoring));
+        const int match = perception::MatchSegment(line, scan.truth, config.scoring);
+        found.matched_truth.push_back(match < 0 ? -1 : scan.truth_segment_ids[match]);
       }
       found.segments = std::move(lines);
       found.circles = std::move(features.circles);

@@ -14,16 +14,20 @@
 namespace plywood::eval {
 
 // One scan as the line scorer sees it: the used points in the sensor frame (S of the first record)
-// and every ground-truth wall face in that frame, each with the number of used points that hit it.
+// and every ground-truth wall surface (sim::WallSurface: faces continuing one another joined) in
+// that frame, each with the number of used points that hit it.
 struct TruthScan {
   perception::ScanPoints points;
   std::vector<perception::TruthSegment> truth;
+  // The walls.csv row naming each entry of `truth`: its surface's first face.
+  std::vector<int> truth_segment_ids;
 };
 
 // Builds a TruthScan from laser records taken from one spot (one record, or two back-to-back LMS
 // 200 whose sensor origins coincide): a return is used when range_min_m < r < range_max_m of its
 // scan and r <= range_cut_m. Poses are the ground truth ones.
-// @throws std::invalid_argument when the records' sensor origins are more than 1 mm apart.
+// @throws std::invalid_argument when the records' sensor origins are more than 1 mm apart, or when
+// `walls` has no surfaces for its segments (sim::JoinContinuingFaces not run).
 TruthScan MakeTruthScan(std::span<const sim::LaserRecord* const> records,
                         const sim::GroundTruthWalls& walls, double range_cut_m);
 
@@ -33,8 +37,9 @@ TruthScan MakeTruthScanAt(std::span<const sim::LaserRecord* const> records,
                           std::span<const msgs::Pose2D> X_WS, const sim::GroundTruthWalls& walls,
                           double range_cut_m);
 
-// What an extractor found in one scan: its segments (sensor frame) and the index of the truth
-// segment each matched (perception::MatchSegment; -1 for none), for lines.csv.
+// What an extractor found in one scan: its segments (sensor frame) and the walls.csv row naming the
+// surface each matched (TruthScan::truth_segment_ids of perception::MatchSegment's match; -1 for
+// none), for lines.csv.
 struct ScanLines {
   std::vector<perception::LineSegment> segments;
   std::vector<int> matched_truth;

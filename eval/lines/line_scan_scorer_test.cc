@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <numbers>
 #include <sstream>
 
@@ -151,6 +152,51 @@ TEST(LineScanScorerTest, SplitAndMergeMeetsAcceptanceOnUnseenWorlds) {
     EXPECT_GE(sm.score.Recall(), 0.95) << name;
     EXPECT_GE(sm.score.Precision(), 0.95) << name;
     EXPECT_GE(r.WallsVisible(), 4.0) << name;
+  }
+}
+
+// seed000_room_1 with its south wall written as two 1.618 m boxes meeting at x = 0.3 (the second
+// half last, so every other face keeps its walls.csv row) is the same room to every scorer: from
+// the very same scans, 4 walls visible and every extractor's recall 1, and each line matches the
+// same walls.csv row (the south wall's first half's inner face names the joined surface). Scored
+// face by face it was 5 walls and recall 0.8: a line along the wall matched one half.
+TEST(LineScanScorerTest, AWallWrittenAsTwoBoxesEndToEndScoresAsOneWall) {
+  std::ifstream in(testing::SourceRoot() / "worlds/seed000_room_1.xml");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string one_box = text.str();
+  const std::string wall_0 =
+      "<geom name=\"wall_0\" class=\"wall\" pos=\"0.3 -1.109 0.5\" size=\"1.618 0.009 0.5\"/>";
+  ASSERT_NE(one_box.find(wall_0), std::string::npos);
+  std::string two_boxes = one_box;
+  two_boxes.replace(two_boxes.find(wall_0), wall_0.size(),
+                    "<geom name=\"wall_0a\" class=\"wall\" pos=\"-0.509 -1.109 0.5\" "
+                    "size=\"0.809 0.009 0.5\"/>");
+  two_boxes.replace(two_boxes.find("</worldbody>"), 0,
+                    "<geom name=\"wall_0b\" class=\"wall\" pos=\"1.109 -1.109 0.5\" "
+                    "size=\"0.809 0.009 0.5\"/>\n");
+  const Seed000RoomResult one = RunWorld("one_box", one_box, 2);
+  const Seed000RoomResult two = RunWorld("two_boxes", two_boxes, 2);
+  ASSERT_EQ(one.scans.size(), 2u);
+  ASSERT_EQ(two.scans.size(), 2u);
+  for (std::size_t s = 0; s < 2; ++s) {
+    EXPECT_EQ(one.scans[s].points.points, two.scans[s].points.points) << "scan " << s;
+  }
+  EXPECT_EQ(two.rig.walls.segments.size(), 20u);
+  EXPECT_EQ(one.WallsVisible(), 4.0);
+  EXPECT_EQ(two.WallsVisible(), 4.0);
+  ASSERT_EQ(two.scores.size(), one.scores.size());
+  for (std::size_t e = 0; e < one.scores.size(); ++e) {
+    const ExtractorScore& a = one.scores[e];
+    const ExtractorScore& b = two.scores[e];
+    EXPECT_EQ(a.score.Recall(), 1.0) << a.name;
+    EXPECT_EQ(b.score.Recall(), 1.0) << b.name;
+    EXPECT_EQ(b.score.extracted, a.score.extracted) << b.name;
+    EXPECT_EQ(b.score.extracted_matched, a.score.extracted_matched) << b.name;
+    ASSERT_EQ(b.scans.size(), a.scans.size());
+    for (std::size_t s = 0; s < a.scans.size(); ++s) {
+      EXPECT_EQ(b.scans[s].matched_truth, a.scans[s].matched_truth) << b.name << " scan " << s;
+    }
   }
 }
 

@@ -97,13 +97,16 @@ int Seed004RansacProtocol(const ProtocolContext& context) {
     const Cloud cloud = Accumulate(record, odometry, scan_stride, beam_stride);
     std::vector<std::vector<int>> inliers;
     const auto lines = extractor.ExtractFromPoints(cloud.points_W, &inliers);
-    std::vector<perception::TruthSegment> truth(record.walls.segments.size());
+    // Scored against the wall surfaces (faces continuing one another joined), each named in the
+    // csv files by its first walls.csv segment.
+    const std::vector<sim::WallSurface>& surfaces = record.walls.surfaces;
+    std::vector<perception::TruthSegment> truth(surfaces.size());
     for (std::size_t k = 0; k < truth.size(); ++k) {
-      truth[k].a = record.walls.segments[k].a;
-      truth[k].b = record.walls.segments[k].b;
+      truth[k].a = surfaces[k].a;
+      truth[k].b = surfaces[k].b;
     }
     for (int s : cloud.hit_segment)
-      if (s >= 0) ++truth[s].observed_rays;
+      if (s >= 0) ++truth[record.walls.surface_of_segment[s]].observed_rays;
     perception::LineScoringOptions scoring;
     scoring.min_observed_rays = ransac.min_points;  // faces with enough cloud points to be a line
     const perception::LineScore score =
@@ -113,7 +116,8 @@ int Seed004RansacProtocol(const ProtocolContext& context) {
         "line,alpha_rad,r_m,ax_m,ay_m,bx_m,by_m,points,matched_face,non_wall_fraction\n";
     std::vector<bool> matched(lines.size());
     for (std::size_t l = 0; l < lines.size(); ++l) {
-      const int face = perception::MatchSegment(lines[l], truth, scoring);
+      const int match = perception::MatchSegment(lines[l], truth, scoring);
+      const int face = match < 0 ? -1 : surfaces[match].segments.front();
       matched[l] = face >= 0;
       line_rows.push_back({"", 0, name, lines[l], face, 0});
       int non_wall = 0;

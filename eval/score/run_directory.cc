@@ -4,6 +4,7 @@
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
 #include "sim/runner/run_directory.h"
+#include "sim/world/continuing_faces.h"
 
 namespace plywood::eval {
 
@@ -53,6 +54,7 @@ sim::GroundTruthWalls ReadWallsCsv(const std::filesystem::path& path) {
     s.b = {table.Number(row, 5, "bx_m"), table.Number(row, 6, "by_m")};
     walls.segments.push_back(s);
   }
+  sim::JoinContinuingFaces(&walls);  // scored as the run scored them (sim/world/continuing_faces.h)
   return walls;
 }
 

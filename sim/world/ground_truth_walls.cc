@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "msgs/shortest_number.h"
+#include "sim/world/continuing_faces.h"
 
 namespace plywood::sim {
 namespace {
@@ -188,6 +189,7 @@ GroundTruthWalls ExtractGroundTruthWalls(const mjModel* model, const GroundTruth
         break;
     }
   }
+  JoinContinuingFaces(&walls);
   return walls;
 }
 

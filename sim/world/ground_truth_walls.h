@@ -65,8 +65,24 @@ struct WallCircle {
   int geom_id = -1;
 };
 
+// One wall surface as every scorer counts it (lines' recall and walls_visible, seed 004's RANSAC
+// scores): the faces of one or more boxes that continue one another on one line
+// (sim/world/continuing_faces.h), so a wall written as two boxes end to end is one wall. Oriented
+// like its first face; a and b are the outermost ends of its faces.
+struct WallSurface {
+  Eigen::Vector2d a = Eigen::Vector2d::Zero();
+  Eigen::Vector2d b = Eigen::Vector2d::Zero();
+  // Indices into GroundTruthWalls::segments (walls.csv rows), ascending; the first names the
+  // surface in lines.csv.
+  std::vector<int> segments;
+};
+
 struct GroundTruthWalls {
   std::vector<WallSegment> segments;  // four per box, in geom order then face order
+  // The segments joined into surfaces (JoinContinuingFaces): every segment in exactly one, in the
+  // order of their first segments; surface_of_segment[k] is segment k's surface.
+  std::vector<WallSurface> surfaces;
+  std::vector<int> surface_of_segment;
   std::vector<WallCircle> circles;
   // Static geoms that the 2-D description cannot represent (tilted boxes, cylinders and
   // capsules, ellipsoids, meshes, ...), never including planes: callers may warn or fall back to
@@ -84,9 +100,9 @@ bool IsStaticGeom(const mjModel* model, int geom_id);
 std::vector<UprightGeom> ExtractUprightGeoms(const mjModel* model,
                                              const GroundTruthOptions& options = {});
 
-// The world's wall segments (four vertical faces per upright box) and circles (upright
-// cylinders and capsules, spheres), skipping planes and the robot's geoms. See UprightGeom for what
-// "static" and "upright" mean.
+// The world's wall segments (four vertical faces per upright box), their surfaces and circles
+// (upright cylinders and capsules, spheres), skipping planes and the robot's geoms. See UprightGeom
+// for what "static" and "upright" mean.
 // @throws std::invalid_argument if `options` is invalid.
 GroundTruthWalls ExtractGroundTruthWalls(const mjModel* model,
                                          const GroundTruthOptions& options = {});
