@@ -59,7 +59,7 @@ TruthScan MakeTruthScanAt(std::span<const sim::LaserRecord* const> records,
     };
     out.truth[k].a = to_sensor(walls.surfaces[k].a);
     out.truth[k].b = to_sensor(walls.surfaces[k].b);
-    out.truth_segment_ids[k] = walls.surfaces[k].segments.front();
+    out.truth_segment_ids[k] = walls.surfaces[k].name;
   }
   // A beam on any face of a surface observes the surface.
   for (int beam : out.points.beam_index) {

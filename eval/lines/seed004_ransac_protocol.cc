@@ -98,7 +98,7 @@ int Seed004RansacProtocol(const ProtocolContext& context) {
     std::vector<std::vector<int>> inliers;
     const auto lines = extractor.ExtractFromPoints(cloud.points_W, &inliers);
     // Scored against the wall surfaces (faces continuing one another joined), each named in the
-    // csv files by its first walls.csv segment.
+    // csv files by its longest face (sim::WallSurface::name).
     const std::vector<sim::WallSurface>& surfaces = record.walls.surfaces;
     std::vector<perception::TruthSegment> truth(surfaces.size());
     for (std::size_t k = 0; k < truth.size(); ++k) {
@@ -117,7 +117,7 @@ int Seed004RansacProtocol(const ProtocolContext& context) {
     std::vector<bool> matched(lines.size());
     for (std::size_t l = 0; l < lines.size(); ++l) {
       const int match = perception::MatchSegment(lines[l], truth, scoring);
-      const int face = match < 0 ? -1 : surfaces[match].segments.front();
+      const int face = match < 0 ? -1 : surfaces[match].name;
       matched[l] = face >= 0;
       line_rows.push_back({"", 0, name, lines[l], face, 0});
       int non_wall = 0;

@@ -55,17 +55,41 @@ void JoinContinuingFaces(GroundTruthWalls* walls) {
     const int r = root(k);
     if (slot[r] < 0) {
       slot[r] = static_cast<int>(walls->surfaces.size());
-      walls->surfaces.push_back({faces[k].a, faces[k].b, {}});
+      walls->surfaces.emplace_back();
     }
     walls->surface_of_segment[k] = slot[r];
     WallSurface& surface = walls->surfaces[slot[r]];
     surface.segments.push_back(k);
-    // The root is the surface's first face (roots are the smallest index): ends are measured along
-    // it and taken from the faces themselves, so a lone face keeps its own ends bit for bit.
-    const WallSegment& first = faces[r];
-    const Eigen::Vector2d u = first.b - first.a;
-    if (u.dot(faces[k].a - first.a) < u.dot(surface.a - first.a)) surface.a = faces[k].a;
-    if (u.dot(faces[k].b - first.a) > u.dot(surface.b - first.a)) surface.b = faces[k].b;
+    // Faces come in ascending rows: a face longer by more than the tolerance names the surface,
+    // so equal faces (lengths differing only by rounding) leave it to the lowest row.
+    if (surface.name < 0 ||
+        faces[k].LengthM() > faces[surface.name].LengthM() + kContinuingFaceToleranceM) {
+      surface.name = k;
+    }
+  }
+  // Ends on the longest face's line: the extreme ends of the faces projected onto it (the joined
+  // faces lie within the tolerance of it), the face's own ends where they are the extremes, so a
+  // lone face keeps its ends bit for bit.
+  for (WallSurface& surface : walls->surfaces) {
+    const WallSegment& longest = faces[surface.name];
+    const Eigen::Vector2d u = (longest.b - longest.a) / longest.LengthM();
+    double t_min = 0.0, t_max = longest.LengthM();
+    surface.a = longest.a;
+    surface.b = longest.b;
+    for (int k : surface.segments) {
+      if (k == surface.name) continue;  // its own ends are a and b already, exactly
+      for (const Eigen::Vector2d& end : {faces[k].a, faces[k].b}) {
+        const double t = u.dot(end - longest.a);
+        if (t < t_min) {
+          t_min = t;
+          surface.a = longest.a + t * u;
+        }
+        if (t > t_max) {
+          t_max = t;
+          surface.b = longest.a + t * u;
+        }
+      }
+    }
   }
 }
 

@@ -22,8 +22,9 @@ namespace plywood::sim {
 inline constexpr double kContinuingFaceToleranceM = 1e-5;
 
 // Fills walls->surfaces and walls->surface_of_segment from walls->segments: each surface is a
-// maximal set of faces linked by "continues", its ends the outermost ends of its faces (a surface
-// of one face is that face, exactly).
+// maximal set of faces linked by "continues", on its longest face's line and named by it, its ends
+// the outermost ends of its faces projected onto that line (a surface of one face is that face,
+// exactly).
 void JoinContinuingFaces(GroundTruthWalls* walls);
 
 }  // namespace plywood::sim

@@ -67,14 +67,18 @@ struct WallCircle {
 
 // One wall surface as every scorer counts it (lines' recall and walls_visible, seed 004's RANSAC
 // scores): the faces of one or more boxes that continue one another on one line
-// (sim/world/continuing_faces.h), so a wall written as two boxes end to end is one wall. Oriented
-// like its first face; a and b are the outermost ends of its faces.
+// (sim/world/continuing_faces.h), so a wall written as two boxes end to end is one wall. It lies
+// on its longest face's line, oriented like it, and a and b are the outermost ends of its faces
+// projected onto that line (a surface of one face is that face, bit for bit).
 struct WallSurface {
   Eigen::Vector2d a = Eigen::Vector2d::Zero();
   Eigen::Vector2d b = Eigen::Vector2d::Zero();
-  // Indices into GroundTruthWalls::segments (walls.csv rows), ascending; the first names the
-  // surface in lines.csv.
+  // Indices into GroundTruthWalls::segments (walls.csv rows), ascending.
   std::vector<int> segments;
+  // The row naming the surface in lines.csv: its longest face (the lowest row among faces equal to
+  // within the join tolerance), so a reflex corner's long inner face keeps its own row when an
+  // 18 mm end face continues it.
+  int name = -1;
 };
 
 struct GroundTruthWalls {
