@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
+
+#include "sim/world/linked_groups.h"
 
 namespace plywood::eval {
 namespace {
@@ -30,22 +31,12 @@ bool Joinable(const sim::WallSegment& p, const sim::WallSegment& q, double max_g
 std::vector<JoinedFace> JoinCollinearFaces(const std::vector<sim::WallSegment>& faces,
                                            double max_gap_m) {
   const int n = static_cast<int>(faces.size());
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
-  const auto root = [&](int k) {
-    while (parent[k] != k) k = parent[k] = parent[parent[k]];
-    return k;
-  };
-  for (int i = 0; i < n; ++i) {
-    for (int j = i + 1; j < n; ++j) {
-      if (Joinable(faces[i], faces[j], max_gap_m))
-        parent[std::max(root(i), root(j))] = std::min(root(i), root(j));
-    }
-  }
+  const std::vector<int> group =
+      sim::LinkedGroups(n, [&](int i, int j) { return Joinable(faces[i], faces[j], max_gap_m); });
   std::vector<JoinedFace> joined;
   std::vector<int> slot(n, -1);
   for (int k = 0; k < n; ++k) {
-    const int r = root(k);
+    const int r = group[k];
     if (slot[r] < 0) {
       slot[r] = static_cast<int>(joined.size());
       joined.push_back({faces[k].a, faces[k].b, {}});

@@ -3,8 +3,9 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <vector>
+
+#include "sim/world/linked_groups.h"
 
 namespace plywood::sim {
 namespace {
@@ -34,25 +35,13 @@ bool Continues(const WallSegment& p, const WallSegment& q) {
 void JoinContinuingFaces(GroundTruthWalls* walls) {
   const std::vector<WallSegment>& faces = walls->segments;
   const int n = static_cast<int>(faces.size());
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
-  const auto root = [&](int k) {
-    while (parent[k] != k) k = parent[k] = parent[parent[k]];
-    return k;
-  };
-  for (int i = 0; i < n; ++i) {
-    for (int j = i + 1; j < n; ++j) {
-      if (Continues(faces[i], faces[j])) {
-        const int ri = root(i), rj = root(j);
-        parent[std::max(ri, rj)] = std::min(ri, rj);
-      }
-    }
-  }
+  const std::vector<int> group =
+      LinkedGroups(n, [&](int i, int j) { return Continues(faces[i], faces[j]); });
   walls->surfaces.clear();
   walls->surface_of_segment.assign(n, -1);
-  std::vector<int> slot(n, -1);  // by root: the surface's index
+  std::vector<int> slot(n, -1);  // by group: the surface's index
   for (int k = 0; k < n; ++k) {
-    const int r = root(k);
+    const int r = group[k];
     if (slot[r] < 0) {
       slot[r] = static_cast<int>(walls->surfaces.size());
       walls->surfaces.emplace_back();
