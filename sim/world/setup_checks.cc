@@ -82,11 +82,16 @@ RobotContactMasks::RobotContactMasks(const Scene& scene) {
 }
 
 // "plane geom 'floor'", "box geom 'crate'": the shape first, for the checks that name planes too.
-std::string ShapeAndName(const mjModel* m, int geom) {
+// A geom's shape in words ("box", "height field"), in mjtGeom order.
+std::string Shape(const mjModel* m, int geom) {
   const char* shapes[] = {"plane",     "height field", "sphere", "capsule",
                           "ellipsoid", "cylinder",     "box",    "mesh"};
   const int type = m->geom_type[geom];
-  return std::string(type >= 0 && type < 8 ? shapes[type] : "shape") + " " + GeomName(m, geom);
+  return type >= 0 && type < 8 ? shapes[type] : "shape";
+}
+
+std::string ShapeAndName(const mjModel* m, int geom) {
+  return Shape(m, geom) + " " + GeomName(m, geom);
 }
 
 }  // namespace
@@ -99,9 +104,8 @@ std::optional<std::string> GeomTheGroundTruthCannotHold(const Scene& scene, doub
   for (const int g : walls.unrepresented_geom_ids) {
     if (!IsStaticWorldGeom(scene, g)) continue;
     const int type = m->geom_type[g];
-    const char* names[] = {"a plane",      "a height field", "a sphere", "a capsule",
-                           "an ellipsoid", "a cylinder",     "a box",    "a mesh"};
-    std::string what = type >= 0 && type < 8 ? names[type] : "a shape";
+    const std::string shape = Shape(m, g);
+    std::string what = (shape.front() == 'e' ? "an " : "a ") + shape;  // "an" for the one vowel
     if (type == mjGEOM_BOX || type == mjGEOM_CYLINDER || type == mjGEOM_CAPSULE) {
       // Only tilted ones reach here: upright ones the truth holds.
       const double tilt_deg =
