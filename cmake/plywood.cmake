@@ -35,6 +35,16 @@ function(plywood_enforce_hardware_only target folder)
   plywood_enforce_includes(${target} "${folder}")
 endfunction()
 
+# A cold build (CI builds everything from scratch, the hardware layers twice) compiled each library
+# source on its own: the inline and template code of the headers they share (Eigen, the standard
+# library, the layer's own) was instantiated and optimised again in every object. Unity batches
+# compile several sources in one translation unit, which roughly halves a library's compile time.
+# The price: names local to a source (anonymous namespace) must be unique within its library, since
+# sources share a batch; a clash fails the build, it cannot change a result. Turn it off for
+# quicker rebuilds of a single file while working on one library.
+option(PLYWOOD_UNITY_BUILD "Compile each library's sources in unity batches" ON)
+set(PLYWOOD_UNITY_BUILD_BATCH_SIZE 8 CACHE STRING "Sources per unity batch")
+
 # Adds a library named `target` from every non-test .cc in the current folder and its subfolders.
 function(plywood_add_folder_library target)
   file(GLOB_RECURSE sources CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/*.cc")
@@ -42,6 +52,10 @@ function(plywood_add_folder_library target)
   add_library(${target} STATIC ${sources})
   # Position-independent so a user's plug-in (a shared library) can link the installed archives.
   set_target_properties(${target} PROPERTIES POSITION_INDEPENDENT_CODE ON)
+  if(PLYWOOD_UNITY_BUILD)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE
+                                               ${PLYWOOD_UNITY_BUILD_BATCH_SIZE})
+  endif()
   target_include_directories(${target} PUBLIC "$<BUILD_INTERFACE:${PROJECT_SOURCE_DIR}>"
                                               "$<INSTALL_INTERFACE:include>")
   # The headers need C++20 in a user's project too (the installed package carries it).

@@ -5,14 +5,13 @@
 
 #include "eval/geometric_map/geometric_map_run.h"
 #include "eval/lines/line_scan_scorer.h"
+#include "msgs/angle_units.h"
 #include "perception/geometric_map/geometric_mapper.h"
 #include "perception/sonar_map/sonar_explorer.h"
 #include "render/overlay.h"
 
 namespace plywood::viewer {
 namespace {
-
-constexpr double kDegToRad = std::numbers::pi / 180.0;
 
 double SiteHeight(const sim::Scene& scene, const std::string& name, double fallback) {
   const std::optional<int> site = scene.FindSite(name);

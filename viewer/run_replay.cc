@@ -11,6 +11,7 @@
 #include "eval/score/csv_table.h"
 #include "eval/score/run_directory.h"
 #include "eval/score/run_world_check.h"
+#include "msgs/angle_units.h"
 #include "perception/logs/carmen_log.h"
 #include "render/geom_footprint.h"
 #include "render/overlay.h"
@@ -28,8 +29,6 @@
 
 namespace plywood::viewer {
 namespace {
-
-constexpr double kDegToRad = std::numbers::pi / 180.0;
 
 // The index of the last element whose time is at or before t_s (0 when none is).
 template <typename Vector, typename TimeOf>

@@ -6,6 +6,7 @@
 #include <map>
 #include <numbers>
 
+#include "msgs/angle_units.h"
 #include "perception/lines/line_scoring.h"
 #include "render/overlay.h"
 #include "render/png_image.h"
@@ -19,7 +20,6 @@ namespace plywood::eval {
 namespace {
 
 using Json = nlohmann::ordered_json;
-constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
 double SegmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
                        const Eigen::Vector2d& b) {

@@ -5,14 +5,13 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "msgs/angle_units.h"
 #include "sim/config/config_archive.h"
 #include "sim/config/config_error.h"
 #include "sim/config/yaml_fields.h"
 
 namespace plywood::eval {
 namespace {
-
-constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
 void SetStageMetrics(sim::Metrics& m, const std::string& prefix, const UmbmarkStage& stage) {
   const robot::UmbmarkResult& r = stage.result;

@@ -11,7 +11,7 @@ using Json = nlohmann::ordered_json;
 
 Json Point(const Eigen::Vector2d& p) { return Json::array({p.x(), p.y()}); }
 
-Json Box(const perception::Rect& r) { return Json::array({r.x0, r.y0, r.x1, r.y1}); }
+Json RectJson(const perception::Rect& r) { return Json::array({r.x0, r.y0, r.x1, r.y1}); }
 
 template <typename T, typename F>
 Json List(const std::vector<T>& items, F&& to_json) {
@@ -27,12 +27,12 @@ Json CognitiveMapJson(const perception::CognitiveMap& map) {
   for (const auto& [a, b] : map.negative.pairs())
     if (a < b) forbidden.emplace_back(a, b);
   Json json = Json::object();
-  json["room"] = Box(map.room);
-  json["obstacles"] = List(map.obstacles, Box);
-  json["bridges"] = List(map.bridges, Box);
+  json["room"] = RectJson(map.room);
+  json["obstacles"] = List(map.obstacles, RectJson);
+  json["bridges"] = List(map.bridges, RectJson);
   json["corners"] = List(map.corners, Point);
   json["partitions"] = List(map.partitions.partitions(), [](const perception::Partition& p) {
-    return Json{{"rect", Box(p.rect)},
+    return Json{{"rect", RectJson(p.rect)},
                 {"label", p.label == perception::Label::kFree ? "free" : "obstacle"}};
   });
   json["negative_experience"] = List(forbidden, [](const std::pair<int, int>& d) {

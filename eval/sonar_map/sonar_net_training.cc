@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "eval/sonar_map/sonar_ground_truth.h"
+#include "msgs/angle_units.h"
 #include "perception/sonar_map/sonar_cell_model.h"
 #include "sim/config/robot_catalog.h"
 #include "sim/raycast/mujoco_ray_caster.h"
@@ -28,15 +29,13 @@
 namespace plywood::eval {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-struct Box {
+struct ObstacleBox {
   double cx, cy, hx, hy;
 };
 
 struct RandomRoom {
   double half_x = 0, half_y = 0;
-  std::vector<Box> obstacles;
+  std::vector<ObstacleBox> obstacles;
 };
 
 // Rooms 2-5 m by 2-4.5 m with 0-3 boxes (0.25-0.8 m) placed freely or against a wall: the kinds of
@@ -50,7 +49,7 @@ RandomRoom MakeRoom(std::mt19937_64& rng) {
   } while (std::abs(room.half_x - 1.75) < 0.05 && std::abs(room.half_y - 1.5) < 0.05);
   const int n = static_cast<int>(4 * u(rng));
   for (int i = 0; i < n; ++i) {
-    Box b;
+    ObstacleBox b;
     b.hx = 0.125 + 0.275 * u(rng);
     b.hy = 0.125 + 0.275 * u(rng);
     b.cx = (room.half_x - b.hx) * (2 * u(rng) - 1);
@@ -82,7 +81,7 @@ std::string RoomMjcf(const RandomRoom& room) {
     << " 0.5\"/>\n"
     << "<geom type=\"box\" pos=\"" << hx + t << " 0 0.5\" size=\"" << t << ' ' << hy
     << " 0.5\"/>\n";
-  for (const Box& b : room.obstacles)
+  for (const ObstacleBox& b : room.obstacles)
     s << "<geom type=\"box\" pos=\"" << b.cx << ' ' << b.cy << " 0.3\" size=\"" << b.hx << ' '
       << b.hy << " 0.3\"/>\n";
   s << "</worldbody></mujoco>\n";
@@ -125,7 +124,7 @@ void Generate(const RandomRoom& room, int poses, const std::filesystem::path& di
     const double y = (room.half_y - 0.3) * (2 * u(rng) - 1);
     const double theta = 2 * kPi * u(rng);
     bool clear = true;
-    for (const Box& b : room.obstacles)
+    for (const ObstacleBox& b : room.obstacles)
       if (std::abs(x - b.cx) < b.hx + 0.3 && std::abs(y - b.cy) < b.hy + 0.3) clear = false;
     if (!clear) continue;
     scene.PlaceRobot({x, y, theta});

@@ -4,13 +4,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "msgs/angle_units.h"
 #include "msgs/pose2d.h"
 #include "perception/geometric_map/option_checks.h"
 
 namespace plywood::perception {
 namespace {
-
-constexpr double kDegToRad = std::numbers::pi / 180.0;
 
 double Direction(const MapSegment& s) {
   const Eigen::Vector2d d = s.line.end - s.line.start;

@@ -6,13 +6,12 @@
 #include <map>
 #include <numbers>
 
+#include "msgs/angle_units.h"
 #include "perception/geometric_map/option_checks.h"
 
 namespace plywood::perception {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDegToRad = kPi / 180.0;
 // Beyond 45 deg the map's walls, square to each other, look alike.
 constexpr double kMaxHeadingWindowRad = kPi / 4.0;
 

@@ -5,12 +5,12 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "msgs/angle_units.h"
 #include "perception/geometric_map/option_checks.h"
 
 namespace plywood::perception {
 namespace {
 
-constexpr double kDegToRad = std::numbers::pi / 180.0;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 Eigen::Vector2d Direction(double angle_rad) { return {std::cos(angle_rad), std::sin(angle_rad)}; }

@@ -5,12 +5,11 @@
 #include <map>
 #include <numbers>
 
+#include "msgs/angle_units.h"
 #include "perception/geometric_map/option_checks.h"
 
 namespace plywood::perception {
 namespace {
-
-constexpr double kPi = std::numbers::pi;
 
 // Direction of a line modulo pi, in [0, pi).
 double LineDirection(double angle_rad) {

@@ -7,14 +7,13 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "msgs/angle_units.h"
 #include "msgs/shortest_number.h"
 #include "perception/logs/parse_number.h"
 #include "perception/logs/regular_file.h"
 
 namespace plywood::perception {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // One line's numbers, with its 1-based line number in the file (blank lines are skipped).
 struct Row {

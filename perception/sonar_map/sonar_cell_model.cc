@@ -5,13 +5,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/angle_units.h"
 #include "msgs/pose2d.h"
 #include "msgs/shortest_number.h"
 
 namespace plywood::perception {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 double Logit(double p) { return std::log(p / (1.0 - p)); }
 

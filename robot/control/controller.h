@@ -12,6 +12,7 @@
 #include "msgs/shortest_number.h"
 #include "msgs/wheel_speed_command.h"
 #include "robot/drive/diff_drive_spec.h"
+#include "robot/number_checks.h"
 
 namespace plywood::robot {
 
@@ -60,13 +61,8 @@ inline double StoppingSpeed(double previous, double cruise, double accel, double
 
 namespace internal {
 
-// Option checks shared by the controllers' Validate(); messages start with the field name.
-inline void RequirePositive(const std::string& field, double value) {
-  if (!std::isfinite(value) || value <= 0.0) {
-    throw std::invalid_argument(field + ": must be a finite number > 0, got " +
-                                msgs::ShortestNumber(value));
-  }
-}
+// Option checks shared by the controllers' Validate(), beside robot/number_checks.h's; messages
+// start with the field name.
 
 // A forward speed the wheels can drive: beyond max_wheel_speed_rad_s x wheel_radius_m the wheel
 // limits cap it, so the run would not be the one written (speed_m_s: 1e300 drove at 1.2 m/s).
@@ -78,13 +74,6 @@ inline void RequireDrivableSpeed(const DiffDriveSpec& spec, const std::string& f
                                 " needs more than max_wheel_speed_rad_s allows (" +
                                 msgs::ShortestNumber(std::round(max_rim_m_s * 1e6) / 1e6) +
                                 " m/s)");
-  }
-}
-
-inline void RequireNonNegative(const std::string& field, double value) {
-  if (!std::isfinite(value) || value < 0.0) {
-    throw std::invalid_argument(field + ": must be a finite number >= 0, got " +
-                                msgs::ShortestNumber(value));
   }
 }
 

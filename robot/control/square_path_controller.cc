@@ -7,13 +7,9 @@
 #include <string>
 
 #include "msgs/shortest_number.h"
+#include "robot/control/tick_time_slack.h"
 
 namespace plywood::robot {
-namespace {
-
-constexpr double kTimeSlackS = 1e-9;  // absorbs round-off in accumulated tick times
-
-}  // namespace
 
 std::string_view ToString(SquareDirection direction) {
   return direction == SquareDirection::kClockwise ? "cw" : "ccw";
@@ -106,7 +102,7 @@ std::optional<BodyTwist> SquarePathController::Step(const Move& move, const Cont
   const msgs::Pose2D& X_WR = input.X_WR_estimate;
   switch (move.kind) {
     case Move::Kind::kDwell:
-      if (input.time_s - move_start_s_ >= options_.dwell_s - kTimeSlackS) return std::nullopt;
+      if (input.time_s - move_start_s_ >= options_.dwell_s - kTickTimeSlackS) return std::nullopt;
       return BodyTwist{};
     case Move::Kind::kStraight: {
       const double ux = std::cos(move.from.theta_rad), uy = std::sin(move.from.theta_rad);

@@ -8,12 +8,12 @@
 #include <string>
 
 #include "msgs/shortest_number.h"
+#include "robot/control/tick_time_slack.h"
 #include "robot/drive/diff_drive_kinematics.h"
 
 namespace plywood::robot {
 namespace {
 
-constexpr double kTimeSlackS = 1e-9;
 // A point further than this from the first line fitted beside the robot belongs to something else
 // (the next wall at a corner, a door jamb, a table leg): about twice the sonar's 1 % noise at 2 m
 // plus what an echo placed on the beam axis is off by when it came from the edge of the cone.
@@ -181,9 +181,10 @@ void WallFollowingController::Remember(const ControllerInput& input) {
   if (last_reading_time_s_ && time_s <= *last_reading_time_s_) return;
   last_reading_time_s_ = time_s;
   // Stale points go before the new ones arrive, so the latest reading always counts in full.
-  const auto fresh = std::find_if(
-      memory_.begin() + memory_head_, memory_.end(),
-      [&](const StampedPoint& p) { return p.time_s >= time_s - options_.memory_s - kTimeSlackS; });
+  const auto fresh =
+      std::find_if(memory_.begin() + memory_head_, memory_.end(), [&](const StampedPoint& p) {
+        return p.time_s >= time_s - options_.memory_s - kTickTimeSlackS;
+      });
   memory_head_ = static_cast<std::size_t>(fresh - memory_.begin());
   // The stale points are dropped in bulk once they are half of memory_, not at every reading:
   // erasing the front moves everything behind it, so each point is moved a bounded number of
@@ -260,7 +261,7 @@ double WallFollowingController::CollectPoints(const msgs::Pose2D& X_WR, std::vec
   const double cos_side = std::cos(options_.side_window_rad);
   const double cos_front = std::cos(options_.front_window_rad);
   const double newest_s = last_reading_time_s_.value_or(0.0);
-  const double oldest_side_s = newest_s - options_.wall_memory_s - kTimeSlackS;
+  const double oldest_side_s = newest_s - options_.wall_memory_s - kTickTimeSlackS;
   const double reach_squared = relevant_range_m_ * relevant_range_m_;
   double ahead_m = std::numeric_limits<double>::infinity();
   // The ahead test: the nearest point in the lane or the front window, a minimum over the points,
@@ -381,7 +382,7 @@ msgs::WheelSpeedCommand WallFollowingController::Update(const ControllerInput& i
   last_time_s_ = input.time_s;
   if (!start_time_s_) start_time_s_ = input.time_s;
   if (options_.duration_s > 0.0 &&
-      input.time_s - *start_time_s_ >= options_.duration_s - kTimeSlackS) {
+      input.time_s - *start_time_s_ >= options_.duration_s - kTickTimeSlackS) {
     finished_ = true;
   }
   const bool have_data =

@@ -5,13 +5,13 @@
 #include <string>
 
 #include "msgs/shortest_number.h"
+#include "robot/control/tick_time_slack.h"
 
 namespace plywood::robot {
 namespace {
 
 // Tick times are accumulated sums of a period that is rarely exact in binary (0.01 s): a boundary
 // closer than this counts as reached.
-constexpr double kTimeSlackS = 1e-9;
 
 std::string SegmentField(std::size_t i, const char* member) {
   return "segments[" + std::to_string(i) + "]." + member;
@@ -57,7 +57,7 @@ msgs::WheelSpeedCommand WheelScriptController::Update(const ControllerInput& inp
   if (!start_time_s_) start_time_s_ = input.time_s;
   const double script_time_s = input.time_s - *start_time_s_;
   while (segment_ < segment_end_s_.size() &&
-         script_time_s >= segment_end_s_[segment_] - kTimeSlackS) {
+         script_time_s >= segment_end_s_[segment_] - kTickTimeSlackS) {
     ++segment_;
   }
   if (segment_ == segment_end_s_.size()) {

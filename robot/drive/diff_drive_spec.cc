@@ -5,16 +5,12 @@
 #include <string>
 
 #include "msgs/shortest_number.h"
+#include "robot/number_checks.h"
 
 namespace plywood::robot {
 namespace {
 
-void RequirePositive(const char* field, double value) {
-  if (!std::isfinite(value) || value <= 0.0) {
-    throw std::invalid_argument(std::string(field) + ": must be a finite number > 0, got " +
-                                msgs::ShortestNumber(value));
-  }
-}
+using internal::RequirePositive;
 
 // A length the odometry divides by: beyond these bounds no wheeled robot exists, and a tiny one
 // (1e-320 m, a subnormal) makes wheel speeds and heading changes infinite, so the run would end

@@ -9,23 +9,13 @@
 
 #include "msgs/shortest_number.h"
 #include "robot/drive/diff_drive_kinematics.h"
+#include "robot/number_checks.h"
 
 namespace plywood::robot {
 namespace {
 
-void RequireNonNegative(const char* field, double value) {
-  if (!std::isfinite(value) || value < 0.0) {
-    throw std::invalid_argument(std::string(field) + ": must be a finite number >= 0, got " +
-                                msgs::ShortestNumber(value));
-  }
-}
-
-void RequirePositive(const char* field, double value) {
-  if (!std::isfinite(value) || value <= 0.0) {
-    throw std::invalid_argument(std::string(field) + ": must be a finite number > 0, got " +
-                                msgs::ShortestNumber(value));
-  }
-}
+using internal::RequireNonNegative;
+using internal::RequirePositive;
 
 enum Index {
   kX = 0,

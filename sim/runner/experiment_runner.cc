@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "msgs/angle_units.h"
 #include "msgs/shortest_number.h"
 #include "robot/control/controller.h"
 #include "robot/odometry/trajectory_metrics.h"
@@ -26,17 +27,11 @@
 #include "sim/world/setup_checks.h"
 
 namespace plywood::sim {
-namespace {
 
-constexpr double kDegToRad = std::numbers::pi / 180.0;
-
-// SplitMix64 finaliser: decorrelates nearby seeds.
-std::uint64_t Mix(std::uint64_t z) {
-  z += 0x9e3779b97f4a7c15ULL;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
+// The types of ExperimentRunner::Parts' members. Parts has external linkage, so they are named
+// rather than in the anonymous namespace (GCC's -Wsubobject-linkage, once this source shares a
+// unity batch with others).
+namespace experiment_runner_detail {
 
 // A sensor together with its sampling schedule.
 template <typename Sensor>
@@ -57,6 +52,21 @@ struct FaceForLabels {
   // the numerator of the beam's distance t, which do not depend on the beam.
   double aox = 0.0, aoy = 0.0, t_numerator = 0.0;
 };
+
+}  // namespace experiment_runner_detail
+
+using experiment_runner_detail::FaceForLabels;
+using experiment_runner_detail::Scheduled;
+
+namespace {
+
+// SplitMix64 finaliser: decorrelates nearby seeds.
+std::uint64_t Mix(std::uint64_t z) {
+  z += 0x9e3779b97f4a7c15ULL;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
 
 // MuJoCo (and the planar drive) would zero a non-finite command and let the robot stand still
 // silently; a run whose controller computes NaN must fail and say so instead.

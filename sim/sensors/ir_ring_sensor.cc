@@ -5,16 +5,12 @@
 #include <limits>
 #include <numbers>
 
+#include "msgs/angle_units.h"
 #include "sim/config/require_field.h"
 #include "sim/sensors/noise_draws.h"
 #include "sim/sensors/planar_fan.h"
 
 namespace plywood::sim {
-namespace {
-
-constexpr double kDegToRad = std::numbers::pi / 180.0;
-
-}  // namespace
 
 void IrRingOptions::Validate() const {
   RequireField(rays_per_beam >= 1 && rays_per_beam <= 100, "rays_per_beam", "must be in [1, 100]",

@@ -3,12 +3,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "msgs/angle_units.h"
+
 namespace plywood::sim {
-namespace {
-
-constexpr double kDegToRad = std::numbers::pi / 180.0;
-
-}  // namespace
 
 std::vector<double> EvenAnglesRad(double first_deg, double step_deg, int n) {
   std::vector<double> angles_rad;

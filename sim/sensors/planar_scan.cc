@@ -3,14 +3,10 @@
 #include <Eigen/Geometry>
 #include <numbers>
 
+#include "msgs/angle_units.h"
 #include "sim/sensors/planar_fan.h"
 
 namespace plywood::sim {
-namespace {
-
-constexpr double kDegToRad = std::numbers::pi / 180.0;
-
-}  // namespace
 
 PlanarScan::PlanarScan(const Scene& scene, const std::string& site_name, const std::string& sensor,
                        double angle_min_deg, double angle_increment_deg, int beam_count)

@@ -5,6 +5,7 @@
 #include <limits>
 #include <numbers>
 
+#include "msgs/angle_units.h"
 #include "sim/config/require_field.h"
 #include "sim/sensors/foot_in_beam.h"
 #include "sim/sensors/noise_draws.h"
@@ -13,7 +14,6 @@
 namespace plywood::sim {
 namespace {
 
-constexpr double kDegToRad = std::numbers::pi / 180.0;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Bounce rays start at least this far off the surface so they do not hit it again.
 constexpr double kSurfaceOffsetM = 1e-6;

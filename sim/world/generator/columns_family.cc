@@ -13,7 +13,7 @@ using Eigen::Vector2d;
 
 namespace {
 
-constexpr double kGapM = 0.15;  // between any two things, and to the walls
+constexpr double kColumnsGapM = 0.15;  // between any two things, and to the walls
 constexpr int kTries = 200;
 
 Vector2d RandomPoint(WorldRng& rng, double w, double d) {
@@ -40,7 +40,7 @@ std::optional<double> DrawColumnsWorld(WorldRng& rng, GeneratedWorld& world) {
     bool placed = false;
     for (int t = 0; t < kTries && !placed; ++t) {
       const Vector2d c = RandomPoint(rng, w, d);
-      if (!Fits(world, Footprint::Disc(c, r), kGapM)) continue;
+      if (!Fits(world, Footprint::Disc(c, r), kColumnsGapM)) continue;
       world.AddCylinder("column", "obstacle", c, r, 1.0);
       columns.push_back(JsonNumbers({r, c.x(), c.y()}));
       placed = true;
@@ -56,7 +56,8 @@ std::optional<double> DrawColumnsWorld(WorldRng& rng, GeneratedWorld& world) {
     for (int t = 0; t < kTries && !placed; ++t) {
       const Vector2d c = RandomPoint(rng, w, d);
       const double yaw = rng.Rounded(0.0, 179.0, 1.0);
-      if (!Fits(world, Footprint::Box(c, half, yaw * std::numbers::pi / 180.0), kGapM)) continue;
+      if (!Fits(world, Footprint::Box(c, half, yaw * std::numbers::pi / 180.0), kColumnsGapM))
+        continue;
       world.AddTable(c, half, yaw, height, leg_r, inset);
       tables.push_back(JsonObject({{"length_m", JsonNumber(2 * half.x())},
                                    {"width_m", JsonNumber(2 * half.y())},

@@ -14,7 +14,7 @@ using Eigen::Vector2d;
 
 namespace {
 
-constexpr double kJambM = 0.3;
+constexpr double kCorridorJambM = 0.3;
 const char* const kJunctions[] = {"straight", "L", "T", "X"};
 // Arms present per junction, in the order east, north, west, south.
 constexpr bool kArms[4][4] = {{true, false, true, false},
@@ -79,12 +79,12 @@ std::optional<double> DrawCorridorWorld(WorldRng& rng, GeneratedWorld& world) {
       const int e = rng.Int(0, n - 1);
       const double length = (outline[(e + 1) % n] - outline[e]).norm();
       const double w = rng.Rounded(0.6, 1.2, 0.01);
-      if (arm_end[e] >= 0 || length < w + 2 * kJambM) continue;
-      const double from = rng.Rounded(kJambM, length - kJambM - w, 0.01);
+      if (arm_end[e] >= 0 || length < w + 2 * kCorridorJambM) continue;
+      const double from = rng.Rounded(kCorridorJambM, length - kCorridorJambM - w, 0.01);
       bool clear = true;
       for (const Side& o : sides) {
-        clear = clear &&
-                (o.edge != e || from > o.from + o.width + kJambM || from + w + kJambM < o.from);
+        clear = clear && (o.edge != e || from > o.from + o.width + kCorridorJambM ||
+                          from + w + kCorridorJambM < o.from);
       }
       if (!clear) continue;
       sides.push_back({e, from, w, rng.Chance(0.5)});
@@ -107,10 +107,11 @@ std::optional<double> DrawCorridorWorld(WorldRng& rng, GeneratedWorld& world) {
                                           {"behind", JsonString(s.alcove ? "alcove" : "nothing")}};
     if (s.alcove) {
       const double depth = rng.Rounded(1.0, 2.5, 0.01);
-      // Its side walls stay kJambM from the corridor's corners (and never inside the opening).
-      const double from = std::max(kJambM, s.from - rng.Rounded(0.0, 0.8, 0.01));
+      // Its side walls stay kCorridorJambM from the corridor's corners (and never inside the
+      // opening).
+      const double from = std::max(kCorridorJambM, s.from - rng.Rounded(0.0, 0.8, 0.01));
       const double to =
-          std::min(edge.length_m - kJambM, s.from + s.width + rng.Rounded(0.0, 0.8, 0.01));
+          std::min(edge.length_m - kCorridorJambM, s.from + s.width + rng.Rounded(0.0, 0.8, 0.01));
       if (!AddAlcove(world, edge, from, to, depth, edge_geoms[s.edge], 0.25)) return std::nullopt;
       fields.push_back({"alcove_depth_m", JsonNumber(depth)});
       fields.push_back({"alcove_width_m", JsonNumber(to - from)});

@@ -15,7 +15,7 @@ using Eigen::Vector2d;
 namespace {
 
 constexpr double kMinOpeningM = 0.3, kMaxOpeningM = 1.2;
-constexpr double kJambM = 0.3;  // shortest wall piece beside an opening
+constexpr double kDoorwayJambM = 0.3;  // shortest wall piece beside an opening
 
 struct Opening {
   int wall = 0;
@@ -41,7 +41,7 @@ std::optional<double> DrawDoorwaysWorld(WorldRng& rng, GeneratedWorld& world) {
     o.wall = walls[k];
     const double length = (outline[(o.wall + 1) % 4] - outline[o.wall]).norm();
     o.width = rng.Rounded(kMinOpeningM, kMaxOpeningM, 0.01);
-    o.from = rng.Rounded(kJambM, length - kJambM - o.width, 0.01);
+    o.from = rng.Rounded(kDoorwayJambM, length - kDoorwayJambM - o.width, 0.01);
     o.behind = std::vector<std::string>{"nothing", "panel", "alcove"}[rng.Int(0, 2)];
     edges[o.wall].openings.push_back({o.from, o.from + o.width});
     openings.push_back(o);
@@ -67,10 +67,10 @@ std::optional<double> DrawDoorwaysWorld(WorldRng& rng, GeneratedWorld& world) {
       world.closed = false;
     } else if (o.behind == "alcove") {
       const double depth = rng.Rounded(1.0, 3.0, 0.01);
-      // Its side walls stay kJambM from the room's corners (and never inside the opening).
-      const double from = std::max(kJambM, o.from - rng.Rounded(0.0, 1.0, 0.01));
+      // Its side walls stay kDoorwayJambM from the room's corners (and never inside the opening).
+      const double from = std::max(kDoorwayJambM, o.from - rng.Rounded(0.0, 1.0, 0.01));
       const double to =
-          std::min(edge.length_m - kJambM, o.from + o.width + rng.Rounded(0.0, 1.0, 0.01));
+          std::min(edge.length_m - kDoorwayJambM, o.from + o.width + rng.Rounded(0.0, 1.0, 0.01));
       if (!AddAlcove(world, edge, from, to, depth, edge_geoms[o.wall], 0.25)) return std::nullopt;
       fields.push_back({"alcove_depth_m", JsonNumber(depth)});
       fields.push_back({"alcove_width_m", JsonNumber(to - from)});

@@ -9,8 +9,6 @@ namespace {
 
 using Eigen::Vector2d;
 
-double Cross(const Vector2d& a, const Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 // Inside or on a convex counter-clockwise polygon.
 bool InsideConvex(const std::vector<Vector2d>& corners, const Vector2d& p) {
   for (size_t i = 0; i < corners.size(); ++i) {

@@ -6,6 +6,12 @@
 
 namespace plywood::sim::worldgen {
 
+// The z component of the 3-D cross product of two floor vectors: > 0 when `b` turns
+// counter-clockwise from `a`.
+inline double Cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
+
 // What a static geom covers on the floor, seen from above: a convex polygon (a box's four corners,
 // counter-clockwise) or a disc (a cylinder).
 struct Footprint {

@@ -4,12 +4,12 @@
 #include <cstdio>
 #include <numbers>
 
+#include "msgs/angle_units.h"
+
 namespace plywood::sim::worldgen {
 namespace {
 
 using Eigen::Vector2d;
-
-constexpr double kDegToRad = std::numbers::pi / 180.0;
 
 // Into (-180, 180].
 double WrapDegrees(double deg) {

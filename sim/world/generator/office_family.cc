@@ -17,8 +17,8 @@ using Eigen::Vector2d;
 namespace {
 
 constexpr double kT = kWallThicknessM;
-constexpr double kJambM = 0.3;
-constexpr double kGapM = 0.3;          // between furniture, and from furniture to walls (or 0)
+constexpr double kOfficeJambM = 0.3;
+constexpr double kOfficeGapM = 0.3;    // between furniture, and from furniture to walls (or 0)
 constexpr double kDoorKeepOutM = 1.0;  // furniture-free depth on both sides of a door
 
 struct Room {
@@ -134,7 +134,8 @@ std::optional<double> DrawOfficeWorld(WorldRng& rng, GeneratedWorld& world) {
       room.lo = {cuts[i] + (i > 0 ? kT / 2 : 0.0), y0};
       room.hi = {cuts[i + 1] - (i + 1 < n ? kT / 2 : 0.0), y1};
       const double door_w = rng.Rounded(0.8, 1.0, 0.01);
-      const double door_x = rng.Rounded(room.lo.x() + kJambM, room.hi.x() - kJambM - door_w, 0.01);
+      const double door_x =
+          rng.Rounded(room.lo.x() + kOfficeJambM, room.hi.x() - kOfficeJambM - door_w, 0.01);
       doors.push_back({door_x, door_x + door_w});
       const double face = north ? y_n : y_s;
       keep_out.push_back(
@@ -153,7 +154,7 @@ std::optional<double> DrawOfficeWorld(WorldRng& rng, GeneratedWorld& world) {
       std::optional<std::pair<double, double>> door;
       if (rng.Chance(0.3)) {
         const double door_w = rng.Rounded(0.8, 1.0, 0.01);
-        const double from = rng.Rounded(y0 + kJambM, y1 - kJambM - door_w, 0.01);
+        const double from = rng.Rounded(y0 + kOfficeJambM, y1 - kOfficeJambM - door_w, 0.01);
         door = std::pair{from, from + door_w};
         keep_out.push_back(
             Footprint::Box({cuts[i], from + door_w / 2}, {kDoorKeepOutM, door_w / 2 + 0.2}, 0.0));
@@ -215,7 +216,8 @@ std::optional<double> DrawOfficeWorld(WorldRng& rng, GeneratedWorld& world) {
         Vector2d centre;
         double yaw;
         const Footprint f = DrawSpot(rng, room, item.half, item.against_wall, &centre, &yaw);
-        if (!InsideRoom(room, f) || !clear_of_doors(f) || !FitsAgainstWalls(world, f, kGapM)) {
+        if (!InsideRoom(room, f) || !clear_of_doors(f) ||
+            !FitsAgainstWalls(world, f, kOfficeGapM)) {
           continue;
         }
         if (item.kind == "table") {

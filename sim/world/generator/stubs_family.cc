@@ -4,7 +4,9 @@
 #include <cstdio>
 #include <numbers>
 
+#include "msgs/angle_units.h"
 #include "sim/world/generator/behind_opening.h"
+#include "sim/world/generator/footprint_2d.h"
 #include "sim/world/generator/placement.h"
 #include "sim/world/generator/wall_builder.h"
 #include "sim/world/generator/world_families.h"
@@ -15,12 +17,9 @@ using Eigen::Vector2d;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kMinCornerDeg = 60.0, kMaxCornerDeg = 120.0;
 constexpr double kMinEdgeM = 1.5;
 constexpr double kStubClearanceM = 0.5;  // from a stub to any other geom
-
-double Cross(const Vector2d& a, const Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // The interior angle at corner i of a counter-clockwise outline, degrees.
 double CornerDeg(const std::vector<Vector2d>& p, size_t i) {

@@ -3,12 +3,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "sim/world/generator/footprint_2d.h"
+
 namespace plywood::sim::worldgen {
 namespace {
 
 using Eigen::Vector2d;
-
-double Cross(const Vector2d& a, const Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // The left turn from direction `in` to direction `out`, in (-pi, pi).
 double TurnRad(const Vector2d& in, const Vector2d& out) {
