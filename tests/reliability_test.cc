@@ -1579,5 +1579,71 @@ TEST_F(ReliabilityTest, AMapOfAWorldWithoutWallsIsRefusedNamingTheWorld) {
                  "there is no room to score a map of"});
 }
 
+// --- The s45 seventeenth pass (docs/errors.md) --------------------------------------------------
+
+// An estimator's counter_modulus unwraps each encoder increment the short way round: a counter of
+// 256 ticks (8 bits) read at 10 Hz wrapped within every interval of a P3-DX at 0.2 m/s, so a
+// square_path steered by that estimate drove a square of its own (ate_rms_m 2.26 m instead of
+// 0.050), exit 0. Refused unless half the modulus holds the most a wheel turns in one interval at
+// max_wheel_speed_rad_s (12.3 rad/s x 0.11 s x 39000 / 2 pi, ceiled, + 1 tick = 8400); a 16-bit
+// counter runs, as it did, with the figures of no wrap.
+TEST_F(ReliabilityTest, ACounterThatWrapsWithinOneEncoderIntervalIsRefused) {
+  const std::string yaml =
+      HallExperiment(-2.0, -2.0, "controller: {type: square_path, steer_by: encoder}\n",
+                     "{encoders: {}, gyro: {}}") +
+      "odometry: {encoder: {}, ekf: {}}\n";
+  for (const std::string estimator : {"encoder", "ekf"}) {
+    SCOPED_TRACE(estimator);
+    ExpectRefused(
+        yaml, "--set odometry." + estimator + ".counter_modulus=256",
+        {"experiment.yaml: odometry." + estimator +
+             ".counter_modulus: a counter of 256 ticks wraps within one encoder interval",
+         "a wheel turns up to 8400 ticks (of 39000 per revolution) between two samples at "
+         "sensors.encoders.rate_hz 10",
+         "give at least 16800, or 0 (no wrap)"});
+  }
+  ExpectRefused(yaml, "--set odometry.encoder.counter_modulus=16799",
+                {"odometry.encoder.counter_modulus: a counter of 16799 ticks"});
+  const fs::path dir = Dir();
+  const fs::path file = WriteFile(dir / "experiment.yaml", yaml);
+  std::string metrics[2];
+  for (int i = 0; i < 2; ++i) {
+    const fs::path out = dir / ("out" + std::to_string(i));
+    const CliResult run = RunPlywood("run " + file.string() + " --quiet --out " + out.string() +
+                                         (i ? " --set odometry.encoder.counter_modulus=65536" : ""),
+                                     dir);
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    metrics[i] = YAML::Dump(YAML::LoadFile((out / "metrics.json").string())["odometry"]);
+  }
+  EXPECT_EQ(metrics[1], metrics[0]);
+}
+
+// A world file named with what XML quotes: `Tom & Jerry "hall" <2>.xml` was refused as "does not
+// compile with robot ...: XML parse error ... include" (the composed scene wrote the name into its
+// <include> unquoted), though the world itself was sound; `h&amp;all.xml` was read as `h&all.xml`
+// and ran THAT file, another world, under its name (here seed000_room_1's walls in walls.csv).
+// Each runs the named file: the hall's own walls.
+TEST_F(ReliabilityTest, AWorldFileNamedWithXmlMarkupRuns) {
+  const fs::path dir = WorldDir();
+  const fs::path quoted = dir / "Tom & Jerry \"hall\" <2>.xml";
+  const fs::path entity = dir / "h&amp;all.xml";
+  fs::copy_file(testing::SourceRoot() / "worlds/hall.xml", quoted);
+  fs::copy_file(testing::SourceRoot() / "worlds/hall.xml", entity);
+  fs::copy_file(testing::SourceRoot() / "worlds/seed000_room_1.xml", dir / "h&all.xml");
+  const fs::path run_dir = Dir();
+  const fs::path file = WriteFile(run_dir / "experiment.yaml", HallExperiment(-0.5, 0.0));
+  for (const auto& [name, world_set] : std::vector<std::pair<std::string, std::string>>{
+           {"hall", ""},
+           {"quoted", " --set 'world=" + quoted.string() + "'"},
+           {"entity", " --set 'world=" + entity.string() + "'"}}) {
+    SCOPED_TRACE(name);
+    const CliResult run = RunPlywood(
+        "run " + file.string() + " --quiet --out " + (run_dir / name).string() + world_set,
+        run_dir);
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    if (run.exit_code != 0) continue;
+    EXPECT_EQ(Slurp(run_dir / name / "walls.csv"), Slurp(run_dir / "hall" / "walls.csv"));
+  }
+}
 }  // namespace
 }  // namespace plywood

@@ -6,10 +6,14 @@
 #include <array>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <numbers>
 #include <sstream>
+#include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include "msgs/shortest_number.h"
@@ -190,6 +194,46 @@ void RequireRatesTheClockCanKeep(const YamlFields& top, const ExperimentConfig& 
   require("output.trajectory_rate_hz", config.output.trajectory_rate_hz);
 }
 
+// An estimator's counter_modulus unwraps each encoder increment the short way round, which is
+// right only while a wheel turns at most half the modulus between two samples: with a counter of
+// 256 ticks (8 bits) read at 10 Hz, square_hall's 0.2 m/s drive wrapped every interval and the
+// encoder estimate's ate_rms_m was 2.26 m instead of 0.050, exit 0 (s45). So the modulus must hold
+// the most a wheel can turn in an interval: max_wheel_speed_rad_s over one period of the encoders
+// and one physics step (a sample lands on a step), plus a tick of quantisation.
+void RequireCountersThatHoldAnInterval(const YamlFields& top, const ExperimentConfig& config) {
+  if (!config.sensors.encoders) return;
+  const double interval_s = 1.0 / config.sensors.encoders->rate_hz + config.physics.timestep_s;
+  const double ticks_per_rev = config.sensors.encoders->ticks_per_rev;
+  const double most_ticks = std::ceil(config.nominal.max_wheel_speed_rad_s * interval_s *
+                                      ticks_per_rev / (2.0 * std::numbers::pi)) +
+                            1.0;
+  const std::pair<const char*, const robot::IncrementOptions*> estimators[] = {
+      {"encoder", &config.odometry.encoder.increments},
+      {"gyro", &config.odometry.gyro.increments},
+      {"fused", &config.odometry.fused.increments},
+      {"weighted", &config.odometry.weighted.increments},
+      {"ekf", &config.odometry.ekf.increments}};
+  for (const auto& [name, increments] : estimators) {
+    const std::uint64_t modulus = increments->counter_modulus;
+    if (modulus == 0 || static_cast<double>(modulus / 2) >= most_ticks) continue;
+    if (std::find(config.odometry.enabled.begin(), config.odometry.enabled.end(), name) ==
+        config.odometry.enabled.end()) {
+      continue;
+    }
+    top.Fail(
+        std::string("odometry.") + name + ".counter_modulus",
+        "a counter of " + std::to_string(modulus) +
+            " ticks wraps within one encoder interval: at robot.nominal.max_wheel_speed_rad_s (" +
+            FormatNumber(config.nominal.max_wheel_speed_rad_s) + " rad/s) a wheel turns up to " +
+            FormatNumber(most_ticks) + " ticks (of " + FormatNumber(ticks_per_rev) +
+            " per revolution) between two samples at sensors.encoders.rate_hz " +
+            FormatNumber(config.sensors.encoders->rate_hz) +
+            ", and an increment is unwrapped the short way round, so at most half the "
+            "counter: give at least " +
+            FormatNumber(2.0 * most_ticks) + ", or 0 (no wrap)");
+  }
+}
+
 }  // namespace
 
 void SpawnPose::Validate() const {
@@ -322,6 +366,7 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   }
   ReadOptions(top.Child("output"), config.output);
   RequireRatesTheClockCanKeep(top, config);
+  RequireCountersThatHoldAnInterval(top, config);
   top.Finish();
   return config;
 }

@@ -21,13 +21,14 @@ bool Continues(const WallSegment& p, const WallSegment& q) {
   if (!(length_p > 0.0) || !(length_q > 0.0)) return false;
   const Eigen::Vector2d u = (p.b - p.a) / length_p, v = (q.b - q.a) / length_q;
   if (u.dot(v) <= 0.0) return false;  // opposite normals: two sides, never one surface
-  constexpr double tol = kContinuingFaceToleranceM;
+  constexpr double tol = kContinuingFaceOffLineM;
   if (OffLine(p.a, u, q.a) > tol || OffLine(p.a, u, q.b) > tol || OffLine(q.a, v, p.a) > tol ||
       OffLine(q.a, v, p.b) > tol) {
     return false;
   }
-  // q spans [u.(q.a - p.a), u.(q.b - p.a)] along p, which spans [0, length_p].
-  return std::max(u.dot(q.a - p.a) - length_p, -u.dot(q.b - p.a)) <= tol;
+  // q spans [u.(q.a - p.a), u.(q.b - p.a)] along p, which spans [0, length_p]: the seam between
+  // them, negative where they overlap.
+  return std::max(u.dot(q.a - p.a) - length_p, -u.dot(q.b - p.a)) <= kContinuingFaceSeamM;
 }
 
 }  // namespace

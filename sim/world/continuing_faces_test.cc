@@ -155,9 +155,10 @@ TEST(ContinuingFacesTest, CollinearFacesWithOppositeNormalsStayApart) {
 }
 
 // A wall of three panels in a room turned 37 deg, written as the generator writes worlds (6
-// decimals: each panel up to ~1 um off the others' line) is one surface per side; the same
-// panels with the middle one stepped back 0.1 mm are three (a step, not one plane), and so is a
-// 1 mm gap between them.
+// decimals: each panel up to ~1 um off the others' line) is one surface per side; so it is with
+// the middle panel stepped back 0.1 mm or a 1 mm seam between panels, as a world written by hand
+// to the millimetre has (audit s45: each was three surfaces, scored as three walls). A 3 mm step
+// or a 1 cm gap keeps them three.
 TEST(ContinuingFacesTest, PanelsOfATurnedWallWrittenToSixDecimalsAreOneSurface) {
   const double yaw = 37.0 * std::numbers::pi / 180.0;
   const Vector2d u(std::cos(yaw), std::sin(yaw)), n(-std::sin(yaw), std::cos(yaw));
@@ -181,8 +182,42 @@ TEST(ContinuingFacesTest, PanelsOfATurnedWallWrittenToSixDecimalsAreOneSurface) 
   // The two long sides, the two outer ends and the four end faces at the two joints (which face
   // each other, buried): 12 faces, 8 surfaces.
   EXPECT_EQ(flush.surfaces.size(), 8u);
-  EXPECT_EQ(SurfacesFacing(panels(1e-4, 0.0), -n).size(), 3u);
-  EXPECT_EQ(SurfacesFacing(panels(0.0, 1e-3), -n).size(), 3u);
+  EXPECT_EQ(SurfacesFacing(panels(1e-4, 0.0), -n).size(), 1u);
+  EXPECT_EQ(SurfacesFacing(panels(0.0, 1e-3), -n).size(), 1u);
+  EXPECT_EQ(SurfacesFacing(panels(3e-3, 0.0), -n).size(), 3u);
+  EXPECT_EQ(SurfacesFacing(panels(0.0, 1e-2), -n).size(), 3u);
+}
+
+// A wall of panels written by hand to the millimetre (audit s45): seed000_room_1's south wall as
+// three panels of a third of its 3.236 m, each `size="0.539"` with its centre rounded to the
+// millimetre, leaves 1 mm seams; the same room turned 30 deg with every `pos` rounded to the
+// millimetre puts its two south panels 0.16 mm off each other's line. Each inner side is one
+// surface with the one-box wall's ends (to the rounding), as the scanner sees it: were three and
+// two.
+TEST(ContinuingFacesTest, PanelsWrittenToTheMillimetreAreOneSurface) {
+  const GroundTruthWalls three = WallsOf(
+      "<geom type=\"box\" pos=\"-0.779 -1.109 0.5\" size=\"0.539 0.009 0.5\"/>"
+      "<geom type=\"box\" pos=\"0.3 -1.109 0.5\" size=\"0.539 0.009 0.5\"/>"
+      "<geom type=\"box\" pos=\"1.379 -1.109 0.5\" size=\"0.539 0.009 0.5\"/>");
+  ExpectPartition(three);
+  const auto inner = SurfacesFacing(three, {0, 1});
+  ASSERT_EQ(inner.size(), 1u);
+  ExpectEnds(inner[0], {1.918, -1.1}, {-1.318, -1.1});
+  EXPECT_EQ(inner[0].segments.size(), 3u);
+  ASSERT_EQ(SurfacesFacing(three, {0, -1}).size(), 1u);
+
+  const double c = std::sqrt(3.0) / 2.0, s = 0.5;  // 30 deg
+  const GroundTruthWalls turned = WallsOf(
+      "<geom type=\"box\" pos=\"0.114 -1.215 0.5\" size=\"0.809 0.009 0.5\" euler=\"0 0 30\"/>"
+      "<geom type=\"box\" pos=\"1.515 -0.406 0.5\" size=\"0.809 0.009 0.5\" euler=\"0 0 30\"/>");
+  ExpectPartition(turned);
+  const auto turned_inner = SurfacesFacing(turned, {-s, c});
+  ASSERT_EQ(turned_inner.size(), 1u);
+  EXPECT_EQ(turned_inner[0].segments.size(), 2u);
+  // Its ends: the wall's from x = -1.318 to 1.918 on y = -1.1 turned 30 deg, within the rounding.
+  const auto turn = [&](double x, double y) { return Vector2d(c * x - s * y, s * x + c * y); };
+  EXPECT_LT((turned_inner[0].a - turn(1.918, -1.1)).norm(), 1e-3);
+  EXPECT_LT((turned_inner[0].b - turn(-1.318, -1.1)).norm(), 1e-3);
 }
 
 // seed000_room_1's corners: each long wall's 18 mm end face is flush with the short wall's outer

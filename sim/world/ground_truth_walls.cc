@@ -44,6 +44,22 @@ Pose3 GeomPoseInWorld(const mjModel* m, int geom_id) {
   return X;
 }
 
+}  // namespace
+
+double AxisTiltRad(const Eigen::Matrix3d& R_WG, int axis) {
+  return std::atan2(std::hypot(R_WG(0, axis), R_WG(1, axis)), std::abs(R_WG(2, axis)));
+}
+
+int BoxAxisNearestVertical(const Eigen::Matrix3d& R_WG) {
+  int up = 2;  // z wins a tie, so an upright box keeps its own axes
+  for (const int axis : {0, 1}) {
+    if (AxisTiltRad(R_WG, axis) < AxisTiltRad(R_WG, up)) up = axis;
+  }
+  return up;
+}
+
+namespace {
+
 bool SpansHeight(const GroundTruthOptions& options, double z_min, double z_max) {
   return !options.height_m || (*options.height_m >= z_min && *options.height_m <= z_max);
 }
@@ -59,8 +75,11 @@ Classification Classify(const mjModel* m, int g, const GroundTruthOptions& optio
     return Classification::kSkip;
   }
   const Pose3 X_WG = GeomPoseInWorld(m, g);
-  const double tilt_rad =
-      std::atan2(std::hypot(X_WG.R(0, 2), X_WG.R(1, 2)), std::abs(X_WG.R(2, 2)));
+  // The geom's vertical axis: its z, or for a box whichever of its axes stands upright, so a box
+  // lying on its side (a wall turned 90 deg about x, a beam written with fromto) is the prism it
+  // is.
+  const int up = type == mjGEOM_BOX ? BoxAxisNearestVertical(X_WG.R) : 2;
+  const double tilt_rad = AxisTiltRad(X_WG.R, up);
   // A sphere is upright in any orientation; a capsule is an upright cylinder with round ends.
   const bool upright = type == mjGEOM_SPHERE || tilt_rad <= options.max_tilt_rad;
   const bool prism_or_round = type == mjGEOM_BOX || type == mjGEOM_CYLINDER ||
@@ -72,20 +91,24 @@ Classification Classify(const mjModel* m, int g, const GroundTruthOptions& optio
                : Classification::kSkip;
   }
   const mjtNum* size = m->geom_size + 3 * g;
+  // The box's horizontal axes, in the order that makes (first, second, up) right-handed.
+  const int first = (up + 1) % 3, second = (up + 2) % 3;
   // Half the height of the straight-sided part, and what the round ends add above and below it.
   const bool round_ends = type == mjGEOM_SPHERE || type == mjGEOM_CAPSULE;
-  const double half_height = type == mjGEOM_BOX ? size[2] : (type == mjGEOM_SPHERE ? 0.0 : size[1]);
+  const double half_height =
+      type == mjGEOM_BOX ? size[up] : (type == mjGEOM_SPHERE ? 0.0 : size[1]);
   const double end_m = round_ends ? size[0] : 0.0;
   UprightGeom geom;
   geom.shape = type == mjGEOM_BOX ? UprightGeom::Shape::kBox : UprightGeom::Shape::kCylinder;
   geom.geom_id = g;
   geom.centre_W = X_WG.p.head<2>();
-  geom.R_WG = X_WG.R.topLeftCorner<2, 2>();
+  geom.R_WG.col(0) = X_WG.R.block<2, 1>(0, first);
+  geom.R_WG.col(1) = X_WG.R.block<2, 1>(0, second);
   geom.z_min_m = X_WG.p.z() - half_height - end_m;
   geom.z_max_m = X_WG.p.z() + half_height + end_m;
   if (!SpansHeight(options, geom.z_min_m, geom.z_max_m)) return Classification::kSkip;
   if (type == mjGEOM_BOX) {
-    geom.half_size_xy = Eigen::Vector2d(size[0], size[1]);
+    geom.half_size_xy = Eigen::Vector2d(size[first], size[second]);
   } else if (round_ends && options.height_m) {
     // The disc where the slice cuts a round end: a sphere of radius r cut dz from its centre.
     const double dz = std::max(0.0, std::abs(*options.height_m - X_WG.p.z()) - half_height);

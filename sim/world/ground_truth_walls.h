@@ -22,7 +22,8 @@ struct GroundTruthOptions {
   void Validate() const;
 };
 
-// A static, upright box or cylinder of the world, seen from above: the prism
+// A static, upright box or cylinder of the world, seen from above (a box with any of its axes
+// upright: its "local x and y" below are then its other two, BoxAxisNearestVertical): the prism
 // {p : R_WG^T (p - centre_W) in [-half_size_xy, +half_size_xy]} x [z_min_m, z_max_m] for a box,
 // the disc |p - centre_W| <= radius_m for a cylinder. Spheres and upright capsules are kCylinder:
 // with GroundTruthOptions::height_m their radius is the disc the slice cuts at that height, else
@@ -33,7 +34,7 @@ struct UprightGeom {
   int geom_id = -1;
   Eigen::Vector2d centre_W = Eigen::Vector2d::Zero();
   // Columns: the geom's local x and y axes projected on the floor. Orthonormal; a reflection when
-  // the geom's z axis points down.
+  // the geom's upright axis points down.
   Eigen::Matrix2d R_WG = Eigen::Matrix2d::Identity();
   Eigen::Vector2d half_size_xy = Eigen::Vector2d::Zero();  // boxes only
   double radius_m = 0.0;                                   // cylinders only
@@ -47,7 +48,8 @@ struct UprightGeom {
 // One vertical face of a static upright box, as a 2-D segment in the world frame.
 // Orientation: a -> b runs counter-clockwise around the box seen from above (z up), so the
 // outward normal is (b - a) turned clockwise by 90 deg: ((b - a).y, -(b - a).x) / |b - a|.
-// face_index names the face in the box's own frame: 0 = +x, 1 = +y, 2 = -x, 3 = -y.
+// face_index names the face in the box's own frame: 0 = +x, 1 = +y, 2 = -x, 3 = -y (of its two
+// horizontal axes, UprightGeom, for a box lying on its side).
 struct WallSegment {
   Eigen::Vector2d a = Eigen::Vector2d::Zero();
   Eigen::Vector2d b = Eigen::Vector2d::Zero();
@@ -93,6 +95,15 @@ struct GroundTruthWalls {
   // mj_ray for them.
   std::vector<int> unrepresented_geom_ids;
 };
+
+// The angle (rad) between a geom's local axis (0, 1, 2: x, y, z; a column of its world rotation
+// R_WG) and the world's vertical, either sign.
+double AxisTiltRad(const Eigen::Matrix3d& R_WG, int axis);
+
+// The local axis of a box nearest the vertical (z on a tie): a box is an upright prism whichever of
+// its axes stands upright, as a wall turned 90 deg about x or a beam written with fromto (its z
+// along the beam) does.
+int BoxAxisNearestVertical(const Eigen::Matrix3d& R_WG);
 
 // True when the geom's body is welded to the world: no joint anywhere in its chain, not mocap.
 bool IsStaticGeom(const mjModel* model, int geom_id);

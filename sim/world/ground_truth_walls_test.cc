@@ -144,6 +144,65 @@ TEST(GroundTruthWallsTest, UpsideDownBoxKeepsNormalsOutward) {
   ExpectNear(faces[0].OutwardNormal(), {1, 0}, "+x normal");
 }
 
+// A box is an upright prism whichever of its axes stands upright (audit s45): a wall turned 90 deg
+// about x or y (or by a quaternion), with its sizes to match, and a square beam written with
+// `fromto` along the floor (MuJoCo 2.2.2 gives a fromto box size[0] on both its other axes), are
+// the upright box's footprint: the same four faces, outward, and the same cross-section and
+// heights. Each was left out as "a box tilted 90 deg" (refused where a run is scored: a wall the
+// truth can hold). A box tilted 30 deg stays unrepresented (kInlineWorld).
+TEST(GroundTruthWallsTest, ABoxLyingOnItsSideIsTheUprightPrismItIs) {
+  const auto world = [](const std::string& geom) {
+    return "<mujoco><worldbody><geom type=\"plane\" size=\"5 5 0.1\"/>" + geom +
+           "</worldbody></mujoco>";
+  };
+  GroundTruthOptions at_laser;
+  at_laser.height_m = 0.34;
+  const std::string wall = "<geom type=\"box\" pos=\"0.3 -1.109 0.5\" size=\"1.618 0.009 0.5\"/>";
+  const std::string beam = "<geom type=\"box\" pos=\"0.3 -1.109 0.34\" size=\"1.618 0.05 0.05\"/>";
+  for (
+      const auto& [upright, lying] : std::vector<std::pair<std::string, std::string>>{
+          {wall,
+           "<geom type=\"box\" pos=\"0.3 -1.109 0.5\" size=\"1.618 0.5 0.009\" euler=\"90 0 0\"/>"},
+          {wall,
+           "<geom type=\"box\" pos=\"0.3 -1.109 0.5\" size=\"0.5 0.009 1.618\" euler=\"0 -90 "
+           "0\"/>"},
+          {wall,
+           "<geom type=\"box\" pos=\"0.3 -1.109 0.5\" size=\"1.618 0.5 0.009\" "
+           "quat=\"0 0 0.7071068 0.7071068\"/>"},
+          {beam,
+           "<geom type=\"box\" fromto=\"-1.318 -1.109 0.34 1.918 -1.109 0.34\" size=\"0.05\"/>"},
+          {beam,
+           "<geom type=\"box\" fromto=\"1.918 -1.109 0.34 -1.318 -1.109 0.34\" size=\"0.05\"/>"}}) {
+    SCOPED_TRACE(lying);
+    const MjModelPtr reference = Load(world(upright));
+    const GroundTruthWalls expected = ExtractGroundTruthWalls(reference.get(), at_laser);
+    ASSERT_EQ(expected.segments.size(), 4u);
+    const MjModelPtr m = Load(world(lying));
+    const GroundTruthWalls walls = ExtractGroundTruthWalls(m.get(), at_laser);
+    EXPECT_TRUE(walls.unrepresented_geom_ids.empty());
+    ASSERT_EQ(walls.segments.size(), 4u);
+    ExpectOutwardFaces(walls.segments, {0.3, -1.109});
+    // The same faces, whichever box axis each comes from.
+    for (const WallSegment& face : expected.segments) {
+      const bool found =
+          std::any_of(walls.segments.begin(), walls.segments.end(), [&](const WallSegment& other) {
+            return (other.a - face.a).norm() < 1e-6 && (other.b - face.b).norm() < 1e-6;
+          });
+      EXPECT_TRUE(found) << face.a.transpose() << " -> " << face.b.transpose();
+    }
+    const std::vector<UprightGeom> geoms = ExtractUprightGeoms(m.get(), at_laser);
+    const std::vector<UprightGeom> upright_geoms = ExtractUprightGeoms(reference.get(), at_laser);
+    ASSERT_EQ(geoms.size(), 1u);
+    ASSERT_EQ(upright_geoms.size(), 1u);
+    EXPECT_NEAR(geoms[0].z_min_m, upright_geoms[0].z_min_m, 1e-9);
+    EXPECT_NEAR(geoms[0].z_max_m, upright_geoms[0].z_max_m, 1e-9);
+    for (const Vector2d& p : {Vector2d(1.9, -1.101), Vector2d(1.9, -1.099), Vector2d(1.92, -1.11),
+                              Vector2d(0.3, -1.06), Vector2d(0.3, -1.16)}) {
+      EXPECT_EQ(geoms[0].ContainsXY(p), upright_geoms[0].ContainsXY(p)) << p.transpose();
+    }
+  }
+}
+
 TEST(GroundTruthWallsTest, CylindersBecomeCirclesAndOtherShapesAreReported) {
   const MjModelPtr m = Load(kInlineWorld);
   const GroundTruthWalls walls = ExtractGroundTruthWalls(m.get());

@@ -46,6 +46,33 @@ void SetTireRadius(mjModel* m, int tire, double radius) {
   }
 }
 
+// A path as the text of a double-quoted XML attribute: a world named `q"uote.xml` made the
+// composed scene malformed XML, refused as "does not compile with robot ...: XML parse error"
+// though the world was sound, and one named `x&amp;y.xml` was read as `x&y.xml`, another file,
+// which ran under its name (s45).
+std::string XmlAttributeText(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string ComposeSceneMjcf(const std::filesystem::path& world, const std::filesystem::path& robot,
@@ -55,8 +82,8 @@ std::string ComposeSceneMjcf(const std::filesystem::path& world, const std::file
   const std::filesystem::path robot_relative =
       std::filesystem::relative(robot, world.parent_path());
   std::string text = "<mujoco model=\"plywood_scene\">\n  <include file=\"" +
-                     world.filename().string() + "\"/>\n  <include file=\"" +
-                     robot_relative.string() + "\"/>\n";
+                     XmlAttributeText(world.filename().string()) + "\"/>\n  <include file=\"" +
+                     XmlAttributeText(robot_relative.string()) + "\"/>\n";
   if (placeholder_pairs > 0) {
     text += "  <contact>\n";
     for (int i = 0; i < placeholder_pairs; ++i) {

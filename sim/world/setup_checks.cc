@@ -1,5 +1,6 @@
 #include "sim/world/setup_checks.h"
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -107,10 +108,11 @@ std::optional<std::string> GeomTheGroundTruthCannotHold(const Scene& scene, doub
     const std::string shape = Shape(m, g);
     std::string what = (shape.front() == 'e' ? "an " : "a ") + shape;  // "an" for the one vowel
     if (type == mjGEOM_BOX || type == mjGEOM_CYLINDER || type == mjGEOM_CAPSULE) {
-      // Only tilted ones reach here: upright ones the truth holds.
-      const double tilt_deg =
-          std::acos(std::clamp(std::abs(scene.data()->geom_xmat[9 * g + 8]), 0.0, 1.0)) * 180.0 /
-          std::numbers::pi;
+      // Only tilted ones reach here: upright ones the truth holds (a box on any of its axes).
+      const Eigen::Matrix3d R_WG = Eigen::Map<const Eigen::Matrix<mjtNum, 3, 3, Eigen::RowMajor>>(
+          scene.data()->geom_xmat + 9 * g);
+      const int up = type == mjGEOM_BOX ? BoxAxisNearestVertical(R_WG) : 2;
+      const double tilt_deg = AxisTiltRad(R_WG, up) * 180.0 / std::numbers::pi;
       what += " tilted " + msgs::ShortestNumber(std::round(tilt_deg * 100.0) / 100.0) +
               " deg from upright";
     }
