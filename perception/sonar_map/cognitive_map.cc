@@ -391,6 +391,9 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
                                 options.beam_free_min_passes > 0 && options.obstacle_from_faces;
   // Cells that may lie between two faces of one piece: a gap up to obstacle_join_m.
   const int join_gap_cells = static_cast<int>(std::floor(options.obstacle_join_m / res + 1e-9));
+  // Well-painted faces this close stay one group (obstacle_cut_min_votes): a face line the
+  // classical model heard with a cell or two missing is one face, however a grazing axis heard it.
+  const int well_painted_gap_cells = join_gap_cells / 2;
   std::vector<int> heard_echoes;
   if (trim_keeps_heard_ends) {
     heard_echoes.assign(occ.size(), 0);
@@ -699,9 +702,9 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
             std::vector<int> votes;
             votes.reserve(piece.size());
             for (const auto& c : piece) votes.push_back(grid.OccupiedVotes(c.x(), c.y()));
-            groups =
-                ClustersOfWellPaintedCellsHeardApart(piece, votes, options.obstacle_cut_min_votes,
-                                                     *beam_free, options.beam_free_min_passes);
+            groups = ClustersOfWellPaintedCellsHeardApart(
+                piece, votes, options.obstacle_cut_min_votes, well_painted_gap_cells, *beam_free,
+                options.beam_free_min_passes);
           }
           if (groups.size() == 1) {
             apart.push_back(std::move(piece));

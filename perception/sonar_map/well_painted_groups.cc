@@ -12,7 +12,7 @@ namespace plywood::perception {
 
 std::vector<std::vector<Eigen::Vector2i>> ClustersOfWellPaintedCellsHeardApart(
     const std::vector<Eigen::Vector2i>& cells, const std::vector<int>& votes, int min_votes,
-    const BeamFreeGrid& beam_free, int min_echoes) {
+    int max_gap, const BeamFreeGrid& beam_free, int min_echoes) {
   if (votes.size() != cells.size()) throw std::invalid_argument("votes: one count per cell needed");
   if (min_votes < 1) throw std::invalid_argument("min_votes: must be >= 1");
   std::vector<Eigen::Vector2i> well_painted;
@@ -20,7 +20,7 @@ std::vector<std::vector<Eigen::Vector2i>> ClustersOfWellPaintedCellsHeardApart(
     if (votes[i] >= min_votes) well_painted.push_back(cells[i]);
   if (well_painted.size() < 2) return {cells};
   const std::vector<std::vector<Eigen::Vector2i>> sets =
-      ClustersHeardApart(well_painted, 0, beam_free, min_echoes);
+      ClustersHeardApart(well_painted, max_gap, beam_free, min_echoes);
   if (sets.size() < 2) return {cells};
   std::map<std::pair<int, int>, std::size_t> set_at;
   for (std::size_t s = 0; s < sets.size(); ++s)
