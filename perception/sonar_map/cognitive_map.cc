@@ -13,6 +13,7 @@
 #include "msgs/shortest_number.h"
 #include "perception/sonar_map/faces_heard_apart.h"
 #include "perception/sonar_map/line_fit.h"
+#include "perception/sonar_map/well_painted_groups.h"
 
 namespace plywood::perception {
 namespace {
@@ -317,6 +318,9 @@ void CognitiveMapOptions::Validate() const {
   if (!(obstacle_split_saving >= 0.0 && obstacle_split_saving <= 1.0))
     throw std::invalid_argument("obstacle_split_saving: must be in [0, 1]");
   if (beam_free_min_passes < 0) throw std::invalid_argument("beam_free_min_passes: must be >= 0");
+  if (obstacle_cut_min_votes < 0)
+    throw std::invalid_argument("obstacle_cut_min_votes: must be >= 0, got " +
+                                std::to_string(obstacle_cut_min_votes));
   if (!(std::isfinite(obstacle_peel_net_free_clearance_m) &&
         obstacle_peel_net_free_clearance_m >= 0.0))
     throw std::invalid_argument("obstacle_peel_net_free_clearance_m: must be a finite number >= 0");
@@ -387,6 +391,9 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
                                 options.beam_free_min_passes > 0 && options.obstacle_from_faces;
   // Cells that may lie between two faces of one piece: a gap up to obstacle_join_m.
   const int join_gap_cells = static_cast<int>(std::floor(options.obstacle_join_m / res + 1e-9));
+  // Well-painted faces this close stay one group (obstacle_cut_min_votes): a face line the
+  // classical model heard with a cell or two missing is one face, however a grazing axis heard it.
+  const int well_painted_gap_cells = join_gap_cells / 2;
   std::vector<int> heard_echoes;
   if (trim_keeps_heard_ends) {
     heard_echoes.assign(occ.size(), 0);
@@ -689,6 +696,16 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
         for (auto& piece : pieces) {
           std::vector<std::vector<Eigen::Vector2i>> groups =
               ClustersHeardApart(piece, join_gap_cells, *beam_free, options.beam_free_min_passes);
+          if (groups.size() == 1 && options.obstacle_cut_min_votes > 0) {
+            // Faces the network's blur joined within obstacle_join_m: grouped by the cells
+            // painted by many readings, the blur going with the nearest group.
+            std::vector<int> votes;
+            votes.reserve(piece.size());
+            for (const auto& c : piece) votes.push_back(grid.OccupiedVotes(c.x(), c.y()));
+            groups = ClustersOfWellPaintedCellsHeardApart(
+                piece, votes, options.obstacle_cut_min_votes, well_painted_gap_cells, *beam_free,
+                options.beam_free_min_passes);
+          }
           if (groups.size() == 1) {
             apart.push_back(std::move(piece));
             continue;

@@ -101,6 +101,16 @@ struct CognitiveMapOptions {
   // model, generator seed 44 world 9 s2 0.031 -> 0.103; issue 14 round 42b). Closer faces stay
   // one piece, as obstacle_join_m would join them anyway.
   bool obstacle_cut_unheard_gaps = true;
+  // (With obstacle_cut_unheard_gaps, where its groups by obstacle_join_m left a piece whole.) The
+  // piece's cells grouped again by the cells at least this many readings called occupied
+  // (LogOddsGrid::OccupiedVotes), groups more than half obstacle_join_m apart, the others going
+  // with the nearest group, and cut where a face heard in one group faces another, as above
+  // (ClustersOfWellPaintedCellsHeardApart).
+  // The network paints its +-0.7 m window from every reading, so the unseen gap between two boxes
+  // 0.3-0.5 m apart gets occupied cells from a few far readings (median 3 in issue 14 round 43b's
+  // traced runs; a box's inside 33): that blur joined the boxes' faces closer than obstacle_join_m
+  // and a rectangle spanned both (class C's painted gap). 0: off.
+  int obstacle_cut_min_votes = 6;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
 };

@@ -1003,6 +1003,84 @@ TEST(CognitiveMapTest, OneBoxHeardFromOutsideOnFacesFarApartStaysOneObstacle) {
   ExpectRectNear(uncut.obstacles[0], placed);
 }
 
+// `times` more readings p of every cell of `r` (metres, on cell edges) whose P is above `above`.
+void Paint(LogOddsGrid& grid, const Rect& r, double p, int times, double above = 0.0) {
+  for (int iy = 0; iy < grid.height(); ++iy)
+    for (int ix = 0; ix < grid.width(); ++ix)
+      if (r.Contains(grid.CellCentre(ix, iy)) && grid.Probability(ix, iy) > above)
+        for (int k = 0; k < times; ++k) grid.Add(ix, iy, p);
+}
+
+TEST(CognitiveMapTest, BoxesJoinedByBlurFromFewReadingsAreSeparateObstaclesWhenHeardApart) {
+  // Round 42b's L and box in its notch (0.4 m from the long arm, 0.5 m from the short one), the
+  // faces painted by ten readings each, and the network's blur in the unseen gap: a band 0.25 m
+  // high over the long arm, under the box (x 1.80-2.60, y 1.20-1.45), painted occupied by two far
+  // readings. The band leaves 0.15 m between itself and the box, less than obstacle_join_m, so
+  // round 42b's groups keep the piece whole: main's map is one rectangle over both and the gap.
+  const Rect long_arm{1.00, 0.90, 2.60, 1.20}, short_arm{1.00, 1.20, 1.30, 2.00};
+  const Rect box{1.80, 1.60, 2.60, 2.00};
+  LogOddsGrid grid = RoomWithUnseen({long_arm, short_arm, box}, {1.30, 1.20, 2.60, 2.00});
+  for (const Rect& r : {long_arm, short_arm, box}) Paint(grid, r, 0.98, 7, 0.9);
+  Paint(grid, {1.80, 1.20, 2.60, 1.45}, 0.98, 2);
+  auto label_at = [](const CognitiveMap& map, const Eigen::Vector2d& p) {
+    const int k = map.partitions.Find(p);
+    EXPECT_GE(k, 0) << p.transpose();
+    return k >= 0 ? map.partitions.partitions()[k].label : Label::kFree;
+  };
+  // Between the short arm and the box, above the band.
+  const Eigen::Vector2d in_gap{1.55, 1.50};
+  // The short arm's east face heard head-on from the east along the row between the band and the
+  // box (y 1.50-1.55, echo at x 1.28): the box lies wholly on that side of the face.
+  constexpr double kPi = 3.14159265358979323846;
+  const BeamFreeGrid heard = Beams({{2.40, 1.525}}, kPi, 1.12);
+  CognitiveMapOptions off;
+  off.obstacle_cut_min_votes = 0;
+  const CognitiveMap before = BuildCognitiveMap(grid, kInside, off, &heard);
+  ASSERT_EQ(before.obstacles.size(), 1u);
+  ExpectRectNear(before.obstacles[0], {1.00, 0.90, 2.60, 2.00});
+  // On by default: grouped by the well-painted cells, the L and the box are apart.
+  const CognitiveMap after = BuildCognitiveMap(grid, kInside, {}, &heard);
+  EXPECT_GE(after.obstacles.size(), 2u);
+  EXPECT_EQ(label_at(after, in_gap), Label::kFree);
+  for (const Eigen::Vector2d& p :
+       {Eigen::Vector2d(1.50, 1.05), Eigen::Vector2d(1.15, 1.70), Eigen::Vector2d(2.20, 1.80)})
+    EXPECT_EQ(label_at(after, p), Label::kObstacle) << p.transpose();
+  // No obstacle reaches into the unseen strip west of the band and the box.
+  for (const Rect& o : after.obstacles)
+    EXPECT_FALSE(o.Contains(in_gap) || o.Contains(Eigen::Vector2d(1.55, 1.80)))
+        << o.x0 << " " << o.y0;
+  ExpectTilesTheRoom(after);
+  // Nothing heard from between them: one rectangle, as a box seen from two sides must stay.
+  const BeamFreeGrid no_axes = Beams({}, 0.0, 1.0);
+  const CognitiveMap unheard = BuildCognitiveMap(grid, kInside, {}, &no_axes);
+  ASSERT_EQ(unheard.obstacles.size(), 1u);
+  ExpectRectNear(unheard.obstacles[0], {1.00, 0.90, 2.60, 2.00});
+}
+
+TEST(CognitiveMapTest, OneBoxWhoseInsideFewReadingsPaintedStaysOneObstacle) {
+  // A 0.8 m box whose west and east faces were painted by ten readings and heard head-on from
+  // outside, its north and south faces and its inside painted occupied by two far readings: its
+  // well-painted cells are two face lines 0.7 m apart, neither heard from the other's side.
+  const Rect box{1.60, 1.20, 2.40, 2.00};
+  LogOddsGrid grid = RoomWithUnseen({box}, box);
+  Paint(grid, {1.65, 1.25, 2.35, 1.95}, 0.98, 2);  // inside
+  Paint(grid, {1.60, 1.20, 1.65, 2.00}, 0.98, 7);  // west face
+  Paint(grid, {2.35, 1.20, 2.40, 2.00}, 0.98, 7);  // east face
+  constexpr double kPi = 3.14159265358979323846;
+  BeamFreeGrid beams(TestGridGeometry(), {});
+  msgs::RangeRing ring;
+  ring.readings.push_back({msgs::Pose2D{0.0, 0.0, 0.0}, 0.62, true});
+  for (const double y : {1.325, 1.525, 1.725, 1.925})
+    for (int k = 0; k < 2; ++k) {
+      beams.Integrate(ring, {3.00, y, kPi});  // echo at x 2.38
+      beams.Integrate(ring, {1.00, y, 0.0});  // echo at x 1.62
+    }
+  const CognitiveMap map = BuildCognitiveMap(grid, kInside, {}, &beams);
+  ASSERT_EQ(map.obstacles.size(), 1u);
+  // The west and east sides where the echoes put them (2 cm inside the cell edges).
+  ExpectRectNear(map.obstacles[0], {1.62, box.y0, 2.38, box.y1});
+}
+
 TEST(CognitiveMapTest, InvalidJoinDistanceOrFillThrowsNamingTheField) {
   EXPECT_NO_THROW(CognitiveMapOptions{}.Validate());
   for (const double join :
@@ -1026,6 +1104,11 @@ TEST(CognitiveMapTest, InvalidJoinDistanceOrFillThrowsNamingTheField) {
     CognitiveMapOptions options;
     options.obstacle_peel_net_free_clearance_m = clearance;
     ExpectThrowsNaming(options, "obstacle_peel_net_free_clearance_m");
+  }
+  {
+    CognitiveMapOptions options;
+    options.obstacle_cut_min_votes = -1;
+    ExpectThrowsNaming(options, "obstacle_cut_min_votes");
   }
   // BuildCognitiveMap validates too.
   CognitiveMapOptions options;

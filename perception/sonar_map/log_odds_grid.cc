@@ -48,12 +48,14 @@ void LogOddsGridOptions::Validate() const {
 LogOddsGrid::LogOddsGrid(const LogOddsGridOptions& options) : options_(options) {
   options_.Validate();
   log_odds_.assign(static_cast<std::size_t>(width()) * height(), 0.0);
+  occupied_votes_.assign(log_odds_.size(), 0);
 }
 
 void LogOddsGrid::Add(int ix, int iy, double p) {
   double& l = log_odds_[Index(ix, iy)];
   l = std::clamp(l + ClampedLogit(p, options_.log_odds), -options_.log_odds.log_odds_limit,
                  options_.log_odds.log_odds_limit);
+  if (p > 0.5) ++occupied_votes_[Index(ix, iy)];
 }
 
 double LogOddsGrid::Probability(int ix, int iy) const {

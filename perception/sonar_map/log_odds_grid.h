@@ -55,6 +55,10 @@ class LogOddsGrid {
                  const msgs::Pose2D& X_WR);
 
   double LogOdds(int ix, int iy) const { return log_odds_[Index(ix, iy)]; }
+  // How many readings called cell (ix, iy) occupied (p > 0.5). The log-odds saturate, so a cell
+  // the network painted from a few far readings and a box face heard a hundred times both read
+  // P ~ 1; the count tells them apart.
+  int OccupiedVotes(int ix, int iy) const { return occupied_votes_[Index(ix, iy)]; }
   double Probability(int ix, int iy) const;
   bool Contains(int ix, int iy) const {
     return ix >= 0 && iy >= 0 && ix < width() && iy < height();
@@ -73,6 +77,7 @@ class LogOddsGrid {
   std::size_t Index(int ix, int iy) const { return static_cast<std::size_t>(iy) * width() + ix; }
   LogOddsGridOptions options_;
   std::vector<double> log_odds_;
+  std::vector<int> occupied_votes_;
 };
 
 }  // namespace plywood::perception

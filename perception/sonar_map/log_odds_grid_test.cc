@@ -39,6 +39,23 @@ TEST(LogOddsGridTest, AddMatchesCombine) {
   EXPECT_EQ(grid.CellAt(o.origin_xy - Eigen::Vector2d(0.01, 0.0)), Eigen::Vector2i(-1, -1));
 }
 
+TEST(LogOddsGridTest, OccupiedVotesCountTheReadingsAboveOneHalf) {
+  // The log-odds saturate (a cell painted by two readings and one heard a hundred times both read
+  // P ~ 1); the count of readings that called the cell occupied does not.
+  LogOddsGridOptions o;
+  o.width = 4;
+  o.height = 3;
+  LogOddsGrid grid(o);
+  for (double p : {0.7, 0.9, 0.4, 0.5, 0.98}) grid.Add(2, 1, p);
+  EXPECT_EQ(grid.OccupiedVotes(2, 1), 3);
+  for (int k = 0; k < 100; ++k) grid.Add(1, 1, 0.98);
+  for (int k = 0; k < 2; ++k) grid.Add(0, 1, 0.98);
+  EXPECT_GT(grid.Probability(0, 1), 0.99);
+  EXPECT_EQ(grid.OccupiedVotes(1, 1), 100);
+  EXPECT_EQ(grid.OccupiedVotes(0, 1), 2);
+  EXPECT_EQ(grid.OccupiedVotes(0, 0), 0);
+}
+
 // A model that says "occupied" ahead of the robot and "free" behind it.
 class AheadModel : public SonarCellModel {
  public:
