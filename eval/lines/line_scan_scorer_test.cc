@@ -155,26 +155,37 @@ TEST(LineScanScorerTest, SplitAndMergeMeetsAcceptanceOnUnseenWorlds) {
   }
 }
 
+// seed000_room_1's world text, and the same with its south wall's box replaced by `geoms` (and
+// `appended` before </worldbody>, so every other face keeps its walls.csv row).
+struct Room1Texts {
+  std::string one_box;
+  std::string rewritten;
+};
+Room1Texts Room1WithSouthWallAs(const std::string& geoms, const std::string& appended = "") {
+  std::ifstream in(testing::SourceRoot() / "worlds/seed000_room_1.xml");
+  std::stringstream text;
+  text << in.rdbuf();
+  Room1Texts texts{text.str(), text.str()};
+  const std::string wall_0 =
+      "<geom name=\"wall_0\" class=\"wall\" pos=\"0.3 -1.109 0.5\" size=\"1.618 0.009 0.5\"/>";
+  const std::size_t at = texts.rewritten.find(wall_0);
+  EXPECT_NE(at, std::string::npos);
+  if (at == std::string::npos) return texts;
+  texts.rewritten.replace(at, wall_0.size(), geoms);
+  texts.rewritten.replace(texts.rewritten.find("</worldbody>"), 0, appended);
+  return texts;
+}
+
 // seed000_room_1 with its south wall written as two 1.618 m boxes meeting at x = 0.3 (the second
 // half last, so every other face keeps its walls.csv row) is the same room to every scorer: from
 // the very same scans, 4 walls visible and every extractor's recall 1, and each line matches the
 // same walls.csv row (the south wall's first half's inner face names the joined surface). Scored
 // face by face it was 5 walls and recall 0.8: a line along the wall matched one half.
 TEST(LineScanScorerTest, AWallWrittenAsTwoBoxesEndToEndScoresAsOneWall) {
-  std::ifstream in(testing::SourceRoot() / "worlds/seed000_room_1.xml");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string one_box = text.str();
-  const std::string wall_0 =
-      "<geom name=\"wall_0\" class=\"wall\" pos=\"0.3 -1.109 0.5\" size=\"1.618 0.009 0.5\"/>";
-  ASSERT_NE(one_box.find(wall_0), std::string::npos);
-  std::string two_boxes = one_box;
-  two_boxes.replace(two_boxes.find(wall_0), wall_0.size(),
-                    "<geom name=\"wall_0a\" class=\"wall\" pos=\"-0.509 -1.109 0.5\" "
-                    "size=\"0.809 0.009 0.5\"/>");
-  two_boxes.replace(two_boxes.find("</worldbody>"), 0,
-                    "<geom name=\"wall_0b\" class=\"wall\" pos=\"1.109 -1.109 0.5\" "
-                    "size=\"0.809 0.009 0.5\"/>\n");
+  const auto [one_box, two_boxes] = Room1WithSouthWallAs(
+      "<geom name=\"wall_0a\" class=\"wall\" pos=\"-0.509 -1.109 0.5\" size=\"0.809 0.009 0.5\"/>",
+      "<geom name=\"wall_0b\" class=\"wall\" pos=\"1.109 -1.109 0.5\" size=\"0.809 0.009 "
+      "0.5\"/>\n");
   const Seed000RoomResult one = RunWorld("one_box", one_box, 2);
   const Seed000RoomResult two = RunWorld("two_boxes", two_boxes, 2);
   ASSERT_EQ(one.scans.size(), 2u);
@@ -207,21 +218,10 @@ TEST(LineScanScorerTest, AWallWrittenAsTwoBoxesEndToEndScoresAsOneWall) {
 // one-box room's. Scored as three walls it was 6 visible, recall 0.5 and precision 0.75 for four
 // of the five extractors: a line along the wall overlapped each panel by a third and matched none.
 TEST(LineScanScorerTest, AWallOfPanelsWrittenToTheMillimetreScoresAsOneWall) {
-  std::ifstream in(testing::SourceRoot() / "worlds/seed000_room_1.xml");
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string one_box = text.str();
-  const std::string wall_0 =
-      "<geom name=\"wall_0\" class=\"wall\" pos=\"0.3 -1.109 0.5\" size=\"1.618 0.009 0.5\"/>";
-  ASSERT_NE(one_box.find(wall_0), std::string::npos);
-  std::string panels = one_box;
-  panels.replace(panels.find(wall_0), wall_0.size(),
-                 "<geom name=\"wall_0a\" class=\"wall\" pos=\"-0.779 -1.109 0.5\" "
-                 "size=\"0.539 0.009 0.5\"/>"
-                 "<geom name=\"wall_0b\" class=\"wall\" pos=\"0.3 -1.109 0.5\" "
-                 "size=\"0.539 0.009 0.5\"/>"
-                 "<geom name=\"wall_0c\" class=\"wall\" pos=\"1.379 -1.109 0.5\" "
-                 "size=\"0.539 0.009 0.5\"/>");
+  const auto [one_box, panels] = Room1WithSouthWallAs(
+      "<geom name=\"wall_0a\" class=\"wall\" pos=\"-0.779 -1.109 0.5\" size=\"0.539 0.009 0.5\"/>"
+      "<geom name=\"wall_0b\" class=\"wall\" pos=\"0.3 -1.109 0.5\" size=\"0.539 0.009 0.5\"/>"
+      "<geom name=\"wall_0c\" class=\"wall\" pos=\"1.379 -1.109 0.5\" size=\"0.539 0.009 0.5\"/>");
   const Seed000RoomResult one = RunWorld("one_box", one_box, 2);
   const Seed000RoomResult three = RunWorld("panels", panels, 2);
   EXPECT_EQ(three.rig.walls.segments.size(), 24u);

@@ -954,7 +954,7 @@ TEST(CognitiveMapTest, BoxesHeardApartAcrossAGapNeverHeardAreSeparateObstaclesNo
   // Nothing heard that says two things (no face heard from between them): one rectangle, as a
   // box heard on two sides must stay (next test).
   const BeamFreeGrid no_axes = Beams({}, 0.0, 1.0);
-  const CognitiveMap unheard = BuildCognitiveMap(grid, kInside, on, &no_axes);
+  const CognitiveMap unheard = BuildCognitiveMap(grid, kInside, {}, &no_axes);
   ASSERT_EQ(unheard.obstacles.size(), 1u);
   ExpectRectNear(unheard.obstacles[0], {1.00, 0.90, 2.60, 2.00});
   // A box nearer than obstacle_join_m (0.15 m from both arms) is one piece with the L: faces of

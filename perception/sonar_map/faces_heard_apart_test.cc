@@ -5,29 +5,13 @@
 #include <stdexcept>
 #include <vector>
 
+#include "perception/sonar_map/beam_free_test_support.h"
+
 namespace plywood::perception {
 namespace {
 
 using Cells = std::vector<Eigen::Vector2i>;
 constexpr double kPi = 3.14159265358979323846;
-
-// 10 cm cells from the origin, 2 x 2 m: cell (ix, iy) spans [0.1 ix, 0.1 (ix + 1)] along x.
-BeamFreeGrid EmptyBeams() {
-  LogOddsGridOptions geometry;
-  geometry.resolution_m = 0.1;
-  geometry.origin_xy = {0.0, 0.0};
-  geometry.width = 20;
-  geometry.height = 20;
-  return BeamFreeGrid(geometry, {});
-}
-
-// `times` readings of one transducer at `from` pointing along `heading`, echoing at `range`.
-void Hear(BeamFreeGrid& beams, const Eigen::Vector2d& from, double heading, double range,
-          int times = 2) {
-  msgs::RangeRing ring;
-  ring.readings.push_back({msgs::Pose2D{0.0, 0.0, 0.0}, range, true});
-  for (int k = 0; k < times; ++k) beams.Integrate(ring, {from.x(), from.y(), heading});
-}
 
 // A column of cells x = ix, rows y0..y1.
 Cells Column(int ix, int y0, int y1) {
