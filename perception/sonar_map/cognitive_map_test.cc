@@ -758,6 +758,13 @@ TEST(CognitiveMapTest, AThinEndTheAxesHeardHeadOnIsKeptByTheTrim) {
   EXPECT_FALSE(covered(BuildCognitiveMap(grid, kInside, {}), in_low));
 }
 
+// The label of the partition holding `p`; every point asked about must lie in one.
+Label LabelAt(const CognitiveMap& map, const Eigen::Vector2d& p) {
+  const int k = map.partitions.Find(p);
+  EXPECT_GE(k, 0) << p.transpose();
+  return k >= 0 ? map.partitions.partitions()[k].label : Label::kFree;
+}
+
 TEST(CognitiveMapTest, AnLsNotchTheAxesHeardFreeIsNoPartOfItsRectangle) {
   // An L (1.0 x 0.3 m arm, 0.3 x 0.5 m arm on its west end) whose notch (x 1.80-2.50, y 1.30-1.80)
   // the network painted occupied along the inner face (y 1.30-1.60, its corner echoes), and axes
@@ -773,11 +780,6 @@ TEST(CognitiveMapTest, AnLsNotchTheAxesHeardFreeIsNoPartOfItsRectangle) {
   for (int ix = 36; ix <= 49; ++ix)
     if (ix != 39 && ix != 44) from.emplace_back((ix + 0.5) * kRes, 2.4);
   const BeamFreeGrid beams = Beams(from, -0.5 * 3.14159265358979323846, 2.4 - 1.30);
-  auto label_at = [](const CognitiveMap& map, const Eigen::Vector2d& p) {
-    const int k = map.partitions.Find(p);
-    EXPECT_GE(k, 0) << p.transpose();
-    return k >= 0 ? map.partitions.partitions()[k].label : Label::kFree;
-  };
   const Eigen::Vector2d notch{2.15, 1.45};
   CognitiveMapOptions off;
   off.obstacle_peel_free = false;
@@ -789,11 +791,11 @@ TEST(CognitiveMapTest, AnLsNotchTheAxesHeardFreeIsNoPartOfItsRectangle) {
   ASSERT_EQ(after.obstacles.size(), 2u);
   ExpectRectNear(after.obstacles[0], long_arm);
   ExpectRectNear(after.obstacles[1], short_arm);
-  EXPECT_EQ(label_at(after, notch), Label::kFree);
+  EXPECT_EQ(LabelAt(after, notch), Label::kFree);
   ExpectTilesTheRoom(after);
   // Without the axes' free space (the map the robot plans on) nothing is peeled.
   const CognitiveMap planning = BuildCognitiveMap(grid, kInside, {});
-  EXPECT_EQ(label_at(planning, notch), Label::kObstacle);
+  EXPECT_EQ(LabelAt(planning, notch), Label::kObstacle);
 }
 
 TEST(CognitiveMapTest, AnLsNotchTheNetworkSawFreeAwayFromEchoesIsPeeledWithoutAnyAxis) {
@@ -805,11 +807,6 @@ TEST(CognitiveMapTest, AnLsNotchTheNetworkSawFreeAwayFromEchoesIsPeeledWithoutAn
   for (int iy = 26; iy <= 35; ++iy)
     for (int k = 0; k < 6; ++k) grid.Add(44, iy, 0.98);
   const BeamFreeGrid no_axes = Beams({}, 0.0, 1.0);
-  auto label_at = [](const CognitiveMap& map, const Eigen::Vector2d& p) {
-    const int k = map.partitions.Find(p);
-    EXPECT_GE(k, 0) << p.transpose();
-    return k >= 0 ? map.partitions.partitions()[k].label : Label::kFree;
-  };
   const Eigen::Vector2d notch_east{2.40, 1.55}, long_arm_east{2.40, 1.15};
   CognitiveMapOptions axes_only;
   axes_only.obstacle_peel_net_free_clearance_m = 0.0;
@@ -819,12 +816,12 @@ TEST(CognitiveMapTest, AnLsNotchTheNetworkSawFreeAwayFromEchoesIsPeeledWithoutAn
   CognitiveMapOptions with_net;
   with_net.obstacle_peel_net_free_clearance_m = 0.05;
   const CognitiveMap after = BuildCognitiveMap(grid, kInside, with_net, &no_axes);
-  EXPECT_EQ(label_at(before, notch_east), Label::kObstacle);
-  EXPECT_EQ(label_at(after, notch_east), Label::kFree);
+  EXPECT_EQ(LabelAt(before, notch_east), Label::kObstacle);
+  EXPECT_EQ(LabelAt(after, notch_east), Label::kFree);
   // The long arm's east end, peeled off with the notch's columns, is an obstacle of its own.
-  EXPECT_EQ(label_at(after, long_arm_east), Label::kObstacle);
+  EXPECT_EQ(LabelAt(after, long_arm_east), Label::kObstacle);
   // The free cells beside the echoes do not count: the column next to the echoes stays in.
-  EXPECT_EQ(label_at(after, {2.275, 1.55}), Label::kObstacle);
+  EXPECT_EQ(LabelAt(after, {2.275, 1.55}), Label::kObstacle);
   ExpectTilesTheRoom(after);
 }
 
@@ -909,11 +906,6 @@ TEST(CognitiveMapTest, BoxesHeardApartAcrossAGapNeverHeardAreSeparateObstaclesNo
   const Rect box{1.80, 1.60, 2.60, 2.00};
   const Rect gap{1.30, 1.20, 2.60, 2.00};
   const LogOddsGrid grid = RoomWithUnseen({long_arm, short_arm, box}, gap);
-  auto label_at = [](const CognitiveMap& map, const Eigen::Vector2d& p) {
-    const int k = map.partitions.Find(p);
-    EXPECT_GE(k, 0) << p.transpose();
-    return k >= 0 ? map.partitions.partitions()[k].label : Label::kFree;
-  };
   const Eigen::Vector2d in_gap{1.55, 1.30};
   // The short arm's east face heard head-on from the east along one row between the long arm and
   // the box (y 1.40-1.45, echo at x 1.28): the box lies wholly on that side of the face, so it is
@@ -945,12 +937,12 @@ TEST(CognitiveMapTest, BoxesHeardApartAcrossAGapNeverHeardAreSeparateObstaclesNo
          {Eigen::Vector2d(o.x0 + 0.01, o.y0 + 0.01), Eigen::Vector2d(o.x1 - 0.01, o.y1 - 0.01)})
       EXPECT_TRUE(long_arm.Contains(p) || short_arm.Contains(p) || box.Contains(p))
           << p.transpose();
-  EXPECT_EQ(label_at(after, in_gap), Label::kFree);
+  EXPECT_EQ(LabelAt(after, in_gap), Label::kFree);
   ExpectTilesTheRoom(after);
   // The map the robot plans on (no axes' grid) keeps main's rectangle.
   const CognitiveMap planning = BuildCognitiveMap(grid, kInside, {});
   ASSERT_EQ(planning.obstacles.size(), 1u);
-  EXPECT_EQ(label_at(planning, in_gap), Label::kObstacle);
+  EXPECT_EQ(LabelAt(planning, in_gap), Label::kObstacle);
   // Nothing heard that says two things (no face heard from between them): one rectangle, as a
   // box heard on two sides must stay (next test).
   const BeamFreeGrid no_axes = Beams({}, 0.0, 1.0);
@@ -1022,11 +1014,6 @@ TEST(CognitiveMapTest, BoxesJoinedByBlurFromFewReadingsAreSeparateObstaclesWhenH
   LogOddsGrid grid = RoomWithUnseen({long_arm, short_arm, box}, {1.30, 1.20, 2.60, 2.00});
   for (const Rect& r : {long_arm, short_arm, box}) Paint(grid, r, 0.98, 7, 0.9);
   Paint(grid, {1.80, 1.20, 2.60, 1.45}, 0.98, 2);
-  auto label_at = [](const CognitiveMap& map, const Eigen::Vector2d& p) {
-    const int k = map.partitions.Find(p);
-    EXPECT_GE(k, 0) << p.transpose();
-    return k >= 0 ? map.partitions.partitions()[k].label : Label::kFree;
-  };
   // Between the short arm and the box, above the band.
   const Eigen::Vector2d in_gap{1.55, 1.50};
   // The short arm's east face heard head-on from the east along the row between the band and the
@@ -1044,10 +1031,10 @@ TEST(CognitiveMapTest, BoxesJoinedByBlurFromFewReadingsAreSeparateObstaclesWhenH
   on.obstacle_cut_min_votes = 6;
   const CognitiveMap after = BuildCognitiveMap(grid, kInside, on, &heard);
   EXPECT_GE(after.obstacles.size(), 2u);
-  EXPECT_EQ(label_at(after, in_gap), Label::kFree);
+  EXPECT_EQ(LabelAt(after, in_gap), Label::kFree);
   for (const Eigen::Vector2d& p :
        {Eigen::Vector2d(1.50, 1.05), Eigen::Vector2d(1.15, 1.70), Eigen::Vector2d(2.20, 1.80)})
-    EXPECT_EQ(label_at(after, p), Label::kObstacle) << p.transpose();
+    EXPECT_EQ(LabelAt(after, p), Label::kObstacle) << p.transpose();
   // No obstacle reaches into the unseen strip west of the band and the box.
   for (const Rect& o : after.obstacles)
     EXPECT_FALSE(o.Contains(in_gap) || o.Contains(Eigen::Vector2d(1.55, 1.80)))

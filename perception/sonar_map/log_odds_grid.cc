@@ -52,10 +52,10 @@ LogOddsGrid::LogOddsGrid(const LogOddsGridOptions& options) : options_(options) 
 }
 
 void LogOddsGrid::Add(int ix, int iy, double p) {
-  double& l = log_odds_[Index(ix, iy)];
-  l = std::clamp(l + ClampedLogit(p, options_.log_odds), -options_.log_odds.log_odds_limit,
-                 options_.log_odds.log_odds_limit);
-  if (p > 0.5) ++occupied_votes_[Index(ix, iy)];
+  const std::size_t i = Index(ix, iy);
+  log_odds_[i] = std::clamp(log_odds_[i] + ClampedLogit(p, options_.log_odds),
+                            -options_.log_odds.log_odds_limit, options_.log_odds.log_odds_limit);
+  if (p > 0.5) ++occupied_votes_[i];
 }
 
 double LogOddsGrid::Probability(int ix, int iy) const {
