@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "eval/protocol.h"
+#include "msgs/stable_hash.h"
 #include "perception/logs/byte_order_mark.h"
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
@@ -173,13 +174,8 @@ std::string RepeatedField(const SweepSpec& spec) {
 }  // namespace
 
 std::string StableHash(const std::string& text) {
-  std::uint64_t hash = 14695981039346656037ull;
-  for (unsigned char c : text) {
-    hash ^= c;
-    hash *= 1099511628211ull;
-  }
   char hex[17];
-  std::snprintf(hex, sizeof(hex), "%016llx", static_cast<unsigned long long>(hash));
+  std::snprintf(hex, sizeof(hex), "%016llx", static_cast<unsigned long long>(Fnv1a64(text)));
   return hex;
 }
 

@@ -13,6 +13,7 @@
 
 #include "msgs/angle_units.h"
 #include "msgs/shortest_number.h"
+#include "msgs/stable_hash.h"
 #include "robot/control/controller.h"
 #include "robot/odometry/trajectory_metrics.h"
 #include "sim/config/config_error.h"
@@ -59,14 +60,6 @@ using experiment_runner_detail::FaceForLabels;
 using experiment_runner_detail::Scheduled;
 
 namespace {
-
-// SplitMix64 finaliser: decorrelates nearby seeds.
-std::uint64_t Mix(std::uint64_t z) {
-  z += 0x9e3779b97f4a7c15ULL;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
 
 // MuJoCo (and the planar drive) would zero a non-finite command and let the robot stand still
 // silently; a run whose controller computes NaN must fail and say so instead.
@@ -131,9 +124,7 @@ void RequireControllerSensors(const ExperimentConfig& config) {
 }  // namespace
 
 std::uint64_t ComponentSeed(std::uint64_t experiment_seed, const std::string& component) {
-  std::uint64_t hash = 0xcbf29ce484222325ULL;  // FNV-1a
-  for (unsigned char c : component) hash = (hash ^ c) * 0x100000001b3ULL;
-  return Mix(experiment_seed ^ Mix(hash));
+  return SplitMix64(experiment_seed ^ SplitMix64(Fnv1a64(component)));
 }
 
 struct ExperimentRunner::Parts {

@@ -2,30 +2,12 @@
 
 #include <cmath>
 
+#include "msgs/stable_hash.h"
+
 namespace plywood::sim::worldgen {
-namespace {
-
-std::uint64_t SplitMix64(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-
-// FNV-1a: a stable hash of the family's name (std::hash is not stable across libraries).
-std::uint64_t Fnv1a(const std::string& text) {
-  std::uint64_t h = 0xcbf29ce484222325ULL;
-  for (const unsigned char c : text) {
-    h ^= c;
-    h *= 0x100000001b3ULL;
-  }
-  return h;
-}
-
-}  // namespace
 
 std::uint64_t WorldStreamSeed(const std::string& family, std::uint64_t seed, std::uint64_t index) {
-  return SplitMix64(SplitMix64(SplitMix64(Fnv1a(family)) ^ seed) ^ index);
+  return SplitMix64(SplitMix64(SplitMix64(Fnv1a64(family)) ^ seed) ^ index);
 }
 
 WorldRng::WorldRng(const std::string& family, std::uint64_t seed, std::uint64_t index)
