@@ -1645,5 +1645,112 @@ TEST_F(ReliabilityTest, AWorldFileNamedWithXmlMarkupRuns) {
     EXPECT_EQ(Slurp(run_dir / name / "walls.csv"), Slurp(run_dir / "hall" / "walls.csv"));
   }
 }
+
+// --- The s46 eighteenth pass (docs/errors.md) ---------------------------------------------------
+
+// A spawn given in part: `--set robot.spawn.theta_deg=90` on an experiment without a spawn (the
+// world's spawn_0, here seed001_room_2's (-0.8, -0.5, 0), is then the default) put the robot at
+// (0, 0, 90) without a word. The keys left out are spawn_0's; without a spawn_0 the origin's.
+TEST_F(ReliabilityTest, ASpawnGivenInPartKeepsTheWorldsSpawnForTheRest) {
+  const std::string yaml =
+      "name: part_spawn\n"
+      "duration_s: 0.5\n"
+      "world: worlds/seed001_room_2.xml\n"
+      "robot: {model: magellan_pro}\n"
+      "sensors: {encoders: {}}\n"
+      "output: {snapshot: false}\n";
+  const fs::path dir = Dir();
+  const fs::path file = WriteFile(dir / "experiment.yaml", yaml);
+  const auto truth = [&](const std::string& name, const std::string& sets) {
+    const fs::path out = dir / name;
+    const CliResult run =
+        RunPlywood("run " + file.string() + " --quiet --out " + out.string() + " " + sets, dir);
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    const YAML::Node t = YAML::LoadFile((out / "metrics.json").string())["truth"];
+    return std::vector<double>{t["final_x_m"].as<double>(), t["final_y_m"].as<double>(),
+                               t["final_theta_deg"].as<double>()};
+  };
+  // The robot stands still (idle): its final pose is its spawn, to the settling of its contacts.
+  const auto expect_near = [](const std::vector<double>& got, const std::vector<double>& want) {
+    for (std::size_t i = 0; i < want.size(); ++i) EXPECT_NEAR(got[i], want[i], 1e-3) << i;
+  };
+  expect_near(truth("none", ""), {-0.8, -0.5, 0.0});
+  expect_near(truth("theta", "--set robot.spawn.theta_deg=90"), {-0.8, -0.5, 90.0});
+  expect_near(truth("x", "--set robot.spawn.x_m=0.5"), {0.5, -0.5, 0.0});
+  expect_near(truth("all",
+                    "--set robot.spawn.x_m=0.5 --set robot.spawn.y_m=0 "
+                    "--set robot.spawn.theta_deg=0"),
+              {0.5, 0.0, 0.0});
+  // The hall's spawn_0 is (-2, -2, 0): a heading alone starts there too.
+  const fs::path hall = WriteFile(dir / "hall.yaml",
+                                  "name: hall\nduration_s: 0.5\nworld: worlds/hall.xml\n"
+                                  "robot: {model: p3dx, spawn: {theta_deg: 45}}\n"
+                                  "sensors: {encoders: {}}\noutput: {snapshot: false}\n");
+  const CliResult run =
+      RunPlywood("run " + hall.string() + " --quiet --out " + (dir / "hall").string(), dir);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const YAML::Node t = YAML::LoadFile((dir / "hall" / "metrics.json").string())["truth"];
+  EXPECT_NEAR(t["final_x_m"].as<double>(), -2.0, 1e-3);
+  EXPECT_NEAR(t["final_y_m"].as<double>(), -2.0, 1e-3);
+  EXPECT_NEAR(t["final_theta_deg"].as<double>(), 45.0, 1e-3);
+}
+
+// A relative controller.weights_file is the data root's (models/sonar_net_v1.txt), unless it names
+// a file beside the experiment, as `world` does: a network retrained into a copy of the
+// experiment's folder under the shipped name ran the data root's network, exit 0, and one under
+// another name was "cannot open". Here the folder's copy is cut short, so reading it is refused,
+// and an intact copy under a new name runs, recorded by its path in config.yaml.
+TEST_F(ReliabilityTest, SonarNetWeightsBesideTheExperimentAreTheOnesRead) {
+  const fs::path dir = Dir();
+  const std::string shipped = Slurp(testing::SourceRoot() / "models/sonar_net_v1.txt");
+  ASSERT_FALSE(shipped.empty());
+  WriteFile(dir / "models/sonar_net_v1.txt", shipped.substr(0, shipped.size() / 2));
+  WriteFile(dir / "models/my_net.txt", shipped);
+  const std::string yaml =
+      "name: explorer\n"
+      "duration_s: 0.5\n"
+      "world: worlds/seed001_room_1.xml\n"
+      "robot: {model: magellan_pro, spawn: {x_m: -1, y_m: -0.8, theta_deg: 90}}\n"
+      "controller: {type: sonar_explorer, sonar_model: net, weights_file: "
+      "models/sonar_net_v1.txt}\n"
+      "sensors: {sonar: {}, encoders: {}, bumpers: {}}\n"
+      "output: {snapshot: false}\n";
+  const fs::path file = WriteFile(dir / "experiment.yaml", yaml);
+  const CliResult cut =
+      RunPlywood("run " + file.string() + " --quiet --out " + (dir / "cut").string(), dir);
+  ExpectOneLine(cut, {"experiment.yaml: controller: weights_file: " +
+                      (dir / "models/sonar_net_v1.txt").string() + ": line"});
+  const CliResult own =
+      RunPlywood("run " + file.string() + " --quiet --out " + (dir / "own").string() +
+                     " --set controller.weights_file=models/my_net.txt",
+                 dir);
+  ASSERT_EQ(own.exit_code, 0) << own.err;
+  EXPECT_EQ(YAML::LoadFile((dir / "own" / "config.yaml").string())["controller"]["weights_file"]
+                .as<std::string>(),
+            (dir / "models/my_net.txt").string());
+}
+
+// MuJoCo resets the data when the accelerations blow up, so the step that diverged ends one step
+// from zero: a square_hall at physics.timestep_s 0.04 that diverged 0.88 s in was reported as
+// "physics diverged at t=0.04 s (MuJoCo: ... Time = 0.8800.)". The time given is MuJoCo's.
+TEST_F(ReliabilityTest, PhysicsThatDivergesIsReportedAtTheTimeItDid) {
+  const fs::path dir = Dir();
+  const CliResult run = RunPlywood(
+      "run " + (testing::SourceRoot() / "experiments/square_hall.yaml").string() +
+          " --quiet --out " + (dir / "out").string() +
+          " --set duration_s=20 --set physics.timestep_s=0.04 --set controller.rate_hz=20"
+          " --set sensors.encoders.rate_hz=10 --set output.trajectory_rate_hz=10",
+      dir);
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  const std::string ours = "physics diverged at t=", theirs = "Time = ";
+  const std::size_t at = run.err.find(ours), mujoco = run.err.find(theirs);
+  ASSERT_NE(at, std::string::npos) << run.err;
+  ASSERT_NE(mujoco, std::string::npos) << run.err;
+  const double t_s = std::stod(run.err.substr(at + ours.size()));
+  const double mujoco_s = std::stod(run.err.substr(mujoco + theirs.size()));
+  EXPECT_GT(mujoco_s, 0.04) << run.err;
+  EXPECT_NEAR(t_s, mujoco_s, 1e-4) << run.err;
+  EXPECT_FALSE(fs::exists(dir / "out" / "metrics.json"));
+}
 }  // namespace
 }  // namespace plywood

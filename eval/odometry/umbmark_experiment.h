@@ -69,9 +69,13 @@ UmbmarkOutcome RunUmbmark(const sim::ExperimentConfig& config, const UmbmarkOpti
                           const UmbmarkRunSink& sink = {});
 
 // The on-the-spot turns of a run, found from the estimate `estimator` in the trajectory: motions
-// between two rests (estimate unchanged between samples) that turn more than 45 deg while moving
-// less than 5 cm.
+// between two rests that turn more than 45 deg while moving less than 5 cm. A rest is a sample
+// whose estimate is that of the sample at least `estimate_period_s` (the period at which the
+// estimate is updated: the encoders') before it, or of the sample before it when that is further
+// back: at a trajectory rate above the encoders' the estimate stands still between their reads
+// while the robot turns.
 std::vector<robot::TurnObservation> ExtractTurns(const sim::RunRecord& record,
-                                                 std::size_t estimator);
+                                                 std::size_t estimator,
+                                                 double estimate_period_s = 0.0);
 
 }  // namespace plywood::eval

@@ -44,6 +44,74 @@ TEST(UmbmarkExperimentTest, RecoversInjectedErrorsAndCorrectsThem) {
   EXPECT_NEAR(outcome.before.turn_calibration.mean_error_deg, 90.0 / 1.03 - 90.0, 0.5);
 }
 
+// A run that ends at duration_s before its square is closed has no return-position error: 30 s of
+// a 4 m square at 0.2 m/s gave E_d 0.99907, E_b 0.99828 for the injected 1.005 and 1.03, exit 0.
+TEST(UmbmarkExperimentTest, SquaresCutShortByTheDurationAreRefused) {
+  const sim::ExperimentConfig config = Shipped({"duration_s=30"});
+  UmbmarkOptions options = ReadUmbmarkOptions(config);
+  options.runs_per_direction = 1;
+  try {
+    RunUmbmark(config, options);
+    FAIL() << "a square cut short was scored";
+  } catch (const sim::ConfigError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("umbmark.yaml: duration_s: the before run cw_1 did not finish its 4 m "
+                        "square within duration_s = 30 s"),
+              std::string::npos)
+        << what;
+    EXPECT_NE(what.find("m of its 16 m)"), std::string::npos) << what;
+  }
+  // Long enough, the same squares are scored.
+  const sim::ExperimentConfig enough = Shipped({"duration_s=120"});
+  EXPECT_NO_THROW(RunUmbmark(enough, options));
+}
+
+// A square that runs into the world's walls: the wheels slip at the wall while the encoder estimate
+// drives on, so the squares "finish" and the return errors are the walls' (a 7 m square from the
+// hall's (-2, -2): E_d 0.99948, E_b 0.92825, E_max,syst 6.37 m, exit 0). Refused before driving,
+// naming where the robot meets the wall; the shipped 4 m squares fit.
+TEST(UmbmarkExperimentTest, SquaresThatDoNotFitInTheWorldAreRefused) {
+  const sim::ExperimentConfig config = Shipped({"controller.side_m=7"});
+  UmbmarkOptions options = ReadUmbmarkOptions(config);
+  options.runs_per_direction = 1;
+  try {
+    RunUmbmark(config, options);
+    FAIL() << "squares through the walls were scored";
+  } catch (const sim::ConfigError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("umbmark.yaml: controller.side_m: the 7 m squares from the spawn (-2, -2) "
+                        "do not fit in hall.xml: on the ccw square's leg 1 the robot at ("),
+              std::string::npos)
+        << what;
+    EXPECT_NE(what.find("overlaps geom 'wall_1'"), std::string::npos) << what;
+  }
+  // 5.5 m squares reach x, y = 3.5 m, 0.5 m short of the walls' inner faces: the P3-DX (0.345 m
+  // from its centre at most) clears them, so they run; 6 m squares' corners lie on the walls.
+  EXPECT_NO_THROW(RunUmbmark(Shipped({"controller.side_m=5.5", "duration_s=200"}), options));
+  EXPECT_THROW(RunUmbmark(Shipped({"controller.side_m=6"}), options), sim::ConfigError);
+}
+
+// The turn calibration tells a rest by the estimate standing still; the estimate moves only when
+// the encoders (10 Hz) are read, so with trajectory rows at 20 or 50 Hz every turn came to "rest"
+// half-way: 0 turns and "track ratio 1.00000" for a robot built with E_b 1.03, exit 0. At every
+// trajectory rate the same 8 spot turns of one square each way are found, with the same angles.
+TEST(UmbmarkExperimentTest, SpotTurnsAreFoundAtTrajectoryRatesAboveTheEncoders) {
+  std::vector<robot::TurnCalibration> found;
+  for (const char* rate : {"10", "20", "50", "5"}) {
+    SCOPED_TRACE(rate);
+    const sim::ExperimentConfig config =
+        Shipped({std::string("output.trajectory_rate_hz=") + rate});
+    UmbmarkOptions options = ReadUmbmarkOptions(config);
+    options.runs_per_direction = 1;
+    options.correct = false;
+    const UmbmarkOutcome outcome = RunUmbmark(config, options);
+    found.push_back(outcome.before.turn_calibration);
+    EXPECT_EQ(found.back().turns, 8);
+    EXPECT_NEAR(found.back().mean_error_deg, 90.0 / 1.03 - 90.0, 0.5);
+    EXPECT_NEAR(found.back().track_ratio, found.front().track_ratio, 1e-3);
+  }
+}
+
 TEST(UmbmarkExperimentTest, RejectsGroundTruthSteering) {
   const sim::ExperimentConfig config = Shipped({"controller.steer_by=ground_truth"});
   EXPECT_THROW(RunUmbmark(config, ReadUmbmarkOptions(config)), sim::ConfigError);

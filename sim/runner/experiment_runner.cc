@@ -462,6 +462,9 @@ void ExperimentRunner::Run(const Progress& progress) {
       record_trajectory();
     }
     if (finished) break;
+    // MuJoCo resets the data when the accelerations blow up, so after the step its clock reads one
+    // step from zero: a run that diverged at 21.24 s was reported "at t=0.03 s" (s46).
+    const double step_start_s = scene_->time_s();
     {
       const PartTimer timer(part_times_ ? &part_times_->physics_s : nullptr);
       scene_->Step();
@@ -469,8 +472,9 @@ void ExperimentRunner::Run(const Progress& progress) {
     ++cost_.steps;
     const mjData* d = scene_->stepped_data();
     if (d->warning[mjWARN_BADQACC].number > 0 || !std::isfinite(d->qpos[0])) {
-      throw std::runtime_error("physics diverged at t=" + FormatNumber(d->time) + " s (MuJoCo: " +
-                               LastMujocoWarning() + "); try a smaller physics.timestep_s");
+      throw std::runtime_error(
+          "physics diverged at t=" + FormatNumber(TimeAtStepPrecision(step_start_s, dt)) +
+          " s (MuJoCo: " + LastMujocoWarning() + "); try a smaller physics.timestep_s");
     }
     if (progress && scene_->time_s() >= next_progress_s) {
       progress(scene_->time_s() / duration, scene_->time_s());
