@@ -1025,8 +1025,8 @@ TEST(CognitiveMapTest, BoxesJoinedByBlurFromFewReadingsAreSeparateObstaclesWhenH
   const CognitiveMap before = BuildCognitiveMap(grid, kInside, off, &heard);
   ASSERT_EQ(before.obstacles.size(), 1u);
   ExpectRectNear(before.obstacles[0], {1.00, 0.90, 2.60, 2.00});
-  // On (off by default until its held-out sweeps are done: round 43b): grouped by the
-  // well-painted cells, the L and the box are apart.
+  // On (the default since stop 46; round 43b): grouped by the well-painted cells, the L and the
+  // box are apart.
   CognitiveMapOptions on;
   on.obstacle_cut_min_votes = 6;
   const CognitiveMap after = BuildCognitiveMap(grid, kInside, on, &heard);
