@@ -41,12 +41,7 @@ void SetStageMetrics(sim::Metrics& m, const std::string& prefix, const UmbmarkSt
 void RequireFinishedSquare(const sim::ExperimentConfig& config, const std::string& stage,
                            const std::string& run, const sim::RunRecord& record) {
   if (record.metrics.Number("run.controller_finished") != 0.0) return;
-  double driven_m = 0.0;
-  for (std::size_t i = 1; i < record.trajectory.size(); ++i) {
-    const msgs::Pose2D& a = record.trajectory[i - 1].truth;
-    const msgs::Pose2D& b = record.trajectory[i].truth;
-    driven_m += std::hypot(b.x_m - a.x_m, b.y_m - a.y_m);
-  }
+  const double driven_m = record.metrics.Number("truth.distance_m");
   const double side_m = config.controller.square_path.side_m;
   throw sim::ConfigError(
       config.source_file, "duration_s",
