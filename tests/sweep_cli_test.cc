@@ -1047,6 +1047,100 @@ TEST(SweepCliTest, SeedsAreReadInDecimalAsAnExperimentReadsThem) {
   }
 }
 
+// audit s47: a cell's id holds its robot's name, not the robot's MJCF, so a sweep resumed after
+// models/p3dx.xml was edited (its wheels' joint damping 0 -> 0.5 here) kept the finished runs of
+// the old robot beside new runs of the edited one: "2 of 2 runs finished", exit 0, truth.distance_m
+// 0.928 and 0.844 m for two seeds that drive alike. sweep.json records each robot's MJCF by its
+// contents (robot_models), and a resume after it changed starts again, as after a new build. The
+// data root is a copy ($PLYWOOD_ROOT) whose models/ the test edits.
+TEST(SweepCliTest, ASweepResumedAfterTheRobotsFileChangedStartsAgain) {
+  const fs::path dir = MakeTempDir("SweepEditedRobot");
+  const fs::path root = dir / "root";
+  fs::create_directories(root);
+  for (const auto& entry : fs::directory_iterator(SourceRoot())) {
+    const std::string name = entry.path().filename().string();
+    if (name == "models") {
+      fs::copy(entry.path(), root / name, fs::copy_options::recursive);
+    } else if (name != "build") {
+      fs::create_directory_symlink(entry.path(), root / name);
+    }
+  }
+  ASSERT_EQ(setenv("PLYWOOD_ROOT", root.c_str(), 1), 0);
+  const std::string experiment = (SourceRoot() / "experiments/square_hall.yaml").string();
+  const fs::path sweep = WriteFile(dir / "s.yaml", "experiment: " + experiment +
+                                                       "\nseeds: [1, 2]\nset:\n"
+                                                       "  duration_s: [5]\n"
+                                                       "  output.snapshot: [false]\n");
+  const fs::path out = dir / "out";
+  const std::string command = "sweep " + sweep.string() + " --out " + out.string() + " --quiet";
+  ASSERT_EQ(RunPlywood(command, dir).exit_code, 0);
+  const auto first = eval::ParseCsv(Slurp(out / "results.csv"));
+  ASSERT_EQ(first.size(), 3u);
+
+  // A kill leaves the second cell unfinished; then the robot's file is edited.
+  fs::remove_all(out / "runs" / first[2][0]);
+  const fs::path robot = root / "models" / "p3dx.xml";
+  std::string text = Slurp(robot);
+  const std::string joint = "<joint armature=\"0.05\" damping=\"0\"/>";
+  ASSERT_NE(text.find(joint), std::string::npos);
+  text.replace(text.find(joint), joint.size(), "<joint armature=\"0.05\" damping=\"0.5\"/>");
+  WriteFile(robot, text);
+
+  const auto resumed = RunPlywood("sweep " + sweep.string() + " --out " + out.string(), dir);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.err.find("another robot 'p3dx'"), std::string::npos) << resumed.err;
+  const auto rows = eval::ParseCsv(Slurp(out / "results.csv"));
+  ASSERT_EQ(rows.size(), 3u);
+  const auto column =
+      std::find(rows[0].begin(), rows[0].end(), "truth.distance_m") - rows[0].begin();
+  const auto seed = std::find(rows[0].begin(), rows[0].end(), "seed") - rows[0].begin();
+  ASSERT_LT(column, static_cast<long>(rows[0].size()));
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const fs::path fresh = dir / ("fresh" + rows[i][seed]);
+    ASSERT_EQ(RunPlywood("run " + experiment + " --seed " + rows[i][seed] +
+                             " --set duration_s=5 --no-snapshot --quiet --out " + fresh.string(),
+                         dir)
+                  .exit_code,
+              0);
+    const std::string metrics = Slurp(fresh / "metrics.json");
+    const std::string distance = rows[i][column];
+    EXPECT_NE(metrics.find("\"distance_m\": " + distance), std::string::npos)
+        << "seed " << rows[i][seed] << ": the table's " << distance
+        << " m is not the edited robot's run: " << metrics;
+  }
+  unsetenv("PLYWOOD_ROOT");
+}
+
+// audit s47: metrics.json wrote run.seed through a double, which holds whole numbers only up to
+// 2^53: seed 2^53 + 1 came out as 9007199254740992 and 2^63 - 1 as 9223372036854775808, beside
+// config.yaml's (and results.csv's seed column's) exact seed, exit 0. Both seeds run here.
+TEST(SweepCliTest, SeedsAbove2To53AreWrittenExactlyInMetricsAndResults) {
+  const fs::path dir = MakeTempDir("SweepLargeSeeds");
+  const fs::path sweep = WriteFile(
+      dir / "s.yaml", "experiment: " + (SourceRoot() / "experiments/square_hall.yaml").string() +
+                          "\nseeds: [9007199254740993, 9223372036854775807]\nset:\n"
+                          "  duration_s: [0.05]\n  output.snapshot: [false]\n");
+  const fs::path out = dir / "out";
+  const auto r = RunPlywood("sweep " + sweep.string() + " --out " + out.string() + " --quiet", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto rows = eval::ParseCsv(Slurp(out / "results.csv"));
+  ASSERT_EQ(rows.size(), 3u);
+  const auto column = [&](const std::string& name) {
+    return std::find(rows[0].begin(), rows[0].end(), name) - rows[0].begin();
+  };
+  ASSERT_LT(column("run.seed"), static_cast<long>(rows[0].size()));
+  std::vector<std::string> seeds;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i][column("run.seed")], rows[i][column("seed")]);
+    seeds.push_back(rows[i][column("seed")]);
+    const std::string metrics = Slurp(out / "runs" / rows[i][0] / "metrics.json");
+    EXPECT_NE(metrics.find("\"seed\": " + rows[i][column("seed")] + ","), std::string::npos)
+        << metrics;
+  }
+  std::sort(seeds.begin(), seeds.end());
+  EXPECT_EQ(seeds, (std::vector<std::string>{"9007199254740993", "9223372036854775807"}));
+}
+
 // Two world files of one name in different folders are two worlds: summary.csv (and its plots)
 // used to label both by the stem, pooling their runs into one group, one mean over two worlds.
 TEST(SweepCliTest, TwoWorldFilesOfOneNameAreSummarisedApart) {

@@ -389,6 +389,7 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
                                      e.what());
             }
             cell.seed = config.seed;
+            cell.robot = config.robot;
             for (const std::filesystem::path& file : FilesReadBesidesTheWorld(config)) {
               cell.read_files.emplace_back(file, content_hash(file));
             }

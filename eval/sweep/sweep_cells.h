@@ -25,6 +25,9 @@ struct SweepCell {
   // hashes, in the order the run reads them: part of `id` and of sweep.json's inputs; not kept
   // in cells.json.
   std::vector<std::pair<std::filesystem::path, std::string>> read_files;
+  // The robot model it runs (robot.model): its MJCF is hashed into sweep.json's robot_models, so a
+  // resume after models/ was edited starts again; not kept in cells.json.
+  std::string robot;
 };
 
 // A world the sweep runs in, with the family it was drawn from (empty for files).

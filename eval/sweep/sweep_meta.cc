@@ -36,6 +36,9 @@ std::optional<SweepMetaDamage> FindSweepMetaDamage(const nlohmann::json& meta) {
   if (meta.contains("inputs") && !IsStringMap(meta["inputs"])) {
     return SweepMetaDamage{"inputs", "expected a mapping of file to hash"};
   }
+  if (meta.contains("robot_models") && !IsStringMap(meta["robot_models"])) {
+    return SweepMetaDamage{"robot_models", "expected a mapping of robot to hash"};
+  }
   return std::nullopt;
 }
 

@@ -36,7 +36,9 @@ void Flatten(const nlohmann::json& node, const std::string& prefix, RunMetrics& 
   }
   if (node.is_number()) {
     const double value = node.get<double>();
-    out.text[prefix] = sim::FormatNumber(value);
+    // A whole number as the run wrote it: run.seed above 2^53 came out as the nearest double. A
+    // number the run wrote from a double reads back as the same text either way.
+    out.text[prefix] = node.is_number_integer() ? node.dump() : sim::FormatNumber(value);
     out.numbers[prefix] = value;
   } else if (node.is_string()) {
     out.text[prefix] = node.get<std::string>();

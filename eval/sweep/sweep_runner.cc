@@ -22,6 +22,7 @@
 #include "eval/sweep/sweep_meta.h"
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
+#include "sim/config/robot_catalog.h"
 #include "sim/config/yaml_text_value.h"
 #include "sim/runner/build_id.h"
 #include "sim/runner/run_directory.h"
@@ -127,6 +128,14 @@ std::map<std::string, std::string> InputHashes(const SweepSpec& spec) {
 }
 
 }  // namespace
+
+std::string RobotModelHash(const std::string& robot) {
+  try {
+    return WorldContentHash(sim::FindRobot(robot).mjcf);  // the file and any it names (meshes)
+  } catch (const std::exception&) {
+    return "";  // not a robot of this catalog, or its file cannot be read
+  }
+}
 
 SweepFolderLock::SweepFolderLock(const fs::path& out, int shard_index, int shard_count,
                                  bool quiet) {
@@ -265,6 +274,16 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
   }
   meta["inputs"] = inputs;
   meta["plywood_build_id"] = sim::ProgramBuildId();
+  // The robots' MJCF (models/), part of the program as the build is: a cell's id holds the robot's
+  // name, not its file, so a resume after models/p3dx.xml was edited kept the old robot's runs
+  // beside new runs of the edited one.
+  std::map<std::string, std::string> robots;
+  for (const SweepCell& cell : cells) {
+    if (!cell.robot.empty() && !robots.contains(cell.robot)) {
+      robots.emplace(cell.robot, RobotModelHash(cell.robot));
+    }
+  }
+  meta["robot_models"] = robots;
 
   nlohmann::ordered_json full = nlohmann::ordered_json::array();
   for (const SweepCell& cell : cells) {
@@ -382,6 +401,16 @@ std::string WhySweepIsStale(const SweepLayout& layout) {
     return "it was run by another plywood build (build id " +
            (build.empty() ? std::string("unrecorded") : build.substr(0, 12)) + ", this one " +
            sim::ProgramBuildId().substr(0, 12) + ")";
+  }
+  const auto robots = meta.value("robot_models", std::map<std::string, std::string>{});
+  for (const auto& [robot, hash] : robots) {
+    const std::string now = RobotModelHash(robot);
+    if (now != hash) {
+      return "its runs were made with another robot '" + robot + "' (" +
+             (now.empty() ? std::string("no such robot now")
+                          : sim::FindRobot(robot).mjcf.string() + " changed since") +
+             ")";
+    }
   }
   return "";
 }

@@ -84,8 +84,13 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
                         const SweepLayout& layout);
 
 // Empty when `layout.out` holds nothing yet or results this program can resume from; otherwise
-// why not, as one phrase: another plywood build ran it (ProgramBuildId differs).
+// why not, as one phrase: another plywood build ran it (ProgramBuildId differs), or a robot's
+// MJCF changed since (sweep.json's robot_models).
 std::string WhySweepIsStale(const SweepLayout& layout);
+
+// WorldContentHash of the robot's MJCF in the catalog (models/NAME.xml), or "" when there is no
+// such robot or its file cannot be read.
+std::string RobotModelHash(const std::string& robot);
 
 // When the folder is stale, says why and removes everything but sweep.yaml and the locks (runs,
 // generated worlds, tables), so the sweep starts again; a shard (other shards may be running) is

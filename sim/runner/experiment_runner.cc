@@ -502,7 +502,7 @@ void ExperimentRunner::Run(const Progress& progress) {
 
 void ExperimentRunner::Score() {
   Metrics& m = record_.metrics;
-  m.Set("run.seed", static_cast<double>(config_.seed));
+  m.SetWholeNumber("run.seed", config_.seed);
   m.Set("run.simulated_s", scene_->time_s());
   m.Set("run.steps", static_cast<double>(cost_.steps));
   m.Set("run.world", config_.world_path.filename().string());

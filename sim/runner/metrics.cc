@@ -33,6 +33,8 @@ std::string Metrics::ToJson() const {
     nlohmann::json& leaf = (*object)[parts.back()];
     if (const double* number = std::get_if<double>(&value)) {
       leaf = *number;
+    } else if (const auto* whole = std::get_if<std::uint64_t>(&value)) {
+      leaf = *whole;
     } else {
       leaf = std::get<std::string>(value);
     }
