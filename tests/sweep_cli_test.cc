@@ -140,7 +140,21 @@ TEST(SweepCliTest, ASweepWhoseEveryCellFailsPrintsNoTraceback) {
 TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
   const fs::path dir = MakeTempDir("SweepBadInput");
   const std::string experiment = (SourceRoot() / "experiments/default.yaml").string();
+  const fs::path hall = SourceRoot() / "worlds/hall.xml";
+  fs::copy_file(hall, dir / "hall_copy.xml", fs::copy_options::overwrite_existing);
   const std::map<std::string, std::pair<std::string, std::string>> cases{
+      // audit s47: cells that resolve alike from values written apart were blamed on `set`,
+      // naming neither the axis nor the values.
+      {"values_written_apart",
+       {"experiment: " + experiment + "\nset: {duration_s: [5, 5.0]}\n",
+        "set.duration_s: cell 1 repeats cell 0 (the same resolved config: '5.0' and '5' resolve "
+        "alike)"}},
+      {"a_world_and_its_copy",
+       {"experiment: " + experiment + "\nworlds: [" + hall.string() + ", " +
+            (dir / "hall_copy.xml").string() + "]\n",
+        "worlds: cell 1 repeats cell 0 (the same resolved config: '" +
+            (dir / "hall_copy.xml").string() + "' and '" + hall.string() +
+            "' hold the same world)"}},
       {"unknown_axis", {"experiment: " + experiment + "\nsedes: [1]\n", "sedes"}},
       {"empty_seeds", {"experiment: " + experiment + "\nseeds: []\n", "seeds"}},
       {"empty_values",

@@ -160,15 +160,38 @@ bool HasRepeats(const std::vector<T>& items) {
   return false;
 }
 
-std::string RepeatedField(const SweepSpec& spec) {
-  if (HasRepeats(spec.seeds)) return "seeds";
-  if (HasRepeats(spec.experiments)) return "experiment";
-  if (HasRepeats(spec.world_files)) return "worlds";
-  if (HasRepeats(spec.profiles)) return "profiles";
-  for (const auto& axis : spec.axes) {
-    if (HasRepeats(axis.values)) return "set." + axis.key;
+// The field that makes cell `b` repeat cell `a`, and the two values that resolve alike: the first
+// of the sweep's axes on which the two cells differ. Judged by the lists' texts alone, a repeat of
+// values written apart (duration_s: [5, 5.0], a world and its copy) was blamed on `set` without
+// saying which values.
+std::pair<std::string, std::string> RepeatedField(const SweepSpec& spec, const SweepCell& a,
+                                                  const SweepCell& b) {
+  const auto alike = [](const std::string& x, const std::string& y) {
+    return "'" + y + "' and '" + x + "' resolve alike";
+  };
+  if (a.experiment != b.experiment) return {"experiment", alike(a.experiment, b.experiment)};
+  if (a.world != b.world) {
+    return {"worlds", "'" + b.world + "' and '" + a.world + "' hold the same world"};
   }
-  return "set";  // values that resolve alike (0.5 and 0.50), or worlds with the same contents
+  if (a.profile != b.profile) return {"profiles", alike(a.profile, b.profile)};
+  for (std::size_t k = 0; k < spec.axes.size() && k < a.values.size(); ++k) {
+    if (a.values[k] != b.values[k]) {
+      return {"set." + spec.axes[k].key, alike(a.values[k], b.values[k])};
+    }
+  }
+  // Cells alike in every field: an entry given twice in one list.
+  const std::string twice = "an entry given twice";
+  if (HasRepeats(spec.seeds)) return {"seeds", "seed " + std::to_string(b.seed) + " given twice"};
+  if (HasRepeats(spec.experiments)) return {"experiment", twice};
+  if (HasRepeats(spec.world_files)) return {"worlds", twice};
+  if (!b.family.empty()) {  // two {family, seed} entries that draw the same world
+    return {"worlds", "'" + b.world + "' drawn by two entries of family " + b.family};
+  }
+  if (HasRepeats(spec.profiles)) return {"profiles", twice};
+  for (const auto& axis : spec.axes) {
+    if (HasRepeats(axis.values)) return {"set." + axis.key, twice};
+  }
+  return {"set", twice};
 }
 
 }  // namespace
@@ -395,10 +418,12 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
             }
             cell.id = StableHash(IdentityText(config, cell.read_files));
             if (const auto first = ids.find(cell.id); first != ids.end()) {
-              throw sim::ConfigError(spec.source_file, RepeatedField(spec),
+              const auto [field, why] = RepeatedField(spec, cells[first->second], cell);
+              throw sim::ConfigError(spec.source_file, field,
                                      "cell " + std::to_string(cell.index) + " repeats cell " +
                                          std::to_string(first->second) +
-                                         " (the same resolved config): remove the repeat");
+                                         " (the same resolved config: " + why +
+                                         "): remove the repeat");
             }
             ids[cell.id] = cell.index;
             if (!world.label.empty()) {
