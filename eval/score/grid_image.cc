@@ -3,6 +3,8 @@
 #include <png.h>
 
 #include <cctype>
+#include <csetjmp>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -17,57 +19,116 @@ namespace {
 // small a crafted file is.
 constexpr long kMaxPixels = 16'000'000;
 
+// libpng's error handler: keeps the message for the one-line error and jumps back to PngStep
+// (the default one prints to stderr). Warnings (an unknown chunk, a bad CRC in an ancillary one)
+// change nothing read here.
+void PngError(png_structp png, png_const_charp message) {
+  *static_cast<std::string*>(png_get_error_ptr(png)) = message ? message : "unknown error";
+  png_longjmp(png, 1);
+}
+void PngWarning(png_structp, png_const_charp) {}
+
+// Runs libpng calls; false when libpng failed (its message in the reader's error string). `step`
+// holds no object with a destructor: libpng's longjmp leaves it without unwinding.
+template <typename Step>
+bool PngStep(png_structp png, const Step& step) {
+  if (setjmp(png_jmpbuf(png)) != 0) return false;
+  step();
+  return true;
+}
+
+// The file and libpng's structures, released however ReadPng ends.
+struct PngReader {
+  std::FILE* in = nullptr;
+  png_structp png = nullptr;
+  png_infop info = nullptr;
+  std::string error;
+  ~PngReader() {
+    png_destroy_read_struct(&png, &info, nullptr);
+    if (in) std::fclose(in);
+  }
+};
+
+// The samples of a PNG as stored, through libpng's low-level reader with no transformation but
+// expanding palettes, bit depths below 8 and tRNS transparency. The simplified reader
+// (png_image_*) applied the file's gAMA or sRGB chunk: an 8-bit grey 0x80 tagged gamma 1.0 read
+// as 0xBC, a 16-bit 0x8000 tagged sRGB as linear 0.21, so a threshold between them sorted the map
+// the other way (e 0 where the stored samples give e 1, exit 0).
 GridImage ReadPng(const std::filesystem::path& path) {
   const std::string file = path.string();
-  png_image decoded{};
-  decoded.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&decoded, path.c_str())) {
-    throw sim::ConfigError(file, "PNG",
-                           std::string("not a readable PNG (libpng: ") + decoded.message + ")");
+  PngReader r;
+  r.in = std::fopen(path.c_str(), "rb");
+  if (r.in == nullptr) throw sim::ConfigError(file, "", "cannot read the file");
+  r.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &r.error, PngError, PngWarning);
+  if (r.png) r.info = png_create_info_struct(r.png);
+  if (r.png == nullptr || r.info == nullptr) {
+    throw sim::ConfigError(file, "PNG", "libpng could not start");
   }
-  if (static_cast<long>(decoded.width) * decoded.height > kMaxPixels) {
-    png_image_free(&decoded);
+  const auto fail = [&](const char* what) {
+    throw sim::ConfigError(file, "PNG", std::string(what) + " (libpng: " + r.error + ")");
+  };
+  if (!PngStep(r.png, [&] {
+        png_init_io(r.png, r.in);
+        png_read_info(r.png, r.info);
+      })) {
+    fail("not a readable PNG");
+  }
+  const png_uint_32 width = png_get_image_width(r.png, r.info);
+  const png_uint_32 height = png_get_image_height(r.png, r.info);
+  if (static_cast<long>(width) * height > kMaxPixels) {
     throw sim::ConfigError(file, "size", "more than 1.6e7 pixels (4000 x 4000)");
   }
-  // Sample values as stored: libpng hands 8-bit files over unchanged as 8-bit sRGB (alpha kept
-  // separate) and 16-bit files as 16-bit "linear"; any other pairing applies a gamma curve, and
-  // dropping alpha composites onto black.
-  const bool sixteen = (decoded.format & PNG_FORMAT_FLAG_LINEAR) != 0;
-  if (sixteen && (decoded.format & PNG_FORMAT_FLAG_ALPHA) != 0) {
-    png_image_free(&decoded);
+  if (!PngStep(r.png, [&] {
+        png_set_expand(r.png);  // palette to RGB, 1-4 bit grey to 8 bits, tRNS to alpha
+        png_read_update_info(r.png, r.info);
+      })) {
+    fail("not a readable PNG");
+  }
+  const int channels = png_get_channels(r.png, r.info);
+  const bool sixteen = png_get_bit_depth(r.png, r.info) == 16;
+  const bool alpha = (png_get_color_type(r.png, r.info) & PNG_COLOR_MASK_ALPHA) != 0;
+  if (sixteen && alpha) {
     throw sim::ConfigError(file, "PNG",
                            "16-bit with an alpha channel is not supported (save it without "
                            "alpha, or with 8 bits)");
   }
-  decoded.format = sixteen ? PNG_FORMAT_LINEAR_RGB : PNG_FORMAT_RGBA;
-  const std::size_t channels = sixteen ? 3 : 4;
-  std::vector<png_byte> buffer(PNG_IMAGE_SIZE(decoded));
-  if (!png_image_finish_read(&decoded, nullptr, buffer.data(), 0, nullptr)) {
-    const std::string message = decoded.message;
-    png_image_free(&decoded);
-    throw sim::ConfigError(file, "PNG", "truncated or corrupt (libpng: " + message + ")");
+  const std::size_t row_bytes = png_get_rowbytes(r.png, r.info);
+  std::vector<png_byte> data(row_bytes * height);
+  std::vector<png_bytep> rows(height);
+  for (png_uint_32 y = 0; y < height; ++y) rows[y] = data.data() + y * row_bytes;
+  if (!PngStep(r.png, [&] {
+        png_read_image(r.png, rows.data());
+        png_read_end(r.png, nullptr);
+      })) {
+    fail("truncated or corrupt");
   }
+
   GridImage image;
-  image.width = static_cast<int>(decoded.width);
-  image.height = static_cast<int>(decoded.height);
+  image.width = static_cast<int>(width);
+  image.height = static_cast<int>(height);
   image.brightness.resize(static_cast<std::size_t>(image.width) * image.height);
-  const auto* wide = reinterpret_cast<const png_uint_16*>(buffer.data());
+  const int colours = alpha ? channels - 1 : channels;  // grey or RGB
+  const double full = sixteen ? 65535.0 : 255.0;
+  const auto sample = [&](std::size_t i, int c) -> long {
+    const std::size_t k = static_cast<std::size_t>(channels) * i + static_cast<std::size_t>(c);
+    return sixteen ? 256L * data[2 * k] + data[2 * k + 1] : static_cast<long>(data[k]);
+  };
   for (std::size_t i = 0; i < image.brightness.size(); ++i) {
-    const std::size_t p = channels * i;
     // A pixel's colour says free or occupied; a transparent one's shows whatever lies beneath. A
     // map tool writing unknown cells as transparent black had them scored occupied, e 1.0.
-    if (!sixteen && buffer[p + 3] != 255) {
-      const int column = static_cast<int>(i % decoded.width);
-      const int row = static_cast<int>(i / decoded.width);
+    if (alpha && sample(i, colours) != 255) {
+      const int column = static_cast<int>(i % width);
+      const int row = static_cast<int>(i / width);
       throw sim::ConfigError(
           file, "pixel " + std::to_string(i),
           "(column " + std::to_string(column) + ", row " + std::to_string(row) +
-              ") is transparent (alpha " + std::to_string(buffer[p + 3]) +
+              ") is transparent (alpha " + std::to_string(sample(i, colours)) +
               " of 255): its colour alone does not say free or occupied; save the map without "
               "transparency, flattened onto the colour such pixels mean");
     }
-    image.brightness[i] = sixteen ? (wide[p] + wide[p + 1] + wide[p + 2]) / (3.0 * 65535.0)
-                                  : (buffer[p] + buffer[p + 1] + buffer[p + 2]) / (3.0 * 255.0);
+    long sum = 0;
+    for (int c = 0; c < colours; ++c) sum += sample(i, c);
+    image.brightness[i] = static_cast<double>(sum) / (colours * full);
   }
   return image;
 }

@@ -4,8 +4,10 @@
 #include <png.h>
 
 #include <cstdint>
+#include <cstdio>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sim/config/config_error.h"
@@ -61,6 +63,53 @@ TEST(GridImageTest, PngValuesAreReadAsStored) {
   image = ReadGridImage(WritePng("wide.png", PNG_FORMAT_LINEAR_Y, 3, 1, wide));
   EXPECT_EQ(image.At(1, 0), 32768 / 65535.0);
   EXPECT_EQ(image.At(2, 0), 1.0);
+}
+
+// A 1-row grey PNG of `samples` at `bit_depth` (8 or 16), written with libpng's low-level writer so
+// that it can carry a gAMA chunk (`gamma` > 0) or an sRGB one (`srgb`), as image editors write.
+fs::path WriteTaggedGreyPng(const std::string& name, int bit_depth,
+                            const std::vector<std::uint16_t>& samples, double gamma, bool srgb) {
+  const fs::path path = Dir() / name;
+  std::FILE* out = std::fopen(path.c_str(), "wb");
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  png_init_io(png, out);
+  png_set_IHDR(png, info, static_cast<png_uint_32>(samples.size()), 1, bit_depth,
+               PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+               PNG_FILTER_TYPE_DEFAULT);
+  if (gamma > 0.0) png_set_gAMA(png, info, gamma);
+  if (srgb) png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+  png_write_info(png, info);
+  std::vector<png_byte> row;
+  for (const std::uint16_t v : samples) {
+    if (bit_depth == 16) row.push_back(static_cast<png_byte>(v >> 8));
+    row.push_back(static_cast<png_byte>(v & 0xff));
+  }
+  png_write_row(png, row.data());
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  std::fclose(out);
+  return path;
+}
+
+// audit s47: libpng's simplified reader applied a file's gAMA or sRGB chunk, so the samples were
+// not read as stored: an 8-bit grey 0x80 tagged gamma 1.0 read as 0xBC (0.737), a 16-bit 0x8000
+// tagged sRGB as linear 0.214; `score grid --threshold 0.3` (0.6) then scored an all-unknown map
+// e 0 instead of 1 (1 instead of 0), exit 0.
+TEST(GridImageTest, PngSamplesAreReadAsStoredWhateverGammaTheFileNames) {
+  // No chunk, gAMA alone (linear, sRGB's 1/2.2, 2.2) and sRGB alone.
+  for (const auto& [gamma, srgb] : std::vector<std::pair<double, bool>>{
+           {0.0, false}, {1.0, false}, {0.45455, false}, {2.2, false}, {0.0, true}}) {
+    {
+      SCOPED_TRACE(std::to_string(gamma) + (srgb ? " sRGB" : ""));
+      const GridImage eight =
+          ReadGridImage(WriteTaggedGreyPng("g8.png", 8, {0, 0x80, 205, 255}, gamma, srgb));
+      EXPECT_EQ(eight.brightness, (std::vector<double>{0.0, 0x80 / 255.0, 205 / 255.0, 1.0}));
+      const GridImage wide =
+          ReadGridImage(WriteTaggedGreyPng("g16.png", 16, {0, 0x8000, 65535}, gamma, srgb));
+      EXPECT_EQ(wide.brightness, (std::vector<double>{0.0, 0x8000 / 65535.0, 1.0}));
+    }
+  }
 }
 
 // audit s41: an 8-bit alpha channel was ignored, so a pixel was read by the colour beneath its
