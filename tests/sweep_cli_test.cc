@@ -137,6 +137,9 @@ TEST(SweepCliTest, ASweepWhoseEveryCellFailsPrintsNoTraceback) {
   EXPECT_EQ(eval::ParseCsv(Slurp(dir / "out" / "failures.csv")).size(), 2u);
 }
 
+// Runs `sweep` and expects it refused in one line naming the file and `expected`, nothing run.
+void CheckRefusal(const fs::path& sweep, const std::string& expected);
+
 TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
   const fs::path dir = MakeTempDir("SweepBadInput");
   const std::string experiment = (SourceRoot() / "experiments/default.yaml").string();
@@ -229,14 +232,27 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
   for (const auto& [name, c] : cases) {
     SCOPED_TRACE(name);
     const fs::path sweep = WriteFile(dir / (name + ".yaml"), c.first);
-    const fs::path out = dir / ("out_" + name);
-    const auto r = RunPlywood("sweep " + sweep.string() + " --out " + out.string(), dir);
-    EXPECT_EQ(r.exit_code, 2);
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    EXPECT_NE(r.err.find(sweep.string()), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find(c.second), std::string::npos) << r.err;
-    EXPECT_EQ(CountRunDirs(out), 0);
+    CheckRefusal(sweep, c.second);
   }
+  // audit s47: without a name: key the sweep is named by its file's stem; a stem that is no plain
+  // folder name was refused as `name: ...` in a file without one.
+  const fs::path spaced = WriteFile(dir / "my sweep.yaml", "experiment: " + experiment + "\n");
+  CheckRefusal(spaced,
+               "name: must be a plain folder name (letters, digits, '_', '.', '-'), got "
+               "'my sweep' (no name: key, so the file's name; add name: NAME or rename "
+               "the file)");
+}
+
+void CheckRefusal(const fs::path& sweep, const std::string& expected) {
+  SCOPED_TRACE(sweep.string());
+  const fs::path out = sweep.parent_path() / ("out_" + sweep.stem().string());
+  const auto r = RunPlywood("sweep '" + sweep.string() + "' --out '" + out.string() + "'",
+                            sweep.parent_path());
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(sweep.string()), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+  EXPECT_EQ(CountRunDirs(out), 0);
 }
 
 TEST(SweepCliTest, ShardsCoverEveryCellOnceAndCollectLikeALocalSweep) {

@@ -286,8 +286,13 @@ SweepSpec LoadSweepSpec(const fs::path& path) {
       spec.name.find_first_not_of(
           "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_.-") !=
           std::string::npos) {
+    // Without a name: key the name is the file's stem, which the user never wrote as a name: the
+    // line blamed `name` in a file that has none ("my sweep.yaml").
+    const std::string from_stem =
+        top.Has("name") ? std::string()
+                        : " (no name: key, so the file's name; add name: NAME or rename the file)";
     top.Fail("name", "must be a plain folder name (letters, digits, '_', '.', '-'), got '" +
-                         spec.name + "'");
+                         spec.name + "'" + from_stem);
   }
   if (!top.Has("experiment")) top.Fail("experiment", "missing: name the base experiment");
   spec.experiments = ReadFiles(top.Raw("experiment"), base_dir, top, "experiment");
