@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "sim/config/config_error.h"
+#include "sim/runner/experiment_runner.h"
 
 namespace plywood::eval {
 namespace {
@@ -58,7 +59,10 @@ BackToBackScans TakeBackToBackScans(const sim::ExperimentConfig& config, const E
   if (scans < 1) throw std::invalid_argument("scans: must be >= 1, got " + std::to_string(scans));
   BackToBackScans rig;
   sim::RunRecord front = ScanFrom(config, p_W, theta_rad, scans, config.seed);
-  sim::RunRecord back = ScanFrom(config, p_W, theta_rad + std::numbers::pi, scans, config.seed + 1);
+  // The back scanner's noise from its own stream: seed + 1 was the next seed's front scanner, so
+  // seeds pooled in a sweep shared their draws.
+  sim::RunRecord back = ScanFrom(config, p_W, theta_rad + std::numbers::pi, scans,
+                                 sim::ComponentSeed(config.seed, "back scanner"));
   rig.front = std::move(front.laser);
   rig.back = std::move(back.laser);
   rig.walls = std::move(front.walls);

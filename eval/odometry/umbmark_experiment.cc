@@ -9,6 +9,7 @@
 #include "sim/config/config_archive.h"
 #include "sim/config/config_error.h"
 #include "sim/config/yaml_fields.h"
+#include "sim/runner/experiment_runner.h"
 #include "sim/runner/format_number.h"
 #include "sim/world/setup_checks.h"
 
@@ -178,19 +179,22 @@ UmbmarkOutcome RunUmbmark(const sim::ExperimentConfig& config, const UmbmarkOpti
                          const robot::OdometryCalibration& calibration) {
     UmbmarkStage stage;
     stage.calibration = calibration;
-    int index = 0;
     for (robot::SquareDirection direction :
          {robot::SquareDirection::kClockwise, robot::SquareDirection::kCounterClockwise}) {
-      for (int i = 1; i <= options.runs_per_direction; ++i, ++index) {
+      for (int i = 1; i <= options.runs_per_direction; ++i) {
         sim::ExperimentConfig run = config;
         run.protocol = "single";
         run.protocol_options = YAML::Node();
-        run.seed = config.seed + static_cast<std::uint64_t>(index);
+        const std::string name = std::string(robot::ToString(direction)) + "_" + std::to_string(i);
+        // Each square's noise from its own stream of the experiment's seed. seed + index made seed
+        // 1's cw_2 the same run as seed 2's cw_1, so a sweep over seeds pooled copies. The
+        // calibrated stage reuses the uncalibrated stage's streams square for square (common
+        // random numbers: the correction is compared on the same noise).
+        run.seed = sim::ComponentSeed(config.seed, "umbmark square " + name);
         run.odometry.calibration = calibration;
         run.controller.square_path.direction = direction;
         run.controller.square_path.laps = 1;
         if (direction == robot::SquareDirection::kClockwise) run.spawn.theta_deg += 90.0;
-        const std::string name = std::string(robot::ToString(direction)) + "_" + std::to_string(i);
         run.name = config.name + "-" + stage_name + "-" + name;
         sim::ExperimentRunner runner(run);
         runner.Run();

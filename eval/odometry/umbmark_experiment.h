@@ -62,8 +62,10 @@ using UmbmarkRunSink =
 // Runs UMBmark on `config`: a square_path controller steered by an odometry estimator
 // (controller.steer_by, which must not be ground_truth). The configured spawn is the start corner
 // facing along the counter-clockwise square's first leg; clockwise runs start at the same corner
-// turned 90 deg left, so both directions drive the same square. Run i of a stage uses seed
-// config.seed + i, so the runs differ in their noise but the whole protocol is reproducible.
+// turned 90 deg left, so both directions drive the same square. Each square (cw_1, ccw_2, ...)
+// draws its noise from its own stream of config.seed (sim::ComponentSeed), the same in both
+// stages, so the runs differ in their noise, no two seeds share a square's noise, and the whole
+// protocol is reproducible.
 // @throws sim::ConfigError when the config cannot drive UMBmark.
 UmbmarkOutcome RunUmbmark(const sim::ExperimentConfig& config, const UmbmarkOptions& options,
                           const UmbmarkRunSink& sink = {});

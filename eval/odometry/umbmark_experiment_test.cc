@@ -112,6 +112,30 @@ TEST(UmbmarkExperimentTest, SpotTurnsAreFoundAtTrajectoryRatesAboveTheEncoders) 
   }
 }
 
+// audit s47: run i of a stage used seed + i, so seed 1's cw_2 was seed 2's cw_1 to the last bit and
+// a sweep over seeds pooled copies of the same squares. No square of seed 1 may repeat one of
+// seed 2.
+TEST(UmbmarkExperimentTest, NoTwoSeedsShareASquare) {
+  const auto squares = [](const char* seed) {
+    const sim::ExperimentConfig config =
+        Shipped({"sensors.encoders.slip_sigma=0.001", std::string("seed=") + seed});
+    UmbmarkOptions options = ReadUmbmarkOptions(config);
+    options.runs_per_direction = 2;
+    options.correct = false;
+    return RunUmbmark(config, options).before.runs;
+  };
+  const std::vector<robot::UmbmarkRun> one = squares("1"), two = squares("2");
+  ASSERT_EQ(one.size(), 4u);
+  ASSERT_EQ(two.size(), 4u);
+  for (const robot::UmbmarkRun& a : one) {
+    for (const robot::UmbmarkRun& b : two) {
+      EXPECT_FALSE(a.error_x_m == b.error_x_m && a.error_y_m == b.error_y_m)
+          << "seed 1 and seed 2 drove a square with the same noise: (" << a.error_x_m << ", "
+          << a.error_y_m << ")";
+    }
+  }
+}
+
 TEST(UmbmarkExperimentTest, RejectsGroundTruthSteering) {
   const sim::ExperimentConfig config = Shipped({"controller.steer_by=ground_truth"});
   EXPECT_THROW(RunUmbmark(config, ReadUmbmarkOptions(config)), sim::ConfigError);

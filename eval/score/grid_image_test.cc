@@ -112,6 +112,35 @@ TEST(GridImageTest, PngSamplesAreReadAsStoredWhateverGammaTheFileNames) {
   }
 }
 
+// An Adam7-interlaced PNG (as some editors save maps) reads pixel for pixel as stored: libpng's
+// low-level reader must be told to de-interlace, or png_read_image returns the first pass's rows.
+TEST(GridImageTest, AnInterlacedPngReadsAsTheSamePixels) {
+  constexpr int kSide = 9;  // not a multiple of 8: every Adam7 pass is partial
+  std::vector<png_byte> pixels(kSide * kSide);
+  for (int i = 0; i < kSide * kSide; ++i) pixels[i] = static_cast<png_byte>((37 * i) % 256);
+  const fs::path path = Dir() / "interlaced.png";
+  std::FILE* out = std::fopen(path.c_str(), "wb");
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  png_init_io(png, out);
+  png_set_IHDR(png, info, kSide, kSide, 8, PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_ADAM7,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  std::vector<png_bytep> rows(kSide);
+  for (int y = 0; y < kSide; ++y) rows[y] = pixels.data() + y * kSide;
+  png_write_image(png, rows.data());
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  std::fclose(out);
+
+  const GridImage image = ReadGridImage(path);
+  ASSERT_EQ(image.width, kSide);
+  ASSERT_EQ(image.height, kSide);
+  for (int i = 0; i < kSide * kSide; ++i) {
+    EXPECT_EQ(image.brightness[i], pixels[i] / 255.0) << "pixel " << i;
+  }
+}
+
 // audit s41: an 8-bit alpha channel was ignored, so a pixel was read by the colour beneath its
 // transparency: a map tool writing unknown cells as transparent black had them scored occupied
 // (e 1.0 for an all-unknown map), as transparent white free. Any pixel not opaque is refused.
