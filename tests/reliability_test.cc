@@ -1387,6 +1387,13 @@ TEST_F(ReliabilityTest, AbsurdHeadingsNoisesAndSpeedsAreRefusedNamingTheirField)
   ExpectRefused(HallExperiment(0.0, 0.0, "controller: {type: wall_following, speed_m_s: 2}\n",
                                "{encoders: {}, laser: {}}"),
                 "", {"controller.speed_m_s: 2 needs more than max_wheel_speed_rad_s allows"});
+  // audit s47: a nominal wheel speed above the motors' ctrlrange; wheel_script commands up to it
+  // were clamped to 12.3 rad/s by the motors, exit 0.
+  ExpectRefused(yaml, "--set robot.nominal.max_wheel_speed_rad_s=20",
+                {"experiment.yaml: robot.nominal.max_wheel_speed_rad_s: 20 rad/s is more than the "
+                 "wheel motors take (ctrlrange +-12.3 rad/s in p3dx.xml): they would clamp the "
+                 "controller's commands\n"});
+  EXPECT_EQ(Run(yaml, "--set robot.nominal.max_wheel_speed_rad_s=12.3").exit_code, 0);
   // The limits themselves run: a full turn back, a noise of the whole range, the top speed.
   EXPECT_EQ(Run(yaml, "--set robot.spawn.theta_deg=-360").exit_code, 0);
   EXPECT_EQ(Run(yaml, "--set sensors.laser.range_noise_sigma_m=8").exit_code, 0);

@@ -191,6 +191,17 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
                          config.world_path.filename().string());
     }
   }
+  // Controllers plan with robot.nominal's wheel speed limit; motors that clamp below it would drive
+  // other speeds than commanded without a word (audit s47: 20 rad/s against the P3-DX's 12.3).
+  if (const double motors = scene_->WheelMotorLimitRadS();
+      config.nominal.max_wheel_speed_rad_s > motors) {
+    throw ConfigError(config.source_file, "robot.nominal.max_wheel_speed_rad_s",
+                      FormatNumber(config.nominal.max_wheel_speed_rad_s) +
+                          " rad/s is more than the wheel motors take (ctrlrange +-" +
+                          FormatNumber(motors) + " rad/s in " +
+                          robot_entry.mjcf.filename().string() +
+                          "): they would clamp the controller's commands");
+  }
   RequireControllerSensors(config);
 
   Parts& p = *parts_;

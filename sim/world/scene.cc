@@ -1,6 +1,7 @@
 #include "sim/world/scene.h"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 #include <stdexcept>
 
@@ -235,6 +236,17 @@ void Scene::PlaceRobot(const msgs::Pose2D& X_WR) {
 void Scene::SetWheelSpeeds(const msgs::WheelSpeedCommand& command) {
   data_->ctrl[left_motor_] = command.left_rad_s;
   data_->ctrl[right_motor_] = command.right_rad_s;
+}
+
+double Scene::WheelMotorLimitRadS() const {
+  double limit = std::numeric_limits<double>::infinity();
+  for (const int motor : {left_motor_, right_motor_}) {
+    if (model_->actuator_ctrllimited[motor]) {
+      limit = std::min({limit, -model_->actuator_ctrlrange[2 * motor],
+                        model_->actuator_ctrlrange[2 * motor + 1]});
+    }
+  }
+  return limit;
 }
 
 void Scene::Step() {

@@ -91,6 +91,9 @@ class Scene {
 
   // Wheel velocity setpoints, clamped by the actuators' ctrlrange.
   void SetWheelSpeeds(const msgs::WheelSpeedCommand& command);
+  // The largest wheel speed both motors accept unclamped, either way (infinite when the robot's
+  // file leaves them unlimited).
+  double WheelMotorLimitRadS() const;
   void Step();
 
   // Re-shapes the simulated drive: wheel radii and track as built, not as specified.
