@@ -220,17 +220,17 @@ bool ParseCarmenLine(const std::string& line, CarmenLog* log) {
   }
   if (t[0] == "PARAM") {
     if (t.size() < 3) throw std::runtime_error("PARAM: expected a name and a value");
-    if (t[1] == "front_laser_max") {
-      const double range_max = ParseNumber(t[2], "PARAM front_laser_max");
-      if (!(range_max > 0.0)) {
-        throw std::runtime_error("PARAM front_laser_max: must be > 0, got " + t[2]);
-      }
+    // Plywood writes front_laser_max; CARMEN's own logs name it robot_front_laser_max.
+    if (t[1] == "front_laser_max" || t[1] == "robot_front_laser_max") {
+      const std::string what = "PARAM " + t[1];
+      const double range_max = ParseNumber(t[2], what.c_str());
+      if (!(range_max > 0.0)) throw std::runtime_error(what + ": must be > 0, got " + t[2]);
       // One value serves every FLASER scan of the log, those before the line too: a second,
       // different one (two logs joined with cat) silently rescored the first log's scans.
       const auto earlier = log->params.find(t[1]);
       if (earlier != log->params.end() && ParseFiniteNumber(earlier->second) != range_max) {
-        throw std::runtime_error("PARAM front_laser_max: given again as " + t[2] +
-                                 " after an earlier " + earlier->second +
+        throw std::runtime_error(what + ": given again as " + t[2] + " after an earlier " +
+                                 earlier->second +
                                  ": one maximum range serves every FLASER scan of the log, so a "
                                  "log of two lasers cannot be scored as one; split it");
       }
@@ -301,11 +301,15 @@ CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptio
         (log.skipped_lines ? " (" + std::to_string(log.skipped_lines) + " malformed lines skipped)"
                            : std::string()));
   }
-  // FLASER range limits: PARAM front_laser_max when the log has it (checked when read), else the
-  // largest range in the log. ROBOTLASER1 lines carry their own.
+  // FLASER range limits: PARAM front_laser_max when the log has it (checked when read), else
+  // CARMEN's robot_front_laser_max, else the largest range in the log (which, in a stretch of log
+  // where the laser always saw something, is a real return and not the maximum).
+  // ROBOTLASER1 lines carry their own.
   double range_max = 0.0;
-  if (auto it = log.params.find("front_laser_max"); it != log.params.end()) {
-    range_max = ParseFiniteNumber(it->second).value_or(0.0);
+  for (const char* name : {"front_laser_max", "robot_front_laser_max"}) {
+    if (auto it = log.params.find(name); it != log.params.end() && !(range_max > 0.0)) {
+      range_max = ParseFiniteNumber(it->second).value_or(0.0);
+    }
   }
   if (!(range_max > 0.0)) {
     for (const auto& record : log.lasers) {

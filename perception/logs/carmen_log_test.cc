@@ -49,6 +49,30 @@ TEST(CarmenLogTest, RangeMaxDefaultsToTheLargestRangeInTheLog) {
   EXPECT_DOUBLE_EQ(ReadCarmenLog(path).lasers[1].scan.range_max_m, 81.91);
 }
 
+// CARMEN's own logs name the maximum range robot_front_laser_max (freiburg-079: 80.99 m). Read only
+// as Plywood's front_laser_max, a stretch of log where the laser always saw something took its
+// largest real return (5.5 m here) as the maximum, and the valid-ray cut dropped returns near it.
+TEST(CarmenLogTest, CarmensRobotFrontLaserMaxIsTheMaximumRange) {
+  const auto path = WriteTemp("carmen.log", "PARAM robot_front_laser_max 80.99 host 0\n" +
+                                                Flaser("1 5.5 3", 3) + Flaser("2 2 2", 3));
+  EXPECT_DOUBLE_EQ(ReadCarmenLog(path).lasers[0].scan.range_max_m, 80.99);
+  // Plywood's own name wins when both are given.
+  const auto both = WriteTemp("both.log",
+                              "PARAM robot_front_laser_max 80.99 host 0\n"
+                              "PARAM front_laser_max 8 host 0\n" +
+                                  Flaser("1 5.5 3", 3));
+  EXPECT_DOUBLE_EQ(ReadCarmenLog(both).lasers[0].scan.range_max_m, 8.0);
+  try {
+    ReadCarmenLog(
+        WriteTemp("bad.log", Flaser("1 2 3", 3) + "PARAM robot_front_laser_max -1 h 0\n"));
+    ADD_FAILURE() << "no error for robot_front_laser_max -1";
+  } catch (const std::exception& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.log:2: PARAM robot_front_laser_max: must be > 0"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(CarmenLogTest, MalformedLinesNameTheLineOrAreSkippedAndCounted) {
   const std::string good = Flaser("1 2 3", 3);
   for (const std::string& bad : {Flaser("1 2", 3), Flaser("1 nan 3", 3), Flaser("1 abc 3", 3),

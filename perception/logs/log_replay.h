@@ -11,8 +11,9 @@ namespace plywood::perception {
 // A line extractor run over every scan of a log (plywood replay). Real logs have no ground-truth
 // lines, so the score is how much of the data the lines explain (ray_explanation.h): valid rays
 // are those with 0.05 m < r < M - 0.2 m, M the log's maximum range (PARAM front_laser_max, else
-// the largest range in the log, which marks "no return"). Both figures are kept: rays explained
-// by the lines alone, and by the lines or the round objects the extractor reported as circles.
+// CARMEN's robot_front_laser_max, else the largest range in the log, which marks "no return"). Both
+// figures are kept: rays explained by the lines alone, and by the lines or the round objects the
+// extractor reported as circles.
 struct ReplayResult {
   // One scan's figures, in log order (scans.csv): to compare two versions scan by scan.
   struct Scan {
