@@ -307,8 +307,9 @@ CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptio
   // ROBOTLASER1 lines carry their own.
   double range_max = 0.0;
   for (const char* name : {"front_laser_max", "robot_front_laser_max"}) {
-    if (auto it = log.params.find(name); it != log.params.end() && !(range_max > 0.0)) {
+    if (auto it = log.params.find(name); it != log.params.end()) {
       range_max = ParseFiniteNumber(it->second).value_or(0.0);
+      break;
     }
   }
   if (!(range_max > 0.0)) {

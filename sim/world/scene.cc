@@ -1,8 +1,8 @@
 #include "sim/world/scene.h"
 
 #include <algorithm>
-#include <limits>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "perception/logs/regular_file.h"
