@@ -1,15 +1,17 @@
 // plywood worlds generate FAMILY --count N --seed S --out DIR [--pictures] [--quiet]
 // plywood worlds list
 
-#include <charconv>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 #include "apps/command.h"
 #include "apps/decimal_whole_number.h"
 #include "render/world_preview.h"
+#include "sim/config/decimal_whole_number.h"
 #include "sim/world/generator/robot_reach.h"
 #include "sim/world/generator/world_families.h"
 #include "sim/world/generator/world_generator.h"
@@ -79,13 +81,16 @@ Command AddWorldsCommand(CLI::App& app) {
           throw UsageError("worlds generate: FAMILY" + std::string(e.what()).substr(6));
         }
         options.count = flags->count;
-        // Digits only: CLI11 would wrap "-1" into 2^64 - 1.
-        const char* end = flags->seed.data() + flags->seed.size();
-        const auto [ptr, error] = std::from_chars(flags->seed.data(), end, options.seed);
-        if (flags->seed.empty() || error != std::errc() || ptr != end) {
-          throw UsageError("worlds generate: --seed: must be a whole number in [0, 2^64), got '" +
-                           flags->seed + "'");
+        // Digits only (CLI11 would wrap "-1" into 2^64 - 1), at most 19 of them: the rule of a
+        // sweep's `worlds: {seed}`, so every generated set can be named in a sweep by its seed.
+        const std::optional<std::uint64_t> seed = sim::ParseDecimalWholeNumber(flags->seed);
+        if (!seed) {
+          throw UsageError(
+              "worlds generate: --seed: must be a whole number >= 0 in decimal digits, at most 19 "
+              "(as a sweep's worlds: seed and a run's seed take), got '" +
+              flags->seed + "'");
         }
+        options.seed = *seed;
         options.out_dir = flags->out;
         const auto start = std::chrono::steady_clock::now();
         std::vector<sim::worldgen::GeneratedWorldFile> files;

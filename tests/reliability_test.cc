@@ -289,6 +289,14 @@ TEST_F(ReliabilityTest, ExtractorOptionsThatNeverFinishOrMeanNothingAreRefused) 
   ExpectRefused(yaml, "--set lines.incremental.min_length_m=-1",
                 {"experiment.yaml: lines.incremental.min_length_m: must be >= 0, got -1"});
   EXPECT_EQ(Run(yaml, "--set lines.ransac.iterations=100000").exit_code, 0);
+  // audit s48: a scoring gate of 1e300 m ran, the gate's share of the match cost lost to rounding
+  // (recall 0.96 -> 0.65 beside 1e9 m's 0.96, sigma_r 3.2 m); the geometric map's gate alike.
+  ExpectRefused(yaml, "--set lines.scoring.max_endpoint_distance_m=1e300",
+                {"experiment.yaml: lines.scoring.max_endpoint_distance_m: must be in (0, 1] m, got "
+                 "1e+300\n"});
+  ExpectRefused(yaml, "--set lines.scoring.max_endpoint_distance_m=0",
+                {"lines.scoring.max_endpoint_distance_m: must be in (0, 1] m, got 0\n"});
+  EXPECT_EQ(Run(yaml, "--set lines.scoring.max_endpoint_distance_m=1").exit_code, 0);
 }
 
 // audit s32 (UBSan): square_path lays out every lap's moves up front; laps: 1000000000 overflowed
@@ -1387,6 +1395,10 @@ TEST_F(ReliabilityTest, AbsurdHeadingsNoisesAndSpeedsAreRefusedNamingTheirField)
   ExpectRefused(HallExperiment(0.0, 0.0, "controller: {type: wall_following, speed_m_s: 2}\n",
                                "{encoders: {}, laser: {}}"),
                 "", {"controller.speed_m_s: 2 needs more than max_wheel_speed_rad_s allows"});
+  // audit s48: a tiny wheel limit was printed rounded to micrometres per second, "(0 m/s)".
+  ExpectRefused(yaml, "--set robot.nominal.max_wheel_speed_rad_s=1e-9",
+                {"experiment.yaml: controller.speed_m_s: 0.3 needs more than "
+                 "max_wheel_speed_rad_s allows (9.75e-11 m/s)\n"});
   // audit s47: a nominal wheel speed above the motors' ctrlrange; wheel_script commands up to it
   // were clamped to 12.3 rad/s by the motors, exit 0.
   ExpectRefused(yaml, "--set robot.nominal.max_wheel_speed_rad_s=20",
@@ -1422,6 +1434,41 @@ TEST_F(ReliabilityTest, AWorldSpawnThatIsNotThreeNumbersIsRefused) {
     std::string e = yaml;
     e.replace(e.find("WORLD"), 5, world.string());
     ExpectRefused(e, "", {world.string() + ": " + message});
+  }
+}
+
+// audit s48: a world marking its spawn the way MJCF marks a spot (<site name="spawn_0" .../>), or
+// as <custom><text name="spawn_0" data="-2 -2 0"/>, had no spawn to the readers: an experiment
+// without robot.spawn ran from the origin, exit 0, where the file put the robot at (-2, -2).
+TEST_F(ReliabilityTest, AWorldSpawnMarkedAsASiteOrTextIsRefused) {
+  const fs::path dir = WorldDir();
+  const std::string hall = Slurp(testing::SourceRoot() / "worlds/hall.xml");
+  const std::size_t custom = hall.find("<custom>");
+  const std::size_t custom_end = hall.find("</custom>");
+  ASSERT_NE(custom, std::string::npos);
+  ASSERT_NE(custom_end, std::string::npos);
+  std::string without = hall;
+  without.erase(custom, custom_end + 9 - custom);
+  const std::string body = "<worldbody>";
+  ASSERT_NE(without.find(body), std::string::npos);
+  const std::string yaml =
+      "name: w\nduration_s: 0.5\nworld: WORLD\nrobot: {model: p3dx}\n"
+      "sensors: {encoders: {}}\noutput: {snapshot: false}\n";
+  for (const auto& [marked, what] : std::vector<std::pair<std::string, std::string>>{
+           {body + "<site name=\"spawn_0\" pos=\"-2 -2 0\"/>", "a <site>"},
+           {"<custom><text name=\"spawn_0\" data=\"-2 -2 0\"/></custom>" + body, "a <text>"}}) {
+    SCOPED_TRACE(marked);
+    std::string text = without;
+    text.replace(text.find(body), body.size(), marked);
+    const fs::path world = WriteFile(dir / "site_spawn.xml", text);
+    std::string e = yaml;
+    e.replace(e.find("WORLD"), 5, world.string());
+    ExpectRefused(e, "",
+                  {world.string() + ": spawn_0: is " + what +
+                   ", not a spawn: spawn poses are written <custom><numeric name=\"spawn_0\" "
+                   "data=\"x_m y_m yaw_deg\"/></custom> (worlds/README.md)\n"});
+    // A spawn given whole in the experiment never reads the world's.
+    EXPECT_EQ(Run(e, "--set 'robot.spawn={x_m: -2, y_m: -2, theta_deg: 0}'").exit_code, 0);
   }
 }
 

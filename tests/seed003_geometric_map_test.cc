@@ -65,6 +65,9 @@ TEST(Seed003GeometricMapTest, BadOptionsExitTwoNamingTheField) {
       {"geometric_map.fusion.source=laser", "geometric_map.fusion.source"},
       {"geometric_map.segmentation.round_objects.min_sigmas=-1",
        "geometric_map.segmentation.round_objects.min_sigmas"},
+      // audit s48: ran, recall 0.889 -> 0.667 and endpoint error 0.007 -> 0.269 m beside 1e9 m's.
+      {"geometric_map.scoring.max_endpoint_distance_m=1e300",
+       "geometric_map.scoring.max_endpoint_distance_m: must be in (0, 1] m, got 1e+300"},
   };
   int k = 0;
   for (const auto& c : cases) {
@@ -73,6 +76,38 @@ TEST(Seed003GeometricMapTest, BadOptionsExitTwoNamingTheField) {
     EXPECT_EQ(RunPanels(dir, name, 1, std::string("--set ") + c.set), 2);
     const std::string log = Slurp(dir / (name + ".log"));
     EXPECT_NE(log.find(c.field), std::string::npos) << log;
+    EXPECT_EQ(log.find('\n'), log.size() - 1) << "not one line: " << log;
+    EXPECT_FALSE(fs::exists(dir / name / "metrics.json"));
+  }
+}
+
+// audit s48: a map with no wall surface to find scored recall 1 and precision 1 over 0 segments,
+// exit 0: an IR scanner that sees 0.3 m (nothing in the panels' room), or min_observations above
+// the run's 41 scans (no segment can be confirmed). Scorers never report a number against empty
+// ground truth (the lines scorer's rule).
+TEST(Seed003GeometricMapTest, AMapWithNoWallToFindIsRefused) {
+  const fs::path dir = MakeTempDir("seed003_no_wall");
+  const struct {
+    const char* set;
+    const char* what;
+  } cases[] = {
+      {"sensors.ir_scanner.range_max_m=0.3",
+       "geometric_map: no wall surface was observable in any of the 41 IR scans "
+       "(scoring.min_observed_rays = 5 beams on it in one scan, within "
+       "sensors.ir_scanner.range_max_m = 0.3 m): recall is undefined, nothing to score against\n"},
+      {"geometric_map.aggregation.min_observations=100",
+       "geometric_map: no wall surface was hit by 8 beams in aggregation.min_observations = 100 of "
+       "the 41 IR scans (the most: 41): the map can confirm no segment, its recall is undefined, "
+       "nothing to score against\n"},
+  };
+  int k = 0;
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.set);
+    const std::string name = "none" + std::to_string(k++);
+    EXPECT_EQ(RunPanels(dir, name, 1, std::string("--set ") + c.set), 2);
+    const std::string log = Slurp(dir / (name + ".log"));
+    EXPECT_NE(log.find("seed003_ir_panels.yaml: "), std::string::npos) << log;
+    EXPECT_NE(log.find(c.what), std::string::npos) << log;
     EXPECT_EQ(log.find('\n'), log.size() - 1) << "not one line: " << log;
     EXPECT_FALSE(fs::exists(dir / name / "metrics.json"));
   }

@@ -11,6 +11,8 @@
 #include "render/overlay.h"
 #include "render/png_image.h"
 #include "render/world_to_pixel.h"
+#include "sim/config/config_error.h"
+#include "sim/runner/format_number.h"
 #include "sim/runner/json_text.h"
 #include "sim/runner/text_file.h"
 #include "sim/sensors/ir_scanner_sensor.h"
@@ -201,6 +203,27 @@ bool AddGeometricMapMetrics(sim::ExperimentRunner& runner, GeometricMapRun* run)
     if (line_scans[k] < config.options.aggregation.min_observations) continue;
     ++observable;
     observable_matched += face_matched[k];
+  }
+  // No surface to find: recall (and the map's precision beside it) would read 1 for an empty map,
+  // as the line scorer's did (docs/errors.md, "Scorers with empty ground truth").
+  if (observable == 0) {
+    const std::string scans = std::to_string(run->scans) + " IR scans";
+    throw sim::ConfigError(
+        runner.config().source_file, "geometric_map",
+        glimpsed == 0
+            ? "no wall surface was observable in any of the " + scans +
+                  " (scoring.min_observed_rays = " +
+                  std::to_string(config.scoring.min_observed_rays) +
+                  " beams on it in one scan, within sensors.ir_scanner.range_max_m = " +
+                  sim::FormatNumber(runner.config().sensors.ir_scanner->range_max_m) +
+                  " m): recall is undefined, nothing to score against"
+            : "no wall surface was hit by " + std::to_string(line_rays) +
+                  " beams in aggregation.min_observations = " +
+                  std::to_string(config.options.aggregation.min_observations) + " of the " + scans +
+                  " (the most: " +
+                  std::to_string(*std::max_element(line_scans.begin(), line_scans.end())) +
+                  "): the map can confirm no segment, its recall is undefined, nothing to score "
+                  "against");
   }
   run->face_line_scans = line_scans;
   run->face_matched = face_matched;

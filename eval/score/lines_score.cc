@@ -1,6 +1,9 @@
 #include "eval/score/lines_score.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <limits>
+#include <utility>
 
 #include "eval/lines/line_scan_scorer.h"
 #include "eval/lines/lines_csv.h"
@@ -9,6 +12,38 @@
 #include "sim/config/config_error.h"
 
 namespace plywood::eval {
+namespace {
+
+// An extractor fits a segment to its scan's returns, so each end lies within the fit's tolerance of
+// one (the built-in extractors: under 3 cm). Half a metre, ten times the scorer's 5 cm gate, tells
+// a file written in another frame (the world's, as mapping programs write segments), which scored
+// recall 0.02 against walls it had found, exit 0.
+constexpr double kMaxEndToReturnM = 0.5;
+
+void RequireNearItsScansReturns(const LinesCsvRow& row, const TruthScan& scan,
+                                const std::filesystem::path& file) {
+  const std::string where = file.string() + ":" + std::to_string(row.line_number);
+  const std::string scan_name = "scan " + std::to_string(row.scan);
+  if (scan.points.empty()) {
+    throw sim::ConfigError(where, "scan",
+                           scan_name + " has no return within range_cut_m to fit a segment to");
+  }
+  const perception::LineSegment& s = row.segment;
+  for (const auto& [end, field] : {std::pair{s.start, "x1_m, y1_m"}, {s.end, "x2_m, y2_m"}}) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector2d& p : scan.points.points)
+      nearest = std::min(nearest, (p - end).norm());
+    if (nearest <= kMaxEndToReturnM) continue;
+    throw sim::ConfigError(
+        where, field,
+        "the end (" + sim::FormatNumber(end.x()) + ", " + sim::FormatNumber(end.y()) + ") lies " +
+            sim::FormatNumber(nearest) + " m from every return of " + scan_name + ", more than " +
+            sim::FormatNumber(kMaxEndToReturnM) +
+            " m: segments are in their scan's sensor frame (laser_scans.csv), not the world's");
+  }
+}
+
+}  // namespace
 
 ScoreReport ScoreLinesFile(const std::filesystem::path& run_dir, const std::filesystem::path& file,
                            const LinesScoreOptions& options) {
@@ -38,6 +73,8 @@ ScoreReport ScoreLinesFile(const std::filesystem::path& run_dir, const std::file
     }
     found[e][row.scan].push_back(row.segment);
   }
+  // After every row's scan is known to exist: a row beyond the run is named as such first.
+  for (const LinesCsvRow& row : rows) RequireNearItsScansReturns(row, run.scans[row.scan], file);
   for (std::size_t e = 0; e < scores.size(); ++e) {
     for (std::size_t s = 0; s < run.scans.size(); ++s) {
       scores[e].score.Add(ScoreScanLines(found[e][s], run.scans[s], run.lines.scoring));

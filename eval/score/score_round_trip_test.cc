@@ -19,6 +19,7 @@
 #include "render/png_image.h"
 #include "sim/config/config_error.h"
 #include "sim/config/experiment_config.h"
+#include "sim/runner/format_number.h"
 #include "tests/support/cli_test_support.h"
 #include "tests/support/metrics_json_test_support.h"
 #include "tests/support/mujoco_test_support.h"
@@ -169,6 +170,44 @@ TEST(ScoreRoundTripTest, EndpointsAloneGiveTheSameRecallAndPrecision) {
     EXPECT_NEAR(std::stod(scored.at(key + "sigma_r_m")), std::stod(run.at(key + "sigma_r_m")),
                 1e-9);
   }
+}
+
+// audit s48: a lines file written in the world frame (as mapping programs write segments: the
+// run's own segments moved by each scan's true sensor pose) scored recall 0.02 and precision 0.04
+// against walls it had found, exit 0. A segment ends near a return of its scan, which tells.
+TEST(ScoreRoundTripTest, ALinesFileInTheWorldFrameIsRefused) {
+  const CsvTable lines = ReadCsv(RunDir() / "lines.csv");
+  const CsvTable scans = ReadCsv(RunDir() / "laser_scans.csv");
+  std::string text = "scan,extractor,x1_m,y1_m,x2_m,y2_m\n";
+  for (const CsvRow& row : lines.rows) {
+    const long scan = lines.Integer(row, lines.Column("scan"), "scan");
+    const CsvRow& pose = scans.rows.at(static_cast<std::size_t>(scan));
+    const double x = scans.Number(pose, scans.Column("sensor_x_m"), "x");
+    const double y = scans.Number(pose, scans.Column("sensor_y_m"), "y");
+    const double theta = scans.Number(pose, scans.Column("sensor_theta_rad"), "theta");
+    text += std::to_string(scan) + "," + row.fields[lines.Column("extractor")];
+    for (const char* end : {"1", "2"}) {
+      const double px = lines.Number(row, lines.Column(std::string("x") + end + "_m"), "x");
+      const double py = lines.Number(row, lines.Column(std::string("y") + end + "_m"), "y");
+      text += "," + sim::FormatNumber(x + std::cos(theta) * px - std::sin(theta) * py) + "," +
+              sim::FormatNumber(y + std::sin(theta) * px + std::cos(theta) * py);
+    }
+    text += "\n";
+  }
+  const fs::path file =
+      testing::WriteFile(testing::MakeTempDir("score_world_frame") / "w.csv", text);
+  try {
+    ScoreLinesFile(RunDir(), file);
+    ADD_FAILURE() << "a world-frame lines file was scored";
+  } catch (const sim::ConfigError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(file.string() + ":2: x1_m, y1_m: the end ("), std::string::npos) << what;
+    EXPECT_NE(what.find(" m from every return of scan 0, more than 0.5 m: segments are in their "
+                        "scan's sensor frame (laser_scans.csv), not the world's"),
+              std::string::npos)
+        << what;
+  }
+  // The run's own file, whose ends lie on its scans' returns, still scores (the tests above).
 }
 
 // A grid image of the truth's own cells, sampled at each pixel's centre.

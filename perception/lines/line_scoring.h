@@ -14,7 +14,7 @@ namespace plywood::perception {
 // - A ground-truth segment is OBSERVABLE in a scan when at least min_observed_rays of the scan's
 //   used rays (returns inside the range cut) hit it (the simulator's per-beam hit segment ids).
 // - An extracted segment MATCHES a ground-truth face (MatchFace) when
-//   (1) both its endpoints lie within max_endpoint_distance_m of the face's infinite line,
+//   (1) both its endpoints lie within max_endpoint_distance_m (at most 1 m) of the face's line,
 //   (2) its direction is within max(max_alpha_diff_deg, direction_sigmas * sigma_theta) of the
 //       face's, where sigma_theta = range_noise_sigma_m / sqrt(S) is the standard deviation of the
 //       direction a least-squares fit gets from num_points points spread evenly over the

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "msgs/shortest_number.h"
 
@@ -16,8 +17,24 @@ std::optional<std::array<double, 3>> WorldSpawn(const mjModel* m, int k) {
 }
 
 std::optional<std::string> WorldSpawnProblem(const mjModel* m, int k) {
-  const int id = mj_name2id(m, mjOBJ_NUMERIC, ("spawn_" + std::to_string(k)).c_str());
-  if (id < 0) return std::nullopt;
+  const std::string name = "spawn_" + std::to_string(k);
+  const int id = mj_name2id(m, mjOBJ_NUMERIC, name.c_str());
+  if (id < 0) {
+    // A spot marked the way MJCF marks spots (a site), or as custom text, is no spawn to the
+    // readers: the robot started at the origin without a word.
+    static constexpr std::pair<mjtObj, const char*> kLookAlikes[] = {
+        {mjOBJ_SITE, "a <site>"}, {mjOBJ_BODY, "a <body>"},   {mjOBJ_GEOM, "a <geom>"},
+        {mjOBJ_TEXT, "a <text>"}, {mjOBJ_TUPLE, "a <tuple>"},
+    };
+    for (const auto& [type, what] : kLookAlikes) {
+      if (mj_name2id(m, type, name.c_str()) < 0) continue;
+      return std::string("is ") + what +
+             ", not a spawn: spawn poses are written <custom><numeric "
+             "name=\"" +
+             name + "\" data=\"x_m y_m yaw_deg\"/></custom> (worlds/README.md)";
+    }
+    return std::nullopt;
+  }
   // A spawn of one or two numbers (data="-2") is malformed, not missing.
   if (m->numeric_size[id] != 3) {
     return "expected three numbers (x_m y_m theta_deg), got " + std::to_string(m->numeric_size[id]);

@@ -19,8 +19,9 @@ std::optional<std::array<double, 3>> WorldSpawn(const mjModel* m, int k);
 inline constexpr double kMaxSpawnTurnDeg = 360.0;
 
 // What makes spawn K unusable as a pose (not three numbers, not finite, a heading beyond
-// kMaxSpawnTurnDeg), as one line for a "FILE: spawn_K: ..." error; nullopt when it is well formed
-// or the model has none. One rule for every reader that places a robot there.
+// kMaxSpawnTurnDeg; no numeric but a site, body, geom, text or tuple of its name), as one line for
+// a "FILE: spawn_K: ..." error; nullopt when it is well formed or the model has none. One rule for
+// every reader that places a robot there.
 std::optional<std::string> WorldSpawnProblem(const mjModel* m, int k);
 
 }  // namespace plywood::sim
