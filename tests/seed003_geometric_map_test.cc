@@ -68,6 +68,10 @@ TEST(Seed003GeometricMapTest, BadOptionsExitTwoNamingTheField) {
       // audit s48: ran, recall 0.889 -> 0.667 and endpoint error 0.007 -> 0.269 m beside 1e9 m's.
       {"geometric_map.scoring.max_endpoint_distance_m=1e300",
        "geometric_map.scoring.max_endpoint_distance_m: must be in (0, 1] m, got 1e+300"},
+      // audit s48: ran, the map empty by construction (recall 0, 0 segments), exit 0.
+      {"geometric_map.fusion.source=sonar --set 'sensors={ir_scanner: {rate_hz: 2}, encoders: "
+       "{}}'",
+       "geometric_map.fusion.source: 'sonar' builds the map from sensors.sonar, which is off"},
   };
   int k = 0;
   for (const auto& c : cases) {

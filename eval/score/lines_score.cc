@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cstdio>
 #include <limits>
+#include <map>
+#include <string>
+#include <tuple>
 #include <utility>
 
 #include "eval/lines/line_scan_scorer.h"
@@ -43,6 +46,24 @@ void RequireNearItsScansReturns(const LinesCsvRow& row, const TruthScan& scan,
   }
 }
 
+// A row repeated whole (a file written twice, or appended to itself) counted each segment twice:
+// lines_per_scan doubled and points_per_line halved, exit 0. An extractor reports a segment once.
+void RequireNoRepeatedRow(const std::vector<LinesCsvRow>& rows, const std::filesystem::path& file) {
+  std::map<std::tuple<long, std::string, double, double, double, double>, std::size_t> first_line;
+  for (const LinesCsvRow& row : rows) {
+    const perception::LineSegment& s = row.segment;
+    const auto [at, inserted] = first_line.emplace(
+        std::tuple{row.scan, row.extractor, s.start.x(), s.start.y(), s.end.x(), s.end.y()},
+        row.line_number);
+    if (inserted) continue;
+    throw sim::ConfigError(file.string() + ":" + std::to_string(row.line_number), "x1_m",
+                           "repeats line " + std::to_string(at->second) + " (scan " +
+                               std::to_string(row.scan) + ", extractor " + row.extractor +
+                               ", the same ends): an extractor reports each segment once; was "
+                               "the file written twice?");
+  }
+}
+
 }  // namespace
 
 ScoreReport ScoreLinesFile(const std::filesystem::path& run_dir, const std::filesystem::path& file,
@@ -75,6 +96,7 @@ ScoreReport ScoreLinesFile(const std::filesystem::path& run_dir, const std::file
   }
   // After every row's scan is known to exist: a row beyond the run is named as such first.
   for (const LinesCsvRow& row : rows) RequireNearItsScansReturns(row, run.scans[row.scan], file);
+  RequireNoRepeatedRow(rows, file);
   for (std::size_t e = 0; e < scores.size(); ++e) {
     for (std::size_t s = 0; s < run.scans.size(); ++s) {
       scores[e].score.Add(ScoreScanLines(found[e][s], run.scans[s], run.lines.scoring));

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numbers>
@@ -208,6 +209,25 @@ TEST(ScoreRoundTripTest, ALinesFileInTheWorldFrameIsRefused) {
         << what;
   }
   // The run's own file, whose ends lie on its scans' returns, still scores (the tests above).
+}
+
+// audit s48: a lines file appended to itself scored each segment twice, exit 0: the same recall
+// and precision but lines_per_scan doubled and points_per_line halved.
+TEST(ScoreRoundTripTest, ALinesFileWrittenTwiceIsRefused) {
+  const std::string own = testing::Slurp(RunDir() / "lines.csv");
+  const std::size_t rows = static_cast<std::size_t>(std::count(own.begin(), own.end(), '\n')) - 1;
+  ASSERT_GT(rows, 0u);
+  const fs::path file = testing::WriteFile(testing::MakeTempDir("score_twice") / "twice.csv",
+                                           own + own.substr(own.find('\n') + 1));
+  try {
+    ScoreLinesFile(RunDir(), file);
+    ADD_FAILURE() << "a lines file written twice was scored";
+  } catch (const sim::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find(file.string() + ":" + std::to_string(rows + 2) +
+                                         ": x1_m: repeats line 2 (scan 0, extractor "),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 // A grid image of the truth's own cells, sampled at each pixel's centre.

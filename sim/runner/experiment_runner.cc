@@ -14,6 +14,7 @@
 #include "msgs/angle_units.h"
 #include "msgs/shortest_number.h"
 #include "msgs/stable_hash.h"
+#include "perception/geometric_map/range_fusion.h"
 #include "robot/control/controller.h"
 #include "robot/odometry/trajectory_metrics.h"
 #include "sim/config/config_error.h"
@@ -114,6 +115,13 @@ void RequireControllerSensors(const ExperimentConfig& config) {
   if (config.geometric_map.given && !s.ir_scanner) {
     throw ConfigError(config.source_file, "geometric_map",
                       "seed 003's map needs sensors.ir_scanner, which is off");
+  }
+  // The sonar-only map of a run without sonars was empty by construction: recall 0, exit 0.
+  if (config.geometric_map.given &&
+      config.geometric_map.options.fusion.source == perception::RangeSource::kSonarOnly &&
+      !s.sonar) {
+    throw ConfigError(config.source_file, "geometric_map.fusion.source",
+                      "'sonar' builds the map from sensors.sonar, which is off");
   }
   if (config.lines.given && !s.laser) {
     throw ConfigError(config.source_file, "lines",
