@@ -253,6 +253,40 @@ TEST(RoundObjectFilterTest, CollinearWallPiecesBehindALegStayLines) {
   EXPECT_EQ(on_far_wall, 2);
 }
 
+TEST(RoundObjectFilterTest, AThinColumnsChordBesideAShortPieceIsRound) {
+  // A column of r = 0.075 m 2.84 m away: 6 returns over 90 deg of its near side (0.5 deg beams)
+  // and, one beam on, a return 6 cm behind the last -- off the circle, too few for a line. The
+  // end-point fit cuts it off as a piece of its own: two lines, 7 points, too few for a run and
+  // too many lines for the single-chord test, so the chord stayed a line. A flat 6-point face
+  // with the same short piece stays a line.
+  const Eigen::Vector2d centre(2.84, 0.0);
+  const double radius_m = 0.075;
+  std::vector<Eigen::Vector2d> column, face;
+  for (int k = 0; k < 6; ++k) {
+    const double a = (-45.0 + 18.0 * k) * kPi / 180.0;  // on the circle, facing the sensor
+    column.push_back(centre - radius_m * Eigen::Vector2d(std::cos(a), std::sin(a)));
+    face.emplace_back(2.765, column.back().y());
+  }
+  for (auto* points : {&column, &face})
+    points->push_back(points->back() + Eigen::Vector2d(0.06, 0.02));
+  const std::vector<std::vector<int>> lines{{0, 1, 2, 3, 4, 5}, {6}};
+  std::vector<std::vector<int>> kept = lines;
+  RemoveRoundObjects(column, 0.01, {}, &kept);
+  EXPECT_EQ(kept.size(), 2u);  // the whole-group rule alone keeps the chord
+  std::vector<CircleFeature> circles;
+  RemoveRoundLoneChord(column, 0.01, {}, /*min_line_points=*/4, &kept, &circles);
+  EXPECT_TRUE(kept.empty());
+  ASSERT_EQ(circles.size(), 1u);
+  EXPECT_NEAR(circles[0].radius_m, radius_m, 1e-6);
+  std::vector<std::vector<int>> flat = lines;
+  RemoveRoundLoneChord(face, 0.01, {}, 4, &flat);
+  EXPECT_EQ(flat, lines);
+  // Two reportable lines: the runs of RemoveRoundObjects decide, not the single-chord test.
+  std::vector<std::vector<int>> two{{0, 1, 2}, {3, 4, 5, 6}};
+  RemoveRoundLoneChord(column, 0.01, {}, 3, &two);
+  EXPECT_EQ(two.size(), 2u);
+}
+
 TEST(RoundObjectFilterTest, BadOptionsAreRejectedByField) {
   const auto message = [](const RoundObjectOptions& o) {
     try {

@@ -33,8 +33,14 @@ ScanPoints MakeCombinedScanPoints(const std::vector<msgs::LaserScan>& scans,
     covered_rad += std::abs(scan.angle_increment_rad) * static_cast<double>(scan.ranges_m.size());
     for (std::size_t i = 0; i < scan.ranges_m.size(); ++i, ++beam) {
       const double r = scan.ranges_m[i];
-      if (!std::isfinite(r) || !scan.IsReturn(i) || !filter.Passes(r)) continue;
-      out.Add(r, scan.BeamAngleRad(i) + heading_offsets_rad[k], beam);
+      if (!std::isfinite(r) || !scan.IsReturn(i)) continue;
+      if (filter.Passes(r)) {
+        out.Add(r, scan.BeamAngleRad(i) + heading_offsets_rad[k], beam);
+      } else if (filter.BeyondCut(r)) {
+        out.beyond_cut_range_m.push_back(r);
+        out.beyond_cut_bearing_rad.push_back(scan.BeamAngleRad(i) + heading_offsets_rad[k]);
+        out.beyond_cut_beam_index.push_back(beam);
+      }
     }
   }
   out.closed = scans.size() > 1 && covered_rad >= 2.0 * std::numbers::pi - 1e-9;

@@ -22,6 +22,12 @@ struct ScanPoints {
   // True when the scan covers a full turn, so the last point neighbours the first (seed 000's two
   // back-to-back LMS 200).
   bool closed = false;
+  // The returns a range cut removed (ScanFilter::range_cut_m: valid, but farther than the cut), in
+  // beam order. Never a line's point: what lies just past the cut tells a wall that continues
+  // beyond it from an object whose near side alone is inside it (round_past_range_cut.h).
+  std::vector<double> beyond_cut_range_m;
+  std::vector<double> beyond_cut_bearing_rad;
+  std::vector<int> beyond_cut_beam_index;
 
   std::size_t size() const { return points.size(); }
   bool empty() const { return points.empty(); }
@@ -56,9 +62,14 @@ struct ScanFilter {
   bool Passes(double r_m) const {
     return r_m > range_min_m && r_m < range_max_m && r_m <= range_cut_m;
   }
+  // A valid return that only the range cut removes.
+  bool BeyondCut(double r_m) const {
+    return r_m > range_min_m && r_m < range_max_m && r_m > range_cut_m;
+  }
 };
 
-// The scan's returns that pass `filter` (and scan.IsReturn), in the sensor frame.
+// The scan's returns that pass `filter` (and scan.IsReturn), in the sensor frame; those only the
+// range cut removed go to the beyond_cut_* fields.
 ScanPoints MakeScanPoints(const msgs::LaserScan& scan, const ScanFilter& filter);
 
 // Several scans taken from one spot, combined in the frame of the first sensor: scans[k] is

@@ -22,10 +22,11 @@ struct Disc {
 
 // A closed 720-beam scan (0.5 deg, two back-to-back LMS 200) from the origin of polygons (each a
 // closed chain of corners) and discs, with Gaussian range noise (seeded). Beams that hit nothing
-// within range_max_m give no return.
+// within range_max_m give no return; returns past range_cut_m are left out (ScanFilter).
 inline ScanPoints ScanScene(const std::vector<std::vector<Eigen::Vector2d>>& polygons,
                             const std::vector<Disc>& discs, double noise_m = 0.0,
-                            double range_max_m = 20.0, unsigned seed = 11) {
+                            double range_max_m = 20.0, unsigned seed = 11,
+                            double range_cut_m = 1e9) {
   constexpr double kPi = std::numbers::pi;
   msgs::LaserScan scan;
   scan.angle_min_rad = -kPi;
@@ -47,7 +48,7 @@ inline ScanPoints ScanScene(const std::vector<std::vector<Eigen::Vector2d>>& pol
     const double n = noise_m > 0 ? noise(rng) : 0.0;
     scan.ranges_m.push_back(best < range_max_m ? best + n : range_max_m);
   }
-  ScanPoints points = MakeScanPoints(scan, ScanFilter{});
+  ScanPoints points = MakeScanPoints(scan, ScanFilter{.range_cut_m = range_cut_m});
   points.closed = true;
   return points;
 }

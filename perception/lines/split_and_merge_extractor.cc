@@ -8,6 +8,7 @@
 #include "perception/lines/corner_refinement.h"
 #include "perception/lines/end_point_fit.h"
 #include "perception/lines/mixed_pixel_ends.h"
+#include "perception/lines/round_past_range_cut.h"
 
 namespace plywood::perception {
 
@@ -110,6 +111,10 @@ std::vector<LineSegment> SplitAndMergeExtractor::Run(const ScanPoints& scan,
     std::vector<int> fronts(merged.size());
     for (std::size_t k = 0; k < merged.size(); ++k) fronts[k] = merged[k].front();
     RemoveRoundObjects(p, options_.breakpoints.sigma_m, options_.round_objects, &merged, circles);
+    if (options_.round_objects.lone_chord_among_short_pieces) {
+      RemoveRoundLoneChord(p, options_.breakpoints.sigma_m, options_.round_objects, min_points,
+                           &merged, circles);
+    }
     if (merged.size() != fronts.size()) {
       std::size_t from = 0;
       for (std::size_t k = 0; k < merged.size(); ++k, ++from) {
@@ -119,6 +124,11 @@ std::vector<LineSegment> SplitAndMergeExtractor::Run(const ScanPoints& scan,
       merged_moments.resize(merged.size());
     }
     RefineCorners(p, group, whole_scan, &merged, &merged_moments);
+    // A round object whose flanks the range cut removed (round_past_range_cut.h).
+    if (options_.round_objects.round_past_range_cut) {
+      RemoveRoundObjectsPastRangeCut(scan, options_.breakpoints, threshold, options_.round_objects,
+                                     group, &merged);
+    }
     if (!merged.empty()) group_lines.push_back(std::move(merged));
   }
   if (options_.round_objects.join_across_occluders) {
