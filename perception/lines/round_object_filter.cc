@@ -256,23 +256,6 @@ void RemoveRoundObjects(std::span<const Eigen::Vector2d> points, double noise_si
   lines->resize(out);
 }
 
-void RemoveRoundLoneChord(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
-                          const RoundObjectOptions& options, int min_line_points,
-                          std::vector<std::vector<int>>* lines,
-                          std::vector<CircleFeature>* circles) {
-  if (!options.reject_round_objects || lines->size() < 2) return;
-  int reportable = -1;
-  for (std::size_t k = 0; k < lines->size(); ++k) {
-    if (static_cast<int>((*lines)[k].size()) < min_line_points) continue;
-    if (reportable >= 0) return;  // two reportable lines: RemoveRoundObjects' runs decide
-    reportable = static_cast<int>(k);
-  }
-  if (reportable < 0) return;
-  std::vector<std::vector<int>> alone{(*lines)[reportable]};
-  RemoveRoundObjects(points, noise_sigma_m, options, &alone, circles);
-  if (alone.empty()) lines->clear();
-}
-
 void JoinRoundObjectsAcrossOccluders(const ScanPoints& scan, double noise_sigma_m,
                                      const RoundObjectOptions& options,
                                      std::vector<std::vector<std::vector<int>>>* group_lines,

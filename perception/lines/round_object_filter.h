@@ -43,8 +43,6 @@ struct RoundObjectOptions {
   // RemoveRoundObjectsPastRangeCut (split_and_merge): a group at a range cut is tested for a
   // round object together with the returns the cut removed next to it.
   bool round_past_range_cut = true;
-  // RemoveRoundLoneChord (split_and_merge): a group whose only reportable line is a chord.
-  bool lone_chord_among_short_pieces = false;  // not measured on held-out seeds (docs/lines.md)
 
   // @throws std::invalid_argument starting with the field name.
   void Validate() const;
@@ -59,17 +57,6 @@ struct RoundObjectOptions {
 void RemoveRoundObjects(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
                         const RoundObjectOptions& options, std::vector<std::vector<int>>* lines,
                         std::vector<CircleFeature>* circles = nullptr);
-
-// RemoveRoundObjects tests a single line only when it is its whole breakpoint group. A group cut
-// into one line of at least `min_line_points` points and pieces too short to be reported (a thin
-// column's chord beside its silhouette return, or a mixed pixel the end-point fit cut off) shows
-// one line all the same: that line gets the single-chord test alone, without the short pieces (so
-// a box face beside one grazing return of its neighbour faces the same bar as a box face seen
-// alone). When it is round every line of the group is dropped and its circle reported.
-void RemoveRoundLoneChord(std::span<const Eigen::Vector2d> points, double noise_sigma_m,
-                          const RoundObjectOptions& options, int min_line_points,
-                          std::vector<std::vector<int>>* lines,
-                          std::vector<CircleFeature>* circles = nullptr);
 
 // A round object partly hidden by a nearer one (a column behind a column or a table leg) shows
 // on both sides of the occluder as two breakpoint groups, each an edge chord from its silhouette

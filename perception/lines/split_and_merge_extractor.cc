@@ -111,10 +111,6 @@ std::vector<LineSegment> SplitAndMergeExtractor::Run(const ScanPoints& scan,
     std::vector<int> fronts(merged.size());
     for (std::size_t k = 0; k < merged.size(); ++k) fronts[k] = merged[k].front();
     RemoveRoundObjects(p, options_.breakpoints.sigma_m, options_.round_objects, &merged, circles);
-    if (options_.round_objects.lone_chord_among_short_pieces) {
-      RemoveRoundLoneChord(p, options_.breakpoints.sigma_m, options_.round_objects, min_points,
-                           &merged, circles);
-    }
     if (merged.size() != fronts.size()) {
       std::size_t from = 0;
       for (std::size_t k = 0; k < merged.size(); ++k, ++from) {

@@ -71,7 +71,6 @@ void VisitFields(A& a, SplitAndMergeOptions& o) {
   VisitFields(a, o.round_objects);
   a("join_across_occluders", o.round_objects.join_across_occluders);
   a("round_past_range_cut", o.round_objects.round_past_range_cut);
-  a("lone_chord_among_short_pieces", o.round_objects.lone_chord_among_short_pieces);
 }
 
 template <typename A>
