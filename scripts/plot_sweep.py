@@ -68,7 +68,8 @@ def main(out_dir):
             xs = [i + 0.18 * (((k * 0.618034) % 1.0) - 0.5) for k in range(len(d))]
             ax.plot(xs, d, "o", ms=3, alpha=0.6, color="tab:blue")
             s = stats.get(groups[i - 1])
-            if s and s["n"] not in ("", "0"):
+            # One run has no interval (summary.csv leaves it empty): its dot is the whole story.
+            if s and s["n"] not in ("", "0") and s["ci95_low"] != "":
                 mean, lo, hi = float(s["mean"]), float(s["ci95_low"]), float(s["ci95_high"])
                 ax.errorbar([i + 0.3], [mean], yerr=[[mean - lo], [hi - mean]], fmt="D",
                             color="tab:red", ms=5, capsize=4,

@@ -28,10 +28,8 @@ def main(out_dir, metrics):
             order.append(key)
         if r["n"] in ("", "0"):
             continue
-        table[key][r["metric"]] = (
-            f"{fmt(r['mean'])} ({fmt(r['ci95_low'])}-{fmt(r['ci95_high'])})",
-            r["n"],
-        )
+        interval = f"{fmt(r['ci95_low'])}-{fmt(r['ci95_high'])}" if r["ci95_low"] else "one run"
+        table[key][r["metric"]] = (f"{fmt(r['mean'])} ({interval})", r["n"])
     head = [g.split(".")[-1] for g in groups] + ["n"] + metrics
     print("| " + " | ".join(head) + " |")
     print("|" + "---|" * len(head))

@@ -1063,6 +1063,44 @@ TEST_F(ReliabilityTest, RobotAndControllerLimitsArePrintedInShortestForm) {
   ExpectOneLine(tiny, {"odometry.encoder.gain: must be a finite number in [0.5, 2], got 1e-09\n"});
 }
 
+// audit s49: the encoder sensor's own count, unlike robot.nominal's, was never read by the
+// odometry: docs/experiments.md's encoder block (ticks_per_rev: 800) on a P3-DX (39000) scaled
+// every encoder figure by 48.75, exit 0 (square_hall: drift 0.71 % -> 72.5 %). The nominal sets
+// both and runs.
+TEST_F(ReliabilityTest, AnEncoderCountTheOdometryDoesNotUseIsRefused) {
+  const std::string yaml = HallExperiment(0.0, 0.0);
+  ExpectRefused(
+      yaml, "--set sensors.encoders.ticks_per_rev=800",
+      {"experiment.yaml: sensors.encoders.ticks_per_rev: 800 ticks per revolution, but the "
+       "odometry and controllers convert ticks with robot.nominal.encoder_ticks_per_rev = "
+       "39000 (robot 'p3dx'), so every encoder figure would be off by a factor 48.75"});
+  // A run's config.yaml writes both counts out: a --set of the nominal alone then differs too.
+  ExpectRefused(yaml,
+                "--set sensors.encoders.ticks_per_rev=39000 --set "
+                "robot.nominal.encoder_ticks_per_rev=500",
+                {"sensors.encoders.ticks_per_rev: 39000 ticks per revolution", "= 500"});
+  EXPECT_EQ(Run(yaml, "--set robot.nominal.encoder_ticks_per_rev=800").exit_code, 0);
+  EXPECT_EQ(Run(yaml,
+                "--set robot.nominal.encoder_ticks_per_rev=800 --set "
+                "sensors.encoders.ticks_per_rev=800")
+                .exit_code,
+            0);
+}
+
+// audit s49: seed004_ransac's odometry cloud is placed by the laser records' odometry pose, which
+// a run without an estimator fills with the truth: its "odometry" lines were the truth's (recall
+// 0.591 in both rows where the encoder's gives 0.182), exit 0.
+TEST_F(ReliabilityTest, AnOdometryCloudWithoutAnEstimatorIsRefused) {
+  const std::string yaml = HallExperiment(0.0, 0.0,
+                                          "protocol: seed004_ransac\n"
+                                          "odometry: {}\n"
+                                          "seed004_ransac: {scan_stride: 1, beam_stride: 1}\n",
+                                          "{encoders: {}, laser: {}}");
+  ExpectRefused(yaml, "",
+                {"experiment.yaml: odometry: seed004_ransac accumulates its odometry cloud at the "
+                 "odometry pose, but the run has no odometry estimator (odometry: names none)"});
+}
+
 TEST_F(ReliabilityTest, AnUnreadableExperimentIsNotReportedAsMissing) {
   const fs::path dir = Dir();
   const fs::path folder = dir / "folder.yaml";

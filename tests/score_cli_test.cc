@@ -431,5 +431,52 @@ TEST(ScoreCliTest, AGridOfAWorldWhoseGeomTheTruthCannotHoldIsRefused) {
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
+// audit s49: the docs name UMBmark's squares (before/cw_1, ...) as scorable one by one, but each
+// was refused as "not a finished run: no complete.json": the protocol's complete.json, two levels
+// up, lists their files. A square scores its own figures; one changed since is still refused.
+TEST(ScoreCliTest, AProtocolsRunsAreScoredOneByOne) {
+  const fs::path dir = testing::MakeTempDir("score_cli_umbmark");
+  const fs::path out = dir / "umbmark";
+  ASSERT_EQ(RunPlywood("run " + (testing::SourceRoot() / "experiments" / "umbmark.yaml").string() +
+                           " --quiet --out " + out.string() +
+                           " --set umbmark.runs_per_direction=1 --set umbmark.correct=false",
+                       dir)
+                .exit_code,
+            0);
+  const fs::path square = out / "before" / "cw_1";
+  const auto r = RunPlywood("score trajectory " + square.string() + " " +
+                                (square / "trajectory.encoder.tum").string() + " --out " +
+                                (dir / "score.json").string(),
+                            dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto run = testing::FlattenMetricsJson(Slurp(square / "metrics.json"));
+  const auto scored = testing::FlattenMetricsJson(Slurp(dir / "score.json"));
+  EXPECT_GE(scored.size(), 5u);
+  for (const auto& [key, text] : scored) {
+    ASSERT_TRUE(run.count(key)) << key;
+    EXPECT_EQ(text, run.at(key)) << key;
+  }
+  // A folder the protocol's record does not list is no run of it.
+  fs::create_directories(out / "before" / "mine");
+  fs::copy_file(square / "config.yaml", out / "before" / "mine" / "config.yaml");
+  fs::copy_file(square / "trajectory.csv", out / "before" / "mine" / "trajectory.csv");
+  const auto unlisted = RunPlywood("score trajectory " + (out / "before" / "mine").string() + " " +
+                                       (square / "trajectory.encoder.tum").string(),
+                                   dir);
+  EXPECT_EQ(unlisted.exit_code, 2);
+  EXPECT_NE(unlisted.err.find("mine: not a finished run: no complete.json"), std::string::npos)
+      << unlisted.err;
+  // A square changed since the run is not the run's.
+  std::ofstream(square / "trajectory.csv", std::ios::app) << "1,2\n";
+  const auto changed = RunPlywood(
+      "score trajectory " + square.string() + " " + (square / "trajectory.encoder.tum").string(),
+      dir);
+  EXPECT_EQ(changed.exit_code, 2);
+  EXPECT_NE(changed.err.find("is not finished either: before/cw_1/trajectory.csv is"),
+            std::string::npos)
+      << changed.err;
+  EXPECT_EQ(changed.err.find('\n'), changed.err.size() - 1) << changed.err;
+}
+
 }  // namespace
 }  // namespace plywood

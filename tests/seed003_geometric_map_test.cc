@@ -72,6 +72,11 @@ TEST(Seed003GeometricMapTest, BadOptionsExitTwoNamingTheField) {
       {"geometric_map.fusion.source=sonar --set 'sensors={ir_scanner: {rate_hz: 2}, encoders: "
        "{}}'",
        "geometric_map.fusion.source: 'sonar' builds the map from sensors.sonar, which is off"},
+      // audit s49: without an estimator the scans' odometry pose is the truth: the map was built
+      // at the true pose and pose.odometry read 0 deg / 0 m beside the "corrected" 0.04 deg.
+      {"'odometry={}'",
+       "geometric_map: seed 003 builds its map at the odometry pose, but the run has no odometry "
+       "estimator (odometry: names none)"},
   };
   int k = 0;
   for (const auto& c : cases) {

@@ -1195,6 +1195,18 @@ TEST(SweepCliTest, TwoWorldFilesOfOneNameAreSummarisedApart) {
   EXPECT_EQ(summary[2][0], b.string());
   EXPECT_EQ(summary[1][2], "1");  // n
   EXPECT_EQ(summary[2][2], "1");
+  // audit s49: one run has no std and no 95 % interval: they were written 0 and [mean, mean].
+  for (const auto& row : {summary[1], summary[2]}) {
+    ASSERT_EQ(row.size(), 9u);
+    EXPECT_NE(row[3], "");      // mean
+    EXPECT_EQ(row[4], "");      // std
+    EXPECT_EQ(row[5], "");      // ci95_low
+    EXPECT_EQ(row[6], "");      // ci95_high
+    EXPECT_EQ(row[7], row[3]);  // min
+    EXPECT_EQ(row[8], row[3]);  // max
+  }
+  EXPECT_NE(r.out.find("n 1, value "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("(one run: no spread or 95 % CI)"), std::string::npos) << r.out;
 }
 
 // audit s41: two profiles of one name in different folders (a/noise.set, b/noise.set) were both

@@ -10,7 +10,8 @@ namespace plywood::eval {
 
 std::filesystem::path RunFile(const std::filesystem::path& run_dir, const std::string& name,
                               const std::string& why) {
-  sim::RequireFinishedRun(run_dir);  // a killed or failed run is never scored
+  // A killed or failed run is never scored; a protocol's finished part (UMBmark's before/cw_1) is.
+  sim::RequireFinishedRunOrPart(run_dir);
   const std::filesystem::path path = run_dir / name;
   if (!perception::IsRegularFile(path)) {
     throw sim::ConfigError(path.string(), "", "missing (" + why + ")");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -115,14 +116,21 @@ SampleSummary Summarise(const std::vector<double>& values) {
   double sum = 0.0;
   for (double v : values) sum += v;
   s.mean = sum / s.n;
+  // One run has no sample spread (n - 1 = 0) and no interval (Student's t with 0 degrees of
+  // freedom is unbounded): both were written as 0 and [mean, mean], a certainty no single run
+  // gives, exit 0 (s49). NaN: summary.csv leaves them empty, as it does with no run.
+  if (s.n == 1) {
+    s.std = s.ci95_low = s.ci95_high = std::numeric_limits<double>::quiet_NaN();
+    return s;
+  }
   if (s.min == s.max) {  // identical runs (a noise-free profile): exactly no spread
     s.mean = s.ci95_low = s.ci95_high = s.min;
     return s;
   }
   double squares = 0.0;
   for (double v : values) squares += (v - s.mean) * (v - s.mean);
-  s.std = s.n > 1 ? std::sqrt(squares / (s.n - 1)) : 0.0;
-  const double half = s.n > 1 ? StudentT95(s.n - 1) * s.std / std::sqrt(s.n) : 0.0;
+  s.std = std::sqrt(squares / (s.n - 1));
+  const double half = StudentT95(s.n - 1) * s.std / std::sqrt(s.n);
   s.ci95_low = s.mean - half;
   s.ci95_high = s.mean + half;
   return s;
@@ -318,14 +326,16 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
       fields.push_back(metric);
       fields.push_back(std::to_string(s.n));
       for (double v : {s.mean, s.std, s.ci95_low, s.ci95_high, s.min, s.max})
-        fields.push_back(s.n ? sim::FormatNumber(v) : "");
+        fields.push_back(s.n && std::isfinite(v) ? sim::FormatNumber(v) : "");
       summary += CsvLine(fields);
       std::string label;
       for (std::size_t i = 0; i < group.size(); ++i)
         label += (i ? ", " : "") + group_columns[i] + "=" + group[i];
       if (label.empty()) label = "all runs";
       table += "  " + label + ": n " + std::to_string(s.n);
-      if (s.n) {
+      if (s.n == 1) {
+        table += ", value " + Fixed(s.mean, "%.4g") + " (one run: no spread or 95 % CI)";
+      } else if (s.n) {
         table += ", mean " + Fixed(s.mean, "%.4g") + " (95 % CI " + Fixed(s.ci95_low, "%.4g") +
                  " .. " + Fixed(s.ci95_high, "%.4g") + "), std " + Fixed(s.std, "%.3g") + ", min " +
                  Fixed(s.min, "%.4g") + ", max " + Fixed(s.max, "%.4g");

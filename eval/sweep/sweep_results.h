@@ -10,8 +10,8 @@ namespace plywood::eval {
 struct SampleSummary {
   int n = 0;
   double mean = 0.0;
-  double std = 0.0;  // sample standard deviation (n - 1); 0 for n = 1
-  double ci95_low = 0.0;
+  double std = 0.0;       // sample standard deviation (n - 1); NaN for n = 1 (undefined)
+  double ci95_low = 0.0;  // NaN for n = 1: one run bounds no interval
   double ci95_high = 0.0;
   double min = 0.0;
   double max = 0.0;

@@ -21,9 +21,20 @@ TEST(SweepResultsTest, SummaryMatchesClosedForm) {
   EXPECT_NEAR(s.ci95_high, 3.0 + half, 1e-12);
   EXPECT_EQ(s.min, 1.0);
   EXPECT_EQ(s.max, 5.0);
+  // audit s49: one run was summarised as std 0 and a 95 % CI of [7, 7]; both are undefined.
   const SampleSummary one = Summarise({7});
-  EXPECT_EQ(one.std, 0.0);
-  EXPECT_EQ(one.ci95_low, 7.0);
+  EXPECT_EQ(one.n, 1);
+  EXPECT_EQ(one.mean, 7.0);
+  EXPECT_EQ(one.min, 7.0);
+  EXPECT_EQ(one.max, 7.0);
+  EXPECT_TRUE(std::isnan(one.std));
+  EXPECT_TRUE(std::isnan(one.ci95_low));
+  EXPECT_TRUE(std::isnan(one.ci95_high));
+  // Identical runs (noise-free) have exactly no spread.
+  const SampleSummary same = Summarise({7, 7, 7});
+  EXPECT_EQ(same.std, 0.0);
+  EXPECT_EQ(same.ci95_low, 7.0);
+  EXPECT_EQ(same.ci95_high, 7.0);
   EXPECT_EQ(Summarise({}).n, 0);
 }
 

@@ -91,6 +91,20 @@ TEST(WeightedGainSearchTest, RejectsBadGrids) {
   EXPECT_EQ(message({.min_gain = 1.0, .max_gain = 0.5}).rfind("max_gain:", 0), 0u);
   EXPECT_EQ(message({.step = std::nan("")}).rfind("step:", 0), 0u);
   EXPECT_EQ(message({.step = 1e-6}).rfind("step:", 0), 0u);
+  // audit s49: gains the weighted estimator refuses failed the first replay as "encoder_gain:
+  // ...", after the run; a step beyond the range tried min_gain alone and reported it as the best.
+  EXPECT_EQ(message({.min_gain = 0.1, .max_gain = 1.1, .step = 0.1}),
+            "min_gain: must be a finite number in [0.5, 2], got 0.1");
+  EXPECT_EQ(message({.min_gain = 1.0, .max_gain = 3.0, .step = 0.5}),
+            "max_gain: must be a finite number in [0.5, 2], got 3");
+  EXPECT_EQ(message({.min_gain = 0.8, .max_gain = 1.2, .step = 5.0}),
+            "step: 5 does not divide max_gain - min_gain = 0.4 (0.08 steps): the grid would end at "
+            "0.8, short of max_gain 1.2; give a step that divides it");
+  EXPECT_EQ(message({.min_gain = 0.8, .max_gain = 1.2, .step = 0.03}).rfind("step: 0.03 ", 0), 0u);
+  // Steps that divide the range, and a grid of one point, are searched.
+  EXPECT_EQ(message({.min_gain = 0.8, .max_gain = 1.2, .step = 0.01}), "");
+  EXPECT_EQ(message({.min_gain = 0.9, .max_gain = 1.1, .step = 0.1}), "");
+  EXPECT_EQ(message({.min_gain = 1.0, .max_gain = 1.0, .step = 0.5}), "");
   EXPECT_THROW(SearchWeightedGains(Nominal(), WeightedFusedOdometryOptions{}, GainGridOptions{},
                                    GainCalibrationRun{}),
                std::invalid_argument);

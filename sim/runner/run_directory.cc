@@ -163,6 +163,40 @@ void RequireFinishedRun(const fs::path& dir) {
   if (!why.empty()) throw ConfigError(dir.string(), "", "not a finished run: " + why);
 }
 
+std::string WhyNotAFinishedRunOrPart(const fs::path& dir) {
+  const std::string why = WhyNotAFinishedRun(dir);
+  std::error_code error;
+  if (why.empty() || !fs::is_directory(dir, error) || fs::exists(dir / kRunCompleteFile, error)) {
+    return why;
+  }
+  // A multi-run protocol's runs (UMBmark's before/cw_1) have no complete.json of their own: the
+  // protocol's folder, at most two levels up, lists their files with its own. They were refused
+  // as "no complete.json", though the docs name them as scorable one by one (s49).
+  fs::path part;
+  fs::path folder = Normalised(dir);
+  for (int level = 0; level < 2 && folder.has_parent_path() && folder != folder.root_path();
+       ++level) {
+    part = part.empty() ? folder.filename() : folder.filename() / part;
+    folder = folder.parent_path();
+    if (!fs::is_regular_file(folder / kRunCompleteFile, error)) continue;
+    if (const std::string protocol_why = WhyNotAFinishedRun(folder); !protocol_why.empty()) {
+      return why + "; " + folder.string() +
+             ", which lists it, is not finished either: " + protocol_why;
+    }
+    // The record was read and every file it lists checked above.
+    const nlohmann::json record =
+        nlohmann::json::parse(ReadTextFile(folder / kRunCompleteFile), nullptr, false);
+    if (record["files"].contains((part / "config.yaml").generic_string())) return "";
+    return why;
+  }
+  return why;
+}
+
+void RequireFinishedRunOrPart(const fs::path& dir) {
+  const std::string why = WhyNotAFinishedRunOrPart(dir);
+  if (!why.empty()) throw ConfigError(dir.string(), "", "not a finished run: " + why);
+}
+
 StagedRunDirectory::StagedRunDirectory(const fs::path& target, bool force)
     : given_(target), target_(Normalised(target)) {
   std::error_code error;

@@ -26,6 +26,13 @@ std::string WhyNotAFinishedRun(const std::filesystem::path& dir);
 // holds a finished run.
 void RequireFinishedRun(const std::filesystem::path& dir);
 
+// As WhyNotAFinishedRun, but a run a multi-run protocol wrote in a subfolder of its own finished
+// run (UMBmark's before/cw_1: no complete.json of its own) counts as finished when the protocol's
+// complete.json, one or two levels up, lists its config.yaml (and so, checked, its files). For
+// `plywood score`, which scores such runs one by one.
+std::string WhyNotAFinishedRunOrPart(const std::filesystem::path& dir);
+void RequireFinishedRunOrPart(const std::filesystem::path& dir);
+
 // Writes DIR/complete.json for the files now under `dir` (StagedRunDirectory::Commit does it; tests
 // that assemble a run directory by hand use it too).
 void WriteCompletionRecord(const std::filesystem::path& dir);
