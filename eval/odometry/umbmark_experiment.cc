@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 #include "msgs/angle_units.h"
 #include "sim/config/config_archive.h"
@@ -165,6 +166,15 @@ UmbmarkOutcome RunUmbmark(const sim::ExperimentConfig& config, const UmbmarkOpti
     throw sim::ConfigError(
         config.source_file, "controller.type",
         "UMBmark drives squares: expected square_path, got '" + config.controller.type + "'");
+  }
+  // Borenstein's protocol drives each square once and repeats it as runs: a laps key was
+  // overridden to 1 without a word, so `laps: 2` reported one lap's figures (audit s49's left
+  // item).
+  if (config.controller.square_path.laps != 1) {
+    throw sim::ConfigError(config.source_file, "controller.laps",
+                           "UMBmark drives each square once (got " +
+                               std::to_string(config.controller.square_path.laps) +
+                               " laps): repeat squares with umbmark.runs_per_direction");
   }
   if (config.controller.steer_by == "ground_truth") {
     throw sim::ConfigError(config.source_file, "controller.steer_by",

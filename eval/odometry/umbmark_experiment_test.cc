@@ -141,5 +141,16 @@ TEST(UmbmarkExperimentTest, RejectsGroundTruthSteering) {
   EXPECT_THROW(RunUmbmark(config, ReadUmbmarkOptions(config)), sim::ConfigError);
 }
 
+TEST(UmbmarkExperimentTest, RejectsLapsOtherThanOneNamingTheKey) {
+  // The protocol drives each square once; two laps were silently run as one.
+  const sim::ExperimentConfig config = Shipped({"controller.laps=2"});
+  try {
+    RunUmbmark(config, ReadUmbmarkOptions(config));
+    FAIL() << "laps 2 was run";
+  } catch (const sim::ConfigError& error) {
+    EXPECT_NE(std::string(error.what()).find("controller.laps"), std::string::npos) << error.what();
+  }
+}
+
 }  // namespace
 }  // namespace plywood::eval
