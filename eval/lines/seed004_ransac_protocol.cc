@@ -67,16 +67,8 @@ Seed004RansacOptions ReadSeed004RansacOptions(const sim::ExperimentConfig& confi
   fields.Finish();
   // The odometry cloud places each scan at the record's odometry pose, which a run without an
   // estimator fills with the true pose: its "odometry" lines were the truth's, exit 0 (s49).
-  if (config.odometry.enabled.empty()) {
-    throw sim::ConfigError(
-        config.source_file, "odometry",
-        "seed004_ransac accumulates its odometry cloud at the odometry pose, but "
-        "the run has no odometry estimator (" +
-            std::string(config.odometry.given ? "odometry: names none"
-                                              : "sensors.encoders is off") +
-            "), so it would be the true pose: enable one, e.g. odometry: "
-            "{encoder: {}} with sensors.encoders");
-  }
+  sim::RequireOdometryEstimator(config, "odometry",
+                                "seed004_ransac accumulates its odometry cloud");
   return options;
 }
 

@@ -2,8 +2,6 @@
 
 #include <cmath>
 #include <cstddef>
-#include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -13,17 +11,6 @@
 #include "robot/odometry/trajectory_metrics.h"
 
 namespace plywood::robot {
-namespace {
-
-// Six significant digits: 1.2 - 0.8 is 0.3999999999999999 in doubles, and reads 0.4.
-std::string GridNumber(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof(buffer), "%.6g", value);
-  return msgs::ShortestNumber(std::strtod(buffer, nullptr));
-}
-
-}  // namespace
-
 void GainGridOptions::Validate() const {
   // The grid's gains are the weighted estimator's own (odometry.weighted takes [0.5, 2]): one
   // outside failed the first replay, after the whole run, as "encoder_gain: must be ..." without
@@ -48,10 +35,10 @@ void GainGridOptions::Validate() const {
   if (std::abs(steps - std::round(steps)) > 1e-9) {
     const double last = min_gain + std::floor(steps) * step;
     throw std::invalid_argument(
-        "step: " + msgs::ShortestNumber(step) +
-        " does not divide max_gain - min_gain = " + GridNumber(max_gain - min_gain) + " (" +
-        GridNumber(steps) + " steps): the grid would end at " + GridNumber(last) +
-        ", short of max_gain " + msgs::ShortestNumber(max_gain) + "; give a step that divides it");
+        "step: " + msgs::ShortestNumber(step) + " does not divide max_gain - min_gain = " +
+        msgs::SixDigitNumber(max_gain - min_gain) + " (" + msgs::SixDigitNumber(steps) +
+        " steps): the grid would end at " + msgs::SixDigitNumber(last) + ", short of max_gain " +
+        msgs::ShortestNumber(max_gain) + "; give a step that divides it");
   }
 }
 

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <stdexcept>
 #include <string>
 
@@ -68,21 +66,14 @@ namespace internal {
 
 // A forward speed the wheels can drive: beyond max_wheel_speed_rad_s x wheel_radius_m the wheel
 // limits cap it, so the run would not be the one written (speed_m_s: 1e300 drove at 1.2 m/s).
-// The limit as an error prints it: 6 significant digits, so 12.3 x 0.0975 reads 1.19925 rather than
-// 1.1992499999999999, and a tiny one (1e-9 rad/s) 9.75e-11 rather than a rounded 0.
-inline std::string LimitText(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof(buffer), "%.6g", value);
-  return msgs::ShortestNumber(std::strtod(buffer, nullptr));
-}
-
+// The limit prints with 6 significant digits (12.3 x 0.0975 reads 1.19925, 1e-9 rad/s 9.75e-11).
 inline void RequireDrivableSpeed(const DiffDriveSpec& spec, const std::string& field,
                                  double speed_m_s) {
   const double max_rim_m_s = spec.max_wheel_speed_rad_s * spec.wheel_radius_m;
   if (speed_m_s > max_rim_m_s) {
     throw std::invalid_argument(field + ": " + msgs::ShortestNumber(speed_m_s) +
                                 " needs more than max_wheel_speed_rad_s allows (" +
-                                LimitText(max_rim_m_s) + " m/s)");
+                                msgs::SixDigitNumber(max_rim_m_s) + " m/s)");
   }
 }
 

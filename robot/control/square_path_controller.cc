@@ -52,13 +52,13 @@ SquarePathController::SquarePathController(const DiffDriveSpec& spec,
   if (options_.speed_m_s > max_rim_m_s) {
     throw std::invalid_argument("speed_m_s: " + msgs::ShortestNumber(options_.speed_m_s) +
                                 " needs more than max_wheel_speed_rad_s allows (" +
-                                internal::LimitText(max_rim_m_s) + " m/s)");
+                                msgs::SixDigitNumber(max_rim_m_s) + " m/s)");
   }
   if (options_.turn_rate_rad_s * spec_.track_m / 2.0 > max_rim_m_s) {
     throw std::invalid_argument(
         "turn_rate_rad_s: " + msgs::ShortestNumber(options_.turn_rate_rad_s) +
         " needs more than max_wheel_speed_rad_s allows (" +
-        internal::LimitText(2.0 * max_rim_m_s / spec_.track_m) + " rad/s)");
+        msgs::SixDigitNumber(2.0 * max_rim_m_s / spec_.track_m) + " rad/s)");
   }
 }
 

@@ -438,6 +438,17 @@ ExperimentConfig LoadExperimentConfig(const std::filesystem::path& yaml_path,
                                std::filesystem::absolute(yaml_path).parent_path(), overrides);
 }
 
+void RequireOdometryEstimator(const ExperimentConfig& config, const std::string& field,
+                              const std::string& what_uses_the_pose) {
+  if (!config.odometry.enabled.empty()) return;
+  throw ConfigError(
+      config.source_file, field,
+      what_uses_the_pose + " at the odometry pose, but the run has no odometry estimator (" +
+          (config.odometry.given ? "odometry: names none" : "sensors.encoders is off") +
+          "), so it would be the true pose: enable one, e.g. odometry: {encoder: {}} "
+          "with sensors.encoders");
+}
+
 std::string CanonicalKeyPath(const std::string& key_path) {
   if (key_path == "sensors.laser.sigma_m") return "sensors.laser.range_noise_sigma_m";
   return key_path;

@@ -83,6 +83,13 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
                                        const std::filesystem::path& base_dir,
                                        const std::vector<std::string>& overrides = {});
 
+// For a protocol that places data at the record's odometry pose, which a run without an estimator
+// fills with the true pose (its figures would be the truth's, exit 0): refuses such a run, naming
+// `field` and what the protocol does there ("seed 003 builds its map").
+// @throws ConfigError when config.odometry enables no estimator.
+void RequireOdometryEstimator(const ExperimentConfig& config, const std::string& field,
+                              const std::string& what_uses_the_pose);
+
 // The key path an override of `key_path` sets: the long name of a short one a user may write
 // (sensors.laser.sigma_m is sensors.laser.range_noise_sigma_m), else `key_path` itself. Two
 // overrides set the same value exactly when their canonical paths are equal.

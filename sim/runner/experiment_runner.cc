@@ -126,14 +126,8 @@ void RequireControllerSensors(const ExperimentConfig& config) {
   // Seed 003's map places each IR scan at the record's odometry pose, which a run without an
   // estimator fills with the true pose (MakeScanRecord): the map was built at the truth and
   // reported pose.odometry errors of 0, exit 0 (s49; seed004_ransac's cloud alike, checked there).
-  if (config.geometric_map.given && config.odometry.enabled.empty()) {
-    throw ConfigError(
-        config.source_file, "geometric_map",
-        std::string("seed 003 builds its map at the odometry pose, but the run has ") +
-            "no odometry estimator (" +
-            (config.odometry.given ? "odometry: names none" : "sensors.encoders is off") +
-            "), so it would be the true pose: enable one, e.g. odometry: " +
-            "{encoder: {}} with sensors.encoders");
+  if (config.geometric_map.given) {
+    RequireOdometryEstimator(config, "geometric_map", "seed 003 builds its map");
   }
   if (config.lines.given && !s.laser) {
     throw ConfigError(config.source_file, "lines",
