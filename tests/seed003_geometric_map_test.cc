@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 
 #include <cstdlib>
+#include <fstream>
 #include <string>
 
 #include "plywood_paths.h"
@@ -120,6 +121,33 @@ TEST(Seed003GeometricMapTest, AMapWithNoWallToFindIsRefused) {
     EXPECT_EQ(log.find('\n'), log.size() - 1) << "not one line: " << log;
     EXPECT_FALSE(fs::exists(dir / name / "metrics.json"));
   }
+}
+
+// stop 50 re-check: the IR-only map counted an IR-invisible geom as mapped when a visible face
+// lay on its line within DIST_MAX (one joined surface): in a generated corridor with one wall made
+// glass, the glass wall's 18 mm end on the line of the next wall's face gave IR-only 1/1. Here a
+// visible cabinet continues panel_0's faces 5 cm past its east end: the IR-only map shows the
+// cabinet and not the glass (0 of 2 mapped, was 1); the fused map still shows both panels.
+TEST(Seed003GeometricMapTest, AVisibleFaceOnAPanelsLineDoesNotMapThePanel) {
+  const fs::path dir = MakeTempDir("seed003_panel_line");
+  std::string world = Slurp(SourceRoot() / "worlds" / "ir_panels_room.xml");
+  const std::string anchor = "    <geom name=\"panel_1\"";
+  const std::size_t at = world.find(anchor);
+  ASSERT_NE(at, std::string::npos);
+  world.insert(at,
+               "    <geom name=\"cabinet\" class=\"wall\" pos=\"-0.15 0.9 0.5\" "
+               "size=\"0.6 0.005 0.5\"/>\n");
+  const fs::path world_file = dir / "panels_and_cabinet.xml";
+  std::ofstream(world_file) << world;
+  const std::string set_world = "--set world=" + world_file.string();
+  ASSERT_EQ(RunPanels(dir, "ir", 1, set_world + " --set geometric_map.fusion.source=ir"), 0)
+      << Slurp(dir / "ir.log");
+  ASSERT_EQ(RunPanels(dir, "fused", 1, set_world), 0) << Slurp(dir / "fused.log");
+  const std::string ir = Slurp(dir / "ir" / "metrics.json");
+  EXPECT_NE(ir.find("\"ir_invisible_geoms\": 2,"), std::string::npos) << ir;
+  EXPECT_NE(ir.find("\"ir_invisible_mapped\": 0,"), std::string::npos) << ir;
+  const std::string fused = Slurp(dir / "fused" / "metrics.json");
+  EXPECT_NE(fused.find("\"ir_invisible_mapped\": 2,"), std::string::npos) << fused;
 }
 
 }  // namespace

@@ -188,9 +188,16 @@ bool AddGeometricMapMetrics(sim::ExperimentRunner& runner, GeometricMapRun* run)
     sum_d_alpha_sq += d_alpha * d_alpha;
     endpoint_error += SegmentDistance(segment.start, truth[k].a, truth[k].b) +
                       SegmentDistance(segment.end, truth[k].a, truth[k].b);
+    // An IR-invisible geom is mapped when the segment covers its own face by more than DIST_MAX
+    // (the gap the joined surface bridges): the surface joins it to collinear visible faces, and
+    // a segment along those alone, which the IR-only map gives, would otherwise count it.
     for (int member : run->faces[k].members) {
       const int geom = walls.segments[member].geom_id;
-      if (invisible_mapped.count(geom)) invisible_mapped[geom] = true;
+      if (invisible_mapped.count(geom) &&
+          CoveredLengthM(walls.segments[member], segment.start, segment.end) >
+              config.options.segmentation.dist_max_m) {
+        invisible_mapped[geom] = true;
+      }
     }
   }
   long observable = 0, observable_matched = 0, glimpsed = 0, glimpsed_matched = 0;

@@ -53,4 +53,13 @@ std::vector<JoinedFace> JoinCollinearFaces(const std::vector<sim::WallSegment>& 
   return joined;
 }
 
+double CoveredLengthM(const sim::WallSegment& face, const Eigen::Vector2d& start,
+                      const Eigen::Vector2d& end) {
+  const double length = face.LengthM();
+  if (length < 1e-9) return 0.0;
+  const Eigen::Vector2d u = (face.b - face.a) / length;
+  const double s0 = u.dot(start - face.a), s1 = u.dot(end - face.a);
+  return std::max(0.0, std::min(length, std::max(s0, s1)) - std::max(0.0, std::min(s0, s1)));
+}
+
 }  // namespace plywood::eval

@@ -26,4 +26,11 @@ struct JoinedFace {
 std::vector<JoinedFace> JoinCollinearFaces(const std::vector<sim::WallSegment>& faces,
                                            double max_gap_m);
 
+// How much of `face` the segment start..end covers: the overlap of the two along the face's line
+// (both projected on it), 0 when they do not overlap. A segment matched with a JoinedFace shows
+// only the members it covers: a glass panel's end 18 mm wide on the line of a visible wall's face
+// is one surface with that face, but the segment along the wall does not show the glass.
+double CoveredLengthM(const sim::WallSegment& face, const Eigen::Vector2d& start,
+                      const Eigen::Vector2d& end);
+
 }  // namespace plywood::eval

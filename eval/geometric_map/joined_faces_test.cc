@@ -40,5 +40,18 @@ TEST(JoinedFacesTest, OppositeOffsetOrTurnedFacesStaySeparate) {
   EXPECT_EQ(JoinCollinearFaces(faces, 0.15).size(), 4u);
 }
 
+// The overlap along the face's line, whichever way the segment runs and off the line or not: a
+// segment from x = 0.2 to 1.5 covers 0.8 m of a face from x = 0 to 1; one past its end covers none.
+TEST(JoinedFacesTest, CoveredLengthIsTheOverlapAlongTheFace) {
+  const sim::WallSegment face = TopFace(0.0, 1.0, 0.5);
+  EXPECT_NEAR(CoveredLengthM(face, {0.2, 0.51}, {1.5, 0.49}), 0.8, 1e-12);
+  EXPECT_NEAR(CoveredLengthM(face, {1.5, 0.49}, {0.2, 0.51}), 0.8, 1e-12);
+  EXPECT_NEAR(CoveredLengthM(face, {-1.0, 0.5}, {3.0, 0.5}), 1.0, 1e-12);
+  EXPECT_NEAR(CoveredLengthM(face, {0.3, 0.5}, {0.4, 0.5}), 0.1, 1e-12);
+  EXPECT_EQ(CoveredLengthM(face, {1.05, 0.5}, {2.0, 0.5}), 0.0);
+  // The 18 mm end of a partition on the line of a wall's face, under a segment along the wall.
+  EXPECT_NEAR(CoveredLengthM(TopFace(1.0, 1.018, 0.5), {0.0, 0.5}, {1.1, 0.5}), 0.018, 1e-12);
+}
+
 }  // namespace
 }  // namespace plywood::eval
