@@ -29,10 +29,30 @@ constexpr const char* kFooter =
     "  plywood run experiments/default.yaml\n"
     "  plywood run --help";
 
-// Where a parse error happened, for the one line that reports it: "run: " or "".
+// The innermost command given: `generate` in `plywood worlds generate ...`, else `app` itself.
+const CLI::App* Innermost(const CLI::App& app) {
+  const CLI::App* at = &app;
+  while (!at->get_subcommands().empty()) at = at->get_subcommands().front();
+  return at;
+}
+
+// Where a parse error happened, for the one line that reports it: "run: ", "worlds generate: "
+// or "".
 std::string Where(const CLI::App& app) {
-  const std::vector<CLI::App*> parsed = app.get_subcommands();
-  return parsed.empty() ? "" : parsed.front()->get_name() + ": ";
+  std::string where;
+  for (const CLI::App* at = &app; !at->get_subcommands().empty();) {
+    at = at->get_subcommands().front();
+    where += (where.empty() ? "" : " ") + at->get_name();
+  }
+  return where.empty() ? "" : where + ": ";
+}
+
+// The first word the innermost command did not take that looks like a flag ("" if none).
+std::string UnknownOption(const CLI::App& app) {
+  for (const std::string& word : Innermost(app)->remaining()) {
+    if (word.size() > 1 && word.starts_with('-')) return word;
+  }
+  return "";
 }
 
 std::string SeeHelp(const std::string& where) {
@@ -53,10 +73,10 @@ void CheckFirstArgument(const std::vector<Command>& commands, const std::string&
 }
 
 // Each command takes only its own flags and positionals: the first stray word is named.
-void RejectExtras(const Command& command) {
-  const std::vector<std::string> extras = command.cli->remaining();
+void RejectExtras(const CLI::App& app, const Command& command) {
+  const std::vector<std::string> extras = Innermost(app)->remaining();
   if (extras.empty() || command.takes_any_arguments) return;
-  const std::string where = command.cli->get_name() + ": ";
+  const std::string where = Where(app);
   if (extras.front().starts_with('-')) {
     throw UsageError(where + "unknown option " + extras.front() + SeeHelp(where));
   }
@@ -72,7 +92,13 @@ int Main(int argc, char** argv) {
   const std::vector<Command> commands = {
       AddRunCommand(app),   AddBenchCommand(app), AddReplayCommand(app), AddScoreCommand(app),
       AddSweepCommand(app), AddTrainCommand(app), AddWorldsCommand(app), AddViewCommand(app)};
-  for (const Command& command : commands) command.cli->allow_extras();
+  // Stray words are named by RejectExtras (a command's subcommands too: `worlds generate`).
+  for (const Command& command : commands) {
+    command.cli->allow_extras();
+    for (CLI::App* sub : command.cli->get_subcommands([](CLI::App*) { return true; })) {
+      sub->allow_extras();
+    }
+  }
 
   if (argc < 2) {
     std::fputs(app.help().c_str(), stderr);
@@ -92,12 +118,17 @@ int Main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
+    // A mistyped flag is the likelier culprit than what it leaves missing: `worlds generate room
+    // --cuont 5 ...` said "--count is required", never naming --cuont.
     const std::string where = Where(app);
+    if (const std::string unknown = UnknownOption(app); !unknown.empty()) {
+      throw UsageError(where + "unknown option " + unknown + SeeHelp(where));
+    }
     throw UsageError(where + e.what() + SeeHelp(where));
   }
   for (const Command& command : commands) {
     if (!command.cli->parsed()) continue;
-    RejectExtras(command);
+    RejectExtras(app, command);
     return command.run();
   }
   throw UsageError("no command given" + SeeHelp(""));

@@ -28,7 +28,8 @@ using testing::WriteFile;
 // Every flag (and positional) each command accepts: a flag dropped from a command fails here.
 const std::map<std::string, std::vector<std::string>> kFlags = {
     {"run",
-     {"EXPERIMENT", "--out", "--seed", "--set", "--quiet", "--no-snapshot", "--force", "--help"}},
+     {"EXPERIMENT", "--out", "--seed", "--set", "--quiet", "--no-snapshot", "--force", "--video",
+      "--video-fps", "--help"}},
     {"bench", {"--seconds", "--world", "--repeats", "--min-wall", "--help"}},
     {"replay", {"LOG", "--extractor", "--set", "--skip-bad", "--out", "--force", "--help"}},
     {"train",
@@ -213,6 +214,30 @@ TEST(CliHelpTest, UsageErrorsAreOneLineNamingTheCulpritWithExitCode2) {
       {"sweep " + sweep.string() + " --out " + (dir / "sweep").string() + " --partition ''",
        "sweep: --dry-run, --partition, --tasks and --max-parallel go with --slurm"},
   };
+  // s50: an unknown flag is named even where something required is missing too (`--cuont` said
+  // "--count is required"), and in `worlds generate` (which said "worlds: The following argument
+  // was not expected: --colour (see plywood worlds --help)").
+  const std::string out = " --out " + (dir / "worlds").string();
+  const std::vector<std::pair<std::string, std::string>> unknown_flags = {
+      {"run --colour", "plywood: run: unknown option --colour (see plywood run --help)"},
+      {"score lines --colour",
+       "plywood: score: unknown option --colour (see plywood score --help)"},
+      {"worlds generate room --cuont 2 --seed 1" + out,
+       "plywood: worlds generate: unknown option --cuont (see plywood worlds generate --help)"},
+      {"worlds generate room --count 2 --seed 1 --colour" + out,
+       "plywood: worlds generate: unknown option --colour (see plywood worlds generate --help)"},
+      {"worlds generate room --count 2 --seed 1 extra" + out,
+       "plywood: worlds generate: unexpected argument 'extra' (see plywood worlds generate "
+       "--help)"},
+      {"worlds -x", "plywood: worlds: unknown option -x (see plywood worlds --help)"},
+  };
+  for (const auto& [args, line] : unknown_flags) {
+    SCOPED_TRACE(args);
+    const CliResult r = RunPlywood(args, dir);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_EQ(r.err, line + "\n");
+  }
+  EXPECT_FALSE(fs::exists(dir / "worlds"));
   for (const auto& [args, culprit] : cases) {
     SCOPED_TRACE(args);
     const CliResult r = RunPlywood(args, dir);

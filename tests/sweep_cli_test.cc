@@ -593,6 +593,53 @@ TEST(SweepCliTest, ASweepRefusedForABadValueRunsIntoTheSameOutOnceCorrected) {
   EXPECT_NE(mixed.err.find("holds files that are not a sweep"), std::string::npos) << mixed.err;
 }
 
+// s50 (re-check of issue 12): the sweep writes its generated worlds and its manifest before
+// sweep.yaml, by which a later sweep knows the folder as a sweep's. A sweep refused at expansion
+// (here a repeated cell, found once the worlds exist) left worlds/ without sweep.yaml, and one
+// killed while it generated its worlds left worlds/ with a half set (FAMILY-seedS.partial-PID) and
+// staged manifest files: the corrected sweep and the killed one's resume were both refused, "holds
+// files that are not a sweep (no sweep.yaml)". Both now run, to the same results as a sweep
+// into a fresh folder; a folder with anything else in worlds/ is still refused.
+TEST(SweepCliTest, ASweepRefusedOrKilledWhileItIsExpandedRunsIntoTheSameOut) {
+  const fs::path dir = MakeTempDir("SweepRefusedOrKilledWhileExpanded");
+  const std::string head = "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
+                           "\nseeds: [1]\nworlds: [{family: room, count: 2, seed: 3}]\nset:\n"
+                           "  output.snapshot: [false]\n";
+  const fs::path sweep = WriteFile(dir / "s.yaml", head + "  duration_s: [2, 2.0]\n");
+  const auto sweep_into = [&](const fs::path& out) {
+    return RunPlywood("sweep " + sweep.string() + " --out " + out.string() + " --quiet", dir);
+  };
+  const auto refused = sweep_into(dir / "out");
+  ASSERT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find("set.duration_s"), std::string::npos) << refused.err;
+  ASSERT_TRUE(fs::is_directory(dir / "out" / "worlds" / "room-seed3"));
+  WriteFile(sweep, head + "  duration_s: [2, 3]\n");
+  const auto fixed = sweep_into(dir / "out");
+  EXPECT_EQ(fixed.exit_code, 0) << fixed.err;
+  EXPECT_EQ(CountRunDirs(dir / "out"), 4);
+
+  // What a kill -9 while the worlds were generated leaves: the lock, a half set and a staged
+  // manifest file, no sweep.yaml.
+  const fs::path killed = dir / "killed";
+  WriteFile(killed / "sweep.lock", "");
+  fs::create_directories(killed / "worlds" / "room-seed3.partial-4242");
+  fs::copy_file(dir / "out" / "worlds" / "room-seed3" / "room_s3_00000.xml",
+                killed / "worlds" / "room-seed3.partial-4242" / "room_s3_00000.xml");
+  WriteFile(killed / "sweep.json.partial-4242", "{\"name\": ");
+  const auto resumed = sweep_into(killed);
+  EXPECT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_EQ(Slurp(killed / "results.csv"), Slurp(dir / "out" / "results.csv"));
+
+  // A user's own file in worlds/ is not the sweep's: the folder is still refused.
+  const fs::path mine = dir / "mine";
+  WriteFile(mine / "worlds" / "my_room.xml", "<mujoco/>\n");
+  const auto refused_mine = sweep_into(mine);
+  EXPECT_EQ(refused_mine.exit_code, 2);
+  EXPECT_NE(refused_mine.err.find("holds files that are not a sweep"), std::string::npos)
+      << refused_mine.err;
+  EXPECT_EQ(Slurp(mine / "worlds" / "my_room.xml"), "<mujoco/>\n");
+}
+
 // audit s35: a cell's id hashed the world file's own text only, so a resumed sweep kept the runs
 // made before a file the world includes was edited (here its west wall moved 1 m in): stale
 // results, no word. The files a world names are now part of its hash.

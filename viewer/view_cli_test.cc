@@ -49,6 +49,25 @@ bool DisplayShowsAWindow(int display) {
   return text.find("IsViewable") != std::string::npos;
 }
 
+// s50 (re-check of issue 11, "plywood <cmd> --help lists every flag"): tests/cli_help_test.cc
+// checks every command but `view`, which only a viewer build has. No display needed.
+TEST(ViewHelpTest, HelpListsEveryFlagAndAnUnknownOneIsNamed) {
+  const std::filesystem::path dir = MakeTempDir("view_help");
+  for (const char* help : {"--help", "-h"}) {
+    const auto r = RunPlywood(std::string("view ") + help, dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    for (const char* flag : {"TARGET", "--out", "--seed", "--set", "--force", "--speed", "--paused",
+                             "--exit-at-end", "--screenshot", "--time", "--size", "--no-panel",
+                             "--quiet", "--bench", "--bench-seconds", "--help"}) {
+      EXPECT_NE(r.out.find(flag), std::string::npos) << flag << " missing from:\n" << r.out;
+    }
+    EXPECT_NE(r.out.find("Example"), std::string::npos) << r.out;
+  }
+  const auto unknown = RunPlywood("view --colour", dir);
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_EQ(unknown.err, "plywood: view: unknown option --colour (see plywood view --help)\n");
+}
+
 class ViewCliTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() { testing::RequireXvfbOrSkip(); }

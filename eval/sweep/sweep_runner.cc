@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -27,6 +28,7 @@
 #include "sim/runner/build_id.h"
 #include "sim/runner/run_directory.h"
 #include "sim/runner/text_file.h"
+#include "sim/world/generator/world_families.h"
 
 namespace plywood::eval {
 namespace {
@@ -169,15 +171,61 @@ SweepFolderLock::~SweepFolderLock() {
 
 namespace {
 
-// Whether `out` holds nothing but the lock files a sweep takes (SweepFolderLock): what a sweep
-// refused for a bad sweep file leaves behind. Such a folder was "holds files that are not a sweep",
-// so the corrected sweep could not run into it.
-bool HoldsOnlySweepLocks(const fs::path& out) {
+// Whether `name` is `file` or a staged copy of it that a kill left (sim::WriteTextFile writes
+// FILE.partial-PID and renames it).
+bool IsFileOrItsStagedCopy(const std::string& name, const std::string& file) {
+  if (name == file) return true;
+  const std::string prefix = file + ".partial-";
+  return name.size() > prefix.size() && name.starts_with(prefix) &&
+         std::all_of(name.begin() + static_cast<std::ptrdiff_t>(prefix.size()), name.end(),
+                     [](char c) { return c >= '0' && c <= '9'; });
+}
+
+// Whether `worlds` holds only generator sets as a sweep writes them: FAMILY-seedS folders, and the
+// FAMILY-seedS.partial-PID a kill during the generation left.
+bool HoldsOnlyGeneratedSets(const fs::path& worlds) {
+  const auto digits = [](const std::string& text) {
+    return !text.empty() &&
+           std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+  };
+  for (const auto& entry : fs::directory_iterator(worlds)) {
+    if (!entry.is_directory() || entry.is_symlink()) return false;
+    std::string name = entry.path().filename().string();
+    if (const auto staged = name.find(".partial-"); staged != std::string::npos) {
+      if (!digits(name.substr(staged + 9))) return false;
+      name.resize(staged);
+    }
+    const auto seed = name.rfind("-seed");
+    if (seed == std::string::npos || !digits(name.substr(seed + 5))) return false;
+    try {
+      sim::worldgen::FindWorldFamily(name.substr(0, seed));
+    } catch (const std::invalid_argument&) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Whether `out` holds nothing but what a sweep writes before its sweep.yaml: the lock files
+// (SweepFolderLock), the generated worlds and the manifest, all written while the sweep is
+// expanded. A sweep refused for a bad sweep file, refused at expansion (a repeated cell, a spawn it
+// cannot use) or killed while it generated its worlds leaves such a folder. It was "holds files
+// that are not a sweep", so neither the corrected sweep nor the killed one's resume could run
+// into it.
+bool HoldsOnlyWhatASweepWritesFirst(const fs::path& out) {
   for (const auto& entry : fs::directory_iterator(out)) {
     const std::string name = entry.path().filename().string();
+    if (name == "worlds" && entry.is_directory() && !entry.is_symlink()) {
+      if (!HoldsOnlyGeneratedSets(entry.path())) return false;
+      continue;
+    }
     const bool lock = name == "sweep.lock" || (name.rfind("shard-", 0) == 0 && name.size() > 5 &&
                                                name.compare(name.size() - 5, 5, ".lock") == 0);
-    if (!lock || !entry.is_regular_file()) return false;
+    bool manifest = false;
+    for (const char* file : {"sweep.json", "cells.json", "cells.csv", "sweep.yaml"}) {
+      manifest = manifest || IsFileOrItsStagedCopy(name, file);
+    }
+    if (!(lock || manifest) || !entry.is_regular_file() || entry.is_symlink()) return false;
   }
   return true;
 }
@@ -191,7 +239,7 @@ void PrepareSweepFolder(const SweepSpec& spec, const fs::path& out) {
       throw sim::ConfigError(out.string(), "", "exists and is not a folder; choose another --out");
     }
     const fs::path copy = out / "sweep.yaml";
-    if (!HoldsOnlySweepLocks(out) && !fs::is_regular_file(copy)) {
+    if (!HoldsOnlyWhatASweepWritesFirst(out) && !fs::is_regular_file(copy)) {
       throw sim::ConfigError(out.string(), "",
                              "holds files that are not a sweep (no sweep.yaml); choose another "
                              "--out");

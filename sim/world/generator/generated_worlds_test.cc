@@ -4,11 +4,13 @@
 // robot, inside the room (a flood fill from spawn_0 reaches every spawn and, in a closed world,
 // never the outside) and the laser at spawn_0 sees something within 4 m; both robots placed at the
 // spawn poses touch only the floor and stay put; and the sidecar's parameters lie in the ranges of
-// docs/worlds.md.
+// docs/worlds.md. PLYWOOD_WORLDS_SEED and PLYWOOD_WORLDS_COUNT check other seeds and more worlds
+// (scripts/check_generated_worlds: worlds nobody has looked at).
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 #include <queue>
 #include <set>
@@ -29,7 +31,18 @@ namespace {
 namespace fs = std::filesystem;
 using Eigen::Vector2d;
 
-constexpr int kWorldsPerFamily = 20;
+// The environment's value of `name` (a whole number >= `min`), else `fallback`.
+int EnvironmentInt(const char* name, int fallback, int min) {
+  const char* text = std::getenv(name);
+  if (text == nullptr || *text == '\0') return fallback;
+  char* end = nullptr;
+  const long value = std::strtol(text, &end, 10);
+  if (*end != '\0' || value < min || value > 1000000) {
+    ADD_FAILURE() << name << "=" << text << ": not a whole number in [" << min << ", 1e6]";
+    return fallback;
+  }
+  return static_cast<int>(value);
+}
 constexpr double kPi = std::numbers::pi;
 
 struct Loaded {
@@ -394,22 +407,24 @@ class GeneratedWorldsTest : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(GeneratedWorldsTest, EveryWorldIsSound) {
   const std::string family = GetParam();
+  const int count = EnvironmentInt("PLYWOOD_WORLDS_COUNT", 20, 1);
+  const int seed = EnvironmentInt("PLYWOOD_WORLDS_SEED", 1, 0);
   const fs::path dir = testing::MakeTempDir("generated_worlds_" + family);
   GenerateWorldsOptions options;
   options.family = family;
-  options.count = kWorldsPerFamily;
-  options.seed = 1;
+  options.count = count;
+  options.seed = seed;
   options.out_dir = dir;
   options.check_with_mujoco = false;  // checked here, independently
   const auto files = GenerateWorlds(options);
-  ASSERT_EQ(files.size(), static_cast<size_t>(kWorldsPerFamily));
+  ASSERT_EQ(files.size(), static_cast<size_t>(count));
   int closed = 0;
-  for (int i = 0; i < kWorldsPerFamily; ++i) {
+  for (int i = 0; i < count; ++i) {
     SCOPED_TRACE(files[i].mjcf.filename().string());
-    const GeneratedWorld world = GenerateWorld(family, 1, i);
+    const GeneratedWorld world = GenerateWorld(family, seed, i);
     const YAML::Node sidecar = YAML::LoadFile(files[i].sidecar.string());
     EXPECT_EQ(sidecar["family"].as<std::string>(), family);
-    EXPECT_EQ(sidecar["seed"].as<int>(), 1);
+    EXPECT_EQ(sidecar["seed"].as<int>(), seed);
     EXPECT_EQ(sidecar["index"].as<int>(), i);
     EXPECT_EQ(sidecar["spawns"].size(), world.spawns.size());
     const std::string warning_before = LastMujocoWarning();
@@ -422,7 +437,7 @@ TEST_P(GeneratedWorldsTest, EveryWorldIsSound) {
     ExpectParametersInRange(family, sidecar["parameters"], world);
     closed += sidecar["closed"].as<bool>();
   }
-  std::printf("%s: %d of %d worlds closed\n", family.c_str(), closed, kWorldsPerFamily);
+  std::printf("%s seed %d: %d of %d worlds closed\n", family.c_str(), seed, closed, count);
 }
 
 std::vector<std::string> FamilyNames() {
