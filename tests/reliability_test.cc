@@ -1336,8 +1336,27 @@ TEST_F(ReliabilityTest, SubnormalLengthsRatesAndStepsAreRefusedBeforeTheRun) {
     SCOPED_TRACE(set);
     ExpectRefused(yaml, "--set " + set, {"experiment.yaml", message});
   }
-  // The limits themselves run.
-  EXPECT_EQ(Run(yaml, "--set robot.nominal.track_m=0.01 --set sensors.gyro.quantisation_rad_s=1e-9")
+  // The limits themselves run (a nominal track of 0.01 m is in range but, since s50, not the
+  // P3-DX's: RobotNominalGeometryOtherThanTheModelsIsRefused).
+  EXPECT_EQ(Run(yaml, "--set sensors.gyro.quantisation_rad_s=1e-9").exit_code, 0);
+  ExpectRefused(yaml, "--set robot.nominal.track_m=0.01",
+                {"robot.nominal.track_m: 0.01 m, but the 'p3dx' is simulated with its model's "
+                 "0.33 m"});
+}
+
+// s50: robot.nominal is what the software believes, the robot is built from its model's wheels
+// (deviated by robot.deviation): a nominal wheel radius of 0.5 m on the P3-DX's 0.0975 m drove
+// the same 0.145 m while the encoder odometry read 415 % drift, exit 0, config.yaml saying the
+// robot was built as nominal. The model's own values (as a run's config.yaml writes them) run.
+TEST_F(ReliabilityTest, RobotNominalGeometryOtherThanTheModelsIsRefused) {
+  const std::string yaml = HallExperiment(0.0, 0.0);
+  ExpectRefused(yaml, "--set robot.nominal.wheel_radius_m=0.5",
+                {"experiment.yaml: robot.nominal.wheel_radius_m: 0.5 m, but the 'p3dx' is "
+                 "simulated with its model's 0.0975 m (robot.deviation's ratios are taken from "
+                 "it), so the odometry and controllers would be off by a factor 5.128205128205128",
+                 "give a build error with robot.deviation (wheel_diameter_ratio, track_ratio)"});
+  ExpectRefused(yaml, "--set robot.nominal.track_m=0.4", {"robot.nominal.track_m: 0.4 m"});
+  EXPECT_EQ(Run(yaml, "--set robot.nominal.wheel_radius_m=0.0975 --set robot.nominal.track_m=0.33")
                 .exit_code,
             0);
 }
@@ -1708,6 +1727,26 @@ TEST_F(ReliabilityTest, ACounterThatWrapsWithinOneEncoderIntervalIsRefused) {
     metrics[i] = YAML::Dump(YAML::LoadFile((out / "metrics.json").string())["odometry"]);
   }
   EXPECT_EQ(metrics[1], metrics[0]);
+}
+
+// s50 (s49's left item): a reach tolerance below what one control tick drives cannot catch a
+// waypoint driven through: `default` with 1e-5 m circled its first waypoint to the end of the run,
+// exit 0. Refused naming the key, the speed and the rate; the period is the longest between two
+// ticks on the physics clock (30 Hz on 10 ms steps: 0.04 s).
+TEST_F(ReliabilityTest, AReachToleranceBelowOneControlTickIsRefused) {
+  const std::string yaml = HallExperiment(
+      -2.0, -2.0, "controller: {type: waypoints, speed_m_s: 0.4, waypoints: [[1, -2], [1, 1]]}\n");
+  ExpectRefused(yaml, "--set controller.reach_tolerance_m=1e-5",
+                {"experiment.yaml: controller.reach_tolerance_m: 1e-05 m is less than half the "
+                 "0.008 m the robot drives between two control ticks (controller.speed_m_s 0.4 "
+                 "m/s at controller.rate_hz 50 Hz, a tick every 0.02 s)",
+                 "give at least 0.004 m"});
+  ExpectRefused(yaml, "--set controller.reach_tolerance_m=0.0039",
+                {"controller.reach_tolerance_m: 0.0039 m"});
+  ExpectRefused(yaml, "--set controller.reach_tolerance_m=0.007 --set controller.rate_hz=30",
+                {"half the 0.016 m", "at controller.rate_hz 30 Hz, a tick every 0.04 s"});
+  const CliResult run = Run(yaml, "--set controller.reach_tolerance_m=0.004");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
 }
 
 // A world file named with what XML quotes: `Tom & Jerry "hall" <2>.xml` was refused as "does not

@@ -77,9 +77,25 @@ std::vector<double> ParseRanges(const std::vector<std::string>& t, std::size_t f
   return ranges;
 }
 
+// FLASER carries no angles: readers guess them from the beam count. For 400 and 401 beams they
+// disagree about the scanner itself: CARMEN's own reader (carmen_laser_guess_fov) takes a SICK in
+// its 100 deg mode at 0.25 deg, vasco and Plywood a 180 deg fan at 0.45 deg, so every beam but the
+// first points up to 80 deg apart between the two. 180 / 181 and 360 / 361 beams are 1 and 0.5 deg
+// steps over 180 deg in both, to within the last beam (179 or 180 deg), as the shipped logs are.
+bool FlaserCountIsAmbiguous(std::size_t n) { return n == 400 || n == 401; }
+
 void ParseFlaser(const std::vector<std::string>& t, CarmenLog* log) {
   if (t.size() < 2) throw std::runtime_error("FLASER: missing beam count");
   const std::size_t n = ParseCount(t[1], "FLASER beam count", 1);
+  if (FlaserCountIsAmbiguous(n)) {
+    throw std::runtime_error(
+        "FLASER beam count: " + std::to_string(n) +
+        " beams, which CARMEN's reader takes as a 100 deg scan at 0.25 deg and others as 180 deg "
+        "at " +
+        msgs::ShortestNumber(180.0 / static_cast<double>(n - 1)) +
+        " deg: FLASER gives no angles, so the beams' bearings are unknown; write the scan as "
+        "ROBOTLASER1 with its start_angle and angular_resolution");
+  }
   // n ranges, then x y theta odom_x odom_y odom_theta ipc_timestamp hostname logger_timestamp.
   if (t.size() != 2 + n + 9) {
     throw std::runtime_error("FLASER: expected " + std::to_string(2 + n + 9) + " fields for " +
@@ -160,9 +176,10 @@ void ParseRobotLaser1(const std::vector<std::string>& t, CarmenLog* log) {
 }
 
 // True when FLASER's fixed geometry (n beams from -90 deg to +90 deg) is the scan's own.
+// A count readers take for another fan (FlaserCountIsAmbiguous) goes out as ROBOTLASER1.
 bool FlaserCanCarry(const msgs::LaserScan& scan) {
   const std::size_t n = scan.ranges_m.size();
-  if (n < 2) return false;
+  if (n < 2 || FlaserCountIsAmbiguous(n)) return false;
   constexpr double kTolerance = 1e-9;
   return std::abs(scan.angle_min_rad + std::numbers::pi / 2.0) < kTolerance &&
          std::abs(scan.angle_increment_rad - std::numbers::pi / static_cast<double>(n - 1)) <

@@ -167,6 +167,48 @@ TEST(CarmenLogTest, ANarrowScanRoundTripsWithItsOwnBeamAngles) {
   EXPECT_EQ(flaser.str().rfind("FLASER 101 ", 0), 0u);
 }
 
+// s50: FLASER has no angles; for 400 / 401 beams CARMEN's reader guesses a 100 deg SICK at
+// 0.25 deg, the replay read 180 deg at 0.45 deg (exit 0, every wall bent into another fan). Such a
+// line is refused naming the count, and a 401-beam 180 deg scan of Plywood's goes out as
+// ROBOTLASER1, which reads back with its own angles. 181 and 361 beams stay FLASER.
+TEST(CarmenLogTest, AFlaserCountReadersTakeForAnotherFanIsRefused) {
+  const double deg = std::numbers::pi / 180.0;
+  for (const std::size_t n : {400u, 401u}) {
+    SCOPED_TRACE(n);
+    std::string line = "FLASER " + std::to_string(n);
+    for (std::size_t i = 0; i < n; ++i) line += " 2.0";
+    line += " 0 0 0 0 0 0 1.0 host 1.0\n";
+    try {
+      ReadCarmenLog(WriteTemp("flaser_" + std::to_string(n) + ".log", line));
+      ADD_FAILURE() << "a " << n << "-beam FLASER line was read";
+    } catch (const std::runtime_error& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find(".log:1: FLASER beam count: " + std::to_string(n) + " beams"),
+                std::string::npos)
+          << message;
+      EXPECT_NE(message.find("100 deg scan at 0.25 deg"), std::string::npos) << message;
+    }
+  }
+  CarmenLaserRecord record;
+  record.scan.angle_min_rad = -90.0 * deg;
+  record.scan.angle_increment_rad = 180.0 * deg / 400.0;
+  record.scan.ranges_m.assign(401, 2.0);
+  record.scan.range_max_m = 8.0;
+  EXPECT_FALSE(IsFlaserScan(record.scan));
+  std::ostringstream out;
+  WriteCarmenLaser(out, record);
+  EXPECT_EQ(out.str().rfind("ROBOTLASER1 ", 0), 0u) << out.str().substr(0, 40);
+  const CarmenLog log = ReadCarmenLog(WriteTemp("wide401.log", out.str()));
+  ASSERT_EQ(log.lasers.size(), 1u);
+  EXPECT_NEAR(log.lasers[0].scan.BeamAngleRad(200), 0.0, 1e-9);
+  EXPECT_NEAR(log.lasers[0].scan.BeamAngleRad(400), 90.0 * deg, 1e-9);
+  for (const std::size_t n : {181u, 361u}) {
+    record.scan.angle_increment_rad = 180.0 * deg / static_cast<double>(n - 1);
+    record.scan.ranges_m.assign(n, 2.0);
+    EXPECT_TRUE(IsFlaserScan(record.scan)) << n;
+  }
+}
+
 // Each way a ROBOTLASER1 line can be malformed is refused naming the line, like FLASER's.
 TEST(CarmenLogTest, MalformedRobotLaser1LinesNameTheLine) {
   CarmenLaserRecord record;

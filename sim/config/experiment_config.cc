@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include "msgs/shortest_number.h"
+#include "perception/geometric_map/range_fusion.h"
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_archive.h"
 #include "sim/config/config_error.h"
@@ -213,6 +215,109 @@ void RequireRatesTheClockCanKeep(const YamlFields& top, const ExperimentConfig& 
   require("output.trajectory_rate_hz", config.output.trajectory_rate_hz);
 }
 
+// A waypoint is passed when the pose the controller sees at one of its ticks is within
+// reach_tolerance_m of it; at speed_m_s those poses lie speed * period apart along the path, so
+// only a tolerance of at least half that is sure to catch a waypoint driven through. Below it the
+// robot misses, stops, turns about and creeps back (at 0.4 m/s and 50 Hz, 1e-3 m drove 4.67 m of
+// default's tour in 20 s where 0.1 m drove 5.04 m), and below the step of one tick from rest it
+// circled its first waypoint to the end of the run, exit 0 (1e-5 m, s49's left item). The period
+// is the longest between two ticks: the schedule fires on the first physics step at or after each
+// ideal time.
+void RequireWaypointsAControlPeriodCanReach(const YamlFields& top, const ExperimentConfig& config) {
+  if (config.controller.type != "waypoints") return;
+  const robot::WaypointOptions& waypoints = config.controller.waypoints;
+  const double step_s = config.physics.timestep_s;
+  const double period_s = std::ceil(1.0 / (config.controller.rate_hz * step_s) - 1e-9) * step_s;
+  const double per_tick_m = waypoints.speed_m_s * period_s;
+  if (waypoints.reach_tolerance_m >= per_tick_m / 2.0) return;
+  top.Fail("controller.reach_tolerance_m",
+           msgs::ShortestNumber(waypoints.reach_tolerance_m) + " m is less than half the " +
+               msgs::ShortestNumber(per_tick_m) +
+               " m the robot drives between two control ticks (controller.speed_m_s " +
+               msgs::ShortestNumber(waypoints.speed_m_s) + " m/s at controller.rate_hz " +
+               msgs::ShortestNumber(config.controller.rate_hz) + " Hz, a tick every " +
+               msgs::ShortestNumber(period_s) +
+               " s): a waypoint driven through at speed is missed, and the robot turns back or "
+               "circles it; give at least " +
+               msgs::ShortestNumber(per_tick_m / 2.0) + " m, a higher rate_hz or a lower speed");
+}
+
+// Seed 003's map fuses each IR scan with the sonar ring nearest in time, if one is at most
+// geometric_map.max_sonar_age_s away (eval/geometric_map/geometric_map_run.cc). With rates whose
+// samples do not meet (the defaults, IR 2 Hz and sonar 3.125 Hz, against 0.1 s) some scans have no
+// ring and were mapped from the IR alone under the name 'fused', exit 0: seed003_ir_panels gave
+// 485 sonar points where rings at the scanner's rate give 663, precision 0.69 instead of 0.64,
+// and at 0.5 Hz neither IR-invisible panel was mapped. The samples are found as SensorSchedule
+// takes them: the first physics step at or after k / rate_hz.
+void RequireASonarRingForEveryIrScan(const YamlFields& top, const ExperimentConfig& config) {
+  const GeometricMapConfig& map = config.geometric_map;
+  if (!map.given || map.options.fusion.source == perception::RangeSource::kIrOnly ||
+      !config.sensors.sonar || !config.sensors.ir_scanner) {
+    return;
+  }
+  const double step_s = config.physics.timestep_s;
+  const double ir_hz = config.sensors.ir_scanner->rate_hz;
+  const double sonar_hz = config.sensors.sonar->rate_hz;
+  const auto sample_time_s = [&](double k, double rate_hz) {
+    return std::ceil(k / rate_hz / step_s - 1e-9) * step_s;
+  };
+  // The pattern repeats with the rates' common period: the first 1e5 scans show every phase of
+  // any two rates a file would give.
+  const double scans = std::min(std::floor(config.duration_s * ir_hz + 1e-9) + 1.0, 1e5);
+  double missing = 0.0, first_missing_s = 0.0, farthest_s = 0.0;
+  for (double k = 0.0; k < scans; ++k) {
+    const double t = sample_time_s(k, ir_hz);
+    const double j = std::round(t * sonar_hz);
+    double nearest_s = std::numeric_limits<double>::infinity();
+    for (const double ring : {j - 1.0, j, j + 1.0}) {
+      if (ring < 0.0) continue;
+      const double ring_s = sample_time_s(ring, sonar_hz);
+      if (ring_s > config.duration_s + 1e-9) continue;
+      nearest_s = std::min(nearest_s, std::abs(ring_s - t));
+    }
+    farthest_s = std::max(farthest_s, nearest_s);
+    if (nearest_s <= map.max_sonar_age_s + 1e-9) continue;
+    if (missing == 0.0) first_missing_s = t;
+    ++missing;
+  }
+  if (missing == 0.0) return;
+  top.Fail("geometric_map.max_sonar_age_s",
+           msgs::ShortestNumber(map.max_sonar_age_s) + " s, but with sensors.sonar.rate_hz " +
+               msgs::ShortestNumber(sonar_hz) + " and sensors.ir_scanner.rate_hz " +
+               msgs::ShortestNumber(ir_hz) + ", " + msgs::ShortestNumber(missing) + " of " +
+               (scans < 1e5 ? "the " : "the first ") + msgs::ShortestNumber(scans) +
+               " IR scans (the first at t = " + msgs::ShortestNumber(first_missing_s) +
+               " s) have no sonar ring that close, and the map would take them without the "
+               "sonar: give the sonar the scanner's rate (or a whole multiple of it), or "
+               "max_sonar_age_s at least " +
+               msgs::ShortestNumber(std::round(farthest_s * 1e9) / 1e9) + " s");
+}
+
+// The simulated robot is built from its model's wheels, deviated by robot.deviation
+// (ExperimentRunner); robot.nominal is what its software believes. A nominal wheel radius or track
+// other than the model's was no robot the docs describe (E_d keeps the mean diameter nominal,
+// E_b = b_actual / b_nominal) and an odometry error no ratio recorded: square_hall with
+// robot.nominal.wheel_radius_m 0.5 on the P3-DX's 0.0975 m wheels drove the same 0.145 m while the
+// encoder odometry read 415 % drift, config.yaml saying deviation 1, 1, exit 0 (s50).
+void RequireTheModelsWheelGeometry(const YamlFields& top, const ExperimentConfig& config) {
+  const robot::DiffDriveSpec& model = FindRobot(config.robot).nominal;
+  const std::pair<const char*, std::pair<double, double>> lengths[] = {
+      {"wheel_radius_m", {config.nominal.wheel_radius_m, model.wheel_radius_m}},
+      {"track_m", {config.nominal.track_m, model.track_m}}};
+  for (const auto& [field, values] : lengths) {
+    const auto [given, built] = values;
+    if (std::abs(given - built) <= 1e-9 * built) continue;
+    top.Fail(std::string("robot.nominal.") + field,
+             msgs::ShortestNumber(given) + " m, but the '" + config.robot +
+                 "' is simulated with its model's " + msgs::ShortestNumber(built) +
+                 " m (robot.deviation's ratios are taken from it), so the odometry and "
+                 "controllers would be off by a factor " +
+                 msgs::ShortestNumber(given / built) +
+                 " that no figure records: give a build error with robot.deviation "
+                 "(wheel_diameter_ratio, track_ratio) and leave the nominal geometry out");
+  }
+}
+
 // An estimator's counter_modulus unwraps each encoder increment the short way round, which is
 // right only while a wheel turns at most half the modulus between two samples: with a counter of
 // 256 ticks (8 bits) read at 10 Hz, square_hall's 0.2 m/s drive wrapped every interval and the
@@ -377,6 +482,7 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   ReadOptions(robot.Child("nominal"), config.nominal);
   ReadOptions(robot.Child("deviation"), config.deviation);
   robot.Finish();
+  RequireTheModelsWheelGeometry(top, config);
 
   ReadOptions(top.Child("physics"), config.physics);
   // A run shorter than one step simulates nothing, and would report its figures (an ATE of 0 m)
@@ -411,6 +517,8 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   }
   ReadOptions(top.Child("output"), config.output);
   RequireRatesTheClockCanKeep(top, config);
+  RequireWaypointsAControlPeriodCanReach(top, config);
+  RequireASonarRingForEveryIrScan(top, config);
   RequireCountersThatHoldAnInterval(top, config);
   RequireEncodersTheOdometryCounts(top, config);
   top.Finish();

@@ -109,10 +109,17 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
           << "# Plywood simulated laser log, CARMEN FLASER format: x y theta is the true laser\n"
              "# pose, odom_x odom_y odom_theta the encoder-odometry laser pose.\n";
     } else {
-      // FLASER would spread these beams over 180 deg: ROBOTLASER1 says where they point.
-      log.out() << "# Plywood simulated laser log, CARMEN ROBOTLASER1 format (the fov is not 180\n"
-                   "# deg): laser_pose is the true laser pose, robot_pose the encoder-odometry\n"
-                   "# laser pose.\n";
+      // FLASER would spread these beams over 180 deg, or (400 / 401 beams) readers would take
+      // them for another fan: ROBOTLASER1 says where they point.
+      const std::size_t beams = record.laser.front().scan.ranges_m.size();
+      log.out()
+          << (beams == 400 || beams == 401
+                  ? "# Plywood simulated laser log, CARMEN ROBOTLASER1 format (FLASER readers "
+                    "take\n# 400 or 401 beams for a 100 deg fan): "
+                  : "# Plywood simulated laser log, CARMEN ROBOTLASER1 format (the fov is "
+                    "not 180\n# deg): ")
+          << "laser_pose is the true laser pose, robot_pose the encoder-odometry\n"
+             "# laser pose.\n";
     }
     if (!record.laser.empty()) {
       perception::WriteCarmenParam(log.out(), "front_laser_max",

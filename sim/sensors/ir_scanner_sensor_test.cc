@@ -137,6 +137,14 @@ TEST(IrScannerOptionsTest, ValidateNamesTheFieldAndCountsBeams) {
   ExpectInvalidField(IrScannerOptions{.fov_deg = 400.0}, "fov_deg");
   ExpectInvalidField(IrScannerOptions{.resolution_deg = 1.7}, "fov_deg");
   ExpectInvalidField(IrScannerOptions{.resolution_deg = 0.0}, "resolution_deg");
+  // s50: 1e-300 deg overflowed the beam count into a 0-beam scanner that ran (exit 0), 1e-9
+  // ended on "vector::reserve", 1e-6 never finished; 0.01 deg (36000 beams) is the finest.
+  for (const double fine : {1e-300, 1e-9, 1e-6, 0.009}) {
+    SCOPED_TRACE(fine);
+    ExpectInvalidField(IrScannerOptions{.resolution_deg = fine}, "resolution_deg");
+  }
+  EXPECT_NO_THROW(IrScannerOptions{.resolution_deg = 0.01}.Validate());
+  EXPECT_EQ(IrScannerOptions{.resolution_deg = 0.01}.BeamCount(), 36000);
   ExpectInvalidField(IrScannerOptions{.sigma_m = -0.1}, "sigma_m");
   ExpectInvalidField(IrScannerOptions{.outlier_probability = 2.0}, "outlier_probability");
   ExpectInvalidField(IrScannerOptions{.range_min_m = 3.5}, "range_min_m");
