@@ -296,9 +296,10 @@ void RequireASonarRingForEveryIrScan(const YamlFields& top, const ExperimentConf
 // The simulated robot is built from its model's wheels, deviated by robot.deviation
 // (ExperimentRunner); robot.nominal is what its software believes. A nominal wheel radius or track
 // other than the model's was no robot the docs describe (E_d keeps the mean diameter nominal,
-// E_b = b_actual / b_nominal) and an odometry error no ratio recorded: square_hall with
+// E_b = b_actual / b_nominal) and an odometry error no ratio recorded: a 3 s wheel script with
 // robot.nominal.wheel_radius_m 0.5 on the P3-DX's 0.0975 m wheels drove the same 0.145 m while the
-// encoder odometry read 415 % drift, config.yaml saying deviation 1, 1, exit 0 (s50).
+// encoder odometry read 415 % drift, config.yaml saying deviation 1, 1, exit 0 (s50). The catalog's
+// nominal is the model's (0.0975 / 0.33 m, 0.0762 / 0.32 m: models/*.xml's wheel bodies).
 void RequireTheModelsWheelGeometry(const YamlFields& top, const ExperimentConfig& config) {
   const robot::DiffDriveSpec& model = FindRobot(config.robot).nominal;
   const std::pair<const char*, std::pair<double, double>> lengths[] = {
