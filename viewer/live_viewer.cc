@@ -11,6 +11,7 @@
 #include "render/geom_footprint.h"
 #include "render/video_encoder.h"
 #include "viewer/scene_overlays.h"
+#include "viewer/x_connection_loss.h"
 
 #if PLYWOOD_HAS_IMGUI
 #include <imgui.h>
@@ -45,10 +46,13 @@ void LiveViewerOptions::Validate() const {
 
 LiveViewer::LiveViewer(const LiveViewerOptions& options) : options_(options) { options.Validate(); }
 
-LiveViewer::~LiveViewer() = default;
+LiveViewer::~LiveViewer() {
+  if (window_) SetViewedRun(ViewedRun::kNone);  // a later window (tests) starts afresh
+}
 
 void LiveViewer::Open(const sim::ExperimentRunner& runner) {
   if (window_) return;
+  SetViewedRun(ViewedRun::kRunning);  // the window shows before its constructor returns
   window_ = std::make_unique<ViewerWindow>(runner.scene().model(), options_.window);
   controls_ = std::make_unique<ViewControls>(runner.config().nominal, options_.teleop);
   controls_->set_paused(options_.start_paused);
@@ -168,6 +172,10 @@ void LiveViewer::RunFinished(const sim::ExperimentRunner& runner) {
   final_content_ = content_->Update(runner);
   final_panel_ = PanelText(runner);
   final_data_.reset(mj_copyData(nullptr, runner.scene().model(), runner.scene().data()));
+  // From here a lost window or X display no longer loses the run (x_connection_loss.h); the title
+  // tells the user (and the tests) that the results are safe.
+  SetViewedRun(ViewedRun::kFinished);
+  window_->SetTitle(options_.window.title + ": run finished");
   // Now, before the protocol writes its pictures through OSMesa (see ViewerWindow).
   if (!options_.final_screenshot.empty()) {
     WriteFinalScreenshot(options_.final_screenshot);
@@ -216,6 +224,7 @@ void LiveViewer::ShowUntilClosed() {
   if (!window_ || !final_data_ || closed_) return;
   while (!window_->CloseRequested()) {
     window_->PollEvents();
+    if (window_->Gone()) break;
     HandleRequests(base_body_id_);
     DrawFrame(final_data_.get(), final_content_, final_panel_);
     std::this_thread::sleep_for(std::chrono::milliseconds(16));

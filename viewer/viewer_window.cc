@@ -125,6 +125,7 @@ ViewerWindow::ViewerWindow(const mjModel* m, const WindowOptions& options)
   PinLoadedGlDrivers();  // loaded with the context; see gl_driver_pin.h for why it stays
   glfwSwapInterval(0);   // the run paces itself; vsync would cap "as fast as possible"
   glfwSetWindowUserPointer(g.window, this);
+  WatchXWindow(g.window);
 
   g.model.reset(mj_copyModel(nullptr, m));
   mjModel* copy = g.model.get();
@@ -228,6 +229,14 @@ ViewerWindow::ViewerWindow(const mjModel* m, const WindowOptions& options)
 }
 
 ViewerWindow::~ViewerWindow() {
+  // Xlib may not be used after a lost connection, and GL fails on a destroyed window
+  // (x_connection_loss.h): nothing is freed, the process is about to end.
+  if (Gone()) {
+    // Still reachable (not a leak to LeakSanitizer); volatile: the store is kept.
+    [[maybe_unused]] static Impl* volatile abandoned = nullptr;
+    abandoned = impl_.release();
+    return;
+  }
   Impl& g = *impl_;
   glfwMakeContextCurrent(g.window);
 #if PLYWOOD_HAS_IMGUI
@@ -250,18 +259,25 @@ void ViewerWindow::HandleKey(int key, int action, int mods) {
 
 void ViewerWindow::PollEvents() { glfwPollEvents(); }
 
-bool ViewerWindow::CloseRequested() const { return glfwWindowShouldClose(impl_->window); }
+bool ViewerWindow::CloseRequested() const { return Gone() || glfwWindowShouldClose(impl_->window); }
 
+bool ViewerWindow::Gone() const { return XLossSoFar() != XLoss::kNone; }
+
+void ViewerWindow::SetTitle(const std::string& title) {
+  if (!Gone()) glfwSetWindowTitle(impl_->window, title.c_str());
+}
+
+// A destroyed window's size is whatever GLFW's failed query left (uninitialised): 0 then.
 int ViewerWindow::framebuffer_width() const {
   int width = 0, height = 0;
   glfwGetFramebufferSize(impl_->window, &width, &height);
-  return width;
+  return Gone() ? 0 : width;
 }
 
 int ViewerWindow::framebuffer_height() const {
   int width = 0, height = 0;
   glfwGetFramebufferSize(impl_->window, &width, &height);
-  return height;
+  return Gone() ? 0 : height;
 }
 
 void ViewerWindow::SetPreset(CameraPreset preset, int follow_body_id) {
@@ -315,7 +331,9 @@ mjvScene& ViewerWindow::BeginFrame(mjData* d) {
 void ViewerWindow::Finish(const std::string& top_left, const std::string& bottom_right,
                           const std::function<void()>& panel) {
   Impl& g = *impl_;
+  // A window that went away meanwhile (x_connection_loss.h) is not drawn on again.
   const mjrRect viewport{0, 0, framebuffer_width(), framebuffer_height()};
+  if (Gone()) return;
   mjr_render(viewport, &g.scene, &g.con);
   DrawOverlayPrimitives(overlay_primitives_, g.con.lineWidth);
   // mjr_overlay takes two columns; each block line is "title\tvalue".
@@ -341,6 +359,7 @@ void ViewerWindow::Finish(const std::string& top_left, const std::string& bottom
   if (g.imgui && panel) {
     ImGui_ImplOpenGL2_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    if (Gone()) return;  // its window size is garbage: Dear ImGui would assert
     ImGui::NewFrame();
     panel();
     ImGui::Render();

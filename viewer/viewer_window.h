@@ -48,7 +48,12 @@ class ViewerWindow {
   void SetKeyHandler(KeyHandler handler) { key_handler_ = std::move(handler); }
   void HandleKey(int key, int action, int mods);
   void PollEvents();
+  // The close button was pressed, or the window is Gone().
   bool CloseRequested() const;
+  // The X connection broke or another client destroyed the window (viewer/x_connection_loss.h):
+  // nothing may be drawn any more.
+  bool Gone() const;
+  void SetTitle(const std::string& title);
 
   void SetPreset(CameraPreset preset, int follow_body_id = 0);
   CameraPreset preset() const { return preset_; }
