@@ -17,6 +17,7 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 #include <thread>
 
 #include "eval/sweep/sweep_csv.h"
@@ -171,32 +172,34 @@ SweepFolderLock::~SweepFolderLock() {
 
 namespace {
 
+// Whether `text` is a non-empty run of decimal digits (a PID, a seed).
+bool AllDigits(std::string_view text) {
+  return !text.empty() &&
+         std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+}
+
 // Whether `name` is `file` or a staged copy of it that a kill left (sim::WriteTextFile writes
 // FILE.partial-PID and renames it).
 bool IsFileOrItsStagedCopy(const std::string& name, const std::string& file) {
-  if (name == file) return true;
   const std::string prefix = file + ".partial-";
-  return name.size() > prefix.size() && name.starts_with(prefix) &&
-         std::all_of(name.begin() + static_cast<std::ptrdiff_t>(prefix.size()), name.end(),
-                     [](char c) { return c >= '0' && c <= '9'; });
+  return name == file ||
+         (name.starts_with(prefix) && AllDigits(std::string_view(name).substr(prefix.size())));
 }
 
 // Whether `worlds` holds only generator sets as a sweep writes them: FAMILY-seedS folders, and the
 // FAMILY-seedS.partial-PID a kill during the generation left.
 bool HoldsOnlyGeneratedSets(const fs::path& worlds) {
-  const auto digits = [](const std::string& text) {
-    return !text.empty() &&
-           std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
-  };
   for (const auto& entry : fs::directory_iterator(worlds)) {
     if (!entry.is_directory() || entry.is_symlink()) return false;
     std::string name = entry.path().filename().string();
     if (const auto staged = name.find(".partial-"); staged != std::string::npos) {
-      if (!digits(name.substr(staged + 9))) return false;
+      if (!AllDigits(std::string_view(name).substr(staged + 9))) return false;
       name.resize(staged);
     }
     const auto seed = name.rfind("-seed");
-    if (seed == std::string::npos || !digits(name.substr(seed + 5))) return false;
+    if (seed == std::string::npos || !AllDigits(std::string_view(name).substr(seed + 5))) {
+      return false;
+    }
     try {
       sim::worldgen::FindWorldFamily(name.substr(0, seed));
     } catch (const std::invalid_argument&) {

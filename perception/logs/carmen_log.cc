@@ -77,13 +77,6 @@ std::vector<double> ParseRanges(const std::vector<std::string>& t, std::size_t f
   return ranges;
 }
 
-// FLASER carries no angles: readers guess them from the beam count. For 400 and 401 beams they
-// disagree about the scanner itself: CARMEN's own reader (carmen_laser_guess_fov) takes a SICK in
-// its 100 deg mode at 0.25 deg, vasco and Plywood a 180 deg fan at 0.45 deg, so every beam but the
-// first points up to 80 deg apart between the two. 180 / 181 and 360 / 361 beams are 1 and 0.5 deg
-// steps over 180 deg in both, to within the last beam (179 or 180 deg), as the shipped logs are.
-bool FlaserCountIsAmbiguous(std::size_t n) { return n == 400 || n == 401; }
-
 void ParseFlaser(const std::vector<std::string>& t, CarmenLog* log) {
   if (t.size() < 2) throw std::runtime_error("FLASER: missing beam count");
   const std::size_t n = ParseCount(t[1], "FLASER beam count", 1);
@@ -348,6 +341,13 @@ CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptio
 }
 
 bool IsFlaserScan(const msgs::LaserScan& scan) { return FlaserCanCarry(scan); }
+
+// FLASER carries no angles: readers guess them from the beam count. For 400 and 401 beams they
+// disagree about the scanner itself: CARMEN's own reader (carmen_laser_guess_fov) takes a SICK in
+// its 100 deg mode at 0.25 deg, vasco and Plywood a 180 deg fan at 0.45 deg, so every beam but the
+// first points up to 80 deg apart between the two. 180 / 181 and 360 / 361 beams are 1 and 0.5 deg
+// steps over 180 deg in both, to within the last beam (179 or 180 deg), as the shipped logs are.
+bool FlaserCountIsAmbiguous(std::size_t beams) { return beams == 400 || beams == 401; }
 
 void WriteCarmenLaser(std::ostream& out, const CarmenLaserRecord& record) {
   // The line is built in one buffer and written once. std::to_chars with a precision formats

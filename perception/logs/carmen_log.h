@@ -55,6 +55,11 @@ void WriteCarmenLaser(std::ostream& out, const CarmenLaserRecord& record);
 // True when WriteCarmenLaser writes `scan` as FLASER.
 bool IsFlaserScan(const msgs::LaserScan& scan);
 
+// True for the FLASER beam counts readers take for different fans (400 / 401 beams: CARMEN's own
+// reader a 100 deg scan at 0.25 deg, others 180 deg at 0.45 deg): ReadCarmenLog refuses such
+// lines, WriteCarmenLaser writes such scans as ROBOTLASER1.
+bool FlaserCountIsAmbiguous(std::size_t beams);
+
 // Writes a PARAM line.
 void WriteCarmenParam(std::ostream& out, const std::string& name, const std::string& value);
 

@@ -215,6 +215,12 @@ void RequireRatesTheClockCanKeep(const YamlFields& top, const ExperimentConfig& 
   require("output.trajectory_rate_hz", config.output.trajectory_rate_hz);
 }
 
+// The time of the physics step that takes sample k of a `rate_hz` schedule: the first step at or
+// after k / rate_hz (sim::SensorSchedule; the controller ticks alike).
+double SampleStepTimeS(double k, double rate_hz, double step_s) {
+  return std::ceil(k / rate_hz / step_s - 1e-9) * step_s;
+}
+
 // A waypoint is passed when the pose the controller sees at one of its ticks is within
 // reach_tolerance_m of it; at speed_m_s those poses lie speed * period apart along the path, so
 // only a tolerance of at least half that is sure to catch a waypoint driven through. Below it the
@@ -227,7 +233,7 @@ void RequireWaypointsAControlPeriodCanReach(const YamlFields& top, const Experim
   if (config.controller.type != "waypoints") return;
   const robot::WaypointOptions& waypoints = config.controller.waypoints;
   const double step_s = config.physics.timestep_s;
-  const double period_s = std::ceil(1.0 / (config.controller.rate_hz * step_s) - 1e-9) * step_s;
+  const double period_s = SampleStepTimeS(1.0, config.controller.rate_hz, step_s);
   const double per_tick_m = waypoints.speed_m_s * period_s;
   if (waypoints.reach_tolerance_m >= per_tick_m / 2.0) return;
   top.Fail("controller.reach_tolerance_m",
@@ -258,20 +264,17 @@ void RequireASonarRingForEveryIrScan(const YamlFields& top, const ExperimentConf
   const double step_s = config.physics.timestep_s;
   const double ir_hz = config.sensors.ir_scanner->rate_hz;
   const double sonar_hz = config.sensors.sonar->rate_hz;
-  const auto sample_time_s = [&](double k, double rate_hz) {
-    return std::ceil(k / rate_hz / step_s - 1e-9) * step_s;
-  };
   // The pattern repeats with the rates' common period: the first 1e5 scans show every phase of
   // any two rates a file would give.
   const double scans = std::min(std::floor(config.duration_s * ir_hz + 1e-9) + 1.0, 1e5);
   double missing = 0.0, first_missing_s = 0.0, farthest_s = 0.0;
   for (double k = 0.0; k < scans; ++k) {
-    const double t = sample_time_s(k, ir_hz);
+    const double t = SampleStepTimeS(k, ir_hz, step_s);
     const double j = std::round(t * sonar_hz);
     double nearest_s = std::numeric_limits<double>::infinity();
     for (const double ring : {j - 1.0, j, j + 1.0}) {
       if (ring < 0.0) continue;
-      const double ring_s = sample_time_s(ring, sonar_hz);
+      const double ring_s = SampleStepTimeS(ring, sonar_hz, step_s);
       if (ring_s > config.duration_s + 1e-9) continue;
       nearest_s = std::min(nearest_s, std::abs(ring_s - t));
     }

@@ -111,9 +111,8 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
     } else {
       // FLASER would spread these beams over 180 deg, or (400 / 401 beams) readers would take
       // them for another fan: ROBOTLASER1 says where they point.
-      const std::size_t beams = record.laser.front().scan.ranges_m.size();
       log.out()
-          << (beams == 400 || beams == 401
+          << (perception::FlaserCountIsAmbiguous(record.laser.front().scan.ranges_m.size())
                   ? "# Plywood simulated laser log, CARMEN ROBOTLASER1 format (FLASER readers "
                     "take\n# 400 or 401 beams for a 100 deg fan): "
                   : "# Plywood simulated laser log, CARMEN ROBOTLASER1 format (the fov is "
