@@ -11,6 +11,9 @@ if(PLYWOOD_SANITIZE OR PLYWOOD_FUZZ)
   # -O1, as the sanitizers' own documentation advises: the reports keep their line numbers and the
   # instrumented build (all of it again in CI) compiles in about half the time of -O2.
   add_compile_options(-O1)
+  # Tests whose Monte-Carlo draws or real-log replays only need their code paths covered here
+  # draw fewer of them (their figures are the plain build's to check).
+  add_compile_definitions(PLYWOOD_SANITIZED_BUILD)
   if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
     # GCC 12 with -fsanitize=address reports -Wmaybe-uninitialized inside libstdc++'s std::function
     # as std::regex uses it (a false positive of the instrumented code; the plain build keeps the

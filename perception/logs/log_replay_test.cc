@@ -24,16 +24,29 @@ struct LogCase {
 
 class RealLogTest : public ::testing::TestWithParam<LogCase> {};
 
+#ifdef PLYWOOD_SANITIZED_BUILD
+// Under ASan + UBSan the replay runs ~15x slower (freiburg-079 alone took 20-76 s of CI's
+// sanitized pass): there a log's first scans cover the code paths, and the figures over the whole
+// log, issue 4's floors, are the plain build's to check.
+constexpr std::size_t kScansReplayed = 1000;
+#else
+constexpr std::size_t kScansReplayed = 0;  // all
+#endif
+
 TEST_P(RealLogTest, SplitAndMergeExplainsTheRealScans) {
   const auto path = CarmenDir() / GetParam().file;
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "real log not found: " << path;
-  const CarmenLog log = ReadCarmenLog(path);
+  CarmenLog log = ReadCarmenLog(path);
   ASSERT_GT(log.lasers.size(), 100u);
+  const bool whole_log = kScansReplayed == 0 || log.lasers.size() <= kScansReplayed;
+  if (!whole_log) log.lasers.resize(kScansReplayed);
   const auto extractor = MakeLineExtractor("split_and_merge");
   const ReplayResult result = ReplayLog(log, *extractor, false);
-  EXPECT_GE(result.rays.Fraction(), GetParam().min_explained) << GetParam().file;
-  EXPECT_GE(result.RaysPerLine(), 15.0) << GetParam().file;
-  EXPECT_LT(result.rays.RmsM(), 0.03) << GetParam().file;
+  if (whole_log) {
+    EXPECT_GE(result.rays.Fraction(), GetParam().min_explained) << GetParam().file;
+    EXPECT_GE(result.RaysPerLine(), 15.0) << GetParam().file;
+    EXPECT_LT(result.rays.RmsM(), 0.03) << GetParam().file;
+  }
   // The per-scan figures (scans.csv) add up to the totals.
   ASSERT_EQ(static_cast<long>(result.per_scan.size()), result.scans);
   long rays = 0, explained = 0, lines = 0;
