@@ -47,10 +47,9 @@ bool ParseCarmenLine(const std::string& line, CarmenLog* log);
 
 // Writes one laser line for `record` (timestamps from record.scan.time_s, hostname "plywood"):
 // FLASER when the scan starts at -90 deg at FlaserAngleIncrementRad's step (all FLASER can say),
-// else ROBOTLASER1, which
-// carries the start angle and spacing (the laser pose as its laser pose, X_WR_odom as its robot
-// pose). Ranges at or beyond range_max_m are written as range_max_m, as a real LMS 200 reports
-// them.
+// else ROBOTLASER1, which carries the start angle and spacing (the laser pose as its laser pose,
+// X_WR_odom as its robot pose). Ranges at or beyond range_max_m are written as range_max_m, as a
+// real LMS 200 reports them.
 void WriteCarmenLaser(std::ostream& out, const CarmenLaserRecord& record);
 
 // True when WriteCarmenLaser writes `scan` as FLASER.
