@@ -1749,6 +1749,34 @@ TEST_F(ReliabilityTest, AReachToleranceBelowOneControlTickIsRefused) {
   EXPECT_EQ(run.exit_code, 0) << run.err;
 }
 
+// s51: a waypoint inside a box of the world (here seed001_room_4's obstacle, 0.57 m square at
+// the origin) was driven at to the end of the run: the Magellan pushed against the box, exit 0,
+// with the figures of that. Refused naming the waypoint and the geom; one beside the box runs.
+TEST_F(ReliabilityTest, AWaypointInsideAWorldGeomIsRefused) {
+  const std::string experiment =
+      (testing::SourceRoot() / "experiments/magellan_room.yaml").string();
+  const fs::path dir = Dir();
+  const auto run = [&](const std::string& waypoints) {
+    return RunPlywood("run " + experiment + " --quiet --force --out " + (dir / "out").string() +
+                          " --set duration_s=0.5 --set 'controller.waypoints=" + waypoints + "'",
+                      dir);
+  };
+  const CliResult inside = run("[[-1.0, -0.9], [0.1, 0.2], [1.0, 0.9]]");
+  EXPECT_EQ(inside.exit_code, 2) << inside.err;
+  EXPECT_NE(inside.err.find("magellan_room.yaml: controller.waypoints[1]: (0.1, 0.2) lies inside "
+                            "geom 'obstacle_0' of the world in seed001_room_4.xml: the robot can "
+                            "never reach it"),
+            std::string::npos)
+      << inside.err;
+  const CliResult wall = run("[[1.759, 0.5]]");
+  EXPECT_EQ(wall.exit_code, 2) << wall.err;
+  EXPECT_NE(wall.err.find("controller.waypoints[0]: (1.759, 0.5) lies inside geom 'wall_1'"),
+            std::string::npos)
+      << wall.err;
+  const CliResult beside = run("[[-1.0, -0.9], [0.5, 0.2]]");
+  EXPECT_EQ(beside.exit_code, 0) << beside.err;
+}
+
 // A world file named with what XML quotes: `Tom & Jerry "hall" <2>.xml` was refused as "does not
 // compile with robot ...: XML parse error ... include" (the composed scene wrote the name into its
 // <include> unquoted), though the world itself was sound; `h&amp;all.xml` was read as `h&all.xml`

@@ -622,13 +622,23 @@ TEST(SweepCliTest, ASweepRefusedOrKilledWhileItIsExpandedRunsIntoTheSameOut) {
   // manifest file, no sweep.yaml.
   const fs::path killed = dir / "killed";
   WriteFile(killed / "sweep.lock", "");
-  fs::create_directories(killed / "worlds" / "room-seed3.partial-4242");
+  // (PID 999999999 is above any pid_max: no process has it.)
+  const fs::path half_set = killed / "worlds" / "room-seed3.partial-999999999";
+  fs::create_directories(half_set);
   fs::copy_file(dir / "out" / "worlds" / "room-seed3" / "room_s3_00000.xml",
-                killed / "worlds" / "room-seed3.partial-4242" / "room_s3_00000.xml");
+                half_set / "room_s3_00000.xml");
   WriteFile(killed / "sweep.json.partial-4242", "{\"name\": ");
+  // s51: a set staged by a process still alive (here this test's) is another sweep's at work.
+  const fs::path live_set = killed / "worlds" / ("room-seed3.partial-" + std::to_string(getpid()));
+  fs::create_directories(live_set);
   const auto resumed = sweep_into(killed);
   EXPECT_EQ(resumed.exit_code, 0) << resumed.err;
   EXPECT_EQ(Slurp(killed / "results.csv"), Slurp(dir / "out" / "results.csv"));
+  // s51: the half set the kill left was never removed (resumes stage under their own PID).
+  EXPECT_FALSE(fs::exists(half_set));
+  EXPECT_TRUE(fs::is_directory(live_set));
+  EXPECT_EQ(Slurp(killed / "worlds" / "room-seed3" / "room_s3_00001.xml"),
+            Slurp(dir / "out" / "worlds" / "room-seed3" / "room_s3_00001.xml"));
 
   // A user's own file in worlds/ is not the sweep's: the folder is still refused.
   const fs::path mine = dir / "mine";

@@ -68,6 +68,29 @@ TEST(SonarNetTrainingTest, AFailedSaveLeavesTheEarlierWeightsAsTheyWere) {
   for (const auto& entry : fs::directory_iterator(dir)) EXPECT_EQ(entry.path(), out);
 }
 
+// s51: one held-out room at one pose (seed 1) gave 196 cells, all free; the report scored the
+// net, the cone model and the constant base rate on them (the net and the constant both accuracy
+// 1.0000), exit 0. A set of one class is refused naming its flag, before the training and before
+// any weights are written.
+TEST(SonarNetTrainingTest, ASetOfOneClassIsRefusedNamingItsFlag) {
+  const fs::path dir = testing::MakeTempDir("sonar_net_training_one_class");
+  SonarNetTrainingOptions options = Tiny(dir / "net.txt");
+  options.rooms = 1;
+  options.test_rooms = 1;
+  options.poses = 1;
+  options.train.seed = 1;
+  std::string error = "no error";
+  try {
+    TrainSonarNet(options);
+  } catch (const std::invalid_argument& e) {
+    error = e.what();
+  }
+  EXPECT_EQ(error.rfind("train: --test-rooms: the 196 cells of 1 room x 1 pose are all free", 0),
+            0u)
+      << error;
+  EXPECT_FALSE(fs::exists(dir / "net.txt"));
+}
+
 TEST(SonarNetTrainingTest, SameOptionsSameWeightsAndScoresOnHeldOutRooms) {
   const fs::path dir = testing::MakeTempDir("sonar_net_training_same");
   int data_calls = 0;

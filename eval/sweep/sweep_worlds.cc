@@ -1,8 +1,10 @@
 #include "eval/sweep/sweep_worlds.h"
 
+#include <signal.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
@@ -38,6 +40,25 @@ std::string FirstDifferentFile(const fs::path& fresh, const fs::path& kept) {
   return "";
 }
 
+// Removes the FAMILY-seedS.partial-PID folders beside `dir` whose process is gone: a sweep killed
+// while it generated the set leaves one, and the expansions after it, which stage under their own
+// PID, left it there for good (s51: 32 worlds beside the whole set after a resume). A PID still
+// alive is another sweep's expansion at work and is left alone.
+void RemoveStaleStagedSets(const fs::path& dir) {
+  const std::string prefix = dir.filename().string() + ".partial-";
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(dir.parent_path(), error)) {
+    const std::string name = entry.path().filename().string();
+    const std::string digits = name.substr(std::min(name.size(), prefix.size()));
+    if (!name.starts_with(prefix) || digits.empty() || digits.size() > 9 ||
+        !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+      continue;
+    }
+    const pid_t pid = static_cast<pid_t>(std::stol(digits));
+    if (pid != getpid() && kill(pid, 0) != 0 && errno == ESRCH) fs::remove_all(entry.path());
+  }
+}
+
 // The generator's worlds of one family, written once under OUT/worlds/FAMILY-seedS (into a
 // temporary folder renamed at the end, so a killed sweep never leaves half a set). World i does not
 // depend on the count, so a larger count only adds worlds. A set already there is made again and
@@ -57,6 +78,7 @@ std::vector<SweepWorld> Generated(const SweepSpec& spec, const GeneratedWorlds& 
   {
     const int kept_rows = IndexRows(dir / "index.csv");
     const fs::path partial = dir.string() + ".partial-" + std::to_string(getpid());
+    RemoveStaleStagedSets(dir);
     fs::remove_all(partial);
     sim::worldgen::GenerateWorldsOptions options;
     options.family = generated.family;

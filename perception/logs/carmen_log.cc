@@ -105,7 +105,7 @@ void ParseFlaser(const std::vector<std::string>& t, CarmenLog* log) {
   record.scan.time_s = ParseNumber(t[p + 6], "FLASER ipc_timestamp");
   ParseNumber(t[p + 8], "FLASER logger_timestamp");
   record.scan.angle_min_rad = -std::numbers::pi / 2.0;
-  record.scan.angle_increment_rad = n > 1 ? std::numbers::pi / static_cast<double>(n - 1) : 0.0;
+  record.scan.angle_increment_rad = FlaserAngleIncrementRad(n);
   log->lasers.push_back(std::move(record));
 }
 
@@ -175,8 +175,7 @@ bool FlaserCanCarry(const msgs::LaserScan& scan) {
   if (n < 2 || FlaserCountIsAmbiguous(n)) return false;
   constexpr double kTolerance = 1e-9;
   return std::abs(scan.angle_min_rad + std::numbers::pi / 2.0) < kTolerance &&
-         std::abs(scan.angle_increment_rad - std::numbers::pi / static_cast<double>(n - 1)) <
-             kTolerance;
+         std::abs(scan.angle_increment_rad - FlaserAngleIncrementRad(n)) < kTolerance;
 }
 
 // Line-oriented reader over plain or gzip files (zlib reads both transparently).
@@ -346,8 +345,19 @@ bool IsFlaserScan(const msgs::LaserScan& scan) { return FlaserCanCarry(scan); }
 // disagree about the scanner itself: CARMEN's own reader (carmen_laser_guess_fov) takes a SICK in
 // its 100 deg mode at 0.25 deg, vasco and Plywood a 180 deg fan at 0.45 deg, so every beam but the
 // first points up to 80 deg apart between the two. 180 / 181 and 360 / 361 beams are 1 and 0.5 deg
-// steps over 180 deg in both, to within the last beam (179 or 180 deg), as the shipped logs are.
+// steps from -90 deg in both (FlaserAngleIncrementRad).
 bool FlaserCountIsAmbiguous(std::size_t beams) { return beams == 400 || beams == 401; }
+
+// CARMEN's FLASER writers took 180 and 360 beams from a SICK's 181 and 361 by dropping the last
+// one (carmen_laser_guess_fov: "last beam ignored"), so those counts step 1 and 0.5 deg from -90
+// deg and end at 89 and 89.5 deg; every other count spans -90..+90 deg. Spreading 180 beams over
+// 180 deg, as Plywood did to stop 50, put the last beam 1 deg off: the corrected intel, aces and
+// freiburg-079 logs' scans agree better with each other (nearest returns of the next ten scans,
+// at their corrected poses) at CARMEN's steps.
+double FlaserAngleIncrementRad(std::size_t beams) {
+  if (beams == 180 || beams == 360) return std::numbers::pi / static_cast<double>(beams);
+  return beams > 1 ? std::numbers::pi / static_cast<double>(beams - 1) : 0.0;
+}
 
 void WriteCarmenLaser(std::ostream& out, const CarmenLaserRecord& record) {
   // The line is built in one buffer and written once. std::to_chars with a precision formats

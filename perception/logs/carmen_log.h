@@ -46,10 +46,10 @@ CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptio
 bool ParseCarmenLine(const std::string& line, CarmenLog* log);
 
 // Writes one laser line for `record` (timestamps from record.scan.time_s, hostname "plywood"):
-// FLASER when the scan spans -90..+90 deg in n beams (all FLASER can say), else ROBOTLASER1, which
-// carries the start angle and spacing (the laser pose as its laser pose, X_WR_odom as its robot
-// pose). Ranges at or beyond range_max_m are written as range_max_m, as a real LMS 200 reports
-// them.
+// FLASER when the scan starts at -90 deg at FlaserAngleIncrementRad's step (all FLASER can say),
+// else ROBOTLASER1, which carries the start angle and spacing (the laser pose as its laser pose,
+// X_WR_odom as its robot pose). Ranges at or beyond range_max_m are written as range_max_m, as a
+// real LMS 200 reports them.
 void WriteCarmenLaser(std::ostream& out, const CarmenLaserRecord& record);
 
 // True when WriteCarmenLaser writes `scan` as FLASER.
@@ -59,6 +59,11 @@ bool IsFlaserScan(const msgs::LaserScan& scan);
 // reader a 100 deg scan at 0.25 deg, others 180 deg at 0.45 deg): ReadCarmenLog refuses such
 // lines, WriteCarmenLaser writes such scans as ROBOTLASER1.
 bool FlaserCountIsAmbiguous(std::size_t beams);
+
+// The spacing CARMEN's readers give a FLASER line of `beams` beams, from -90 deg: 1 and 0.5 deg
+// for 180 and 360 beams (a SICK's 181 and 361 with the last dropped), 180 / (beams - 1) deg
+// otherwise. ReadCarmenLog places the beams so and WriteCarmenLaser writes FLASER only for it.
+double FlaserAngleIncrementRad(std::size_t beams);
 
 // Writes a PARAM line.
 void WriteCarmenParam(std::ostream& out, const std::string& name, const std::string& value);

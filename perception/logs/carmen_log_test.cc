@@ -11,6 +11,7 @@
 #include <sstream>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 #include "plywood_paths.h"
 
@@ -206,6 +207,45 @@ TEST(CarmenLogTest, AFlaserCountReadersTakeForAnotherFanIsRefused) {
     record.scan.angle_increment_rad = 180.0 * deg / static_cast<double>(n - 1);
     record.scan.ranges_m.assign(n, 2.0);
     EXPECT_TRUE(IsFlaserScan(record.scan)) << n;
+  }
+}
+
+// s51: CARMEN's writers made 180 and 360 beams of a SICK's 181 and 361 by dropping the last, and
+// its reader steps them 1 and 0.5 deg from -90 deg (to 89 and 89.5 deg). Plywood spread them over
+// 180 deg, the last beam 1 deg off (17 cm at 10 m), exit 0: the shipped intel / aces logs (180) and
+// freiburg-079 (360) were replayed so. Other counts keep 180 deg; the writer agrees with the
+// reader.
+TEST(CarmenLogTest, FlaserOf180Or360BeamsStepsAsCarmenDoes) {
+  const double deg = std::numbers::pi / 180.0;
+  const std::vector<std::pair<std::size_t, double>> counts = {{180, 89.0}, {360, 89.5}, {181, 90.0},
+                                                              {361, 90.0}, {541, 90.0}, {2, 90.0}};
+  for (const auto& [n, last_deg] : counts) {
+    SCOPED_TRACE(n);
+    std::string line = "FLASER " + std::to_string(n);
+    for (std::size_t i = 0; i < n; ++i) line += " 2.0";
+    line += " 0 0 0 0 0 0 1.0 host 1.0\n";
+    const CarmenLog log = ReadCarmenLog(WriteTemp("steps" + std::to_string(n) + ".log", line));
+    ASSERT_EQ(log.lasers.size(), 1u);
+    const msgs::LaserScan& scan = log.lasers[0].scan;
+    EXPECT_NEAR(scan.BeamAngleRad(0), -90.0 * deg, 1e-12);
+    EXPECT_NEAR(scan.BeamAngleRad(n - 1), last_deg * deg, 1e-12);
+    EXPECT_NEAR(FlaserAngleIncrementRad(n), scan.angle_increment_rad, 0.0);
+  }
+  // The writer: a 180-beam scan at 1 deg is FLASER and reads back as written; one spread over
+  // 180 deg is not what a FLASER reader would take, so it goes out as ROBOTLASER1.
+  CarmenLaserRecord record;
+  record.scan.angle_min_rad = -90.0 * deg;
+  record.scan.ranges_m.assign(180, 2.0);
+  record.scan.range_max_m = 8.0;
+  for (const double step : {1.0 * deg, 180.0 * deg / 179.0}) {
+    record.scan.angle_increment_rad = step;
+    std::ostringstream out;
+    WriteCarmenLaser(out, record);
+    EXPECT_EQ(IsFlaserScan(record.scan), step == 1.0 * deg);
+    EXPECT_EQ(out.str().rfind(step == 1.0 * deg ? "FLASER 180 " : "ROBOTLASER1 ", 0), 0u);
+    const CarmenLog log = ReadCarmenLog(WriteTemp("w180.log", out.str()));
+    ASSERT_EQ(log.lasers.size(), 1u);
+    EXPECT_NEAR(log.lasers[0].scan.BeamAngleRad(179), -90.0 * deg + 179.0 * step, 1e-9);
   }
 }
 

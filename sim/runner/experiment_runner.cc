@@ -205,6 +205,18 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
                          config.world_path.filename().string());
     }
   }
+  // A waypoint inside a wall, a box or a table leg is never reached: the robot pushed against it
+  // to the end of the run, exit 0, with the figures of that (s51).
+  if (config.controller.type == "waypoints") {
+    const auto& points = config.controller.waypoints.waypoints;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (const auto problem = PointInsideWorldGeom(*scene_, points[i].x_m, points[i].y_m)) {
+        throw ConfigError(config.source_file, "controller.waypoints[" + std::to_string(i) + "]",
+                          *problem + " in " + config.world_path.filename().string() +
+                              ": the robot can never reach it; move the waypoint into free space");
+      }
+    }
+  }
   // Controllers plan with robot.nominal's wheel speed limit; motors that clamp below it would drive
   // other speeds than commanded without a word (audit s47: 20 rad/s against the P3-DX's 12.3).
   if (const double motors = scene_->WheelMotorLimitRadS();
