@@ -172,7 +172,7 @@ SweepFolderLock::~SweepFolderLock() {
 
 namespace {
 
-// Whether `text` is a non-empty run of decimal digits (a PID, a seed).
+// Whether `text` is a non-empty run of decimal digits (a seed).
 bool AllDigits(std::string_view text) {
   return !text.empty() &&
          std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
@@ -181,9 +181,7 @@ bool AllDigits(std::string_view text) {
 // Whether `name` is `file` or a staged copy of it that a kill left (sim::WriteTextFile writes
 // FILE.partial-PID and renames it).
 bool IsFileOrItsStagedCopy(const std::string& name, const std::string& file) {
-  const std::string prefix = file + ".partial-";
-  return name == file ||
-         (name.starts_with(prefix) && AllDigits(std::string_view(name).substr(prefix.size())));
+  return name == file || sim::StagedCopyPid(name, file).has_value();
 }
 
 // Whether `worlds` holds only generator sets as a sweep writes them: FAMILY-seedS folders, and the
@@ -193,7 +191,7 @@ bool HoldsOnlyGeneratedSets(const fs::path& worlds) {
     if (!entry.is_directory() || entry.is_symlink()) return false;
     std::string name = entry.path().filename().string();
     if (const auto staged = name.find(".partial-"); staged != std::string::npos) {
-      if (!AllDigits(std::string_view(name).substr(staged + 9))) return false;
+      if (!sim::StagedCopyPid(name, std::string_view(name).substr(0, staged))) return false;
       name.resize(staged);
     }
     const auto seed = name.rfind("-seed");

@@ -45,16 +45,12 @@ std::string FirstDifferentFile(const fs::path& fresh, const fs::path& kept) {
 // PID, left it there for good (s51: 32 worlds beside the whole set after a resume). A PID still
 // alive is another sweep's expansion at work and is left alone.
 void RemoveStaleStagedSets(const fs::path& dir) {
-  const std::string prefix = dir.filename().string() + ".partial-";
+  const std::string set = dir.filename().string();
   std::error_code error;
   for (const auto& entry : fs::directory_iterator(dir.parent_path(), error)) {
-    const std::string name = entry.path().filename().string();
-    const std::string digits = name.substr(std::min(name.size(), prefix.size()));
-    if (!name.starts_with(prefix) || digits.empty() || digits.size() > 9 ||
-        !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; })) {
-      continue;
-    }
-    const pid_t pid = static_cast<pid_t>(std::stol(digits));
+    const auto staged_by = sim::StagedCopyPid(entry.path().filename().string(), set);
+    if (!staged_by) continue;
+    const pid_t pid = static_cast<pid_t>(*staged_by);
     if (pid != getpid() && kill(pid, 0) != 0 && errno == ESRCH) fs::remove_all(entry.path());
   }
 }
@@ -77,7 +73,7 @@ std::vector<SweepWorld> Generated(const SweepSpec& spec, const GeneratedWorlds& 
       out_dir / "worlds" / (generated.family + "-seed" + std::to_string(generated.seed));
   {
     const int kept_rows = IndexRows(dir / "index.csv");
-    const fs::path partial = dir.string() + ".partial-" + std::to_string(getpid());
+    const fs::path partial = sim::StagedTextFilePath(dir);
     RemoveStaleStagedSets(dir);
     fs::remove_all(partial);
     sim::worldgen::GenerateWorldsOptions options;

@@ -1,6 +1,7 @@
 #include "sim/runner/file_writer.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -83,6 +84,19 @@ TEST(FileWriterTest, AFailedWriteTextFileKeepsTheEarlierFile) {
 }
 
 // A device is written to, never replaced by a rename (as root that would replace /dev/null).
+// The sweep tells what a kill left (its staged copies, and staged world sets) from a user's own
+// files, and a dead writer's copy from a live one's, by the name StagedTextFilePath gives.
+TEST(FileWriterTest, StagedCopyPidReadsTheNamesStagedTextFilePathGives) {
+  const std::filesystem::path staged = StagedTextFilePath("/tmp/results.csv");
+  EXPECT_EQ(StagedCopyPid(staged.filename().string(), "results.csv"), static_cast<long>(getpid()));
+  EXPECT_EQ(StagedCopyPid("office-seed5.partial-675", "office-seed5"), 675);
+  for (const char* name : {"results.csv", "results.csv.partial-", "results.csv.partial-12a",
+                           "results.csv.partial-1234567890", "results.csv.old-12",
+                           "results.csvx.partial-12", "other.csv.partial-12"}) {
+    EXPECT_FALSE(StagedCopyPid(name, "results.csv").has_value()) << name;
+  }
+}
+
 TEST(FileWriterTest, WriteTextFileWritesIntoADeviceInPlace) {
   if (!fs::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
   EXPECT_NO_THROW(WriteTextFile("/dev/null", "x"));

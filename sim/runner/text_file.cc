@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -19,6 +20,20 @@ std::string ReadTextFile(const std::filesystem::path& path) {
 
 std::filesystem::path StagedTextFilePath(const std::filesystem::path& path) {
   return path.string() + ".partial-" + std::to_string(getpid());
+}
+
+std::optional<long> StagedCopyPid(std::string_view name, std::string_view of) {
+  constexpr std::string_view kInfix = ".partial-";
+  if (name.size() <= of.size() + kInfix.size() || !name.starts_with(of) ||
+      name.substr(of.size(), kInfix.size()) != kInfix) {
+    return std::nullopt;
+  }
+  const std::string_view digits = name.substr(of.size() + kInfix.size());
+  if (digits.size() > 9 ||
+      !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+    return std::nullopt;
+  }
+  return std::stol(std::string(digits));
 }
 
 void WriteTextFile(const std::filesystem::path& path, const std::string& text) {

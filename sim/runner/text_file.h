@@ -1,7 +1,9 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace plywood::sim {
 
@@ -13,6 +15,11 @@ std::string ReadTextFile(const std::filesystem::path& path);
 // "PATH.partial-PID" (the pid keeps two processes writing one file, Slurm tasks or a sweep and
 // --collect, apart).
 std::filesystem::path StagedTextFilePath(const std::filesystem::path& path);
+
+// The PID in `name` when it is the staged copy of `of` that StagedTextFilePath names
+// ("OF.partial-PID", PID up to 9 digits), else nullopt: what a kill left behind is told from a
+// user's own file by this, and a stale copy from a live writer's by the PID.
+std::optional<long> StagedCopyPid(std::string_view name, std::string_view of);
 
 // Writes `text` under a temporary name beside `path` and renames it into place, so a reader (a
 // resumed sweep, `--collect`, a person) never sees half a file.
