@@ -109,8 +109,8 @@ std::vector<std::string> WriteRunOutputs(const ExperimentConfig& config, const R
           << "# Plywood simulated laser log, CARMEN FLASER format: x y theta is the true laser\n"
              "# pose, odom_x odom_y odom_theta the encoder-odometry laser pose.\n";
     } else {
-      // FLASER would spread these beams over 180 deg, or (400 / 401 beams) readers would take
-      // them for another fan: ROBOTLASER1 says where they point.
+      // A FLASER reader would place these beams elsewhere (perception::FlaserAngleIncrementRad),
+      // or (400 / 401 beams) take them for another fan: ROBOTLASER1 says where they point.
       log.out()
           << (perception::FlaserCountIsAmbiguous(record.laser.front().scan.ranges_m.size())
                   ? "# Plywood simulated laser log, CARMEN ROBOTLASER1 format (FLASER readers "

@@ -419,27 +419,10 @@ std::optional<std::string> SpawnOutsideWorld(const Scene& scene) {
   return std::nullopt;
 }
 
-namespace {
-
-// The height the robot's geoms span at the spawn, [lo, hi] (their bounding spheres).
-std::pair<double, double> RobotHeightSpan(const Scene& scene) {
-  const mjModel* m = scene.model();
-  const mjData* d = scene.data();
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (int g = 0; g < m->ngeom; ++g) {
-    if (!IsOnTheRobot(scene, g)) continue;
-    lo = std::min(lo, d->geom_xpos[3 * g + 2] - m->geom_rbound[g]);
-    hi = std::max(hi, d->geom_xpos[3 * g + 2] + m->geom_rbound[g]);
-  }
-  return {lo, hi};
-}
-
-}  // namespace
-
 std::optional<std::string> PointInsideWorldGeom(const Scene& scene, double x_m, double y_m) {
   const mjModel* m = scene.model();
   const mjData* d = scene.data();
-  const auto [robot_lo, robot_hi] = RobotHeightSpan(scene);
+  const double robot_top_m = RobotContactMasks(scene).top_m;
   for (int g = 0; g < m->ngeom; ++g) {
     const int type = m->geom_type[g];
     if (!IsStaticWorldGeom(scene, g) || (type != mjGEOM_BOX && type != mjGEOM_CYLINDER)) continue;
@@ -448,7 +431,7 @@ std::optional<std::string> PointInsideWorldGeom(const Scene& scene, double x_m, 
     const mjtNum* size = m->geom_size + 3 * g;
     if (std::abs(r[8]) < 1.0 - 1e-9) continue;  // tilted: its footprint is not its cross-section
     const double half_height = type == mjGEOM_BOX ? size[2] : size[1];
-    if (p[2] + half_height < robot_lo || p[2] - half_height > robot_hi) continue;  // over, under
+    if (p[2] + half_height < 0.0 || p[2] - half_height > robot_top_m) continue;  // over, under
     const double dx = x_m - p[0], dy = y_m - p[1];
     const double lx = r[0] * dx + r[3] * dy, ly = r[1] * dx + r[4] * dy;  // in the geom's frame
     const bool inside = type == mjGEOM_BOX ? std::abs(lx) < size[0] && std::abs(ly) < size[1]
