@@ -334,9 +334,11 @@ msgs::Pose2D Scene::SitePoseInRobot(int site_id) const {
 double Scene::SiteHeightM(int site_id) const { return model_->site_pos[3 * site_id + 2]; }
 
 Eigen::Isometry3d Scene::SitePoseInWorld(int site_id) const {
-  if (kinematics_stale_ && model_->site_bodyid[site_id] == base_body_) {
-    // The planar drive moved the base: its site from qpos as mj_kinematics would place it (a free
-    // joint's body frame is its qpos), without placing the rest of the model.
+  if (model_->site_bodyid[site_id] == base_body_) {
+    // The base's sites from qpos as mj_kinematics would place them (a free joint's body frame is
+    // its qpos), without placing the rest of the model: the state TruePose() reads. After mj_step
+    // site_xpos / site_xmat still describe the state before the integration, one step behind, so
+    // every scan was cast 10 ms before its stamp and the true pose logged with it.
     const mjtNum* q = data_->qpos + base_qpos_;
     mjtNum quat[4], site_quat[4], site_mat[9], offset[3];
     mju_copy4(quat, q + 3);
