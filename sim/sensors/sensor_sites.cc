@@ -14,6 +14,13 @@ SensorSite RequireSensorSite(const Scene& scene, const std::string& site_name,
     throw ConfigError(scene.robot_path().string(), site_name,
                       "no such site on the robot; " + sensor + " needs it");
   }
+  if (!scene.SiteFixedToBase(*id)) {
+    // A joint between the site and the base: its pose in the robot frame changes as it moves,
+    // and every scan would be placed with the pose it had when the model was built.
+    throw ConfigError(scene.robot_path().string(), site_name,
+                      "the site is not fixed to the robot's base body (a joint lies between); " +
+                          sensor + " needs a fixed mount");
+  }
   return {*id, scene.SitePoseInRobot(*id)};
 }
 

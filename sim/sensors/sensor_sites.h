@@ -8,14 +8,15 @@
 
 namespace plywood::sim {
 
-// Where a sensor is mounted: a site on the robot's base body.
+// Where a sensor is mounted: a site on the robot's base body or on a body welded to it.
 struct SensorSite {
   int id = -1;        // MuJoCo site id
   msgs::Pose2D X_RS;  // planar pose of the site S in the robot frame R
 };
 
 // Looks `site_name` up on the scene's robot; `sensor` names who needs it ("the laser").
-// @throws ConfigError "<robot file>: <site_name>: no such site on the robot; <sensor> needs it".
+// @throws ConfigError "<robot file>: <site_name>: no such site on the robot; <sensor> needs it",
+// or naming the joint-mounted site ("not fixed to the robot's base body").
 SensorSite RequireSensorSite(const Scene& scene, const std::string& site_name,
                              const std::string& sensor);
 

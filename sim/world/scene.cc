@@ -231,6 +231,7 @@ void Scene::PlaceRobot(const msgs::Pose2D& X_WR) {
   WithNearPairs([&] { mj_forward(model_.get(), data_.get()); });
   draw_only_stale_ = false;
   kinematics_stale_ = false;
+  bodies_behind_qpos_ = false;
 }
 
 void Scene::SetWheelSpeeds(const msgs::WheelSpeedCommand& command) {
@@ -262,6 +263,7 @@ void Scene::Step() {
       draw_only_stale_ = true;
     }
   });
+  bodies_behind_qpos_ = true;
 }
 
 void Scene::PlaceDrawOnlyGeoms() const {
@@ -321,22 +323,50 @@ std::optional<int> Scene::FindSite(const std::string& name) const {
   return id;
 }
 
-msgs::Pose2D Scene::SitePoseInRobot(int site_id) const {
-  // Sites that carry sensors sit on the base body, so site_pos/site_quat are already in the robot
-  // frame; yaw is the site's x axis heading in the horizontal plane.
-  const mjtNum* p = model_->site_pos + 3 * site_id;
-  const mjtNum* q = model_->site_quat + 4 * site_id;
-  const double yaw =
-      std::atan2(2.0 * (q[0] * q[3] + q[1] * q[2]), 1.0 - 2.0 * (q[2] * q[2] + q[3] * q[3]));
-  return {p[0], p[1], yaw};
+bool Scene::SiteFixedToBase(int site_id) const {
+  for (int body = model_->site_bodyid[site_id]; body != base_body_;
+       body = model_->body_parentid[body]) {
+    if (body == 0 || model_->body_jntnum[body] > 0) return false;  // the world, or a joint between
+  }
+  return true;
 }
 
-double Scene::SiteHeightM(int site_id) const { return model_->site_pos[3 * site_id + 2]; }
+void Scene::SiteInBaseFrame(int site_id, double pos[3], double quat[4]) const {
+  // The site's pose in its body, carried through the bodies welded between it and the base (a
+  // user robot's mast).
+  mju_copy3(pos, model_->site_pos + 3 * site_id);
+  mju_copy4(quat, model_->site_quat + 4 * site_id);
+  for (int body = model_->site_bodyid[site_id]; body != base_body_ && body > 0;
+       body = model_->body_parentid[body]) {
+    mjtNum rotated[3], composed[4];
+    mju_rotVecQuat(rotated, pos, model_->body_quat + 4 * body);
+    mju_add3(pos, rotated, model_->body_pos + 3 * body);
+    mju_mulQuat(composed, model_->body_quat + 4 * body, quat);
+    mju_copy4(quat, composed);
+  }
+}
+
+msgs::Pose2D Scene::SitePoseInRobot(int site_id) const {
+  mjtNum pos[3], quat[4];
+  SiteInBaseFrame(site_id, pos, quat);
+  // Yaw: the site's x axis heading in the horizontal plane.
+  const double yaw = std::atan2(2.0 * (quat[0] * quat[3] + quat[1] * quat[2]),
+                                1.0 - 2.0 * (quat[2] * quat[2] + quat[3] * quat[3]));
+  return {pos[0], pos[1], yaw};
+}
+
+double Scene::SiteHeightM(int site_id) const {
+  mjtNum pos[3], quat[4];
+  SiteInBaseFrame(site_id, pos, quat);
+  return pos[2];
+}
 
 Eigen::Isometry3d Scene::SitePoseInWorld(int site_id) const {
-  if (kinematics_stale_ && model_->site_bodyid[site_id] == base_body_) {
-    // The planar drive moved the base: its site from qpos as mj_kinematics would place it (a free
-    // joint's body frame is its qpos), without placing the rest of the model.
+  if (model_->site_bodyid[site_id] == base_body_) {
+    // The base's sites from qpos as mj_kinematics would place them (a free joint's body frame is
+    // its qpos), without placing the rest of the model: the state TruePose() reads. After mj_step
+    // site_xpos / site_xmat still describe the state before the integration, one step behind, so
+    // every scan was cast 10 ms before its stamp and the true pose logged with it.
     const mjtNum* q = data_->qpos + base_qpos_;
     mjtNum quat[4], site_quat[4], site_mat[9], offset[3];
     mju_copy4(quat, q + 3);
@@ -348,6 +378,13 @@ Eigen::Isometry3d Scene::SitePoseInWorld(int site_id) const {
     X_WS.translation() = Eigen::Vector3d(q[0] + offset[0], q[1] + offset[1], q[2] + offset[2]);
     X_WS.linear() = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(site_mat);
     return X_WS;
+  }
+  if (bodies_behind_qpos_) {
+    // A site on another body (a user robot's pan unit, say) is placed with every body from the
+    // current qpos, once a step and only when one is read; physics is unchanged, since mj_step
+    // places the bodies afresh from qpos. The shipped robots keep all their sensors on the base.
+    kinematics_stale_ = true;
+    bodies_behind_qpos_ = false;
   }
   if (kinematics_stale_) PlaceDrawOnlyGeoms();
   // The step left the sites unplaced: this one where mj_step would have put it.

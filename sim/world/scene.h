@@ -103,8 +103,10 @@ class Scene {
   bool IsRobotGeom(int geom_id) const { return model_->geom_group[geom_id] == kRobotGeomGroup; }
   int base_body_id() const { return base_body_; }
 
-  // A site on the robot: its pose in the robot frame (planar part) and in the world (3-D).
+  // A site on the robot: its pose in the robot frame (planar part) and in the world (3-D). The
+  // robot-frame pose holds for a site on the base or on bodies welded to it (SiteFixedToBase).
   std::optional<int> FindSite(const std::string& name) const;
+  bool SiteFixedToBase(int site_id) const;
   msgs::Pose2D SitePoseInRobot(int site_id) const;
   double SiteHeightM(int site_id) const;
   Eigen::Isometry3d SitePoseInWorld(int site_id) const;
@@ -113,6 +115,8 @@ class Scene {
   const std::filesystem::path& robot_path() const { return options_.robot_mjcf; }
 
  private:
+  // The site's position and orientation in the base body's frame, through welded bodies.
+  void SiteInBaseFrame(int site_id, double pos[3], double quat[4]) const;
   void MakeNearContactPairs();
   void MakePlanarDrive();
   void PlaceDrawOnlyGeoms() const;
@@ -139,6 +143,8 @@ class Scene {
   mutable bool draw_only_stale_ = false;   // Step() skipped them (and the sites) since placed
   std::unique_ptr<PlanarDrive> planar_;    // DriveMode::kPlanar only
   mutable bool kinematics_stale_ = false;  // the planar drive moved the robot since mj_kinematics
+  // mj_step integrated qpos after placing the bodies: their xpos / xquat are one step behind.
+  mutable bool bodies_behind_qpos_ = false;
 };
 
 // The MJCF text that includes `world` and `robot` into one model (exposed for tests), with
