@@ -33,18 +33,24 @@ std::string Box(const std::string& name, double x, double y, double hx, double h
   return s.str();
 }
 
-// Plywood walls 18 mm thick with their inner faces on x = +-w/2, y = +-h/2; boxes 0.6 m tall.
-std::string RoomMjcf(const YAML::Node& room) {
-  const double w = room["room"][0].as<double>(), h = room["room"][1].as<double>();
+// A floor and plywood walls 18 mm thick with their inner faces on x = +-w/2, y = +-h/2.
+std::string FloorAndWalls(double w, double h) {
   const double t = 0.009;
   std::ostringstream s;
-  s << "<mujoco model=\"unseen_room\"><worldbody>\n"
-    << "<geom name=\"floor\" type=\"plane\" size=\"" << w / 2 + 0.5 << " " << h / 2 + 0.5
+  s << "<geom name=\"floor\" type=\"plane\" size=\"" << w / 2 + 0.5 << " " << h / 2 + 0.5
     << " 0.05\"/>\n"
     << Box("wall_0", 0, -h / 2 - t, w / 2 + 2 * t, t, 0.5)
     << Box("wall_1", w / 2 + t, 0, t, h / 2, 0.5)
     << Box("wall_2", 0, h / 2 + t, w / 2 + 2 * t, t, 0.5)
     << Box("wall_3", -w / 2 - t, 0, t, h / 2, 0.5);
+  return s.str();
+}
+
+// A room of the baseline file; boxes 0.6 m tall.
+std::string RoomMjcf(const YAML::Node& room) {
+  const double w = room["room"][0].as<double>(), h = room["room"][1].as<double>();
+  std::ostringstream s;
+  s << "<mujoco model=\"unseen_room\"><worldbody>\n" << FloorAndWalls(w, h);
   int i = 0;
   for (const auto& b : room["boxes"])
     s << Box("obstacle_" + std::to_string(i++), b[0].as<double>(), b[1].as<double>(),
@@ -90,17 +96,11 @@ TEST(SonarMapUnseenWorldsTest, MapErrorDoesNotWorsen) {
 // met at a slant: with the sensors in step the front check hears the north box's corner 0.19 m
 // beside the path and gives the move up (e 0.046 -> 0.082; docs/sonar_map.md, stop 52).
 std::string PartitionedRoomMjcf(double gap_m) {
-  const double w = 3.4, h = 3.0, t = 0.009, x = 0.3, centre_y = 0.3;
+  const double w = 3.4, h = 3.0, x = 0.3, centre_y = 0.3;
   const double lo = centre_y - gap_m / 2.0, hi = centre_y + gap_m / 2.0;
   std::ostringstream s;
   s << "<mujoco model=\"partitioned_room\"><worldbody>\n"
-    << "<geom name=\"floor\" type=\"plane\" size=\"" << w / 2 + 0.5 << " " << h / 2 + 0.5
-    << " 0.05\"/>\n"
-    << Box("wall_0", 0, -h / 2 - t, w / 2 + 2 * t, t, 0.5)
-    << Box("wall_1", w / 2 + t, 0, t, h / 2, 0.5)
-    << Box("wall_2", 0, h / 2 + t, w / 2 + 2 * t, t, 0.5)
-    << Box("wall_3", -w / 2 - t, 0, t, h / 2, 0.5)
-    << Box("obstacle_0", x, (lo - h / 2) / 2, 0.15, (lo + h / 2) / 2, 0.3)
+    << FloorAndWalls(w, h) << Box("obstacle_0", x, (lo - h / 2) / 2, 0.15, (lo + h / 2) / 2, 0.3)
     << Box("obstacle_1", x, (hi + h / 2) / 2, 0.15, (h / 2 - hi) / 2, 0.3)
     << "</worldbody></mujoco>\n";
   return s.str();
