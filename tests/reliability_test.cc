@@ -1777,6 +1777,35 @@ TEST_F(ReliabilityTest, AWaypointInsideAWorldGeomIsRefused) {
   EXPECT_EQ(beside.exit_code, 0) << beside.err;
 }
 
+// s52: a waypoint beyond every wall of the world was run: `default.yaml` 20 s with
+// `controller.waypoints=[[50,50]]` pressed the P3-DX into the office's west wall (102 bumper
+// contact samples, controller_finished 0, encoder drift 48 %), exit 0. Refused as a spawn there is:
+// outside the box of the world's walls; a point just inside it still runs.
+TEST_F(ReliabilityTest, AWaypointOutsideEveryRoomIsRefused) {
+  const std::string experiment = (testing::SourceRoot() / "experiments/default.yaml").string();
+  const fs::path dir = Dir();
+  const auto run = [&](const std::string& file, const std::string& waypoints) {
+    return RunPlywood("run " + file + " --quiet --force --out " + (dir / "out").string() +
+                          " --set duration_s=0.5 --set output.snapshot=false"
+                          " --set 'controller.waypoints=" +
+                          waypoints + "'",
+                      dir);
+  };
+  const CliResult office = run(experiment, "[[-5.05, 0], [50, 50]]");
+  ExpectOneLine(office, {"default.yaml: controller.waypoints[1]: (50, 50) is outside every room: "
+                         "the world's walls span x in [-8.018, 8.018], y in [-5.018, 5.018] in "
+                         "office.xml: the robot can never reach it"});
+  const fs::path hall =
+      WriteFile(dir / "hall.yaml",
+                HallExperiment(0.0, 0.0, "controller: {type: waypoints, waypoints: [[1, 0]]}\n"));
+  const CliResult beyond = run(hall.string(), "[[3.5, 0], [0, -4.5]]");
+  ExpectOneLine(beyond, {"hall.yaml: controller.waypoints[1]: (0, -4.5) is outside every room: "
+                         "the world's walls span x in [-4.018, 4.018], y in [-4.018, 4.018] in "
+                         "hall.xml"});
+  const CliResult inside = run(hall.string(), "[[3.5, 0], [0, -3.5]]");
+  EXPECT_EQ(inside.exit_code, 0) << inside.err;
+}
+
 // s52: square_path lays its corners out from the spawn, and a square of a side the world cannot
 // hold was run: square_hall.yaml with side_m 20 drove the P3-DX into the hall's east wall (60 s:
 // encoder drift 82 %, controller_finished 0), exit 0. Its corners are checked as waypoints are.
