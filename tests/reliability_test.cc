@@ -1700,7 +1700,8 @@ TEST_F(ReliabilityTest, AMapOfAWorldWithoutWallsIsRefusedNamingTheWorld) {
 // counter runs, as it did, with the figures of no wrap.
 TEST_F(ReliabilityTest, ACounterThatWrapsWithinOneEncoderIntervalIsRefused) {
   const std::string yaml =
-      HallExperiment(-2.0, -2.0, "controller: {type: square_path, steer_by: encoder}\n",
+      HallExperiment(-2.0, -2.0,
+                     "controller: {type: square_path, direction: ccw, steer_by: encoder}\n",
                      "{encoders: {}, gyro: {}}") +
       "odometry: {encoder: {}, ekf: {}}\n";
   for (const std::string estimator : {"encoder", "ekf"}) {

@@ -223,8 +223,9 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
   }
   // A square's corners are its waypoints: square_hall.yaml with side_m 20 drove the P3-DX into the
   // hall's east wall, encoder drift 82 %, controller_finished 0, exit 0 (s52). The controller lays
-  // them out from the spawn (its first estimate), corner 0 the spawn itself.
-  if (config.controller.type == "square_path") {
+  // them out from the spawn (its first estimate), corner 0 the spawn itself. The UMBmark protocol
+  // turns the spawn for its clockwise runs and walks its squares itself (s46).
+  if (config.controller.type == "square_path" && config.protocol == "single") {
     const robot::SquarePathOptions& square = config.controller.square_path;
     const double sign = square.direction == robot::SquareDirection::kCounterClockwise ? 1.0 : -1.0;
     const msgs::Pose2D start = scene_->TruePose();
