@@ -26,6 +26,7 @@
 #include "sim/runner/run_directory.h"
 
 #if PLYWOOD_HAS_VIEWER
+#include "viewer/display_probe.h"
 #include "viewer/live_viewer.h"
 #include "viewer/run_replay.h"
 #endif
@@ -153,10 +154,21 @@ viewer::Speed SpeedOf(const std::string& text) {
 void RequireDisplay() {
   const char* x11 = std::getenv("DISPLAY");
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
-  if ((x11 != nullptr && *x11 != '\0') || (wayland != nullptr && *wayland != '\0')) return;
-  throw UsageError(
-      "view: no display to open a window on (DISPLAY is not set): run it in a desktop session or "
-      "under xvfb-run; plywood run writes the same results without a window");
+  if ((x11 == nullptr || *x11 == '\0') && (wayland == nullptr || *wayland == '\0')) {
+    throw UsageError(
+        "view: no display to open a window on (DISPLAY is not set): run it in a desktop session "
+        "or under xvfb-run; plywood run writes the same results without a window");
+  }
+  // A DISPLAY that names no server (s52: ":99" with no X on it) ended the view on GLFW's line,
+  // exit 1, "a failure during a run", where nothing had run: the environment is the bad input.
+  if (const auto problem = viewer::DisplayProblem()) {
+    const std::string named = x11 != nullptr && *x11 != '\0'
+                                  ? "DISPLAY '" + std::string(x11) + "'"
+                                  : "WAYLAND_DISPLAY '" + std::string(wayland) + "'";
+    throw UsageError("view: cannot open a window on " + named + " (" + *problem +
+                     "): run it in a desktop session or under xvfb-run; plywood run writes the "
+                     "same results without a window");
+  }
 }
 
 int Replay(const ViewFlags& flags) {

@@ -31,9 +31,10 @@ using testing::Slurp;
 using testing::SourceRoot;
 using testing::WriteFile;
 
-// Six short runs of the default experiment in the hall (no snapshot: it would dominate the time).
+// Six short runs of the default experiment in the hall (no snapshot: it would dominate the time),
+// following the walls: the office tour's waypoints lie beyond the hall's walls (refused, s52).
 std::string SmallSweep(const std::string& extra = "") {
-  return "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
+  return "experiment: " + (SourceRoot() / "tests/data/sweep_default.yaml").string() +
          "\nseeds: [1, 2, 3]\nworlds: [" + (SourceRoot() / "worlds/hall.xml").string() +
          "]\nset:\n  duration_s: [3, 4]\n  output.snapshot: [false]\n"
          "metrics: [truth.distance_m]\n" +
@@ -104,10 +105,10 @@ TEST(SweepCliTest, AFailingCellLandsInFailuresAndTheRestCompletes) {
   const fs::path broken = WriteFile(
       dir / "broken.xml", "<mujoco><worldbody><geom type=\"pyramid\"/></worldbody></mujoco>");
   const fs::path sweep = WriteFile(
-      dir / "fail.yaml", "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
-                             "\nseeds: [1, 2]\n" + "worlds: [" +
-                             (SourceRoot() / "worlds/hall.xml").string() + ", " + broken.string() +
-                             "]\nset: {duration_s: [2], output.snapshot: [false]}\n");
+      dir / "fail.yaml",
+      "experiment: " + (SourceRoot() / "tests/data/sweep_default.yaml").string() +
+          "\nseeds: [1, 2]\n" + "worlds: [" + (SourceRoot() / "worlds/hall.xml").string() + ", " +
+          broken.string() + "]\nset: {duration_s: [2], output.snapshot: [false]}\n");
   const auto r = RunPlywood("sweep " + sweep.string() + " --out " + (dir / "out").string(), dir);
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_EQ(CountRunDirs(dir / "out"), 2);
@@ -296,7 +297,7 @@ TEST(SweepCliTest, KillNineAndResumeGivesTheSameResultsWithoutRedoingRuns) {
   // 12 runs: three kills, each at a random moment after at least one more run finished.
   const fs::path sweep =
       WriteFile(dir / "kill.yaml",
-                "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
+                "experiment: " + (SourceRoot() / "tests/data/sweep_default.yaml").string() +
                     "\nseeds: [1, 2, 3]\nworlds: [" + (SourceRoot() / "worlds/hall.xml").string() +
                     "]\nset:\n  duration_s: [20, 30, 40, 50]\n  output.snapshot: [false]\n");
   ASSERT_EQ(
@@ -602,9 +603,10 @@ TEST(SweepCliTest, ASweepRefusedForABadValueRunsIntoTheSameOutOnceCorrected) {
 // into a fresh folder; a folder with anything else in worlds/ is still refused.
 TEST(SweepCliTest, ASweepRefusedOrKilledWhileItIsExpandedRunsIntoTheSameOut) {
   const fs::path dir = MakeTempDir("SweepRefusedOrKilledWhileExpanded");
-  const std::string head = "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
-                           "\nseeds: [1]\nworlds: [{family: room, count: 2, seed: 3}]\nset:\n"
-                           "  output.snapshot: [false]\n";
+  const std::string head =
+      "experiment: " + (SourceRoot() / "tests/data/sweep_default.yaml").string() +
+      "\nseeds: [1]\nworlds: [{family: room, count: 2, seed: 3}]\nset:\n"
+      "  output.snapshot: [false]\n";
   const fs::path sweep = WriteFile(dir / "s.yaml", head + "  duration_s: [2, 2.0]\n");
   const auto sweep_into = [&](const fs::path& out) {
     return RunPlywood("sweep " + sweep.string() + " --out " + out.string() + " --quiet", dir);
@@ -663,7 +665,7 @@ TEST(SweepCliTest, AnEditedFileTheWorldIncludesRunsItsCellsAnew) {
   WriteFile(dir / "room.xml",
             "<mujoco model=\"room\">\n  <include file=\"walls.xml\"/>\n</mujoco>\n");
   const fs::path sweep = WriteFile(
-      dir / "s.yaml", "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
+      dir / "s.yaml", "experiment: " + (SourceRoot() / "tests/data/sweep_default.yaml").string() +
                           "\nseeds: [1]\nworlds: [room.xml]\nset:\n  duration_s: [1]\n"
                           "  output.snapshot: [false]\n");
   const fs::path out = dir / "out";
@@ -814,10 +816,11 @@ TEST(SweepCliTest, ResultsOfAnotherBuildOrOfChangedInputsAreNeverKept) {
   const fs::path dir = MakeTempDir("SweepStale");
   // The experiment is a copy, so the test can change it.
   const fs::path experiment =
-      WriteFile(dir / "default.yaml", Slurp(SourceRoot() / "experiments/default.yaml"));
+      WriteFile(dir / "default.yaml", Slurp(SourceRoot() / "tests/data/sweep_default.yaml"));
   std::string text = SmallSweep();
-  text.replace(text.find(SourceRoot().string() + "/experiments/default.yaml"),
-               (SourceRoot() / "experiments/default.yaml").string().size(), experiment.string());
+  text.replace(text.find(SourceRoot().string() + "/tests/data/sweep_default.yaml"),
+               (SourceRoot() / "tests/data/sweep_default.yaml").string().size(),
+               experiment.string());
   const fs::path sweep = WriteFile(dir / "small.yaml", text);
   const fs::path out = dir / "out";
   const std::string command = "sweep " + sweep.string() + " --out " + out.string();
@@ -918,7 +921,7 @@ TEST(SweepCliTest, ASecondSweepIntoARunningOnesDirectoryIsRefused) {
 TEST(SweepCliTest, GeneratedWorldsGiveTheSameResultsWhereverTheSweepFolderIs) {
   const fs::path dir = MakeTempDir("SweepMoved");
   const fs::path sweep = WriteFile(
-      dir / "gen.yaml", "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
+      dir / "gen.yaml", "experiment: " + (SourceRoot() / "tests/data/sweep_default.yaml").string() +
                             "\nseeds: [1]\nworlds: {family: room, count: 2, seed: 5}\n"
                             "set: {duration_s: [2], output.snapshot: [false]}\n");
   for (const char* out : {"a", "elsewhere/b"}) {
@@ -945,7 +948,7 @@ TEST(SweepCliTest, WorldPathsThatLookLikeYamlAreRunAsThemselves) {
   const fs::path dir = MakeTempDir("SweepYamlLikePaths");
   fs::copy_file(SourceRoot() / "worlds/hall.xml", dir / "room #2.xml");
   fs::copy_file(SourceRoot() / "worlds/seed000_room_1.xml", dir / "room");  // the wrong one
-  const std::string experiment = (SourceRoot() / "experiments/default.yaml").string();
+  const std::string experiment = (SourceRoot() / "tests/data/sweep_default.yaml").string();
   const std::string settings = "seeds: [1]\nset: {duration_s: [1], output.snapshot: [false]}\n";
   const fs::path files = WriteFile(
       dir / "files.yaml", "experiment: " + experiment + "\nworlds: ['room #2.xml']\n" + settings);
@@ -1237,11 +1240,12 @@ TEST(SweepCliTest, TwoWorldFilesOfOneNameAreSummarisedApart) {
   fs::create_directories(dir / "b");
   const fs::path a = WriteFile(dir / "a" / "room.xml", hall);
   const fs::path b = WriteFile(dir / "b" / "room.xml", hall + "<!-- the second room -->\n");
-  const fs::path sweep = WriteFile(
-      dir / "same.yaml", "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
-                             "\nseeds: [1]\nworlds: [" + a.string() + ", " + b.string() +
-                             "]\nset:\n  duration_s: [0.5]\n  output.snapshot: [false]\n"
-                             "metrics: [truth.distance_m]\ngroup_by: [world]\n");
+  const fs::path sweep =
+      WriteFile(dir / "same.yaml",
+                "experiment: " + (SourceRoot() / "tests/data/sweep_default.yaml").string() +
+                    "\nseeds: [1]\nworlds: [" + a.string() + ", " + b.string() +
+                    "]\nset:\n  duration_s: [0.5]\n  output.snapshot: [false]\n"
+                    "metrics: [truth.distance_m]\ngroup_by: [world]\n");
   const auto r =
       RunPlywood("sweep " + sweep.string() + " --out " + (dir / "out").string() + " --jobs 2", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -1338,7 +1342,7 @@ TEST(SweepCliTest, ACollectThatStopsPartWayLeavesNoOlderSummary) {
   const fs::path dir = MakeTempDir("SweepStaleSummary");
   const fs::path sweep =
       WriteFile(dir / "stale.yaml",
-                "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
+                "experiment: " + (SourceRoot() / "tests/data/sweep_default.yaml").string() +
                     "\nseeds: [1]\nworlds: [" + (SourceRoot() / "worlds/hall.xml").string() +
                     "]\nset:\n  duration_s: [0.5]\n  output.snapshot: [false]\n"
                     "metrics: [truth.distance_m]\n");

@@ -369,6 +369,13 @@ TEST_F(ViewCliTest, WithoutADisplayTheViewIsRefusedInOneLineBeforeAnythingRuns) 
       "view " + experiment + " --set duration_s=1 --out " + (dir / "live").string(), dir);
   const testing::CliResult bench = RunPlywood("view --bench", dir);
   const testing::CliResult bad = RunPlywood("view " + experiment + " --set duration_s=-1", dir);
+  // s52: a DISPLAY that names no X server ended the view on GLFW's line, exit 1 (a failure during
+  // a run), where nothing had run.
+  setenv("DISPLAY", ":4093", 1);
+  const testing::CliResult no_server = RunPlywood(
+      "view " + experiment + " --set duration_s=1 --out " + (dir / "no_server").string(), dir);
+  const testing::CliResult no_server_bench = RunPlywood("view --bench", dir);
+  unsetenv("DISPLAY");
   if (!display.empty()) setenv("DISPLAY", display.c_str(), 1);
   if (!wayland.empty()) setenv("WAYLAND_DISPLAY", wayland.c_str(), 1);
   for (const testing::CliResult* result : {&live, &bench}) {
@@ -379,6 +386,14 @@ TEST_F(ViewCliTest, WithoutADisplayTheViewIsRefusedInOneLineBeforeAnythingRuns) 
               "window\n");
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "live"));
+  for (const testing::CliResult* result : {&no_server, &no_server_bench}) {
+    EXPECT_EQ(result->exit_code, 2) << result->err;
+    EXPECT_EQ(result->err.rfind("plywood: view: cannot open a window on DISPLAY ':4093' (", 0), 0u)
+        << result->err;
+    EXPECT_NE(result->err.find("under xvfb-run"), std::string::npos) << result->err;
+    EXPECT_EQ(std::count(result->err.begin(), result->err.end(), '\n'), 1) << result->err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "no_server"));
   // A bad experiment is still named first.
   EXPECT_EQ(bad.exit_code, 2) << bad.err;
   EXPECT_NE(bad.err.find("duration_s: must be a finite number > 0"), std::string::npos) << bad.err;

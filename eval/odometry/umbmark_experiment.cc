@@ -64,6 +64,9 @@ void RequireFinishedSquare(const sim::ExperimentConfig& config, const std::strin
 void RequireSquaresThatFit(const sim::ExperimentConfig& config) {
   sim::ExperimentConfig single = config;
   single.protocol = "single";
+  // The probe only places the robot: idle, so the runner's corner check (a single run's, s52) does
+  // not refuse the squares before this walk names the leg that meets the world.
+  single.controller.type = "idle";
   sim::ExperimentRunner probe(single);  // its spawn is checked as the runs' will be
   sim::Scene& scene = probe.mutable_scene();
   const double side_m = config.controller.square_path.side_m;

@@ -205,15 +205,45 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
                          config.world_path.filename().string());
     }
   }
-  // A waypoint inside a wall, a box or a table leg is never reached: the robot pushed against it
-  // to the end of the run, exit 0, with the figures of that (s51).
+  // A waypoint inside a wall, a box or a table leg (s51) or beyond the world's walls (s52) is
+  // never reached: the robot pushed against a wall to the end of the run, exit 0, with the
+  // figures of that.
   if (config.controller.type == "waypoints") {
     const auto& points = config.controller.waypoints.waypoints;
     for (std::size_t i = 0; i < points.size(); ++i) {
-      if (const auto problem = PointInsideWorldGeom(*scene_, points[i].x_m, points[i].y_m)) {
-        throw ConfigError(config.source_file, "controller.waypoints[" + std::to_string(i) + "]",
-                          *problem + " in " + config.world_path.filename().string() +
-                              ": the robot can never reach it; move the waypoint into free space");
+      for (const auto& check : {&PointOutsideWorld, &PointInsideWorldGeom}) {
+        if (const auto problem = check(*scene_, points[i].x_m, points[i].y_m)) {
+          throw ConfigError(
+              config.source_file, "controller.waypoints[" + std::to_string(i) + "]",
+              *problem + " in " + config.world_path.filename().string() +
+                  ": the robot can never reach it; move the waypoint into free space");
+        }
+      }
+    }
+  }
+  // A square's corners are its waypoints: square_hall.yaml with side_m 20 drove the P3-DX into the
+  // hall's east wall, encoder drift 82 %, controller_finished 0, exit 0 (s52). The controller lays
+  // them out from the spawn (its first estimate), corner 0 the spawn itself. The UMBmark protocol
+  // turns the spawn for its clockwise runs and walks its squares itself (s46).
+  if (config.controller.type == "square_path" && config.protocol == "single") {
+    const robot::SquarePathOptions& square = config.controller.square_path;
+    const double sign = square.direction == robot::SquareDirection::kCounterClockwise ? 1.0 : -1.0;
+    const msgs::Pose2D start = scene_->TruePose();
+    static constexpr int kCornerX[4] = {0, 1, 1, 0};
+    static constexpr int kCornerY[4] = {0, 0, 1, 1};
+    for (int k = 1; k < 4; ++k) {
+      const msgs::Pose2D corner = start * msgs::Pose2D{kCornerX[k] * square.side_m,
+                                                       sign * kCornerY[k] * square.side_m, 0.0};
+      for (const auto& check : {&PointOutsideWorld, &PointInsideWorldGeom}) {
+        if (const auto problem = check(*scene_, corner.x_m, corner.y_m)) {
+          throw ConfigError(config.source_file, "controller.side_m",
+                            "the " + FormatNumber(square.side_m) + " m " +
+                                std::string(robot::ToString(square.direction)) +
+                                " square from the spawn: its corner " + std::to_string(k) + " " +
+                                *problem + " in " + config.world_path.filename().string() +
+                                ": the robot can never reach it; shorten side_m or move "
+                                "robot.spawn");
+        }
       }
     }
   }

@@ -387,7 +387,12 @@ std::optional<std::string> SpawnCollision(const Scene& scene) {
   return std::nullopt;
 }
 
-std::optional<std::string> SpawnOutsideWorld(const Scene& scene) {
+namespace {
+
+// Why (x_m, y_m) lies outside the horizontal bounding box of the world's static geometry (floor
+// excepted), or nullopt; "" as `what` names nothing but the point.
+std::optional<std::string> OutsideTheWalls(const Scene& scene, double x_m, double y_m,
+                                           const std::string& what) {
   const mjModel* m = scene.model();
   const mjData* d = scene.data();
   constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -408,15 +413,26 @@ std::optional<std::string> SpawnOutsideWorld(const Scene& scene) {
     }
   }
   if (!(lo[0] <= hi[0])) return std::nullopt;  // nothing but a floor
-  const msgs::Pose2D spawn = scene.TruePose();
-  const double xy[2] = {spawn.x_m, spawn.y_m};
+  const double xy[2] = {x_m, y_m};
   for (int axis = 0; axis < 2; ++axis) {
     if (!(xy[axis] >= lo[axis] && xy[axis] <= hi[axis])) {
-      return "the robot at " + At(spawn) + " is outside every room: the world's walls span x in [" +
-             Mm(lo[0]) + ", " + Mm(hi[0]) + "], y in [" + Mm(lo[1]) + ", " + Mm(hi[1]) + "]";
+      return what + "(" + msgs::ShortestNumber(x_m) + ", " + msgs::ShortestNumber(y_m) +
+             ") is outside every room: the world's walls span x in [" + Mm(lo[0]) + ", " +
+             Mm(hi[0]) + "], y in [" + Mm(lo[1]) + ", " + Mm(hi[1]) + "]";
     }
   }
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::string> SpawnOutsideWorld(const Scene& scene) {
+  const msgs::Pose2D spawn = scene.TruePose();
+  return OutsideTheWalls(scene, spawn.x_m, spawn.y_m, "the robot at ");
+}
+
+std::optional<std::string> PointOutsideWorld(const Scene& scene, double x_m, double y_m) {
+  return OutsideTheWalls(scene, x_m, y_m, "");
 }
 
 std::optional<std::string> PointInsideWorldGeom(const Scene& scene, double x_m, double y_m) {

@@ -89,6 +89,10 @@ std::optional<std::string> GeomTheGroundTruthCannotHold(const Scene& scene, doub
 // excepted): outside every room. A world of nothing but a floor has no outside.
 std::optional<std::string> SpawnOutsideWorld(const Scene& scene);
 
+// The same box for any point, "(x, y) is outside every room: ...", or nullopt: a waypoint there is
+// never reached (the robot presses into the wall facing it until the run ends).
+std::optional<std::string> PointOutsideWorld(const Scene& scene, double x_m, double y_m);
+
 // Why the robot's centre can never be at (x_m, y_m), or nullopt: the point lies inside an upright
 // static box or cylinder of the world (a wall, a box, a table leg) that reaches the height of the
 // robot's geoms. A waypoint there is never reached: the robot pushes against the geom to the end.
