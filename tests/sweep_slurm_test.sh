@@ -88,12 +88,14 @@ if [ "$state" != idle ]; then
 fi
 echo "slurm: cluster up ($cpus CPUs)"
 
-# Six short runs: the default experiment in the hall, two durations x three seeds.
+# Six short runs: the default experiment in the hall with the hall's own tour (the office's
+# waypoints lie beyond its walls: refused since s52), two durations x three seeds.
 cat >"$work/sweep.yaml" <<YAML
 experiment: $root/experiments/default.yaml
 seeds: [1, 2, 3]
 worlds: [$root/worlds/hall.xml]
 set:
+  controller.waypoints: ["[[2, -2], [2, 2], [-2, 2], [-2, -2]]"]
   duration_s: [3, 4]
   output.snapshot: [false]
 metrics: [truth.distance_m]
