@@ -5,22 +5,26 @@
 namespace plywood::viewer {
 namespace {
 
-std::string& ProbeError() {
+std::string& LastError() {
   static std::string message;
   return message;
 }
 
 }  // namespace
 
+const std::string& LastGlfwError() { return LastError(); }
+
+std::optional<std::string> StartGlfw() {
+  LastError().clear();
+  glfwSetErrorCallback([](int, const char* message) { LastError() = message; });
+  if (glfwInit() == GLFW_TRUE) return std::nullopt;
+  return LastError().empty() ? std::string("GLFW could not start") : LastError();
+}
+
 std::optional<std::string> DisplayProblem() {
-  ProbeError().clear();
-  GLFWerrorfun previous =
-      glfwSetErrorCallback([](int, const char* message) { ProbeError() = message; });
-  const bool started = glfwInit() == GLFW_TRUE;
-  if (started) glfwTerminate();  // the window starts GLFW again itself
-  glfwSetErrorCallback(previous);
-  if (started) return std::nullopt;
-  return ProbeError().empty() ? std::string("GLFW could not start") : ProbeError();
+  if (std::optional<std::string> problem = StartGlfw()) return problem;
+  glfwTerminate();  // the window starts GLFW again itself
+  return std::nullopt;
 }
 
 }  // namespace plywood::viewer

@@ -10,4 +10,10 @@ namespace plywood::viewer {
 // is refused as the bad environment it is rather than ending the view part way.
 std::optional<std::string> DisplayProblem();
 
+// Starts GLFW with an error callback that keeps its last message (GLFW has one global callback);
+// returns that message when glfwInit fails, else nullopt. LastGlfwError() then explains a failed
+// window, too.
+std::optional<std::string> StartGlfw();
+const std::string& LastGlfwError();
+
 }  // namespace plywood::viewer

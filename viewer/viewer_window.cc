@@ -3,6 +3,7 @@
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "render/top_down_renderer.h"
 #include "sim/world/mujoco_handles.h"
 #include "sim/world/scene.h"
+#include "viewer/display_probe.h"
 #include "viewer/gl_driver_pin.h"
 #include "viewer/x_connection_loss.h"
 
@@ -61,12 +63,6 @@ void DrawOverlayPrimitives(const OverlayPrimitives& overlays, float context_line
   glEnable(GL_LIGHTING);
 }
 
-// GLFW keeps one global error callback; its last message explains a failed glfwInit / window.
-std::string& LastGlfwError() {
-  static std::string message;
-  return message;
-}
-
 }  // namespace
 
 void WindowOptions::Validate() const {
@@ -110,8 +106,8 @@ ViewerWindow::ViewerWindow(const mjModel* m, const WindowOptions& options)
   options.Validate();
   Impl& g = *impl_;
   g.owner = this;
-  glfwSetErrorCallback([](int, const char* message) { LastGlfwError() = message; });
-  if (!glfwInit()) throw std::runtime_error("viewer: cannot start GLFW: " + LastGlfwError());
+  if (const std::optional<std::string> problem = StartGlfw())
+    throw std::runtime_error("viewer: cannot start GLFW: " + *problem);
   InstallXConnectionLossHandler();
   glfwWindowHint(GLFW_SAMPLES, 0);
   glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);

@@ -46,6 +46,13 @@ Eigen::Vector2d Position(const msgs::Pose2D& X) { return {X.x_m, X.y_m}; }
 // A heading error below this counts as aligned: DriveTo drives on from here.
 constexpr double kAlignedRad = 0.2;
 
+// Whether two of the map's obstacle rectangles are one obstacle: they overlap, or lie less than
+// `same_m` apart (the map is refitted at every replan, and joins or grows its rectangles).
+bool SameObstacle(const Rect& a, const Rect& b, double same_m) {
+  return std::min(a.x1, b.x1) - std::max(a.x0, b.x0) > -same_m &&
+         std::min(a.y1, b.y1) - std::max(a.y0, b.y0) > -same_m;
+}
+
 }  // namespace
 
 void SonarExplorerOptions::Validate() const {
@@ -345,9 +352,7 @@ bool SonarExplorer::PlanCircuit(const CognitiveMap& map, const PlanningCells& pl
         bool done = false;
         // The map is refitted at every replan: a rectangle overlapping one gone round is that
         // obstacle seen better (or joined to a neighbour), not a new one.
-        for (const Rect& c : circled_)
-          done = done || (std::min(o.x1, c.x1) - std::max(o.x0, c.x0) > -options_.circuit_same_m &&
-                          std::min(o.y1, c.y1) - std::max(o.y0, c.y0) > -options_.circuit_same_m);
+        for (const Rect& c : circled_) done = done || SameObstacle(o, c, options_.circuit_same_m);
         if (done) continue;
         if (next == nullptr || (o.Centre() - here).norm() < (next->Centre() - here).norm())
           next = &o;
@@ -377,8 +382,7 @@ bool SonarExplorer::PlanCircuit(const CognitiveMap& map, const PlanningCells& pl
     // a 0.57 m box in seed001_room_4), and a window round that left the far face outside it.
     Rect grown = circuit_->box;
     for (const Rect& o : map.obstacles) {
-      if (std::min(o.x1, grown.x1) - std::max(o.x0, grown.x0) > -options_.circuit_same_m &&
-          std::min(o.y1, grown.y1) - std::max(o.y0, grown.y0) > -options_.circuit_same_m) {
+      if (SameObstacle(o, grown, options_.circuit_same_m)) {
         grown = Rect{std::min(grown.x0, o.x0), std::min(grown.y0, o.y0), std::max(grown.x1, o.x1),
                      std::max(grown.y1, o.y1)};
       }

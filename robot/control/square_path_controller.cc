@@ -62,20 +62,25 @@ SquarePathController::SquarePathController(const DiffDriveSpec& spec,
   }
 }
 
-void SquarePathController::Plan(const msgs::Pose2D& X_WR_start) {
+std::vector<msgs::Pose2D> SquareCorners(const msgs::Pose2D& X_WR_start,
+                                        const SquarePathOptions& options) {
   // Corner k in the start frame: (0,0), (side,0), (side,±side), (0,±side), with the heading of the
   // leg leaving it. Headings come from the corner index, not from accumulating turns, so nothing
   // drifts over laps.
-  const double sign = options_.direction == SquareDirection::kCounterClockwise ? 1.0 : -1.0;
+  const double sign = options.direction == SquareDirection::kCounterClockwise ? 1.0 : -1.0;
   static constexpr int kX[4] = {0, 1, 1, 0};
   static constexpr int kY[4] = {0, 0, 1, 1};
-  auto corner = [&](int k) {
-    const msgs::Pose2D X_SC{kX[k] * options_.side_m, sign * kY[k] * options_.side_m,
+  std::vector<msgs::Pose2D> corners;
+  for (int k = 0; k < 4; ++k) {
+    const msgs::Pose2D X_SC{kX[k] * options.side_m, sign * kY[k] * options.side_m,
                             msgs::WrapAngle(sign * k * std::numbers::pi / 2.0)};
-    return X_WR_start * X_SC;
-  };
-  corners_.clear();
-  for (int k = 0; k < 4; ++k) corners_.push_back(corner(k));
+    corners.push_back(X_WR_start * X_SC);
+  }
+  return corners;
+}
+
+void SquarePathController::Plan(const msgs::Pose2D& X_WR_start) {
+  corners_ = SquareCorners(X_WR_start, options_);
 
   moves_.clear();
   const int legs = 4 * options_.laps;

@@ -48,6 +48,11 @@ struct SquarePathOptions {
   void Validate() const;
 };
 
+// The square's four corners laid out from `X_WR_start` (corner 0, the first leg along its
+// heading), in driving order, each with the heading of the leg that leaves it.
+std::vector<msgs::Pose2D> SquareCorners(const msgs::Pose2D& X_WR_start,
+                                        const SquarePathOptions& options);
+
 // Drives the UMBmark square (Borenstein & Feng 1996, "Measurement and correction of systematic
 // odometry errors in mobile robots"): straight legs, a stop, a turn on the spot, a stop. Everything
 // is judged from the pose estimate it is given, as a real robot judges it from its odometry: the

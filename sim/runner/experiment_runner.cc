@@ -16,6 +16,7 @@
 #include "msgs/stable_hash.h"
 #include "perception/geometric_map/range_fusion.h"
 #include "robot/control/controller.h"
+#include "robot/control/square_path_controller.h"
 #include "robot/odometry/trajectory_metrics.h"
 #include "sim/config/config_error.h"
 #include "sim/config/controller_config.h"
@@ -208,16 +209,17 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
   // A waypoint inside a wall, a box or a table leg (s51) or beyond the world's walls (s52) is
   // never reached: the robot pushed against a wall to the end of the run, exit 0, with the
   // figures of that.
+  const auto unreachable = [&](double x_m, double y_m) -> std::optional<std::string> {
+    if (auto problem = PointOutsideWorld(*scene_, x_m, y_m)) return problem;
+    return PointInsideWorldGeom(*scene_, x_m, y_m);
+  };
   if (config.controller.type == "waypoints") {
     const auto& points = config.controller.waypoints.waypoints;
     for (std::size_t i = 0; i < points.size(); ++i) {
-      for (const auto& check : {&PointOutsideWorld, &PointInsideWorldGeom}) {
-        if (const auto problem = check(*scene_, points[i].x_m, points[i].y_m)) {
-          throw ConfigError(
-              config.source_file, "controller.waypoints[" + std::to_string(i) + "]",
-              *problem + " in " + config.world_path.filename().string() +
-                  ": the robot can never reach it; move the waypoint into free space");
-        }
+      if (const auto problem = unreachable(points[i].x_m, points[i].y_m)) {
+        throw ConfigError(config.source_file, "controller.waypoints[" + std::to_string(i) + "]",
+                          *problem + " in " + config.world_path.filename().string() +
+                              ": the robot can never reach it; move the waypoint into free space");
       }
     }
   }
@@ -227,23 +229,16 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
   // turns the spawn for its clockwise runs and walks its squares itself (s46).
   if (config.controller.type == "square_path" && config.protocol == "single") {
     const robot::SquarePathOptions& square = config.controller.square_path;
-    const double sign = square.direction == robot::SquareDirection::kCounterClockwise ? 1.0 : -1.0;
-    const msgs::Pose2D start = scene_->TruePose();
-    static constexpr int kCornerX[4] = {0, 1, 1, 0};
-    static constexpr int kCornerY[4] = {0, 0, 1, 1};
+    const std::vector<msgs::Pose2D> corners = robot::SquareCorners(scene_->TruePose(), square);
     for (int k = 1; k < 4; ++k) {
-      const msgs::Pose2D corner = start * msgs::Pose2D{kCornerX[k] * square.side_m,
-                                                       sign * kCornerY[k] * square.side_m, 0.0};
-      for (const auto& check : {&PointOutsideWorld, &PointInsideWorldGeom}) {
-        if (const auto problem = check(*scene_, corner.x_m, corner.y_m)) {
-          throw ConfigError(config.source_file, "controller.side_m",
-                            "the " + FormatNumber(square.side_m) + " m " +
-                                std::string(robot::ToString(square.direction)) +
-                                " square from the spawn: its corner " + std::to_string(k) + " " +
-                                *problem + " in " + config.world_path.filename().string() +
-                                ": the robot can never reach it; shorten side_m or move "
-                                "robot.spawn");
-        }
+      if (const auto problem = unreachable(corners[k].x_m, corners[k].y_m)) {
+        throw ConfigError(config.source_file, "controller.side_m",
+                          "the " + FormatNumber(square.side_m) + " m " +
+                              std::string(robot::ToString(square.direction)) +
+                              " square from the spawn: its corner " + std::to_string(k) + " " +
+                              *problem + " in " + config.world_path.filename().string() +
+                              ": the robot can never reach it; shorten side_m or move "
+                              "robot.spawn");
       }
     }
   }
