@@ -1872,6 +1872,169 @@ TEST_F(ReliabilityTest, ALaserOnAPanHingeOfTheUsersRobotFileIsRefused) {
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
+// A user's robot file whose sensor site is off the robot (3 m ahead, 1.5 m up, under the floor)
+// or tilted (a laser pitched 20 deg or rolled onto its side, a sonar facing up) ran, exit 0: the
+// laser scanned from 3 m ahead (default.yaml 5 s: wall_hit_fraction 0.718 where the P3-DX's own
+// site gives 0.909), from under the floor (return_fraction 0), at the floor 0.93 m ahead
+// (wall_hit_fraction 0.354) or in a vertical plane (0.026), and each log still placed its
+// beams level at the site's x, y and yaw. Each is one line naming the robot file and the site;
+// a mount half a degree off level (its beams drift 7 cm over 8 m) still runs.
+TEST_F(ReliabilityTest, ASensorSiteOffTheRobotOrTiltedIsRefused) {
+  const fs::path dir = Dir();
+  const fs::path root = dir / "root";
+  fs::create_directories(root);
+  for (const auto& entry : fs::directory_iterator(testing::SourceRoot())) {
+    const std::string name = entry.path().filename().string();
+    if (name == "models") {
+      fs::copy(entry.path(), root / name, fs::copy_options::recursive);
+    } else if (name != "build") {
+      fs::create_directory_symlink(entry.path(), root / name);
+    }
+  }
+  const fs::path robot = root / "models" / "p3dx.xml";
+  const std::string shipped = Slurp(robot);
+  const std::string laser = "<site name=\"laser\" pos=\"0.021 0 0.34\"";
+  const std::string sonar = "<site name=\"sonar_3\" pos=\"0.166 0.027 0.210\" euler=\"0 0 10\"";
+  ASSERT_NE(shipped.find(laser), std::string::npos);
+  ASSERT_NE(shipped.find(sonar), std::string::npos);
+  struct Case {
+    std::string name, from, to, expected;  // expected empty: the run succeeds
+  };
+  const std::vector<Case> cases = {
+      {"ahead", laser, "<site name=\"laser\" pos=\"3 0 0.34\"",
+       "sensors.laser: robot 'p3dx' cannot carry it: " + robot.string() +
+           ": laser: the site at (3, 0, 0.34) in the robot frame lies off the robot: its geoms "
+           "span x in [-0.368, 0.278], y in [-0.323, 0.323], z in [0, 0.54]"},
+      {"above", laser, "<site name=\"laser\" pos=\"0.021 0 1.5\"",
+       "laser: the site at (0.021, 0, 1.5) in the robot frame lies off the robot"},
+      {"below", laser, "<site name=\"laser\" pos=\"0.021 0 -0.5\"",
+       "laser: the site at (0.021, 0, -0.5) in the robot frame is at or below the floor"},
+      {"pitched", laser, laser + " euler=\"0 20 0\"",
+       "laser: the site at (0.021, 0, 0.34) in the robot frame has its scan plane (its x-y plane) "
+       "tilted 20 deg from level: within range_max_m 8 its beams rise or drop 2.736 m, more than "
+       "its 0.34 m above the floor"},
+      {"rolled", laser, laser + " euler=\"90 0 0\"",
+       "laser: the site at (0.021, 0, 0.34) in the robot frame has its scan plane (its x-y plane) "
+       "tilted 90 deg"},
+      {"sonar up", sonar, "<site name=\"sonar_3\" pos=\"0.166 0.027 0.210\" euler=\"0 -90 10\"",
+       "sensors.sonar: robot 'p3dx' cannot carry it: " + robot.string() +
+           ": sonar_3: the site at (0.166, 0.027, 0.21) in the robot frame has its scan plane (its "
+           "x-y plane) tilted 90 deg from level: within range_max_m 5"},
+      {"half a degree", laser, laser + " euler=\"0 0.5 0\"", ""},
+  };
+  ASSERT_EQ(setenv("PLYWOOD_ROOT", root.c_str(), 1), 0);
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    std::string text = shipped;
+    text.replace(text.find(c.from), c.from.size(), c.to);
+    WriteFile(robot, text);
+    const fs::path out = dir / ("out-" + std::to_string(&c - cases.data()));
+    const CliResult run =
+        RunPlywood("run " + (testing::SourceRoot() / "experiments/default.yaml").string() +
+                       " --quiet --out " + out.string() + " --set duration_s=0.5",
+                   dir);
+    if (c.expected.empty()) {
+      EXPECT_EQ(run.exit_code, 0) << run.err;
+      EXPECT_TRUE(fs::exists(out / "metrics.json"));
+    } else {
+      ExpectOneLine(run, {"default.yaml: ", c.expected});
+      EXPECT_FALSE(fs::exists(out));
+    }
+  }
+  unsetenv("PLYWOOD_ROOT");
+}
+
+// A user's robot file that cannot drive or feel as the run reports ran, exit 0. Without its bump
+// panels, or with them but without the colliding bumper_ring, bumpers.csv never pressed a panel
+// while the chassis pushed the hall's east wall (a 6 s wheel script: 0 contact samples, the P3-DX's
+// own file 23). With its wheels 0.2 m up they spun in the air (default.yaml 5 s: 2 cm driven,
+// encoder drift 7332 %); with one sunk 4.75 cm into the floor the robot drove tilted (drift
+// 2.81 %, its own file 0.51 %); with the chassis 5 cm into the floor it drove 0.25 mm. Each is
+// now one line naming the robot file and the geom.
+TEST_F(ReliabilityTest, ARobotFileWhoseBumpersOrWheelsCannotWorkIsRefused) {
+  const fs::path dir = Dir();
+  const fs::path root = dir / "root";
+  fs::create_directories(root);
+  for (const auto& entry : fs::directory_iterator(testing::SourceRoot())) {
+    const std::string name = entry.path().filename().string();
+    if (name == "models") {
+      fs::copy(entry.path(), root / name, fs::copy_options::recursive);
+    } else if (name != "build") {
+      fs::create_directory_symlink(entry.path(), root / name);
+    }
+  }
+  const fs::path robot = root / "models" / "p3dx.xml";
+  const std::string shipped = Slurp(robot);
+  struct Case {
+    std::string name;
+    std::vector<std::pair<std::string, std::string>> edits;
+    std::string expected;
+  };
+  std::vector<std::pair<std::string, std::string>> no_panels;
+  for (int i = 0; i < 10; ++i) {
+    const std::string panel = "<geom name=\"bumper_" + std::to_string(i) + "\"";
+    const std::size_t at = shipped.find(panel);
+    ASSERT_NE(at, std::string::npos);
+    no_panels.push_back({shipped.substr(at, shipped.find("/>", at) + 2 - at), ""});
+  }
+  const std::string ring = "<geom name=\"bumper_ring\" type=\"mesh\" mesh=\"p3dx_bumper_ring\"";
+  const std::string left = "<body name=\"left_wheel\" pos=\"0 0.165 0.0975\">";
+  const std::string right = "<body name=\"right_wheel\" pos=\"0 -0.165 0.0975\">";
+  const std::string chassis = "<geom name=\"chassis\" type=\"box\" pos=\"-0.045 0 0.155\"";
+  const std::vector<Case> cases = {
+      {"no panels", no_panels,
+       "bump.yaml: sensors.bumpers: robot 'p3dx' cannot carry it: " + robot.string() +
+           ": bumper_0: no such geom on the robot; the bumpers need their panels"},
+      {"no ring",
+       {{ring, "<geom name=\"bumper_rim\" type=\"mesh\" mesh=\"p3dx_bumper_ring\""}},
+       "bump.yaml: sensors.bumpers: robot 'p3dx' cannot carry it: " + robot.string() +
+           ": bumper_ring: no such geom on the robot, and the panels bumper_0..9 are visual"},
+      {"ring collides with nothing",
+       {{ring, ring + " contype=\"0\" conaffinity=\"0\""}},
+       ": bumper_ring: the geom collides with nothing, and the panels bumper_0..9 are visual"},
+      {"wheels up",
+       {{left, "<body name=\"left_wheel\" pos=\"0 0.165 0.2975\">"},
+        {right, "<body name=\"right_wheel\" pos=\"0 -0.165 0.2975\">"}},
+       robot.string() + ": left_wheel_tire: the tire's lowest point is 0.2 m above the floor"},
+      {"a wheel sunk",
+       {{right, "<body name=\"right_wheel\" pos=\"0 -0.165 0.05\">"}},
+       robot.string() + ": right_wheel_tire: the tire's lowest point is 0.048 m below the floor"},
+      {"chassis in the floor",
+       {{chassis, "<geom name=\"chassis\" type=\"box\" pos=\"-0.045 0 0.05\""}},
+       robot.string() + ": chassis: the geom collides and reaches 0.05 m below the floor"},
+  };
+  const fs::path experiment = WriteFile(dir / "bump.yaml", HallExperiment(2.5, 0.0,
+                                                                          "controller: {type: "
+                                                                          "wheel_script, segments: "
+                                                                          "[[6, 4, 4]]}\n",
+                                                                          "{encoders: {}, bumpers: "
+                                                                          "{}}"));
+  ASSERT_EQ(setenv("PLYWOOD_ROOT", root.c_str(), 1), 0);
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    std::string text = shipped;
+    for (const auto& [from, to] : c.edits) {
+      ASSERT_NE(text.find(from), std::string::npos) << from;
+      text.replace(text.find(from), from.size(), to);
+    }
+    WriteFile(robot, text);
+    const fs::path out = dir / ("out-" + std::to_string(&c - cases.data()));
+    const CliResult run =
+        RunPlywood("run " + experiment.string() + " --quiet --out " + out.string(), dir);
+    ExpectOneLine(run, {c.expected});
+    EXPECT_FALSE(fs::exists(out));
+  }
+  // The robot as shipped presses its bumpers against the wall.
+  WriteFile(robot, shipped);
+  const CliResult run = RunPlywood("run " + experiment.string() + " --quiet --out " +
+                                       (dir / "shipped").string() + " --set duration_s=6",
+                                   dir);
+  unsetenv("PLYWOOD_ROOT");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(Slurp(dir / "shipped" / "metrics.json").find("\"contact_samples\": 23"),
+            std::string::npos);
+}
+
 // A world file named with what XML quotes: `Tom & Jerry "hall" <2>.xml` was refused as "does not
 // compile with robot ...: XML parse error ... include" (the composed scene wrote the name into its
 // <include> unquoted), though the world itself was sound; `h&amp;all.xml` was read as `h&all.xml`

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "msgs/shortest_number.h"
+#include "sim/config/config_error.h"
 #include "sim/world/scene.h"
 
 namespace plywood::sim {
@@ -20,6 +21,11 @@ double BearingInBody(const mjData* d, int body, const mjtNum* p_W) {
   const double x = delta[0] * r[0] + delta[1] * r[3] + delta[2] * r[6];
   const double y = delta[0] * r[1] + delta[1] * r[4] + delta[2] * r[7];
   return std::atan2(y, x);
+}
+
+// A geom MuJoCo may make contacts with (a visual geom has contype and conaffinity 0).
+bool CanTouch(const mjModel* m, int geom) {
+  return geom >= 0 && (m->geom_contype[geom] != 0 || m->geom_conaffinity[geom] != 0);
 }
 
 // |a - b| on the circle, in [0, pi].
@@ -48,7 +54,25 @@ BumperSensor::BumperSensor(const Scene& scene, const BumperSensorOptions& option
     panel_of_geom_[id] = i;
     panel_bearings_rad_.push_back(BearingInBody(d, scene.base_body_id(), d->geom_xpos + 3 * id));
   }
-  if (!panel_bearings_rad_.empty()) ring_geom_ = mj_name2id(m, mjOBJ_GEOM, "bumper_ring");
+  // Without panels, or with nothing that a contact can press (no colliding ring, visual panels),
+  // every sample would read "not pressed" while the chassis pushed a wall.
+  if (panel_bearings_rad_.empty()) {
+    throw ConfigError(scene.robot_path().string(), "bumper_0",
+                      "no such geom on the robot; the bumpers need their panels bumper_0..N "
+                      "(models/README.md)");
+  }
+  ring_geom_ = mj_name2id(m, mjOBJ_GEOM, "bumper_ring");
+  bool touchable = CanTouch(m, ring_geom_);
+  for (int g = 0; g < m->ngeom; ++g)
+    touchable = touchable || (panel_of_geom_[g] >= 0 && CanTouch(m, g));
+  if (!touchable) {
+    throw ConfigError(scene.robot_path().string(), "bumper_ring",
+                      std::string(ring_geom_ < 0 ? "no such geom on the robot"
+                                                 : "the geom collides with nothing") +
+                          ", and the panels bumper_0.." + std::to_string(panel_count() - 1) +
+                          " are visual (contype and conaffinity 0): no contact can press a "
+                          "panel; the bumpers need a colliding bumper_ring or colliding panels");
+  }
 }
 
 int BumperSensor::PanelAtBearing(double bearing_rad) const {

@@ -36,7 +36,8 @@ struct BumperSensorOptions {
 // pose.
 class BumperSensor {
  public:
-  // @throws std::invalid_argument when `options` is invalid.
+  // @throws std::invalid_argument when `options` is invalid; ConfigError naming the robot file
+  // when it has no bumper_0 panel, or neither a colliding bumper_ring nor a colliding panel.
   explicit BumperSensor(const Scene& scene, const BumperSensorOptions& options = {});
 
   double period_s() const { return 1.0 / options_.rate_hz; }

@@ -39,7 +39,7 @@ std::vector<std::string> IrRingSensor::DefaultSiteNames() { return NumberedSiteN
 IrRingSensor::IrRingSensor(const Scene& scene, const std::vector<std::string>& site_names,
                            const IrRingOptions& options, std::uint64_t seed)
     : options_((options.Validate(), options)),
-      sites_(RequireSensorSites(scene, site_names, "the IR ring")),
+      sites_(RequireSensorSites(scene, site_names, "the IR ring", options_.range_max_m)),
       rng_(seed) {
   dirs_S_ =
       PlanarDirections(SymmetricFanAnglesRad(options_.beam_half_angle_deg, options_.rays_per_beam));

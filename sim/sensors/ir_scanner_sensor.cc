@@ -65,7 +65,7 @@ IrScannerSensor::IrScannerSensor(const Scene& scene, const std::string& site_nam
                                  const IrScannerOptions& options, std::uint64_t seed)
     : options_((options.Validate(), options)),
       geometry_(scene, site_name, "the IR scanner", -options_.fov_deg / 2.0,
-                options_.resolution_deg, options_.BeamCount()),
+                options_.resolution_deg, options_.BeamCount(), options_.range_max_m),
       invisible_(IrInvisibleGeoms(scene.model())),
       rng_(seed) {}
 

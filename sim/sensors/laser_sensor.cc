@@ -59,7 +59,7 @@ LaserSensor::LaserSensor(const Scene& scene, const std::string& site_name,
                          const LaserOptions& options, std::uint64_t seed)
     : options_((options.Validate(), options)),
       geometry_(scene, site_name, "the laser", -options_.fov_deg / 2.0, options_.resolution_deg,
-                options_.BeamCount()),
+                options_.BeamCount(), options_.range_max_m),
       true_ranges_m_(geometry_.beam_count()),
       rng_(seed) {}
 

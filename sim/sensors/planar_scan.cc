@@ -9,8 +9,9 @@
 namespace plywood::sim {
 
 PlanarScan::PlanarScan(const Scene& scene, const std::string& site_name, const std::string& sensor,
-                       double angle_min_deg, double angle_increment_deg, int beam_count)
-    : site_(RequireSensorSite(scene, site_name, sensor)),
+                       double angle_min_deg, double angle_increment_deg, int beam_count,
+                       double range_max_m)
+    : site_(RequireSensorSite(scene, site_name, sensor, range_max_m)),
       angle_min_rad_(angle_min_deg * kDegToRad),
       angle_increment_rad_(angle_increment_deg * kDegToRad),
       dirs_S_(PlanarDirections(EvenAnglesRad(angle_min_deg, angle_increment_deg, beam_count))),

@@ -18,9 +18,10 @@ namespace plywood::sim {
 class PlanarScan {
  public:
   // `sensor` names the sensor in the error message ("the laser").
-  // @throws ConfigError naming the robot file and the site when the robot has no such site.
+  // @throws ConfigError naming the robot file and the site when the robot has no such site, or
+  // one that cannot hold a level scan reaching range_max_m (RequireSensorSite).
   PlanarScan(const Scene& scene, const std::string& site_name, const std::string& sensor,
-             double angle_min_deg, double angle_increment_deg, int beam_count);
+             double angle_min_deg, double angle_increment_deg, int beam_count, double range_max_m);
 
   PlanarScan(const PlanarScan&) = delete;
   PlanarScan& operator=(const PlanarScan&) = delete;

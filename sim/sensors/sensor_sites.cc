@@ -1,14 +1,98 @@
 #include "sim/sensors/sensor_sites.h"
 
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 
+#include "msgs/angle_units.h"
+#include "msgs/shortest_number.h"
 #include "sim/config/config_error.h"
 
 namespace plywood::sim {
+namespace {
+
+// Lengths to the millimetre in site errors ("0.34", not "0.33999999999999997").
+std::string SiteMm(double metres) {
+  return msgs::ShortestNumber(std::round(metres * 1000.0) / 1000.0);
+}
+
+// The box the robot's geoms fill, in the robot frame: their bounding spheres, placed as the
+// robot stands at its spawn; from the floor (z = 0) up to the top of the highest sphere.
+struct RobotExtent {
+  double lo[2] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  double hi[2] = {-std::numeric_limits<double>::infinity(),
+                  -std::numeric_limits<double>::infinity()};
+  double top_m = 0.0;
+  bool empty() const { return !(lo[0] <= hi[0]); }
+};
+
+RobotExtent ExtentOfTheRobot(const Scene& scene) {
+  const mjModel* m = scene.model();
+  const mjData* d = scene.data();
+  const int base = scene.base_body_id();
+  const Eigen::Vector3d p_WB(d->xpos[3 * base], d->xpos[3 * base + 1], d->xpos[3 * base + 2]);
+  const Eigen::Matrix3d R_WB =
+      Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(d->xmat + 9 * base);
+  RobotExtent extent;
+  for (int g = 0; g < m->ngeom; ++g) {
+    bool on_robot = false;
+    for (int b = m->geom_bodyid[g]; b != 0 && !on_robot; b = m->body_parentid[b])
+      on_robot = b == base;
+    const double r = m->geom_rbound[g];
+    if (!on_robot || !(r > 0.0)) continue;  // planes have no bounding sphere
+    const Eigen::Vector3d p_B =
+        R_WB.transpose() *
+        (Eigen::Vector3d(d->geom_xpos[3 * g], d->geom_xpos[3 * g + 1], d->geom_xpos[3 * g + 2]) -
+         p_WB);
+    for (int axis = 0; axis < 2; ++axis) {
+      extent.lo[axis] = std::min(extent.lo[axis], p_B[axis] - r);
+      extent.hi[axis] = std::max(extent.hi[axis], p_B[axis] + r);
+    }
+    extent.top_m = std::max(extent.top_m, p_B.z() + r);
+  }
+  return extent;
+}
+
+// Why a fixed site cannot hold a planar range sensor of `range_max_m`, or nothing.
+std::optional<std::string> OffTheRobotOrTilted(const Scene& scene, int site_id,
+                                               double range_max_m) {
+  const Eigen::Isometry3d X_BS = scene.SitePoseInBase(site_id);
+  const Eigen::Vector3d p = X_BS.translation();
+  const std::string at = "the site at (" + SiteMm(p.x()) + ", " + SiteMm(p.y()) + ", " +
+                         SiteMm(p.z()) + ") in the robot frame ";
+  if (!(p.z() > 0.0)) {
+    // The robot frame's origin is on the floor (models/README.md): every beam starts under it.
+    return at + "is at or below the floor (z = 0 under the robot)";
+  }
+  const RobotExtent extent = ExtentOfTheRobot(scene);
+  if (!extent.empty() && (p.x() < extent.lo[0] || p.x() > extent.hi[0] || p.y() < extent.lo[1] ||
+                          p.y() > extent.hi[1] || p.z() > extent.top_m)) {
+    return at + "lies off the robot: its geoms span x in [" + SiteMm(extent.lo[0]) + ", " +
+           SiteMm(extent.hi[0]) + "], y in [" + SiteMm(extent.lo[1]) + ", " + SiteMm(extent.hi[1]) +
+           "], z in [0, " + SiteMm(extent.top_m) + "] (their bounding spheres)";
+  }
+  // The beams lie in the site's x-y plane; the steepest of them climbs or drops sin(tilt) per
+  // metre, tilt being the angle between the site's z axis and the vertical.
+  const Eigen::Vector3d z_B = X_BS.linear().col(2);
+  const double sin_tilt = std::hypot(z_B.x(), z_B.y());
+  if (range_max_m * sin_tilt > p.z()) {
+    const double tilt_deg = std::atan2(sin_tilt, z_B.z()) * kRadToDeg;
+    return at + "has its scan plane (its x-y plane) tilted " +
+           msgs::ShortestNumber(std::round(tilt_deg * 10.0) / 10.0) + " deg from level: within " +
+           "range_max_m " + msgs::ShortestNumber(range_max_m) + " its beams rise or drop " +
+           SiteMm(range_max_m * sin_tilt) + " m, more than its " + SiteMm(p.z()) +
+           " m above the floor (scans are logged and used as level)";
+  }
+  return std::nullopt;
+}
+
+}  // namespace
 
 SensorSite RequireSensorSite(const Scene& scene, const std::string& site_name,
-                             const std::string& sensor) {
+                             const std::string& sensor, double range_max_m) {
   const std::optional<int> id = scene.FindSite(site_name);
   if (!id) {
     throw ConfigError(scene.robot_path().string(), site_name,
@@ -21,17 +105,23 @@ SensorSite RequireSensorSite(const Scene& scene, const std::string& site_name,
                       "the site is not fixed to the robot's base body (a joint lies between); " +
                           sensor + " needs a fixed mount");
   }
+  // A site off the robot or a steeply tilted one still casts, and the run's figures would be
+  // those of a sensor 3 m ahead of the robot, under the floor or looking at it.
+  if (const std::optional<std::string> why = OffTheRobotOrTilted(scene, *id, range_max_m)) {
+    throw ConfigError(scene.robot_path().string(), site_name,
+                      *why + "; " + sensor + " needs a " + "level mount on the robot");
+  }
   return {*id, scene.SitePoseInRobot(*id)};
 }
 
 std::vector<SensorSite> RequireSensorSites(const Scene& scene,
                                            const std::vector<std::string>& site_names,
-                                           const std::string& sensor) {
+                                           const std::string& sensor, double range_max_m) {
   if (site_names.empty()) throw std::invalid_argument("site_names: must not be empty");
   std::vector<SensorSite> sites;
   sites.reserve(site_names.size());
   for (const std::string& name : site_names)
-    sites.push_back(RequireSensorSite(scene, name, sensor));
+    sites.push_back(RequireSensorSite(scene, name, sensor, range_max_m));
   return sites;
 }
 

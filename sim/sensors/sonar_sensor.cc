@@ -48,7 +48,7 @@ std::vector<std::string> SonarSensor::DefaultSiteNames() { return NumberedSiteNa
 SonarSensor::SonarSensor(const Scene& scene, const std::vector<std::string>& site_names,
                          const SonarOptions& options, std::uint64_t seed)
     : options_((options.Validate(), options)),
-      sites_(RequireSensorSites(scene, site_names, "the sonar ring")),
+      sites_(RequireSensorSites(scene, site_names, "the sonar ring", options_.range_max_m)),
       rng_(seed) {
   // Centre-out order, so the first ray that hits is the central-most one (the multipath bounce).
   std::vector<double> angles_rad =

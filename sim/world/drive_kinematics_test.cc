@@ -233,7 +233,7 @@ TEST(DriveKinematicsTest, ASensorSiteBehindAJointIsRefused) {
   EXPECT_TRUE(scene.SiteFixedToBase(*scene.FindSite("laser")));
   EXPECT_FALSE(scene.SiteFixedToBase(*scene.FindSite("pan_laser")));
   try {
-    RequireSensorSite(scene, "pan_laser", "the laser");
+    RequireSensorSite(scene, "pan_laser", "the laser", 8.0);
     ADD_FAILURE() << "a joint-mounted sensor site was accepted";
   } catch (const ConfigError& e) {
     const std::string message = e.what();

@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "msgs/shortest_number.h"
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
 #include "sim/world/contact_filter.h"
@@ -18,6 +19,45 @@
 
 namespace plywood::sim {
 namespace {
+
+// "'chassis'", or "geom 7" for an unnamed one.
+std::string GeomNameOrIndex(const mjModel* m, int geom) {
+  const char* name = mj_id2name(m, mjOBJ_GEOM, geom);
+  return name != nullptr ? std::string(name) : "geom " + std::to_string(geom);
+}
+
+// The world z of a placed geom's lowest point: exact for boxes, spheres, capsules, cylinders,
+// ellipsoids and meshes (their vertices); a height field's bounding sphere.
+double LowestPointZ(const mjModel* m, const mjData* d, int g) {
+  const double* size = m->geom_size + 3 * g;
+  const double* R = d->geom_xmat + 9 * g;  // row-major: row 2 holds the local axes' z parts
+  const double zx = R[6], zy = R[7], zz = R[8], centre = d->geom_xpos[3 * g + 2];
+  switch (m->geom_type[g]) {
+    case mjGEOM_SPHERE:
+      return centre - size[0];
+    case mjGEOM_CAPSULE:
+      return centre - size[0] - std::abs(zz) * size[1];
+    case mjGEOM_CYLINDER:
+      return centre - std::abs(zz) * size[1] - size[0] * std::sqrt(std::max(0.0, 1.0 - zz * zz));
+    case mjGEOM_ELLIPSOID:
+      return centre - std::sqrt(std::pow(zx * size[0], 2) + std::pow(zy * size[1], 2) +
+                                std::pow(zz * size[2], 2));
+    case mjGEOM_BOX:
+      return centre - std::abs(zx) * size[0] - std::abs(zy) * size[1] - std::abs(zz) * size[2];
+    case mjGEOM_MESH: {
+      const int mesh = m->geom_dataid[g];
+      if (mesh < 0) break;
+      double lowest = std::numeric_limits<double>::infinity();
+      const float* v = m->mesh_vert + 3 * m->mesh_vertadr[mesh];
+      for (int k = 0; k < m->mesh_vertnum[mesh]; ++k, v += 3)
+        lowest = std::min(lowest, centre + zx * v[0] + zy * v[1] + zz * v[2]);
+      return lowest;
+    }
+    default:
+      break;
+  }
+  return centre - m->geom_rbound[g];
+}
 
 int RequireId(const mjModel* m, mjtObj type, const std::string& name, const std::string& robot) {
   const int id = mj_name2id(m, type, name.c_str());
@@ -176,7 +216,45 @@ Scene::Scene(const SceneOptions& options) : options_(options) {
   mj_resetData(model_.get(), data_.get());
   MakeNearContactPairs();
   WithNearPairs([&] { mj_forward(model_.get(), data_.get()); });
+  RequireRobotOnTheFloor();
   MakePlanarDrive();
+}
+
+void Scene::RequireRobotOnTheFloor() const {
+  // models/README.md: the base frame sits on the floor, so a tire's lowest point is at its z = 0
+  // (SetWheelGeometry keeps it there). A wheel above it spins in the air (the robot rests on its
+  // caster and chassis: a 5 s tour drove 2 cm, encoder drift 7332 %); one below it lifts the robot.
+  const double base_z = data_->xpos[3 * base_body_ + 2];
+  for (const int tire : {left_tire_, right_tire_}) {
+    const double lowest_m = data_->geom_xpos[3 * tire + 2] - base_z - model_->geom_size[3 * tire];
+    if (std::abs(lowest_m) > kWheelOnFloorToleranceM) {
+      throw ConfigError(options_.robot_mjcf.string(), mj_id2name(model_.get(), mjOBJ_GEOM, tire),
+                        "the tire's lowest point is " +
+                            msgs::ShortestNumber(std::round(std::abs(lowest_m) * 1000.0) / 1000.0) +
+                            " m " + (lowest_m > 0.0 ? "above" : "below") +
+                            " the floor (z = 0 in the robot frame, where the base frame sits: "
+                            "models/README.md); put the wheel's axle at the tire's radius, " +
+                            msgs::ShortestNumber(model_->geom_size[3 * tire]) + " m, within 1 mm");
+    }
+  }
+  // Nor may another colliding geom reach into the floor: the contact lifts the robot off its
+  // wheels (a chassis 5 cm into it: the tour drove 0.2 mm in 5 s, exit 0).
+  for (int g = 0; g < model_->ngeom; ++g) {
+    if (g == left_tire_ || g == right_tire_ || !IsRobotGeom(g) ||
+        model_->geom_type[g] == mjGEOM_PLANE ||
+        (model_->geom_contype[g] == 0 && model_->geom_conaffinity[g] == 0)) {
+      continue;
+    }
+    const double lowest_m = LowestPointZ(model_.get(), data_.get(), g) - base_z;
+    if (lowest_m < -kWheelOnFloorToleranceM) {
+      throw ConfigError(
+          options_.robot_mjcf.string(), GeomNameOrIndex(model_.get(), g),
+          "the geom collides and reaches " +
+              msgs::ShortestNumber(std::round(-lowest_m * 1000.0) / 1000.0) +
+              " m below the floor (z = 0 in the robot frame, where the base frame "
+              "sits: models/README.md): the floor would lift the robot off its wheels");
+    }
+  }
 }
 
 Scene::~Scene() = default;
@@ -359,6 +437,16 @@ double Scene::SiteHeightM(int site_id) const {
   mjtNum pos[3], quat[4];
   SiteInBaseFrame(site_id, pos, quat);
   return pos[2];
+}
+
+Eigen::Isometry3d Scene::SitePoseInBase(int site_id) const {
+  mjtNum pos[3], quat[4], mat[9];
+  SiteInBaseFrame(site_id, pos, quat);
+  mju_quat2Mat(mat, quat);
+  Eigen::Isometry3d X_BS = Eigen::Isometry3d::Identity();
+  X_BS.translation() = Eigen::Vector3d(pos[0], pos[1], pos[2]);
+  X_BS.linear() = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(mat);
+  return X_BS;
 }
 
 Eigen::Isometry3d Scene::SitePoseInWorld(int site_id) const {

@@ -39,9 +39,11 @@ class PlanarDrive;
 class Scene {
  public:
   static constexpr int kRobotGeomGroup = 3;
+  // How far a tire's lowest point may sit from the floor (z = 0 in the robot frame) when built.
+  static constexpr double kWheelOnFloorToleranceM = 1e-3;
 
   // @throws ConfigError naming the world or robot file when either is missing or does not compile,
-  // or when the robot breaks the model conventions.
+  // or when the robot breaks the model conventions (a tire that does not reach the floor, too).
   explicit Scene(const SceneOptions& options);
   ~Scene();
 
@@ -109,6 +111,8 @@ class Scene {
   bool SiteFixedToBase(int site_id) const;
   msgs::Pose2D SitePoseInRobot(int site_id) const;
   double SiteHeightM(int site_id) const;
+  // The site's 3-D pose in the base body's frame (through welded bodies; the model as built).
+  Eigen::Isometry3d SitePoseInBase(int site_id) const;
   Eigen::Isometry3d SitePoseInWorld(int site_id) const;
 
   const std::filesystem::path& world_path() const { return options_.world_mjcf; }
@@ -117,6 +121,9 @@ class Scene {
  private:
   // The site's position and orientation in the base body's frame, through welded bodies.
   void SiteInBaseFrame(int site_id, double pos[3], double quat[4]) const;
+  // @throws ConfigError naming the robot file and the tire whose lowest point is off the floor, or
+  // the colliding geom that reaches into it.
+  void RequireRobotOnTheFloor() const;
   void MakeNearContactPairs();
   void MakePlanarDrive();
   void PlaceDrawOnlyGeoms() const;
