@@ -100,8 +100,21 @@ bool HistogramPoseCorrector::AxisShift(const std::vector<double>& scan, int axis
                                        double* shift_m) const {
   const double bin = options_.position_bin_m;
   const auto bin_of = [&](double c) { return static_cast<long>(std::floor(c / bin)); };
-  std::map<long, double> scan_votes, reference_votes;
+  std::map<long, double> reference_votes;
+  std::vector<double> reference;  // the coordinates, for the refinement below a bin
+  const double reach = options_.max_shift_m + 10.0;
+  for (const auto& points : recent_points_W_) {
+    for (const AxisPoint& p : points) {
+      if (p.axis == axis_index && (p.p_W - robot_W).squaredNorm() < reach * reach) {
+        reference.push_back(p.p_W.dot(axis));
+        reference_votes[bin_of(reference.back())] += 1.0;
+      }
+    }
+  }
+  const int window = static_cast<int>(std::ceil(options_.max_shift_m / bin));
+  std::map<long, double> scan_votes;
   for (double c : scan) scan_votes[bin_of(c)] += 1.0;
+  // The scan must see a wall across the axis ...
   double strongest = 0.0;
   for (const auto& [b, v] : scan_votes) {
     const auto at = [&](long k) {
@@ -111,15 +124,27 @@ bool HistogramPoseCorrector::AxisShift(const std::vector<double>& scan, int axis
     strongest = std::max(strongest, at(b - 1) + v + at(b + 1));
   }
   if (strongest < options_.min_peak_votes) return false;
-  const double reach = options_.max_shift_m + 10.0;
-  for (const auto& points : recent_points_W_) {
-    for (const AxisPoint& p : points) {
-      if (p.axis == axis_index && (p.p_W - robot_W).squaredNorm() < reach * reach) {
-        reference_votes[bin_of(p.p_W.dot(axis))] += 1.0;
+  // ... and only its points with min_peak_votes reference points within the shift window vote, at
+  // least min_peak_votes of them: a wall seen for the first time has nothing to align with yet,
+  // and the few reference points near it (an edge an earlier scan glimpsed) would pick the shift
+  // alone.
+  if (options_.require_reference_support) {
+    double supported_votes = 0.0;
+    for (auto bin_votes = scan_votes.begin(); bin_votes != scan_votes.end();) {
+      double reference = 0.0;
+      for (auto it = reference_votes.lower_bound(bin_votes->first - window);
+           it != reference_votes.end() && it->first <= bin_votes->first + window; ++it) {
+        reference += it->second;
+      }
+      if (reference >= options_.min_peak_votes) {
+        supported_votes += bin_votes->second;
+        ++bin_votes;
+      } else {
+        bin_votes = scan_votes.erase(bin_votes);
       }
     }
+    if (supported_votes < options_.min_peak_votes) return false;
   }
-  const int window = static_cast<int>(std::ceil(options_.max_shift_m / bin));
   const auto correlation = [&](int k) {
     double sum = 0.0;
     for (const auto& [b, v] : scan_votes) {
@@ -129,7 +154,42 @@ bool HistogramPoseCorrector::AxisShift(const std::vector<double>& scan, int axis
     return sum;
   };
   *shift_m = BestShift(correlation, window) * bin;
+  if (options_.refine_position) *shift_m = RefineShift(scan, scan_votes, reference, *shift_m);
   return true;
+}
+
+double HistogramPoseCorrector::RefineShift(const std::vector<double>& scan,
+                                           const std::map<long, double>& scan_votes,
+                                           std::vector<double> reference, double shift_m) const {
+  // Below the bin size, as the heading is refined on the fitted lines: the mean signed distance
+  // from each voting scan point (shifted) to the reference points within a bin of it, iterated
+  // (a flat-kernel mean shift) so that a wall's points, a fraction of a bin off, are matched
+  // whole. Sharp walls (little noise) fill one bin each, where the correlation's parabola has
+  // nothing to fit.
+  const double bin = options_.position_bin_m;
+  std::sort(reference.begin(), reference.end());
+  std::vector<double> prefix(reference.size() + 1, 0.0);
+  for (std::size_t i = 0; i < reference.size(); ++i) prefix[i + 1] = prefix[i] + reference[i];
+  const double coarse = shift_m;
+  for (int iteration = 0; iteration < 10; ++iteration) {
+    double sum = 0.0, count = 0.0;
+    for (double c : scan) {
+      if (!scan_votes.contains(static_cast<long>(std::floor(c / bin)))) continue;
+      const double at = c + shift_m;
+      const auto lo = std::lower_bound(reference.begin(), reference.end(), at - bin);
+      const auto hi = std::upper_bound(lo, reference.end(), at + bin);
+      const double n = static_cast<double>(hi - lo);
+      if (n == 0.0) continue;
+      sum += prefix[hi - reference.begin()] - prefix[lo - reference.begin()] - n * at;
+      count += n;
+    }
+    if (count < options_.min_peak_votes) break;
+    const double step = sum / count;
+    shift_m += step;
+    if (std::abs(step) < 1e-4 * bin) break;
+  }
+  // The correlation's shift is right to a bin; the refinement only moves within it.
+  return std::clamp(shift_m, coarse - bin, coarse + bin);
 }
 
 msgs::Pose2D HistogramPoseCorrector::Correct(const msgs::Pose2D& X_OR,

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <deque>
+#include <map>
 #include <span>
 #include <vector>
 
@@ -22,12 +23,18 @@ namespace plywood::perception {
 //    (the virtual lines are too short for that: 5 mm noise tilts a 14 cm one by 3 deg);
 //  - position: in the map's main frame (the first scan's alpha_max), the scan's X and Y distance
 //    histograms are cross-correlated with those of the last reference_scans corrected scans within
-//    reach; the best shift within +-max_shift_m corrects x and y (bins of position_bin_m). As in
-//    the paper's distance histograms, a point votes on an axis only when its virtual line is within
+//    reach; the best shift within +-max_shift_m corrects x and y (bins of position_bin_m), refined
+//    below the bin (refine_position) by the mean signed distance from the scan's voting points to
+//    the reference's within a bin of them, as the heading is refined on the fitted lines. As in the
+//    paper's distance histograms, a point votes on an axis only when its virtual line is within
 //    histograms.max_wall_tilt_deg of square to it: the points of a wall along the axis, denser
 //    behind the robot where earlier scans saw it, would otherwise pull every shift back along the
 //    path. An axis whose scan histogram has no three neighbouring bins with min_peak_votes points
-//    (no wall across it, e.g. along a corridor) is left alone.
+//    (no wall across it, e.g. along a corridor) is left alone. With require_reference_support a
+//    scan point votes only where the reference holds min_peak_votes points within max_shift_m of
+//    it, and the axis is left alone unless min_peak_votes points vote: a wall seen for the first
+//    time, with at most a glimpse of it in the reference, does not move the position
+//    (docs/geometric_map.md, "Stop 53").
 // The correction is kept as a transform X_WO from the odometry frame to the map frame, so the
 // odometry keeps integrating undisturbed. The heading is anchored to the whole map, so its error
 // stays bounded by the histogram resolution; the position is anchored to recent scans only, so
@@ -44,6 +51,15 @@ struct PoseCorrectionOptions {
   int min_virtual_lines = 30;
   int min_peak_votes = 10;
   int reference_scans = 10;
+  // Scan points vote on the position only where the reference has a wall to match them with. Off:
+  // it mends office seed 1 (IR only) but costs more often than it helps (docs/geometric_map.md,
+  // "Stop 53").
+  bool require_reference_support = false;
+  // The position shift refined below position_bin_m (the scan's wall points against the
+  // reference's within a bin of them), as the heading is on the fitted lines. Off: it lowers the
+  // mean position error in the office and every generated family, but loses a segment's precision
+  // in a few generated runs (docs/geometric_map.md, "Stop 53").
+  bool refine_position = false;
 
   // @throws std::invalid_argument starting with the field's name.
   void Validate() const;
@@ -75,6 +91,10 @@ class HistogramPoseCorrector {
   // reference's.
   bool AxisShift(const std::vector<double>& scan, int axis_index, const Eigen::Vector2d& axis,
                  const Eigen::Vector2d& robot_W, double* shift_m) const;
+
+  // `shift_m` refined below the bin size on the raw coordinates of the voting scan points.
+  double RefineShift(const std::vector<double>& scan, const std::map<long, double>& scan_votes,
+                     std::vector<double> reference, double shift_m) const;
 
   HistogramOptions histogram_options_;
   PoseCorrectionOptions options_;

@@ -63,6 +63,55 @@ TEST(PoseCorrectionTest, CorridorSideWallsDoNotPullThePositionBack) {
   }
 }
 
+// Odometry that creeps a quarter of a 2 cm bin a scan in x and y, exact scans (sharp walls: each
+// fills one bin, so the correlation's parabola has nothing to fit): refined below the bin, the
+// position stays within 6 mm (one scan with no wall across x keeps its 5 mm creep); whole bins
+// alone let the creep grow past a bin before they take it back (2.7 cm).
+TEST(PoseCorrectionTest, PositionCreepBelowABinIsCorrected) {
+  PoseCorrectionOptions options;
+  options.refine_position = true;
+  HistogramPoseCorrector corrector({}, options);
+  FusionOptions ir_only;
+  ir_only.source = RangeSource::kIrOnly;
+  for (int k = 0; k < 30; ++k) {
+    const msgs::Pose2D truth{-2.0 + 0.15 * k, -0.9, 0.05 * k};
+    const msgs::Pose2D odometry{truth.x_m + 0.005 * k, truth.y_m - 0.005 * k, truth.theta_rad};
+    const std::vector<RangePoint> points =
+        FuseRanges(test::SyntheticScan(Room(), truth, 200, 3.0), nullptr, ir_only);
+    std::vector<LineSegment> lines_R;
+    for (const MapSegment& s : ExtractScanFeatures(points, 200, {}, {}).segments) {
+      lines_R.push_back(s.line);
+    }
+    const msgs::Pose2D corrected = corrector.Correct(odometry, points, lines_R);
+    EXPECT_LT(std::hypot(corrected.x_m - truth.x_m, corrected.y_m - truth.y_m), 0.006)
+        << "scan " << k;
+  }
+}
+
+// The end of a corridor comes into reach while the reference holds only a glimpse of something
+// 2.5 cm before it (one scan saw a post's face there, a bin nearer): exact odometry must stay
+// exact. Matched against those few points alone, the wall's 70 votes took the shift by a whole
+// 2 cm bin (office seed 1, IR only, t = 122.5 s: the east end wall's 13 votes against one point).
+TEST(PoseCorrectionTest, AWallSeenFirstDoesNotFollowAGlimpseInTheReference) {
+  PoseCorrectionOptions options;
+  options.require_reference_support = true;
+  HistogramPoseCorrector corrector({}, options);
+  FusionOptions ir_only;
+  ir_only.source = RangeSource::kIrOnly;
+  const std::vector<test::Wall> corridor = {
+      {{-20, -1}, {20, -1}}, {{20, 1}, {-20, 1}}, {{3.01, -1}, {3.01, 1}}};
+  for (int k = 0; k < 15; ++k) {
+    const msgs::Pose2D truth{-1.5 + 0.15 * k, 0.0, 0.0};  // the end wall within 3 m from k = 11
+    std::vector<test::Wall> world = corridor;
+    if (k == 10) world.push_back({{2.985, 0.0}, {2.985, 0.15}});  // the glimpse, 2.99 m away
+    const std::vector<RangePoint> points =
+        FuseRanges(test::SyntheticScan(world, truth, 720, 3.0), nullptr, ir_only);
+    const msgs::Pose2D corrected = corrector.Correct(truth, points);
+    EXPECT_NEAR(corrected.x_m, truth.x_m, 0.002) << "scan " << k;
+    EXPECT_NEAR(corrected.y_m, truth.y_m, 0.01) << "scan " << k;
+  }
+}
+
 // A wheel spinning against a wall: the odometry's heading jumps 20 deg in one scan while the robot
 // stands still. The heading window grows with the turn the odometry reports, so the correction
 // finds the truth again (a fixed 3 deg window stays 17 deg off).

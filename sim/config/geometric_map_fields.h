@@ -46,6 +46,8 @@ void VisitFields(A& a, PoseCorrectionOptions& o) {
   a("min_virtual_lines", o.min_virtual_lines);
   a("min_peak_votes", o.min_peak_votes);
   a("reference_scans", o.reference_scans);
+  a("require_reference_support", o.require_reference_support);
+  a("refine_position", o.refine_position);
 }
 
 template <typename A>
