@@ -100,17 +100,6 @@ bool HistogramPoseCorrector::AxisShift(const std::vector<double>& scan, int axis
                                        double* shift_m) const {
   const double bin = options_.position_bin_m;
   const auto bin_of = [&](double c) { return static_cast<long>(std::floor(c / bin)); };
-  std::map<long, double> reference_votes;
-  std::vector<double> reference;  // the coordinates, for the refinement below a bin
-  const double reach = options_.max_shift_m + 10.0;
-  for (const auto& points : recent_points_W_) {
-    for (const AxisPoint& p : points) {
-      if (p.axis == axis_index && (p.p_W - robot_W).squaredNorm() < reach * reach) {
-        reference.push_back(p.p_W.dot(axis));
-        reference_votes[bin_of(reference.back())] += 1.0;
-      }
-    }
-  }
   const int window = static_cast<int>(std::ceil(options_.max_shift_m / bin));
   std::map<long, double> scan_votes;
   for (double c : scan) scan_votes[bin_of(c)] += 1.0;
@@ -124,6 +113,18 @@ bool HistogramPoseCorrector::AxisShift(const std::vector<double>& scan, int axis
     strongest = std::max(strongest, at(b - 1) + v + at(b + 1));
   }
   if (strongest < options_.min_peak_votes) return false;
+  std::map<long, double> reference_votes;
+  std::vector<double> reference;  // the coordinates, kept only for the refinement below a bin
+  const double reach = options_.max_shift_m + 10.0;
+  for (const auto& points : recent_points_W_) {
+    for (const AxisPoint& p : points) {
+      if (p.axis == axis_index && (p.p_W - robot_W).squaredNorm() < reach * reach) {
+        const double c = p.p_W.dot(axis);
+        if (options_.refine_position) reference.push_back(c);
+        reference_votes[bin_of(c)] += 1.0;
+      }
+    }
+  }
   // ... and only its points with min_peak_votes reference points within the shift window vote, at
   // least min_peak_votes of them: a wall seen for the first time has nothing to align with yet,
   // and the few reference points near it (an edge an earlier scan glimpsed) would pick the shift
@@ -131,12 +132,12 @@ bool HistogramPoseCorrector::AxisShift(const std::vector<double>& scan, int axis
   if (options_.require_reference_support) {
     double supported_votes = 0.0;
     for (auto bin_votes = scan_votes.begin(); bin_votes != scan_votes.end();) {
-      double reference = 0.0;
+      double nearby = 0.0;
       for (auto it = reference_votes.lower_bound(bin_votes->first - window);
            it != reference_votes.end() && it->first <= bin_votes->first + window; ++it) {
-        reference += it->second;
+        nearby += it->second;
       }
-      if (reference >= options_.min_peak_votes) {
+      if (nearby >= options_.min_peak_votes) {
         supported_votes += bin_votes->second;
         ++bin_votes;
       } else {
