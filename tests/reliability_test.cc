@@ -70,6 +70,22 @@ std::string ExplorerExperiment(double x_m, double y_m) {
          "output: {snapshot: false}\n";
 }
 
+// A user's data root ($PLYWOOD_ROOT) under `dir`: a copy of the tree's models/ to edit, the rest
+// linked to the source tree. Returns the root.
+fs::path UsersDataRoot(const fs::path& dir) {
+  const fs::path root = dir / "root";
+  fs::create_directories(root);
+  for (const auto& entry : fs::directory_iterator(testing::SourceRoot())) {
+    const std::string name = entry.path().filename().string();
+    if (name == "models") {
+      fs::copy(entry.path(), root / name, fs::copy_options::recursive);
+    } else if (name != "build") {
+      fs::create_directory_symlink(entry.path(), root / name);
+    }
+  }
+  return root;
+}
+
 class ReliabilityTest : public ::testing::Test {
  protected:
   fs::path Dir() {
@@ -1838,16 +1854,7 @@ TEST_F(ReliabilityTest, ASquareWhoseCornersTheRobotCannotReachIsRefused) {
 // robot file and the site, exit 2, nothing written.
 TEST_F(ReliabilityTest, ALaserOnAPanHingeOfTheUsersRobotFileIsRefused) {
   const fs::path dir = Dir();
-  const fs::path root = dir / "root";
-  fs::create_directories(root);
-  for (const auto& entry : fs::directory_iterator(testing::SourceRoot())) {
-    const std::string name = entry.path().filename().string();
-    if (name == "models") {
-      fs::copy(entry.path(), root / name, fs::copy_options::recursive);
-    } else if (name != "build") {
-      fs::create_directory_symlink(entry.path(), root / name);
-    }
-  }
+  const fs::path root = UsersDataRoot(dir);
   const fs::path robot = root / "models" / "p3dx.xml";
   std::string text = Slurp(robot);
   const std::string site =
@@ -1881,16 +1888,7 @@ TEST_F(ReliabilityTest, ALaserOnAPanHingeOfTheUsersRobotFileIsRefused) {
 // a mount half a degree off level (its beams drift 7 cm over 8 m) still runs.
 TEST_F(ReliabilityTest, ASensorSiteOffTheRobotOrTiltedIsRefused) {
   const fs::path dir = Dir();
-  const fs::path root = dir / "root";
-  fs::create_directories(root);
-  for (const auto& entry : fs::directory_iterator(testing::SourceRoot())) {
-    const std::string name = entry.path().filename().string();
-    if (name == "models") {
-      fs::copy(entry.path(), root / name, fs::copy_options::recursive);
-    } else if (name != "build") {
-      fs::create_directory_symlink(entry.path(), root / name);
-    }
-  }
+  const fs::path root = UsersDataRoot(dir);
   const fs::path robot = root / "models" / "p3dx.xml";
   const std::string shipped = Slurp(robot);
   const std::string laser = "<site name=\"laser\" pos=\"0.021 0 0.34\"";
@@ -1953,16 +1951,7 @@ TEST_F(ReliabilityTest, ASensorSiteOffTheRobotOrTiltedIsRefused) {
 // now one line naming the robot file and the geom.
 TEST_F(ReliabilityTest, ARobotFileWhoseBumpersOrWheelsCannotWorkIsRefused) {
   const fs::path dir = Dir();
-  const fs::path root = dir / "root";
-  fs::create_directories(root);
-  for (const auto& entry : fs::directory_iterator(testing::SourceRoot())) {
-    const std::string name = entry.path().filename().string();
-    if (name == "models") {
-      fs::copy(entry.path(), root / name, fs::copy_options::recursive);
-    } else if (name != "build") {
-      fs::create_directory_symlink(entry.path(), root / name);
-    }
-  }
+  const fs::path root = UsersDataRoot(dir);
   const fs::path robot = root / "models" / "p3dx.xml";
   const std::string shipped = Slurp(robot);
   struct Case {

@@ -20,24 +20,34 @@ std::vector<test::Wall> Room() {
   return walls;
 }
 
+// An exact IR-only scan of `world` from `truth`, 3 m cut.
+std::vector<RangePoint> IrScan(const std::vector<test::Wall>& world, const msgs::Pose2D& truth,
+                               int beams = 200) {
+  FusionOptions ir_only;
+  ir_only.source = RangeSource::kIrOnly;
+  return FuseRanges(test::SyntheticScan(world, truth, beams, 3.0), nullptr, ir_only);
+}
+
+// The lines fitted to `points` (a 200-beam scan), which refine the heading.
+std::vector<LineSegment> FittedLines(const std::vector<RangePoint>& points) {
+  std::vector<LineSegment> lines_R;
+  for (const MapSegment& s : ExtractScanFeatures(points, 200, {}, {}).segments) {
+    lines_R.push_back(s.line);
+  }
+  return lines_R;
+}
+
 // The robot drives east along y = -0.9 and turns; its odometry gains 0.4 deg of heading and 1 cm
 // of x per scan. Exact scans: the corrected heading stays within 0.05 deg of the truth and the
 // position within 3 cm (2 cm histogram bins), while the odometry ends 11.6 deg and 0.29 m off.
 TEST(PoseCorrectionTest, HistogramsRemoveOdometryDrift) {
   HistogramPoseCorrector corrector({}, {});  // heading and position
-  FusionOptions ir_only;
-  ir_only.source = RangeSource::kIrOnly;
   const int scans = 30;
   for (int k = 0; k < scans; ++k) {
     const msgs::Pose2D truth{-2.0 + 0.15 * k, -0.9, 0.05 * k};
     const msgs::Pose2D odometry{truth.x_m + 0.01 * k, truth.y_m, truth.theta_rad + 0.4 * kDeg * k};
-    const std::vector<RangePoint> points =
-        FuseRanges(test::SyntheticScan(Room(), truth, 200, 3.0), nullptr, ir_only);
-    std::vector<LineSegment> lines_R;  // the fitted lines refine the heading
-    for (const MapSegment& s : ExtractScanFeatures(points, 200, {}, {}).segments) {
-      lines_R.push_back(s.line);
-    }
-    const msgs::Pose2D corrected = corrector.Correct(odometry, points, lines_R);
+    const std::vector<RangePoint> points = IrScan(Room(), truth);
+    const msgs::Pose2D corrected = corrector.Correct(odometry, points, FittedLines(points));
     EXPECT_LT(std::abs(msgs::WrapAngle(corrected.theta_rad - truth.theta_rad)), 0.05 * kDeg)
         << "scan " << k;
     EXPECT_LT(std::hypot(corrected.x_m - truth.x_m, corrected.y_m - truth.y_m), 0.03)
@@ -50,13 +60,10 @@ TEST(PoseCorrectionTest, HistogramsRemoveOdometryDrift) {
 // not vote on the shift along the corridor (they pulled it back by up to max_shift_m a scan).
 TEST(PoseCorrectionTest, CorridorSideWallsDoNotPullThePositionBack) {
   HistogramPoseCorrector corrector({}, {});
-  FusionOptions ir_only;
-  ir_only.source = RangeSource::kIrOnly;
   const std::vector<test::Wall> corridor = {{{-20, -1}, {20, -1}}, {{20, 1}, {-20, 1}}};
   for (int k = 0; k < 30; ++k) {
     const msgs::Pose2D truth{0.15 * k, 0.5, 0.0};  // 0.5 m from a wall: dense points near it
-    const std::vector<RangePoint> points =
-        FuseRanges(test::SyntheticScan(corridor, truth, 720, 3.0), nullptr, ir_only);
+    const std::vector<RangePoint> points = IrScan(corridor, truth, 720);
     const msgs::Pose2D corrected = corrector.Correct(truth, points);
     EXPECT_NEAR(corrected.x_m, truth.x_m, 1e-9) << "scan " << k;
     EXPECT_NEAR(corrected.y_m, truth.y_m, 0.01) << "scan " << k;
@@ -71,18 +78,11 @@ TEST(PoseCorrectionTest, PositionCreepBelowABinIsCorrected) {
   PoseCorrectionOptions options;
   options.refine_position = true;
   HistogramPoseCorrector corrector({}, options);
-  FusionOptions ir_only;
-  ir_only.source = RangeSource::kIrOnly;
   for (int k = 0; k < 30; ++k) {
     const msgs::Pose2D truth{-2.0 + 0.15 * k, -0.9, 0.05 * k};
     const msgs::Pose2D odometry{truth.x_m + 0.005 * k, truth.y_m - 0.005 * k, truth.theta_rad};
-    const std::vector<RangePoint> points =
-        FuseRanges(test::SyntheticScan(Room(), truth, 200, 3.0), nullptr, ir_only);
-    std::vector<LineSegment> lines_R;
-    for (const MapSegment& s : ExtractScanFeatures(points, 200, {}, {}).segments) {
-      lines_R.push_back(s.line);
-    }
-    const msgs::Pose2D corrected = corrector.Correct(odometry, points, lines_R);
+    const std::vector<RangePoint> points = IrScan(Room(), truth);
+    const msgs::Pose2D corrected = corrector.Correct(odometry, points, FittedLines(points));
     EXPECT_LT(std::hypot(corrected.x_m - truth.x_m, corrected.y_m - truth.y_m), 0.006)
         << "scan " << k;
   }
@@ -96,16 +96,13 @@ TEST(PoseCorrectionTest, AWallSeenFirstDoesNotFollowAGlimpseInTheReference) {
   PoseCorrectionOptions options;
   options.require_reference_support = true;
   HistogramPoseCorrector corrector({}, options);
-  FusionOptions ir_only;
-  ir_only.source = RangeSource::kIrOnly;
   const std::vector<test::Wall> corridor = {
       {{-20, -1}, {20, -1}}, {{20, 1}, {-20, 1}}, {{3.01, -1}, {3.01, 1}}};
   for (int k = 0; k < 15; ++k) {
     const msgs::Pose2D truth{-1.5 + 0.15 * k, 0.0, 0.0};  // the end wall within 3 m from k = 11
     std::vector<test::Wall> world = corridor;
     if (k == 10) world.push_back({{2.985, 0.0}, {2.985, 0.15}});  // the glimpse, 2.99 m away
-    const std::vector<RangePoint> points =
-        FuseRanges(test::SyntheticScan(world, truth, 720, 3.0), nullptr, ir_only);
+    const std::vector<RangePoint> points = IrScan(world, truth, 720);
     const msgs::Pose2D corrected = corrector.Correct(truth, points);
     EXPECT_NEAR(corrected.x_m, truth.x_m, 0.002) << "scan " << k;
     EXPECT_NEAR(corrected.y_m, truth.y_m, 0.01) << "scan " << k;
@@ -117,18 +114,11 @@ TEST(PoseCorrectionTest, AWallSeenFirstDoesNotFollowAGlimpseInTheReference) {
 // finds the truth again (a fixed 3 deg window stays 17 deg off).
 TEST(PoseCorrectionTest, HeadingJumpOfAJammedWheelIsCorrected) {
   HistogramPoseCorrector corrector({}, {});
-  FusionOptions ir_only;
-  ir_only.source = RangeSource::kIrOnly;
   for (int k = 0; k < 6; ++k) {
     const msgs::Pose2D truth{-2.0, -0.9, 0.1};
     const msgs::Pose2D odometry{truth.x_m, truth.y_m, truth.theta_rad + (k >= 3 ? 20 * kDeg : 0.0)};
-    const std::vector<RangePoint> points =
-        FuseRanges(test::SyntheticScan(Room(), truth, 200, 3.0), nullptr, ir_only);
-    std::vector<LineSegment> lines_R;
-    for (const MapSegment& s : ExtractScanFeatures(points, 200, {}, {}).segments) {
-      lines_R.push_back(s.line);
-    }
-    const msgs::Pose2D corrected = corrector.Correct(odometry, points, lines_R);
+    const std::vector<RangePoint> points = IrScan(Room(), truth);
+    const msgs::Pose2D corrected = corrector.Correct(odometry, points, FittedLines(points));
     EXPECT_LT(std::abs(msgs::WrapAngle(corrected.theta_rad - truth.theta_rad)), 0.05 * kDeg)
         << "scan " << k;
   }
@@ -139,13 +129,10 @@ TEST(PoseCorrectionTest, OffLeavesOdometryAlone) {
   off.heading = false;
   off.position = false;
   HistogramPoseCorrector corrector({}, off);
-  FusionOptions ir_only;
-  ir_only.source = RangeSource::kIrOnly;
   for (int k = 0; k < 5; ++k) {
     const msgs::Pose2D truth{-2.0 + 0.15 * k, -0.9, 0.05 * k};
     const msgs::Pose2D odometry{truth.x_m, truth.y_m + 0.02 * k, truth.theta_rad + kDeg * k};
-    const std::vector<RangePoint> points =
-        FuseRanges(test::SyntheticScan(Room(), truth, 200, 3.0), nullptr, ir_only);
+    const std::vector<RangePoint> points = IrScan(Room(), truth);
     const msgs::Pose2D corrected = corrector.Correct(odometry, points);
     EXPECT_NEAR(corrected.x_m, odometry.x_m, 1e-12);
     EXPECT_NEAR(corrected.y_m, odometry.y_m, 1e-12);
