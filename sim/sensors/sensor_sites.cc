@@ -10,6 +10,7 @@
 #include "msgs/angle_units.h"
 #include "msgs/shortest_number.h"
 #include "sim/config/config_error.h"
+#include "sim/world/setup_checks.h"
 
 namespace plywood::sim {
 namespace {
@@ -38,11 +39,8 @@ RobotExtent ExtentOfTheRobot(const Scene& scene) {
       Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(d->xmat + 9 * base);
   RobotExtent extent;
   for (int g = 0; g < m->ngeom; ++g) {
-    bool on_robot = false;
-    for (int b = m->geom_bodyid[g]; b != 0 && !on_robot; b = m->body_parentid[b])
-      on_robot = b == base;
     const double r = m->geom_rbound[g];
-    if (!on_robot || !(r > 0.0)) continue;  // planes have no bounding sphere
+    if (!IsOnTheRobot(scene, g) || !(r > 0.0)) continue;  // planes have no bounding sphere
     const Eigen::Vector3d p_B =
         R_WB.transpose() *
         (Eigen::Vector3d(d->geom_xpos[3 * g], d->geom_xpos[3 * g + 1], d->geom_xpos[3 * g + 2]) -

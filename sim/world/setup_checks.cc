@@ -48,15 +48,6 @@ std::string At(const msgs::Pose2D& pose) {
   return "(" + msgs::ShortestNumber(pose.x_m) + ", " + msgs::ShortestNumber(pose.y_m) + ")";
 }
 
-// True when the geom hangs under the robot's base body (the robot's own, whatever its group).
-bool IsOnTheRobot(const Scene& scene, int geom) {
-  const mjModel* m = scene.model();
-  for (int b = m->geom_bodyid[geom]; b != 0; b = m->body_parentid[b]) {
-    if (b == scene.base_body_id()) return true;
-  }
-  return false;
-}
-
 // What the robot's geoms collide with, all together (MuJoCo's contype / conaffinity bits), and
 // the top of its colliding geoms' bounding spheres.
 struct RobotContactMasks {
@@ -96,6 +87,14 @@ std::string ShapeAndName(const mjModel* m, int geom) {
 }
 
 }  // namespace
+
+bool IsOnTheRobot(const Scene& scene, int geom) {
+  const mjModel* m = scene.model();
+  for (int b = m->geom_bodyid[geom]; b != 0; b = m->body_parentid[b]) {
+    if (b == scene.base_body_id()) return true;
+  }
+  return false;
+}
 
 std::optional<std::string> GeomTheGroundTruthCannotHold(const Scene& scene, double height_m) {
   const mjModel* m = scene.model();

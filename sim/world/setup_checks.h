@@ -7,6 +7,9 @@
 
 namespace plywood::sim {
 
+// True when the geom hangs under the robot's base body (the robot's own, whatever its group).
+bool IsOnTheRobot(const Scene& scene, int geom);
+
 // What makes a compiled scene unfit to simulate, checked after compilation and before the first
 // step. Each returns a description of the problem (for a one-line error), or nullopt when fine.
 
