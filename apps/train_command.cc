@@ -23,8 +23,9 @@ std::vector<int> ParseHidden(const std::string& text) {
   std::size_t start = 0;
   while (true) {
     const std::size_t comma = text.find(',', start);
-    const std::string item =
+    std::string item =
         text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    item.erase(item.find_last_not_of(" \t") + 1);  // "16 ,8" as "16, 8" (stoi skips leading ones)
     std::size_t used = 0;
     try {
       hidden.push_back(std::stoi(item, &used));

@@ -95,8 +95,6 @@ int Seed004RansacProtocol(const ProtocolContext& context) {
   const perception::RansacExtractor extractor(ransac);
   sim::Metrics metrics;
   std::vector<LinesCsvRow> line_rows;  // lines.csv: the whole run is scan 0, in the world frame
-  if (!context.quiet)
-    std::printf("\nseed 004 RANSAC on the accumulated cloud (%s)\n", config.name.c_str());
   for (const bool odometry : {false, true}) {
     const std::string name = odometry ? "odometry" : "truth";
     const Cloud cloud = Accumulate(record, odometry, scan_stride, beam_stride);
@@ -126,6 +124,8 @@ int Seed004RansacProtocol(const ProtocolContext& context) {
               " points (scan_stride " + std::to_string(scan_stride) + ", beam_stride " +
               std::to_string(beam_stride) + "): recall is undefined, nothing to score against");
     }
+    if (!context.quiet && !odometry)  // after the check: a refused cloud prints nothing
+      std::printf("\nseed 004 RANSAC on the accumulated cloud (%s)\n", config.name.c_str());
     int false_lines = 0, false_on_legs = 0;
     std::string csv =
         "line,alpha_rad,r_m,ax_m,ay_m,bx_m,by_m,points,matched_face,non_wall_fraction\n";
