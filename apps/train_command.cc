@@ -3,7 +3,6 @@
 
 #include <cstdio>
 #include <memory>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -17,11 +16,16 @@ namespace {
 // Whole numbers in [1, 100000]; the range is in the error, not in every help line.
 const CLI::Validator kCount = CLI::Range(1, 100000).description("");
 
+// Sizes split at every comma: an empty size (`16,`, `,16`, `16,,8`) is refused, where
+// std::getline dropped a trailing one and `16,` trained one layer of 16 without a word.
 std::vector<int> ParseHidden(const std::string& text) {
   std::vector<int> hidden;
-  std::stringstream s(text);
-  std::string item;
-  while (std::getline(s, item, ',')) {
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    std::string item =
+        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    item.erase(item.find_last_not_of(" \t") + 1);  // "16 ,8" as "16, 8" (stoi skips leading ones)
     std::size_t used = 0;
     try {
       hidden.push_back(std::stoi(item, &used));
@@ -29,10 +33,14 @@ std::vector<int> ParseHidden(const std::string& text) {
       used = 0;
     }
     if (used == 0 || used != item.size()) {
-      throw UsageError("train: --hidden: expected sizes like 16,16, got '" + text + "'");
+      throw UsageError("train: --hidden: expected sizes like 16,16, got '" + text + "'" +
+                       (item.find_first_not_of(' ') == std::string::npos
+                            ? " (an empty size between, before or after the commas)"
+                            : ""));
     }
+    if (comma == std::string::npos) return hidden;
+    start = comma + 1;
   }
-  return hidden;
 }
 
 std::string Join(const std::vector<int>& sizes) {

@@ -4,6 +4,8 @@
 // plywood view RUN_DIR [--time T] [--screenshot PNG] [--size WxH]
 // plywood view --bench [EXPERIMENT.yaml] [--bench-seconds S]
 
+#include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <chrono>
 #include <climits>
@@ -109,6 +111,14 @@ void CheckViewFlags(const ViewFlags& flags, bool time_given, bool replay) {
     throw UsageError("view: --screenshot: " + flags.screenshot +
                      " is a folder; give the PNG file's name");
   }
+  // The frame is encoded as PNG whatever the name says: `shot.jpg` held PNG bytes (s54).
+  std::string extension = picture.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension != ".png") {
+    throw UsageError("view: --screenshot: " + flags.screenshot +
+                     ": the screenshot is written as PNG; give a name ending in .png");
+  }
   const std::filesystem::path folder = picture.has_parent_path() ? picture.parent_path() : ".";
   if (!std::filesystem::is_directory(folder, error)) {
     throw UsageError("view: --screenshot: " + flags.screenshot + ": no folder " + folder.string() +
@@ -136,6 +146,15 @@ void RefuseFlagsTheModeIgnores(const CLI::App& cli, const ViewFlags& flags, bool
   if (flags.bench) {
     refuse_given({"--out", "--force", "--screenshot", "--speed", "--paused", "--exit-at-end"},
                  "--bench runs at 1x with every overlay on and writes no run; leave it out");
+    // The bench lasts --bench-seconds, never the experiment's duration_s: `--set duration_s=0.2`
+    // ran the bench's 10 s without a word (s54).
+    for (const std::string& assignment : flags.overrides) {
+      if (assignment.rfind("duration_s=", 0) == 0) {
+        throw UsageError("view: --set " + assignment +
+                         ": --bench runs --bench-seconds (default 10), not the experiment's "
+                         "duration_s; give --bench-seconds instead");
+      }
+    }
     return;
   }
   refuse_given({"--bench-seconds"}, "only --bench takes it (a live run lasts duration_s)");

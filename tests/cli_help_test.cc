@@ -158,6 +158,11 @@ TEST(CliHelpTest, UsageErrorsAreOneLineNamingTheCulpritWithExitCode2) {
       {"train sonar-net --epochs 0", "--epochs"},
       {"train sonar-net --rooms 2.5", "--rooms"},
       {"train sonar-net --hidden 16,x", "--hidden"},
+      // s54: a trailing comma was dropped: `16,` trained one layer of 16.
+      {"train sonar-net --hidden 16,",
+       "train: --hidden: expected sizes like 16,16, got '16,' (an "
+       "empty size between, before or after the commas)"},
+      {"train sonar-net --hidden 16,,8", "train: --hidden: expected sizes like 16,16, got '16,,8'"},
       // fuzz30: these ran for ever, named another field, or (a folder for --out) failed after
       // training with exit 1.
       {"bench --min-wall 1e300", "--min-wall: must be at most 3600"},

@@ -1117,6 +1117,22 @@ TEST_F(ReliabilityTest, AnOdometryCloudWithoutAnEstimatorIsRefused) {
                  "odometry pose, but the run has no odometry estimator (odometry: names none)"});
 }
 
+// audit s54: a seed004_ransac cloud in which no wall surface holds ransac.min_points points
+// (seed004_ransac.yaml with `scan_stride: 1e9`: one scan, 89 points) scored recall 1, precision 1,
+// sigmas 0 over no line, exit 0.
+TEST_F(ReliabilityTest, ARansacCloudWithNoWallToFindIsRefused) {
+  const std::string yaml = HallExperiment(0.0, 0.0,
+                                          "protocol: seed004_ransac\n"
+                                          "odometry: {encoder: {}}\n"
+                                          "seed004_ransac: {scan_stride: 1000}\n",
+                                          "{encoders: {}, laser: {}}");
+  ExpectRefused(
+      yaml, "",
+      {"experiment.yaml: seed004_ransac: no wall surface holds ransac.min_points (100) of "
+       "the truth cloud's 91 points (scan_stride 1000, beam_stride 4): recall is "
+       "undefined, nothing to score against"});
+}
+
 TEST_F(ReliabilityTest, AnUnreadableExperimentIsNotReportedAsMissing) {
   const fs::path dir = Dir();
   const fs::path folder = dir / "folder.yaml";
@@ -1918,6 +1934,12 @@ TEST_F(ReliabilityTest, ASensorSiteOffTheRobotOrTiltedIsRefused) {
        "sensors.sonar: robot 'p3dx' cannot carry it: " + robot.string() +
            ": sonar_3: the site at (0.166, 0.027, 0.21) in the robot frame has its scan plane (its "
            "x-y plane) tilted 90 deg from level: within range_max_m 5"},
+      // s54: in a corner of that box, over no colliding geom: beside the hall's east wall the
+      // site stood inside it at the spawn and every beam read the wall's far face (0.009 to
+      // 4.3 m, wall_hit_fraction 1), exit 0; a wall-following robot passing a wall does the same.
+      {"corner", laser, "<site name=\"laser\" pos=\"0.235 0.3 0.34\"",
+       "laser: the site at (0.235, 0.3, 0.34) in the robot frame is over no colliding geom of the "
+       "robot (seen from above): a wall can enclose it without touching the robot"},
       {"half a degree", laser, laser + " euler=\"0 0.5 0\"", ""},
   };
   ASSERT_EQ(setenv("PLYWOOD_ROOT", root.c_str(), 1), 0);

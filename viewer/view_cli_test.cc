@@ -169,6 +169,13 @@ TEST_F(ViewCliTest, FlagsThatCannotBeHonouredAreRefusedBeforeAnythingRuns) {
       {"--bench --out " + (dir / "live").string(),
        "view: --out: --bench runs at 1x with every overlay on and writes no run"},
       {live + " --bench-seconds 5", "view: --bench-seconds: only --bench takes it"},
+      // s54: a .jpg name held PNG bytes; the bench ran its 10 s whatever --set duration_s said.
+      {run.string() + " --screenshot x.jpg",
+       "view: --screenshot: x.jpg: the screenshot is written as PNG; give a name ending in .png"},
+      {live + " --screenshot x", "view: --screenshot: x: the screenshot is written as PNG"},
+      {"--bench --set duration_s=0.2",
+       "view: --set duration_s=0.2: --bench runs --bench-seconds (default 10), not the "
+       "experiment's duration_s; give --bench-seconds instead"},
   };
   for (const auto& [args, culprit] : cases) {
     SCOPED_TRACE(args);
@@ -179,6 +186,7 @@ TEST_F(ViewCliTest, FlagsThatCannotBeHonouredAreRefusedBeforeAnythingRuns) {
   }
   EXPECT_FALSE(std::filesystem::exists(dir / "live"));
   EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.jpg"));
 }
 
 // The titles of the windows on `display` (xwininfo), one a line.

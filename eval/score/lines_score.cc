@@ -1,6 +1,7 @@
 #include "eval/score/lines_score.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <map>
@@ -12,6 +13,7 @@
 #include "eval/lines/lines_csv.h"
 #include "eval/score/run_laser_scans.h"
 #include "eval/score/trajectory_file.h"
+#include "msgs/shortest_number.h"
 #include "sim/config/config_error.h"
 
 namespace plywood::eval {
@@ -33,15 +35,17 @@ void RequireNearItsScansReturns(const LinesCsvRow& row, const TruthScan& scan,
   }
   const perception::LineSegment& s = row.segment;
   for (const auto& [end, field] : {std::pair{s.start, "x1_m, y1_m"}, {s.end, "x2_m, y2_m"}}) {
+    // hypot, not norm: an end at 1e300 is 1e300 m away, where the squared norm overflowed and
+    // the message read "lies null m" (s54).
     double nearest = std::numeric_limits<double>::infinity();
     for (const Eigen::Vector2d& p : scan.points.points)
-      nearest = std::min(nearest, (p - end).norm());
+      nearest = std::min(nearest, std::hypot(p.x() - end.x(), p.y() - end.y()));
     if (nearest <= kMaxEndToReturnM) continue;
     throw sim::ConfigError(
         where, field,
         "the end (" + sim::FormatNumber(end.x()) + ", " + sim::FormatNumber(end.y()) + ") lies " +
-            sim::FormatNumber(nearest) + " m from every return of " + scan_name + ", more than " +
-            sim::FormatNumber(kMaxEndToReturnM) +
+            msgs::ShortestNumber(nearest) + " m from every return of " + scan_name +
+            ", more than " + sim::FormatNumber(kMaxEndToReturnM) +
             " m: segments are in their scan's sensor frame (laser_scans.csv), not the world's");
   }
 }

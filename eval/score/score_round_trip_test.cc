@@ -209,6 +209,20 @@ TEST(ScoreRoundTripTest, ALinesFileInTheWorldFrameIsRefused) {
         << what;
   }
   // The run's own file, whose ends lie on its scans' returns, still scores (the tests above).
+  // s54: an end 1e300 m out read "lies null m from every return" (the squared norm overflowed).
+  const fs::path far = testing::WriteFile(testing::MakeTempDir("score_far_end") / "far.csv",
+                                          "scan,extractor,x1_m,y1_m,x2_m,y2_m\n"
+                                          "0,mine,-1e300,0,1,0\n");
+  try {
+    ScoreLinesFile(RunDir(), far);
+    ADD_FAILURE() << "an end 1e300 m out was scored";
+  } catch (const sim::ConfigError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(far.string() + ":2: x1_m, y1_m: the end (-1e+300, 0) lies 1e+300 m from "
+                                       "every return of scan 0"),
+              std::string::npos)
+        << what;
+  }
 }
 
 // audit s48: a lines file appended to itself scored each segment twice, exit 0: the same recall

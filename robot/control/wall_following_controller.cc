@@ -6,6 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "msgs/shortest_number.h"
 #include "robot/control/tick_time_slack.h"
@@ -141,6 +142,17 @@ void WallFollowingOptions::Validate() const {
   }
   internal::RequirePositive("side_window_rad", side_window_rad);
   internal::RequirePositive("front_window_rad", front_window_rad);
+  // Half-angles about an axis, tested through their cosines: beyond pi they wrap round, and
+  // front_window_rad 7 ran exactly as 7 - 2 pi = 0.717 (s54).
+  for (const auto& [name, half_angle] :
+       {std::pair{"side_window_rad", side_window_rad}, {"front_window_rad", front_window_rad}}) {
+    if (half_angle > std::numbers::pi) {
+      throw std::invalid_argument(std::string(name) +
+                                  ": must be at most pi (a half-angle about its axis; a wider one "
+                                  "wraps round), got " +
+                                  msgs::ShortestNumber(half_angle));
+    }
+  }
   internal::RequirePositive("max_wall_range_m", max_wall_range_m);
   if (max_wall_range_m <= distance_m) {
     throw std::invalid_argument("max_wall_range_m: must exceed distance_m, got " +

@@ -283,5 +283,19 @@ TEST(WallFollowingControllerTest, InvalidOptionsThrowNamingTheField) {
   ExpectThrowsNaming(with([](auto& o) { o.duration_s = -1; }), "duration_s");
 }
 
+// s54: the windows are half-angles compared through their cosines, so one beyond pi wrapped round:
+// front_window_rad 7 ran byte-identical to 7 - 2 pi = 0.717 rad, exit 0.
+TEST(WallFollowingControllerTest, AWindowWiderThanAHalfTurnIsRefused) {
+  WallFollowingOptions options;
+  options.front_window_rad = 7.0;
+  ExpectThrowsNaming(options, "front_window_rad");
+  options.front_window_rad = 0.35;
+  options.side_window_rad = 4.0;
+  ExpectThrowsNaming(options, "side_window_rad");
+  options.side_window_rad = std::numbers::pi;  // every point on the side: still a window
+  options.front_window_rad = std::numbers::pi;
+  EXPECT_NO_THROW(WallFollowingController(P3dxSpec(), options));
+}
+
 }  // namespace
 }  // namespace plywood::robot

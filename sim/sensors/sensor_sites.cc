@@ -1,5 +1,7 @@
 #include "sim/sensors/sensor_sites.h"
 
+#include <mujoco/mujoco.h>
+
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -54,6 +56,36 @@ RobotExtent ExtentOfTheRobot(const Scene& scene) {
   return extent;
 }
 
+// Whether the site lies over (or under) a colliding geom of the robot, seen from above: a
+// floor-standing wall can then not reach it without meeting that geom. A vertical ray through the
+// site is tested against each colliding geom of the robot alone.
+bool OverACollidingGeom(const Scene& scene, int site_id, double top_m) {
+  const mjModel* m = scene.model();
+  const mjData* d = scene.data();
+  const int base = scene.base_body_id();
+  const Eigen::Vector3d up(d->xmat[9 * base + 2], d->xmat[9 * base + 5], d->xmat[9 * base + 8]);
+  const Eigen::Vector3d site(d->site_xpos[3 * site_id], d->site_xpos[3 * site_id + 1],
+                             d->site_xpos[3 * site_id + 2]);
+  const Eigen::Vector3d base_W(d->xpos[3 * base], d->xpos[3 * base + 1], d->xpos[3 * base + 2]);
+  // From above the robot's top, straight down through the site.
+  const Eigen::Vector3d start = site + up * (top_m + 1.0 - up.dot(site - base_W));
+  const Eigen::Vector3d down = -up;
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (!IsOnTheRobot(scene, g) || (m->geom_contype[g] == 0 && m->geom_conaffinity[g] == 0)) {
+      continue;
+    }
+    const mjtNum distance =
+        m->geom_type[g] == mjGEOM_MESH
+            ? mj_rayMesh(m, d, g, start.data(), down.data())
+            : (m->geom_type[g] == mjGEOM_PLANE || m->geom_type[g] == mjGEOM_HFIELD
+                   ? -1.0
+                   : mju_rayGeom(d->geom_xpos + 3 * g, d->geom_xmat + 9 * g, m->geom_size + 3 * g,
+                                 start.data(), down.data(), m->geom_type[g]));
+    if (distance >= 0.0) return true;
+  }
+  return false;
+}
+
 // Why a fixed site cannot hold a planar range sensor of `range_max_m`, or nothing.
 std::optional<std::string> OffTheRobotOrTilted(const Scene& scene, int site_id,
                                                double range_max_m) {
@@ -71,6 +103,15 @@ std::optional<std::string> OffTheRobotOrTilted(const Scene& scene, int site_id,
     return at + "lies off the robot: its geoms span x in [" + SiteMm(extent.lo[0]) + ", " +
            SiteMm(extent.hi[0]) + "], y in [" + SiteMm(extent.lo[1]) + ", " + SiteMm(extent.hi[1]) +
            "], z in [0, " + SiteMm(extent.top_m) + "] (their bounding spheres)";
+  }
+  // A site in a corner of that box, off every colliding geom (s54: the laser at (0.235, 0.3,
+  // 0.34) on the P3-DX), is inside a wall whenever the robot stands or passes close to one, and
+  // casts every beam from inside it: the hall's east wall read 0.009 to 4.3 m in every beam.
+  if (!extent.empty() && !OverACollidingGeom(scene, site_id, extent.top_m)) {
+    return at +
+           "is over no colliding geom of the robot (seen from above): a wall can enclose it "
+           "without touching the robot, and its beams would start inside the wall; model its "
+           "mount with a colliding geom under it";
   }
   // The beams lie in the site's x-y plane; the steepest of them climbs or drops sin(tilt) per
   // metre, tilt being the angle between the site's z axis and the vertical.
