@@ -5,6 +5,7 @@
 #include <functional>
 #include <map>
 #include <numbers>
+#include <optional>
 
 #include "msgs/angle_units.h"
 #include "perception/geometric_map/option_checks.h"
@@ -155,13 +156,16 @@ bool HistogramPoseCorrector::AxisShift(const std::vector<double>& scan, int axis
     return sum;
   };
   *shift_m = BestShift(correlation, window) * bin;
-  if (options_.refine_position) *shift_m = RefineShift(scan, scan_votes, reference, *shift_m);
-  return true;
+  if (!options_.refine_position) return true;
+  const std::optional<double> refined = RefineShift(scan, scan_votes, reference, *shift_m);
+  if (refined) *shift_m = *refined;
+  return refined.has_value();
 }
 
-double HistogramPoseCorrector::RefineShift(const std::vector<double>& scan,
-                                           const std::map<long, double>& scan_votes,
-                                           std::vector<double> reference, double shift_m) const {
+std::optional<double> HistogramPoseCorrector::RefineShift(const std::vector<double>& scan,
+                                                          const std::map<long, double>& scan_votes,
+                                                          std::vector<double> reference,
+                                                          double shift_m) const {
   // Below the bin size, as the heading is refined on the fitted lines: the mean signed distance
   // from each voting scan point (shifted) to the reference points within a bin of it, iterated
   // (a flat-kernel mean shift) so that a wall's points, a fraction of a bin off, are matched
@@ -171,11 +175,25 @@ double HistogramPoseCorrector::RefineShift(const std::vector<double>& scan,
   std::sort(reference.begin(), reference.end());
   std::vector<double> prefix(reference.size() + 1, 0.0);
   for (std::size_t i = 0; i < reference.size(); ++i) prefix[i + 1] = prefix[i] + reference[i];
+  const auto votes = [&](double c) {
+    return scan_votes.contains(static_cast<long>(std::floor(c / bin)));
+  };
+  // The correlation's shift is a match only where min_peak_votes scan points find a reference
+  // point within a bin of them, as a peak needs min_peak_votes votes: its sum of products can peak
+  // on a single pair (a wall seen for the first time against an unrelated point of the
+  // reference), which moved the position by up to max_shift_m (docs/geometric_map.md, "Stop 54").
+  // Without such a match the axis is left alone, as without a peak.
   const double coarse = shift_m;
+  const long matched = std::count_if(scan.begin(), scan.end(), [&](double c) {
+    if (!votes(c)) return false;
+    const auto lo = std::lower_bound(reference.begin(), reference.end(), c + coarse - bin);
+    return lo != reference.end() && *lo <= c + coarse + bin;
+  });
+  if (matched < options_.min_peak_votes) return std::nullopt;
   for (int iteration = 0; iteration < 10; ++iteration) {
     double sum = 0.0, count = 0.0;
     for (double c : scan) {
-      if (!scan_votes.contains(static_cast<long>(std::floor(c / bin)))) continue;
+      if (!votes(c)) continue;
       const double at = c + shift_m;
       const auto lo = std::lower_bound(reference.begin(), reference.end(), at - bin);
       const auto hi = std::upper_bound(lo, reference.end(), at + bin);

@@ -2,6 +2,7 @@
 
 #include <deque>
 #include <map>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -25,7 +26,9 @@ namespace plywood::perception {
 //    histograms are cross-correlated with those of the last reference_scans corrected scans within
 //    reach; the best shift within +-max_shift_m corrects x and y (bins of position_bin_m), refined
 //    below the bin (refine_position) by the mean signed distance from the scan's voting points to
-//    the reference's within a bin of them, as the heading is refined on the fitted lines. As in the
+//    the reference's within a bin of them, as the heading is refined on the fitted lines (and the
+//    axis left alone when fewer than min_peak_votes scan points have a reference point within a
+//    bin at the correlation's shift: docs/geometric_map.md, "Stop 54"). As in the
 //    paper's distance histograms, a point votes on an axis only when its virtual line is within
 //    histograms.max_wall_tilt_deg of square to it: the points of a wall along the axis, denser
 //    behind the robot where earlier scans saw it, would otherwise pull every shift back along the
@@ -56,9 +59,11 @@ struct PoseCorrectionOptions {
   // "Stop 53").
   bool require_reference_support = false;
   // The position shift refined below position_bin_m (the scan's wall points against the
-  // reference's within a bin of them), as the heading is on the fitted lines. Off: it lowers the
-  // mean position error in the office and every generated family, but loses a segment's precision
-  // in a few generated runs (docs/geometric_map.md, "Stop 53").
+  // reference's within a bin of them), as the heading is on the fitted lines; a shift matched by
+  // fewer than min_peak_votes scan points leaves the axis alone. Off: it lowers the mean position
+  // error in the office and every generated family, but loses a segment's precision in a few
+  // generated runs and raises the office's final position error (docs/geometric_map.md, "Stop 53",
+  // "Stop 54").
   bool refine_position = false;
 
   // @throws std::invalid_argument starting with the field's name.
@@ -92,9 +97,11 @@ class HistogramPoseCorrector {
   bool AxisShift(const std::vector<double>& scan, int axis_index, const Eigen::Vector2d& axis,
                  const Eigen::Vector2d& robot_W, double* shift_m) const;
 
-  // `shift_m` refined below the bin size on the raw coordinates of the voting scan points.
-  double RefineShift(const std::vector<double>& scan, const std::map<long, double>& scan_votes,
-                     std::vector<double> reference, double shift_m) const;
+  // `shift_m` refined below the bin size on the raw coordinates of the voting scan points; none
+  // when fewer than min_peak_votes of them have a reference point within a bin at `shift_m`.
+  std::optional<double> RefineShift(const std::vector<double>& scan,
+                                    const std::map<long, double>& scan_votes,
+                                    std::vector<double> reference, double shift_m) const;
 
   HistogramOptions histogram_options_;
   PoseCorrectionOptions options_;

@@ -109,6 +109,30 @@ TEST(PoseCorrectionTest, AWallSeenFirstDoesNotFollowAGlimpseInTheReference) {
   }
 }
 
+// The end of a corridor comes into reach with nothing of it in the reference, while a person
+// walks by: seen 6 cm nearer in the scan before (a few points each time). The correlation's peak
+// is those points against the person's earlier ones (the only pairs within max_shift_m), which
+// moved x by 6 cm (generated columns_s1_00006 seed 1, t = 141 s: one pair moved y by 8 cm). With
+// refine_position a shift needs min_peak_votes scan points with a reference point within a bin
+// of them, so x is left alone and exact odometry stays exact.
+TEST(PoseCorrectionTest, AShiftMatchedByTooFewPointsLeavesTheAxisAlone) {
+  PoseCorrectionOptions options;
+  options.refine_position = true;
+  HistogramPoseCorrector corrector({}, options);
+  const std::vector<test::Wall> corridor = {
+      {{-20, -1}, {20, -1}}, {{20, 1}, {-20, 1}}, {{3.01, -1}, {3.01, 1}}};
+  for (int k = 0; k < 13; ++k) {
+    const msgs::Pose2D truth{-1.5 + 0.15 * k, 0.0, 0.0};  // the end wall within 3 m from k = 11
+    std::vector<test::Wall> world = corridor;
+    if (k == 10) world.push_back({{1.94, -0.35}, {1.94, -0.2}});  // the person's front
+    if (k == 11) world.push_back({{2.0, -0.35}, {2.0, -0.2}});
+    const std::vector<RangePoint> points = IrScan(world, truth, 720);
+    const msgs::Pose2D corrected = corrector.Correct(truth, points);
+    EXPECT_NEAR(corrected.x_m, truth.x_m, 0.002) << "scan " << k;
+    EXPECT_NEAR(corrected.y_m, truth.y_m, 0.01) << "scan " << k;
+  }
+}
+
 // A wheel spinning against a wall: the odometry's heading jumps 20 deg in one scan while the robot
 // stands still. The heading window grows with the turn the odometry reports, so the correction
 // finds the truth again (a fixed 3 deg window stays 17 deg off).
