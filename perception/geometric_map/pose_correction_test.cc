@@ -20,6 +20,12 @@ std::vector<test::Wall> Room() {
   return walls;
 }
 
+// A corridor 2 m wide, driven east from x -1.5: its end wall at x 3.01 comes within the IR's
+// 3 m when the robot passes x 0.01.
+std::vector<test::Wall> CorridorToAnEndWall() {
+  return {{{-20, -1}, {20, -1}}, {{20, 1}, {-20, 1}}, {{3.01, -1}, {3.01, 1}}};
+}
+
 // An exact IR-only scan of `world` from `truth`, 3 m cut.
 std::vector<RangePoint> IrScan(const std::vector<test::Wall>& world, const msgs::Pose2D& truth,
                                int beams = 200) {
@@ -96,8 +102,7 @@ TEST(PoseCorrectionTest, AWallSeenFirstDoesNotFollowAGlimpseInTheReference) {
   PoseCorrectionOptions options;
   options.require_reference_support = true;
   HistogramPoseCorrector corrector({}, options);
-  const std::vector<test::Wall> corridor = {
-      {{-20, -1}, {20, -1}}, {{20, 1}, {-20, 1}}, {{3.01, -1}, {3.01, 1}}};
+  const std::vector<test::Wall> corridor = CorridorToAnEndWall();
   for (int k = 0; k < 15; ++k) {
     const msgs::Pose2D truth{-1.5 + 0.15 * k, 0.0, 0.0};  // the end wall within 3 m from k = 11
     std::vector<test::Wall> world = corridor;
@@ -119,8 +124,7 @@ TEST(PoseCorrectionTest, AShiftMatchedByTooFewPointsLeavesTheAxisAlone) {
   PoseCorrectionOptions options;
   options.refine_position = true;
   HistogramPoseCorrector corrector({}, options);
-  const std::vector<test::Wall> corridor = {
-      {{-20, -1}, {20, -1}}, {{20, 1}, {-20, 1}}, {{3.01, -1}, {3.01, 1}}};
+  const std::vector<test::Wall> corridor = CorridorToAnEndWall();
   for (int k = 0; k < 13; ++k) {
     const msgs::Pose2D truth{-1.5 + 0.15 * k, 0.0, 0.0};  // the end wall within 3 m from k = 11
     std::vector<test::Wall> world = corridor;
