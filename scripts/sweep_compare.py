@@ -18,9 +18,6 @@ import math
 import os
 import sys
 
-RUN_COLUMNS = ("experiment", "world", "family", "profile", "seed")
-
-
 def read_sweep(path):
     """The rows of a sweep's results.csv and its set axes (from sweep.json beside it)."""
     folder = path if os.path.isdir(path) else os.path.dirname(path) or "."

@@ -175,33 +175,30 @@ std::optional<double> HistogramPoseCorrector::RefineShift(const std::vector<doub
   std::sort(reference.begin(), reference.end());
   std::vector<double> prefix(reference.size() + 1, 0.0);
   for (std::size_t i = 0; i < reference.size(); ++i) prefix[i + 1] = prefix[i] + reference[i];
-  const auto votes = [&](double c) {
-    return scan_votes.contains(static_cast<long>(std::floor(c / bin)));
-  };
-  // The correlation's shift is a match only where min_peak_votes scan points find a reference
-  // point within a bin of them, as a peak needs min_peak_votes votes: its sum of products can peak
-  // on a single pair (a wall seen for the first time against an unrelated point of the
-  // reference), which moved the position by up to max_shift_m (docs/geometric_map.md, "Stop 54").
-  // Without such a match the axis is left alone, as without a peak.
+  std::vector<double> voting;  // the scan points in bins that voted, in scan order
+  for (double c : scan) {
+    if (scan_votes.contains(static_cast<long>(std::floor(c / bin)))) voting.push_back(c);
+  }
   const double coarse = shift_m;
-  const long matched = std::count_if(scan.begin(), scan.end(), [&](double c) {
-    if (!votes(c)) return false;
-    const auto lo = std::lower_bound(reference.begin(), reference.end(), c + coarse - bin);
-    return lo != reference.end() && *lo <= c + coarse + bin;
-  });
-  if (matched < options_.min_peak_votes) return std::nullopt;
   for (int iteration = 0; iteration < 10; ++iteration) {
     double sum = 0.0, count = 0.0;
-    for (double c : scan) {
-      if (!votes(c)) continue;
+    long matched = 0;
+    for (double c : voting) {
       const double at = c + shift_m;
       const auto lo = std::lower_bound(reference.begin(), reference.end(), at - bin);
       const auto hi = std::upper_bound(lo, reference.end(), at + bin);
       const double n = static_cast<double>(hi - lo);
       if (n == 0.0) continue;
+      ++matched;
       sum += prefix[hi - reference.begin()] - prefix[lo - reference.begin()] - n * at;
       count += n;
     }
+    // The correlation's shift is a match only where min_peak_votes scan points find a reference
+    // point within a bin of them, as a peak needs min_peak_votes votes: its sum of products can
+    // peak on a single pair (a wall seen for the first time against an unrelated point of the
+    // reference), which moved the position by up to max_shift_m (docs/geometric_map.md, "Stop
+    // 54"). Without such a match the axis is left alone, as without a peak.
+    if (iteration == 0 && matched < options_.min_peak_votes) return std::nullopt;
     if (count < options_.min_peak_votes) break;
     const double step = sum / count;
     shift_m += step;

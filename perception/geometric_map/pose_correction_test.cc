@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <numbers>
 
 #include "perception/geometric_map/scan_segmentation.h"
@@ -20,18 +21,34 @@ std::vector<test::Wall> Room() {
   return walls;
 }
 
-// A corridor 2 m wide, driven east from x -1.5: its end wall at x 3.01 comes within the IR's
-// 3 m when the robot passes x 0.01.
-std::vector<test::Wall> CorridorToAnEndWall() {
-  return {{{-20, -1}, {20, -1}}, {{20, 1}, {-20, 1}}, {{3.01, -1}, {3.01, 1}}};
-}
-
 // An exact IR-only scan of `world` from `truth`, 3 m cut.
 std::vector<RangePoint> IrScan(const std::vector<test::Wall>& world, const msgs::Pose2D& truth,
                                int beams = 200) {
   FusionOptions ir_only;
   ir_only.source = RangeSource::kIrOnly;
   return FuseRanges(test::SyntheticScan(world, truth, beams, 3.0), nullptr, ir_only);
+}
+
+// Exact odometry driven east down a corridor 2 m wide, from x -1.5 in steps of 0.15 m, for
+// `scans` scans: its end wall at x 3.01 comes within the IR's 3 m from scan 11. `passing` adds
+// walls to the world of the scans it names. The corrected pose must stay on the truth.
+void ExpectExactOdometryStaysExactDownTheCorridor(
+    const PoseCorrectionOptions& options, int scans,
+    const std::map<int, std::vector<test::Wall>>& passing) {
+  HistogramPoseCorrector corrector({}, options);
+  const std::vector<test::Wall> corridor = {
+      {{-20, -1}, {20, -1}}, {{20, 1}, {-20, 1}}, {{3.01, -1}, {3.01, 1}}};
+  for (int k = 0; k < scans; ++k) {
+    const msgs::Pose2D truth{-1.5 + 0.15 * k, 0.0, 0.0};
+    std::vector<test::Wall> world = corridor;
+    if (const auto extra = passing.find(k); extra != passing.end()) {
+      world.insert(world.end(), extra->second.begin(), extra->second.end());
+    }
+    const std::vector<RangePoint> points = IrScan(world, truth, 720);
+    const msgs::Pose2D corrected = corrector.Correct(truth, points);
+    EXPECT_NEAR(corrected.x_m, truth.x_m, 0.002) << "scan " << k;
+    EXPECT_NEAR(corrected.y_m, truth.y_m, 0.01) << "scan " << k;
+  }
 }
 
 // The lines fitted to `points` (a 200-beam scan), which refine the heading.
@@ -101,17 +118,8 @@ TEST(PoseCorrectionTest, PositionCreepBelowABinIsCorrected) {
 TEST(PoseCorrectionTest, AWallSeenFirstDoesNotFollowAGlimpseInTheReference) {
   PoseCorrectionOptions options;
   options.require_reference_support = true;
-  HistogramPoseCorrector corrector({}, options);
-  const std::vector<test::Wall> corridor = CorridorToAnEndWall();
-  for (int k = 0; k < 15; ++k) {
-    const msgs::Pose2D truth{-1.5 + 0.15 * k, 0.0, 0.0};  // the end wall within 3 m from k = 11
-    std::vector<test::Wall> world = corridor;
-    if (k == 10) world.push_back({{2.985, 0.0}, {2.985, 0.15}});  // the glimpse, 2.99 m away
-    const std::vector<RangePoint> points = IrScan(world, truth, 720);
-    const msgs::Pose2D corrected = corrector.Correct(truth, points);
-    EXPECT_NEAR(corrected.x_m, truth.x_m, 0.002) << "scan " << k;
-    EXPECT_NEAR(corrected.y_m, truth.y_m, 0.01) << "scan " << k;
-  }
+  ExpectExactOdometryStaysExactDownTheCorridor(
+      options, 15, {{10, {{{2.985, 0.0}, {2.985, 0.15}}}}});  // the glimpse, 2.99 m away
 }
 
 // The end of a corridor comes into reach with nothing of it in the reference, while a person
@@ -123,18 +131,10 @@ TEST(PoseCorrectionTest, AWallSeenFirstDoesNotFollowAGlimpseInTheReference) {
 TEST(PoseCorrectionTest, AShiftMatchedByTooFewPointsLeavesTheAxisAlone) {
   PoseCorrectionOptions options;
   options.refine_position = true;
-  HistogramPoseCorrector corrector({}, options);
-  const std::vector<test::Wall> corridor = CorridorToAnEndWall();
-  for (int k = 0; k < 13; ++k) {
-    const msgs::Pose2D truth{-1.5 + 0.15 * k, 0.0, 0.0};  // the end wall within 3 m from k = 11
-    std::vector<test::Wall> world = corridor;
-    if (k == 10) world.push_back({{1.94, -0.35}, {1.94, -0.2}});  // the person's front
-    if (k == 11) world.push_back({{2.0, -0.35}, {2.0, -0.2}});
-    const std::vector<RangePoint> points = IrScan(world, truth, 720);
-    const msgs::Pose2D corrected = corrector.Correct(truth, points);
-    EXPECT_NEAR(corrected.x_m, truth.x_m, 0.002) << "scan " << k;
-    EXPECT_NEAR(corrected.y_m, truth.y_m, 0.01) << "scan " << k;
-  }
+  ExpectExactOdometryStaysExactDownTheCorridor(
+      options, 13,
+      {{10, {{{1.94, -0.35}, {1.94, -0.2}}}},  // the person
+       {11, {{{2.0, -0.35}, {2.0, -0.2}}}}});
 }
 
 // A wheel spinning against a wall: the odometry's heading jumps 20 deg in one scan while the robot

@@ -74,14 +74,19 @@ bool OverACollidingGeom(const Scene& scene, int site_id, double top_m) {
     if (!IsOnTheRobot(scene, g) || (m->geom_contype[g] == 0 && m->geom_conaffinity[g] == 0)) {
       continue;
     }
-    const mjtNum distance =
-        m->geom_type[g] == mjGEOM_MESH
-            ? mj_rayMesh(m, d, g, start.data(), down.data())
-            : (m->geom_type[g] == mjGEOM_PLANE || m->geom_type[g] == mjGEOM_HFIELD
-                   ? -1.0
-                   : mju_rayGeom(d->geom_xpos + 3 * g, d->geom_xmat + 9 * g, m->geom_size + 3 * g,
-                                 start.data(), down.data(), m->geom_type[g]));
-    if (distance >= 0.0) return true;
+    switch (m->geom_type[g]) {
+      case mjGEOM_PLANE:
+      case mjGEOM_HFIELD:
+        continue;  // not part of a robot's body
+      case mjGEOM_MESH:
+        if (mj_rayMesh(m, d, g, start.data(), down.data()) >= 0.0) return true;
+        break;
+      default:
+        if (mju_rayGeom(d->geom_xpos + 3 * g, d->geom_xmat + 9 * g, m->geom_size + 3 * g,
+                        start.data(), down.data(), m->geom_type[g]) >= 0.0) {
+          return true;
+        }
+    }
   }
   return false;
 }
