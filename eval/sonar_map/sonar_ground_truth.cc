@@ -39,6 +39,20 @@ ReachableSpace ComputeReachableSpace(const sim::OccupancyRaster& raster,
   return space;
 }
 
+void OccupancyTruth::FitScoredBox() {
+  x0 = raster.width;
+  y0 = raster.height;
+  x1 = y1 = -1;
+  for (int iy = 0; iy < raster.height; ++iy)
+    for (int ix = 0; ix < raster.width; ++ix)
+      if (CellFree(ix, iy)) {
+        x0 = std::min(x0, ix);
+        x1 = std::max(x1, ix);
+        y0 = std::min(y0, iy);
+        y1 = std::max(y1, iy);
+      }
+}
+
 std::unique_ptr<OccupancyTruth> MakeOccupancyTruth(const mjModel* model,
                                                    const Eigen::Vector2d& start_W,
                                                    const std::string& spawn_source) {
@@ -54,16 +68,7 @@ std::unique_ptr<OccupancyTruth> MakeOccupancyTruth(const mjModel* model,
   options.resolution_m = 0.01;
   truth->raster = sim::RasteriseOccupancy(model, options);
   truth->space = ComputeReachableSpace(truth->raster, start_W);
-  truth->x0 = truth->raster.width;
-  truth->y0 = truth->raster.height;
-  for (int iy = 0; iy < truth->raster.height; ++iy)
-    for (int ix = 0; ix < truth->raster.width; ++ix)
-      if (truth->CellFree(ix, iy)) {
-        truth->x0 = std::min(truth->x0, ix);
-        truth->x1 = std::max(truth->x1, ix);
-        truth->y0 = std::min(truth->y0, iy);
-        truth->y1 = std::max(truth->y1, iy);
-      }
+  truth->FitScoredBox();
   if (truth->x1 < truth->x0) {
     throw sim::ConfigError(spawn_source, "robot.spawn",
                            "(" + sim::FormatNumber(start_W.x()) + ", " +

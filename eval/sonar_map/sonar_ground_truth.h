@@ -35,6 +35,8 @@ struct OccupancyTruth {
   bool CellFree(int ix, int iy) const {
     return space.free[static_cast<std::size_t>(iy) * raster.width + ix] != 0;
   }
+  // Sets the scored box to the bounding box of `space` (empty: x1 < x0).
+  void FitScoredBox();
 };
 
 // A scorer never reports a number against empty ground truth:

@@ -3,15 +3,18 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "eval/sonar_map/body_reach.h"
 #include "eval/sonar_map/cognitive_map_json.h"
 #include "eval/sonar_map/sonar_ground_truth.h"
 #include "perception/sonar_map/sonar_explorer.h"
 #include "render/png_image.h"
 #include "sim/runner/text_file.h"
 #include "sim/world/occupancy_raster.h"
+#include "sim/world/planar_obstacles.h"
 
 namespace plywood::eval {
 namespace {
@@ -39,6 +42,15 @@ void Line(render::RgbImage& image, Eigen::Vector2d a, Eigen::Vector2d b,
   }
 }
 
+// The radius of the round body the body-reach truth moves: the reach of the robot's bumper ring
+// about its base origin (the footprint the planar drive stops with). None without a ring.
+std::optional<double> BodyRadius(const sim::Scene& scene, const std::string& source) {
+  const mjModel* m = scene.model();
+  const int ring = mj_name2id(m, mjOBJ_GEOM, "bumper_ring");
+  if (ring < 0 || m->geom_type[ring] != mjGEOM_MESH) return std::nullopt;
+  return sim::PlanarObstacles(m, scene.data(), scene.base_body_id(), source).reach_m();
+}
+
 }  // namespace
 
 bool AddSonarMapMetrics(sim::ExperimentRunner& runner) {
@@ -57,6 +69,15 @@ bool AddSonarMapMetrics(sim::ExperimentRunner& runner) {
   m.Set("occupancy.grid_error", grid_error.Error());
   m.Set("occupancy.area_total_m2", map_error.AreaTotalM2());
   m.Set("occupancy.area_error_m2", map_error.AreaErrorM2());
+  // Beside e, not instead of it: the same map scored as if the space the robot's body cannot reach
+  // from the spawn (behind gaps narrower than the body) were not free (issue 14, question 6).
+  if (const auto radius = BodyRadius(runner.scene(), runner.config().source_file)) {
+    const auto body = MakeBodyReachTruth(*truth, {spawn.x_m, spawn.y_m}, *radius);
+    const OccupancyError body_error =
+        ScoreOccupancy(*body, [&](const Eigen::Vector2d& p) { return MapFree(map, p); });
+    m.Set("occupancy.error_body_reach", body_error.Error());
+    m.Set("occupancy.area_body_reach_m2", body_error.AreaTotalM2());
+  }
   m.Set("occupancy.partitions", static_cast<double>(map.partitions.partitions().size()));
   m.Set("occupancy.graph_nodes", static_cast<double>(map.graph.nodes.size()));
   m.Set("occupancy.graph_edges", static_cast<double>(map.graph.arcs.size()));
