@@ -74,10 +74,9 @@ std::unique_ptr<OccupancyTruth> MakeBodyReachTruth(const OccupancyTruth& truth,
   auto body = std::make_unique<OccupancyTruth>();
   body->raster = truth.raster;
   body->space = ComputeBodyReachableSpace(body->raster, start_W, body_radius_m);
-  // Only what the point flood reaches too: a disc cannot cover what a point cannot reach, but a
-  // cell is cheap to be sure of.
+  body->unscored.assign(truth.space.free.size(), 0);
   for (std::size_t i = 0; i < body->space.free.size(); ++i)
-    body->space.free[i] = body->space.free[i] && truth.space.free[i];
+    body->unscored[i] = truth.space.free[i] && !body->space.free[i];
   body->FitScoredBox();
   return body;
 }

@@ -20,9 +20,10 @@ namespace plywood::eval {
 ReachableSpace ComputeBodyReachableSpace(const sim::OccupancyRaster& raster,
                                          const Eigen::Vector2d& start_W, double body_radius_m);
 
-// `truth` with its free space cut to ComputeBodyReachableSpace and its scored box to that space's
-// bounding box: what seed 001's error e becomes when the space the robot's body cannot reach is
-// not counted as free (issue 14, question 6 to steering).
+// `truth` with its free space cut to ComputeBodyReachableSpace, the free space it leaves out
+// unscored (the robot can neither go there nor be blamed for what it says of it, right or wrong)
+// and its scored box that of the space left: seed 001's error e of what the robot's body can reach
+// (issue 14, question 6 to steering).
 std::unique_ptr<OccupancyTruth> MakeBodyReachTruth(const OccupancyTruth& truth,
                                                    const Eigen::Vector2d& start_W,
                                                    double body_radius_m);

@@ -95,7 +95,7 @@ TEST(BodyReachTest, AGapPassesFromTwiceTheRadiusLessOneCell) {
   EXPECT_FALSE(ComputeBodyReachableSpace(TwoChambers(0.38), start, 0.2).IsFree(east));
 }
 
-TEST(BodyReachTest, ATruthCutToTheBodyScoresTheUnreachableChamberAsNotFree) {
+TEST(BodyReachTest, ATruthCutToTheBodyLeavesTheUnreachableChamberUnscored) {
   // The map that calls only the west chamber free: wrong by the whole east chamber and the gap
   // against the point truth, only by the gap's west part against the body truth.
   OccupancyTruth truth;
@@ -112,6 +112,21 @@ TEST(BodyReachTest, ATruthCutToTheBodyScoresTheUnreachableChamberAsNotFree) {
   EXPECT_GT(cut.AreaErrorM2(), 0.3 * 0.01);
   EXPECT_LT(cut.AreaErrorM2(), 0.03);
   EXPECT_NEAR(cut.AreaTotalM2(), FreeArea(body->space), 1e-9);
+  // The east chamber is unscored: whatever a map says of it, right or wrong, counts for nothing,
+  // even inside the scored box (here stretched over it).
+  const auto cell = [&](double x, double y) {
+    const auto c = truth.raster.CellAt({x, y});
+    return static_cast<std::size_t>(c->y()) * truth.raster.width + c->x();
+  };
+  EXPECT_TRUE(body->unscored[cell(2.5, 1.0)]);
+  EXPECT_FALSE(body->unscored[cell(1.0, 1.0)]);
+  EXPECT_FALSE(body->unscored[cell(2.5, 1.995)]);  // the outer wall is scored (not free)
+  body->x1 = truth.raster.width - 1;
+  const auto east_free = [&](const Eigen::Vector2d& p) {  // the east chamber's floor, not its walls
+    return west_only(p) || (p.x() > 2.1 && p.x() < 2.99 && p.y() > 0.01 && p.y() < 1.99);
+  };
+  EXPECT_EQ(ScoreOccupancy(*body, east_free).error_cells,
+            ScoreOccupancy(*body, west_only).error_cells);
 }
 
 }  // namespace

@@ -84,6 +84,10 @@ OccupancyError ScoreOccupancy(const OccupancyTruth& truth,
   error.cell_area_m2 = truth.raster.resolution_m * truth.raster.resolution_m;
   for (int iy = truth.y0; iy <= truth.y1; ++iy)
     for (int ix = truth.x0; ix <= truth.x1; ++ix) {
+      if (!truth.unscored.empty() &&
+          truth.unscored[static_cast<std::size_t>(iy) * truth.raster.width + ix]) {
+        continue;
+      }
       const bool free = truth.CellFree(ix, iy);
       error.total_cells += free;
       error.error_cells += free != map_says_free(truth.raster.CellCentre(ix, iy));

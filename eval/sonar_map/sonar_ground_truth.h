@@ -31,6 +31,8 @@ struct OccupancyTruth {
   sim::OccupancyRaster raster;
   ReachableSpace space;                  // points into `raster`: keep the object where it is
   int x0 = 0, y0 = 0, x1 = -1, y1 = -1;  // raster cells of the reachable space's bounding box
+  // By raster cell: left out of the score, neither free nor not (empty: every cell is scored).
+  std::vector<char> unscored;
 
   bool CellFree(int ix, int iy) const {
     return space.free[static_cast<std::size_t>(iy) * raster.width + ix] != 0;
@@ -48,8 +50,8 @@ std::unique_ptr<OccupancyTruth> MakeOccupancyTruth(const mjModel* model,
                                                    const std::string& spawn_source);
 
 // A map's occupancy error e = A_e / A_tot: A_tot the reachable free area, A_e the area of the
-// scored box whose free / not-free label differs from the map's, sampled at the truth's cell
-// centres. `map_says_free(p_W)` is the map's label of a world point.
+// scored box (less its unscored cells) whose free / not-free label differs from the map's, sampled
+// at the truth's cell centres. `map_says_free(p_W)` is the map's label of a world point.
 struct OccupancyError {
   double total_cells = 0.0;
   double error_cells = 0.0;
