@@ -67,6 +67,68 @@ int RequireId(const mjModel* m, mjtObj type, const std::string& name, const std:
   return id;
 }
 
+// models/README.md's wheel: a hinge about the robot's +y (positive rotation drives forward), free
+// to turn for ever, driven by a velocity servo of gear 1 (ctrl is the wheel's rad/s). A robot
+// file that breaks one compiled and ran, exit 0, with figures of a robot that barely drove or
+// drove another way (s55, default.yaml 10 s, 2.995 m with the shipped file): the right motor on
+// the left wheel's joint (a copied line) 0.197 m; a wheel limited to +-30 deg 0.64 m; a wheel
+// about z 0.58 m, about -y 0.83 m with encoder drift 104 %; a torque motor 3.47 m, drift 3.3 %;
+// gear 2 diverged ("try a smaller physics.timestep_s").
+void RequireAWheelTheMotorDrives(const mjModel* m, const mjData* d, int base, int joint, int motor,
+                                 const std::string& robot) {
+  const std::string joint_name = mj_id2name(m, mjOBJ_JOINT, joint);
+  const std::string motor_name = mj_id2name(m, mjOBJ_ACTUATOR, motor);
+  if (m->jnt_type[joint] != mjJNT_HINGE) {
+    throw ConfigError(robot, joint_name, "the wheel's joint must be a hinge (type=\"hinge\")");
+  }
+  if (m->jnt_limited[joint]) {
+    throw ConfigError(robot, joint_name,
+                      "the wheel's hinge is limited (limited=\"true\", range " +
+                          msgs::SixDigitNumber(m->jnt_range[2 * joint]) + " to " +
+                          msgs::SixDigitNumber(m->jnt_range[2 * joint + 1]) +
+                          " rad): a wheel turns for ever; drop the range");
+  }
+  // The hinge's axis in the world against the base's y axis (xmat is row-major).
+  const mjtNum* axis = d->xaxis + 3 * joint;
+  const mjtNum* r = d->xmat + 9 * base;
+  const double along_y = axis[0] * r[1] + axis[1] * r[4] + axis[2] * r[7];
+  if (!(along_y > 1.0 - 1e-6)) {
+    throw ConfigError(robot, joint_name,
+                      "the wheel's hinge axis must be the robot's +y (axis=\"0 1 0\" in the "
+                      "base frame: positive rotation drives forward), but its cosine to +y is " +
+                          msgs::SixDigitNumber(along_y));
+  }
+  if (m->actuator_trntype[motor] != mjTRN_JOINT || m->actuator_trnid[2 * motor] != joint) {
+    const int other = m->actuator_trnid[2 * motor];
+    const char* acts_on = m->actuator_trntype[motor] == mjTRN_JOINT && other >= 0
+                              ? mj_id2name(m, mjOBJ_JOINT, other)
+                              : nullptr;
+    throw ConfigError(
+        robot, motor_name,
+        "the motor must drive the joint '" + joint_name + "', but it drives " +
+            (acts_on ? "the joint '" + std::string(acts_on) + "'"
+                     : std::string("no joint (a tendon, site or body transmission)")) +
+            ": the wheel would roll free");
+  }
+  // <velocity kv="K">: force K * (ctrl - gear * qvel), so the wheel turns at ctrl / gear rad/s.
+  const mjtNum* gain = m->actuator_gainprm + mjNGAIN * motor;
+  const mjtNum* bias = m->actuator_biasprm + mjNBIAS * motor;
+  const bool velocity_servo = m->actuator_dyntype[motor] == mjDYN_NONE &&
+                              m->actuator_gaintype[motor] == mjGAIN_FIXED &&
+                              m->actuator_biastype[motor] == mjBIAS_AFFINE && gain[0] > 0.0 &&
+                              bias[0] == 0.0 && bias[1] == 0.0 && bias[2] == -gain[0];
+  if (!velocity_servo || m->actuator_gear[6 * motor] != 1.0) {
+    throw ConfigError(
+        robot, motor_name,
+        "the motor must be a velocity servo of gear 1 (<velocity joint=\"" + joint_name +
+            "\" kv=\"...\"/>: the controller's command is the wheel's rad/s), "
+            "but it is " +
+            (velocity_servo ? "one of gear " + msgs::ShortestNumber(m->actuator_gear[6 * motor])
+                            : std::string("another kind (a torque motor, a "
+                                          "position servo or a general actuator)")));
+  }
+}
+
 // Distance from a geom's centre to its farthest point, as the compiler computes it for
 // broad-phase culling; must follow any change of a geom's size.
 double CylinderBoundingRadius(double radius, double half_length) {
@@ -216,6 +278,10 @@ Scene::Scene(const SceneOptions& options) : options_(options) {
   mj_resetData(model_.get(), data_.get());
   MakeNearContactPairs();
   WithNearPairs([&] { mj_forward(model_.get(), data_.get()); });
+  RequireAWheelTheMotorDrives(model_.get(), data_.get(), base_body_, left_joint, left_motor_,
+                              robot_name);
+  RequireAWheelTheMotorDrives(model_.get(), data_.get(), base_body_, right_joint, right_motor_,
+                              robot_name);
   RequireRobotOnTheFloor();
   MakePlanarDrive();
 }
