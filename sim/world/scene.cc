@@ -265,6 +265,15 @@ Scene::Scene(const SceneOptions& options) : options_(options) {
 
   // Spawn: the free joint's reference pose, so mj_resetData returns here.
   mjtNum* qpos0 = model_->qpos0 + base_qpos_;
+  // The spawn sets x, y and the heading, not the height the file gives the base: a base at z 0.5
+  // dropped the robot at the start, its first scans from 0.84 m, and default.yaml's encoder
+  // ate_rms_m read 0.0189 m instead of 0.0054, exit 0 (s55).
+  if (std::abs(qpos0[2]) > kWheelOnFloorToleranceM) {
+    throw ConfigError(robot_name, "base",
+                      "the base body is placed at z = " + msgs::SixDigitNumber(qpos0[2]) +
+                          " m; its frame must sit on the floor (z = 0: the spawn sets x, y and the "
+                          "heading, not the height; models/README.md)");
+  }
   qpos0[0] = options.spawn.x_m;
   qpos0[1] = options.spawn.y_m;
   qpos0[3] = std::cos(options.spawn.theta_rad / 2.0);
