@@ -1873,8 +1873,8 @@ TEST_F(ReliabilityTest, AReachToleranceThatTakesInTheWholeTourIsRefused) {
       run("1e308"),
       {"default.yaml: controller.reach_tolerance_m: 1e+308 m takes in every waypoint "
        "from the spawn (the farthest, waypoints[13], lies 11.5 m from it): each counts "
-       "as reached on the first tick and the robot never moves; give a tolerance below that "
-       "distance\n"});
+       "as reached on the first tick, before the robot drives to any; give a tolerance below "
+       "that distance\n"});
   ExpectOneLine(run("11.5"), {"controller.reach_tolerance_m: 11.5 m takes in every waypoint"});
   EXPECT_EQ(run("11.4").exit_code, 0);
 }

@@ -222,8 +222,9 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
                               ": the robot can never reach it; move the waypoint into free space");
       }
     }
-    // A tolerance that takes in every waypoint from the spawn ends the tour on the first tick:
-    // reach_tolerance_m 1e300 gave controller_finished 1 with 0 m driven, exit 0 (s55).
+    // A tolerance that takes in every waypoint from the spawn passes them all on the first tick:
+    // reach_tolerance_m 1e300 gave controller_finished 1 with 0 m driven, exit 0 (s55); with
+    // loop: true the robot chased whichever waypoint each tick's count stopped on.
     const msgs::Pose2D spawn = scene_->TruePose();
     double farthest_m = 0.0;
     std::size_t farthest = 0;
@@ -239,10 +240,10 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
       throw ConfigError(
           config.source_file, "controller.reach_tolerance_m",
           msgs::ShortestNumber(tolerance_m) +
-              " m takes in every waypoint from the spawn (the farthest, " + "waypoints[" +
+              " m takes in every waypoint from the spawn (the farthest, waypoints[" +
               std::to_string(farthest) + "], lies " + msgs::SixDigitNumber(farthest_m) +
-              " m from it): each counts as reached on the first tick and the robot never moves; "
-              "give a tolerance below that distance");
+              " m from it): each counts as reached on the first tick, before the robot drives to "
+              "any; give a tolerance below that distance");
     }
   }
   // A square's corners are its waypoints: square_hall.yaml with side_m 20 drove the P3-DX into the
