@@ -2120,6 +2120,20 @@ TEST_F(ReliabilityTest, ARobotFileWhoseBumpersOrWheelsCannotWorkIsRefused) {
          "<body name=\"base\" childclass=\"p3dx\" pos=\"0 0 0.5\">"}},
        robot.string() +
            ": base: the base body is placed at z = 0.5 m; its frame must sit on the floor"},
+      // s55: wheels swapped side for side (heading 177 deg off, drift 10 %) or one axle 0.1 m
+      // ahead of the other (drift 9.5 %, 0.29 % as shipped), exit 0.
+      {"wheels swapped",
+       {{left, "<body name=\"left_wheel\" pos=\"0 -0.165 0.0975\">"},
+        {right, "<body name=\"right_wheel\" pos=\"0 0.165 0.0975\">"}},
+       robot.string() + ": left_wheel: the left wheel's axle is at (0, -0.165) and the right's at "
+                        "(0, 0.165) in the base frame: the left wheel must be on the robot's left"},
+      {"an axle ahead",
+       {{left, "<body name=\"left_wheel\" pos=\"0.1 0.165 0.0975\">"}},
+       robot.string() + ": left_wheel: the wheel's axle is at x = 0.1 m in the base frame"},
+      {"axles off centre",
+       {{left, "<body name=\"left_wheel\" pos=\"0 0.2 0.0975\">"}},
+       robot.string() + ": left_wheel: the axles are at y = 0.2 and -0.165 m in the base frame, "
+                        "a midpoint of 0.018 m"},
       {"gear 2",
        {{motor, motor + " gear=\"2\""}},
        "right_wheel_motor: the motor must be a velocity servo of gear 1 (<velocity "
