@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "eval/sonar_map/sonar_ground_truth.h"
+#include "msgs/shortest_number.h"
 #include "perception/logs/carmen_log.h"
 #include "plywood_paths.h"
 #include "sim/config/config_error.h"
@@ -356,6 +357,16 @@ TEST_F(ReliabilityTest, RatesFasterThanThePhysicsStepAreRefused) {
   ExpectRefused(HallExperiment(0.0, 0.0, "controller: {type: square_path}\n", all),
                 "--set physics.timestep_s=0.04",
                 {"experiment.yaml", "controller.rate_hz", "= 25 Hz", "got 50"});
+  // s55: the limit in six digits, rounded down so the printed number itself runs: 1 / 0.0301 s is
+  // 33.2225913... Hz (printed whole, 33.222591362126245; to the nearest, 33.2226, refused too).
+  ExpectRefused(HallExperiment(0.0, 0.0, "", all),
+                "--set physics.timestep_s=0.0301 --set sensors.laser.rate_hz=40",
+                {"experiment.yaml: sensors.laser.rate_hz: must be at most 1 / physics.timestep_s "
+                 "= 33.2225 Hz (one sample per physics step), got 40\n"});
+  EXPECT_EQ(Run(HallExperiment(0.0, 0.0, "", all),
+                "--set physics.timestep_s=0.0301 --set sensors.laser.rate_hz=33.2225")
+                .exit_code,
+            0);
 }
 
 // --- 5. Readers ----------------------------------------------------------------------------------
@@ -1427,6 +1438,12 @@ TEST_F(ReliabilityTest, RatesWhosePeriodOutlastsTheRunAreRefused) {
   ExpectRefused(yaml, "--set sensors.gyro.rate_hz=0.9",
                 {"experiment.yaml: sensors.gyro.rate_hz: must be at least 1 Hz (the floor for "
                  "runs shorter than 1 s): a longer period samples only at t = 0, got 0.9\n"});
+  // s55: 1 / 3 s in six digits, rounded up so the printed number itself runs (was
+  // 0.3333333333333333 Hz).
+  ExpectRefused(yaml, "--set duration_s=3 --set sensors.gyro.rate_hz=0.3",
+                {"experiment.yaml: sensors.gyro.rate_hz: must be at least 0.333334 Hz (one period "
+                 "within duration_s = 3 s)"});
+  EXPECT_EQ(Run(yaml, "--set duration_s=3 --set sensors.gyro.rate_hz=0.333334").exit_code, 0);
   // The limits themselves run: one period in a 2 s run, 1 Hz in a 0.5 s one.
   EXPECT_EQ(Run(yaml, "--set duration_s=2 --set sensors.gyro.rate_hz=0.5").exit_code, 0);
   EXPECT_EQ(Run(yaml, "--set sensors.gyro.rate_hz=1").exit_code, 0);
@@ -1839,6 +1856,29 @@ TEST_F(ReliabilityTest, AWaypointOutsideEveryRoomIsRefused) {
   EXPECT_EQ(inside.exit_code, 0) << inside.err;
 }
 
+// s55: a reach tolerance that takes in every waypoint from the spawn: default.yaml 20 s with
+// controller.reach_tolerance_m=1e308 reported controller_finished 1 with 0 m driven, exit 0. The
+// office tour's farthest waypoint, (5, 0), lies 11.5 m from the spawn (-6.5, 0).
+TEST_F(ReliabilityTest, AReachToleranceThatTakesInTheWholeTourIsRefused) {
+  const std::string experiment = (testing::SourceRoot() / "experiments/default.yaml").string();
+  const fs::path dir = Dir();
+  const auto run = [&](const std::string& tolerance) {
+    return RunPlywood("run " + experiment + " --quiet --force --out " + (dir / "out").string() +
+                          " --set duration_s=0.5 --set output.snapshot=false"
+                          " --set controller.reach_tolerance_m=" +
+                          tolerance,
+                      dir);
+  };
+  ExpectOneLine(
+      run("1e308"),
+      {"default.yaml: controller.reach_tolerance_m: 1e+308 m takes in every waypoint "
+       "from the spawn (the farthest, waypoints[13], lies 11.5 m from it): each counts "
+       "as reached on the first tick, before the robot drives to any; give a tolerance below "
+       "that distance\n"});
+  ExpectOneLine(run("11.5"), {"controller.reach_tolerance_m: 11.5 m takes in every waypoint"});
+  EXPECT_EQ(run("11.4").exit_code, 0);
+}
+
 // s52: square_path lays its corners out from the spawn, and a square of a side the world cannot
 // hold was run: square_hall.yaml with side_m 20 drove the P3-DX into the hall's east wall (60 s:
 // encoder drift 82 %, controller_finished 0), exit 0. Its corners are checked as waypoints are.
@@ -1964,6 +2004,38 @@ TEST_F(ReliabilityTest, ASensorSiteOffTheRobotOrTiltedIsRefused) {
   unsetenv("PLYWOOD_ROOT");
 }
 
+// s55 (s54's left item): a world box whose underside (0.29 m) clears the P3-DX's colliding chassis
+// (its top 0.255 m) while it spans the laser's site (0.34 m), a low shelf: the robot drives under
+// it with the site inside and every beam starts in it. Each site is checked against the robot's
+// own surface under it: the sonars (0.21 m, under the chassis top) are not concerned, and a box
+// above the laser or reaching down to the chassis (which the robot then meets) is legitimate.
+TEST_F(ReliabilityTest, AWorldGeomTheRobotPassesUnderWithASensorSiteInsideIsRefused) {
+  const fs::path worlds = WorldDir();
+  const std::string hall = Slurp(testing::SourceRoot() / "worlds/hall.xml");
+  const auto with_shelf = [&](const std::string& name, double centre_z_m,
+                              const std::string& sensors) {
+    std::string text = hall;
+    text.insert(text.find("</worldbody>"), "<geom name=\"shelf\" type=\"box\" pos=\"2 2 " +
+                                               msgs::ShortestNumber(centre_z_m) +
+                                               "\" size=\"0.5 0.5 0.03\"/>\n");
+    const fs::path path = WriteFile(worlds / (name + ".xml"), text);
+    std::string yaml = HallExperiment(0.0, 0.0, "", sensors);
+    yaml.replace(yaml.find("worlds/hall.xml"), std::string("worlds/hall.xml").size(),
+                 path.string());
+    return yaml;
+  };
+  const std::string laser = "{encoders: {}, laser: {}}", sonar = "{encoders: {}, sonar: {}}";
+  ExpectRefused(
+      with_shelf("low_shelf", 0.32, laser), "",
+      {"experiment.yaml: sensors.laser: robot 'p3dx' cannot carry it: ",
+       "low_shelf.xml: geom 'shelf': spans z in [0.29, 0.35] m, round the site 'laser' "
+       "at z 0.34 m, and its underside clears the robot's colliding geoms under that "
+       "site (their top at z 0.255 m): the robot can pass under it with the site inside"});
+  EXPECT_EQ(Run(with_shelf("low_shelf", 0.32, sonar)).exit_code, 0);
+  EXPECT_EQ(Run(with_shelf("high_shelf", 0.4, laser)).exit_code, 0);   // underside 0.37 m
+  EXPECT_EQ(Run(with_shelf("deep_shelf", 0.25, laser)).exit_code, 0);  // underside 0.22 m
+}
+
 // A user's robot file that cannot drive or feel as the run reports ran, exit 0. Without its bump
 // panels, or with them but without the colliding bumper_ring, bumpers.csv never pressed a panel
 // while the chassis pushed the hall's east wall (a 6 s wheel script: 0 contact samples, the P3-DX's
@@ -1992,6 +2064,8 @@ TEST_F(ReliabilityTest, ARobotFileWhoseBumpersOrWheelsCannotWorkIsRefused) {
   const std::string left = "<body name=\"left_wheel\" pos=\"0 0.165 0.0975\">";
   const std::string right = "<body name=\"right_wheel\" pos=\"0 -0.165 0.0975\">";
   const std::string chassis = "<geom name=\"chassis\" type=\"box\" pos=\"-0.045 0 0.155\"";
+  const std::string hinge = "<joint name=\"left_wheel\" type=\"hinge\" axis=\"0 1 0\"/>";
+  const std::string motor = "<velocity name=\"right_wheel_motor\" joint=\"right_wheel\"";
   const std::vector<Case> cases = {
       {"no panels", no_panels,
        "bump.yaml: sensors.bumpers: robot 'p3dx' cannot carry it: " + robot.string() +
@@ -2013,6 +2087,58 @@ TEST_F(ReliabilityTest, ARobotFileWhoseBumpersOrWheelsCannotWorkIsRefused) {
       {"chassis in the floor",
        {{chassis, "<geom name=\"chassis\" type=\"box\" pos=\"-0.045 0 0.05\""}},
        robot.string() + ": chassis: the geom collides and reaches 0.05 m below the floor"},
+      // s55: wheels and motors models/README.md asks for, each of which ran, exit 0 (default.yaml
+      // 10 s, 2.995 m with the shipped file): both motors on the left wheel 0.197 m; a wheel
+      // limited to +-30 deg 0.64 m; about z 0.58 m; a torque motor 3.47 m (gear 2 diverged).
+      {"both motors on one wheel",
+       {{motor, "<velocity name=\"right_wheel_motor\" joint=\"left_wheel\""}},
+       robot.string() +
+           ": right_wheel_motor: the motor must drive the joint 'right_wheel', but it drives the "
+           "joint 'left_wheel': the wheel would roll free"},
+      {"a sliding wheel",
+       {{hinge, "<joint name=\"left_wheel\" type=\"slide\" axis=\"0 1 0\"/>"}},
+       robot.string() + ": left_wheel: the wheel's joint must be a hinge"},
+      {"a limited wheel",
+       {{hinge,
+         "<joint name=\"left_wheel\" type=\"hinge\" axis=\"0 1 0\" limited=\"true\" "
+         "range=\"-30 30\"/>"}},
+       robot.string() + ": left_wheel: the wheel's hinge is limited (limited=\"true\", range "
+                        "-0.523599 to 0.523599 rad)"},
+      {"a wheel about z",
+       {{hinge, "<joint name=\"left_wheel\" type=\"hinge\" axis=\"0 0 1\"/>"}},
+       robot.string() + ": left_wheel: the wheel's hinge axis must be the robot's +y"},
+      {"a wheel about -y",
+       {{hinge, "<joint name=\"left_wheel\" type=\"hinge\" axis=\"0 -1 0\"/>"}},
+       "its cosine to +y is -1"},
+      {"a torque motor",
+       {{motor + " kv=\"5\"", "<motor name=\"right_wheel_motor\" joint=\"right_wheel\""}},
+       robot.string() + ": right_wheel_motor: the motor must be a velocity servo of gear 1"},
+      // s55: the base placed 0.5 m up fell at the start (its first scans from 0.84 m): encoder
+      // ate_rms_m 0.0189 m instead of 0.0054, exit 0.
+      {"base in the air",
+       {{"<body name=\"base\" childclass=\"p3dx\">",
+         "<body name=\"base\" childclass=\"p3dx\" pos=\"0 0 0.5\">"}},
+       robot.string() +
+           ": base: the base body is placed at z = 0.5 m; its frame must sit on the floor"},
+      // s55: wheels swapped side for side (heading 177 deg off, drift 10 %) or one axle 0.1 m
+      // ahead of the other (drift 9.5 %, 0.29 % as shipped), exit 0.
+      {"wheels swapped",
+       {{left, "<body name=\"left_wheel\" pos=\"0 -0.165 0.0975\">"},
+        {right, "<body name=\"right_wheel\" pos=\"0 0.165 0.0975\">"}},
+       robot.string() + ": left_wheel: the left wheel's axle is at (0, -0.165) and the right's at "
+                        "(0, 0.165) in the base frame: the left wheel must be on the robot's left"},
+      {"an axle ahead",
+       {{left, "<body name=\"left_wheel\" pos=\"0.1 0.165 0.0975\">"}},
+       robot.string() + ": left_wheel: the wheel's axle is at x = 0.1 m in the base frame"},
+      {"axles off centre",
+       {{left, "<body name=\"left_wheel\" pos=\"0 0.2 0.0975\">"}},
+       robot.string() + ": left_wheel: the axles are at y = 0.2 and -0.165 m in the base frame, "
+                        "a midpoint of 0.018 m"},
+      {"gear 2",
+       {{motor, motor + " gear=\"2\""}},
+       "right_wheel_motor: the motor must be a velocity servo of gear 1 (<velocity "
+       "joint=\"right_wheel\" kv=\"...\"/>: the controller's command is the wheel's rad/s), but "
+       "it is one of gear 2"},
   };
   const fs::path experiment = WriteFile(dir / "bump.yaml", HallExperiment(2.5, 0.0,
                                                                           "controller: {type: "

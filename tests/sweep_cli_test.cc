@@ -160,6 +160,14 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
             (dir / "hall_copy.xml").string() + "' and '" + hall.string() +
             "' hold the same world)"}},
       {"unknown_axis", {"experiment: " + experiment + "\nsedes: [1]\n", "sedes"}},
+      // s55: an axis of the top-level cut over seed 000's listed rooms ran two identical cells
+      // labelled 3 and 4 (each room runs at its own cut).
+      {"a_cut_the_rooms_ignore",
+       {"experiment: " + (SourceRoot() / "experiments/seed000_rooms.yaml").string() +
+            "\nset: {seed000_rooms.range_cut_m: [3, 4]}\n",
+        "set.seed000_rooms.range_cut_m: " +
+            (SourceRoot() / "experiments/seed000_rooms.yaml").string() +
+            ": seed000_rooms.range_cut_m: set on the command line, it changes nothing"}},
       {"empty_seeds", {"experiment: " + experiment + "\nseeds: []\n", "seeds"}},
       {"empty_values",
        {"experiment: " + experiment + "\nset: {duration_s: []}\n", "set.duration_s"}},

@@ -140,6 +140,7 @@ TEST_F(ViewCliTest, FlagsThatCannotBeHonouredAreRefusedBeforeAnythingRuns) {
             0);
   const std::string live =
       experiment + " --set duration_s=1 --speed max --exit-at-end --out " + (dir / "live").string();
+  const std::string protocol = (SourceRoot() / "experiments/umbmark.yaml").string();
   const std::vector<std::pair<std::string, std::string>> cases = {
       {run.string() + " --time nan --screenshot x.png",
        "view: --time: must be a finite number of simulated seconds >= 0, got nan"},
@@ -173,6 +174,9 @@ TEST_F(ViewCliTest, FlagsThatCannotBeHonouredAreRefusedBeforeAnythingRuns) {
       {run.string() + " --screenshot x.jpg",
        "view: --screenshot: x.jpg: the screenshot is written as PNG; give a name ending in .png"},
       {live + " --screenshot x", "view: --screenshot: x: the screenshot is written as PNG"},
+      // s55: a protocol's experiment benched its base run's frames without a word.
+      {protocol + " --bench", protocol + ": protocol: plywood view --bench shows single runs only, "
+                                         "not protocol 'umbmark'"},
       {"--bench --set duration_s=0.2",
        "view: --set duration_s=0.2: --bench runs --bench-seconds (default 10), not the "
        "experiment's duration_s; give --bench-seconds instead"},

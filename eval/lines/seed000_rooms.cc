@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numbers>
 
+#include "msgs/shortest_number.h"
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
 #include "sim/config/robot_catalog.h"
@@ -58,17 +59,44 @@ Seed000RoomsOptions ReadSeed000RoomsOptions(const sim::ExperimentConfig& config)
   return options;
 }
 
+namespace {
+
+// The listed rooms run at their own cuts: a --set of the top-level range_cut_m (or a sweep axis of
+// it) would change nothing, and a sweep would label identical cells differently (s55; it ran as
+// if unset). The file's own top-level value is the default for other worlds, never refused.
+std::vector<Seed000Room> RefuseASetCutTheRoomsIgnore(const sim::ExperimentConfig& config,
+                                                     std::vector<Seed000Room> rooms) {
+  const std::string key = config.protocol + ".range_cut_m";
+  if (std::find(config.set_keys.begin(), config.set_keys.end(), key) == config.set_keys.end()) {
+    return rooms;
+  }
+  std::string cuts;
+  for (const Seed000Room& room : rooms) {
+    cuts += (cuts.empty() ? "" : ", ") + msgs::ShortestNumber(room.range_cut_m);
+  }
+  throw sim::ConfigError(
+      config.source_file, key,
+      "set on the command line, it changes nothing: the world " +
+          config.world_path.filename().string() + " is listed in " + config.protocol +
+          ".rooms, and the listed rooms run at their own range_cut_m (" + cuts +
+          "); edit their entries in rooms:, or run a world outside the list (--set world=PATH)");
+}
+
+}  // namespace
+
 std::vector<Seed000Room> RoomsToRun(const sim::ExperimentConfig& config,
                                     const Seed000RoomsOptions& options) {
   if (!options.rooms.empty() &&
       std::filesystem::equivalent(options.rooms.front().world_path, config.world_path)) {
-    return options.rooms;
+    return RefuseASetCutTheRoomsIgnore(config, options.rooms);
   }
   // A later room's world (--set world=worlds/seed000_room_2.xml) runs alone, but as its entry says
   // (its range cut and paper line count), not with the top-level range_cut_m meant for other
   // worlds.
   for (const Seed000Room& room : options.rooms) {
-    if (std::filesystem::equivalent(room.world_path, config.world_path)) return {room};
+    if (std::filesystem::equivalent(room.world_path, config.world_path)) {
+      return RefuseASetCutTheRoomsIgnore(config, {room});
+    }
   }
   Seed000Room user;
   user.world = config.world;

@@ -7,9 +7,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "eval/lines/back_to_back_scans.h"
+#include "sim/config/config_error.h"
 #include "sim/config/experiment_config.h"
 #include "sim/runner/metrics.h"
 #include "tests/support/mujoco_test_support.h"
@@ -154,6 +156,34 @@ TEST(Seed000RoomsTest, ALaterRoomGivenAsTheWorldRunsWithItsOwnEntry) {
   ASSERT_EQ(alone.size(), 1u);
   EXPECT_EQ(alone.front().range_cut_m, 6.0);
   EXPECT_EQ(alone.front().paper_lines, 0);
+}
+
+// s55 (s54's left item): `--set seed000_rooms.range_cut_m=0.01` on a listed room ran as if unset,
+// every room at its own cut (recall 1, exit 0), and a sweep axis of it labelled identical cells
+// differently. Refused when the key came from --set; the file's own top-level value never is.
+TEST(Seed000RoomsTest, ASetTopLevelCutTheListedRoomsIgnoreIsRefused) {
+  const auto refusal = [](const std::vector<std::string>& overrides) -> std::string {
+    const auto config = Config(overrides);
+    try {
+      RoomsToRun(config, ReadSeed000RoomsOptions(config));
+    } catch (const sim::ConfigError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_NE(refusal({"world=worlds/seed000_room_1.xml", "seed000_rooms.range_cut_m=0.01"})
+                .find("seed000_rooms.yaml: seed000_rooms.range_cut_m: set on the command line, it "
+                      "changes nothing: the world seed000_room_1.xml is listed in "
+                      "seed000_rooms.rooms, and the listed rooms run at their own range_cut_m (4, "
+                      "3.5, 4, 4)"),
+            std::string::npos);
+  EXPECT_NE(refusal({"world=worlds/seed000_room_2.xml", "seed000_rooms.range_cut_m=3"})
+                .find("own range_cut_m (3.5)"),
+            std::string::npos);
+  // The shipped file's own top-level cut (4) with its listed rooms, and a --set of it where it
+  // applies (a world outside the list), are not refused.
+  EXPECT_EQ(refusal({"world=worlds/seed000_room_1.xml"}), "");
+  EXPECT_EQ(refusal({"seed000_rooms.range_cut_m=6"}), "");
 }
 
 }  // namespace

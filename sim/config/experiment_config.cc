@@ -191,14 +191,17 @@ void RequireRatesTheClockCanKeep(const YamlFields& top, const ExperimentConfig& 
     if (rate_hz * longest_period_s < 1.0 - 1e-9) {
       const std::string floor =
           config.duration_s >= 1.0
-              ? FormatNumber(1.0 / longest_period_s) +
+              ? msgs::SixDigitNumberAtLeast(1.0 / longest_period_s) +
                     " Hz (one period within duration_s = " + FormatNumber(config.duration_s) + " s)"
               : std::string("1 Hz (the floor for runs shorter than 1 s)");
       top.Fail(field, "must be at least " + floor +
                           ": a longer period samples only at t = 0, got " + FormatNumber(rate_hz));
     }
     if (rate_hz <= step_rate_hz * (1.0 + 1e-9)) return;
-    top.Fail(field, "must be at most 1 / physics.timestep_s = " + FormatNumber(step_rate_hz) +
+    // Six digits, rounded down: 1 / 0.0333 s is "30.03 Hz", not 30.030030030030026, and the
+    // printed limit is itself accepted.
+    top.Fail(field, "must be at most 1 / physics.timestep_s = " +
+                        msgs::SixDigitNumberAtMost(step_rate_hz) +
                         " Hz (one sample per physics step), got " + FormatNumber(rate_hz));
   };
   const SensorSuiteConfig& sensors = config.sensors;
@@ -417,14 +420,18 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   // alias of an anchored value.
   root = CopyWithoutSharedNodes(root);
   NormaliseAliases(root, source);
+  std::vector<std::string> set_keys;
   for (const std::string& assignment : overrides) {
     if (!root.IsMap()) break;  // reported below as "expected a mapping"
-    ApplyOverride(root, AliasedAssignment(assignment), "--set " + assignment);
+    const std::string aliased = AliasedAssignment(assignment);
+    ApplyOverride(root, aliased, "--set " + assignment);
+    set_keys.push_back(aliased.substr(0, aliased.find('=')));
   }
   RejectNonStandardTags(root, source);  // after the overrides: a --set value may carry one too
 
   ExperimentConfig config;
   config.source_file = source;
+  config.set_keys = set_keys;
   YamlFields top(root, source, "");
   ReadPlugins(top, base_dir, config);
   config.name = std::filesystem::path(source).stem().string();

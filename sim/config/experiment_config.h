@@ -46,6 +46,10 @@ struct OutputOptions {
 // give byte-identical trajectory.csv and metrics.json.
 struct ExperimentConfig {
   std::string source_file;  // the YAML it came from, for error messages
+  // The key paths given with --set (a sweep's axes and profiles among them), canonical
+  // (CanonicalKeyPath), in order: what a user set explicitly rather than the file. Not a setting
+  // (config.yaml does not record it): only for refusing a --set that would change nothing.
+  std::vector<std::string> set_keys;
   std::string name;
   // "single" (one run) or a registered multi-run protocol (eval/protocol.h) such as "umbmark".
   // A protocol reads its own options from the top-level section named after it, kept here raw

@@ -222,6 +222,29 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
                               ": the robot can never reach it; move the waypoint into free space");
       }
     }
+    // A tolerance that takes in every waypoint from the spawn passes them all on the first tick:
+    // reach_tolerance_m 1e300 gave controller_finished 1 with 0 m driven, exit 0 (s55); with
+    // loop: true the robot chased whichever waypoint each tick's count stopped on.
+    const msgs::Pose2D spawn = scene_->TruePose();
+    double farthest_m = 0.0;
+    std::size_t farthest = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const double d_m = std::hypot(points[i].x_m - spawn.x_m, points[i].y_m - spawn.y_m);
+      if (d_m > farthest_m) {
+        farthest_m = d_m;
+        farthest = i;
+      }
+    }
+    const double tolerance_m = config.controller.waypoints.reach_tolerance_m;
+    if (!points.empty() && farthest_m <= tolerance_m) {
+      throw ConfigError(
+          config.source_file, "controller.reach_tolerance_m",
+          msgs::ShortestNumber(tolerance_m) +
+              " m takes in every waypoint from the spawn (the farthest, waypoints[" +
+              std::to_string(farthest) + "], lies " + msgs::SixDigitNumber(farthest_m) +
+              " m from it): each counts as reached on the first tick, before the robot drives to "
+              "any; give a tolerance below that distance");
+    }
   }
   // A square's corners are its waypoints: square_hall.yaml with side_m 20 drove the P3-DX into the
   // hall's east wall, encoder drift 82 %, controller_finished 0, exit 0 (s52). The controller lays

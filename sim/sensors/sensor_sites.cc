@@ -56,10 +56,11 @@ RobotExtent ExtentOfTheRobot(const Scene& scene) {
   return extent;
 }
 
-// Whether the site lies over (or under) a colliding geom of the robot, seen from above: a
-// floor-standing wall can then not reach it without meeting that geom. A vertical ray through the
-// site is tested against each colliding geom of the robot alone.
-bool OverACollidingGeom(const Scene& scene, int site_id, double top_m) {
+// The height in the robot frame of the highest colliding surface of the robot on the vertical
+// through the site (over or under it), or nothing when no colliding geom lies there, seen from
+// above: a floor-standing wall can then not reach the site without meeting that geom. A vertical
+// ray through the site is tested against each colliding geom of the robot alone.
+std::optional<double> CollidingSurfaceUnder(const Scene& scene, int site_id, double top_m) {
   const mjModel* m = scene.model();
   const mjData* d = scene.data();
   const int base = scene.base_body_id();
@@ -70,25 +71,84 @@ bool OverACollidingGeom(const Scene& scene, int site_id, double top_m) {
   // From above the robot's top, straight down through the site.
   const Eigen::Vector3d start = site + up * (top_m + 1.0 - up.dot(site - base_W));
   const Eigen::Vector3d down = -up;
+  std::optional<double> nearest_hit;  // along the ray from `start`
   for (int g = 0; g < m->ngeom; ++g) {
     if (!IsOnTheRobot(scene, g) || (m->geom_contype[g] == 0 && m->geom_conaffinity[g] == 0)) {
       continue;
     }
+    double hit = -1.0;
     switch (m->geom_type[g]) {
       case mjGEOM_PLANE:
       case mjGEOM_HFIELD:
         continue;  // not part of a robot's body
       case mjGEOM_MESH:
-        if (mj_rayMesh(m, d, g, start.data(), down.data()) >= 0.0) return true;
+        hit = mj_rayMesh(m, d, g, start.data(), down.data());
         break;
       default:
-        if (mju_rayGeom(d->geom_xpos + 3 * g, d->geom_xmat + 9 * g, m->geom_size + 3 * g,
-                        start.data(), down.data(), m->geom_type[g]) >= 0.0) {
-          return true;
-        }
+        hit = mju_rayGeom(d->geom_xpos + 3 * g, d->geom_xmat + 9 * g, m->geom_size + 3 * g,
+                          start.data(), down.data(), m->geom_type[g]);
     }
+    if (hit >= 0.0 && (!nearest_hit || hit < *nearest_hit)) nearest_hit = hit;
   }
-  return false;
+  if (!nearest_hit) return std::nullopt;
+  return up.dot(start + *nearest_hit * down - base_W);
+}
+
+// Half the vertical extent of a world geom as placed: exact for boxes, spheres, capsules,
+// cylinders and ellipsoids at any angle; the bounding sphere's for meshes and height fields.
+double HalfHeight(const mjModel* m, const mjData* d, int g) {
+  const mjtNum* r = d->geom_xmat + 9 * g;  // row-major: row 2 is the world's z in the geom's axes
+  const mjtNum* size = m->geom_size + 3 * g;
+  const double zx = std::abs(r[6]), zy = std::abs(r[7]), zz = std::abs(r[8]);
+  switch (m->geom_type[g]) {
+    case mjGEOM_BOX:
+      return zx * size[0] + zy * size[1] + zz * size[2];
+    case mjGEOM_SPHERE:
+      return size[0];
+    case mjGEOM_CAPSULE:
+      return zz * size[1] + size[0];
+    case mjGEOM_CYLINDER:
+      return zz * size[1] + size[0] * std::sqrt(std::max(0.0, 1.0 - zz * zz));
+    case mjGEOM_ELLIPSOID:
+      return std::hypot(zx * size[0], zy * size[1], zz * size[2]);
+    default:
+      return m->geom_rbound[g];
+  }
+}
+
+// A world geom whose span holds the site's height while its underside clears the robot's colliding
+// geoms under the site (a low shelf or table top): the robot's hull passes under it and nothing
+// keeps the site out (s54's left item; the hull check above sees floor-standing geoms only).
+// Where in the world the robot can reach is not known here, so any such geom is refused.
+void RequireNoWorldGeomTheSiteCanEnter(const Scene& scene, int site_id,
+                                       const std::string& site_name, double surface_m) {
+  const mjModel* m = scene.model();
+  const mjData* d = scene.data();
+  const int base = scene.base_body_id();
+  const double base_z = d->xpos[3 * base + 2];
+  const double site_z = d->site_xpos[3 * site_id + 2] - base_z;
+  for (int g = 0; g < m->ngeom; ++g) {
+    if (IsOnTheRobot(scene, g) || m->body_weldid[m->geom_bodyid[g]] != 0 ||
+        m->geom_type[g] == mjGEOM_PLANE) {
+      continue;
+    }
+    const double half = HalfHeight(m, d, g);
+    const double bottom = d->geom_xpos[3 * g + 2] - base_z - half;
+    const double top = bottom + 2.0 * half;
+    if (!(bottom > surface_m && bottom <= site_z && site_z <= top)) continue;
+    const char* name = mj_id2name(m, mjOBJ_GEOM, g);
+    throw ConfigError(
+        scene.world_path().string(),
+        name ? "geom '" + std::string(name) + "'" : "geom #" + std::to_string(g),
+        "spans z in [" + SiteMm(bottom) + ", " + SiteMm(top) + "] m, round the site '" + site_name +
+            "' at z " + SiteMm(site_z) +
+            " m, and its underside clears the robot's colliding geoms under that site (their top "
+            "at z " +
+            SiteMm(surface_m) +
+            " m): the robot can pass under it with the site inside it, every beam starting in it; "
+            "raise its underside above the site or model the sensor's mount with a colliding geom "
+            "up to the site");
+  }
 }
 
 // Why a fixed site cannot hold a planar range sensor of `range_max_m`, or nothing.
@@ -112,7 +172,7 @@ std::optional<std::string> OffTheRobotOrTilted(const Scene& scene, int site_id,
   // A site in a corner of that box, off every colliding geom (s54: the laser at (0.235, 0.3,
   // 0.34) on the P3-DX), is inside a wall whenever the robot stands or passes close to one, and
   // casts every beam from inside it: the hall's east wall read 0.009 to 4.3 m in every beam.
-  if (!extent.empty() && !OverACollidingGeom(scene, site_id, extent.top_m)) {
+  if (!extent.empty() && !CollidingSurfaceUnder(scene, site_id, extent.top_m)) {
     return at +
            "is over no colliding geom of the robot (seen from above): a wall can enclose it "
            "without touching the robot, and its beams would start inside the wall; model its "
@@ -154,6 +214,10 @@ SensorSite RequireSensorSite(const Scene& scene, const std::string& site_name,
   if (const std::optional<std::string> why = OffTheRobotOrTilted(scene, *id, range_max_m)) {
     throw ConfigError(scene.robot_path().string(), site_name,
                       *why + "; " + sensor + " needs a " + "level mount on the robot");
+  }
+  if (const std::optional<double> surface =
+          CollidingSurfaceUnder(scene, *id, ExtentOfTheRobot(scene).top_m)) {
+    RequireNoWorldGeomTheSiteCanEnter(scene, *id, site_name, *surface);
   }
   return {*id, scene.SitePoseInRobot(*id)};
 }

@@ -20,7 +20,9 @@ struct SensorSite {
 // or naming the joint-mounted site ("not fixed to the robot's base body"), a site off the robot
 // (beyond the box of its geoms' bounding spheres, or at or below the floor), or a scan plane so
 // tilted that its beams drift further up or down within range_max_m than the site's height: the
-// scans are logged and used as level (X_RS is planar), and such beams meet the floor.
+// scans are logged and used as level (X_RS is planar), and such beams meet the floor. Also, naming
+// the world file and the geom, a static world geom that spans the site's height with its underside
+// above the robot's colliding geoms under the site: the robot can drive under it, site inside.
 SensorSite RequireSensorSite(const Scene& scene, const std::string& site_name,
                              const std::string& sensor, double range_max_m);
 
