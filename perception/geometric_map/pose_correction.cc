@@ -5,7 +5,8 @@
 #include <functional>
 #include <map>
 #include <numbers>
-#include <optional>
+#include <utility>
+#include <vector>
 
 #include "msgs/angle_units.h"
 #include "perception/geometric_map/option_checks.h"
@@ -40,6 +41,66 @@ double BestShift(const std::function<double(int)>& correlation, int window) {
   }
   if (best_value <= 0.0 || std::abs(best) == window) return best;
   return best + ParabolaPeak(correlation(best - 1), best_value, correlation(best + 1));
+}
+
+// The voting scan points (coordinates along an axis) against the reference's within a bin of
+// them, at a shift: how many scan points have one, and the pairs' summed signed distances.
+struct PointMatch {
+  long matched_points = 0;
+  double pairs = 0.0;
+  double offset_sum = 0.0;
+};
+
+class PointMatcher {
+ public:
+  PointMatcher(std::vector<double> voting, std::vector<double> reference, double bin)
+      : voting_(std::move(voting)), reference_(std::move(reference)), bin_(bin) {
+    std::sort(reference_.begin(), reference_.end());
+    prefix_.assign(reference_.size() + 1, 0.0);
+    for (std::size_t i = 0; i < reference_.size(); ++i) prefix_[i + 1] = prefix_[i] + reference_[i];
+  }
+
+  PointMatch Match(double shift_m) const {
+    PointMatch match;
+    for (double c : voting_) {
+      const double at = c + shift_m;
+      const auto lo = std::lower_bound(reference_.begin(), reference_.end(), at - bin_);
+      const auto hi = std::upper_bound(lo, reference_.end(), at + bin_);
+      const double n = static_cast<double>(hi - lo);
+      if (n == 0.0) continue;
+      ++match.matched_points;
+      match.offset_sum +=
+          prefix_[hi - reference_.begin()] - prefix_[lo - reference_.begin()] - n * at;
+      match.pairs += n;
+    }
+    return match;
+  }
+
+ private:
+  std::vector<double> voting_;
+  std::vector<double> reference_;  // sorted
+  std::vector<double> prefix_;     // prefix_[i]: the sum of the first i reference coordinates
+  double bin_;
+};
+
+// `coarse_m` (the correlation's shift, matched as `at_coarse`) refined below the bin size, as the
+// heading is refined on the fitted lines: the mean signed distance from each voting scan point
+// (shifted) to the reference points within a bin of it, iterated (a flat-kernel mean shift) so
+// that a wall's points, a fraction of a bin off, are matched whole. Sharp walls (little noise)
+// fill one bin each, where the correlation's parabola has nothing to fit.
+double RefineShift(const PointMatcher& matcher, PointMatch at_coarse, double coarse_m, double bin,
+                   int min_pairs) {
+  double shift_m = coarse_m;
+  PointMatch match = at_coarse;
+  for (int iteration = 0; iteration < 10; ++iteration) {
+    if (iteration > 0) match = matcher.Match(shift_m);
+    if (match.pairs < min_pairs) break;
+    const double step = match.offset_sum / match.pairs;
+    shift_m += step;
+    if (std::abs(step) < 1e-4 * bin) break;
+  }
+  // The correlation's shift is right to a bin; the refinement only moves within it.
+  return std::clamp(shift_m, coarse_m - bin, coarse_m + bin);
 }
 
 }  // namespace
@@ -115,13 +176,15 @@ bool HistogramPoseCorrector::AxisShift(const std::vector<double>& scan, int axis
   }
   if (strongest < options_.min_peak_votes) return false;
   std::map<long, double> reference_votes;
-  std::vector<double> reference;  // the coordinates, kept only for the refinement below a bin
+  // The coordinates, kept only to match points one by one (the peak's support, the refinement).
+  const bool match_points = options_.require_peak_support || options_.refine_position;
+  std::vector<double> reference;
   const double reach = options_.max_shift_m + 10.0;
   for (const auto& points : recent_points_W_) {
     for (const AxisPoint& p : points) {
       if (p.axis == axis_index && (p.p_W - robot_W).squaredNorm() < reach * reach) {
         const double c = p.p_W.dot(axis);
-        if (options_.refine_position) reference.push_back(c);
+        if (match_points) reference.push_back(c);
         reference_votes[bin_of(c)] += 1.0;
       }
     }
@@ -156,56 +219,23 @@ bool HistogramPoseCorrector::AxisShift(const std::vector<double>& scan, int axis
     return sum;
   };
   *shift_m = BestShift(correlation, window) * bin;
-  if (!options_.refine_position) return true;
-  const std::optional<double> refined = RefineShift(scan, scan_votes, reference, *shift_m);
-  if (refined) *shift_m = *refined;
-  return refined.has_value();
-}
-
-std::optional<double> HistogramPoseCorrector::RefineShift(const std::vector<double>& scan,
-                                                          const std::map<long, double>& scan_votes,
-                                                          std::vector<double> reference,
-                                                          double shift_m) const {
-  // Below the bin size, as the heading is refined on the fitted lines: the mean signed distance
-  // from each voting scan point (shifted) to the reference points within a bin of it, iterated
-  // (a flat-kernel mean shift) so that a wall's points, a fraction of a bin off, are matched
-  // whole. Sharp walls (little noise) fill one bin each, where the correlation's parabola has
-  // nothing to fit.
-  const double bin = options_.position_bin_m;
-  std::sort(reference.begin(), reference.end());
-  std::vector<double> prefix(reference.size() + 1, 0.0);
-  for (std::size_t i = 0; i < reference.size(); ++i) prefix[i + 1] = prefix[i] + reference[i];
+  if (!match_points) return true;
   std::vector<double> voting;  // the scan points in bins that voted, in scan order
   for (double c : scan) {
-    if (scan_votes.contains(static_cast<long>(std::floor(c / bin)))) voting.push_back(c);
+    if (scan_votes.contains(bin_of(c))) voting.push_back(c);
   }
-  const double coarse = shift_m;
-  for (int iteration = 0; iteration < 10; ++iteration) {
-    double sum = 0.0, count = 0.0;
-    long matched = 0;
-    for (double c : voting) {
-      const double at = c + shift_m;
-      const auto lo = std::lower_bound(reference.begin(), reference.end(), at - bin);
-      const auto hi = std::upper_bound(lo, reference.end(), at + bin);
-      const double n = static_cast<double>(hi - lo);
-      if (n == 0.0) continue;
-      ++matched;
-      sum += prefix[hi - reference.begin()] - prefix[lo - reference.begin()] - n * at;
-      count += n;
-    }
-    // The correlation's shift is a match only where min_peak_votes scan points find a reference
-    // point within a bin of them, as a peak needs min_peak_votes votes: its sum of products can
-    // peak on a single pair (a wall seen for the first time against an unrelated point of the
-    // reference), which moved the position by up to max_shift_m (docs/geometric_map.md, "Stop
-    // 54"). Without such a match the axis is left alone, as without a peak.
-    if (iteration == 0 && matched < options_.min_peak_votes) return std::nullopt;
-    if (count < options_.min_peak_votes) break;
-    const double step = sum / count;
-    shift_m += step;
-    if (std::abs(step) < 1e-4 * bin) break;
+  const PointMatcher matcher(std::move(voting), std::move(reference), bin);
+  const PointMatch at_peak = matcher.Match(*shift_m);
+  // The correlation's shift is a match only where min_peak_votes scan points find a reference
+  // point within a bin of them, as a peak needs min_peak_votes votes: its sum of products can peak
+  // on a single pair (a wall seen for the first time against an unrelated point of the reference),
+  // which moved the position by up to max_shift_m (docs/geometric_map.md, "Stop 54", "Stop 55").
+  // Without such a match the axis is left alone, as without a peak.
+  if (at_peak.matched_points < options_.min_peak_votes) return false;
+  if (options_.refine_position) {
+    *shift_m = RefineShift(matcher, at_peak, *shift_m, bin, options_.min_peak_votes);
   }
-  // The correlation's shift is right to a bin; the refinement only moves within it.
-  return std::clamp(shift_m, coarse - bin, coarse + bin);
+  return true;
 }
 
 msgs::Pose2D HistogramPoseCorrector::Correct(const msgs::Pose2D& X_OR,

@@ -1,8 +1,6 @@
 #pragma once
 
 #include <deque>
-#include <map>
-#include <optional>
 #include <span>
 #include <vector>
 
@@ -26,9 +24,10 @@ namespace plywood::perception {
 //    histograms are cross-correlated with those of the last reference_scans corrected scans within
 //    reach; the best shift within +-max_shift_m corrects x and y (bins of position_bin_m), refined
 //    below the bin (refine_position) by the mean signed distance from the scan's voting points to
-//    the reference's within a bin of them, as the heading is refined on the fitted lines (and the
-//    axis left alone when fewer than min_peak_votes scan points have a reference point within a
-//    bin at the correlation's shift: docs/geometric_map.md, "Stop 54"). As in the
+//    the reference's within a bin of them, as the heading is refined on the fitted lines. With
+//    refine_position or require_peak_support the axis is left alone when fewer than
+//    min_peak_votes scan points have a reference point within a bin at the correlation's shift
+//    (docs/geometric_map.md, "Stop 54", "Stop 55"). As in the
 //    paper's distance histograms, a point votes on an axis only when its virtual line is within
 //    histograms.max_wall_tilt_deg of square to it: the points of a wall along the axis, denser
 //    behind the robot where earlier scans saw it, would otherwise pull every shift back along the
@@ -65,6 +64,13 @@ struct PoseCorrectionOptions {
   // generated runs and raises the office's final position error (docs/geometric_map.md, "Stop 53",
   // "Stop 54").
   bool refine_position = false;
+  // The correlation's shift kept only where min_peak_votes scan points have a reference point
+  // within position_bin_m at it (refine_position always applies this rule): a peak of one pair, a
+  // wall seen first against an unrelated reference point, is not a match. Off: it mends every
+  // such jump traced and changes no office run, but costs two segments in one generated family of
+  // one seed, where the later drift happened to be smaller with the jump (docs/geometric_map.md,
+  // "Stop 55").
+  bool require_peak_support = false;
 
   // @throws std::invalid_argument starting with the field's name.
   void Validate() const;
@@ -96,12 +102,6 @@ class HistogramPoseCorrector {
   // reference's.
   bool AxisShift(const std::vector<double>& scan, int axis_index, const Eigen::Vector2d& axis,
                  const Eigen::Vector2d& robot_W, double* shift_m) const;
-
-  // `shift_m` refined below the bin size on the raw coordinates of the voting scan points; none
-  // when fewer than min_peak_votes of them have a reference point within a bin at `shift_m`.
-  std::optional<double> RefineShift(const std::vector<double>& scan,
-                                    const std::map<long, double>& scan_votes,
-                                    std::vector<double> reference, double shift_m) const;
 
   HistogramOptions histogram_options_;
   PoseCorrectionOptions options_;

@@ -125,16 +125,22 @@ TEST(PoseCorrectionTest, AWallSeenFirstDoesNotFollowAGlimpseInTheReference) {
 // The end of a corridor comes into reach with nothing of it in the reference, while a person
 // walks by: seen 6 cm nearer in the scan before (a few points each time). The correlation's peak
 // is those points against the person's earlier ones (the only pairs within max_shift_m), which
-// moved x by 6 cm (generated columns_s1_00006 seed 1, t = 141 s: one pair moved y by 8 cm). With
-// refine_position a shift needs min_peak_votes scan points with a reference point within a bin
-// of them, so x is left alone and exact odometry stays exact.
+// moved x by 6 cm (generated columns_s1_00006 seed 1, t = 141 s: one pair moved y by 8 cm;
+// room_s907_00002 seed 1 without refine_position). A shift needs min_peak_votes scan points with a
+// reference point within a bin of them, so x is left alone and exact odometry stays exact.
+const std::map<int, std::vector<test::Wall>> kPersonWalksByTheEndWall = {
+    {10, {{{1.94, -0.35}, {1.94, -0.2}}}}, {11, {{{2.0, -0.35}, {2.0, -0.2}}}}};
+
 TEST(PoseCorrectionTest, AShiftMatchedByTooFewPointsLeavesTheAxisAlone) {
   PoseCorrectionOptions options;
-  options.refine_position = true;
-  ExpectExactOdometryStaysExactDownTheCorridor(
-      options, 13,
-      {{10, {{{1.94, -0.35}, {1.94, -0.2}}}},  // the person
-       {11, {{{2.0, -0.35}, {2.0, -0.2}}}}});
+  options.refine_position = true;  // applies the rule
+  ExpectExactOdometryStaysExactDownTheCorridor(options, 13, kPersonWalksByTheEndWall);
+}
+
+TEST(PoseCorrectionTest, APlainCorrelationPeakMatchedByTooFewPointsLeavesTheAxisAlone) {
+  PoseCorrectionOptions options;
+  options.require_peak_support = true;  // the plain correlation, not refined
+  ExpectExactOdometryStaysExactDownTheCorridor(options, 13, kPersonWalksByTheEndWall);
 }
 
 // A wheel spinning against a wall: the odometry's heading jumps 20 deg in one scan while the robot

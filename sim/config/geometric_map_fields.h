@@ -48,6 +48,7 @@ void VisitFields(A& a, PoseCorrectionOptions& o) {
   a("reference_scans", o.reference_scans);
   a("require_reference_support", o.require_reference_support);
   a("refine_position", o.refine_position);
+  a("require_peak_support", o.require_peak_support);
 }
 
 template <typename A>
