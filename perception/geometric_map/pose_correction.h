@@ -66,11 +66,11 @@ struct PoseCorrectionOptions {
   bool refine_position = false;
   // The correlation's shift kept only where min_peak_votes scan points have a reference point
   // within position_bin_m at it (refine_position always applies this rule): a peak of one pair, a
-  // wall seen first against an unrelated reference point, is not a match. Off: it mends every
-  // such jump traced and changes no office run, but costs two segments in one generated family of
-  // one seed, where the later drift happened to be smaller with the jump (docs/geometric_map.md,
-  // "Stop 55").
-  bool require_peak_support = false;
+  // wall seen first against an unrelated reference point, is not a match. On since stop 55 (a
+  // fix): it mends every such jump traced and changes no shipped output; it costs two segments in
+  // one generated family of one seed, where the later drift happened to be smaller with the wrong
+  // jump (docs/geometric_map.md, "Stop 55").
+  bool require_peak_support = true;
 
   // @throws std::invalid_argument starting with the field's name.
   void Validate() const;
