@@ -45,23 +45,20 @@ std::vector<double> SquaredDistanceToSet(const std::vector<char>& set, int width
   std::vector<double> f, d;
   std::vector<int> v(static_cast<std::size_t>(longest));
   std::vector<double> z(static_cast<std::size_t>(longest) + 1);
-  const auto at = [&](int ix, int iy) -> double& {
-    return out[static_cast<std::size_t>(iy) * width + ix];
+  // Transforms `lines` lines of `length` cells each, cell k of line l at first * l + step * k.
+  const auto transform = [&](int lines, int length, std::size_t first, std::size_t step) {
+    if (length == 0) return;
+    f.resize(static_cast<std::size_t>(length));
+    d.resize(f.size());
+    for (int l = 0; l < lines; ++l) {
+      for (int k = 0; k < length; ++k) f[k] = out[first * l + step * k];
+      SquaredDistance1d(f, d, v, z);
+      for (int k = 0; k < length; ++k) out[first * l + step * k] = d[k];
+    }
   };
-  f.resize(static_cast<std::size_t>(height));
-  d.resize(f.size());
-  for (int ix = 0; ix < width && height > 0; ++ix) {
-    for (int iy = 0; iy < height; ++iy) f[iy] = at(ix, iy);
-    SquaredDistance1d(f, d, v, z);
-    for (int iy = 0; iy < height; ++iy) at(ix, iy) = d[iy];
-  }
-  f.resize(static_cast<std::size_t>(width));
-  d.resize(f.size());
-  for (int iy = 0; iy < height && width > 0; ++iy) {
-    for (int ix = 0; ix < width; ++ix) f[ix] = at(ix, iy);
-    SquaredDistance1d(f, d, v, z);
-    for (int ix = 0; ix < width; ++ix) at(ix, iy) = d[ix];
-  }
+  const auto w = static_cast<std::size_t>(width);
+  transform(width, height, 1, w);  // the columns, then the rows
+  transform(height, width, w, 1);
   return out;
 }
 
