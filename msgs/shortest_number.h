@@ -24,6 +24,11 @@ inline std::string SixDigitNumber(double value) {
   return ShortestNumber(std::strtod(buffer, nullptr));
 }
 
+// Metres to the millimetre, for messages ("0.255", not "0.25500000000000006").
+inline std::string MillimetreNumber(double metres) {
+  return ShortestNumber(std::round(metres * 1000.0) / 1000.0);
+}
+
 // `value` to six significant digits rounded down (AtMost) or up (AtLeast), then as ShortestNumber:
 // for a limit printed as "at most X" or "at least X", which X itself must meet. Rounding to the
 // nearest printed 1 / 0.0301 s as 33.2226 Hz, above the 33.22259... Hz limit, so the number the

@@ -18,10 +18,6 @@ namespace plywood::sim {
 namespace {
 
 // Lengths to the millimetre in site errors ("0.34", not "0.33999999999999997").
-std::string SiteMm(double metres) {
-  return msgs::ShortestNumber(std::round(metres * 1000.0) / 1000.0);
-}
-
 // The box the robot's geoms fill, in the robot frame: their bounding spheres, placed as the
 // robot stands at its spawn; from the floor (z = 0) up to the top of the highest sphere.
 struct RobotExtent {
@@ -136,15 +132,13 @@ void RequireNoWorldGeomTheSiteCanEnter(const Scene& scene, int site_id,
     const double bottom = d->geom_xpos[3 * g + 2] - base_z - half;
     const double top = bottom + 2.0 * half;
     if (!(bottom > surface_m && bottom <= site_z && site_z <= top)) continue;
-    const char* name = mj_id2name(m, mjOBJ_GEOM, g);
     throw ConfigError(
-        scene.world_path().string(),
-        name ? "geom '" + std::string(name) + "'" : "geom #" + std::to_string(g),
-        "spans z in [" + SiteMm(bottom) + ", " + SiteMm(top) + "] m, round the site '" + site_name +
-            "' at z " + SiteMm(site_z) +
+        scene.world_path().string(), GeomName(m, g),
+        "spans z in [" + msgs::MillimetreNumber(bottom) + ", " + msgs::MillimetreNumber(top) +
+            "] m, round the site '" + site_name + "' at z " + msgs::MillimetreNumber(site_z) +
             " m, and its underside clears the robot's colliding geoms under that site (their top "
             "at z " +
-            SiteMm(surface_m) +
+            msgs::MillimetreNumber(surface_m) +
             " m): the robot can pass under it with the site inside it, every beam starting in it; "
             "raise its underside above the site or model the sensor's mount with a colliding geom "
             "up to the site");
@@ -152,27 +146,30 @@ void RequireNoWorldGeomTheSiteCanEnter(const Scene& scene, int site_id,
 }
 
 // Why a fixed site cannot hold a planar range sensor of `range_max_m`, or nothing.
-std::optional<std::string> OffTheRobotOrTilted(const Scene& scene, int site_id,
-                                               double range_max_m) {
+// `extent`: ExtentOfTheRobot; `surface`: CollidingSurfaceUnder the site.
+std::optional<std::string> OffTheRobotOrTilted(const Scene& scene, int site_id, double range_max_m,
+                                               const RobotExtent& extent,
+                                               std::optional<double> surface) {
   const Eigen::Isometry3d X_BS = scene.SitePoseInBase(site_id);
   const Eigen::Vector3d p = X_BS.translation();
-  const std::string at = "the site at (" + SiteMm(p.x()) + ", " + SiteMm(p.y()) + ", " +
-                         SiteMm(p.z()) + ") in the robot frame ";
+  const std::string at = "the site at (" + msgs::MillimetreNumber(p.x()) + ", " +
+                         msgs::MillimetreNumber(p.y()) + ", " + msgs::MillimetreNumber(p.z()) +
+                         ") in the robot frame ";
   if (!(p.z() > 0.0)) {
     // The robot frame's origin is on the floor (models/README.md): every beam starts under it.
     return at + "is at or below the floor (z = 0 under the robot)";
   }
-  const RobotExtent extent = ExtentOfTheRobot(scene);
   if (!extent.empty() && (p.x() < extent.lo[0] || p.x() > extent.hi[0] || p.y() < extent.lo[1] ||
                           p.y() > extent.hi[1] || p.z() > extent.top_m)) {
-    return at + "lies off the robot: its geoms span x in [" + SiteMm(extent.lo[0]) + ", " +
-           SiteMm(extent.hi[0]) + "], y in [" + SiteMm(extent.lo[1]) + ", " + SiteMm(extent.hi[1]) +
-           "], z in [0, " + SiteMm(extent.top_m) + "] (their bounding spheres)";
+    return at + "lies off the robot: its geoms span x in [" + msgs::MillimetreNumber(extent.lo[0]) +
+           ", " + msgs::MillimetreNumber(extent.hi[0]) + "], y in [" +
+           msgs::MillimetreNumber(extent.lo[1]) + ", " + msgs::MillimetreNumber(extent.hi[1]) +
+           "], z in [0, " + msgs::MillimetreNumber(extent.top_m) + "] (their bounding spheres)";
   }
   // A site in a corner of that box, off every colliding geom (s54: the laser at (0.235, 0.3,
   // 0.34) on the P3-DX), is inside a wall whenever the robot stands or passes close to one, and
   // casts every beam from inside it: the hall's east wall read 0.009 to 4.3 m in every beam.
-  if (!extent.empty() && !CollidingSurfaceUnder(scene, site_id, extent.top_m)) {
+  if (!extent.empty() && !surface) {
     return at +
            "is over no colliding geom of the robot (seen from above): a wall can enclose it "
            "without touching the robot, and its beams would start inside the wall; model its "
@@ -187,7 +184,8 @@ std::optional<std::string> OffTheRobotOrTilted(const Scene& scene, int site_id,
     return at + "has its scan plane (its x-y plane) tilted " +
            msgs::ShortestNumber(std::round(tilt_deg * 10.0) / 10.0) + " deg from level: within " +
            "range_max_m " + msgs::ShortestNumber(range_max_m) + " its beams rise or drop " +
-           SiteMm(range_max_m * sin_tilt) + " m, more than its " + SiteMm(p.z()) +
+           msgs::MillimetreNumber(range_max_m * sin_tilt) + " m, more than its " +
+           msgs::MillimetreNumber(p.z()) +
            " m above the floor (scans are logged and used as level)";
   }
   return std::nullopt;
@@ -211,14 +209,14 @@ SensorSite RequireSensorSite(const Scene& scene, const std::string& site_name,
   }
   // A site off the robot or a steeply tilted one still casts, and the run's figures would be
   // those of a sensor 3 m ahead of the robot, under the floor or looking at it.
-  if (const std::optional<std::string> why = OffTheRobotOrTilted(scene, *id, range_max_m)) {
+  const RobotExtent extent = ExtentOfTheRobot(scene);
+  const std::optional<double> surface = CollidingSurfaceUnder(scene, *id, extent.top_m);
+  if (const std::optional<std::string> why =
+          OffTheRobotOrTilted(scene, *id, range_max_m, extent, surface)) {
     throw ConfigError(scene.robot_path().string(), site_name,
                       *why + "; " + sensor + " needs a " + "level mount on the robot");
   }
-  if (const std::optional<double> surface =
-          CollidingSurfaceUnder(scene, *id, ExtentOfTheRobot(scene).top_m)) {
-    RequireNoWorldGeomTheSiteCanEnter(scene, *id, site_name, *surface);
-  }
+  if (surface) RequireNoWorldGeomTheSiteCanEnter(scene, *id, site_name, *surface);
   return {*id, scene.SitePoseInRobot(*id)};
 }
 

@@ -145,10 +145,9 @@ void RequireTheAxleUnderTheBase(const mjData* d, int base, int left_joint, int r
   };
   const auto [left_x, left_y] = in_base(left_joint);
   const auto [right_x, right_y] = in_base(right_joint);
-  const auto mm = [](double metres) {
-    return msgs::ShortestNumber(std::round(metres * 1000.0) / 1000.0);
+  const auto at = [&](double x, double y) {
+    return "(" + msgs::MillimetreNumber(x) + ", " + msgs::MillimetreNumber(y) + ")";
   };
-  const auto at = [&](double x, double y) { return "(" + mm(x) + ", " + mm(y) + ")"; };
   if (!(left_y > 0.0 && right_y < 0.0)) {
     throw ConfigError(robot, "left_wheel",
                       "the left wheel's axle is at " + at(left_x, left_y) + " and the right's at " +
@@ -160,15 +159,16 @@ void RequireTheAxleUnderTheBase(const mjData* d, int base, int left_joint, int r
        {std::pair{"left_wheel", left_x}, std::pair{"right_wheel", right_x}}) {
     if (std::abs(x) > Scene::kWheelOnFloorToleranceM) {
       throw ConfigError(robot, name,
-                        "the wheel's axle is at x = " + mm(x) +
+                        "the wheel's axle is at x = " + msgs::MillimetreNumber(x) +
                             " m in the base frame; the base frame sits under the wheel-axle "
                             "midpoint (both axles at x = 0 within 1 mm, models/README.md)");
     }
   }
   if (std::abs(left_y + right_y) > Scene::kWheelOnFloorToleranceM) {
     throw ConfigError(robot, "left_wheel",
-                      "the axles are at y = " + mm(left_y) + " and " + mm(right_y) +
-                          " m in the base frame, a midpoint of " + mm((left_y + right_y) / 2.0) +
+                      "the axles are at y = " + msgs::MillimetreNumber(left_y) + " and " +
+                          msgs::MillimetreNumber(right_y) + " m in the base frame, a midpoint of " +
+                          msgs::MillimetreNumber((left_y + right_y) / 2.0) +
                           " m; the base frame sits under the wheel-axle midpoint (y = 0 within "
                           "1 mm, models/README.md)");
   }
@@ -350,8 +350,7 @@ void Scene::RequireRobotOnTheFloor() const {
     const double lowest_m = data_->geom_xpos[3 * tire + 2] - base_z - model_->geom_size[3 * tire];
     if (std::abs(lowest_m) > kWheelOnFloorToleranceM) {
       throw ConfigError(options_.robot_mjcf.string(), mj_id2name(model_.get(), mjOBJ_GEOM, tire),
-                        "the tire's lowest point is " +
-                            msgs::ShortestNumber(std::round(std::abs(lowest_m) * 1000.0) / 1000.0) +
+                        "the tire's lowest point is " + msgs::MillimetreNumber(std::abs(lowest_m)) +
                             " m " + (lowest_m > 0.0 ? "above" : "below") +
                             " the floor (z = 0 in the robot frame, where the base frame sits: "
                             "models/README.md); put the wheel's axle at the tire's radius, " +
@@ -370,8 +369,7 @@ void Scene::RequireRobotOnTheFloor() const {
     if (lowest_m < -kWheelOnFloorToleranceM) {
       throw ConfigError(
           options_.robot_mjcf.string(), GeomNameOrIndex(model_.get(), g),
-          "the geom collides and reaches " +
-              msgs::ShortestNumber(std::round(-lowest_m * 1000.0) / 1000.0) +
+          "the geom collides and reaches " + msgs::MillimetreNumber(-lowest_m) +
               " m below the floor (z = 0 in the robot frame, where the base frame "
               "sits: models/README.md): the floor would lift the robot off its wheels");
     }

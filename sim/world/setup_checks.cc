@@ -13,6 +13,12 @@
 #include "sim/world/mujoco_handles.h"
 
 namespace plywood::sim {
+
+std::string GeomName(const mjModel* m, int geom) {
+  const char* name = mj_id2name(m, mjOBJ_GEOM, geom);
+  return name ? "geom '" + std::string(name) + "'" : "geom #" + std::to_string(geom);
+}
+
 namespace {
 
 // MuJoCo resolves a contact deeper than this by pushing the bodies apart; shallower ones are
@@ -35,14 +41,6 @@ bool IsStaticWorldGeom(const Scene& scene, int geom) {
   const mjModel* m = scene.model();
   return !scene.IsRobotGeom(geom) && m->body_weldid[m->geom_bodyid[geom]] == 0;
 }
-
-std::string GeomName(const mjModel* m, int geom) {
-  const char* name = mj_id2name(m, mjOBJ_GEOM, geom);
-  return name ? "geom '" + std::string(name) + "'" : "geom #" + std::to_string(geom);
-}
-
-// Metres to the millimetre, for messages.
-std::string Mm(double metres) { return msgs::ShortestNumber(std::round(metres * 1000.0) / 1000.0); }
 
 std::string At(const msgs::Pose2D& pose) {
   return "(" + msgs::ShortestNumber(pose.x_m) + ", " + msgs::ShortestNumber(pose.y_m) + ")";
@@ -115,7 +113,8 @@ std::optional<std::string> GeomTheGroundTruthCannotHold(const Scene& scene, doub
       what += " tilted " + msgs::ShortestNumber(std::round(tilt_deg * 100.0) / 100.0) +
               " deg from upright";
     }
-    return "its " + GeomName(m, g) + " is " + what + " within reach of z = " + Mm(height_m) +
+    return "its " + GeomName(m, g) + " is " + what +
+           " within reach of z = " + msgs::MillimetreNumber(height_m) +
            " m, where this run is scored: the 2-D ground truth (walls.csv, the line and occupancy "
            "scores) holds only upright boxes, cylinders and capsules, and spheres, so it would "
            "score what the sensors see of it as wrong; make it of those (worlds/README.md)";
@@ -241,7 +240,7 @@ std::optional<std::string> MissingFloor(const Scene& scene) {
     return "the world has no floor (a static plane geom the wheels can stand on)";
   const double tilt_deg = PlaneTiltRad(d, first_plane) * 180.0 / std::numbers::pi;
   return "the world has no floor at z = 0: its plane " + GeomName(m, first_plane) +
-         " is at z = " + Mm(d->geom_xpos[3 * first_plane + 2]) + " m, tilted " +
+         " is at z = " + msgs::MillimetreNumber(d->geom_xpos[3 * first_plane + 2]) + " m, tilted " +
          msgs::ShortestNumber(std::round(tilt_deg * 100.0) / 100.0) +
          " deg; the robot stands on z = 0, so put a level floor plane there";
 }
@@ -255,8 +254,8 @@ std::optional<std::string> PlaneThatIsNotTheFloor(const Scene& scene) {
     const double tilt_rad = PlaneTiltRad(d, g);
     if (std::abs(z_m) <= kFloorToleranceM && std::abs(tilt_rad) <= kFloorTiltToleranceRad) continue;
     const double tilt_deg = tilt_rad * 180.0 / std::numbers::pi;
-    return "its plane " + GeomName(m, g) + " is at z = " + Mm(z_m) + " m, tilted " +
-           msgs::ShortestNumber(std::round(tilt_deg * 100.0) / 100.0) +
+    return "its plane " + GeomName(m, g) + " is at z = " + msgs::MillimetreNumber(z_m) +
+           " m, tilted " + msgs::ShortestNumber(std::round(tilt_deg * 100.0) / 100.0) +
            " deg beside the floor: a plane is an infinite half-space that walls.csv, the laser's "
            "ground truth and the occupancy truth do not hold; make walls of boxes";
   }
@@ -416,8 +415,9 @@ std::optional<std::string> OutsideTheWalls(const Scene& scene, double x_m, doubl
   for (int axis = 0; axis < 2; ++axis) {
     if (!(xy[axis] >= lo[axis] && xy[axis] <= hi[axis])) {
       return what + "(" + msgs::ShortestNumber(x_m) + ", " + msgs::ShortestNumber(y_m) +
-             ") is outside every room: the world's walls span x in [" + Mm(lo[0]) + ", " +
-             Mm(hi[0]) + "], y in [" + Mm(lo[1]) + ", " + Mm(hi[1]) + "]";
+             ") is outside every room: the world's walls span x in [" +
+             msgs::MillimetreNumber(lo[0]) + ", " + msgs::MillimetreNumber(hi[0]) + "], y in [" +
+             msgs::MillimetreNumber(lo[1]) + ", " + msgs::MillimetreNumber(hi[1]) + "]";
     }
   }
   return std::nullopt;

@@ -10,6 +10,9 @@ namespace plywood::sim {
 // True when the geom hangs under the robot's base body (the robot's own, whatever its group).
 bool IsOnTheRobot(const Scene& scene, int geom);
 
+// "geom 'NAME'", or "geom #ID" for an unnamed one: how messages name a geom.
+std::string GeomName(const mjModel* m, int geom);
+
 // What makes a compiled scene unfit to simulate, checked after compilation and before the first
 // step. Each returns a description of the problem (for a one-line error), or nullopt when fine.
 
