@@ -1266,13 +1266,14 @@ TEST(SweepCliTest, TwoWorldFilesOfOneNameAreSummarisedApart) {
   EXPECT_EQ(summary[2][2], "1");
   // audit s49: one run has no std and no 95 % interval: they were written 0 and [mean, mean].
   for (const auto& row : {summary[1], summary[2]}) {
-    ASSERT_EQ(row.size(), 9u);
+    ASSERT_EQ(row.size(), 10u);
     EXPECT_NE(row[3], "");      // mean
     EXPECT_EQ(row[4], "");      // std
     EXPECT_EQ(row[5], "");      // ci95_low
     EXPECT_EQ(row[6], "");      // ci95_high
     EXPECT_EQ(row[7], row[3]);  // min
     EXPECT_EQ(row[8], row[3]);  // max
+    EXPECT_EQ(row[9], row[3]);  // p90
   }
   EXPECT_NE(r.out.find("n 1, value "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("(one run: no spread or 95 % CI)"), std::string::npos) << r.out;

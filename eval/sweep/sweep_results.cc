@@ -111,8 +111,11 @@ SampleSummary Summarise(const std::vector<double>& values) {
   SampleSummary s;
   s.n = static_cast<int>(values.size());
   if (s.n == 0) return s;
-  s.min = *std::min_element(values.begin(), values.end());
-  s.max = *std::max_element(values.begin(), values.end());
+  std::vector<double> sorted = values;
+  std::sort(sorted.begin(), sorted.end());
+  s.min = sorted.front();
+  s.max = sorted.back();
+  s.p90 = sorted[(9 * sorted.size() + 9) / 10 - 1];  // ceil(0.9 n) in integers
   double sum = 0.0;
   for (double v : values) sum += v;
   s.mean = sum / s.n;
@@ -308,7 +311,7 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
     members[key].push_back(&row);
   }
   std::vector<std::string> summary_header = group_columns;
-  for (const char* c : {"metric", "n", "mean", "std", "ci95_low", "ci95_high", "min", "max"})
+  for (const char* c : {"metric", "n", "mean", "std", "ci95_low", "ci95_high", "min", "max", "p90"})
     summary_header.push_back(c);
   std::string summary = CsvLine(summary_header);
   std::string table;
@@ -325,7 +328,7 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
       std::vector<std::string> fields = group;
       fields.push_back(metric);
       fields.push_back(std::to_string(s.n));
-      for (double v : {s.mean, s.std, s.ci95_low, s.ci95_high, s.min, s.max})
+      for (double v : {s.mean, s.std, s.ci95_low, s.ci95_high, s.min, s.max, s.p90})
         fields.push_back(s.n && std::isfinite(v) ? sim::FormatNumber(v) : "");
       summary += CsvLine(fields);
       std::string label;
@@ -338,7 +341,8 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
       } else if (s.n) {
         table += ", mean " + Fixed(s.mean, "%.4g") + " (95 % CI " + Fixed(s.ci95_low, "%.4g") +
                  " .. " + Fixed(s.ci95_high, "%.4g") + "), std " + Fixed(s.std, "%.3g") + ", min " +
-                 Fixed(s.min, "%.4g") + ", max " + Fixed(s.max, "%.4g");
+                 Fixed(s.min, "%.4g") + ", max " + Fixed(s.max, "%.4g") + ", p90 " +
+                 Fixed(s.p90, "%.4g");
       }
       table += "\n";
     }

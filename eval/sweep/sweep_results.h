@@ -6,7 +6,8 @@
 
 namespace plywood::eval {
 
-// Mean, spread and the 95 % confidence interval of the mean (Student's t) of some values.
+// Mean, spread and the 95 % confidence interval of the mean (Student's t) of some values, and
+// their 90th percentile (issue 14's bar is on it).
 struct SampleSummary {
   int n = 0;
   double mean = 0.0;
@@ -15,6 +16,9 @@ struct SampleSummary {
   double ci95_high = 0.0;
   double min = 0.0;
   double max = 0.0;
+  // Nearest rank: the smallest value at least 90 % of the values are no larger than (the
+  // ceil(0.9 n)-th smallest), always one of the values, as docs/sonar_map.md's tables use.
+  double p90 = 0.0;
 };
 SampleSummary Summarise(const std::vector<double>& values);
 

@@ -38,6 +38,20 @@ TEST(SweepResultsTest, SummaryMatchesClosedForm) {
   EXPECT_EQ(Summarise({}).n, 0);
 }
 
+// Issue 14's bar is on the 90th percentile (nearest rank), so a sweep's summary reports it.
+TEST(SweepResultsTest, NinetiethPercentileIsTheNearestRank) {
+  EXPECT_EQ(Summarise({5, 1, 4, 2, 3}).p90, 5.0);  // ceil(4.5) = 5th smallest
+  std::vector<double> ten;
+  for (int i = 10; i >= 1; --i) ten.push_back(i);
+  EXPECT_EQ(Summarise(ten).p90, 9.0);  // the 9th smallest of 1..10, not interpolated
+  ten.push_back(11);
+  EXPECT_EQ(Summarise(ten).p90, 10.0);  // ceil(9.9) = 10th of 11
+  std::vector<double> many;
+  for (int i = 0; i < 150; ++i) many.push_back(150 - i);  // 1..150, as a 50 x 3 sweep
+  EXPECT_EQ(Summarise(many).p90, 135.0);
+  EXPECT_EQ(Summarise({7}).p90, 7.0);
+}
+
 TEST(SweepResultsTest, StudentQuantilesApproachTheNormalOne) {
   EXPECT_DOUBLE_EQ(StudentT95(1), 12.706);
   EXPECT_DOUBLE_EQ(StudentT95(30), 2.042);
