@@ -5,10 +5,13 @@ name, world, profile, seed and the set axes both have (from each folder's sweep.
 NEW has (the option under test) labels the groups. Prints per group mean / p90 (nearest rank) /
 worst / runs above a threshold / runs with a contact, base and new, then how many runs went down
 and up, crossed the threshold either way, rose by more than --rise, and gained a contact. With -v
-it lists the runs that moved most.
+it lists the runs that moved most. With --rooms each group gets a second row read per room: a
+room's figure is the mean over its runs (its run seeds), and mean / p90 / worst / count above the
+threshold / rooms with a contact are taken over rooms (the other reading of issue 14's "no room
+above 0.10"; docs/sonar_map.md, "Where it stands").
 
 usage: scripts/sweep_compare.py BASE NEW [--metric M] [--threshold T] [--rise R]
-                                 [--contacts M] [-v]
+                                 [--contacts M] [--rooms] [-v]
 BASE and NEW are finished sweep folders (or the results.csv inside one).
 """
 import argparse
@@ -58,6 +61,8 @@ def main():
     parser.add_argument("--threshold", type=float, default=0.10)
     parser.add_argument("--rise", type=float, default=0.02)
     parser.add_argument("--contacts", default="sensors.bumpers.contact_samples")
+    parser.add_argument("--rooms", action="store_true",
+                        help="also print each group read per room (mean over its runs)")
     parser.add_argument("-v", "--verbose", action="store_true")
     args = parser.parse_args()
 
@@ -115,6 +120,23 @@ def main():
         print(f"| {label} | {len(members)} | {summary(be, bc, args.threshold)} | "
               f"{summary(ne, nc, args.threshold)} | {down} / {up} | {cross_up} / {cross_down} | "
               f"{rises} | {gained} |")
+        if args.rooms:
+            rooms = {}
+            for b, n in members:
+                rooms.setdefault(b["world"], []).append((b, n))
+            room_base = [sum(number(b[args.metric]) for b, _ in r) / len(r) for r in rooms.values()]
+            room_new = [sum(number(n[args.metric]) for _, n in r) / len(r) for r in rooms.values()]
+            room_bc = [max(bc[members.index(p)] for p in r) for r in rooms.values()]
+            room_nc = [max(nc[members.index(p)] for p in r) for r in rooms.values()]
+            down = sum(n < b for b, n in zip(room_base, room_new))
+            up = sum(n > b for b, n in zip(room_base, room_new))
+            cross_up = sum(b <= args.threshold < n for b, n in zip(room_base, room_new))
+            cross_down = sum(n <= args.threshold < b for b, n in zip(room_base, room_new))
+            rises = sum(n - b > args.rise for b, n in zip(room_base, room_new))
+            gained = sum(c_b <= 0 < c_n for c_b, c_n in zip(room_bc, room_nc))
+            print(f"| {label} (rooms) | {len(rooms)} | {summary(room_base, room_bc, args.threshold)} | "
+                  f"{summary(room_new, room_nc, args.threshold)} | {down} / {up} | "
+                  f"{cross_up} / {cross_down} | {rises} | {gained} |")
         if args.verbose:
             moved = sorted(members, key=lambda p: -abs(number(p[1][args.metric]) -
                                                         number(p[0][args.metric])))
