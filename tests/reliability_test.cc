@@ -1480,6 +1480,81 @@ TEST_F(ReliabilityTest, UnknownYamlTagsAreRefusedNamingTheirField) {
   EXPECT_EQ(Run(HallExperiment(0.0, 0.0, "seed: !!int 7\n"), "").exit_code, 0);
 }
 
+// s56: a core-schema tag was said to be held to its meaning by the readers' type checks, but they
+// ask what the key needs: `duration_s: !!bool 0.2` and `!!int 0.2` ran 0.2 s, `!!null 1` ran 1 s,
+// `--set 'seed=!!bool 7'` seed 7, exit 0. A core tag must fit its value (YAML 1.2 core schema).
+TEST_F(ReliabilityTest, CoreYamlTagsMustFitTheirValues) {
+  const std::string hall = HallExperiment(0.0, 0.0);
+  const auto with = [&](const std::string& from, const std::string& to) {
+    std::string yaml = hall;
+    yaml.replace(yaml.find(from), from.size(), to);
+    return yaml;
+  };
+  ExpectRefused(with("duration_s: 0.5", "duration_s: !!bool 0.5"), "",
+                {"experiment.yaml: duration_s: the YAML tag '!!bool' says a boolean (true or "
+                 "false), but the value is '0.5'"});
+  ExpectRefused(with("duration_s: 0.5", "duration_s: !!int 0.5"), "",
+                {"duration_s: the YAML tag '!!int' says a whole number, but the value is '0.5'"});
+  ExpectRefused(with("duration_s: 0.5", "duration_s: !!null 1"), "",
+                {"duration_s: the YAML tag '!!null' says null"});
+  ExpectRefused(with("model: p3dx", "model: !!seq p3dx"), "",
+                {"robot.model: the YAML tag '!!seq' says a list, but the value is 'p3dx'"});
+  ExpectRefused(hall, "--set 'seed=!!bool 7'",
+                {"experiment.yaml: seed: the YAML tag '!!bool' says a boolean"});
+  EXPECT_EQ(Run(with("duration_s: 0.5", "duration_s: !!float 1"), "").exit_code, 0);
+  EXPECT_EQ(Run(with("name: hall_spawn", "name: !!str hall_spawn"), "").exit_code, 0);
+}
+
+// s56: `--set duration_s.=1` (a trailing dot) set duration_s without a word where `a..b` and `.a`
+// were refused; `? [a, b]: 1` (a list as a key) was called "a key that is null or empty".
+TEST_F(ReliabilityTest, OverridePathsWithATrailingDotAndKeysThatAreListsAreNamed) {
+  ExpectRefused(HallExperiment(0.0, 0.0), "--set duration_s.=1",
+                {"plywood: --set duration_s.=1: duration_s.: empty key in path"});
+  ExpectRefused(HallExperiment(0.0, 0.0, "? [a, b]\n: 1\n"), "",
+                {"experiment.yaml: ?: unknown key: a key that is a list"});
+  ExpectRefused(HallExperiment(0.0, 0.0, "physics: {? {a: 1}: 1, ? {b: 1}: 2}\n"), "",
+                {"experiment.yaml: physics.?: unknown key: a key that is a map"});
+}
+
+// s56 (s55's left item): `controller.speed_m_s: 1e-308` ran and drove 8e-6 m in 20 s, exit 0. A
+// cruise speed below one encoder count per control tick is one the robot cannot measure: the
+// P3-DX's 39000 counts per turn of a 0.0975 m wheel give 1.5708e-05 m a count, at 50 Hz
+// 0.000785398 m/s; the Magellan Pro's 800 steps of a 0.0762 m wheel 0.0299237 m/s.
+TEST_F(ReliabilityTest, ACruiseSpeedTheEncodersCannotResolveIsRefused) {
+  const std::string yaml = HallExperiment(
+      -2.0, -2.0, "controller: {type: waypoints, speed_m_s: 0.4, waypoints: [[1, -2]]}\n");
+  ExpectRefused(yaml, "--set controller.speed_m_s=1e-308",
+                {"experiment.yaml: controller.speed_m_s: 1e-308 m/s turns the wheels less than "
+                 "one encoder count (1.5708e-05 m of rim: robot.nominal.encoder_ticks_per_rev "
+                 "39000, wheel_radius_m 0.0975) per control tick (every 0.02 s at "
+                 "controller.rate_hz 50 Hz)",
+                 "give at least 0.000785399 m/s"});
+  ExpectRefused(yaml, "--set controller.speed_m_s=0.02 --set robot.model=magellan_pro",
+                {"controller.speed_m_s: 0.02 m/s", "encoder_ticks_per_rev 800",
+                 "give at least 0.0299237 m/s"});
+  ExpectRefused(HallExperiment(-2.0, -2.0, "controller: {type: square_path, speed_m_s: 1e-5}\n"),
+                "", {"controller.speed_m_s: 1e-05 m/s"});
+  // The printed floor runs; a lower rate lowers it.
+  EXPECT_EQ(Run(yaml, "--set controller.speed_m_s=0.000785399").exit_code, 0);
+  EXPECT_EQ(Run(yaml, "--set controller.speed_m_s=0.0004 --set controller.rate_hz=20").exit_code,
+            0);
+}
+
+// s56 (s55's left item): run.simulated_s was MuJoCo's float sum of the steps, 0.5100000000000002
+// for 51 steps of 0.01 s (117.62000000002327 in seed 001's runs); now whole steps times the step.
+TEST_F(ReliabilityTest, TheSimulatedTimeIsReportedAsTheExactDecimalOfItsSteps) {
+  std::string yaml = HallExperiment(0.0, 0.0);
+  yaml.replace(yaml.find("duration_s: 0.5"), 15, "duration_s: 0.505");
+  const fs::path dir = Dir();
+  const CliResult run = RunPlywood("run " + WriteFile(dir / "experiment.yaml", yaml).string() +
+                                       " --quiet --out " + (dir / "out").string(),
+                                   dir);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string metrics = Slurp(dir / "out" / "metrics.json");
+  EXPECT_NE(metrics.find("\"simulated_s\": 0.51,"), std::string::npos) << metrics;
+  EXPECT_NE(metrics.find("\"steps\": 51"), std::string::npos) << metrics;
+}
+
 // s38: legal but absurd values ran. A spawn heading of 1e300 deg (its double's spacing is 1e284
 // deg: no heading at all), a range noise larger than the sensor's whole range (most readings
 // clipped), a forward speed beyond the wheels' limit (capped without a word: speed_m_s 1e300 drove

@@ -251,6 +251,43 @@ void RequireWaypointsAControlPeriodCanReach(const YamlFields& top, const Experim
                msgs::ShortestNumber(per_tick_m / 2.0) + " m, a higher rate_hz or a lower speed");
 }
 
+// A cruise speed the robot's own encoders resolve: at least one count of the nominal
+// encoder_ticks_per_rev (2 pi wheel_radius_m / ticks of rim) per control period. Below it the
+// encoders read no motion over most ticks, so neither the odometry a controller may steer by nor
+// a wheel speed servo measuring counts per period can tell the robot is moving; speed_m_s: 1e-308
+// ran and drove 8e-6 m in 20 s, exit 0 (s55's left item). The period is the longest between two
+// ticks, as for the reach tolerance, so the floor is the lowest the schedule allows.
+void RequireACruiseSpeedTheEncodersResolve(const YamlFields& top, const ExperimentConfig& config) {
+  const ControllerConfig& controller = config.controller;
+  double speed_m_s = 0.0;
+  if (controller.type == "waypoints") {
+    speed_m_s = controller.waypoints.speed_m_s;
+  } else if (controller.type == "square_path") {
+    speed_m_s = controller.square_path.speed_m_s;
+  } else if (controller.type == "wall_following") {
+    speed_m_s = controller.wall_following.speed_m_s;
+  } else if (controller.type == "sonar_explorer") {
+    speed_m_s = controller.sonar_explorer.speed_m_s;
+  } else {
+    return;
+  }
+  const robot::DiffDriveSpec& nominal = config.nominal;
+  const double count_m =
+      2.0 * std::numbers::pi * nominal.wheel_radius_m / nominal.encoder_ticks_per_rev;
+  const double period_s = SampleStepTimeS(1.0, controller.rate_hz, config.physics.timestep_s);
+  const double floor_m_s = count_m / period_s;
+  if (speed_m_s >= floor_m_s) return;
+  top.Fail("controller.speed_m_s",
+           msgs::ShortestNumber(speed_m_s) + " m/s turns the wheels less than one encoder count (" +
+               msgs::SixDigitNumber(count_m) + " m of rim: robot.nominal.encoder_ticks_per_rev " +
+               std::to_string(nominal.encoder_ticks_per_rev) + ", wheel_radius_m " +
+               msgs::ShortestNumber(nominal.wheel_radius_m) + ") per control tick (every " +
+               msgs::ShortestNumber(period_s) + " s at controller.rate_hz " +
+               msgs::ShortestNumber(controller.rate_hz) +
+               " Hz): the robot cannot measure its own motion; give at least " +
+               msgs::SixDigitNumberAtLeast(floor_m_s) + " m/s or a lower rate_hz");
+}
+
 // Seed 003's map fuses each IR scan with the sonar ring nearest in time, if one is at most
 // geometric_map.max_sonar_age_s away (eval/geometric_map/geometric_map_run.cc). With rates whose
 // samples do not meet (the defaults, IR 2 Hz and sonar 3.125 Hz, against 0.1 s) some scans have no
@@ -528,6 +565,7 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   }
   ReadOptions(top.Child("output"), config.output);
   RequireRatesTheClockCanKeep(top, config);
+  RequireACruiseSpeedTheEncodersResolve(top, config);
   RequireWaypointsAControlPeriodCanReach(top, config);
   RequireASonarRingForEveryIrScan(top, config);
   RequireCountersThatHoldAnInterval(top, config);
