@@ -1532,8 +1532,22 @@ TEST_F(ReliabilityTest, ACruiseSpeedTheEncodersCannotResolveIsRefused) {
   ExpectRefused(yaml, "--set controller.speed_m_s=0.02 --set robot.model=magellan_pro",
                 {"controller.speed_m_s: 0.02 m/s", "encoder_ticks_per_rev 800",
                  "give at least 0.0299237 m/s"});
-  ExpectRefused(HallExperiment(-2.0, -2.0, "controller: {type: square_path, speed_m_s: 1e-5}\n"),
-                "", {"controller.speed_m_s: 1e-05 m/s"});
+  ExpectRefused(
+      HallExperiment(
+          -2.0, -2.0,
+          "controller: {type: square_path, side_m: 1, direction: ccw, speed_m_s: 1e-5}\n"),
+      "", {"controller.speed_m_s: 1e-05 m/s"});
+  // The ramp to that speed must end within duration_s (0.5 s): accel_m_s2 1e-308 drove 8e-6 m.
+  ExpectRefused(
+      yaml, "--set controller.accel_m_s2=1e-308",
+      {"experiment.yaml: controller.accel_m_s2: the ramp takes", "to reach 0.000785398 m/s",
+       "more than duration_s = 0.5 s", "give at least 0.0015708 m/s2"});
+  EXPECT_EQ(Run(yaml, "--set controller.accel_m_s2=0.0015708").exit_code, 0);
+  // The spot turns' top rate: 1e-308 rad/s drove default's tour straight on, never turning.
+  ExpectRefused(yaml, "--set controller.max_turn_rate_rad_s=1e-308",
+                {"controller.max_turn_rate_rad_s: 1e-308 rad/s turns the wheels (0.165 m from the "
+                 "centre: robot.nominal.track_m / 2) less than one encoder count",
+                 "give at least 0.00475999 rad/s"});
   // The printed floor runs; a lower rate lowers it.
   EXPECT_EQ(Run(yaml, "--set controller.speed_m_s=0.000785399").exit_code, 0);
   EXPECT_EQ(Run(yaml, "--set controller.speed_m_s=0.0004 --set controller.rate_hz=20").exit_code,
