@@ -1554,6 +1554,22 @@ TEST_F(ReliabilityTest, ACruiseSpeedTheEncodersCannotResolveIsRefused) {
             0);
 }
 
+// s56: a gyro step at least twice the fastest turn the wheels allow (P3-DX: 2 x 12.3 x 0.0975 /
+// 0.33 = 7.26818 rad/s) rounds every rate the robot can turn at to one step: ekf_calibration's
+// gyro estimator ended 177 deg off at 15 and at 35 rad/s alike, exit 0.
+TEST_F(ReliabilityTest, AGyroStepCoarserThanEveryTurnIsRefused) {
+  const auto with_step = [](const std::string& step) {
+    return HallExperiment(0.0, 0.0, "", "{encoders: {}, gyro: {quantisation_rad_s: " + step + "}}");
+  };
+  ExpectRefused(with_step("35"), "",
+                {"experiment.yaml: sensors.gyro.quantisation_rad_s: 35 rad/s is at least twice the "
+                 "fastest turn robot 'p3dx' can make (7.26818 rad/s: 2 x max_wheel_speed_rad_s "
+                 "12.3 x wheel_radius_m 0.0975 / track_m 0.33)",
+                 "give less than 14.5363 rad/s"});
+  ExpectRefused(with_step("15"), "", {"sensors.gyro.quantisation_rad_s: 15 rad/s"});
+  EXPECT_EQ(Run(with_step("14.5363")).exit_code, 0);
+}
+
 // s56 (s55's left item): run.simulated_s was MuJoCo's float sum of the steps, 0.5100000000000002
 // for 51 steps of 0.01 s (117.62000000002327 in seed 001's runs); now whole steps times the step.
 TEST_F(ReliabilityTest, TheSimulatedTimeIsReportedAsTheExactDecimalOfItsSteps) {

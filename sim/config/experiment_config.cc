@@ -327,6 +327,30 @@ void RequireACruiseSpeedTheEncodersResolve(const YamlFields& top, const Experime
                             msgs::SixDigitNumberAtLeast(least) + (wheel ? " rad/s2" : " m/s2"));
 }
 
+// A gyro step coarser than the turns the robot can make: with quantisation_rad_s at least twice
+// the fastest yaw rate its wheels allow (2 max_wheel_speed_rad_s wheel_radius_m / track_m), every
+// rate it can turn at rounds to the same step (0 without bias), and the gyro-based estimators
+// integrate nothing of the turns: ekf_calibration at 15 and 35 rad/s gave the same -177 deg
+// heading error for the gyro estimator (19 deg with no quantisation), exit 0 (s56).
+void RequireAGyroStepFinerThanTheTurns(const YamlFields& top, const ExperimentConfig& config) {
+  if (!config.sensors.gyro || config.sensors.gyro->quantisation_rad_s == 0.0) return;
+  const robot::DiffDriveSpec& nominal = config.nominal;
+  const double fastest_rad_s =
+      2.0 * nominal.max_wheel_speed_rad_s * nominal.wheel_radius_m / nominal.track_m;
+  const double step_rad_s = config.sensors.gyro->quantisation_rad_s;
+  if (step_rad_s < 2.0 * fastest_rad_s) return;
+  top.Fail("sensors.gyro.quantisation_rad_s",
+           msgs::ShortestNumber(step_rad_s) + " rad/s is at least twice the fastest turn robot '" +
+               config.robot + "' can make (" + msgs::SixDigitNumber(fastest_rad_s) +
+               " rad/s: 2 x max_wheel_speed_rad_s " +
+               msgs::ShortestNumber(nominal.max_wheel_speed_rad_s) + " x wheel_radius_m " +
+               msgs::ShortestNumber(nominal.wheel_radius_m) + " / track_m " +
+               msgs::ShortestNumber(nominal.track_m) +
+               "): every rate it can turn at rounds to one step, and the gyro sees no turn; give "
+               "less than " +
+               msgs::SixDigitNumberAtMost(2.0 * fastest_rad_s) + " rad/s");
+}
+
 // Seed 003's map fuses each IR scan with the sonar ring nearest in time, if one is at most
 // geometric_map.max_sonar_age_s away (eval/geometric_map/geometric_map_run.cc). With rates whose
 // samples do not meet (the defaults, IR 2 Hz and sonar 3.125 Hz, against 0.1 s) some scans have no
@@ -605,6 +629,7 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   ReadOptions(top.Child("output"), config.output);
   RequireRatesTheClockCanKeep(top, config);
   RequireACruiseSpeedTheEncodersResolve(top, config);
+  RequireAGyroStepFinerThanTheTurns(top, config);
   RequireWaypointsAControlPeriodCanReach(top, config);
   RequireASonarRingForEveryIrScan(top, config);
   RequireCountersThatHoldAnInterval(top, config);
