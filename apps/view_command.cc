@@ -320,6 +320,10 @@ Command AddViewCommand(CLI::App& app) {
             const bool replay = std::filesystem::is_directory(flags->target);
             RefuseFlagsTheModeIgnores(*cli, *flags, replay);
             CheckViewFlags(*flags, time->count() > 0, replay);
+            // --size and --speed were parsed only once the display was found: without one,
+            // `--speed 0` or `--size 0x0` read "no display", the bad flag unnamed (s56).
+            WindowOf(*flags);
+            if (!replay && !flags->bench) SpeedOf(flags->speed);
             if (replay) return Replay(*flags);
             std::vector<std::string> overrides = flags->overrides;
             if (seed->count() > 0) overrides.push_back("seed=" + flags->seed);

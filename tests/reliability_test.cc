@@ -1480,6 +1480,111 @@ TEST_F(ReliabilityTest, UnknownYamlTagsAreRefusedNamingTheirField) {
   EXPECT_EQ(Run(HallExperiment(0.0, 0.0, "seed: !!int 7\n"), "").exit_code, 0);
 }
 
+// s56: a core-schema tag was said to be held to its meaning by the readers' type checks, but they
+// ask what the key needs: `duration_s: !!bool 0.2` and `!!int 0.2` ran 0.2 s, `!!null 1` ran 1 s,
+// `--set 'seed=!!bool 7'` seed 7, exit 0. A core tag must fit its value (YAML 1.2 core schema).
+TEST_F(ReliabilityTest, CoreYamlTagsMustFitTheirValues) {
+  const std::string hall = HallExperiment(0.0, 0.0);
+  const auto with = [&](const std::string& from, const std::string& to) {
+    std::string yaml = hall;
+    yaml.replace(yaml.find(from), from.size(), to);
+    return yaml;
+  };
+  ExpectRefused(with("duration_s: 0.5", "duration_s: !!bool 0.5"), "",
+                {"experiment.yaml: duration_s: the YAML tag '!!bool' says a boolean (true or "
+                 "false), but the value is '0.5'"});
+  ExpectRefused(with("duration_s: 0.5", "duration_s: !!int 0.5"), "",
+                {"duration_s: the YAML tag '!!int' says a whole number, but the value is '0.5'"});
+  ExpectRefused(with("duration_s: 0.5", "duration_s: !!null 1"), "",
+                {"duration_s: the YAML tag '!!null' says null"});
+  ExpectRefused(with("model: p3dx", "model: !!seq p3dx"), "",
+                {"robot.model: the YAML tag '!!seq' says a list, but the value is 'p3dx'"});
+  ExpectRefused(hall, "--set 'seed=!!bool 7'",
+                {"experiment.yaml: seed: the YAML tag '!!bool' says a boolean"});
+  EXPECT_EQ(Run(with("duration_s: 0.5", "duration_s: !!float 1"), "").exit_code, 0);
+  EXPECT_EQ(Run(with("name: hall_spawn", "name: !!str hall_spawn"), "").exit_code, 0);
+}
+
+// s56: `--set duration_s.=1` (a trailing dot) set duration_s without a word where `a..b` and `.a`
+// were refused; `? [a, b]: 1` (a list as a key) was called "a key that is null or empty".
+TEST_F(ReliabilityTest, OverridePathsWithATrailingDotAndKeysThatAreListsAreNamed) {
+  ExpectRefused(HallExperiment(0.0, 0.0), "--set duration_s.=1",
+                {"plywood: --set duration_s.=1: duration_s.: empty key in path"});
+  ExpectRefused(HallExperiment(0.0, 0.0, "? [a, b]\n: 1\n"), "",
+                {"experiment.yaml: ?: unknown key: a key that is a list"});
+  ExpectRefused(HallExperiment(0.0, 0.0, "physics: {? {a: 1}: 1, ? {b: 1}: 2}\n"), "",
+                {"experiment.yaml: physics.?: unknown key: a key that is a map"});
+}
+
+// s56 (s55's left item): `controller.speed_m_s: 1e-308` ran and drove 8e-6 m in 20 s, exit 0. A
+// cruise speed below one encoder count per control tick is one the robot cannot measure: the
+// P3-DX's 39000 counts per turn of a 0.0975 m wheel give 1.5708e-05 m a count, at 50 Hz
+// 0.000785398 m/s; the Magellan Pro's 800 steps of a 0.0762 m wheel 0.0299237 m/s.
+TEST_F(ReliabilityTest, ACruiseSpeedTheEncodersCannotResolveIsRefused) {
+  const std::string yaml = HallExperiment(
+      -2.0, -2.0, "controller: {type: waypoints, speed_m_s: 0.4, waypoints: [[1, -2]]}\n");
+  ExpectRefused(yaml, "--set controller.speed_m_s=1e-308",
+                {"experiment.yaml: controller.speed_m_s: 1e-308 m/s turns the wheels less than "
+                 "one encoder count (1.5708e-05 m of rim: robot.nominal.encoder_ticks_per_rev "
+                 "39000, wheel_radius_m 0.0975) per control tick (every 0.02 s at "
+                 "controller.rate_hz 50 Hz)",
+                 "give at least 0.000785399 m/s"});
+  ExpectRefused(yaml, "--set controller.speed_m_s=0.02 --set robot.model=magellan_pro",
+                {"controller.speed_m_s: 0.02 m/s", "encoder_ticks_per_rev 800",
+                 "give at least 0.0299237 m/s"});
+  ExpectRefused(
+      HallExperiment(
+          -2.0, -2.0,
+          "controller: {type: square_path, side_m: 1, direction: ccw, speed_m_s: 1e-5}\n"),
+      "", {"controller.speed_m_s: 1e-05 m/s"});
+  // The ramp to that speed must end within duration_s (0.5 s): accel_m_s2 1e-308 drove 8e-6 m.
+  ExpectRefused(
+      yaml, "--set controller.accel_m_s2=1e-308",
+      {"experiment.yaml: controller.accel_m_s2: the ramp takes", "to reach 0.000785398 m/s",
+       "more than duration_s = 0.5 s", "give at least 0.0015708 m/s2"});
+  EXPECT_EQ(Run(yaml, "--set controller.accel_m_s2=0.0015708").exit_code, 0);
+  // The spot turns' top rate: 1e-308 rad/s drove default's tour straight on, never turning.
+  ExpectRefused(yaml, "--set controller.max_turn_rate_rad_s=1e-308",
+                {"controller.max_turn_rate_rad_s: 1e-308 rad/s turns the wheels (0.165 m from the "
+                 "centre: robot.nominal.track_m / 2) less than one encoder count",
+                 "give at least 0.00475999 rad/s"});
+  // The printed floor runs; a lower rate lowers it.
+  EXPECT_EQ(Run(yaml, "--set controller.speed_m_s=0.000785399").exit_code, 0);
+  EXPECT_EQ(Run(yaml, "--set controller.speed_m_s=0.0004 --set controller.rate_hz=20").exit_code,
+            0);
+}
+
+// s56: a gyro step at least twice the fastest turn the wheels allow (P3-DX: 2 x 12.3 x 0.0975 /
+// 0.33 = 7.26818 rad/s) rounds every rate the robot can turn at to one step: ekf_calibration's
+// gyro estimator ended 177 deg off at 15 and at 35 rad/s alike, exit 0.
+TEST_F(ReliabilityTest, AGyroStepCoarserThanEveryTurnIsRefused) {
+  const auto with_step = [](const std::string& step) {
+    return HallExperiment(0.0, 0.0, "", "{encoders: {}, gyro: {quantisation_rad_s: " + step + "}}");
+  };
+  ExpectRefused(with_step("35"), "",
+                {"experiment.yaml: sensors.gyro.quantisation_rad_s: 35 rad/s is at least twice the "
+                 "fastest turn robot 'p3dx' can make (7.26818 rad/s: 2 x max_wheel_speed_rad_s "
+                 "12.3 x wheel_radius_m 0.0975 / track_m 0.33)",
+                 "give less than 14.5363 rad/s"});
+  ExpectRefused(with_step("15"), "", {"sensors.gyro.quantisation_rad_s: 15 rad/s"});
+  EXPECT_EQ(Run(with_step("14.5363")).exit_code, 0);
+}
+
+// s56 (s55's left item): run.simulated_s was MuJoCo's float sum of the steps, 0.5100000000000002
+// for 51 steps of 0.01 s (117.62000000002327 in seed 001's runs); now whole steps times the step.
+TEST_F(ReliabilityTest, TheSimulatedTimeIsReportedAsTheExactDecimalOfItsSteps) {
+  std::string yaml = HallExperiment(0.0, 0.0);
+  yaml.replace(yaml.find("duration_s: 0.5"), 15, "duration_s: 0.505");
+  const fs::path dir = Dir();
+  const CliResult run = RunPlywood("run " + WriteFile(dir / "experiment.yaml", yaml).string() +
+                                       " --quiet --out " + (dir / "out").string(),
+                                   dir);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string metrics = Slurp(dir / "out" / "metrics.json");
+  EXPECT_NE(metrics.find("\"simulated_s\": 0.51,"), std::string::npos) << metrics;
+  EXPECT_NE(metrics.find("\"steps\": 51"), std::string::npos) << metrics;
+}
+
 // s38: legal but absurd values ran. A spawn heading of 1e300 deg (its double's spacing is 1e284
 // deg: no heading at all), a range noise larger than the sensor's whole range (most readings
 // clipped), a forward speed beyond the wheels' limit (capped without a word: speed_m_s 1e300 drove

@@ -126,5 +126,31 @@ TEST(ReplayCliTest, ARangeNoLaserMeasuresIsRefusedWithItsLine) {
   EXPECT_FALSE(fs::exists(dir / "out" / "metrics.json"));
 }
 
+// s56: `replay RUN/laser.log --out RUN --force` read the log, then replaced the run's folder with
+// the replay's files, exit 0: the log replayed and the run it came from were deleted.
+TEST(ReplayCliTest, AReplayNeverReplacesTheFolderOfItsOwnLog) {
+  const fs::path dir = testing::MakeTempDir("replay_cli_own_folder");
+  const fs::path run = dir / "run";
+  const Result ran =
+      RunPlywood("run " + (testing::SourceRoot() / "experiments/default.yaml").string() +
+                     " --set duration_s=0.3 --no-snapshot --quiet --out " + run.string(),
+                 dir);
+  ASSERT_EQ(ran.exit_code, 0) << ran.err;
+  const std::string log = Slurp(run / "laser.log");
+  ASSERT_FALSE(log.empty());
+  const Result r =
+      RunPlywood("replay " + (run / "laser.log").string() + " --force --out " + run.string(), dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err, "plywood: " + run.string() +
+                       ": holds laser.log, the log being replayed: --force would delete it with "
+                       "the run it came from; choose another --out\n");
+  EXPECT_EQ(Slurp(run / "laser.log"), log);
+  EXPECT_TRUE(fs::exists(run / "trajectory.csv"));
+  // Beside it, as any other folder, it is written.
+  const Result beside = RunPlywood(
+      "replay " + (run / "laser.log").string() + " --out " + (dir / "replay").string(), dir);
+  EXPECT_EQ(beside.exit_code, 0) << beside.err;
+}
+
 }  // namespace
 }  // namespace plywood

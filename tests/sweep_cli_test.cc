@@ -696,6 +696,47 @@ TEST(SweepCliTest, AnEditedFileTheWorldIncludesRunsItsCellsAnew) {
       << "the run in the table is of the world before the edit: " << walls_of_tabled_run();
 }
 
+// s56: the world the base experiment itself names (no worlds: axis) was not among sweep.json's
+// inputs, so a resume after it was edited read cells.json as it was and kept every finished run of
+// the old world (a box put over the spawn: "2 of 2 runs finished", where a fresh sweep's cells fail
+// on the spawn), the cells' new ids unused. It is recorded now, and the sweep expanded again.
+TEST(SweepCliTest, AnEditedWorldOfTheBaseExperimentRunsItsCellsAnew) {
+  const fs::path dir = MakeTempDir("SweepEditedBaseWorld");
+  const fs::path room = WriteFile(dir / "room.xml", Slurp(SourceRoot() / "worlds/hall.xml"));
+  std::string experiment = Slurp(SourceRoot() / "tests/data/sweep_default.yaml");
+  const std::string office = "world: worlds/office.xml";
+  ASSERT_NE(experiment.find(office), std::string::npos);
+  experiment.replace(experiment.find(office), office.size(), "world: room.xml");
+  const std::string spawn = "spawn: {x_m: -6.5, y_m: 0.0, theta_deg: 0}";
+  ASSERT_NE(experiment.find(spawn), std::string::npos);
+  experiment.replace(experiment.find(spawn), spawn.size(),
+                     "spawn: {x_m: -2, y_m: -2, theta_deg: 0}");
+  WriteFile(dir / "e.yaml", experiment);
+  const fs::path sweep = WriteFile(dir / "s.yaml",
+                                   "experiment: e.yaml\nseeds: [1]\nset:\n  duration_s: [1]\n"
+                                   "  output.snapshot: [false]\n");
+  const fs::path out = dir / "out";
+  const std::string command = "sweep " + sweep.string() + " --out " + out.string() + " --quiet";
+  const auto walls_of_tabled_run = [&] {
+    const auto rows = eval::ParseCsv(Slurp(out / "results.csv"));
+    return rows.size() == 2 ? Slurp(out / "runs" / rows[1][0] / "walls.csv") : "no table";
+  };
+  ASSERT_EQ(RunPlywood(command, dir).exit_code, 0);
+  EXPECT_NE(walls_of_tabled_run().find(",-4.018"), std::string::npos) << walls_of_tabled_run();
+
+  const std::string west = "pos=\"-4.009 0 0.5\"";
+  std::string moved = Slurp(room);
+  ASSERT_NE(moved.find(west), std::string::npos);
+  moved.replace(moved.find(west), west.size(), "pos=\"-3.009 0 0.5\"");
+  WriteFile(room, moved);
+  const auto r = RunPlywood("sweep " + sweep.string() + " --out " + out.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("room.xml changed since the sweep was expanded"), std::string::npos)
+      << r.err;
+  EXPECT_NE(walls_of_tabled_run().find(",-3.018"), std::string::npos)
+      << "the run in the table is of the world before the edit: " << walls_of_tabled_run();
+}
+
 // s42 thirteenth pass: a sweep of a seed000_rooms experiment runs every room of its list when its
 // world is the first room's, but a cell's id hashed only that first world: a resume after a later
 // room's world was edited (a wall moved 0.5 m) kept the finished run of the old room

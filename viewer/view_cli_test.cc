@@ -381,6 +381,9 @@ TEST_F(ViewCliTest, WithoutADisplayTheViewIsRefusedInOneLineBeforeAnythingRuns) 
       "view " + experiment + " --set duration_s=1 --out " + (dir / "live").string(), dir);
   const testing::CliResult bench = RunPlywood("view --bench", dir);
   const testing::CliResult bad = RunPlywood("view " + experiment + " --set duration_s=-1", dir);
+  // s56: --speed and --size were read only once a display was found, so these said "no display".
+  const testing::CliResult bad_speed = RunPlywood("view " + experiment + " --speed 0", dir);
+  const testing::CliResult bad_size = RunPlywood("view " + experiment + " --size 0x0", dir);
   // s52: a DISPLAY that names no X server ended the view on GLFW's line, exit 1 (a failure during
   // a run), where nothing had run.
   setenv("DISPLAY", ":4093", 1);
@@ -409,6 +412,10 @@ TEST_F(ViewCliTest, WithoutADisplayTheViewIsRefusedInOneLineBeforeAnythingRuns) 
   // A bad experiment is still named first.
   EXPECT_EQ(bad.exit_code, 2) << bad.err;
   EXPECT_NE(bad.err.find("duration_s: must be a finite number > 0"), std::string::npos) << bad.err;
+  EXPECT_EQ(bad_speed.exit_code, 2) << bad_speed.err;
+  EXPECT_EQ(bad_speed.err, "plywood: --speed: expected 1, 10 or max, got '0'\n");
+  EXPECT_EQ(bad_size.exit_code, 2) << bad_size.err;
+  EXPECT_EQ(bad_size.err, "plywood: --size: width_px: must be in [64, 8192], got 0\n");
 }
 
 }  // namespace

@@ -99,6 +99,18 @@ LogReplaySummary RunLogReplay(const LogReplayRequest& request) {
   LogReplaySummary summary;
   summary.out_dir = request.out_dir.empty() ? DefaultReplayDirectory(request.log, request.extractor)
                                             : request.out_dir;
+  // `replay RUN/laser.log --out RUN --force` read the log, then replaced the run folder with the
+  // replay's files: the log, and the run it came from, were deleted (s56). Without --force the
+  // folder is refused already (an earlier run, or files that are not one).
+  std::error_code error;
+  if (request.force && std::filesystem::is_directory(summary.out_dir, error) &&
+      std::filesystem::weakly_canonical(request.log, error).parent_path() ==
+          std::filesystem::weakly_canonical(summary.out_dir, error)) {
+    throw sim::ConfigError(summary.out_dir.string(), "",
+                           "holds " + request.log.filename().string() +
+                               ", the log being replayed: --force would delete it with the run "
+                               "it came from; choose another --out");
+  }
   sim::StagedRunDirectory staged(summary.out_dir, request.force);
   const std::filesystem::path& dir = staged.staging();
   summary.skipped_lines = log.skipped_lines;

@@ -12,6 +12,7 @@
 #include "eval/sonar_map/sonar_ground_truth.h"
 #include "perception/sonar_map/sonar_explorer.h"
 #include "render/png_image.h"
+#include "sim/runner/format_number.h"
 #include "sim/runner/text_file.h"
 #include "sim/world/occupancy_raster.h"
 #include "sim/world/planar_obstacles.h"
@@ -88,7 +89,11 @@ bool AddSonarMapMetrics(sim::ExperimentRunner& runner) {
   // duration ran out first.
   m.Set("exploration.end_reason",
         explorer->Finished() ? explorer->end_reason() : std::string("run_ended"));
-  if (explorer->Finished()) m.Set("exploration.end_time_s", explorer->end_time_s());
+  // The controller's clock is MuJoCo's float sum of the steps: reported at the step's decimals.
+  if (explorer->Finished()) {
+    m.Set("exploration.end_time_s",
+          sim::TimeAtStepPrecision(explorer->end_time_s(), runner.scene().timestep_s()));
+  }
   // Obstacles gone round, and how many of those circuits heard all four sides.
   m.Set("exploration.obstacles_circled", static_cast<double>(explorer->circled_obstacles().size()));
   m.Set("exploration.circuits_closed", static_cast<double>(explorer->closed_outlines().size()));

@@ -413,6 +413,8 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
             }
             cell.seed = config.seed;
             cell.robot = config.robot;
+            if (world.family.empty())
+              cell.world_file = std::filesystem::absolute(config.world_path);
             for (const std::filesystem::path& file : FilesReadBesidesTheWorld(config)) {
               cell.read_files.emplace_back(file, content_hash(file));
             }

@@ -28,6 +28,10 @@ struct SweepCell {
   // The robot model it runs (robot.model): its MJCF is hashed into sweep.json's robot_models, so a
   // resume after models/ was edited starts again; not kept in cells.json.
   std::string robot;
+  // The hand-made world file the run loads (the experiment's own `world:`, a profile's or an axis'
+  // as well as the worlds: axis'): sweep.json's inputs hash it, so a resume after it was edited
+  // expands the sweep again; not kept in cells.json. Empty for generated worlds (hashed apart).
+  std::filesystem::path world_file;
 };
 
 // A world the sweep runs in, with the family it was drawn from (empty for files).

@@ -314,6 +314,11 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
   std::map<std::string, std::string> inputs = InputHashes(spec);
   for (const SweepCell& cell : cells) {
     for (const auto& [file, hash] : cell.read_files) inputs.try_emplace(file.string(), hash);
+    // The world the experiment itself names was not among the inputs: a resume after it was
+    // edited kept every finished cell's runs of the old world, the ids of the new one unused (s56).
+    if (!cell.world_file.empty() && !inputs.contains(cell.world_file.string())) {
+      inputs.emplace(cell.world_file.string(), ReadFileContentHash(cell.world_file));
+    }
     // A generated world edited by hand in OUT/worlds was run by the unfinished cells under the
     // generator's label on resume. Recorded relative to OUT, as cells name it, so the folder moves.
     // Hashed once per world, not once per cell that runs it.

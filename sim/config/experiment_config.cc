@@ -251,6 +251,106 @@ void RequireWaypointsAControlPeriodCanReach(const YamlFields& top, const Experim
                msgs::ShortestNumber(per_tick_m / 2.0) + " m, a higher rate_hz or a lower speed");
 }
 
+// A cruise speed the robot's own encoders resolve: at least one count of the nominal
+// encoder_ticks_per_rev (2 pi wheel_radius_m / ticks of rim) per control period. Below it the
+// encoders read no motion over most ticks, so neither the odometry a controller may steer by nor
+// a wheel speed servo measuring counts per period can tell the robot is moving; speed_m_s: 1e-308
+// ran and drove 8e-6 m in 20 s, exit 0 (s55's left item). The period is the longest between two
+// ticks, as for the reach tolerance, so the floor is the lowest the schedule allows. The ramp to
+// that speed must also end within duration_s: accel_m_s2: 1e-308 drove the same 8e-6 m. The spot
+// turns' top rate alike: max_turn_rate_rad_s: 1e-308 drove 1.37 m of default's tour, never turning.
+void RequireACruiseSpeedTheEncodersResolve(const YamlFields& top, const ExperimentConfig& config) {
+  const ControllerConfig& controller = config.controller;
+  const robot::DiffDriveSpec& nominal = config.nominal;
+  double speed_m_s = 0.0, accel_m_s2 = 0.0;
+  std::string accel_field = "controller.accel_m_s2";
+  // The top yaw rate, where the controller has one: its wheels turn opposite ways at
+  // turn_rate x track_m / 2 of rim, held to the same count per tick.
+  double turn_rate_rad_s = std::numeric_limits<double>::infinity();
+  std::string turn_field = "controller.max_turn_rate_rad_s";
+  if (controller.type == "waypoints") {
+    speed_m_s = controller.waypoints.speed_m_s;
+    accel_m_s2 = controller.waypoints.accel_m_s2;
+    turn_rate_rad_s = controller.waypoints.max_turn_rate_rad_s;
+  } else if (controller.type == "square_path") {
+    speed_m_s = controller.square_path.speed_m_s;
+    accel_m_s2 = controller.square_path.accel_m_s2;
+    turn_rate_rad_s = controller.square_path.turn_rate_rad_s;
+    turn_field = "controller.turn_rate_rad_s";
+  } else if (controller.type == "wall_following") {
+    speed_m_s = controller.wall_following.speed_m_s;
+    accel_m_s2 = controller.wall_following.accel_m_s2;
+    turn_rate_rad_s = controller.wall_following.max_turn_rate_rad_s;
+  } else if (controller.type == "sonar_explorer") {
+    speed_m_s = controller.sonar_explorer.speed_m_s;
+    accel_m_s2 = controller.sonar_explorer.max_wheel_accel_rad_s2 * nominal.wheel_radius_m;
+    accel_field = "controller.max_wheel_accel_rad_s2";
+  } else {
+    return;
+  }
+  const double count_m =
+      2.0 * std::numbers::pi * nominal.wheel_radius_m / nominal.encoder_ticks_per_rev;
+  const double period_s = SampleStepTimeS(1.0, controller.rate_hz, config.physics.timestep_s);
+  const double floor_m_s = count_m / period_s;
+  const std::string per_tick = "one encoder count (" + msgs::SixDigitNumber(count_m) +
+                               " m of rim: robot.nominal.encoder_ticks_per_rev " +
+                               std::to_string(nominal.encoder_ticks_per_rev) + ", wheel_radius_m " +
+                               msgs::ShortestNumber(nominal.wheel_radius_m) +
+                               ") per control tick (every " + msgs::ShortestNumber(period_s) +
+                               " s at controller.rate_hz " +
+                               msgs::ShortestNumber(controller.rate_hz) + " Hz)";
+  if (speed_m_s < floor_m_s) {
+    top.Fail("controller.speed_m_s",
+             msgs::ShortestNumber(speed_m_s) + " m/s turns the wheels less than " + per_tick +
+                 ": the robot cannot measure its own motion; give at least " +
+                 msgs::SixDigitNumberAtLeast(floor_m_s) + " m/s or a lower rate_hz");
+  }
+  const double half_track_m = nominal.track_m / 2.0;
+  if (turn_rate_rad_s * half_track_m < floor_m_s) {
+    top.Fail(turn_field, msgs::ShortestNumber(turn_rate_rad_s) + " rad/s turns the wheels (" +
+                             msgs::ShortestNumber(half_track_m) +
+                             " m from the centre: robot.nominal.track_m / 2) less than " +
+                             per_tick + ": the robot cannot measure its own turn; give at least " +
+                             msgs::SixDigitNumberAtLeast(floor_m_s / half_track_m) +
+                             " rad/s or a lower rate_hz");
+  }
+  const double ramp_s = floor_m_s / accel_m_s2;
+  if (ramp_s <= config.duration_s) return;
+  // The sonar explorer limits the wheels' rad/s2, the others the rim's m/s2.
+  const bool wheel = controller.type == "sonar_explorer";
+  const double least = floor_m_s / config.duration_s / (wheel ? nominal.wheel_radius_m : 1.0);
+  top.Fail(accel_field, "the ramp takes " + msgs::SixDigitNumber(ramp_s) + " s to reach " +
+                            msgs::SixDigitNumber(floor_m_s) + " m/s, " + per_tick +
+                            ", more than duration_s = " + FormatNumber(config.duration_s) +
+                            " s: the robot never moves as far as its encoders can measure; give "
+                            "at least " +
+                            msgs::SixDigitNumberAtLeast(least) + (wheel ? " rad/s2" : " m/s2"));
+}
+
+// A gyro step coarser than the turns the robot can make: with quantisation_rad_s at least twice
+// the fastest yaw rate its wheels allow (2 max_wheel_speed_rad_s wheel_radius_m / track_m), every
+// rate it can turn at rounds to the same step (0 without bias), and the gyro-based estimators
+// integrate nothing of the turns: ekf_calibration at 15 and 35 rad/s gave the same -177 deg
+// heading error for the gyro estimator (19 deg with no quantisation), exit 0 (s56).
+void RequireAGyroStepFinerThanTheTurns(const YamlFields& top, const ExperimentConfig& config) {
+  if (!config.sensors.gyro || config.sensors.gyro->quantisation_rad_s == 0.0) return;
+  const robot::DiffDriveSpec& nominal = config.nominal;
+  const double fastest_rad_s =
+      2.0 * nominal.max_wheel_speed_rad_s * nominal.wheel_radius_m / nominal.track_m;
+  const double step_rad_s = config.sensors.gyro->quantisation_rad_s;
+  if (step_rad_s < 2.0 * fastest_rad_s) return;
+  top.Fail("sensors.gyro.quantisation_rad_s",
+           msgs::ShortestNumber(step_rad_s) + " rad/s is at least twice the fastest turn robot '" +
+               config.robot + "' can make (" + msgs::SixDigitNumber(fastest_rad_s) +
+               " rad/s: 2 x max_wheel_speed_rad_s " +
+               msgs::ShortestNumber(nominal.max_wheel_speed_rad_s) + " x wheel_radius_m " +
+               msgs::ShortestNumber(nominal.wheel_radius_m) + " / track_m " +
+               msgs::ShortestNumber(nominal.track_m) +
+               "): every rate it can turn at rounds to one step, and the gyro sees no turn; give "
+               "less than " +
+               msgs::SixDigitNumberAtMost(2.0 * fastest_rad_s) + " rad/s");
+}
+
 // Seed 003's map fuses each IR scan with the sonar ring nearest in time, if one is at most
 // geometric_map.max_sonar_age_s away (eval/geometric_map/geometric_map_run.cc). With rates whose
 // samples do not meet (the defaults, IR 2 Hz and sonar 3.125 Hz, against 0.1 s) some scans have no
@@ -528,6 +628,8 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   }
   ReadOptions(top.Child("output"), config.output);
   RequireRatesTheClockCanKeep(top, config);
+  RequireACruiseSpeedTheEncodersResolve(top, config);
+  RequireAGyroStepFinerThanTheTurns(top, config);
   RequireWaypointsAControlPeriodCanReach(top, config);
   RequireASonarRingForEveryIrScan(top, config);
   RequireCountersThatHoldAnInterval(top, config);

@@ -175,6 +175,12 @@ void YamlFields::Finish() const {
     std::string known;
     for (const std::string& k : known_) known += (known.empty() ? "" : ", ") + k;
     known = known.empty() ? std::string() : " (known here: " + known + ")";
+    // `? [a, b]: 1` (a list or a map as the key) was "a key that is null or empty" (s56).
+    if (entry.first.IsSequence() || entry.first.IsMap()) {
+      Fail("?", std::string("unknown key: a key that is ") +
+                    (entry.first.IsSequence() ? "a list" : "a map") +
+                    " (YAML's '? ' complex key) names no setting" + known);
+    }
     // `~: 5` (or `null:`, `"":`) was "plywood: e.yaml: unknown key", naming no field.
     if (key.empty() || entry.first.IsNull()) {
       Fail(entry.first.IsNull() ? "~" : "\"\"",
@@ -191,6 +197,8 @@ void RejectDuplicateKeys(const YAML::Node& node, const std::string& file, const 
   if (node.IsMap()) {
     std::set<std::string> seen;
     for (const auto& entry : node) {
+      // A list or a map as the key names no setting: YamlFields::Finish refuses it as such.
+      if (entry.first.IsSequence() || entry.first.IsMap()) continue;
       const std::string key = entry.first.IsScalar() ? entry.first.Scalar() : "";
       if (!seen.insert(key).second) {
         throw ConfigError(file, child_path(key),
@@ -218,6 +226,8 @@ void ApplyOverride(YAML::Node root, const std::string& assignment, const std::st
     throw ConfigError(source, path, std::string("value is not valid YAML: ") + e.what());
   }
   RejectAliasExpansion(value, source);
+  // getline yields no last empty key: `duration_s.=1` set duration_s without a word (s56).
+  if (path.ends_with('.')) throw ConfigError(source, path, "empty key in path");
   std::vector<std::string> keys;
   std::stringstream stream(path);
   for (std::string key; std::getline(stream, key, '.');) {

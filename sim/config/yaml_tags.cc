@@ -1,6 +1,7 @@
 #include "sim/config/yaml_tags.h"
 
 #include <array>
+#include <regex>
 #include <string_view>
 
 #include "sim/config/config_error.h"
@@ -25,6 +26,37 @@ bool IsStandardTag(const std::string& tag) {
   return tag.empty();  // a node yaml-cpp made itself (an empty document)
 }
 
+// What a core-schema tag says the node is, when the node is not that (YAML 1.2's core schema):
+// `duration_s: !!bool 0.2` was read as 0.2, the tag that said it could not be a number ignored.
+// An !!int scalar is also a valid !!float (7 reads as 7.0); !!str takes any scalar.
+std::string WhatTheTagAsks(const YAML::Node& node) {
+  const std::string& tag = node.Tag();
+  if (tag == "tag:yaml.org,2002:map") return node.IsMap() ? "" : "a map";
+  if (tag == "tag:yaml.org,2002:seq") return node.IsSequence() ? "" : "a list";
+  if (tag == "tag:yaml.org,2002:str") return node.IsMap() || node.IsSequence() ? "a string" : "";
+  const auto scalar_matching = [&](const char* pattern, const char* what) -> std::string {
+    if (node.IsScalar() && std::regex_match(node.Scalar(), std::regex(pattern))) return "";
+    return what;
+  };
+  if (tag == "tag:yaml.org,2002:null") {
+    if (node.IsNull()) return "";
+    return scalar_matching("null|Null|NULL|~|", "null (null, ~ or nothing)");
+  }
+  if (tag == "tag:yaml.org,2002:bool") {
+    return scalar_matching("true|True|TRUE|false|False|FALSE", "a boolean (true or false)");
+  }
+  if (tag == "tag:yaml.org,2002:int") {
+    return scalar_matching("[-+]?[0-9]+|0o[0-7]+|0x[0-9a-fA-F]+", "a whole number");
+  }
+  if (tag == "tag:yaml.org,2002:float") {
+    return scalar_matching(
+        "[-+]?(\\.[0-9]+|[0-9]+(\\.[0-9]*)?)([eE][-+]?[0-9]+)?|[-+]?\\.(inf|Inf|INF)|\\.(nan|NaN|"
+        "NAN)",
+        "a number");
+  }
+  return "";
+}
+
 }  // namespace
 
 void RejectNonStandardTags(const YAML::Node& node, const std::string& file,
@@ -35,6 +67,17 @@ void RejectNonStandardTags(const YAML::Node& node, const std::string& file,
                       "the YAML tag '" + node.Tag() +
                           "' means nothing here (only YAML's own !!str, !!int, !!float, !!bool, "
                           "!!null, !!map and !!seq do): write the value without it");
+  }
+  if (const std::string asked = WhatTheTagAsks(node); !asked.empty()) {
+    const std::string shown = node.IsScalar()     ? "'" + node.Scalar() + "'"
+                              : node.IsMap()      ? "a map"
+                              : node.IsSequence() ? "a list"
+                                                  : "nothing";
+    const std::string core = "tag:yaml.org,2002:";
+    const std::string written = "!!" + node.Tag().substr(core.size());  // as the file spells it
+    throw ConfigError(file, path.empty() ? "(top level)" : path,
+                      "the YAML tag '" + written + "' says " + asked + ", but the value is " +
+                          shown + ": drop the tag or write the value it names");
   }
   const auto child_path = [&](const std::string& key) {
     return path.empty() ? key : path + "." + key;
