@@ -46,6 +46,19 @@ def summary(values, contacts, threshold):
             f"{sum(x > threshold for x in v)} / {sum(c > 0 for c in contacts)}")
 
 
+def print_row(label, be, ne, bc, nc, args):
+    """One table row: base and new summaries, then how the paired values moved."""
+    down = sum(n < b for b, n in zip(be, ne))
+    up = sum(n > b for b, n in zip(be, ne))
+    cross_up = sum(b <= args.threshold < n for b, n in zip(be, ne))
+    cross_down = sum(n <= args.threshold < b for b, n in zip(be, ne))
+    rises = sum(n - b > args.rise for b, n in zip(be, ne))
+    gained = sum(c_b <= 0 < c_n for c_b, c_n in zip(bc, nc))
+    print(f"| {label} | {len(be)} | {summary(be, bc, args.threshold)} | "
+          f"{summary(ne, nc, args.threshold)} | {down} / {up} | {cross_up} / {cross_down} | "
+          f"{rises} | {gained} |")
+
+
 def number(text):
     try:
         return float(text)
@@ -110,33 +123,21 @@ def main():
             sys.exit(f"sweep_compare: a run of group {group} has no number for {args.metric}")
         bc = [number(b[args.contacts]) if has_contacts else 0.0 for b, _ in members]
         nc = [number(n[args.contacts]) if has_contacts else 0.0 for _, n in members]
-        down = sum(n < b for b, n in zip(be, ne))
-        up = sum(n > b for b, n in zip(be, ne))
-        cross_up = sum(b <= args.threshold < n for b, n in zip(be, ne))
-        cross_down = sum(n <= args.threshold < b for b, n in zip(be, ne))
-        rises = sum(n - b > args.rise for b, n in zip(be, ne))
-        gained = sum(c_b <= 0 < c_n for c_b, c_n in zip(bc, nc))
         label = ", ".join(group) if group else "all"
-        print(f"| {label} | {len(members)} | {summary(be, bc, args.threshold)} | "
-              f"{summary(ne, nc, args.threshold)} | {down} / {up} | {cross_up} / {cross_down} | "
-              f"{rises} | {gained} |")
+        print_row(label, be, ne, bc, nc, args)
         if args.rooms:
+            # A room's figure is the mean over its runs; it has a contact if any run has.
             rooms = {}
-            for b, n in members:
-                rooms.setdefault(b["world"], []).append((b, n))
-            room_base = [sum(number(b[args.metric]) for b, _ in r) / len(r) for r in rooms.values()]
-            room_new = [sum(number(n[args.metric]) for _, n in r) / len(r) for r in rooms.values()]
-            room_bc = [max(bc[members.index(p)] for p in r) for r in rooms.values()]
-            room_nc = [max(nc[members.index(p)] for p in r) for r in rooms.values()]
-            down = sum(n < b for b, n in zip(room_base, room_new))
-            up = sum(n > b for b, n in zip(room_base, room_new))
-            cross_up = sum(b <= args.threshold < n for b, n in zip(room_base, room_new))
-            cross_down = sum(n <= args.threshold < b for b, n in zip(room_base, room_new))
-            rises = sum(n - b > args.rise for b, n in zip(room_base, room_new))
-            gained = sum(c_b <= 0 < c_n for c_b, c_n in zip(room_bc, room_nc))
-            print(f"| {label} (rooms) | {len(rooms)} | {summary(room_base, room_bc, args.threshold)} | "
-                  f"{summary(room_new, room_nc, args.threshold)} | {down} / {up} | "
-                  f"{cross_up} / {cross_down} | {rises} | {gained} |")
+            for i, (b, _) in enumerate(members):
+                rooms.setdefault(b["world"], []).append(i)
+            def per_room(values, pool):
+                return [pool([values[i] for i in r]) for r in rooms.values()]
+
+            def mean(values):
+                return sum(values) / len(values)
+
+            print_row(f"{label} (rooms)", per_room(be, mean), per_room(ne, mean),
+                      per_room(bc, max), per_room(nc, max), args)
         if args.verbose:
             moved = sorted(members, key=lambda p: -abs(number(p[1][args.metric]) -
                                                         number(p[0][args.metric])))
