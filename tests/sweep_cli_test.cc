@@ -660,6 +660,21 @@ TEST(SweepCliTest, ASweepRefusedOrKilledWhileItIsExpandedRunsIntoTheSameOut) {
   EXPECT_EQ(Slurp(mine / "worlds" / "my_room.xml"), "<mujoco/>\n");
 }
 
+// The hall's walls.csv row of the one run in a sweep's table ("no table" without one), and the
+// hall's west wall moved 1 m in (its walls.csv x -4.018 -> -3.018), for the resume tests below.
+std::string WallsOfTabledRun(const fs::path& out) {
+  const auto rows = eval::ParseCsv(Slurp(out / "results.csv"));
+  return rows.size() == 2 ? Slurp(out / "runs" / rows[1][0] / "walls.csv") : "no table";
+}
+
+void MoveHallsWestWallIn(const fs::path& world) {
+  const std::string west = "pos=\"-4.009 0 0.5\"";
+  std::string moved = Slurp(world);
+  ASSERT_NE(moved.find(west), std::string::npos);
+  moved.replace(moved.find(west), west.size(), "pos=\"-3.009 0 0.5\"");
+  WriteFile(world, moved);
+}
+
 // audit s35: a cell's id hashed the world file's own text only, so a resumed sweep kept the runs
 // made before a file the world includes was edited (here its west wall moved 1 m in): stale
 // results, no word. The files a world names are now part of its hash.
@@ -678,18 +693,11 @@ TEST(SweepCliTest, AnEditedFileTheWorldIncludesRunsItsCellsAnew) {
                           "  output.snapshot: [false]\n");
   const fs::path out = dir / "out";
   const std::string command = "sweep " + sweep.string() + " --out " + out.string() + " --quiet";
-  const auto walls_of_tabled_run = [&] {
-    const auto rows = eval::ParseCsv(Slurp(out / "results.csv"));
-    return rows.size() == 2 ? Slurp(out / "runs" / rows[1][0] / "walls.csv") : "no table";
-  };
+  const auto walls_of_tabled_run = [&] { return WallsOfTabledRun(out); };
   ASSERT_EQ(RunPlywood(command, dir).exit_code, 0);
   EXPECT_NE(walls_of_tabled_run().find(",-4.018"), std::string::npos) << walls_of_tabled_run();
 
-  const std::string west = "pos=\"-4.009 0 0.5\"";
-  std::string moved = Slurp(walls);
-  ASSERT_NE(moved.find(west), std::string::npos);
-  moved.replace(moved.find(west), west.size(), "pos=\"-3.009 0 0.5\"");
-  WriteFile(walls, moved);
+  MoveHallsWestWallIn(walls);
   const auto r = RunPlywood(command, dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(walls_of_tabled_run().find(",-3.018"), std::string::npos)
@@ -717,18 +725,11 @@ TEST(SweepCliTest, AnEditedWorldOfTheBaseExperimentRunsItsCellsAnew) {
                                    "  output.snapshot: [false]\n");
   const fs::path out = dir / "out";
   const std::string command = "sweep " + sweep.string() + " --out " + out.string() + " --quiet";
-  const auto walls_of_tabled_run = [&] {
-    const auto rows = eval::ParseCsv(Slurp(out / "results.csv"));
-    return rows.size() == 2 ? Slurp(out / "runs" / rows[1][0] / "walls.csv") : "no table";
-  };
+  const auto walls_of_tabled_run = [&] { return WallsOfTabledRun(out); };
   ASSERT_EQ(RunPlywood(command, dir).exit_code, 0);
   EXPECT_NE(walls_of_tabled_run().find(",-4.018"), std::string::npos) << walls_of_tabled_run();
 
-  const std::string west = "pos=\"-4.009 0 0.5\"";
-  std::string moved = Slurp(room);
-  ASSERT_NE(moved.find(west), std::string::npos);
-  moved.replace(moved.find(west), west.size(), "pos=\"-3.009 0 0.5\"");
-  WriteFile(room, moved);
+  MoveHallsWestWallIn(room);
   const auto r = RunPlywood("sweep " + sweep.string() + " --out " + out.string(), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("room.xml changed since the sweep was expanded"), std::string::npos)
