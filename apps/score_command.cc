@@ -81,6 +81,11 @@ Command AddScoreCommand(CLI::App& app) {
             if (grid && name->count() > 0) {
               throw UsageError("score: --name is for score trajectory and lines");
             }
+            // `--name ''` fell back to the file's name without a word (s56's left item).
+            if (name->count() > 0 && flags->name.empty()) {
+              throw UsageError(
+                  "score: --name: empty; give the name the figures get, or leave --name out");
+            }
             eval::ScoreReport report;
             if (flags->what == "trajectory") {
               report =

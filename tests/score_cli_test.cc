@@ -329,6 +329,15 @@ TEST(ScoreCliTest, ANameTheFileWouldOverruleIsRefused) {
     EXPECT_EQ(r.err, "plywood: " + (RunDir() / expected).string() + "\n");
     EXPECT_FALSE(fs::exists(dir / "s.json"));
   }
+  // s56: an empty --name fell back to the file's name (figures under "fused"), exit 0.
+  const auto empty = RunPlywood("score trajectory " + RunDir().string() + " " +
+                                    (RunDir() / "trajectory.fused.tum").string() +
+                                    " --name '' --out " + (dir / "s.json").string(),
+                                dir);
+  EXPECT_EQ(empty.exit_code, 2) << empty.out;
+  EXPECT_EQ(empty.err,
+            "plywood: score: --name: empty; give the name the figures get, or leave --name out\n");
+  EXPECT_FALSE(fs::exists(dir / "s.json"));
   // Where the file names nothing, --name still names the figures.
   const std::string lines = Slurp(RunDir() / "lines.csv");
   std::string without_extractor;
