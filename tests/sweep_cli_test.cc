@@ -693,15 +693,14 @@ TEST(SweepCliTest, AnEditedFileTheWorldIncludesRunsItsCellsAnew) {
                           "  output.snapshot: [false]\n");
   const fs::path out = dir / "out";
   const std::string command = "sweep " + sweep.string() + " --out " + out.string() + " --quiet";
-  const auto walls_of_tabled_run = [&] { return WallsOfTabledRun(out); };
   ASSERT_EQ(RunPlywood(command, dir).exit_code, 0);
-  EXPECT_NE(walls_of_tabled_run().find(",-4.018"), std::string::npos) << walls_of_tabled_run();
+  EXPECT_NE(WallsOfTabledRun(out).find(",-4.018"), std::string::npos) << WallsOfTabledRun(out);
 
   MoveHallsWestWallIn(walls);
   const auto r = RunPlywood(command, dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(walls_of_tabled_run().find(",-3.018"), std::string::npos)
-      << "the run in the table is of the world before the edit: " << walls_of_tabled_run();
+  EXPECT_NE(WallsOfTabledRun(out).find(",-3.018"), std::string::npos)
+      << "the run in the table is of the world before the edit: " << WallsOfTabledRun(out);
 }
 
 // s56: the world the base experiment itself names (no worlds: axis) was not among sweep.json's
@@ -725,17 +724,16 @@ TEST(SweepCliTest, AnEditedWorldOfTheBaseExperimentRunsItsCellsAnew) {
                                    "  output.snapshot: [false]\n");
   const fs::path out = dir / "out";
   const std::string command = "sweep " + sweep.string() + " --out " + out.string() + " --quiet";
-  const auto walls_of_tabled_run = [&] { return WallsOfTabledRun(out); };
   ASSERT_EQ(RunPlywood(command, dir).exit_code, 0);
-  EXPECT_NE(walls_of_tabled_run().find(",-4.018"), std::string::npos) << walls_of_tabled_run();
+  EXPECT_NE(WallsOfTabledRun(out).find(",-4.018"), std::string::npos) << WallsOfTabledRun(out);
 
   MoveHallsWestWallIn(room);
   const auto r = RunPlywood("sweep " + sweep.string() + " --out " + out.string(), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("room.xml changed since the sweep was expanded"), std::string::npos)
       << r.err;
-  EXPECT_NE(walls_of_tabled_run().find(",-3.018"), std::string::npos)
-      << "the run in the table is of the world before the edit: " << walls_of_tabled_run();
+  EXPECT_NE(WallsOfTabledRun(out).find(",-3.018"), std::string::npos)
+      << "the run in the table is of the world before the edit: " << WallsOfTabledRun(out);
 }
 
 // s42 thirteenth pass: a sweep of a seed000_rooms experiment runs every room of its list when its

@@ -262,29 +262,34 @@ void RequireWaypointsAControlPeriodCanReach(const YamlFields& top, const Experim
 void RequireMotionTheEncodersCanCount(const YamlFields& top, const ExperimentConfig& config) {
   const ControllerConfig& controller = config.controller;
   const robot::DiffDriveSpec& nominal = config.nominal;
-  double speed_m_s = 0.0, accel_m_s2 = 0.0;
-  std::string accel_field = "controller.accel_m_s2";
+  double speed_m_s = 0.0;
+  // The ramp's limit as the key gives it, and the rim's m/s2 per unit of it: the sonar explorer
+  // limits the wheels' rad/s2, the others the rim's m/s2.
+  double accel = 0.0, rim_m_per_accel_unit = 1.0;
+  std::string accel_field = "controller.accel_m_s2", accel_unit = "m/s2";
   // The top yaw rate, where the controller has one: its wheels turn opposite ways at
   // turn_rate x track_m / 2 of rim.
   double turn_rate_rad_s = std::numeric_limits<double>::infinity();
   std::string turn_field = "controller.max_turn_rate_rad_s";
   if (controller.type == "waypoints") {
     speed_m_s = controller.waypoints.speed_m_s;
-    accel_m_s2 = controller.waypoints.accel_m_s2;
+    accel = controller.waypoints.accel_m_s2;
     turn_rate_rad_s = controller.waypoints.max_turn_rate_rad_s;
   } else if (controller.type == "square_path") {
     speed_m_s = controller.square_path.speed_m_s;
-    accel_m_s2 = controller.square_path.accel_m_s2;
+    accel = controller.square_path.accel_m_s2;
     turn_rate_rad_s = controller.square_path.turn_rate_rad_s;
     turn_field = "controller.turn_rate_rad_s";
   } else if (controller.type == "wall_following") {
     speed_m_s = controller.wall_following.speed_m_s;
-    accel_m_s2 = controller.wall_following.accel_m_s2;
+    accel = controller.wall_following.accel_m_s2;
     turn_rate_rad_s = controller.wall_following.max_turn_rate_rad_s;
   } else if (controller.type == "sonar_explorer") {
     speed_m_s = controller.sonar_explorer.speed_m_s;
-    accel_m_s2 = controller.sonar_explorer.max_wheel_accel_rad_s2 * nominal.wheel_radius_m;
+    accel = controller.sonar_explorer.max_wheel_accel_rad_s2;
+    rim_m_per_accel_unit = nominal.wheel_radius_m;
     accel_field = "controller.max_wheel_accel_rad_s2";
+    accel_unit = "rad/s2";
   } else {
     return;
   }
@@ -314,17 +319,13 @@ void RequireMotionTheEncodersCanCount(const YamlFields& top, const ExperimentCon
                              msgs::SixDigitNumberAtLeast(floor_m_s / half_track_m) + " rad/s");
   }
   // From rest at accel a, the rim covers a t^2 / 2 by t: less than one count by the run's end.
-  if (0.5 * accel_m_s2 * run_s * run_s >= count_m) return;
-  // The sonar explorer limits the wheels' rad/s2, the others the rim's m/s2.
-  const bool wheel = controller.type == "sonar_explorer";
-  const double least = 2.0 * count_m / (run_s * run_s) / (wheel ? nominal.wheel_radius_m : 1.0);
-  top.Fail(accel_field,
-           msgs::ShortestNumber(wheel ? accel_m_s2 / nominal.wheel_radius_m : accel_m_s2) +
-               (wheel ? " rad/s2" : " m/s2") + " from rest turns the wheels less than " +
-               one_count +
-               ": the robot never moves as far as its encoders can measure; give at "
-               "least " +
-               msgs::SixDigitNumberAtLeast(least) + (wheel ? " rad/s2" : " m/s2"));
+  if (0.5 * accel * rim_m_per_accel_unit * run_s * run_s >= count_m) return;
+  const double least = 2.0 * count_m / (run_s * run_s) / rim_m_per_accel_unit;
+  top.Fail(accel_field, msgs::ShortestNumber(accel) + " " + accel_unit +
+                            " from rest turns the wheels less than " + one_count +
+                            ": the robot never moves as far as its encoders can measure; give at "
+                            "least " +
+                            msgs::SixDigitNumberAtLeast(least) + " " + accel_unit);
 }
 
 // A gyro step coarser than the turns the robot can make: with quantisation_rad_s at least twice
