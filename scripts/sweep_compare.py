@@ -66,26 +66,15 @@ def number(text):
         return math.nan
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("base")
-    parser.add_argument("new")
-    parser.add_argument("--metric", default="occupancy.error")
-    parser.add_argument("--threshold", type=float, default=0.10)
-    parser.add_argument("--rise", type=float, default=0.02)
-    parser.add_argument("--contacts", default="sensors.bumpers.contact_samples")
-    parser.add_argument("--rooms", action="store_true",
-                        help="also print each group read per room (mean over its runs)")
-    parser.add_argument("-v", "--verbose", action="store_true")
-    args = parser.parse_args()
-
-    base_fields, base_rows, base_axes = read_sweep(args.base)
-    new_fields, new_rows, new_axes = read_sweep(args.new)
-    if args.metric not in base_fields or args.metric not in new_fields:
-        sys.exit(f"sweep_compare: metric '{args.metric}' is not a column of both results.csv files")
-    # A run is the same run in both sweeps when its experiment file's name (the two may sit in
-    # different trees), world, profile, seed and the set axes both sweeps have agree. Axes only the
-    # new sweep has (the option under test) label its groups.
+def paired_runs(base_path, new_path, metric):
+    """The runs of two sweeps paired run by run: (pairs, shared axes, axes only NEW has, fields
+    both have, NEW's rows). A run is the same run in both sweeps when its experiment file's name
+    (the two may sit in different trees), world, profile, seed and the set axes both sweeps have
+    agree. Axes only the new sweep has (the option under test) label its groups."""
+    base_fields, base_rows, base_axes = read_sweep(base_path)
+    new_fields, new_rows, new_axes = read_sweep(new_path)
+    if metric not in base_fields or metric not in new_fields:
+        sys.exit(f"sweep_compare: metric '{metric}' is not a column of both results.csv files")
     shared_axes = [a for a in base_axes if a in new_axes]
     extra_axes = [a for a in new_axes if a not in base_axes]
     for a in base_axes:
@@ -99,13 +88,32 @@ def main():
     base_by_key = {key(r): r for r in base_rows}
     pairs = [(base_by_key[key(r)], r) for r in new_rows if key(r) in base_by_key]
     if not pairs:
-        sys.exit("sweep_compare: no run of NEW is in BASE (different sweeps?)")
+        sys.exit(f"sweep_compare: no run of {new_path} is in {base_path} (different sweeps?)")
     paired_base = {key(n) for _, n in pairs}
     if len(paired_base) != len(base_rows) or len(pairs) != len(new_rows):
         print(f"note: {len(base_rows) - len(paired_base)} base runs and "
               f"{len(new_rows) - len(pairs)} new runs have no partner; only pairs are compared")
+    fields = [f for f in new_fields if f in base_fields]
+    return pairs, shared_axes, extra_axes, fields, new_rows
 
-    has_contacts = args.contacts in base_fields and args.contacts in new_fields
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("base")
+    parser.add_argument("new")
+    parser.add_argument("--metric", default="occupancy.error")
+    parser.add_argument("--threshold", type=float, default=0.10)
+    parser.add_argument("--rise", type=float, default=0.02)
+    parser.add_argument("--contacts", default="sensors.bumpers.contact_samples")
+    parser.add_argument("--rooms", action="store_true",
+                        help="also print each group read per room (mean over its runs)")
+    parser.add_argument("-v", "--verbose", action="store_true")
+    args = parser.parse_args()
+
+    pairs, shared_axes, extra_axes, fields, new_rows = paired_runs(args.base, args.new,
+                                                                   args.metric)
+
+    has_contacts = args.contacts in fields
     groups = {}
     for b, n in pairs:
         groups.setdefault(tuple(f"{a}={n[a]}" for a in shared_axes + extra_axes
