@@ -192,6 +192,12 @@ void RequireDisplay() {
 
 int Replay(const ViewFlags& flags) {
   viewer::RunReplayData data = viewer::LoadRunReplay(flags.target);
+  // A time past the end showed the last frame, and --screenshot wrote it as if asked (s57).
+  if (flags.time_s > data.end_s()) {
+    throw UsageError("view: --time: " + flags.target +
+                     " ends at t = " + msgs::ShortestNumber(data.end_s()) + " s, got " +
+                     msgs::ShortestNumber(flags.time_s) + "; give a time within the run");
+  }
   RequireDisplay();
   viewer::ReplayViewer replay(std::move(data), WindowOf(flags));
   if (flags.screenshot.empty()) {
@@ -301,8 +307,9 @@ Command AddViewCommand(CLI::App& app) {
   cli->add_flag("--bench", flags->bench,
                 "frames/s at 1x with every overlay on (default experiment: the office); writes "
                 "no run");
-  cli->add_option("--bench-seconds", flags->bench_seconds, "simulated seconds of --bench")
-      ->check(CLI::Range(1.0, 600.0))
+  // The range is CheckViewFlags's (CLI11's printed "not in range 1.000000 to 600.000000").
+  cli->add_option("--bench-seconds", flags->bench_seconds,
+                  "simulated seconds of --bench, in [1, 600]")
       ->default_str("10");
   cli->footer(
       "Keys: F1 help, Space pause, N step, 1/2/3 speed, arrows drive (H hands back), L S I P E M "

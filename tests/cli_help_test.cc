@@ -171,6 +171,11 @@ TEST(CliHelpTest, UsageErrorsAreOneLineNamingTheCulpritWithExitCode2) {
       {"train sonar-net --hidden 0,16", "train: --hidden: layer sizes must be in [1, 256]"},
       {"train sonar-net --hidden 4,4,4,4,4,4,4,4", "train: --hidden: at most 7 layers"},
       {"train sonar-net --out " + dir.string(), "train: --out: " + dir.string() + " is a folder"},
+      // s57: a name ending in '/' made that folder, trained, then failed to write (exit 1).
+      {"train sonar-net --rooms 3 --test-rooms 2 --poses 5 --epochs 1 --hidden 2 --out " +
+           (dir / "w.txt/").string(),
+       "train: --out: " + (dir / "w.txt/").string() +
+           " names a folder (it ends in '/', '.' or '..'); give the weights file's name"},
       // s39: each ring keeps its labelled cells in memory; this grew until memory ran out.
       {"train sonar-net --rooms 100000 --poses 100000 --out " + (dir / "n.txt").string(),
        "train: --poses: (rooms + test_rooms) x poses = 10001500000 sonar rings, more than the "

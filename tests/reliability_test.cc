@@ -1554,6 +1554,48 @@ TEST_F(ReliabilityTest, ASpeedThatNeverMovesTheWheelsOneEncoderCountIsRefused) {
   EXPECT_EQ(Run(yaml, "--set controller.speed_m_s=0.0004").exit_code, 0);
 }
 
+// s57 (s56's left item): a heading gain whose largest request (gain x pi, at a bearing error of
+// half a turn) turns the wheels less than one count in the run steers nothing: heading_gain_per_s
+// 1e-308 drove default's tour straight on, exit 0. The sonar explorer's turn_rate_rad_s, left out
+// of s56's turn-rate check, never turned its spot turns (1e-308: 7.6 m of seed001_room_1 in 60 s
+// without once facing a target).
+TEST_F(ReliabilityTest, AGainOrTurnRateThatNeverTurnsAnEncoderCountIsRefused) {
+  // HallExperiment runs 0.5 s: the P3-DX's count over the run is 3.1416e-5 m/s of rim, which at
+  // track_m / 2 = 0.165 m and pi rad of error is a gain of 6.06061e-05 /s.
+  const std::string yaml = HallExperiment(
+      -2.0, -2.0, "controller: {type: waypoints, speed_m_s: 0.4, waypoints: [[1, -2]]}\n");
+  ExpectRefused(yaml, "--set controller.heading_gain_per_s=1e-308",
+                {"experiment.yaml: controller.heading_gain_per_s: 1e-308 /s asks for at most gain "
+                 "x pi rad of heading error = 3.14159e-308 rad/s, which turns the wheels (0.165 m "
+                 "from the centre: robot.nominal.track_m / 2) less than one encoder count",
+                 "the gain never steers the robot as far as its encoders can measure; give at "
+                 "least 6.06061e-05 /s"});
+  EXPECT_EQ(Run(yaml, "--set controller.heading_gain_per_s=6.06061e-05").exit_code, 0);
+  ExpectRefused(HallExperiment(-2.0, -2.0,
+                               "controller: {type: wall_following, sensor: laser, "
+                               "angle_gain_per_s: 1e-9}\n",
+                               "{laser: {}, encoders: {}}"),
+                "", {"controller.angle_gain_per_s: 1e-09 /s asks for at most", "6.06061e-05 /s"});
+  ExpectRefused(ExplorerExperiment(-0.8, -0.5), "--set controller.turn_rate_rad_s=1e-308",
+                {"experiment.yaml: controller.turn_rate_rad_s: 1e-308 rad/s turns the wheels",
+                 "its spot turns (to face each target, away from a wall ahead) never turn the "
+                 "robot as far as its encoders can measure; give at least"});
+}
+
+// s57: YAML's "\0" put a NUL in a string: name "a\0b" ran into runs/a (exit 1 on "plywood:
+// error: runs/a"), a world "hall.xml\0x" loaded hall.xml. No path or option can hold one.
+TEST_F(ReliabilityTest, ANulCharacterInAnyValueIsRefused) {
+  const std::string yaml = HallExperiment(-2.0, -2.0);
+  ExpectRefused(yaml, "--set 'name=\"a\\0b\"'",
+                {"experiment.yaml: name: holds a NUL character (YAML's \\0) after 'a': no name, "
+                 "path or option can hold one; remove it"});
+  ExpectRefused(yaml, "--set 'world=\"worlds/hall.xml\\0x\"'",
+                {"experiment.yaml: world: holds a NUL character (YAML's \\0) after "
+                 "'worlds/hall.xml'"});
+  ExpectRefused(yaml + "robot_notes: {\"a\\0b\": 1}\n", "",
+                {"experiment.yaml: robot_notes.a: holds a NUL character"});
+}
+
 // s56: a gyro step at least twice the fastest turn the wheels allow (P3-DX: 2 x 12.3 x 0.0975 /
 // 0.33 = 7.26818 rad/s) rounds every rate the robot can turn at to one step: ekf_calibration's
 // gyro estimator ended 177 deg off at 15 and at 35 rad/s alike, exit 0.

@@ -100,7 +100,11 @@ TEST(ReplayCliTest, ExtractorOptionsAreSetByKeyAndBadKeysAreNamed) {
        "and reads "
        "only its options (split_and_merge.KEY=VALUE): this one would be ignored"},
       {"range_cut_m=3", "--set: range_cut_m: the replay runs only 'split_and_merge'"},
-      {"scoring.max_alpha_diff_deg=3", "--set: scoring.max_alpha_diff_deg: the replay runs only"}};
+      {"scoring.max_alpha_diff_deg=3", "--set: scoring.max_alpha_diff_deg: the replay runs only"},
+      // s57: YAML's \0 cut the error line at the NUL ("got '0.05", no closing quote).
+      {"'split_and_merge.split_threshold_m=\"0.05\\0x\"'",
+       "plywood: --set: split_and_merge.split_threshold_m: holds a NUL character (YAML's \\0) "
+       "after '0.05'"}};
   for (const auto& [assignment, message] : bad) {
     const Result r = RunPlywood(
         "replay " + log.string() + " --set " + assignment + " --out " + (dir / "c").string(), dir);

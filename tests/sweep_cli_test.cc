@@ -230,6 +230,17 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
        {"experiment: " + experiment +
             "\nmetrics: [odometry.encoder.ate_rms_m, odometry.encoder.ate_rms_m]\n",
         "metrics: 'odometry.encoder.ate_rms_m' is listed twice"}},
+      // s57: a metric with an empty key ran every cell, then was refused as in no run's
+      // metrics.json; a NUL (YAML's \0) in a value cut it short.
+      {"empty_metric",
+       {"experiment: " + experiment + "\nmetrics: ['']\n",
+        "metrics: '' has an empty key (a metrics.json key path is words joined by '.'"}},
+      {"metric_with_a_trailing_dot",
+       {"experiment: " + experiment + "\nmetrics: [odometry.encoder.]\n",
+        "metrics: 'odometry.encoder.' has an empty key"}},
+      {"nul_in_a_value",
+       {"experiment: " + experiment + "\nset: {name: [\"a\\0b\"]}\n",
+        "set.name[0]: holds a NUL character (YAML's \\0) after 'a'"}},
       {"repeated_group",
        {"experiment: " + experiment + "\ngroup_by: [seed, seed]\n",
         "group_by: 'seed' is listed twice"}},

@@ -149,6 +149,12 @@ TEST_F(ViewCliTest, FlagsThatCannotBeHonouredAreRefusedBeforeAnythingRuns) {
        "view: --time: must be a finite number of simulated seconds >= 0, got inf"},
       {live + " --time 5", "view: --time: only a replay (TARGET a run directory)"},
       {"--bench --bench-seconds nan", "view: --bench-seconds: must be in [1, 600]"},
+      // s57: CLI11 refused 0.5 in its own words ("Value 0.5 not in range 1.000000 to ..."),
+      // and a time past the run's end wrote the last frame as x.png, exit 0.
+      {"--bench --bench-seconds 0.5",
+       "view: --bench-seconds: must be in [1, 600] simulated seconds, got 0.5"},
+      {run.string() + " --time 5 --screenshot x.png",
+       "view: --time: " + run.string() + " ends at t = 1 s, got 5; give a time within the run"},
       {run.string() + " --screenshot " + dir.string(),
        "view: --screenshot: " + dir.string() + " is a folder"},
       {live + " --screenshot " + (dir / "no_folder" / "x.png").string(),

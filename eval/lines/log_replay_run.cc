@@ -15,6 +15,7 @@
 #include "sim/config/config_error.h"
 #include "sim/config/lines_config.h"
 #include "sim/config/yaml_fields.h"
+#include "sim/config/yaml_nul_characters.h"
 #include "sim/runner/json_text.h"
 #include "sim/runner/metrics.h"
 #include "sim/runner/run_directory.h"
@@ -84,6 +85,7 @@ LogReplaySummary RunLogReplay(const LogReplayRequest& request) {
   for (const std::string& assignment : request.overrides) {
     sim::ApplyOverride(lines_node, assignment, "--set " + assignment);
   }
+  sim::RejectNulCharacters(lines_node, "--set");  // an error naming the value cut it at the NUL
   sim::LinesConfig lines;
   sim::ReadLinesConfig(sim::YamlFields(lines_node, "--set", ""), lines);
   RequireOptionsOfTheExtractorRun(request);

@@ -210,6 +210,13 @@ void SonarNetTrainingOptions::Validate() const {
   }
   train.Validate();
   if (out.empty()) throw std::invalid_argument("out: needs a file name");
+  // "x.txt/" made the folder x.txt, trained, then failed to write ("Is a directory", exit 1, s57).
+  const std::string last = out.filename().string();
+  if (last.empty() || last == "." || last == "..") {
+    throw std::invalid_argument("out: " + out.string() +
+                                " names a folder (it ends in '/', '.' or '..'); give the weights "
+                                "file's name");
+  }
   std::error_code error;
   if (std::filesystem::is_directory(out, error)) {
     // Found only after training, as exit 1, before fuzz30.

@@ -19,6 +19,7 @@
 #include "sim/config/yaml_alias_expansion.h"
 #include "sim/config/yaml_document.h"
 #include "sim/config/yaml_fields.h"
+#include "sim/config/yaml_nul_characters.h"
 #include "sim/config/yaml_tags.h"
 #include "sim/world/generator/world_families.h"
 
@@ -277,6 +278,7 @@ SweepSpec LoadSweepSpec(const fs::path& path) {
   sim::RejectAliasExpansion(root, spec.source_file);
   sim::RejectDuplicateKeys(root, spec.source_file);  // a repeated axis would silently win
   sim::RejectNonStandardTags(root, spec.source_file);
+  sim::RejectNulCharacters(root, spec.source_file);
   const fs::path base_dir = fs::absolute(path).parent_path();
   sim::YamlFields top(root, spec.source_file, "");
   spec.name = path.stem().string();
@@ -317,6 +319,16 @@ SweepSpec LoadSweepSpec(const fs::path& path) {
     }
   }
   if (top.Has("metrics")) spec.metrics = ReadNames(top.Raw("metrics"), top, "metrics");
+  // Every key of a metrics.json is a word: a name with an empty part ('', 'odometry.encoder.')
+  // is in no run's, and was refused only after every cell had run (s57).
+  for (const std::string& metric : spec.metrics) {
+    const std::string dotted = "." + metric + ".";
+    if (metric.empty() || dotted.find("..") != std::string::npos) {
+      top.Fail("metrics", "'" + metric +
+                              "' has an empty key (a metrics.json key path is words joined by "
+                              "'.', as odometry.encoder.drift_percent): no run reports it");
+    }
+  }
   if (top.Has("group_by")) {
     spec.group_by = ReadNames(top.Raw("group_by"), top, "group_by");
     for (const std::string& g : spec.group_by) {

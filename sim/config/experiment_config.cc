@@ -29,6 +29,7 @@
 #include "sim/config/yaml_alias_expansion.h"
 #include "sim/config/yaml_document.h"
 #include "sim/config/yaml_fields.h"
+#include "sim/config/yaml_nul_characters.h"
 #include "sim/config/yaml_tags.h"
 #include "sim/world/mujoco_handles.h"
 #include "sim/world/world_spawns.h"
@@ -258,7 +259,9 @@ void RequireWaypointsAControlPeriodCanReach(const YamlFields& top, const Experim
 // speeds: a speed that moves the wheels less than one count per control tick still moves them by
 // many in a run, and is accepted. The ramp to that speed alike (accel_m_s2: 1e-308 drove the same
 // 8e-6 m), and the spot turns' top rate (max_turn_rate_rad_s: 1e-308 drove 1.37 m of default's
-// tour, never turning).
+// tour, never turning; the sonar explorer's turn_rate_rad_s alike, s57). A heading gain is bounded
+// the same way through the largest rate it can ask for, at a bearing error of half a turn
+// (heading_gain_per_s: 1e-308 drove default's tour straight on, as the turn rate did, s57).
 void RequireMotionTheEncodersCanCount(const YamlFields& top, const ExperimentConfig& config) {
   const ControllerConfig& controller = config.controller;
   const robot::DiffDriveSpec& nominal = config.nominal;
@@ -271,10 +274,15 @@ void RequireMotionTheEncodersCanCount(const YamlFields& top, const ExperimentCon
   // turn_rate x track_m / 2 of rim.
   double turn_rate_rad_s = std::numeric_limits<double>::infinity();
   std::string turn_field = "controller.max_turn_rate_rad_s";
+  // The gain that steers towards a bearing (yaw rate per radian of error), where the controller
+  // has one that must steer: square_path's may be 0 (its turns are its own; the gain only trims).
+  double gain_per_s = std::numeric_limits<double>::infinity();
+  std::string gain_field = "controller.heading_gain_per_s";
   if (controller.type == "waypoints") {
     speed_m_s = controller.waypoints.speed_m_s;
     accel = controller.waypoints.accel_m_s2;
     turn_rate_rad_s = controller.waypoints.max_turn_rate_rad_s;
+    gain_per_s = controller.waypoints.heading_gain_per_s;
   } else if (controller.type == "square_path") {
     speed_m_s = controller.square_path.speed_m_s;
     accel = controller.square_path.accel_m_s2;
@@ -284,8 +292,12 @@ void RequireMotionTheEncodersCanCount(const YamlFields& top, const ExperimentCon
     speed_m_s = controller.wall_following.speed_m_s;
     accel = controller.wall_following.accel_m_s2;
     turn_rate_rad_s = controller.wall_following.max_turn_rate_rad_s;
+    gain_per_s = controller.wall_following.angle_gain_per_s;
+    gain_field = "controller.angle_gain_per_s";
   } else if (controller.type == "sonar_explorer") {
     speed_m_s = controller.sonar_explorer.speed_m_s;
+    turn_rate_rad_s = controller.sonar_explorer.turn_rate_rad_s;
+    turn_field = "controller.turn_rate_rad_s";
     accel = controller.sonar_explorer.max_wheel_accel_rad_s2;
     rim_m_per_accel_unit = nominal.wheel_radius_m;
     accel_field = "controller.max_wheel_accel_rad_s2";
@@ -313,10 +325,26 @@ void RequireMotionTheEncodersCanCount(const YamlFields& top, const ExperimentCon
     top.Fail(turn_field, msgs::ShortestNumber(turn_rate_rad_s) + " rad/s turns the wheels (" +
                              msgs::ShortestNumber(half_track_m) +
                              " m from the centre: robot.nominal.track_m / 2) less than " +
-                             one_count +
-                             ": the robot never turns as far as its encoders can "
-                             "measure; give at least " +
+                             one_count + ": " +
+                             (controller.type == "sonar_explorer"
+                                  ? "its spot turns (to face each target, away from a wall "
+                                    "ahead) never turn the robot"
+                                  : "the robot never turns") +
+                             " as far as its encoders can measure; give at least " +
                              msgs::SixDigitNumberAtLeast(floor_m_s / half_track_m) + " rad/s");
+  }
+  // The largest bearing error is half a turn: gain x pi is the fastest the gain can steer.
+  if (gain_per_s * std::numbers::pi * half_track_m < floor_m_s) {
+    top.Fail(gain_field,
+             msgs::ShortestNumber(gain_per_s) +
+                 " /s asks for at most gain x pi rad of heading error = " +
+                 msgs::SixDigitNumber(gain_per_s * std::numbers::pi) +
+                 " rad/s, which turns the wheels (" + msgs::ShortestNumber(half_track_m) +
+                 " m from the centre: robot.nominal.track_m / 2) less than " + one_count +
+                 ": the gain never steers the robot as far as its encoders can "
+                 "measure; give at least " +
+                 msgs::SixDigitNumberAtLeast(floor_m_s / (std::numbers::pi * half_track_m)) +
+                 " /s");
   }
   // From rest at accel a, the rim covers a t^2 / 2 by t: less than one count by the run's end.
   if (0.5 * accel * rim_m_per_accel_unit * run_s * run_s >= count_m) return;
@@ -529,6 +557,7 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
     set_keys.push_back(aliased.substr(0, aliased.find('=')));
   }
   RejectNonStandardTags(root, source);  // after the overrides: a --set value may carry one too
+  RejectNulCharacters(root, source);
 
   ExperimentConfig config;
   config.source_file = source;
