@@ -314,46 +314,42 @@ void RequireMotionTheEncodersCanCount(const YamlFields& top, const ExperimentCon
                                 std::to_string(nominal.encoder_ticks_per_rev) +
                                 ", wheel_radius_m " + msgs::ShortestNumber(nominal.wheel_radius_m) +
                                 ") in the whole run (duration_s = " + FormatNumber(run_s) + " s)";
-  if (speed_m_s < floor_m_s) {
-    top.Fail("controller.speed_m_s",
-             msgs::ShortestNumber(speed_m_s) + " m/s turns the wheels less than " + one_count +
-                 ": the robot never moves as far as its encoders can measure; give at least " +
-                 msgs::SixDigitNumberAtLeast(floor_m_s) + " m/s");
-  }
+  // Every check below reads "<given> turns the wheels<where> less than one count: <what never
+  // happens> as far as its encoders can measure; give at least <least>".
+  const auto fail_short_of_one_count = [&](bool short_of_one_count, const std::string& field,
+                                           const std::string& given, const std::string& where,
+                                           const std::string& never, double least,
+                                           const std::string& unit) {
+    if (!short_of_one_count) return;
+    top.Fail(field, given + " turns the wheels" + where + " less than " + one_count + ": " + never +
+                        " as far as its encoders can measure; give at least " +
+                        msgs::SixDigitNumberAtLeast(least) + " " + unit);
+  };
+  fail_short_of_one_count(speed_m_s < floor_m_s, "controller.speed_m_s",
+                          msgs::ShortestNumber(speed_m_s) + " m/s", "", "the robot never moves",
+                          floor_m_s, "m/s");
   const double half_track_m = nominal.track_m / 2.0;
-  if (turn_rate_rad_s * half_track_m < floor_m_s) {
-    top.Fail(turn_field, msgs::ShortestNumber(turn_rate_rad_s) + " rad/s turns the wheels (" +
-                             msgs::ShortestNumber(half_track_m) +
-                             " m from the centre: robot.nominal.track_m / 2) less than " +
-                             one_count + ": " +
-                             (controller.type == "sonar_explorer"
-                                  ? "its spot turns (to face each target, away from a wall "
-                                    "ahead) never turn the robot"
-                                  : "the robot never turns") +
-                             " as far as its encoders can measure; give at least " +
-                             msgs::SixDigitNumberAtLeast(floor_m_s / half_track_m) + " rad/s");
-  }
+  const std::string at_half_track =
+      " (" + msgs::ShortestNumber(half_track_m) + " m from the centre: robot.nominal.track_m / 2)";
+  fail_short_of_one_count(turn_rate_rad_s * half_track_m < floor_m_s, turn_field,
+                          msgs::ShortestNumber(turn_rate_rad_s) + " rad/s", at_half_track,
+                          controller.type == "sonar_explorer"
+                              ? "its spot turns (to face each target, away from a wall ahead) "
+                                "never turn the robot"
+                              : "the robot never turns",
+                          floor_m_s / half_track_m, "rad/s");
   // The largest bearing error is half a turn: gain x pi is the fastest the gain can steer.
-  if (gain_per_s * std::numbers::pi * half_track_m < floor_m_s) {
-    top.Fail(gain_field,
-             msgs::ShortestNumber(gain_per_s) +
-                 " /s asks for at most gain x pi rad of heading error = " +
-                 msgs::SixDigitNumber(gain_per_s * std::numbers::pi) +
-                 " rad/s, which turns the wheels (" + msgs::ShortestNumber(half_track_m) +
-                 " m from the centre: robot.nominal.track_m / 2) less than " + one_count +
-                 ": the gain never steers the robot as far as its encoders can "
-                 "measure; give at least " +
-                 msgs::SixDigitNumberAtLeast(floor_m_s / (std::numbers::pi * half_track_m)) +
-                 " /s");
-  }
+  fail_short_of_one_count(gain_per_s * std::numbers::pi * half_track_m < floor_m_s, gain_field,
+                          msgs::ShortestNumber(gain_per_s) +
+                              " /s asks for at most gain x pi rad of heading error = " +
+                              msgs::SixDigitNumber(gain_per_s * std::numbers::pi) + " rad/s, which",
+                          at_half_track, "the gain never steers the robot",
+                          floor_m_s / (std::numbers::pi * half_track_m), "/s");
   // From rest at accel a, the rim covers a t^2 / 2 by t: less than one count by the run's end.
-  if (0.5 * accel * rim_m_per_accel_unit * run_s * run_s >= count_m) return;
-  const double least = 2.0 * count_m / (run_s * run_s) / rim_m_per_accel_unit;
-  top.Fail(accel_field, msgs::ShortestNumber(accel) + " " + accel_unit +
-                            " from rest turns the wheels less than " + one_count +
-                            ": the robot never moves as far as its encoders can measure; give at "
-                            "least " +
-                            msgs::SixDigitNumberAtLeast(least) + " " + accel_unit);
+  fail_short_of_one_count(
+      !(0.5 * accel * rim_m_per_accel_unit * run_s * run_s >= count_m), accel_field,
+      msgs::ShortestNumber(accel) + " " + accel_unit + " from rest", "", "the robot never moves",
+      2.0 * count_m / (run_s * run_s) / rim_m_per_accel_unit, accel_unit);
 }
 
 // A gyro step coarser than the turns the robot can make: with quantisation_rad_s at least twice
