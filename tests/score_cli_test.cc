@@ -275,6 +275,25 @@ TEST(ScoreCliTest, OutNeverOverwritesTheRunOrTheScoredFile) {
   EXPECT_EQ(Slurp(tum), tum_before);
 }
 
+// s58: --out naming a folder (s.json/, ., ..) or a folder itself printed the whole table of
+// figures, then was refused: the --out check now comes before scoring, so nothing is printed and
+// the one line names the flag.
+TEST(ScoreCliTest, AnOutThatCannotBeWrittenIsRefusedBeforeAnyFigureIsPrinted) {
+  const fs::path dir = testing::MakeTempDir("score_cli_out_first");
+  const fs::path tum = RunDir() / "trajectory.encoder.tum";
+  for (const std::string& out : {(dir / "s.json").string() + "/", (dir / ".").string(),
+                                 (dir / "..").string(), dir.string()}) {
+    SCOPED_TRACE(out);
+    const auto r = RunPlywood(
+        "score trajectory " + RunDir().string() + " " + tum.string() + " --out " + out, dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(r.err.rfind("plywood: " + out + ": --out: ", 0), 0u) << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "not one line: " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(dir / "s.json"));
+}
+
 // audit s37: a file saved "UTF-8 with BOM" by an editor or a spreadsheet was refused with a
 // misleading line: a lines CSV with "\xEF\xBB\xBFscan: unknown column" (the mark invisible), a
 // trajectory.csv-layout file read as TUM ("tx: expected 8 fields ..., got 1"), a TUM file whose

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <set>
 #include <utility>
 
 #include "eval/protocol.h"
@@ -16,6 +17,7 @@
 #include "sim/config/robot_catalog.h"
 #include "sim/config/utf8_text.h"
 #include "sim/config/yaml_text_value.h"
+#include "sim/runner/checked_scene.h"
 #include "sim/runner/text_file.h"
 #include "sim/world/mujoco_handles.h"
 #include "sim/world/referenced_files.h"
@@ -365,6 +367,7 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
   const bool sets_spawn = SetsSpawn(spec);
   std::vector<SweepCell> cells;
   std::map<std::string, int> ids;
+  std::set<std::pair<std::string, std::string>> checked_worlds;  // (experiment, world) compiled
   // Each file cells read besides their worlds, hashed once: every cell of a sweep reads the same
   // weights or plug-in (a plug-in is megabytes).
   std::map<std::filesystem::path, std::string> content_hashes;
@@ -410,6 +413,18 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
             } catch (const sim::ConfigError& e) {
               throw sim::ConfigError(spec.source_file, CulpritField(spec, cell, profile_lines),
                                      e.what());
+            }
+            // A hand-given world that is no MJCF, does not compile with the robot, or puts the
+            // spawn inside a box failed only in its own cells, as they ran (failures.csv), where
+            // `plywood run` refuses it, exit 2 (s57's left item). Compiled once per experiment
+            // and world, at the first cell's config; a generated world is the generator's.
+            if (world.family.empty() && !world.path.empty() && config.protocol == "single" &&
+                checked_worlds.insert({experiment.string(), world.path.string()}).second) {
+              try {
+                sim::MakeCheckedScene(config);
+              } catch (const sim::ConfigError& e) {
+                throw sim::ConfigError(spec.source_file, "worlds", e.what());
+              }
             }
             cell.seed = config.seed;
             cell.robot = config.robot;
