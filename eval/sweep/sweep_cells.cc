@@ -114,6 +114,22 @@ std::string CulpritField(const SweepSpec& spec, const SweepCell& cell,
   return "experiment";
 }
 
+// The sweep field that names a cell's world or spawn: `worlds`, else a profile's world= or spawn
+// line, else a spawn axis, else the experiment (its own world and spawn).
+std::string WorldCulprit(const SweepSpec& spec, const SweepCell& cell,
+                         const std::vector<std::string>& profile_lines) {
+  if (!cell.world.empty()) return "worlds";
+  for (const std::string& line : profile_lines) {
+    if (line.rfind("world=", 0) == 0 || line.rfind("robot.spawn", 0) == 0) {
+      return "profiles (" + cell.profile + ")";
+    }
+  }
+  for (const auto& axis : spec.axes) {
+    if (axis.key == "world" || axis.key.rfind("robot.spawn", 0) == 0) return "set." + axis.key;
+  }
+  return "experiment";
+}
+
 // The sonar-net weights, plug-in libraries and the protocol's other worlds (seed 000's later
 // rooms) a run of `config` reads, those that exist (a missing one is refused by the run, naming
 // its field).
@@ -417,13 +433,15 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
             // A hand-given world that is no MJCF, does not compile with the robot, or puts the
             // spawn inside a box failed only in its own cells, as they ran (failures.csv), where
             // `plywood run` refuses it, exit 2 (s57's left item). Compiled once per experiment
-            // and world, at the first cell's config; a generated world is the generator's.
-            if (world.family.empty() && !world.path.empty() && config.protocol == "single" &&
-                checked_worlds.insert({experiment.string(), world.path.string()}).second) {
+            // and world (from `worlds`, a `world` axis or the experiment's own), at the first
+            // cell's config; a generated world is the generator's.
+            if (world.family.empty() && config.protocol == "single" &&
+                checked_worlds.insert({experiment.string(), config.world_path.string()}).second) {
               try {
                 sim::MakeCheckedScene(config);
               } catch (const sim::ConfigError& e) {
-                throw sim::ConfigError(spec.source_file, "worlds", e.what());
+                throw sim::ConfigError(spec.source_file, WorldCulprit(spec, cell, profile_lines),
+                                       e.what());
               }
             }
             cell.seed = config.seed;
