@@ -243,8 +243,9 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
        {"experiment: " + experiment + "\nset: {name: [\"a\\0b\"]}\n",
         "set.name[0]: holds a NUL character (YAML's \\0) after 'a'"}},
       // s58: `metrics: []` read as if absent (every metric summarised), the opposite of the empty
-      // list written; a hand-given world that is no MJCF, or that puts the spawn inside a box,
-      // failed only as each of its cells ran (failures.csv), where `plywood run` refuses it.
+      // list written; a hand-given world that is no MJCF, or a spawn inside one of its boxes (at
+      // an axis' second value), failed only as each of its cells ran (failures.csv), where
+      // `plywood run` refuses it.
       {"empty_metrics",
        {"experiment: " + experiment + "\nmetrics: []\n",
         "metrics: empty list: name the metrics to print, summarise and plot, or leave metrics "
@@ -255,8 +256,8 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
       {"a_spawn_inside_a_box",
        {"experiment: " + experiment + "\nworlds: [" +
             (SourceRoot() / "worlds/seed001_room_2.xml").string() +
-            "]\nset: {robot.spawn.x_m: [0.3], robot.spawn.y_m: [1.215]}\n",
-        "worlds: " + experiment +
+            "]\nset: {robot.spawn.x_m: [-0.8, 0.3], robot.spawn.y_m: [1.215]}\n",
+        "set.robot.spawn.x_m: " + experiment +
             ": robot.spawn: the robot at (0.3, 1.215) overlaps geom 'obstacle_0' of the world"}},
       {"repeated_group",
        {"experiment: " + experiment + "\ngroup_by: [seed, seed]\n",
