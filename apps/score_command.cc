@@ -8,6 +8,7 @@
 #include "apps/command.h"
 #include "eval/score/grid_score.h"
 #include "eval/score/lines_score.h"
+#include "eval/score/score_report.h"
 #include "eval/score/trajectory_score.h"
 #include "perception/logs/parse_number.h"
 
@@ -86,6 +87,8 @@ Command AddScoreCommand(CLI::App& app) {
               throw UsageError(
                   "score: --name: empty; give the name the figures get, or leave --name out");
             }
+            // Before scoring: a refused --out printed the whole table first (s57's left item).
+            if (!flags->out.empty()) eval::CheckScoreOut(flags->out, flags->run_dir, flags->file);
             eval::ScoreReport report;
             if (flags->what == "trajectory") {
               report =

@@ -3,12 +3,14 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "apps/command.h"
 #include "apps/decimal_whole_number.h"
 #include "eval/sonar_map/sonar_net_training.h"
+#include "sim/config/decimal_whole_number.h"
 
 namespace plywood::apps {
 namespace {
@@ -67,12 +69,12 @@ Command AddTrainCommand(CLI::App& app) {
     std::string model;
     eval::SonarNetTrainingOptions options;
     std::string hidden;
-    int seed = 1;
+    std::string seed;
     bool quiet = false;
   };
   auto flags = std::make_shared<Flags>();
   flags->hidden = Join(flags->options.train.hidden);
-  flags->seed = static_cast<int>(flags->options.train.seed);
+  flags->seed = std::to_string(flags->options.train.seed);
   eval::SonarNetTrainingOptions& o = flags->options;
   CLI::App* cli = app.add_subcommand(
       "train",
@@ -112,7 +114,6 @@ Command AddTrainCommand(CLI::App& app) {
   cli->add_option("--seed", flags->seed, "seed of the rooms, poses, noise and initial weights")
       ->type_name("N")
       ->transform(DecimalWholeNumber())
-      ->check(kCount)
       ->capture_default_str();
   cli->add_flag("--quiet", flags->quiet, "print nothing");
   cli->footer(
@@ -122,7 +123,16 @@ Command AddTrainCommand(CLI::App& app) {
   return {cli, [flags] {
             eval::SonarNetTrainingOptions options = flags->options;
             options.train.hidden = ParseHidden(flags->hidden);
-            options.train.seed = static_cast<std::uint64_t>(flags->seed);
+            // One rule for every seed (sim::ParseDecimalWholeNumber): --seed took 1..100000 where a
+            // run's seed and worlds generate's take 0 and up to 19 digits (s57's left item).
+            const std::optional<std::uint64_t> seed = sim::ParseDecimalWholeNumber(flags->seed);
+            if (!seed) {
+              throw UsageError(
+                  "train: --seed: must be a whole number >= 0 in decimal digits, at most 19 (as a "
+                  "run's seed and worlds generate's take), got '" +
+                  flags->seed + "'");
+            }
+            options.train.seed = *seed;
             try {
               options.Validate();  // "hidden: ..." names its flag: "train: --hidden: ..."
             } catch (const std::invalid_argument& e) {

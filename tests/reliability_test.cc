@@ -1576,6 +1576,21 @@ TEST_F(ReliabilityTest, AGainOrTurnRateThatNeverTurnsAnEncoderCountIsRefused) {
                                "angle_gain_per_s: 1e-9}\n",
                                "{laser: {}, encoders: {}}"),
                 "", {"controller.angle_gain_per_s: 1e-09 /s asks for at most", "6.06061e-05 /s"});
+  // s58: the wall follower's distance term, an angle: gain x the largest distance error (the
+  // larger of distance_m 0.5 and max_wall_range_m 2 - 0.5: 1.5 m) of turn at 0.165 m must reach
+  // one count, 1.5708e-05 m of rim, whatever the run's length: 6.34666e-05 rad/m.
+  const std::string follower =
+      HallExperiment(-2.0, -2.0, "controller: {type: wall_following, sensor: laser}\n",
+                     "{laser: {}, encoders: {}}");
+  ExpectRefused(follower, "--set controller.distance_gain_rad_per_m=1e-308",
+                {"experiment.yaml: controller.distance_gain_rad_per_m: 1e-308 rad/m asks for a "
+                 "heading towards the wall of at most gain x 1.5 m (the largest distance error: "
+                 "the larger of distance_m and max_wall_range_m - distance_m) = 1.5e-308 rad, "
+                 "which turns the wheels (0.165 m from the centre: robot.nominal.track_m / 2) less "
+                 "than one encoder count (1.5708e-05 m of rim): the distance term never steers the "
+                 "robot towards its distance as far as its encoders can measure; give at least "
+                 "6.34666e-05 rad/m"});
+  EXPECT_EQ(Run(follower, "--set controller.distance_gain_rad_per_m=6.34666e-05").exit_code, 0);
   ExpectRefused(ExplorerExperiment(-0.8, -0.5), "--set controller.turn_rate_rad_s=1e-308",
                 {"experiment.yaml: controller.turn_rate_rad_s: 1e-308 rad/s turns the wheels",
                  "its spot turns (to face each target, away from a wall ahead) never turn the "

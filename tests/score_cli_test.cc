@@ -275,6 +275,52 @@ TEST(ScoreCliTest, OutNeverOverwritesTheRunOrTheScoredFile) {
   EXPECT_EQ(Slurp(tum), tum_before);
 }
 
+// s58: --out naming a folder (s.json/, ., ..) or a folder itself printed the whole table of
+// figures, then was refused: the --out check now comes before scoring, so nothing is printed and
+// the one line names the flag.
+TEST(ScoreCliTest, AnOutThatCannotBeWrittenIsRefusedBeforeAnyFigureIsPrinted) {
+  const fs::path dir = testing::MakeTempDir("score_cli_out_first");
+  const fs::path tum = RunDir() / "trajectory.encoder.tum";
+  for (const std::string& out : {(dir / "s.json").string() + "/", (dir / ".").string(),
+                                 (dir / "..").string(), dir.string()}) {
+    SCOPED_TRACE(out);
+    const auto r = RunPlywood(
+        "score trajectory " + RunDir().string() + " " + tum.string() + " --out " + out, dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(r.err.rfind("plywood: " + out + ": --out: ", 0), 0u) << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "not one line: " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(dir / "s.json"));
+}
+
+// s58: a `plywood replay` folder passes the finished-run rules (config.yaml, metrics.json,
+// complete.json) but holds no world: scoring it said "config.yaml: world: missing: give the
+// world's MJCF file" (lines, grid; `view` alike) or "trajectory.csv: missing (the run's ground
+// truth; ...)", as if a run had lost its files. Each now names the folder as a replay's.
+TEST(ScoreCliTest, AReplaysFolderIsNamedAsOneAndNotScored) {
+  const fs::path dir = testing::MakeTempDir("score_cli_replay_folder");
+  const fs::path replay = dir / "replay";
+  ASSERT_EQ(
+      RunPlywood("replay " + (RunDir() / "laser.log").string() + " --out " + replay.string(), dir)
+          .exit_code,
+      0);
+  const std::string tum = (RunDir() / "trajectory.encoder.tum").string();
+  for (const std::string& what :
+       {"trajectory " + replay.string() + " " + tum,
+        "lines " + replay.string() + " " + (replay / "lines.csv").string(),
+        "grid " + replay.string() + " " + tum + " --resolution 0.05 --origin -2,-2"}) {
+    SCOPED_TRACE(what);
+    const auto r = RunPlywood("score " + what, dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.err, "plywood: " + replay.string() + ": holds a plywood replay of " +
+                         fs::absolute(RunDir() / "laser.log").string() +
+                         " (the lines extracted from a CARMEN log), not a simulated run: it has no "
+                         "world, ground truth or trajectory to score against or show; give the "
+                         "folder of a plywood run\n");
+  }
+}
+
 // audit s37: a file saved "UTF-8 with BOM" by an editor or a spreadsheet was refused with a
 // misleading line: a lines CSV with "\xEF\xBB\xBFscan: unknown column" (the mark invisible), a
 // trajectory.csv-layout file read as TUM ("tx: expected 8 fields ..., got 1"), a TUM file whose

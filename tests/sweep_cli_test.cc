@@ -101,21 +101,22 @@ TEST(SweepCliTest, RunsEveryCellAndTabulatesThem) {
 
 TEST(SweepCliTest, AFailingCellLandsInFailuresAndTheRestCompletes) {
   const fs::path dir = MakeTempDir("SweepFailure");
-  // Valid XML, but MuJoCo refuses it when the run builds its scene.
-  const fs::path broken = WriteFile(
-      dir / "broken.xml", "<mujoco><worldbody><geom type=\"pyramid\"/></worldbody></mujoco>");
+  // The office tour's waypoints lie beyond the hall's walls: the run refuses the hall's cells when
+  // it builds them (exit 2). A world that does not compile failed here too until s58, which
+  // refuses it before any cell runs (BadSweepInputNamesFileAndFieldAndRunsNothing).
   const fs::path sweep = WriteFile(
-      dir / "fail.yaml",
-      "experiment: " + (SourceRoot() / "tests/data/sweep_default.yaml").string() +
-          "\nseeds: [1, 2]\n" + "worlds: [" + (SourceRoot() / "worlds/hall.xml").string() + ", " +
-          broken.string() + "]\nset: {duration_s: [2], output.snapshot: [false]}\n");
+      dir / "fail.yaml", "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
+                             "\nseeds: [1, 2]\n" + "worlds: [" +
+                             (SourceRoot() / "worlds/office.xml").string() + ", " +
+                             (SourceRoot() / "worlds/hall.xml").string() +
+                             "]\nset: {duration_s: [2], output.snapshot: [false]}\n");
   const auto r = RunPlywood("sweep " + sweep.string() + " --out " + (dir / "out").string(), dir);
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_EQ(CountRunDirs(dir / "out"), 2);
   const auto failures = eval::ParseCsv(Slurp(dir / "out" / "failures.csv"));
   ASSERT_EQ(failures.size(), 3u);  // header + 2 seeds
   EXPECT_EQ(failures[1].back().find("plywood:"), 0u) << failures[1].back();
-  EXPECT_NE(failures[1].back().find("broken.xml"), std::string::npos) << failures[1].back();
+  EXPECT_NE(failures[1].back().find("hall.xml"), std::string::npos) << failures[1].back();
   EXPECT_EQ(failures[1][failures[1].size() - 2], "2");  // exit code of a config error
   EXPECT_EQ(eval::ParseCsv(Slurp(dir / "out" / "results.csv")).size(), 3u);
 }
@@ -124,13 +125,13 @@ TEST(SweepCliTest, AFailingCellLandsInFailuresAndTheRestCompletes) {
 // nothing) on the sweep's stderr. Now it notes that there is nothing to plot.
 TEST(SweepCliTest, ASweepWhoseEveryCellFailsPrintsNoTraceback) {
   const fs::path dir = MakeTempDir("SweepAllFail");
-  const fs::path broken = WriteFile(
-      dir / "broken.xml", "<mujoco><worldbody><geom type=\"pyramid\"/></worldbody></mujoco>");
-  const fs::path sweep = WriteFile(
-      dir / "fail.yaml", "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
-                             "\nseeds: [1]\nworlds: [" + broken.string() +
-                             "]\nset: {duration_s: [2], output.snapshot: [false]}\n" +
-                             "metrics: [truth.distance_m]\n");
+  // The office tour in the hall: every cell refused as it runs (waypoints beyond the walls).
+  const fs::path sweep =
+      WriteFile(dir / "fail.yaml",
+                "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
+                    "\nseeds: [1]\nworlds: [" + (SourceRoot() / "worlds/hall.xml").string() +
+                    "]\nset: {duration_s: [2], output.snapshot: [false]}\n" +
+                    "metrics: [truth.distance_m]\n");
   const auto r = RunPlywood("sweep " + sweep.string() + " --out " + (dir / "out").string(), dir);
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_EQ(r.err.find("Traceback"), std::string::npos) << r.err;
@@ -241,6 +242,23 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
       {"nul_in_a_value",
        {"experiment: " + experiment + "\nset: {name: [\"a\\0b\"]}\n",
         "set.name[0]: holds a NUL character (YAML's \\0) after 'a'"}},
+      // s58: `metrics: []` read as if absent (every metric summarised), the opposite of the empty
+      // list written; a hand-given world that is no MJCF, or a spawn inside one of its boxes (at
+      // an axis' second value), failed only as each of its cells ran (failures.csv), where
+      // `plywood run` refuses it.
+      {"empty_metrics",
+       {"experiment: " + experiment + "\nmetrics: []\n",
+        "metrics: empty list: name the metrics to print, summarise and plot, or leave metrics "
+        "out"}},
+      {"a_world_that_is_no_mjcf",
+       {"experiment: " + experiment + "\nworlds: [" + experiment + "]\n",
+        "worlds: " + experiment + ": does not compile with robot "}},
+      {"a_spawn_inside_a_box",
+       {"experiment: " + experiment + "\nworlds: [" +
+            (SourceRoot() / "worlds/seed001_room_2.xml").string() +
+            "]\nset: {robot.spawn.x_m: [-0.8, 0.3], robot.spawn.y_m: [1.215]}\n",
+        "set.robot.spawn.x_m: " + experiment +
+            ": robot.spawn: the robot at (0.3, 1.215) overlaps geom 'obstacle_0' of the world"}},
       {"repeated_group",
        {"experiment: " + experiment + "\ngroup_by: [seed, seed]\n",
         "group_by: 'seed' is listed twice"}},

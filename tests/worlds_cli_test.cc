@@ -137,6 +137,29 @@ TEST(WorldsCliTest, EverySeedGenerateTakesASweepCanName) {
   EXPECT_EQ(Slurp(dir / "sweep" / "worlds" / ("room-seed" + seed) / file), Slurp(dir / "b" / file));
 }
 
+// s58: `train sonar-net --seed` took 1..100000 where a run's seed and `worlds generate --seed`
+// take 0 and any of 19 digits: seed 0 was refused as out of range. Now one rule reads them all;
+// a small network trains at the two ends (different weights), a 20-digit seed gets the same line.
+TEST(WorldsCliTest, TrainTakesEverySeedARunTakes) {
+  namespace fs = std::filesystem;
+  const fs::path dir = testing::MakeTempDir("worlds_cli_train_seed");
+  const std::string small =
+      "train sonar-net --rooms 3 --test-rooms 2 --poses 5 --epochs 1 "
+      "--hidden 2 --quiet --seed ";
+  for (const char* seed : {"0", "9999999999999999999"}) {
+    const auto r = testing::RunPlywood(small + seed + " --out " + (dir / seed).string(), dir);
+    EXPECT_EQ(r.exit_code, 0) << seed << ": " << r.err;
+  }
+  EXPECT_NE(Slurp(dir / "0"), Slurp(dir / "9999999999999999999"));
+  const auto refused =
+      testing::RunPlywood(small + "18446744073709551615 --out " + (dir / "x").string(), dir);
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_EQ(refused.err,
+            "plywood: train: --seed: must be a whole number >= 0 in decimal digits, at most 19 (as "
+            "a run's seed and worlds generate's take), got '18446744073709551615'\n");
+  EXPECT_FALSE(fs::exists(dir / "x"));
+}
+
 TEST(WorldsCliTest, ASecondGenerationReplacesTheFirstAndNothingElse) {
   namespace fs = std::filesystem;
   const fs::path dir = testing::MakeTempDir("worlds_cli_again");

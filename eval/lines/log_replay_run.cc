@@ -2,11 +2,15 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "msgs/shortest_number.h"
 #include "perception/lines/line_extractor_factory.h"
+#include "perception/lines/scan_points.h"
 #include "perception/logs/carmen_log.h"
 #include "perception/logs/regular_file.h"
 #include "render/overlay.h"
@@ -72,6 +76,56 @@ void RequireOptionsOfTheExtractorRun(const LogReplayRequest& request) {
   }
 }
 
+// The options of `extractor` that ask each line for at least that many points (or votes, or
+// inliers) of one scan, by key.
+std::vector<std::pair<std::string, int>> PointsEachLineNeeds(
+    const perception::LineExtractorOptions& o, const std::string& extractor) {
+  if (extractor == "polar_neighbour") return {{"min_points", o.polar_neighbour.min_points}};
+  if (extractor == "split_and_merge") return {{"min_points", o.split_and_merge.filter.min_points}};
+  if (extractor == "incremental") return {{"min_points", o.incremental.filter.min_points}};
+  if (extractor == "ransac") {
+    return {{"min_inliers", o.ransac.min_inliers}, {"min_points", o.ransac.min_points}};
+  }
+  if (extractor == "hough") {
+    return {{"min_votes", o.hough.min_votes}, {"min_points", o.hough.min_points}};
+  }
+  return {};
+}
+
+// A line is drawn from the points of one scan: a --set count above the points of the log's
+// fullest scan finds no line in any scan, and the replay reported rays_explained 0, exit 0 (s57's
+// left item). Only counts the user set: a default above a log's sparse scans is the extractor's
+// own limit. The points are those the replay gives the extractor (returns within range).
+void RequireCountsTheScansCanMeet(const LogReplayRequest& request,
+                                  const perception::LineExtractorOptions& options,
+                                  const perception::CarmenLog& log) {
+  std::vector<std::pair<std::string, int>> counts;
+  for (const auto& [key, count] : PointsEachLineNeeds(options, request.extractor)) {
+    const std::string dotted = request.extractor + "." + key;
+    if (std::any_of(request.overrides.begin(), request.overrides.end(),
+                    [&](const auto& set) { return set.substr(0, set.find('=')) == dotted; })) {
+      counts.emplace_back(dotted, count);
+    }
+  }
+  if (counts.empty()) return;
+  std::size_t points = 0;
+  for (const auto& record : log.lasers) {
+    const perception::ScanPoints scan = perception::MakeScanPoints(
+        record.scan, perception::ScanFilter::ForLog(record.scan.range_max_m));
+    points = std::max(points, scan.points.size());
+  }
+  for (const auto& [dotted, count] : counts) {
+    if (static_cast<std::size_t>(count) <= points) continue;
+    throw sim::ConfigError("--set", dotted,
+                           std::to_string(count) + " is more than the " + std::to_string(points) +
+                               " points (returns within range) of the fullest scan in " +
+                               request.log.string() +
+                               ": a line is drawn from one scan's points, so none could be "
+                               "found; give at most " +
+                               std::to_string(points));
+  }
+}
+
 }  // namespace
 
 std::filesystem::path DefaultReplayDirectory(const std::filesystem::path& log,
@@ -98,6 +152,7 @@ LogReplaySummary RunLogReplay(const LogReplayRequest& request) {
   } catch (const std::runtime_error& e) {
     throw std::invalid_argument(e.what());  // a malformed log is bad input: one line, exit 2
   }
+  RequireCountsTheScansCanMeet(request, lines.options, log);
   LogReplaySummary summary;
   summary.out_dir = request.out_dir.empty() ? DefaultReplayDirectory(request.log, request.extractor)
                                             : request.out_dir;

@@ -1,5 +1,7 @@
 #include "eval/score/run_directory.h"
 
+#include <yaml-cpp/yaml.h>
+
 #include "eval/score/csv_table.h"
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
@@ -7,11 +9,38 @@
 #include "sim/world/continuing_faces.h"
 
 namespace plywood::eval {
+namespace {
+
+// A `plywood replay` folder is a finished run to the run-folder rules (config.yaml, metrics.json,
+// complete.json), but its config.yaml holds the log and the extractor, no world: `score` and
+// `view` on one said "config.yaml: world: missing: give the world's MJCF file", or
+// "trajectory.csv: missing (the run's ground truth; multi-run protocols keep it in each run's
+// subfolder)", as if a run had lost its files (s58).
+void RefuseAReplaysFolder(const std::filesystem::path& run_dir) {
+  const std::filesystem::path config = run_dir / "config.yaml";
+  if (!perception::IsRegularFile(config)) return;
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(config.string());
+  } catch (const YAML::Exception&) {
+    return;  // the readers below name what is wrong with it
+  }
+  if (!root.IsMap() || !root["replay"] || !root["replay"].IsMap()) return;
+  const YAML::Node log = root["replay"]["log"];
+  throw sim::ConfigError(
+      run_dir.string(), "",
+      "holds a plywood replay of " + (log && log.IsScalar() ? log.Scalar() : std::string("a log")) +
+          " (the lines extracted from a CARMEN log), not a simulated run: it has no world, ground "
+          "truth or trajectory to score against or show; give the folder of a plywood run");
+}
+
+}  // namespace
 
 std::filesystem::path RunFile(const std::filesystem::path& run_dir, const std::string& name,
                               const std::string& why) {
   // A killed or failed run is never scored; a protocol's finished part (UMBmark's before/cw_1) is.
   sim::RequireFinishedRunOrPart(run_dir);
+  RefuseAReplaysFolder(run_dir);
   const std::filesystem::path path = run_dir / name;
   if (!perception::IsRegularFile(path)) {
     throw sim::ConfigError(path.string(), "", "missing (" + why + ")");

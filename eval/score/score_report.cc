@@ -8,9 +8,16 @@
 
 namespace plywood::eval {
 
-void WriteScoreJson(const ScoreReport& report, const std::filesystem::path& out,
-                    const std::filesystem::path& run_dir, const std::filesystem::path& scored) {
+void CheckScoreOut(const std::filesystem::path& out, const std::filesystem::path& run_dir,
+                   const std::filesystem::path& scored) {
   namespace fs = std::filesystem;
+  // "s.json/" printed the whole table of figures, then was refused as a folder (s57's left item).
+  const std::string last = out.filename().string();
+  if (last.empty() || last == "." || last == "..") {
+    throw sim::ConfigError(out.string(), "--out",
+                           "names a folder (it ends in '/', '.' or '..'); give a file name "
+                           "(scores.json)");
+  }
   // The error_code form: a symbolic-link loop as --out threw filesystem_error, a line naming no
   // flag and exit 1.
   std::error_code error;
@@ -31,6 +38,13 @@ void WriteScoreJson(const ScoreReport& report, const std::filesystem::path& out,
   if (fs::is_directory(target)) {
     throw sim::ConfigError(out.string(), "--out", "is a folder; give a file name (scores.json)");
   }
+}
+
+void WriteScoreJson(const ScoreReport& report, const std::filesystem::path& out,
+                    const std::filesystem::path& run_dir, const std::filesystem::path& scored) {
+  CheckScoreOut(out, run_dir, scored);
+  const std::filesystem::path target =
+      std::filesystem::weakly_canonical(std::filesystem::absolute(out));
   // Staged beside the target and renamed into place (WriteTextFile): written in place, a full
   // disk or a file-size limit left an earlier scores file cut to 0 bytes.
   try {

@@ -15,9 +15,15 @@ struct ScoreReport {
   std::string table;
 };
 
+// Refuses (sim::ConfigError, one line naming --out) a scores file that could not be written: a
+// name that ends in a folder ('/', '.', '..'), a folder, a target inside the scored run's folder or
+// equal to the scored file. Called before scoring, so no table is printed for a refused --out.
+void CheckScoreOut(const std::filesystem::path& out, const std::filesystem::path& run_dir,
+                   const std::filesystem::path& scored);
+
 // Writes report.metrics as JSON to `out` (`plywood score --out`). Refuses (sim::ConfigError, one
-// line) a target inside the scored run's folder or equal to the scored file, so a score never
-// overwrites what it scored, and reports a target it cannot write the same way.
+// line) what CheckScoreOut refuses, so a score never overwrites what it scored, and reports a
+// target it cannot write the same way.
 void WriteScoreJson(const ScoreReport& report, const std::filesystem::path& out,
                     const std::filesystem::path& run_dir, const std::filesystem::path& scored);
 

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <set>
+#include <tuple>
 #include <utility>
 
 #include "eval/protocol.h"
@@ -16,6 +18,8 @@
 #include "sim/config/robot_catalog.h"
 #include "sim/config/utf8_text.h"
 #include "sim/config/yaml_text_value.h"
+#include "sim/runner/checked_scene.h"
+#include "sim/runner/spawn_refused.h"
 #include "sim/runner/text_file.h"
 #include "sim/world/mujoco_handles.h"
 #include "sim/world/referenced_files.h"
@@ -109,6 +113,24 @@ std::string CulpritField(const SweepSpec& spec, const SweepCell& cell,
   }
   if (!cell.world.empty() && fails({cell.overrides.front()})) return "worlds";
   if (!profile_lines.empty() && fails(profile_lines)) return "profiles (" + cell.profile + ")";
+  return "experiment";
+}
+
+// The sweep field that set what a cell's scene check refused: for the spawn, a spawn axis, else a
+// profile's spawn line, else `worlds` (its spawn_0); for the world, `worlds`, else a profile's
+// world= line; else the experiment (its own world and spawn).
+std::string SceneCulprit(const SweepSpec& spec, const SweepCell& cell,
+                         const std::vector<std::string>& profile_lines, bool spawn) {
+  const std::string key = spawn ? "robot.spawn" : "world";
+  if (spawn) {
+    for (const auto& axis : spec.axes) {
+      if (axis.key.rfind(key, 0) == 0) return "set." + axis.key;
+    }
+  }
+  for (const std::string& line : profile_lines) {
+    if (line.rfind(key, 0) == 0) return "profiles (" + cell.profile + ")";
+  }
+  if (!cell.world.empty()) return "worlds";
   return "experiment";
 }
 
@@ -365,6 +387,9 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
   const bool sets_spawn = SetsSpawn(spec);
   std::vector<SweepCell> cells;
   std::map<std::string, int> ids;
+  // (experiment, world, robot, spawn) compiled: once per world unless an axis moves the spawn.
+  std::set<std::tuple<std::string, std::string, std::string, double, double, double>>
+      checked_worlds;
   // Each file cells read besides their worlds, hashed once: every cell of a sweep reads the same
   // weights or plug-in (a plug-in is megabytes).
   std::map<std::filesystem::path, std::string> content_hashes;
@@ -410,6 +435,26 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
             } catch (const sim::ConfigError& e) {
               throw sim::ConfigError(spec.source_file, CulpritField(spec, cell, profile_lines),
                                      e.what());
+            }
+            // A hand-given world that is no MJCF, does not compile with the robot, or puts the
+            // spawn inside a box failed only in its own cells, as they ran (failures.csv), where
+            // `plywood run` refuses it, exit 2 (s57's left item). Compiled once per experiment,
+            // world (from `worlds`, a profile or the experiment's own), robot and spawn: once per
+            // world unless an axis moves the spawn; a generated world is the generator's.
+            if (world.family.empty() && config.protocol == "single" &&
+                checked_worlds
+                    .insert({experiment.string(), config.world_path.string(), config.robot,
+                             config.spawn.x_m, config.spawn.y_m, config.spawn.theta_deg})
+                    .second) {
+              try {
+                sim::MakeCheckedScene(config);
+              } catch (const sim::SpawnRefused& e) {
+                throw sim::ConfigError(spec.source_file,
+                                       SceneCulprit(spec, cell, profile_lines, true), e.what());
+              } catch (const sim::ConfigError& e) {
+                throw sim::ConfigError(spec.source_file,
+                                       SceneCulprit(spec, cell, profile_lines, false), e.what());
+              }
             }
             cell.seed = config.seed;
             cell.robot = config.robot;

@@ -318,7 +318,17 @@ SweepSpec LoadSweepSpec(const fs::path& path) {
       length = axis->values.size();
     }
   }
-  if (top.Has("metrics")) spec.metrics = ReadNames(top.Raw("metrics"), top, "metrics");
+  if (top.Has("metrics")) {
+    spec.metrics = ReadNames(top.Raw("metrics"), top, "metrics");
+    // Without metrics: summary.csv holds every numeric metric; `metrics: []` read as that, the
+    // opposite of the empty list written (s57's left item). `zip: []` and `group_by: []` mean
+    // what their absence means (nothing zipped, no extra group), so they stay accepted.
+    if (spec.metrics.empty()) {
+      top.Fail("metrics",
+               "empty list: name the metrics to print, summarise and plot, or leave metrics out "
+               "(summary.csv then holds every numeric metric)");
+    }
+  }
   // Every key of a metrics.json is a word: a name with an empty part ('', 'odometry.encoder.')
   // is in no run's, and was refused only after every cell had run (s57).
   for (const std::string& metric : spec.metrics) {

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
+#include <utility>
 
 #include "msgs/shortest_number.h"
 #include "perception/logs/byte_order_mark.h"
@@ -250,6 +251,17 @@ bool ParseCarmenLine(const std::string& line, CarmenLog* log) {
   return false;
 }
 
+namespace {
+
+// Every number of the two records alike: one scan written twice, not two scans.
+bool SameScan(const CarmenLaserRecord& a, const CarmenLaserRecord& b) {
+  return a.scan.ranges_m == b.scan.ranges_m && a.scan.angle_min_rad == b.scan.angle_min_rad &&
+         a.scan.angle_increment_rad == b.scan.angle_increment_rad &&
+         a.scan.range_max_m == b.scan.range_max_m && a.X_WL == b.X_WL && a.X_WR_odom == b.X_WR_odom;
+}
+
+}  // namespace
+
 CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptions& options) {
   if (!IsRegularFile(path)) {
     throw std::runtime_error(path.string() + ": " + WhyNotARegularFile(path, "log file"));
@@ -265,8 +277,8 @@ CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptio
       throw std::runtime_error(path.string() + ":" + std::to_string(number) + ": " + e.what());
     }
   };
-  // The line of each scan's time stamp, FLASER's and ROBOTLASER1's apart.
-  std::unordered_map<double, std::size_t> scan_lines[2];
+  // The line and index in log.lasers of each scan's time stamp, FLASER's and ROBOTLASER1's apart.
+  std::unordered_map<double, std::pair<std::size_t, std::size_t>> scan_lines[2];
   for (; next_line(); ++number) {
     // A UTF-8 byte-order mark (an editor's "UTF-8 with BOM") made the first line an unknown
     // message, skipped without a word: a log's PARAM front_laser_max was lost, its scans scored
@@ -282,17 +294,32 @@ CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptio
         const bool robot_laser = line.compare(type, 11, "ROBOTLASER1") == 0;
         const double time_s = log.lasers.back().scan.time_s;
         const auto other = scan_lines[!robot_laser].find(time_s);
+        const std::string kind = robot_laser ? "ROBOTLASER1" : "FLASER";
         if (other != scan_lines[!robot_laser].end()) {
           log.lasers.pop_back();
-          const std::string kind = robot_laser ? "ROBOTLASER1" : "FLASER";
           throw std::runtime_error(
               kind + " ipc_timestamp: " + FormatTime(time_s) + " s is line " +
-              std::to_string(other->second) + "'s " + (robot_laser ? "FLASER" : "ROBOTLASER1") +
+              std::to_string(other->second.first) + "'s " +
+              (robot_laser ? "FLASER" : "ROBOTLASER1") +
               " scan again: the log records each scan twice, as FLASER and ROBOTLASER1 (a laser "
               "gives one scan at a time), so the replay would count it twice; keep one kind "
               "(grep -v '^FLASER' keeps ROBOTLASER1, which carries the beams' angles)");
         }
-        scan_lines[robot_laser].try_emplace(time_s, number);
+        // One kind at one time stamp is the log's content (a logger's coarse clock), but with
+        // every range, angle and pose the same it is one scan written twice: a log joined to itself
+        // (`cat a.log a.log`) replayed every scan twice, exit 0 (s57's left item). No FLASER scan
+        // of the three shipped logs (6,141) repeats an earlier one's time stamp.
+        const auto same = scan_lines[robot_laser].find(time_s);
+        if (same != scan_lines[robot_laser].end() &&
+            SameScan(log.lasers[same->second.second], log.lasers.back())) {
+          log.lasers.pop_back();
+          throw std::runtime_error(
+              kind + " ipc_timestamp: " + FormatTime(time_s) +
+              " s, every range and pose repeat line " + std::to_string(same->second.first) +
+              "'s scan: the log holds this scan twice (a log joined to itself?), so the replay "
+              "would count it twice; remove the repeat");
+        }
+        scan_lines[robot_laser].try_emplace(time_s, number, log.lasers.size() - 1);
       }
     } catch (const std::exception& e) {
       if (!options.skip_bad) {

@@ -345,6 +345,33 @@ void RequireMotionTheEncodersCanCount(const YamlFields& top, const ExperimentCon
                               msgs::SixDigitNumber(gain_per_s * std::numbers::pi) + " rad/s, which",
                           at_half_track, "the gain never steers the robot",
                           floor_m_s / (std::numbers::pi * half_track_m), "/s");
+  // The wall follower's distance term asks for a heading towards (or away from) the wall of gain x
+  // the distance error, capped at max_approach_angle_rad, and the angle gain turns the robot to
+  // that heading and holds it. The error is at most the larger of distance_m (at the wall) and
+  // max_wall_range_m - distance_m (farther, the wall is not followed): below one count of turn
+  // at that error the term never steers the robot towards its distance as far as its encoders can
+  // measure. An angle, not a rate: the run's length does not enter. distance_gain_rad_per_m 1e-308
+  // held seed003_generated 0.87 m from the nearest wall where 1.5 holds 0.64 m (s57's left item).
+  if (controller.type == "wall_following") {
+    const robot::WallFollowingOptions& wall = controller.wall_following;
+    const double error_m = std::max(wall.distance_m, wall.max_wall_range_m - wall.distance_m);
+    const double heading_rad =
+        std::min(wall.distance_gain_rad_per_m * error_m, wall.max_approach_angle_rad);
+    if (heading_rad * half_track_m < count_m) {
+      top.Fail("controller.distance_gain_rad_per_m",
+               msgs::ShortestNumber(wall.distance_gain_rad_per_m) +
+                   " rad/m asks for a heading towards the wall of at most gain x " +
+                   msgs::ShortestNumber(error_m) +
+                   " m (the largest distance error: the larger of distance_m and "
+                   "max_wall_range_m - distance_m) = " +
+                   msgs::SixDigitNumber(heading_rad) + " rad, which turns the wheels" +
+                   at_half_track + " less than one encoder count (" +
+                   msgs::SixDigitNumber(count_m) +
+                   " m of rim): the distance term never steers the robot towards its distance as "
+                   "far as its encoders can measure; give at least " +
+                   msgs::SixDigitNumberAtLeast(count_m / (half_track_m * error_m)) + " rad/m");
+    }
+  }
   // From rest at accel a, the rim covers a t^2 / 2 by t: less than one count by the run's end.
   fail_short_of_one_count(
       !(0.5 * accel * rim_m_per_accel_unit * run_s * run_s >= count_m), accel_field,

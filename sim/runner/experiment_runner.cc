@@ -23,10 +23,9 @@
 #include "sim/config/odometry_config.h"
 #include "sim/config/robot_catalog.h"
 #include "sim/raycast/grid_ray_caster_2d.h"
-#include "sim/runner/spawn_refused.h"
+#include "sim/runner/checked_scene.h"
 #include "sim/sensors/sensor_schedule.h"
 #include "sim/world/occupancy_raster.h"
-#include "sim/world/physical_deviation.h"
 #include "sim/world/setup_checks.h"
 
 namespace plywood::sim {
@@ -172,40 +171,7 @@ struct ExperimentRunner::Parts {
 
 ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
     : config_(config), parts_(std::make_unique<Parts>()) {
-  const RobotCatalogEntry& robot_entry = FindRobot(config.robot);
-  SceneOptions scene_options;
-  scene_options.world_mjcf = config.world_path;
-  scene_options.robot_mjcf = robot_entry.mjcf;
-  scene_options.spawn = {config.spawn.x_m, config.spawn.y_m, config.spawn.theta_deg * kDegToRad};
-  scene_options.timestep_s = config.physics.timestep_s;
-  scene_options.drive = config.physics.drive;
-  scene_ = std::make_unique<Scene>(scene_options);
-
-  // The as-built drive: the model's own wheels, deviated by E_d and E_b.
-  if (config.deviation.wheel_diameter_ratio != 1.0 || config.deviation.track_ratio != 1.0) {
-    const WheelGeometry built = scene_->wheel_geometry();
-    robot::DiffDriveSpec as_modelled = robot_entry.nominal;
-    as_modelled.wheel_radius_m = (built.left_radius_m + built.right_radius_m) / 2.0;
-    as_modelled.track_m = built.track_m;
-    scene_->SetWheelGeometry(DeviatedWheelGeometry(as_modelled, config.deviation));
-  }
-
-  // A scene that cannot give meaningful results is refused before anything runs.
-  for (const auto& check :
-       {WorldGeomInTheRobotsGroup, WorldGeomTheRobotPassesThrough, MissingFloor,
-        PlaneThatIsNotTheFloor, MovableWorldGeometry, WorldGeomNoSensorSees,
-        WorldGeomThatChangesTheRobotsContacts, NonDefaultPhysicsOptions, ShrunkContactLists}) {
-    if (const auto problem = check(*scene_)) {
-      throw ConfigError(config.source_file, "world", config.world_path.string() + ": " + *problem);
-    }
-  }
-  for (const auto& [check, advice] :
-       {std::pair{&SpawnOutsideWorld, ""}, std::pair{&SpawnCollision, "; choose a free spawn"}}) {
-    if (const auto problem = check(*scene_)) {
-      throw SpawnRefused(config.source_file, *problem, advice,
-                         config.world_path.filename().string());
-    }
-  }
+  scene_ = MakeCheckedScene(config);
   // A waypoint inside a wall, a box or a table leg (s51) or beyond the world's walls (s52) is
   // never reached: the robot pushed against a wall to the end of the run, exit 0, with the
   // figures of that.
@@ -273,7 +239,7 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
                       FormatNumber(config.nominal.max_wheel_speed_rad_s) +
                           " rad/s is more than the wheel motors take (ctrlrange +-" +
                           FormatNumber(motors) + " rad/s in " +
-                          robot_entry.mjcf.filename().string() +
+                          FindRobot(config.robot).mjcf.filename().string() +
                           "): they would clamp the controller's commands");
   }
   RequireControllerSensors(config);
