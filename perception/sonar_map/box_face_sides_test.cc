@@ -65,10 +65,10 @@ TEST(BoxFaceSidesTest, FloorSeenPastABoxFaceOverTheBodysWidthOpensThatSide) {
 
 // A wall heard from the inside: what lies beyond it is stray marks, not floor the body could
 // stand on. A line of free cells one cell deep along the whole east wall (the far half of a wall
-// read free), a 3 x 3 patch beyond the north side (less than the body's width both ways), a long
-// strip beyond the west side broken every third cell, and a large patch beyond the south-east
-// corner (outside every side's span) leave the room as fitted; round 57c's rule (any free cell
-// beyond a side) opened all but the corner's.
+// read free: not deeper than one cell), a 3 x 3 patch beyond the north side (shorter along it than
+// the body's width), a strip beyond the west side 0.4 m deep but broken every third cell, and a
+// large patch beyond the south-east corner (outside every side's span) leave the room as fitted;
+// round 57c's rule (any free cell beyond a side) opened all but the corner's.
 TEST(BoxFaceSidesTest, StrayFreeCellsBeyondAWallLeaveItAWall) {
   CellMap map = Unknown();
   const Rect room{0.5, 1.0, 2.0, 3.0};
