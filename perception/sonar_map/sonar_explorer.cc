@@ -7,6 +7,7 @@
 #include <string>
 
 #include "msgs/shortest_number.h"
+#include "perception/sonar_map/box_face_sides.h"
 #include "perception/sonar_map/contact_clearance.h"
 #include "perception/sonar_map/echo_gated_model.h"
 #include "perception/sonar_map/escape_cells.h"
@@ -320,17 +321,27 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
     // Nothing left, but more of the room the robot reports unknown than complete_unknown_share_max
     // allows: the goals given up after blocked moves are tried once more (the blocked legs often
     // stopped on a face beyond their ends, from one spot).
-    if (!(frontier && !frontier->empty()) && !abandoned_retried_ && !abandoned_.empty() &&
+    // With complete_room_check the share is measured past the sides the robot has seen floor
+    // beyond, and the skipped circuit corners are given up too.
+    const bool check_room = options_.complete_room_check;
+    const bool anything_given_up = !abandoned_.empty() || (check_room && !skipped_corners_.empty());
+    if (!(frontier && !frontier->empty()) && !abandoned_retried_ && anything_given_up &&
         options_.complete_unknown_share_max < 1.0 &&
-        UnknownShareOfRoom(planning.cells, grid_, Map().room) >
+        UnknownShareOfRoom(planning.cells, grid_, check_room ? RoomJudged(planning) : Map().room) >
             options_.complete_unknown_share_max) {
       std::vector<Eigen::Vector2d> given_up;
       given_up.swap(abandoned_);
       frontier = PlanToAnyFrontier(planning, here);
-      if (frontier && !frontier->empty())
+      if (frontier && !frontier->empty()) {
         abandoned_retried_ = true;
-      else
+      } else if (check_room && RetrySkippedCorners(map, planning, here, time_s)) {
+        abandoned_retried_ = true;
+        heading_to_frontier_ = false;
+        target_partition_ = -1;
+        return;
+      } else {
         abandoned_ = std::move(given_up);
+      }
     }
     if (frontier && !frontier->empty()) {
       path_ = std::move(*frontier);
@@ -387,9 +398,34 @@ bool SonarExplorer::PlanCircuit(const CognitiveMap& map, const PlanningCells& pl
                      std::max(grown.y1, o.y1)};
       }
     }
-    if (std::optional<ObstacleOutline> outline = OutlineHeard(grown)) outlines_.push_back(*outline);
+    if (!circuit_->retry)
+      if (std::optional<ObstacleOutline> outline = OutlineHeard(grown))
+        outlines_.push_back(*outline);
     circuit_.reset();
   }
+}
+
+Rect SonarExplorer::RoomJudged(const PlanningCells& planning) const {
+  // Floor past a side: seen free the body's width along it, and deeper than the sonar's range
+  // noise (what the axes' free space already stops short by), so that a wall's far edge read free
+  // is not floor.
+  const Rect& room = Map().room;
+  return OpenSides(room,
+                   SidesSeenPast(planning.cells, grid_, start_ ? &beam_free_ : nullptr,
+                                 options_.map.beam_free_min_passes, room,
+                                 2.0 * options_.robot_radius_m, options_.beam_free.stop_short_m),
+                   grid_);
+}
+
+bool SonarExplorer::RetrySkippedCorners(const CognitiveMap& map, const PlanningCells& planning,
+                                        const Eigen::Vector2d& here, double time_s) {
+  if (skipped_corners_.empty()) return false;
+  // One circuit through every skipped corner, in the order they were skipped.
+  Circuit retry{skipped_corners_.front().first, {}, time_s, true};
+  for (const auto& [box, corner] : skipped_corners_) retry.corners.push_back(corner);
+  skipped_corners_.clear();
+  circuit_ = std::move(retry);
+  return PlanCircuit(map, planning, here, time_s);
 }
 
 std::vector<Eigen::Vector2d> SonarExplorer::PathToward(const PlanningCells& planning,
@@ -466,7 +502,11 @@ std::optional<ObstacleOutline> SonarExplorer::OutlineHeard(const Rect& box) cons
 void SonarExplorer::GiveUpMove(const Eigen::Vector2d& here) {
   if (heading_to_circuit_) {
     // The way to this circuit corner is blocked: the circuit goes on from the next one.
-    if (circuit_ && !circuit_->corners.empty()) circuit_->corners.erase(circuit_->corners.begin());
+    if (circuit_ && !circuit_->corners.empty()) {
+      if (options_.complete_room_check)
+        skipped_corners_.emplace_back(circuit_->box, circuit_->corners.front());
+      circuit_->corners.erase(circuit_->corners.begin());
+    }
     heading_to_circuit_ = false;
     return;
   }

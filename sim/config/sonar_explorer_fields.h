@@ -79,6 +79,7 @@ void VisitFields(A& a, perception::SonarExplorerOptions& o) {
   a("circuit_max_s", o.circuit_max_s);
   a("circuit_same_m", o.circuit_same_m);
   a("complete_unknown_share_max", o.complete_unknown_share_max);
+  a("complete_room_check", o.complete_room_check);
 }
 
 }  // namespace plywood::sim
