@@ -5,41 +5,19 @@
 #include <cstddef>
 #include <vector>
 
+#include "perception/sonar_map/cell_map_test_support.h"
 #include "perception/sonar_map/unknown_share.h"
 
 namespace plywood::perception {
 namespace {
 
-// A 4 x 4 m grid of 10 cm cells from (0, 0), all unknown but what a test marks. Cell (ix, iy)
-// spans [0.1 ix, 0.1 (ix + 1)] x [0.1 iy, 0.1 (iy + 1)]; its centre is 5 cm further.
-constexpr int kCells = 40;
 // The body's width (the Magellan Pro's 0.2 m radius, twice): the patch's length; its depth more
 // than one of these cells.
 constexpr double kBodyM = 0.4;
 constexpr double kDepthM = 0.1;
 
-LogOddsGrid Grid() {
-  LogOddsGridOptions options;
-  options.resolution_m = 0.1;
-  options.origin_xy = {0.0, 0.0};
-  options.width = options.height = kCells;
-  return LogOddsGrid(options);
-}
-
-CellMap Unknown() {
-  return CellMap{
-      kCells, kCells,
-      std::vector<CellState>(static_cast<std::size_t>(kCells) * kCells, CellState::kUnknown)};
-}
-
-void Mark(CellMap& map, int ix0, int iy0, int ix1, int iy1, CellState state) {
-  for (int iy = iy0; iy <= iy1; ++iy)
-    for (int ix = ix0; ix <= ix1; ++ix)
-      map.cells[static_cast<std::size_t>(iy) * kCells + ix] = state;
-}
-
 RoomSides Sides(const CellMap& map, const Rect& room) {
-  return SidesSeenPast(map, Grid(), nullptr, 2, room, kBodyM, kDepthM);
+  return SidesSeenPast(map, TestGrid(), nullptr, 2, room, kBodyM, kDepthM);
 }
 
 // Issue 14, generator seed 76 world 26 s3 (docs/sonar_map.md, stall76 and round 58b): the run ends
@@ -50,17 +28,17 @@ RoomSides Sides(const CellMap& map, const Rect& room) {
 // 1.0 m along the side. The east side is seen past (and only it): opened to the grid's edge
 // (x 4.0) the room holds 700 centres, 460 unknown, where the fitted one holds 300, 110 unknown.
 TEST(BoxFaceSidesTest, FloorSeenPastABoxFaceOverTheBodysWidthOpensThatSide) {
-  CellMap map = Unknown();
-  Mark(map, 5, 10, 16, 24, CellState::kFree);
-  Mark(map, 18, 15, 19, 19, CellState::kOccupied);
-  Mark(map, 20, 20, 24, 29, CellState::kFree);
+  CellMap map = UnknownCells();
+  MarkCells(map, 5, 10, 16, 24, CellState::kFree);
+  MarkCells(map, 18, 15, 19, 19, CellState::kOccupied);
+  MarkCells(map, 20, 20, 24, 29, CellState::kFree);
   const Rect room{0.5, 1.0, 2.0, 3.0};
   const RoomSides sides = Sides(map, room);
   EXPECT_EQ(sides, (RoomSides{false, false, true, false}));
-  const Rect open = OpenSides(room, sides, Grid());
+  const Rect open = OpenSides(room, sides, TestGrid());
   EXPECT_EQ(open, (Rect{0.5, 1.0, 4.0, 3.0}));
-  EXPECT_DOUBLE_EQ(UnknownShareOfRoom(map, Grid(), room), 110.0 / 300.0);
-  EXPECT_DOUBLE_EQ(UnknownShareOfRoom(map, Grid(), open), 460.0 / 700.0);
+  EXPECT_DOUBLE_EQ(UnknownShareOfRoom(map, TestGrid(), room), 110.0 / 300.0);
+  EXPECT_DOUBLE_EQ(UnknownShareOfRoom(map, TestGrid(), open), 460.0 / 700.0);
 }
 
 // A wall heard from the inside: what lies beyond it is stray marks, not floor the body could
@@ -70,21 +48,21 @@ TEST(BoxFaceSidesTest, FloorSeenPastABoxFaceOverTheBodysWidthOpensThatSide) {
 // large patch beyond the south-east corner (outside every side's span) leave the room as fitted;
 // round 57c's rule (any free cell beyond a side) opened all but the corner's.
 TEST(BoxFaceSidesTest, StrayFreeCellsBeyondAWallLeaveItAWall) {
-  CellMap map = Unknown();
+  CellMap map = UnknownCells();
   const Rect room{0.5, 1.0, 2.0, 3.0};
-  Mark(map, 5, 10, 19, 29, CellState::kFree);
-  Mark(map, 20, 10, 20, 29, CellState::kOccupied);  // the east wall's near half
-  Mark(map, 21, 10, 21, 29, CellState::kFree);      // its far half read free
-  Mark(map, 10, 31, 12, 33, CellState::kFree);      // 0.3 x 0.3 m beyond the north side
+  MarkCells(map, 5, 10, 19, 29, CellState::kFree);
+  MarkCells(map, 20, 10, 20, 29, CellState::kOccupied);  // the east wall's near half
+  MarkCells(map, 21, 10, 21, 29, CellState::kFree);      // its far half read free
+  MarkCells(map, 10, 31, 12, 33, CellState::kFree);      // 0.3 x 0.3 m beyond the north side
   for (int iy = 10; iy <= 29; ++iy)
-    if (iy % 3 != 0) Mark(map, 0, iy, 3, iy, CellState::kFree);  // 0.4 m deep, broken along
-  Mark(map, 25, 0, 35, 8, CellState::kFree);                     // beyond the south-east corner
+    if (iy % 3 != 0) MarkCells(map, 0, iy, 3, iy, CellState::kFree);  // 0.4 m deep, broken along
+  MarkCells(map, 25, 0, 35, 8, CellState::kFree);  // beyond the south-east corner
   EXPECT_FALSE(Sides(map, room).Any());
-  EXPECT_EQ(OpenSides(room, Sides(map, room), Grid()), room);
+  EXPECT_EQ(OpenSides(room, Sides(map, room), TestGrid()), room);
   // The same north patch grown to the body's width both ways (0.4 x 0.4 m) is floor: north opens.
-  Mark(map, 10, 31, 13, 34, CellState::kFree);
+  MarkCells(map, 10, 31, 13, 34, CellState::kFree);
   EXPECT_EQ(Sides(map, room), (RoomSides{false, false, false, true}));
-  EXPECT_EQ(OpenSides(room, Sides(map, room), Grid()), (Rect{0.5, 1.0, 2.0, 4.0}));
+  EXPECT_EQ(OpenSides(room, Sides(map, room), TestGrid()), (Rect{0.5, 1.0, 2.0, 4.0}));
 }
 
 }  // namespace
