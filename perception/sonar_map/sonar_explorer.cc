@@ -391,16 +391,17 @@ bool SonarExplorer::PlanCircuit(const CognitiveMap& map, const PlanningCells& pl
     // The faces are read round the obstacle as the map holds it now: the rectangle the circuit
     // was planned on can be a first piece of one face (with the sensors in step, 0.2 x 0.1 m of
     // a 0.57 m box in seed001_room_4), and a window round that left the far face outside it.
-    Rect grown = circuit_->box;
-    for (const Rect& o : map.obstacles) {
-      if (SameObstacle(o, grown, options_.circuit_same_m)) {
-        grown = Rect{std::min(grown.x0, o.x0), std::min(grown.y0, o.y0), std::max(grown.x1, o.x1),
-                     std::max(grown.y1, o.y1)};
+    if (!circuit_->retry) {
+      Rect grown = circuit_->box;
+      for (const Rect& o : map.obstacles) {
+        if (SameObstacle(o, grown, options_.circuit_same_m)) {
+          grown = Rect{std::min(grown.x0, o.x0), std::min(grown.y0, o.y0), std::max(grown.x1, o.x1),
+                       std::max(grown.y1, o.y1)};
+        }
       }
-    }
-    if (!circuit_->retry)
       if (std::optional<ObstacleOutline> outline = OutlineHeard(grown))
         outlines_.push_back(*outline);
+    }
     circuit_.reset();
   }
 }
@@ -421,8 +422,7 @@ bool SonarExplorer::RetrySkippedCorners(const CognitiveMap& map, const PlanningC
                                         const Eigen::Vector2d& here, double time_s) {
   if (skipped_corners_.empty()) return false;
   // One circuit through every skipped corner, in the order they were skipped.
-  Circuit retry{skipped_corners_.front().first, {}, time_s, true};
-  for (const auto& [box, corner] : skipped_corners_) retry.corners.push_back(corner);
+  Circuit retry{Rect{}, std::move(skipped_corners_), time_s, true};
   skipped_corners_.clear();
   circuit_ = std::move(retry);
   return PlanCircuit(map, planning, here, time_s);
@@ -503,8 +503,7 @@ void SonarExplorer::GiveUpMove(const Eigen::Vector2d& here) {
   if (heading_to_circuit_) {
     // The way to this circuit corner is blocked: the circuit goes on from the next one.
     if (circuit_ && !circuit_->corners.empty()) {
-      if (options_.complete_room_check)
-        skipped_corners_.emplace_back(circuit_->box, circuit_->corners.front());
+      if (options_.complete_room_check) skipped_corners_.push_back(circuit_->corners.front());
       circuit_->corners.erase(circuit_->corners.begin());
     }
     heading_to_circuit_ = false;

@@ -287,13 +287,14 @@ class SonarExplorer final : public robot::Controller {
     Rect box;
     std::vector<Eigen::Vector2d> corners;
     double start_s = 0.0;
-    bool retry = false;  // the end test's retry of skipped corners: no outline is read after it
+    // The end test's retry of skipped corners (of any obstacles; `box` unset): no outline is read
+    // after it.
+    bool retry = false;
   };
   std::optional<Circuit> circuit_;
   std::vector<Rect> circled_;
-  // Circuit corners skipped after a blocked move, with the obstacle's rectangle
-  // (complete_room_check).
-  std::vector<std::pair<Rect, Eigen::Vector2d>> skipped_corners_;
+  // Circuit corners skipped after a blocked move (complete_room_check).
+  std::vector<Eigen::Vector2d> skipped_corners_;
   std::vector<ObstacleOutline> outlines_;
   // The outline of the obstacle in `box` from the occupied cells round it; nullopt when a side
   // was never heard.

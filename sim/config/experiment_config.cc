@@ -314,17 +314,19 @@ void RequireMotionTheEncodersCanCount(const YamlFields& top, const ExperimentCon
                                 std::to_string(nominal.encoder_ticks_per_rev) +
                                 ", wheel_radius_m " + msgs::ShortestNumber(nominal.wheel_radius_m) +
                                 ") in the whole run (duration_s = " + FormatNumber(run_s) + " s)";
-  // Every check below reads "<given> turns the wheels<where> less than one count: <what never
-  // happens> as far as its encoders can measure; give at least <least>".
-  const auto fail_short_of_one_count = [&](bool short_of_one_count, const std::string& field,
-                                           const std::string& given, const std::string& where,
-                                           const std::string& never, double least,
-                                           const std::string& unit) {
-    if (!short_of_one_count) return;
-    top.Fail(field, given + " turns the wheels" + where + " less than " + one_count + ": " + never +
+  // Every check below reads "<given> turns the wheels<where> less than <count>: <what never
+  // happens> as far as its encoders can measure; give at least <least>". <count> is one count in
+  // the whole run for a rate, one count alone for an angle.
+  const auto fail_short_of = [&](const std::string& count, bool short_of_count,
+                                 const std::string& field, const std::string& given,
+                                 const std::string& where, const std::string& never, double least,
+                                 const std::string& unit) {
+    if (!short_of_count) return;
+    top.Fail(field, given + " turns the wheels" + where + " less than " + count + ": " + never +
                         " as far as its encoders can measure; give at least " +
                         msgs::SixDigitNumberAtLeast(least) + " " + unit);
   };
+  const auto fail_short_of_one_count = [&](auto&&... args) { fail_short_of(one_count, args...); };
   fail_short_of_one_count(speed_m_s < floor_m_s, "controller.speed_m_s",
                           msgs::ShortestNumber(speed_m_s) + " m/s", "", "the robot never moves",
                           floor_m_s, "m/s");
@@ -357,20 +359,16 @@ void RequireMotionTheEncodersCanCount(const YamlFields& top, const ExperimentCon
     const double error_m = std::max(wall.distance_m, wall.max_wall_range_m - wall.distance_m);
     const double heading_rad =
         std::min(wall.distance_gain_rad_per_m * error_m, wall.max_approach_angle_rad);
-    if (heading_rad * half_track_m < count_m) {
-      top.Fail("controller.distance_gain_rad_per_m",
-               msgs::ShortestNumber(wall.distance_gain_rad_per_m) +
-                   " rad/m asks for a heading towards the wall of at most gain x " +
-                   msgs::ShortestNumber(error_m) +
-                   " m (the largest distance error: the larger of distance_m and "
-                   "max_wall_range_m - distance_m) = " +
-                   msgs::SixDigitNumber(heading_rad) + " rad, which turns the wheels" +
-                   at_half_track + " less than one encoder count (" +
-                   msgs::SixDigitNumber(count_m) +
-                   " m of rim): the distance term never steers the robot towards its distance as "
-                   "far as its encoders can measure; give at least " +
-                   msgs::SixDigitNumberAtLeast(count_m / (half_track_m * error_m)) + " rad/m");
-    }
+    fail_short_of("one encoder count (" + msgs::SixDigitNumber(count_m) + " m of rim)",
+                  heading_rad * half_track_m < count_m, "controller.distance_gain_rad_per_m",
+                  msgs::ShortestNumber(wall.distance_gain_rad_per_m) +
+                      " rad/m asks for a heading towards the wall of at most gain x " +
+                      msgs::ShortestNumber(error_m) +
+                      " m (the largest distance error: the larger of distance_m and "
+                      "max_wall_range_m - distance_m) = " +
+                      msgs::SixDigitNumber(heading_rad) + " rad, which",
+                  at_half_track, "the distance term never steers the robot towards its distance",
+                  count_m / (half_track_m * error_m), "rad/m");
   }
   // From rest at accel a, the rim covers a t^2 / 2 by t: less than one count by the run's end.
   fail_short_of_one_count(
