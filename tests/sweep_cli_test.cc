@@ -99,24 +99,36 @@ TEST(SweepCliTest, RunsEveryCellAndTabulatesThem) {
   }
 }
 
+// A robot standing still, whose line scores use returns within 1.5 m: from the office's spawn_0
+// the corridor's walls are in reach, from the hall's (-2, -2) no wall is (the nearest 2 m away),
+// which the run refuses once it has run (`lines`: recall undefined, exit 2). So the hall's cells
+// fail as they run, which no up-front check can foresee. (The office tour in the hall
+// failed so until s59, whose sweep refuses its waypoints before any cell runs; a world that does
+// not compile until s58.)
+std::string LinesWithinMetresExperiment(const fs::path& dir) {
+  return WriteFile(dir / "lines_cut.yaml",
+                   "name: lines_cut\nseed: 1\nduration_s: 2\nworld: " +
+                       (SourceRoot() / "worlds/office.xml").string() +
+                       "\nrobot: {model: p3dx, spawn: {x_m: -6.5, y_m: 0, theta_deg: 0}}\n"
+                       "sensors: {laser: {}}\noutput: {snapshot: false}\n"
+                       "lines: {extractors: [split_and_merge], range_cut_m: 1.5}\n")
+      .string();
+}
+
 TEST(SweepCliTest, AFailingCellLandsInFailuresAndTheRestCompletes) {
   const fs::path dir = MakeTempDir("SweepFailure");
-  // The office tour's waypoints lie beyond the hall's walls: the run refuses the hall's cells when
-  // it builds them (exit 2). A world that does not compile failed here too until s58, which
-  // refuses it before any cell runs (BadSweepInputNamesFileAndFieldAndRunsNothing).
   const fs::path sweep = WriteFile(
-      dir / "fail.yaml", "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
-                             "\nseeds: [1, 2]\n" + "worlds: [" +
-                             (SourceRoot() / "worlds/office.xml").string() + ", " +
-                             (SourceRoot() / "worlds/hall.xml").string() +
-                             "]\nset: {duration_s: [2], output.snapshot: [false]}\n");
+      dir / "fail.yaml", "experiment: " + LinesWithinMetresExperiment(dir) + "\nseeds: [1, 2]\n" +
+                             "worlds: [" + (SourceRoot() / "worlds/office.xml").string() + ", " +
+                             (SourceRoot() / "worlds/hall.xml").string() + "]\n");
   const auto r = RunPlywood("sweep " + sweep.string() + " --out " + (dir / "out").string(), dir);
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_EQ(CountRunDirs(dir / "out"), 2);
   const auto failures = eval::ParseCsv(Slurp(dir / "out" / "failures.csv"));
   ASSERT_EQ(failures.size(), 3u);  // header + 2 seeds
   EXPECT_EQ(failures[1].back().find("plywood:"), 0u) << failures[1].back();
-  EXPECT_NE(failures[1].back().find("hall.xml"), std::string::npos) << failures[1].back();
+  EXPECT_NE(failures[1].back().find("no ground-truth wall was observable"), std::string::npos)
+      << failures[1].back();
   EXPECT_EQ(failures[1][failures[1].size() - 2], "2");  // exit code of a config error
   EXPECT_EQ(eval::ParseCsv(Slurp(dir / "out" / "results.csv")).size(), 3u);
 }
@@ -125,13 +137,11 @@ TEST(SweepCliTest, AFailingCellLandsInFailuresAndTheRestCompletes) {
 // nothing) on the sweep's stderr. Now it notes that there is nothing to plot.
 TEST(SweepCliTest, ASweepWhoseEveryCellFailsPrintsNoTraceback) {
   const fs::path dir = MakeTempDir("SweepAllFail");
-  // The office tour in the hall: every cell refused as it runs (waypoints beyond the walls).
-  const fs::path sweep =
-      WriteFile(dir / "fail.yaml",
-                "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
-                    "\nseeds: [1]\nworlds: [" + (SourceRoot() / "worlds/hall.xml").string() +
-                    "]\nset: {duration_s: [2], output.snapshot: [false]}\n" +
-                    "metrics: [truth.distance_m]\n");
+  // Every cell refused once it has run (no wall within the range cut in the hall).
+  const fs::path sweep = WriteFile(
+      dir / "fail.yaml",
+      "experiment: " + LinesWithinMetresExperiment(dir) + "\nseeds: [1]\nworlds: [" +
+          (SourceRoot() / "worlds/hall.xml").string() + "]\nmetrics: [truth.distance_m]\n");
   const auto r = RunPlywood("sweep " + sweep.string() + " --out " + (dir / "out").string(), dir);
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_EQ(r.err.find("Traceback"), std::string::npos) << r.err;
@@ -146,7 +156,13 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
   const fs::path dir = MakeTempDir("SweepBadInput");
   const std::string experiment = (SourceRoot() / "experiments/default.yaml").string();
   const fs::path hall = SourceRoot() / "worlds/hall.xml";
+  const std::string square = (SourceRoot() / "experiments/square_hall.yaml").string();
   fs::copy_file(hall, dir / "hall_copy.xml", fs::copy_options::overwrite_existing);
+  // A robot without a controller: nothing it is asked to reach depends on the world.
+  const std::string standing =
+      WriteFile(dir / "standing.yaml", "name: standing\nduration_s: 1\nworld: " + hall.string() +
+                                           "\nrobot: {model: p3dx}\nsensors: {encoders: {}}\n")
+          .string();
   const std::map<std::string, std::pair<std::string, std::string>> cases{
       // audit s47: cells that resolve alike from values written apart were blamed on `set`,
       // naming neither the axis nor the values.
@@ -155,7 +171,7 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
         "set.duration_s: cell 1 repeats cell 0 (the same resolved config: '5.0' and '5' resolve "
         "alike)"}},
       {"a_world_and_its_copy",
-       {"experiment: " + experiment + "\nworlds: [" + hall.string() + ", " +
+       {"experiment: " + square + "\nworlds: [" + hall.string() + ", " +
             (dir / "hall_copy.xml").string() + "]\n",
         "worlds: cell 1 repeats cell 0 (the same resolved config: '" +
             (dir / "hall_copy.xml").string() + "' and '" + hall.string() +
@@ -254,11 +270,37 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
        {"experiment: " + experiment + "\nworlds: [" + experiment + "]\n",
         "worlds: " + experiment + ": does not compile with robot "}},
       {"a_spawn_inside_a_box",
-       {"experiment: " + experiment + "\nworlds: [" +
+       {"experiment: " + standing + "\nworlds: [" +
             (SourceRoot() / "worlds/seed001_room_2.xml").string() +
             "]\nset: {robot.spawn.x_m: [-0.8, 0.3], robot.spawn.y_m: [1.215]}\n",
-        "set.robot.spawn.x_m: " + experiment +
+        "set.robot.spawn.x_m: " + standing +
             ": robot.spawn: the robot at (0.3, 1.215) overlaps geom 'obstacle_0' of the world"}},
+      // s59 (s58's left item): the runner's controller-target checks failed each cell as it ran
+      // (failures.csv, exit 1); now each cell's are asked of its checked scene before any runs.
+      {"waypoints_beyond_the_walls",
+       {"experiment: " + experiment + "\nworlds: [" + hall.string() + "]\n",
+        "worlds: " + experiment + ": controller.waypoints[0]: (-5.05, 0) is outside every room"}},
+      {"a_square_through_a_wall",
+       {"experiment: " + square + "\nset: {controller.side_m: [4, 7]}\n",
+        "set.controller.side_m: " + square +
+            ": controller.side_m: the 7 m ccw square from the "
+            "spawn: its corner 1 (5, -2) is outside every room"}},
+      {"a_tolerance_that_takes_in_every_waypoint",
+       {"experiment: " + experiment + "\nset: {controller.reach_tolerance_m: [0.1, 20]}\n",
+        "set.controller.reach_tolerance_m: " + experiment +
+            ": controller.reach_tolerance_m: 20 m takes in every waypoint from the spawn"}},
+      {"wheels_faster_than_the_motors",
+       {"experiment: " + square + "\nset: {robot.nominal.max_wheel_speed_rad_s: [5, 20]}\n",
+        "set.robot.nominal.max_wheel_speed_rad_s: " + square +
+            ": robot.nominal.max_wheel_speed_rad_s: 20 rad/s is more than the wheel motors take"}},
+      // s59: a `!!str` axis value or seed was read as the number the tag says it is not.
+      {"a_string_tagged_axis_value",
+       {"experiment: " + experiment + "\nset: {duration_s: [!!str 5, 6]}\n",
+        "set.duration_s: " + experiment +
+            ": duration_s: the YAML tag '!!str' says a string, but the key takes a number"}},
+      {"a_string_tagged_seed",
+       {"experiment: " + experiment + "\nseeds: [!!str 1]\n",
+        "seeds: the YAML tag '!!str' says a string, but a seed is a whole number"}},
       {"repeated_group",
        {"experiment: " + experiment + "\ngroup_by: [seed, seed]\n",
         "group_by: 'seed' is listed twice"}},

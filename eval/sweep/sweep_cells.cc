@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
-#include <set>
+#include <memory>
 #include <tuple>
 #include <utility>
 
@@ -19,6 +19,7 @@
 #include "sim/config/utf8_text.h"
 #include "sim/config/yaml_text_value.h"
 #include "sim/runner/checked_scene.h"
+#include "sim/runner/controller_targets.h"
 #include "sim/runner/spawn_refused.h"
 #include "sim/runner/text_file.h"
 #include "sim/world/mujoco_handles.h"
@@ -131,6 +132,29 @@ std::string SceneCulprit(const SweepSpec& spec, const SweepCell& cell,
     if (line.rfind(key, 0) == 0) return "profiles (" + cell.profile + ")";
   }
   if (!cell.world.empty()) return "worlds";
+  return "experiment";
+}
+
+// The sweep field that set what a cell's controller-target check refused (`set_by`, the keys the
+// problem depends on): an axis over one of them (or a mapping holding one), else a profile line
+// setting one, else `worlds` when the world or its spawn_0 is among them, else the experiment.
+std::string TargetCulprit(const SweepSpec& spec, const SweepCell& cell,
+                          const std::vector<std::string>& profile_lines,
+                          const std::vector<std::string>& set_by) {
+  const auto sets = [&](const std::string& written) {
+    const std::string key = sim::CanonicalKeyPath(written);
+    for (const std::string& k : set_by) {
+      if (key == k || key.rfind(k + ".", 0) == 0 || k.rfind(key + ".", 0) == 0) return true;
+    }
+    return false;
+  };
+  for (const auto& axis : spec.axes) {
+    if (sets(axis.key)) return "set." + axis.key;
+  }
+  for (const std::string& line : profile_lines) {
+    if (sets(line.substr(0, line.find('=')))) return "profiles (" + cell.profile + ")";
+  }
+  if (!cell.world.empty() && (sets("world") || sets("robot.spawn"))) return "worlds";
   return "experiment";
 }
 
@@ -388,8 +412,10 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
   std::vector<SweepCell> cells;
   std::map<std::string, int> ids;
   // (experiment, world, robot, spawn) compiled: once per world unless an axis moves the spawn.
-  std::set<std::tuple<std::string, std::string, std::string, double, double, double>>
-      checked_worlds;
+  // Kept for the world's cells, whose controller targets are checked in it.
+  std::map<std::tuple<std::string, std::string, std::string, double, double, double>,
+           std::unique_ptr<sim::Scene>>
+      checked_scenes;
   // Each file cells read besides their worlds, hashed once: every cell of a sweep reads the same
   // weights or plug-in (a plug-in is megabytes).
   std::map<std::filesystem::path, std::string> content_hashes;
@@ -400,6 +426,7 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
   };
   for (const auto& experiment : spec.experiments) {
     for (const SweepWorld& world : world_axis) {
+      checked_scenes.clear();  // one world's scenes at a time
       std::vector<std::string> world_overrides;
       const std::string world_label = world.label.empty() ? world.path.string() : world.label;
       if (!world.path.empty()) {
@@ -441,19 +468,28 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
             // `plywood run` refuses it, exit 2 (s57's left item). Compiled once per experiment,
             // world (from `worlds`, a profile or the experiment's own), robot and spawn: once per
             // world unless an axis moves the spawn; a generated world is the generator's.
-            if (world.family.empty() && config.protocol == "single" &&
-                checked_worlds
-                    .insert({experiment.string(), config.world_path.string(), config.robot,
-                             config.spawn.x_m, config.spawn.y_m, config.spawn.theta_deg})
-                    .second) {
-              try {
-                sim::MakeCheckedScene(config);
-              } catch (const sim::SpawnRefused& e) {
-                throw sim::ConfigError(spec.source_file,
-                                       SceneCulprit(spec, cell, profile_lines, true), e.what());
-              } catch (const sim::ConfigError& e) {
-                throw sim::ConfigError(spec.source_file,
-                                       SceneCulprit(spec, cell, profile_lines, false), e.what());
+            // Then each cell's controller targets in it (waypoints and square corners the robot
+            // can reach, a reach tolerance, wheel motors), which also failed only as the cell ran
+            // (s58's left item): they need the scene and the config, no sensor or plug-in.
+            if (world.family.empty() && config.protocol == "single") {
+              auto [checked, added] = checked_scenes.try_emplace(
+                  {experiment.string(), config.world_path.string(), config.robot, config.spawn.x_m,
+                   config.spawn.y_m, config.spawn.theta_deg});
+              if (added) {
+                try {
+                  checked->second = sim::MakeCheckedScene(config);
+                } catch (const sim::SpawnRefused& e) {
+                  throw sim::ConfigError(spec.source_file,
+                                         SceneCulprit(spec, cell, profile_lines, true), e.what());
+                } catch (const sim::ConfigError& e) {
+                  throw sim::ConfigError(spec.source_file,
+                                         SceneCulprit(spec, cell, profile_lines, false), e.what());
+                }
+              }
+              if (const auto problem = sim::FindControllerTargetProblem(config, *checked->second)) {
+                throw sim::ConfigError(
+                    spec.source_file, TargetCulprit(spec, cell, profile_lines, problem->set_by),
+                    sim::ConfigError(config.source_file, problem->field, problem->message).what());
               }
             }
             cell.seed = config.seed;

@@ -21,6 +21,7 @@
 #include "sim/config/yaml_fields.h"
 #include "sim/config/yaml_nul_characters.h"
 #include "sim/config/yaml_tags.h"
+#include "sim/config/yaml_text_value.h"
 #include "sim/world/generator/world_families.h"
 
 namespace plywood::eval {
@@ -95,10 +96,25 @@ std::string ScalarText(const YAML::Node& node) {
   return out.c_str();
 }
 
+// An axis value as the text of its --set line. A `!!str` tag is kept (`!!str 5`): the text alone
+// would read as the number or boolean the tag says it is not, and the key's reader refuses a
+// string tagged so where it takes one (the experiment's own rule).
+std::string AxisValueText(const YAML::Node& node) {
+  if (node.IsScalar() && node.Tag() == "tag:yaml.org,2002:str") {
+    return "!!str " + sim::YamlTextValue(node.Scalar());
+  }
+  return ScalarText(node);
+}
+
 void ReadSeeds(const YAML::Node& node, const sim::YamlFields& top, SweepSpec& spec) {
   // Read as an experiment's `seed:` is, so `seeds: [010]` runs seed 10, not 8 (yaml-cpp's octal).
   const auto seed_of = [&](const YAML::Node& n, const std::string& field) -> std::uint64_t {
     const std::string text = ScalarText(n);
+    if (n.Tag() == "tag:yaml.org,2002:str") {
+      top.Fail(field,
+               "the YAML tag '!!str' says a string, but a seed is a whole number (written '" +
+                   text + "'): drop the tag");
+    }
     const std::optional<std::uint64_t> seed =
         n.IsScalar() ? sim::ParseDecimalWholeNumber(text) : std::nullopt;
     if (seed) return *seed;
@@ -220,7 +236,7 @@ void ReadAxes(const YAML::Node& node, const sim::YamlFields& top, SweepSpec& spe
     SweepAxis axis{key, {}};
     if (!entry.second.IsSequence()) top.Fail(field, "expected a list of values");
     if (entry.second.size() == 0) top.Fail(field, "empty list: give at least one value");
-    for (const auto& value : entry.second) axis.values.push_back(ScalarText(value));
+    for (const auto& value : entry.second) axis.values.push_back(AxisValueText(value));
     spec.axes.push_back(axis);
   }
   if (spec.axes.empty()) top.Fail("set", "empty: give at least one key path");
