@@ -301,6 +301,21 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
       {"a_string_tagged_seed",
        {"experiment: " + experiment + "\nseeds: [!!str 1]\n",
         "seeds: the YAML tag '!!str' says a string, but a seed is a whole number"}},
+      // s59: an axis over a key inside another axis's mapping: cells apply the axes in order, a
+      // value replacing all under its key, so one of the two values never reached the run while
+      // results.csv labelled it with both (controller.side_m 1 on a run of side_m 2, exit 0).
+      {"an_axis_inside_a_later_mapping",
+       {"experiment: " + square +
+            "\nset: {controller.side_m: [1], controller: [{type: square_path, side_m: 2}], "
+            "duration_s: [1]}\n",
+        "set.controller.side_m: the later axis set.controller replaces all of controller in every "
+        "cell, so this axis's values never reach a run"}},
+      {"a_mapping_that_sets_a_later_axis",
+       {"experiment: " + square +
+            "\nset: {controller: [{type: square_path, side_m: 2}], controller.side_m: [1], "
+            "duration_s: [1]}\n",
+        "set.controller: its value '{type: square_path, side_m: 2}' sets controller.side_m, which "
+        "the later axis set.controller.side_m replaces in every cell"}},
       {"repeated_group",
        {"experiment: " + experiment + "\ngroup_by: [seed, seed]\n",
         "group_by: 'seed' is listed twice"}},
@@ -635,17 +650,38 @@ TEST(SweepCliTest, AProfileThatLosesOrOverridesTheSweepsOwnValuesIsRefused) {
     EXPECT_FALSE(fs::exists(out / "cells.json"));
   }
   // A set axis still overrides a profile line of its key, on purpose (ekf_gyro_gain.yaml sweeps
-  // the gain its profiles hold), and a profile's world= without a worlds axis is its world.
+  // the gain its profiles hold), and a profile's world= without a worlds axis is its world (with
+  // a waypoint in it: the office tour's lie beyond the hall's walls, refused since s59).
   for (const fs::path& fine :
        {sweep_of("axis", "sensors.encoders.slip_sigma=0.05\n",
                  "seeds: [1]\nset: {sensors.encoders.slip_sigma: [0.01, 0.02]}\n"),
-        sweep_of("own_world", "world=worlds/hall.xml\nrobot.spawn.x_m=0\n", "seeds: [1]\n")}) {
+        sweep_of("own_world",
+                 "world=worlds/hall.xml\nrobot.spawn.x_m=0\ncontroller.waypoints=[[1, 0]]\n",
+                 "seeds: [1]\n")}) {
     SCOPED_TRACE(fine.string());
     const auto r = RunPlywood("sweep " + fine.string() + " --slurm --dry-run --out " +
                                   (dir / "out_fine").string() + fine.stem().string(),
                               dir);
     EXPECT_EQ(r.exit_code, 0) << r.err;
   }
+}
+
+// s59: an axis over a key inside an earlier axis's mapping that does not set it adds the key to
+// each mapping: both axes reach every run (BadSweepInputNamesFileAndFieldAndRunsNothing has the
+// orders that lose one).
+TEST(SweepCliTest, AnAxisInsideAnEarlierMappingThatLeavesItsKeyOutReachesTheRuns) {
+  const fs::path dir = MakeTempDir("SweepNestedAxes");
+  const fs::path sweep =
+      WriteFile(dir / "nested.yaml",
+                "experiment: " + (SourceRoot() / "experiments/square_hall.yaml").string() +
+                    "\nset: {controller: [{type: square_path, direction: ccw}], "
+                    "controller.side_m: [1, 2]}\n");
+  const auto r = RunPlywood(
+      "sweep " + sweep.string() + " --slurm --dry-run --out " + (dir / "out").string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string cells = Slurp(dir / "out" / "cells.json");
+  EXPECT_NE(cells.find("controller.side_m=1"), std::string::npos) << cells;
+  EXPECT_NE(cells.find("controller.side_m=2"), std::string::npos) << cells;
 }
 
 // audit s35: a sweep refused for a bad value left its --out holding its sweep.lock, and the

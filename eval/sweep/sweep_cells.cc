@@ -6,10 +6,12 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <set>
 #include <tuple>
 #include <utility>
 
 #include "eval/protocol.h"
+#include "msgs/angle_units.h"
 #include "msgs/stable_hash.h"
 #include "perception/logs/byte_order_mark.h"
 #include "perception/logs/regular_file.h"
@@ -412,10 +414,13 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
   std::vector<SweepCell> cells;
   std::map<std::string, int> ids;
   // (experiment, world, robot, spawn) compiled: once per world unless an axis moves the spawn.
-  // Kept for the world's cells, whose controller targets are checked in it.
-  std::map<std::tuple<std::string, std::string, std::string, double, double, double>,
-           std::unique_ptr<sim::Scene>>
-      checked_scenes;
+  std::set<std::tuple<std::string, std::string, std::string, double, double, double>>
+      checked_worlds;
+  // One scene per (experiment, world, robot) of the current world, in which every cell's
+  // controller targets are checked with the robot placed at its spawn (a scene per spawn held 3 MB
+  // each: a 60-value spawn axis 217 MB).
+  std::map<std::tuple<std::string, std::string, std::string>, std::unique_ptr<sim::Scene>>
+      target_scenes;
   // Each file cells read besides their worlds, hashed once: every cell of a sweep reads the same
   // weights or plug-in (a plug-in is megabytes).
   std::map<std::filesystem::path, std::string> content_hashes;
@@ -426,7 +431,7 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
   };
   for (const auto& experiment : spec.experiments) {
     for (const SweepWorld& world : world_axis) {
-      checked_scenes.clear();  // one world's scenes at a time
+      target_scenes.clear();  // one world's scenes at a time
       std::vector<std::string> world_overrides;
       const std::string world_label = world.label.empty() ? world.path.string() : world.label;
       if (!world.path.empty()) {
@@ -468,25 +473,33 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
             // `plywood run` refuses it, exit 2 (s57's left item). Compiled once per experiment,
             // world (from `worlds`, a profile or the experiment's own), robot and spawn: once per
             // world unless an axis moves the spawn; a generated world is the generator's.
-            // Then each cell's controller targets in it (waypoints and square corners the robot
-            // can reach, a reach tolerance, wheel motors), which also failed only as the cell ran
-            // (s58's left item): they need the scene and the config, no sensor or plug-in.
+            // Then each cell's controller targets (waypoints and square corners the robot can
+            // reach, a reach tolerance, wheel motors), which also failed only as the cell ran
+            // (s58's left item): they need only the config and the world's scene with the robot
+            // placed at the cell's spawn, no sensor, estimator or plug-in.
             if (world.family.empty() && config.protocol == "single") {
-              auto [checked, added] = checked_scenes.try_emplace(
-                  {experiment.string(), config.world_path.string(), config.robot, config.spawn.x_m,
-                   config.spawn.y_m, config.spawn.theta_deg});
-              if (added) {
-                try {
-                  checked->second = sim::MakeCheckedScene(config);
-                } catch (const sim::SpawnRefused& e) {
-                  throw sim::ConfigError(spec.source_file,
-                                         SceneCulprit(spec, cell, profile_lines, true), e.what());
-                } catch (const sim::ConfigError& e) {
-                  throw sim::ConfigError(spec.source_file,
-                                         SceneCulprit(spec, cell, profile_lines, false), e.what());
+              std::unique_ptr<sim::Scene>& scene =
+                  target_scenes[{experiment.string(), config.world_path.string(), config.robot}];
+              try {
+                if (checked_worlds
+                        .insert({experiment.string(), config.world_path.string(), config.robot,
+                                 config.spawn.x_m, config.spawn.y_m, config.spawn.theta_deg})
+                        .second) {
+                  std::unique_ptr<sim::Scene> checked = sim::MakeCheckedScene(config);
+                  if (!scene) scene = std::move(checked);
+                } else if (!scene) {
+                  scene = sim::MakeCheckedScene(config);
                 }
+              } catch (const sim::SpawnRefused& e) {
+                throw sim::ConfigError(spec.source_file,
+                                       SceneCulprit(spec, cell, profile_lines, true), e.what());
+              } catch (const sim::ConfigError& e) {
+                throw sim::ConfigError(spec.source_file,
+                                       SceneCulprit(spec, cell, profile_lines, false), e.what());
               }
-              if (const auto problem = sim::FindControllerTargetProblem(config, *checked->second)) {
+              scene->PlaceRobot(
+                  {config.spawn.x_m, config.spawn.y_m, config.spawn.theta_deg * kDegToRad});
+              if (const auto problem = sim::FindControllerTargetProblem(config, *scene)) {
                 throw sim::ConfigError(
                     spec.source_file, TargetCulprit(spec, cell, profile_lines, problem->set_by),
                     sim::ConfigError(config.source_file, problem->field, problem->message).what());
