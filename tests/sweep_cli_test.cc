@@ -293,6 +293,20 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
        {"experiment: " + square + "\nset: {robot.nominal.max_wheel_speed_rad_s: [5, 20]}\n",
         "set.robot.nominal.max_wheel_speed_rad_s: " + square +
             ": robot.nominal.max_wheel_speed_rad_s: 20 rad/s is more than the wheel motors take"}},
+      // s59: the runner's checks of the config alone (a sensor it reads turned off) failed each
+      // cell as it ran too; the axis blamed is one without whose value the cell passes.
+      {"an_estimator_without_its_gyro",
+       {"experiment: " + experiment +
+            "\nset: {odometry.fused: ['{}'], sensors.gyro.enabled: [true, false], duration_s: "
+            "[1]}\n",
+        "set.odometry.fused: " + experiment +
+            ": odometry.fused: this estimator needs sensors.gyro to be enabled"}},
+      {"lines_without_the_laser",
+       {"experiment: " + experiment +
+            "\nset: {sensors.laser.enabled: [false], lines: ['{extractors: [split_and_merge]}'], "
+            "duration_s: [1]}\n",
+        "set.sensors.laser.enabled: " + experiment +
+            ": lines: line extraction scores the laser's scans, but sensors.laser is off"}},
       // s59: a `!!str` axis value or seed was read as the number the tag says it is not.
       {"a_string_tagged_axis_value",
        {"experiment: " + experiment + "\nset: {duration_s: [!!str 5, 6]}\n",

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -22,6 +23,7 @@
 #include "sim/config/yaml_text_value.h"
 #include "sim/runner/checked_scene.h"
 #include "sim/runner/controller_targets.h"
+#include "sim/runner/sensors_the_config_needs.h"
 #include "sim/runner/spawn_refused.h"
 #include "sim/runner/text_file.h"
 #include "sim/world/mujoco_handles.h"
@@ -157,6 +159,38 @@ std::string TargetCulprit(const SweepSpec& spec, const SweepCell& cell,
     if (sets(line.substr(0, line.find('=')))) return "profiles (" + cell.profile + ")";
   }
   if (!cell.world.empty() && (sets("world") || sets("robot.spawn"))) return "worlds";
+  return "experiment";
+}
+
+// The sweep field to blame for a cell that `check`, a check of the cell's config alone, refuses:
+// the first axis with whose value alone the experiment is refused, else the first axis without
+// whose value the cell passes (values refused only together: an estimator that needs the gyro and
+// the gyro turned off), else a profile, else `worlds`, else the experiment.
+std::string ConfigCheckCulprit(const SweepSpec& spec, const SweepCell& cell,
+                               const std::vector<std::string>& world_overrides,
+                               const std::vector<std::string>& profile_lines,
+                               const std::function<void(const sim::ExperimentConfig&)>& check) {
+  const auto fails = [&](const std::vector<std::string>& overrides) {
+    try {
+      check(sim::LoadExperimentConfig(cell.experiment, overrides));
+      return false;
+    } catch (const sim::ConfigError&) {
+      return true;
+    }
+  };
+  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
+    if (fails({spec.axes[a].key + "=" + cell.values[a]})) return "set." + spec.axes[a].key;
+  }
+  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
+    std::vector<std::string> without = world_overrides;
+    without.insert(without.end(), profile_lines.begin(), profile_lines.end());
+    for (std::size_t b = 0; b < spec.axes.size(); ++b) {
+      if (b != a) without.push_back(spec.axes[b].key + "=" + cell.values[b]);
+    }
+    if (!fails(without)) return "set." + spec.axes[a].key;
+  }
+  if (!profile_lines.empty() && fails(profile_lines)) return "profiles (" + cell.profile + ")";
+  if (!cell.world.empty() && fails(world_overrides)) return "worlds";
   return "experiment";
 }
 
@@ -503,6 +537,23 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
                 throw sim::ConfigError(
                     spec.source_file, TargetCulprit(spec, cell, profile_lines, problem->set_by),
                     sim::ConfigError(config.source_file, problem->field, problem->message).what());
+              }
+            }
+            // And what the config asks for without the sensors it reads (a wall follower by a
+            // laser turned off, an estimator that needs the gyro without it, `lines:` without the
+            // laser), which the runner refuses from the config alone before its first step.
+            if (config.protocol == "single") {
+              const auto check = [](const sim::ExperimentConfig& c) {
+                sim::RequireControllerSensors(c);
+                sim::RequireOdometrySensors(c);
+              };
+              try {
+                check(config);
+              } catch (const sim::ConfigError& e) {
+                throw sim::ConfigError(
+                    spec.source_file,
+                    ConfigCheckCulprit(spec, cell, world_overrides, profile_lines, check),
+                    e.what());
               }
             }
             cell.seed = config.seed;

@@ -25,6 +25,7 @@
 #include "sim/raycast/grid_ray_caster_2d.h"
 #include "sim/runner/checked_scene.h"
 #include "sim/runner/controller_targets.h"
+#include "sim/runner/sensors_the_config_needs.h"
 #include "sim/sensors/sensor_schedule.h"
 #include "sim/world/occupancy_raster.h"
 #include "sim/world/setup_checks.h"
@@ -94,46 +95,6 @@ int HitSegment(const std::vector<FaceForLabels>& candidates, double dir_x, doubl
     }
   }
   return best;
-}
-
-// A controller that steers by a sensor the experiment turned off would stand still (or drive
-// blind) and still report numbers.
-void RequireControllerSensors(const ExperimentConfig& config) {
-  const ControllerConfig& c = config.controller;
-  const SensorSuiteConfig& s = config.sensors;
-  const auto need = [&](bool present, const std::string& field, const std::string& sensor) {
-    if (!present) {
-      throw ConfigError(config.source_file, field,
-                        "this controller needs sensors." + sensor + ", which is off");
-    }
-  };
-  if (c.type == "wall_following") {
-    const bool laser = c.wall_following.sensor == robot::WallSensor::kLaser;
-    need(laser ? s.laser.has_value() : s.sonar.has_value(), "controller.sensor",
-         laser ? "laser" : "sonar");
-  }
-  if (c.type == "sonar_explorer") need(s.sonar.has_value(), "controller.type", "sonar");
-  if (config.geometric_map.given && !s.ir_scanner) {
-    throw ConfigError(config.source_file, "geometric_map",
-                      "seed 003's map needs sensors.ir_scanner, which is off");
-  }
-  // The sonar-only map of a run without sonars was empty by construction: recall 0, exit 0.
-  if (config.geometric_map.given &&
-      config.geometric_map.options.fusion.source == perception::RangeSource::kSonarOnly &&
-      !s.sonar) {
-    throw ConfigError(config.source_file, "geometric_map.fusion.source",
-                      "'sonar' builds the map from sensors.sonar, which is off");
-  }
-  // Seed 003's map places each IR scan at the record's odometry pose, which a run without an
-  // estimator fills with the true pose (MakeScanRecord): the map was built at the truth and
-  // reported pose.odometry errors of 0, exit 0 (s49; seed004_ransac's cloud alike, checked there).
-  if (config.geometric_map.given) {
-    RequireOdometryEstimator(config, "geometric_map", "seed 003 builds its map");
-  }
-  if (config.lines.given && !s.laser) {
-    throw ConfigError(config.source_file, "lines",
-                      "line extraction scores the laser's scans, but sensors.laser is off");
-  }
 }
 
 }  // namespace
@@ -219,16 +180,7 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
   if (s.encoders) {
     p.encoders.emplace(s.encoders->rate_hz, *s.encoders, ComponentSeed(seed, "encoders"));
   }
-  if (!config.odometry.enabled.empty() && !s.encoders) {
-    throw ConfigError(config.source_file, "odometry",
-                      "odometry estimators need sensors.encoders to be enabled");
-  }
-  for (const std::string& name : config.odometry.enabled) {
-    if (EstimatorNeedsGyro(name) && !s.gyro) {
-      throw ConfigError(config.source_file, "odometry." + name,
-                        "this estimator needs sensors.gyro to be enabled");
-    }
-  }
+  RequireOdometrySensors(config);
   for (auto& [name, estimator] :
        MakeEstimators(config.odometry, config.nominal, scene_->TruePose())) {
     record_.estimator_names.push_back(name);
