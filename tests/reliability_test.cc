@@ -1505,6 +1505,28 @@ TEST_F(ReliabilityTest, CoreYamlTagsMustFitTheirValues) {
   EXPECT_EQ(Run(with("name: hall_spawn", "name: !!str hall_spawn"), "").exit_code, 0);
 }
 
+// s59 (s58's left item): `!!str` says the value is a string, but the readers of numbers and
+// booleans parsed its text regardless: `duration_s: !!str 0.5` ran 0.5 s, exit 0. A quoted '0.5'
+// carries no tag and is still read as the number.
+TEST_F(ReliabilityTest, AStringTagWhereANumberOrABooleanIsReadIsRefused) {
+  const std::string hall = HallExperiment(0.0, 0.0);
+  const auto with = [&](const std::string& from, const std::string& to) {
+    std::string yaml = hall;
+    yaml.replace(yaml.find(from), from.size(), to);
+    return yaml;
+  };
+  ExpectRefused(with("duration_s: 0.5", "duration_s: !!str 0.5"), "",
+                {"experiment.yaml: duration_s: the YAML tag '!!str' says a string, but the key "
+                 "takes a number (written '0.5'): drop the tag"});
+  ExpectRefused(hall, "--set 'seed=!!str 3'",
+                {"experiment.yaml: seed: the YAML tag '!!str' says a string, but the key takes a "
+                 "whole number"});
+  ExpectRefused(hall, "--set 'output.snapshot=!!str false'",
+                {"experiment.yaml: output.snapshot: the YAML tag '!!str' says a string, but the "
+                 "key takes true or false"});
+  EXPECT_EQ(Run(with("duration_s: 0.5", "duration_s: '0.5'"), "").exit_code, 0);
+}
+
 // s56: `--set duration_s.=1` (a trailing dot) set duration_s without a word where `a..b` and `.a`
 // were refused; `? [a, b]: 1` (a list as a key) was called "a key that is null or empty".
 TEST_F(ReliabilityTest, OverridePathsWithATrailingDotAndKeysThatAreListsAreNamed) {

@@ -384,6 +384,17 @@ TEST(ScoreCliTest, ANameTheFileWouldOverruleIsRefused) {
   EXPECT_EQ(empty.err,
             "plywood: score: --name: empty; give the name the figures get, or leave --name out\n");
   EXPECT_FALSE(fs::exists(dir / "s.json"));
+  // s59: --name truth named the estimate as the ground truth, dropped with the truth columns, and
+  // blamed the file: "trajectory.fused.tum: header: no estimate to score (only truth columns)".
+  const auto truth = RunPlywood("score trajectory " + RunDir().string() + " " +
+                                    (RunDir() / "trajectory.fused.tum").string() +
+                                    " --name truth --out " + (dir / "s.json").string(),
+                                dir);
+  EXPECT_EQ(truth.exit_code, 2) << truth.out;
+  EXPECT_EQ(truth.err,
+            "plywood: --name: 'truth' names the run's ground truth, which is never scored against "
+            "itself: give the estimate another name\n");
+  EXPECT_FALSE(fs::exists(dir / "s.json"));
   // Where the file names nothing, --name still names the figures.
   const std::string lines = Slurp(RunDir() / "lines.csv");
   std::string without_extractor;

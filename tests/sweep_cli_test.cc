@@ -99,24 +99,36 @@ TEST(SweepCliTest, RunsEveryCellAndTabulatesThem) {
   }
 }
 
+// A robot standing still, whose line scores use returns within 1.5 m: from the office's spawn_0
+// the corridor's walls are in reach, from the hall's (-2, -2) no wall is (the nearest 2 m away),
+// which the run refuses once it has run (`lines`: recall undefined, exit 2). So the hall's cells
+// fail as they run, which no up-front check can foresee. (The office tour in the hall
+// failed so until s59, whose sweep refuses its waypoints before any cell runs; a world that does
+// not compile until s58.)
+std::string LinesWithinMetresExperiment(const fs::path& dir) {
+  return WriteFile(dir / "lines_cut.yaml",
+                   "name: lines_cut\nseed: 1\nduration_s: 2\nworld: " +
+                       (SourceRoot() / "worlds/office.xml").string() +
+                       "\nrobot: {model: p3dx, spawn: {x_m: -6.5, y_m: 0, theta_deg: 0}}\n"
+                       "sensors: {laser: {}}\noutput: {snapshot: false}\n"
+                       "lines: {extractors: [split_and_merge], range_cut_m: 1.5}\n")
+      .string();
+}
+
 TEST(SweepCliTest, AFailingCellLandsInFailuresAndTheRestCompletes) {
   const fs::path dir = MakeTempDir("SweepFailure");
-  // The office tour's waypoints lie beyond the hall's walls: the run refuses the hall's cells when
-  // it builds them (exit 2). A world that does not compile failed here too until s58, which
-  // refuses it before any cell runs (BadSweepInputNamesFileAndFieldAndRunsNothing).
   const fs::path sweep = WriteFile(
-      dir / "fail.yaml", "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
-                             "\nseeds: [1, 2]\n" + "worlds: [" +
-                             (SourceRoot() / "worlds/office.xml").string() + ", " +
-                             (SourceRoot() / "worlds/hall.xml").string() +
-                             "]\nset: {duration_s: [2], output.snapshot: [false]}\n");
+      dir / "fail.yaml", "experiment: " + LinesWithinMetresExperiment(dir) + "\nseeds: [1, 2]\n" +
+                             "worlds: [" + (SourceRoot() / "worlds/office.xml").string() + ", " +
+                             (SourceRoot() / "worlds/hall.xml").string() + "]\n");
   const auto r = RunPlywood("sweep " + sweep.string() + " --out " + (dir / "out").string(), dir);
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_EQ(CountRunDirs(dir / "out"), 2);
   const auto failures = eval::ParseCsv(Slurp(dir / "out" / "failures.csv"));
   ASSERT_EQ(failures.size(), 3u);  // header + 2 seeds
   EXPECT_EQ(failures[1].back().find("plywood:"), 0u) << failures[1].back();
-  EXPECT_NE(failures[1].back().find("hall.xml"), std::string::npos) << failures[1].back();
+  EXPECT_NE(failures[1].back().find("no ground-truth wall was observable"), std::string::npos)
+      << failures[1].back();
   EXPECT_EQ(failures[1][failures[1].size() - 2], "2");  // exit code of a config error
   EXPECT_EQ(eval::ParseCsv(Slurp(dir / "out" / "results.csv")).size(), 3u);
 }
@@ -125,13 +137,11 @@ TEST(SweepCliTest, AFailingCellLandsInFailuresAndTheRestCompletes) {
 // nothing) on the sweep's stderr. Now it notes that there is nothing to plot.
 TEST(SweepCliTest, ASweepWhoseEveryCellFailsPrintsNoTraceback) {
   const fs::path dir = MakeTempDir("SweepAllFail");
-  // The office tour in the hall: every cell refused as it runs (waypoints beyond the walls).
-  const fs::path sweep =
-      WriteFile(dir / "fail.yaml",
-                "experiment: " + (SourceRoot() / "experiments/default.yaml").string() +
-                    "\nseeds: [1]\nworlds: [" + (SourceRoot() / "worlds/hall.xml").string() +
-                    "]\nset: {duration_s: [2], output.snapshot: [false]}\n" +
-                    "metrics: [truth.distance_m]\n");
+  // Every cell refused once it has run (no wall within the range cut in the hall).
+  const fs::path sweep = WriteFile(
+      dir / "fail.yaml",
+      "experiment: " + LinesWithinMetresExperiment(dir) + "\nseeds: [1]\nworlds: [" +
+          (SourceRoot() / "worlds/hall.xml").string() + "]\nmetrics: [truth.distance_m]\n");
   const auto r = RunPlywood("sweep " + sweep.string() + " --out " + (dir / "out").string(), dir);
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_EQ(r.err.find("Traceback"), std::string::npos) << r.err;
@@ -146,7 +156,13 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
   const fs::path dir = MakeTempDir("SweepBadInput");
   const std::string experiment = (SourceRoot() / "experiments/default.yaml").string();
   const fs::path hall = SourceRoot() / "worlds/hall.xml";
+  const std::string square = (SourceRoot() / "experiments/square_hall.yaml").string();
   fs::copy_file(hall, dir / "hall_copy.xml", fs::copy_options::overwrite_existing);
+  // A robot without a controller: nothing it is asked to reach depends on the world.
+  const std::string standing =
+      WriteFile(dir / "standing.yaml", "name: standing\nduration_s: 1\nworld: " + hall.string() +
+                                           "\nrobot: {model: p3dx}\nsensors: {encoders: {}}\n")
+          .string();
   const std::map<std::string, std::pair<std::string, std::string>> cases{
       // audit s47: cells that resolve alike from values written apart were blamed on `set`,
       // naming neither the axis nor the values.
@@ -155,7 +171,7 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
         "set.duration_s: cell 1 repeats cell 0 (the same resolved config: '5.0' and '5' resolve "
         "alike)"}},
       {"a_world_and_its_copy",
-       {"experiment: " + experiment + "\nworlds: [" + hall.string() + ", " +
+       {"experiment: " + square + "\nworlds: [" + hall.string() + ", " +
             (dir / "hall_copy.xml").string() + "]\n",
         "worlds: cell 1 repeats cell 0 (the same resolved config: '" +
             (dir / "hall_copy.xml").string() + "' and '" + hall.string() +
@@ -254,11 +270,66 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
        {"experiment: " + experiment + "\nworlds: [" + experiment + "]\n",
         "worlds: " + experiment + ": does not compile with robot "}},
       {"a_spawn_inside_a_box",
-       {"experiment: " + experiment + "\nworlds: [" +
+       {"experiment: " + standing + "\nworlds: [" +
             (SourceRoot() / "worlds/seed001_room_2.xml").string() +
             "]\nset: {robot.spawn.x_m: [-0.8, 0.3], robot.spawn.y_m: [1.215]}\n",
-        "set.robot.spawn.x_m: " + experiment +
+        "set.robot.spawn.x_m: " + standing +
             ": robot.spawn: the robot at (0.3, 1.215) overlaps geom 'obstacle_0' of the world"}},
+      // s59 (s58's left item): the runner's controller-target checks failed each cell as it ran
+      // (failures.csv, exit 1); now each cell's are asked of its checked scene before any runs.
+      {"waypoints_beyond_the_walls",
+       {"experiment: " + experiment + "\nworlds: [" + hall.string() + "]\n",
+        "worlds: " + experiment + ": controller.waypoints[0]: (-5.05, 0) is outside every room"}},
+      {"a_square_through_a_wall",
+       {"experiment: " + square + "\nset: {controller.side_m: [4, 7]}\n",
+        "set.controller.side_m: " + square +
+            ": controller.side_m: the 7 m ccw square from the "
+            "spawn: its corner 1 (5, -2) is outside every room"}},
+      {"a_tolerance_that_takes_in_every_waypoint",
+       {"experiment: " + experiment + "\nset: {controller.reach_tolerance_m: [0.1, 20]}\n",
+        "set.controller.reach_tolerance_m: " + experiment +
+            ": controller.reach_tolerance_m: 20 m takes in every waypoint from the spawn"}},
+      {"wheels_faster_than_the_motors",
+       {"experiment: " + square + "\nset: {robot.nominal.max_wheel_speed_rad_s: [5, 20]}\n",
+        "set.robot.nominal.max_wheel_speed_rad_s: " + square +
+            ": robot.nominal.max_wheel_speed_rad_s: 20 rad/s is more than the wheel motors take"}},
+      // s59: the runner's checks of the config alone (a sensor it reads turned off) failed each
+      // cell as it ran too; the axis blamed is one without whose value the cell passes.
+      {"an_estimator_without_its_gyro",
+       {"experiment: " + experiment +
+            "\nset: {odometry.fused: ['{}'], sensors.gyro.enabled: [true, false], duration_s: "
+            "[1]}\n",
+        "set.odometry.fused: " + experiment +
+            ": odometry.fused: this estimator needs sensors.gyro to be enabled"}},
+      {"lines_without_the_laser",
+       {"experiment: " + experiment +
+            "\nset: {sensors.laser.enabled: [false], lines: ['{extractors: [split_and_merge]}'], "
+            "duration_s: [1]}\n",
+        "set.sensors.laser.enabled: " + experiment +
+            ": lines: line extraction scores the laser's scans, but sensors.laser is off"}},
+      // s59: a `!!str` axis value or seed was read as the number the tag says it is not.
+      {"a_string_tagged_axis_value",
+       {"experiment: " + experiment + "\nset: {duration_s: [!!str 5, 6]}\n",
+        "set.duration_s: " + experiment +
+            ": duration_s: the YAML tag '!!str' says a string, but the key takes a number"}},
+      {"a_string_tagged_seed",
+       {"experiment: " + experiment + "\nseeds: [!!str 1]\n",
+        "seeds: the YAML tag '!!str' says a string, but a seed is a whole number"}},
+      // s59: an axis over a key inside another axis's mapping: cells apply the axes in order, a
+      // value replacing all under its key, so one of the two values never reached the run while
+      // results.csv labelled it with both (controller.side_m 1 on a run of side_m 2, exit 0).
+      {"an_axis_inside_a_later_mapping",
+       {"experiment: " + square +
+            "\nset: {controller.side_m: [1], controller: [{type: square_path, side_m: 2}], "
+            "duration_s: [1]}\n",
+        "set.controller.side_m: the later axis set.controller replaces all of controller in every "
+        "cell, so this axis's values never reach a run"}},
+      {"a_mapping_that_sets_a_later_axis",
+       {"experiment: " + square +
+            "\nset: {controller: [{type: square_path, side_m: 2}], controller.side_m: [1], "
+            "duration_s: [1]}\n",
+        "set.controller: its value '{type: square_path, side_m: 2}' sets controller.side_m, which "
+        "the later axis set.controller.side_m replaces in every cell"}},
       {"repeated_group",
        {"experiment: " + experiment + "\ngroup_by: [seed, seed]\n",
         "group_by: 'seed' is listed twice"}},
@@ -593,17 +664,38 @@ TEST(SweepCliTest, AProfileThatLosesOrOverridesTheSweepsOwnValuesIsRefused) {
     EXPECT_FALSE(fs::exists(out / "cells.json"));
   }
   // A set axis still overrides a profile line of its key, on purpose (ekf_gyro_gain.yaml sweeps
-  // the gain its profiles hold), and a profile's world= without a worlds axis is its world.
+  // the gain its profiles hold), and a profile's world= without a worlds axis is its world (with
+  // a waypoint in it: the office tour's lie beyond the hall's walls, refused since s59).
   for (const fs::path& fine :
        {sweep_of("axis", "sensors.encoders.slip_sigma=0.05\n",
                  "seeds: [1]\nset: {sensors.encoders.slip_sigma: [0.01, 0.02]}\n"),
-        sweep_of("own_world", "world=worlds/hall.xml\nrobot.spawn.x_m=0\n", "seeds: [1]\n")}) {
+        sweep_of("own_world",
+                 "world=worlds/hall.xml\nrobot.spawn.x_m=0\ncontroller.waypoints=[[1, 0]]\n",
+                 "seeds: [1]\n")}) {
     SCOPED_TRACE(fine.string());
     const auto r = RunPlywood("sweep " + fine.string() + " --slurm --dry-run --out " +
                                   (dir / "out_fine").string() + fine.stem().string(),
                               dir);
     EXPECT_EQ(r.exit_code, 0) << r.err;
   }
+}
+
+// s59: an axis over a key inside an earlier axis's mapping that does not set it adds the key to
+// each mapping: both axes reach every run (BadSweepInputNamesFileAndFieldAndRunsNothing has the
+// orders that lose one).
+TEST(SweepCliTest, AnAxisInsideAnEarlierMappingThatLeavesItsKeyOutReachesTheRuns) {
+  const fs::path dir = MakeTempDir("SweepNestedAxes");
+  const fs::path sweep =
+      WriteFile(dir / "nested.yaml",
+                "experiment: " + (SourceRoot() / "experiments/square_hall.yaml").string() +
+                    "\nset: {controller: [{type: square_path, direction: ccw}], "
+                    "controller.side_m: [1, 2]}\n");
+  const auto r = RunPlywood(
+      "sweep " + sweep.string() + " --slurm --dry-run --out " + (dir / "out").string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string cells = Slurp(dir / "out" / "cells.json");
+  EXPECT_NE(cells.find("controller.side_m=1"), std::string::npos) << cells;
+  EXPECT_NE(cells.find("controller.side_m=2"), std::string::npos) << cells;
 }
 
 // audit s35: a sweep refused for a bad value left its --out holding its sweep.lock, and the

@@ -84,6 +84,13 @@ ScoreReport ScoreTrajectoryFile(const std::filesystem::path& run_dir,
   if (!IsMetricName(name)) {
     throw sim::ConfigError("--name", "", NotAMetricName(name));
   }
+  // The estimate named so was dropped with the truth columns below, and the file blamed for it:
+  // "FILE: header: no estimate to score (only truth columns)" (s59).
+  if (options.name == "truth") {
+    throw sim::ConfigError("--name", "",
+                           "'truth' names the run's ground truth, which is never scored against "
+                           "itself: give the estimate another name");
+  }
   std::vector<NamedTrajectory> estimates = ReadTrajectoryFile(file, name, options.name);
   std::erase_if(estimates, [](const NamedTrajectory& t) { return t.name == "truth"; });
   if (estimates.empty()) {

@@ -4,12 +4,15 @@
 #include <array>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <map>
+#include <memory>
 #include <set>
 #include <tuple>
 #include <utility>
 
 #include "eval/protocol.h"
+#include "msgs/angle_units.h"
 #include "msgs/stable_hash.h"
 #include "perception/logs/byte_order_mark.h"
 #include "perception/logs/regular_file.h"
@@ -19,6 +22,8 @@
 #include "sim/config/utf8_text.h"
 #include "sim/config/yaml_text_value.h"
 #include "sim/runner/checked_scene.h"
+#include "sim/runner/controller_targets.h"
+#include "sim/runner/sensors_the_config_needs.h"
 #include "sim/runner/spawn_refused.h"
 #include "sim/runner/text_file.h"
 #include "sim/world/mujoco_handles.h"
@@ -131,6 +136,61 @@ std::string SceneCulprit(const SweepSpec& spec, const SweepCell& cell,
     if (line.rfind(key, 0) == 0) return "profiles (" + cell.profile + ")";
   }
   if (!cell.world.empty()) return "worlds";
+  return "experiment";
+}
+
+// The sweep field that set what a cell's controller-target check refused (`set_by`, the keys the
+// problem depends on): an axis over one of them (or a mapping holding one), else a profile line
+// setting one, else `worlds` when the world or its spawn_0 is among them, else the experiment.
+std::string TargetCulprit(const SweepSpec& spec, const SweepCell& cell,
+                          const std::vector<std::string>& profile_lines,
+                          const std::vector<std::string>& set_by) {
+  const auto sets = [&](const std::string& written) {
+    const std::string key = sim::CanonicalKeyPath(written);
+    for (const std::string& k : set_by) {
+      if (key == k || key.rfind(k + ".", 0) == 0 || k.rfind(key + ".", 0) == 0) return true;
+    }
+    return false;
+  };
+  for (const auto& axis : spec.axes) {
+    if (sets(axis.key)) return "set." + axis.key;
+  }
+  for (const std::string& line : profile_lines) {
+    if (sets(line.substr(0, line.find('=')))) return "profiles (" + cell.profile + ")";
+  }
+  if (!cell.world.empty() && (sets("world") || sets("robot.spawn"))) return "worlds";
+  return "experiment";
+}
+
+// The sweep field to blame for a cell that `check`, a check of the cell's config alone, refuses:
+// the first axis with whose value alone the experiment is refused, else the first axis without
+// whose value the cell passes (values refused only together: an estimator that needs the gyro and
+// the gyro turned off), else a profile, else `worlds`, else the experiment.
+std::string ConfigCheckCulprit(const SweepSpec& spec, const SweepCell& cell,
+                               const std::vector<std::string>& world_overrides,
+                               const std::vector<std::string>& profile_lines,
+                               const std::function<void(const sim::ExperimentConfig&)>& check) {
+  const auto fails = [&](const std::vector<std::string>& overrides) {
+    try {
+      check(sim::LoadExperimentConfig(cell.experiment, overrides));
+      return false;
+    } catch (const sim::ConfigError&) {
+      return true;
+    }
+  };
+  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
+    if (fails({spec.axes[a].key + "=" + cell.values[a]})) return "set." + spec.axes[a].key;
+  }
+  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
+    std::vector<std::string> without = world_overrides;
+    without.insert(without.end(), profile_lines.begin(), profile_lines.end());
+    for (std::size_t b = 0; b < spec.axes.size(); ++b) {
+      if (b != a) without.push_back(spec.axes[b].key + "=" + cell.values[b]);
+    }
+    if (!fails(without)) return "set." + spec.axes[a].key;
+  }
+  if (!profile_lines.empty() && fails(profile_lines)) return "profiles (" + cell.profile + ")";
+  if (!cell.world.empty() && fails(world_overrides)) return "worlds";
   return "experiment";
 }
 
@@ -390,6 +450,11 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
   // (experiment, world, robot, spawn) compiled: once per world unless an axis moves the spawn.
   std::set<std::tuple<std::string, std::string, std::string, double, double, double>>
       checked_worlds;
+  // One scene per (experiment, world, robot) of the current world, in which every cell's
+  // controller targets are checked with the robot placed at its spawn (a scene per spawn held 3 MB
+  // each: a 60-value spawn axis 217 MB).
+  std::map<std::tuple<std::string, std::string, std::string>, std::unique_ptr<sim::Scene>>
+      target_scenes;
   // Each file cells read besides their worlds, hashed once: every cell of a sweep reads the same
   // weights or plug-in (a plug-in is megabytes).
   std::map<std::filesystem::path, std::string> content_hashes;
@@ -400,6 +465,7 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
   };
   for (const auto& experiment : spec.experiments) {
     for (const SweepWorld& world : world_axis) {
+      target_scenes.clear();  // one world's scenes at a time
       std::vector<std::string> world_overrides;
       const std::string world_label = world.label.empty() ? world.path.string() : world.label;
       if (!world.path.empty()) {
@@ -441,19 +507,53 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
             // `plywood run` refuses it, exit 2 (s57's left item). Compiled once per experiment,
             // world (from `worlds`, a profile or the experiment's own), robot and spawn: once per
             // world unless an axis moves the spawn; a generated world is the generator's.
-            if (world.family.empty() && config.protocol == "single" &&
-                checked_worlds
-                    .insert({experiment.string(), config.world_path.string(), config.robot,
-                             config.spawn.x_m, config.spawn.y_m, config.spawn.theta_deg})
-                    .second) {
+            // Then each cell's controller targets (waypoints and square corners the robot can
+            // reach, a reach tolerance, wheel motors), which also failed only as the cell ran
+            // (s58's left item): they need only the config and the world's scene with the robot
+            // placed at the cell's spawn, no sensor, estimator or plug-in.
+            if (world.family.empty() && config.protocol == "single") {
+              std::unique_ptr<sim::Scene>& scene =
+                  target_scenes[{experiment.string(), config.world_path.string(), config.robot}];
               try {
-                sim::MakeCheckedScene(config);
+                if (checked_worlds
+                        .insert({experiment.string(), config.world_path.string(), config.robot,
+                                 config.spawn.x_m, config.spawn.y_m, config.spawn.theta_deg})
+                        .second) {
+                  std::unique_ptr<sim::Scene> checked = sim::MakeCheckedScene(config);
+                  if (!scene) scene = std::move(checked);
+                } else if (!scene) {
+                  scene = sim::MakeCheckedScene(config);
+                }
               } catch (const sim::SpawnRefused& e) {
                 throw sim::ConfigError(spec.source_file,
                                        SceneCulprit(spec, cell, profile_lines, true), e.what());
               } catch (const sim::ConfigError& e) {
                 throw sim::ConfigError(spec.source_file,
                                        SceneCulprit(spec, cell, profile_lines, false), e.what());
+              }
+              scene->PlaceRobot(
+                  {config.spawn.x_m, config.spawn.y_m, config.spawn.theta_deg * kDegToRad});
+              if (const auto problem = sim::FindControllerTargetProblem(config, *scene)) {
+                throw sim::ConfigError(
+                    spec.source_file, TargetCulprit(spec, cell, profile_lines, problem->set_by),
+                    sim::ConfigError(config.source_file, problem->field, problem->message).what());
+              }
+            }
+            // And what the config asks for without the sensors it reads (a wall follower by a
+            // laser turned off, an estimator that needs the gyro without it, `lines:` without the
+            // laser), which the runner refuses from the config alone before its first step.
+            if (config.protocol == "single") {
+              const auto check = [](const sim::ExperimentConfig& c) {
+                sim::RequireControllerSensors(c);
+                sim::RequireOdometrySensors(c);
+              };
+              try {
+                check(config);
+              } catch (const sim::ConfigError& e) {
+                throw sim::ConfigError(
+                    spec.source_file,
+                    ConfigCheckCulprit(spec, cell, world_overrides, profile_lines, check),
+                    e.what());
               }
             }
             cell.seed = config.seed;

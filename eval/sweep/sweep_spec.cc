@@ -21,6 +21,7 @@
 #include "sim/config/yaml_fields.h"
 #include "sim/config/yaml_nul_characters.h"
 #include "sim/config/yaml_tags.h"
+#include "sim/config/yaml_text_value.h"
 #include "sim/world/generator/world_families.h"
 
 namespace plywood::eval {
@@ -95,10 +96,25 @@ std::string ScalarText(const YAML::Node& node) {
   return out.c_str();
 }
 
+// An axis value as the text of its --set line. A `!!str` tag is kept (`!!str 5`): the text alone
+// would read as the number or boolean the tag says it is not, and the key's reader refuses a
+// string tagged so where it takes one (the experiment's own rule).
+std::string AxisValueText(const YAML::Node& node) {
+  if (node.IsScalar() && node.Tag() == "tag:yaml.org,2002:str") {
+    return "!!str " + sim::YamlTextValue(node.Scalar());
+  }
+  return ScalarText(node);
+}
+
 void ReadSeeds(const YAML::Node& node, const sim::YamlFields& top, SweepSpec& spec) {
   // Read as an experiment's `seed:` is, so `seeds: [010]` runs seed 10, not 8 (yaml-cpp's octal).
   const auto seed_of = [&](const YAML::Node& n, const std::string& field) -> std::uint64_t {
     const std::string text = ScalarText(n);
+    if (n.Tag() == "tag:yaml.org,2002:str") {
+      top.Fail(field,
+               "the YAML tag '!!str' says a string, but a seed is a whole number (written '" +
+                   text + "'): drop the tag");
+    }
     const std::optional<std::uint64_t> seed =
         n.IsScalar() ? sim::ParseDecimalWholeNumber(text) : std::nullopt;
     if (seed) return *seed;
@@ -197,6 +213,53 @@ std::vector<fs::path> ReadFiles(const YAML::Node& node, const fs::path& base_dir
   return files;
 }
 
+// Whether `value`, given to the key path `path`, sets `target` or a key below it (canonical paths).
+bool SetsKeyPath(const YAML::Node& value, const std::string& path, const std::string& target) {
+  if (!value.IsMap()) return false;
+  for (const auto& entry : value) {
+    if (!entry.first.IsScalar()) continue;
+    const std::string key = sim::CanonicalKeyPath(path + "." + entry.first.Scalar());
+    if (key == target || key.starts_with(target + ".")) return true;
+    if (target.starts_with(key + ".") && SetsKeyPath(entry.second, key, target)) return true;
+  }
+  return false;
+}
+
+// Cells apply the axes in order, and a value replaces everything under its key: an axis over a
+// key inside another axis's mapping (set.controller and set.controller.side_m) lost its values
+// to the mapping's when given first, and a mapping's value that set the inner key lost it to the
+// inner axis when given after it; results.csv labelled every run with both (s59: the label
+// controller.side_m 1 on a run of side_m 2, exit 0).
+void RejectAxesInsideAnotherAxis(const SweepAxis& later, const SweepSpec& spec,
+                                 const sim::YamlFields& top) {
+  const std::string key = sim::CanonicalKeyPath(later.key);
+  for (const SweepAxis& earlier : spec.axes) {
+    const std::string earlier_key = sim::CanonicalKeyPath(earlier.key);
+    if (earlier_key.starts_with(key + ".")) {
+      top.Fail("set." + earlier.key,
+               "the later axis set." + later.key + " replaces all of " + later.key +
+                   " in every cell, so this axis's values never reach a run (results.csv would "
+                   "still label the runs with them): give set." +
+                   later.key + " first, or vary the key in one axis");
+    }
+    if (!key.starts_with(earlier_key + ".")) continue;
+    for (const std::string& text : earlier.values) {
+      YAML::Node value;
+      try {
+        value = YAML::Load(text);  // a mapping's text as ScalarText wrote it
+      } catch (const YAML::Exception&) {
+        continue;  // no mapping: the run refuses it
+      }
+      if (SetsKeyPath(value, earlier_key, key)) {
+        top.Fail("set." + earlier.key,
+                 "its value '" + text + "' sets " + later.key + ", which the later axis set." +
+                     later.key + " replaces in every cell (results.csv would label each run " +
+                     "with both values): give the key in one of the two");
+      }
+    }
+  }
+}
+
 void ReadAxes(const YAML::Node& node, const sim::YamlFields& top, SweepSpec& spec) {
   if (!node.IsMap()) top.Fail("set", "expected a mapping of key paths to lists of values");
   for (const auto& entry : node) {
@@ -220,7 +283,8 @@ void ReadAxes(const YAML::Node& node, const sim::YamlFields& top, SweepSpec& spe
     SweepAxis axis{key, {}};
     if (!entry.second.IsSequence()) top.Fail(field, "expected a list of values");
     if (entry.second.size() == 0) top.Fail(field, "empty list: give at least one value");
-    for (const auto& value : entry.second) axis.values.push_back(ScalarText(value));
+    for (const auto& value : entry.second) axis.values.push_back(AxisValueText(value));
+    RejectAxesInsideAnotherAxis(axis, spec, top);
     spec.axes.push_back(axis);
   }
   if (spec.axes.empty()) top.Fail("set", "empty: give at least one key path");

@@ -28,6 +28,16 @@ bool ParseFinite(const std::string& text, double* value) {
   return parsed.has_value();
 }
 
+// A scalar tagged `!!str` where a number or a boolean is read: the tag says the value is text,
+// which the reader would have turned into a number regardless (yaml-cpp keeps the tag, not the
+// type), so `duration_s: !!str 0.4` ran 0.4 s. A quoted '0.4' carries no tag and is still read.
+bool TaggedAsString(const YAML::Node& node) { return node.Tag() == "tag:yaml.org,2002:str"; }
+
+std::string StringTagMessage(const YAML::Node& node, const char* wanted) {
+  return std::string("the YAML tag '!!str' says a string, but the key takes ") + wanted +
+         " (written '" + node.Scalar() + "'): drop the tag";
+}
+
 }  // namespace
 
 YamlFields::YamlFields(const YAML::Node& node, std::string file, std::string path)
@@ -70,7 +80,9 @@ YAML::Node YamlFields::Scalar(const std::string& key, const char* expected) cons
 void YamlFields::Get(const std::string& key, double* value) {
   if (!Has(key)) return;
   used_.insert(key);
-  const std::string text = Scalar(key, "a number").Scalar();
+  const YAML::Node node = Scalar(key, "a number");
+  if (TaggedAsString(node)) Fail(key, StringTagMessage(node, "a number"));
+  const std::string text = node.Scalar();
   if (!ParseFinite(text, value)) Fail(key, "expected a finite number, got '" + text + "'");
 }
 
@@ -87,7 +99,9 @@ void YamlFields::Get(const std::string& key, int* value) {
 void YamlFields::Get(const std::string& key, std::uint64_t* value) {
   if (!Has(key)) return;
   used_.insert(key);
-  const std::string text = Scalar(key, "a whole number").Scalar();
+  const YAML::Node node = Scalar(key, "a whole number");
+  if (TaggedAsString(node)) Fail(key, StringTagMessage(node, "a whole number"));
+  const std::string text = node.Scalar();
   const std::optional<std::uint64_t> parsed = ParseDecimalWholeNumber(text);
   if (!parsed) Fail(key, "expected a non-negative whole number, got '" + text + "'");
   *value = *parsed;
@@ -96,7 +110,9 @@ void YamlFields::Get(const std::string& key, std::uint64_t* value) {
 void YamlFields::Get(const std::string& key, bool* value) {
   if (!Has(key)) return;
   used_.insert(key);
-  const std::string text = Scalar(key, "true or false").Scalar();
+  const YAML::Node node = Scalar(key, "true or false");
+  if (TaggedAsString(node)) Fail(key, StringTagMessage(node, "true or false"));
+  const std::string text = node.Scalar();
   if (text == "true") {
     *value = true;
   } else if (text == "false") {
@@ -122,6 +138,7 @@ void YamlFields::Get(const std::string& key, std::vector<double>* value) {
     double v = 0.0;
     const std::string element = key + "[" + std::to_string(i) + "]";
     if (!list[i].IsScalar()) Fail(element, "expected a number, got " + Describe(list[i]));
+    if (TaggedAsString(list[i])) Fail(element, StringTagMessage(list[i], "a number"));
     if (!ParseFinite(list[i].Scalar(), &v)) {
       Fail(element, "expected a finite number, got '" + list[i].Scalar() + "'");
     }

@@ -14,16 +14,15 @@
 #include "msgs/angle_units.h"
 #include "msgs/shortest_number.h"
 #include "msgs/stable_hash.h"
-#include "perception/geometric_map/range_fusion.h"
 #include "robot/control/controller.h"
-#include "robot/control/square_path_controller.h"
 #include "robot/odometry/trajectory_metrics.h"
 #include "sim/config/config_error.h"
 #include "sim/config/controller_config.h"
 #include "sim/config/odometry_config.h"
-#include "sim/config/robot_catalog.h"
 #include "sim/raycast/grid_ray_caster_2d.h"
 #include "sim/runner/checked_scene.h"
+#include "sim/runner/controller_targets.h"
+#include "sim/runner/sensors_the_config_needs.h"
 #include "sim/sensors/sensor_schedule.h"
 #include "sim/world/occupancy_raster.h"
 #include "sim/world/setup_checks.h"
@@ -95,46 +94,6 @@ int HitSegment(const std::vector<FaceForLabels>& candidates, double dir_x, doubl
   return best;
 }
 
-// A controller that steers by a sensor the experiment turned off would stand still (or drive
-// blind) and still report numbers.
-void RequireControllerSensors(const ExperimentConfig& config) {
-  const ControllerConfig& c = config.controller;
-  const SensorSuiteConfig& s = config.sensors;
-  const auto need = [&](bool present, const std::string& field, const std::string& sensor) {
-    if (!present) {
-      throw ConfigError(config.source_file, field,
-                        "this controller needs sensors." + sensor + ", which is off");
-    }
-  };
-  if (c.type == "wall_following") {
-    const bool laser = c.wall_following.sensor == robot::WallSensor::kLaser;
-    need(laser ? s.laser.has_value() : s.sonar.has_value(), "controller.sensor",
-         laser ? "laser" : "sonar");
-  }
-  if (c.type == "sonar_explorer") need(s.sonar.has_value(), "controller.type", "sonar");
-  if (config.geometric_map.given && !s.ir_scanner) {
-    throw ConfigError(config.source_file, "geometric_map",
-                      "seed 003's map needs sensors.ir_scanner, which is off");
-  }
-  // The sonar-only map of a run without sonars was empty by construction: recall 0, exit 0.
-  if (config.geometric_map.given &&
-      config.geometric_map.options.fusion.source == perception::RangeSource::kSonarOnly &&
-      !s.sonar) {
-    throw ConfigError(config.source_file, "geometric_map.fusion.source",
-                      "'sonar' builds the map from sensors.sonar, which is off");
-  }
-  // Seed 003's map places each IR scan at the record's odometry pose, which a run without an
-  // estimator fills with the true pose (MakeScanRecord): the map was built at the truth and
-  // reported pose.odometry errors of 0, exit 0 (s49; seed004_ransac's cloud alike, checked there).
-  if (config.geometric_map.given) {
-    RequireOdometryEstimator(config, "geometric_map", "seed 003 builds its map");
-  }
-  if (config.lines.given && !s.laser) {
-    throw ConfigError(config.source_file, "lines",
-                      "line extraction scores the laser's scans, but sensors.laser is off");
-  }
-}
-
 }  // namespace
 
 std::uint64_t ComponentSeed(std::uint64_t experiment_seed, const std::string& component) {
@@ -172,76 +131,7 @@ struct ExperimentRunner::Parts {
 ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
     : config_(config), parts_(std::make_unique<Parts>()) {
   scene_ = MakeCheckedScene(config);
-  // A waypoint inside a wall, a box or a table leg (s51) or beyond the world's walls (s52) is
-  // never reached: the robot pushed against a wall to the end of the run, exit 0, with the
-  // figures of that.
-  const auto unreachable = [&](double x_m, double y_m) -> std::optional<std::string> {
-    if (auto problem = PointOutsideWorld(*scene_, x_m, y_m)) return problem;
-    return PointInsideWorldGeom(*scene_, x_m, y_m);
-  };
-  if (config.controller.type == "waypoints") {
-    const auto& points = config.controller.waypoints.waypoints;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      if (const auto problem = unreachable(points[i].x_m, points[i].y_m)) {
-        throw ConfigError(config.source_file, "controller.waypoints[" + std::to_string(i) + "]",
-                          *problem + " in " + config.world_path.filename().string() +
-                              ": the robot can never reach it; move the waypoint into free space");
-      }
-    }
-    // A tolerance that takes in every waypoint from the spawn passes them all on the first tick:
-    // reach_tolerance_m 1e300 gave controller_finished 1 with 0 m driven, exit 0 (s55); with
-    // loop: true the robot chased whichever waypoint each tick's count stopped on.
-    const msgs::Pose2D spawn = scene_->TruePose();
-    double farthest_m = 0.0;
-    std::size_t farthest = 0;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const double d_m = std::hypot(points[i].x_m - spawn.x_m, points[i].y_m - spawn.y_m);
-      if (d_m > farthest_m) {
-        farthest_m = d_m;
-        farthest = i;
-      }
-    }
-    const double tolerance_m = config.controller.waypoints.reach_tolerance_m;
-    if (!points.empty() && farthest_m <= tolerance_m) {
-      throw ConfigError(
-          config.source_file, "controller.reach_tolerance_m",
-          msgs::ShortestNumber(tolerance_m) +
-              " m takes in every waypoint from the spawn (the farthest, waypoints[" +
-              std::to_string(farthest) + "], lies " + msgs::SixDigitNumber(farthest_m) +
-              " m from it): each counts as reached on the first tick, before the robot drives to "
-              "any; give a tolerance below that distance");
-    }
-  }
-  // A square's corners are its waypoints: square_hall.yaml with side_m 20 drove the P3-DX into the
-  // hall's east wall, encoder drift 82 %, controller_finished 0, exit 0 (s52). The controller lays
-  // them out from the spawn (its first estimate), corner 0 the spawn itself. The UMBmark protocol
-  // turns the spawn for its clockwise runs and walks its squares itself (s46).
-  if (config.controller.type == "square_path" && config.protocol == "single") {
-    const robot::SquarePathOptions& square = config.controller.square_path;
-    const std::vector<msgs::Pose2D> corners = robot::SquareCorners(scene_->TruePose(), square);
-    for (int k = 1; k < 4; ++k) {
-      if (const auto problem = unreachable(corners[k].x_m, corners[k].y_m)) {
-        throw ConfigError(config.source_file, "controller.side_m",
-                          "the " + FormatNumber(square.side_m) + " m " +
-                              std::string(robot::ToString(square.direction)) +
-                              " square from the spawn: its corner " + std::to_string(k) + " " +
-                              *problem + " in " + config.world_path.filename().string() +
-                              ": the robot can never reach it; shorten side_m or move "
-                              "robot.spawn");
-      }
-    }
-  }
-  // Controllers plan with robot.nominal's wheel speed limit; motors that clamp below it would drive
-  // other speeds than commanded without a word (audit s47: 20 rad/s against the P3-DX's 12.3).
-  if (const double motors = scene_->WheelMotorLimitRadS();
-      config.nominal.max_wheel_speed_rad_s > motors) {
-    throw ConfigError(config.source_file, "robot.nominal.max_wheel_speed_rad_s",
-                      FormatNumber(config.nominal.max_wheel_speed_rad_s) +
-                          " rad/s is more than the wheel motors take (ctrlrange +-" +
-                          FormatNumber(motors) + " rad/s in " +
-                          FindRobot(config.robot).mjcf.filename().string() +
-                          "): they would clamp the controller's commands");
-  }
+  RequireReachableControllerTargets(config, *scene_);
   RequireControllerSensors(config);
 
   Parts& p = *parts_;
@@ -287,16 +177,7 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
   if (s.encoders) {
     p.encoders.emplace(s.encoders->rate_hz, *s.encoders, ComponentSeed(seed, "encoders"));
   }
-  if (!config.odometry.enabled.empty() && !s.encoders) {
-    throw ConfigError(config.source_file, "odometry",
-                      "odometry estimators need sensors.encoders to be enabled");
-  }
-  for (const std::string& name : config.odometry.enabled) {
-    if (EstimatorNeedsGyro(name) && !s.gyro) {
-      throw ConfigError(config.source_file, "odometry." + name,
-                        "this estimator needs sensors.gyro to be enabled");
-    }
-  }
+  RequireOdometrySensors(config);
   for (auto& [name, estimator] :
        MakeEstimators(config.odometry, config.nominal, scene_->TruePose())) {
     record_.estimator_names.push_back(name);

@@ -65,7 +65,9 @@ AxisOverlap ProjectionOverlap(const double* v, int n, const double centre[2], do
   return {a_hi - (t0 - extent), t0 + extent - a_lo};
 }
 
-bool CanCollide(const mjModel* m, int a, int b) {
+// Named apart from near_contact_pairs.cc's CanCollide (which also filters welds and parents): a
+// unity batch joins the two files' anonymous namespaces.
+bool ContactBitsMatch(const mjModel* m, int a, int b) {
   return (m->geom_contype[a] & m->geom_conaffinity[b]) ||
          (m->geom_contype[b] & m->geom_conaffinity[a]);
 }
@@ -117,7 +119,7 @@ PlanarObstacles::PlanarObstacles(const mjModel* m, const mjData* d, int base_bod
   }
 
   for (int g = 0; g < m->ngeom; ++g) {
-    if (m->body_weldid[m->geom_bodyid[g]] != 0 || !CanCollide(m, g, ring)) continue;
+    if (m->body_weldid[m->geom_bodyid[g]] != 0 || !ContactBitsMatch(m, g, ring)) continue;
     const int type = m->geom_type[g];
     if (type == mjGEOM_PLANE || type == mjGEOM_HFIELD) continue;
     const mjtNum* p = d->geom_xpos + 3 * g;
