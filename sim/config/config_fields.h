@@ -81,6 +81,8 @@ void VisitFields(A& a, SonarOptions& o) {
   a("incidence_limit_deg", o.incidence_limit_deg);
   a("corner_echoes", o.corner_echoes);
   a("multipath", o.multipath);
+  a("edge_echoes", o.edge_echoes);
+  a("edge_echo_range_m", o.edge_echo_range_m);
   a("range_min_m", o.range_min_m);
   a("range_max_m", o.range_max_m);
   a("range_noise_fraction", o.range_noise_fraction);

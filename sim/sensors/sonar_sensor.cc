@@ -17,6 +17,9 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 // Bounce rays start at least this far off the surface so they do not hit it again.
 constexpr double kSurfaceOffsetM = 1e-6;
+// A ray cast at an edge that stops this much short of it met something in front of the edge; one
+// that reaches it (rounding within this) met the edge's own faces.
+constexpr double kEdgeOcclusionToleranceM = 1e-3;
 
 }  // namespace
 
@@ -40,6 +43,8 @@ void SonarOptions::Validate() const {
                "must be at most 1 (sigma = range_noise_fraction x range: more is noise larger than "
                "the reading)",
                range_noise_fraction);
+  RequireField(std::isfinite(edge_echo_range_m) && edge_echo_range_m > 0.0, "edge_echo_range_m",
+               "must be > 0", edge_echo_range_m);
   RequireField(std::isfinite(rate_hz) && rate_hz > 0.0, "rate_hz", "must be > 0", rate_hz);
 }
 
@@ -58,6 +63,7 @@ SonarSensor::SonarSensor(const Scene& scene, const std::vector<std::string>& sit
   dirs_S_ = PlanarDirections(angles_rad);
   cos_incidence_limit_ = std::cos(options_.incidence_limit_deg * kDegToRad);
   cos_half_angle_ = std::cos(options_.beam_half_angle_deg * kDegToRad);
+  if (options_.edge_echoes) edges_ = ExposedBoxEdges(scene.model());
 }
 
 msgs::RangeRing SonarSensor::Measure(const Scene& scene, const RayCaster& caster) {
@@ -175,9 +181,34 @@ double SonarSensor::EchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& ca
       best_m = std::min(best_m, foot.distance_m);
     }
   }
+  if (options_.edge_echoes) best_m = EdgeEchoRange(X_WS, caster, best_m);
   if (best_m < range_max_m) return best_m;
   if (options_.multipath && multipath_m < range_max_m) return multipath_m;
   return -1.0;
+}
+
+double SonarSensor::EdgeEchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& caster,
+                                  double below_m) const {
+  const Eigen::Matrix3d R_WS = X_WS.linear();
+  const Eigen::Vector3d p_WS = X_WS.translation();
+  const double limit_m = std::min({below_m, options_.edge_echo_range_m, options_.range_max_m});
+  double best_m = below_m;
+  RayHit hit;
+  for (const ConvexEdge& edge : edges_) {
+    if (p_WS.z() < edge.z_min_m || p_WS.z() > edge.z_max_m) continue;
+    // The edge's nearest point is level with the transducer: the fan's plane cuts it there.
+    const Eigen::Vector3d to_edge_W(edge.point_W.x() - p_WS.x(), edge.point_W.y() - p_WS.y(), 0.0);
+    const double range_m = to_edge_W.norm();
+    if (range_m >= std::min(best_m, limit_m) || range_m <= 0.0) continue;
+    const Eigen::Vector3d dir_W = to_edge_W / range_m;
+    if ((R_WS.transpose() * dir_W).x() < cos_half_angle_) continue;  // outside the beam
+    if (caster.Cast(p_WS, dir_W, range_m, &hit) &&
+        hit.distance_m < range_m - kEdgeOcclusionToleranceM) {
+      continue;  // hidden behind something nearer, or behind the box's own faces
+    }
+    best_m = range_m;
+  }
+  return best_m;
 }
 
 }  // namespace plywood::sim

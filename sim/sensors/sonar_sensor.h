@@ -9,6 +9,7 @@
 
 #include "msgs/range_ring.h"
 #include "sim/raycast/ray_caster.h"
+#include "sim/sensors/convex_edges.h"
 #include "sim/sensors/sensor_sites.h"
 #include "sim/world/scene.h"
 
@@ -26,6 +27,14 @@ namespace plywood::sim {
 //  - a corner echo (corner_echoes): an oblique ray reflected once more by a second surface that
 //    comes back towards the transducer (within the beam half-angle) is heard at half the path
 //    length (d1 + d2 + |p2 - sensor|) / 2; concave corners are the sonar's strongest targets;
+//  - an edge echo (edge_echoes, default off): a convex vertical edge of a static box (a box's
+//    corner, a wall's end; ExposedBoxEdges) inside the beam, not hidden behind anything nearer and
+//    within edge_echo_range_m, is heard at its straight-line range from any incidence. A convex
+//    edge sends no specular echo, but it diffracts (Kuc & Siegel 1987 model it as a line source;
+//    Leonard & Durrant-Whyte 1992 list edges with planes, corners and cylinders as the sonar's
+//    targets, weaker than planes and heard only at short range). Without it a box's corner met
+//    obliquely is silent, and an explorer drives into corners a real ring would hear (round 58a,
+//    docs/sonar_map.md: 0 of 103 touched corners ever echoed). No amplitude model: heard or not;
 //  - if nothing echoes, a specular miss: echo = false, unless `multipath` is on, when the
 //    central-most hitting ray's single specular bounce is reported as a long reading
 //    (d1 + d2 + |p2 - sensor|) / 2 whatever its direction, if that is below range_max_m.
@@ -40,6 +49,13 @@ struct SonarOptions {
   double incidence_limit_deg = 20.0;
   bool corner_echoes = true;
   bool multipath = false;
+  bool edge_echoes = false;
+  // How far a right-angle edge met on its bisector is heard: where its back-diffracted echo
+  // (Keller's wedge coefficient, spreading 1 / r^1.5) falls to what a normal plane returns at the
+  // 6500's rated 10.7 m (spreading 1 / 2r), both with ISO 9613-1 air absorption at 49.4 kHz, 20 C,
+  // 50 % RH (1.64 dB/m): 2.36 m, rounded down (docs/sonar_map.md, round 59a). An upper bound: the
+  // ranging module's gain still rises over the first metres, which only shortens it.
+  double edge_echo_range_m = 2.3;
   double range_min_m = 0.15;
   double range_max_m = 5.0;
   double range_noise_fraction = 0.01;
@@ -79,8 +95,13 @@ class SonarSensor {
                    const Eigen::Vector3d* cone_dirs_W, const RayHit* cone_hits,
                    const bool* cone_found) const;
 
+  // The nearest edge echo of one transducer below `below_m`, or below_m when none is nearer.
+  double EdgeEchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& caster,
+                       double below_m) const;
+
   const SonarOptions options_;
   const std::vector<SensorSite> sites_;
+  std::vector<ConvexEdge> edges_;        // with edge_echoes only
   std::vector<Eigen::Vector3d> dirs_S_;  // fan directions in the site frame, centre-out
   double cos_incidence_limit_ = 0.0;
   double cos_half_angle_ = 0.0;

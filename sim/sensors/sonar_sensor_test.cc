@@ -12,6 +12,7 @@
 #include "sim/config/config_error.h"
 #include "sim/raycast/mujoco_ray_caster.h"
 #include "sim/world/scene.h"
+#include "tests/support/mujoco_test_support.h"
 #include "tests/support/options_test_support.h"
 #include "tests/support/sample_stats.h"
 #include "tests/support/sensor_test_support.h"
@@ -21,6 +22,7 @@ namespace {
 
 using plywood::testing::ExpectInvalidField;
 using plywood::testing::FloorWorld;
+using plywood::testing::MakeTempDir;
 using plywood::testing::Rectangle;
 using plywood::testing::RobotIn;
 using plywood::testing::RoomSegments;
@@ -29,6 +31,7 @@ using plywood::testing::SampleStats;
 using plywood::testing::Segment;
 using plywood::testing::SegmentCaster;
 using plywood::testing::ToWorld;
+using plywood::testing::WriteFile;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
@@ -164,6 +167,125 @@ TEST_F(SonarGeometryTest, RangeLimits) {
   EXPECT_FALSE(Read({}).echo);
 }
 
+// Boxes 1 m high on the floor of a real MuJoCo world around sonar_0 of a P3-DX parked at
+// kSpawn, given in that transducer's planar frame; noise-free readings against MujocoRayCaster.
+class SonarEdgeTest : public ::testing::Test {
+ protected:
+  struct Box {
+    double x, y, half_x, half_y, yaw_deg;  // centre and yaw in the sensor frame
+  };
+  static constexpr msgs::Pose2D kSpawn{0.5, -0.2, 25.0 * kDeg};
+
+  SonarEdgeTest() : X_WS_(Sonar0Pose()) { options_.noise_free = true; }
+
+  static Eigen::Isometry3d Sonar0Pose() {
+    const Scene scene(RobotIn("p3dx", FloorWorld("sonar_edge_floor"), kSpawn));
+    return scene.SitePoseInWorld(*scene.FindSite("sonar_0"));
+  }
+
+  // A box of half size h whose nearest corner lies range_m along bearing_deg from the
+  // transducer, the bisector of its two faces there pointing back at the transducer: both faces
+  // meet the line of sight at 45 deg.
+  static Box DiagonalBox(double range_m, double bearing_deg, double h = 0.3) {
+    const double b = bearing_deg * kDeg, centre_m = range_m + h * std::sqrt(2.0);
+    return {centre_m * std::cos(b), centre_m * std::sin(b), h, h, bearing_deg - 45.0};
+  }
+
+  msgs::RangeReading Read(const std::vector<Box>& boxes) {
+    const double yaw_S = std::atan2(X_WS_.linear()(1, 0), X_WS_.linear()(0, 0));
+    std::string xml = "<mujoco>\n  <worldbody>\n    <geom type=\"plane\" size=\"10 10 0.1\"/>\n";
+    for (const Box& box : boxes) {
+      const Eigen::Vector2d c = ToWorld(X_WS_, box.x, box.y);
+      xml += "    <geom type=\"box\" pos=\"" + std::to_string(c.x()) + " " + std::to_string(c.y()) +
+             " 0.5\" size=\"" + std::to_string(box.half_x) + " " + std::to_string(box.half_y) +
+             " 0.5\" euler=\"0 0 " + std::to_string(box.yaw_deg + yaw_S / kDeg) + "\"/>\n";
+    }
+    xml += "  </worldbody>\n</mujoco>\n";
+    const Scene scene(RobotIn(
+        "p3dx", WriteFile(MakeTempDir("sonar_edge_" + std::to_string(++worlds_)) / "w.xml", xml),
+        kSpawn));
+    const MujocoRayCaster caster(scene.model(), scene.data());
+    SonarSensor sonar(scene, {"sonar_0"}, options_, 1);
+    return sonar.Measure(scene, caster).readings.at(0);
+  }
+
+  // The horizontal distance from the transducer to the point (x, y) of its planar frame, as the
+  // world file's rounding (6 decimals) placed it.
+  double RangeTo(const Box& box, double corner_x_G, double corner_y_G) const {
+    const double yaw = box.yaw_deg * kDeg;
+    const double x = box.x + std::cos(yaw) * corner_x_G - std::sin(yaw) * corner_y_G;
+    const double y = box.y + std::sin(yaw) * corner_x_G + std::cos(yaw) * corner_y_G;
+    return std::hypot(x, y);
+  }
+
+  Eigen::Isometry3d X_WS_;
+  SonarOptions options_;
+  int worlds_ = 0;
+};
+
+TEST_F(SonarEdgeTest, ABoxCornerMetOnItsBisectorIsHeardAtItsDistanceOnlyWithEdgeEchoes) {
+  // Both faces at 45 deg to the axis: every ray meets them at 30-60 deg incidence (beyond the
+  // 20 deg limit), their normals lie 45 deg off the axis (no foot in the beam), and a convex
+  // corner sends no double bounce back: silent without the option.
+  const Box box = DiagonalBox(1.0, 0.0);
+  EXPECT_FALSE(Read({box}).echo);
+  options_.edge_echoes = true;
+  const msgs::RangeReading r = Read({box});
+  ASSERT_TRUE(r.echo);
+  EXPECT_NEAR(r.range_m, 1.0, 1e-5);  // the world file keeps 6 decimals
+}
+
+TEST_F(SonarEdgeTest, AnEdgeBeyondItsAudibleRangeIsNotHeard) {
+  options_.edge_echoes = true;
+  options_.edge_echo_range_m = 0.99;
+  EXPECT_FALSE(Read({DiagonalBox(1.0, 0.0)}).echo);
+  options_.edge_echo_range_m = 1.01;
+  EXPECT_TRUE(Read({DiagonalBox(1.0, 0.0)}).echo);
+  options_ = SonarOptions{.edge_echoes = true, .noise_free = true};  // 2.3 m
+  EXPECT_FALSE(Read({DiagonalBox(2.4, 0.0)}).echo);
+  EXPECT_NEAR(Read({DiagonalBox(2.2, 0.0)}).range_m, 2.2, 1e-5);
+}
+
+TEST_F(SonarEdgeTest, AnEdgeOutsideTheBeamIsNotHeard) {
+  options_.edge_echoes = true;
+  // 10 deg off the axis, inside the 15 deg half-angle: heard at its distance (the rays meet its
+  // faces at 30-45 deg; its side corner at -6.6 deg is farther).
+  const msgs::RangeReading r = Read({DiagonalBox(1.2, 10.0)});
+  ASSERT_TRUE(r.echo);
+  EXPECT_NEAR(r.range_m, 1.2, 1e-5);
+  // 20 deg off: outside. A 2 x 2 m box, so its side corners (8.4 deg off) lie 2.97 m away, beyond
+  // the edge range; the rays meet its near face at 50-73 deg.
+  EXPECT_FALSE(Read({DiagonalBox(1.2, 20.0, 1.0)}).echo);
+  EXPECT_FALSE(Read({DiagonalBox(1.2, -20.0, 1.0)}).echo);
+}
+
+TEST_F(SonarEdgeTest, AnEdgeHiddenBehindAnotherBoxIsNotHeard) {
+  options_.edge_echoes = true;
+  const Box corner = DiagonalBox(1.5, 0.0);
+  ASSERT_TRUE(Read({corner}).echo);
+  // A thin 3 m slab across the axis at 0.8 m, its faces at 45 deg to the axis (silent as above)
+  // and its ends far outside the beam, stands between the transducer and the corner.
+  const Box slab{0.8, 0.0, 0.02, 1.5, 45.0};
+  EXPECT_FALSE(Read({slab, corner}).echo);
+}
+
+TEST_F(SonarEdgeTest, ABoxCornerFlushAgainstAWallIsNoEdge) {
+  options_.edge_echoes = true;
+  // The wall's face runs through C = (1, 0) at 45 deg to the axis; a 1.0 x 0.4 m box stands flush
+  // against it, its corner at C, the rest of it off the beam (its free corners 21-35 deg off the
+  // axis). The box's side and the wall make a concave corner at C, whose own echo is the corner
+  // model's (off here): the edge at C is buried in the wall and sends nothing.
+  options_.corner_echoes = false;
+  const double r2 = std::sqrt(0.5);
+  const Box wall{1.0 + 0.05 * r2, -0.05 * r2, 0.05, 2.0, 135.0};
+  const Box box{1.0 + 0.5 * r2 - 0.2 * r2, 0.5 * r2 + 0.2 * r2, 0.5, 0.2, 45.0};
+  EXPECT_NEAR(RangeTo(box, -0.5, -0.2), 1.0, 1e-5);
+  const msgs::RangeReading alone = Read({box});  // without the wall, C is a free edge
+  ASSERT_TRUE(alone.echo);
+  EXPECT_NEAR(alone.range_m, 1.0, 1e-5);
+  EXPECT_FALSE(Read({wall, box}).echo);
+}
+
 TEST(SonarSensorTest, NoiseIsOnePercentOfRangeAndZeroMean) {
   Scene scene(RobotIn("p3dx", FloorWorld("sonar_noise"), {0.2, 0.1, 10.0 * kDeg}));
   // A 4 x 3 m box around the robot.
@@ -210,6 +332,8 @@ TEST(SonarOptionsTest, ValidateNamesTheField) {
   ExpectInvalidField(SonarOptions{.range_max_m = 0.0}, "range_max_m");
   ExpectInvalidField(SonarOptions{.range_noise_fraction = -0.01}, "range_noise_fraction");
   ExpectInvalidField(SonarOptions{.rate_hz = 0.0}, "rate_hz");
+  ExpectInvalidField(SonarOptions{.edge_echo_range_m = 0.0}, "edge_echo_range_m");
+  ExpectInvalidField(SonarOptions{.edge_echo_range_m = std::nan("")}, "edge_echo_range_m");
 }
 
 // The P3-DX in a real MuJoCo room: interior [-2, 3] x [-1.5, 2.5], optionally rotated.
