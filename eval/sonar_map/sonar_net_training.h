@@ -5,6 +5,7 @@
 #include <functional>
 
 #include "perception/sonar_map/sonar_net.h"
+#include "sim/sensors/sonar_sensor.h"
 
 namespace plywood::eval {
 
@@ -15,6 +16,9 @@ struct SonarNetTrainingOptions {
   int rooms = 60;       // random training rooms
   int test_rooms = 15;  // held-out rooms, scored after training
   int poses = 25;       // robot poses per room, one sonar ring each
+  // The ring the data is read with: a network learns the sensor it will read, so a run whose
+  // sonar hears convex edges (edge_echoes) wants weights trained with them.
+  sim::SonarOptions sonar;
   perception::SonarNetTrainOptions train = {.epochs = 30};
   std::filesystem::path out = "runs/sonar_net/sonar_net.txt";  // where the weights go
   // @throws std::invalid_argument naming the field.
