@@ -229,15 +229,20 @@ std::filesystem::path ShippedSonarNetPath() {
   return sim::DataRoot() / "models" / "sonar_net_v1.txt";
 }
 
+std::vector<std::filesystem::path> ShippedSonarNetPaths() {
+  return {ShippedSonarNetPath(), sim::DataRoot() / "models" / "sonar_net_edges_v1.txt"};
+}
+
 void RefuseShippedSonarNet(const std::filesystem::path& out) {
   namespace fs = std::filesystem;
-  const fs::path shipped = ShippedSonarNetPath();
-  std::error_code error;
-  const bool same_file = fs::equivalent(out, shipped, error);  // false if either is missing
-  if (same_file || fs::weakly_canonical(out) == fs::weakly_canonical(shipped)) {
-    throw std::invalid_argument(
-        out.string() + ": is the shipped model (" + shipped.string() +
-        "), which training never overwrites; train elsewhere and compare before copying it");
+  for (const fs::path& shipped : ShippedSonarNetPaths()) {
+    std::error_code error;
+    const bool same_file = fs::equivalent(out, shipped, error);  // false if either is missing
+    if (same_file || fs::weakly_canonical(out) == fs::weakly_canonical(shipped)) {
+      throw std::invalid_argument(
+          out.string() + ": is the shipped model (" + shipped.string() +
+          "), which training never overwrites; train elsewhere and compare before copying it");
+    }
   }
 }
 

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <vector>
 
 #include "perception/sonar_map/sonar_net.h"
 #include "sim/sensors/sonar_sensor.h"
@@ -42,7 +43,11 @@ struct SonarNetTrainingReport {
 // models/sonar_net_v1.txt: the weights the shipped experiments use, which training never writes.
 std::filesystem::path ShippedSonarNetPath();
 
-// @throws std::invalid_argument when `out` is the shipped weights file (however it is spelled:
+// Every weights file shipped in models/ (sonar_net_v1.txt, and sonar_net_edges_v1.txt for runs
+// whose sonar hears convex edges): training writes none of them.
+std::vector<std::filesystem::path> ShippedSonarNetPaths();
+
+// @throws std::invalid_argument when `out` is a shipped weights file (however it is spelled:
 // relative, through symbolic links or a hard link).
 void RefuseShippedSonarNet(const std::filesystem::path& out);
 

@@ -43,6 +43,10 @@ TEST(SonarNetTrainingTest, TheShippedWeightsAreRefusedHoweverSpelled) {
   EXPECT_NO_THROW(RefuseShippedSonarNet(dir / "net.txt"));
   EXPECT_NO_THROW(RefuseShippedSonarNet("runs/sonar_net/sonar_net.txt"));
   EXPECT_THROW(TrainSonarNet(Tiny(shipped)), std::invalid_argument);
+  for (const fs::path& other : ShippedSonarNetPaths()) {
+    ASSERT_TRUE(fs::exists(other)) << other;
+    EXPECT_THROW(RefuseShippedSonarNet(other), std::invalid_argument) << other;
+  }
 }
 
 // `train --out FILE` wrote FILE in place: a failed write (a full disk) left a 0-byte FILE where
