@@ -115,6 +115,9 @@ Command AddTrainCommand(CLI::App& app) {
       ->type_name("N")
       ->transform(DecimalWholeNumber())
       ->capture_default_str();
+  cli->add_flag("--edge-echoes", o.sonar.edge_echoes,
+                "read the rings with convex edges heard (the sonar's edge_echoes), for runs that "
+                "set it");
   cli->add_flag("--quiet", flags->quiet, "print nothing");
   cli->footer(
       "Examples:\n"

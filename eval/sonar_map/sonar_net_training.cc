@@ -98,8 +98,8 @@ struct Dataset {
 // One room: `poses` random robot poses at least 0.3 m from everything, a ring each, and the 14 x
 // 14 local grid's cells (a random point inside each cell, so the net sees every angle) labelled
 // from the reachable-space ground truth.
-void Generate(const RandomRoom& room, int poses, const std::filesystem::path& dir, int index,
-              std::mt19937_64& rng, Dataset* out) {
+void Generate(const RandomRoom& room, int poses, const sim::SonarOptions& sonar_options,
+              const std::filesystem::path& dir, int index, std::mt19937_64& rng, Dataset* out) {
   const std::filesystem::path world = dir / ("room_" + std::to_string(index) + ".xml");
   {
     sim::FileWriter f(world);
@@ -114,7 +114,6 @@ void Generate(const RandomRoom& room, int poses, const std::filesystem::path& di
   sim::OccupancyRasterOptions ro;
   ro.resolution_m = 0.01;
   const sim::OccupancyRaster raster = sim::RasteriseOccupancy(scene.model(), ro);
-  sim::SonarOptions sonar_options;  // specular misses on, as in the experiments
   sim::SonarSensor sonar(scene, sim::SonarSensor::DefaultSiteNames(), sonar_options, rng());
   std::uniform_real_distribution<double> u(0.0, 1.0);
   int made = 0, tries = 0;
@@ -209,6 +208,7 @@ void SonarNetTrainingOptions::Validate() const {
         " (each keeps its 196 labelled cells, about 20 kB, in memory)");
   }
   train.Validate();
+  sonar.Validate();
   if (out.empty()) throw std::invalid_argument("out: needs a file name");
   // "x.txt/" made the folder x.txt, trained, then failed to write ("Is a directory", exit 1, s57).
   const std::string last = out.filename().string();
@@ -229,15 +229,20 @@ std::filesystem::path ShippedSonarNetPath() {
   return sim::DataRoot() / "models" / "sonar_net_v1.txt";
 }
 
+std::vector<std::filesystem::path> ShippedSonarNetPaths() {
+  return {ShippedSonarNetPath(), sim::DataRoot() / "models" / "sonar_net_edges_v1.txt"};
+}
+
 void RefuseShippedSonarNet(const std::filesystem::path& out) {
   namespace fs = std::filesystem;
-  const fs::path shipped = ShippedSonarNetPath();
-  std::error_code error;
-  const bool same_file = fs::equivalent(out, shipped, error);  // false if either is missing
-  if (same_file || fs::weakly_canonical(out) == fs::weakly_canonical(shipped)) {
-    throw std::invalid_argument(
-        out.string() + ": is the shipped model (" + shipped.string() +
-        "), which training never overwrites; train elsewhere and compare before copying it");
+  for (const fs::path& shipped : ShippedSonarNetPaths()) {
+    std::error_code error;
+    const bool same_file = fs::equivalent(out, shipped, error);  // false if either is missing
+    if (same_file || fs::weakly_canonical(out) == fs::weakly_canonical(shipped)) {
+      throw std::invalid_argument(
+          out.string() + ": is the shipped model (" + shipped.string() +
+          "), which training never overwrites; train elsewhere and compare before copying it");
+    }
   }
 }
 
@@ -273,7 +278,7 @@ SonarNetTrainingReport TrainSonarNet(
     const TemporaryFolder folder;
     for (int r = 0; r < options.rooms + options.test_rooms; ++r) {
       const RandomRoom room = MakeRoom(rng);
-      Generate(room, options.poses, folder.path(), r, rng,
+      Generate(room, options.poses, options.sonar, folder.path(), r, rng,
                r < options.rooms ? &train_set : &test_set);
     }
   }

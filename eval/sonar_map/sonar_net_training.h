@@ -3,8 +3,10 @@
 #include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <vector>
 
 #include "perception/sonar_map/sonar_net.h"
+#include "sim/sensors/sonar_sensor.h"
 
 namespace plywood::eval {
 
@@ -15,6 +17,9 @@ struct SonarNetTrainingOptions {
   int rooms = 60;       // random training rooms
   int test_rooms = 15;  // held-out rooms, scored after training
   int poses = 25;       // robot poses per room, one sonar ring each
+  // The ring the data is read with: a network learns the sensor it will read, so a run whose
+  // sonar hears convex edges (edge_echoes) wants weights trained with them.
+  sim::SonarOptions sonar;
   perception::SonarNetTrainOptions train = {.epochs = 30};
   std::filesystem::path out = "runs/sonar_net/sonar_net.txt";  // where the weights go
   // @throws std::invalid_argument naming the field.
@@ -38,7 +43,11 @@ struct SonarNetTrainingReport {
 // models/sonar_net_v1.txt: the weights the shipped experiments use, which training never writes.
 std::filesystem::path ShippedSonarNetPath();
 
-// @throws std::invalid_argument when `out` is the shipped weights file (however it is spelled:
+// Every weights file shipped in models/ (sonar_net_v1.txt, and sonar_net_edges_v1.txt for runs
+// whose sonar hears convex edges): training writes none of them.
+std::vector<std::filesystem::path> ShippedSonarNetPaths();
+
+// @throws std::invalid_argument when `out` is a shipped weights file (however it is spelled:
 // relative, through symbolic links or a hard link).
 void RefuseShippedSonarNet(const std::filesystem::path& out);
 
