@@ -515,14 +515,16 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
               std::unique_ptr<sim::Scene>& scene =
                   target_scenes[{experiment.string(), config.world_path.string(), config.robot}];
               try {
-                if (checked_worlds
+                // A spawn not checked yet is checked in a scene of its own (kept if the world has
+                // none yet); the world's scene is then reused for every spawn.
+                const bool new_spawn =
+                    checked_worlds
                         .insert({experiment.string(), config.world_path.string(), config.robot,
                                  config.spawn.x_m, config.spawn.y_m, config.spawn.theta_deg})
-                        .second) {
+                        .second;
+                if (new_spawn || !scene) {
                   std::unique_ptr<sim::Scene> checked = sim::MakeCheckedScene(config);
                   if (!scene) scene = std::move(checked);
-                } else if (!scene) {
-                  scene = sim::MakeCheckedScene(config);
                 }
               } catch (const sim::SpawnRefused& e) {
                 throw sim::ConfigError(spec.source_file,

@@ -189,9 +189,10 @@ double SonarSensor::EchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& ca
 
 double SonarSensor::EdgeEchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& caster,
                                   double below_m) const {
-  const Eigen::Matrix3d R_WS = X_WS.linear();
+  const Eigen::Vector3d axis_W = X_WS.linear().col(0);
   const Eigen::Vector3d p_WS = X_WS.translation();
-  const double limit_m = std::min({below_m, options_.edge_echo_range_m, options_.range_max_m});
+  // Only an edge nearer than every echo so far (and within its own and the sensor's range) counts.
+  double bound_m = std::min({below_m, options_.edge_echo_range_m, options_.range_max_m});
   double best_m = below_m;
   RayHit hit;
   for (const ConvexEdge& edge : edges_) {
@@ -199,14 +200,14 @@ double SonarSensor::EdgeEchoRange(const Eigen::Isometry3d& X_WS, const RayCaster
     // The edge's nearest point is level with the transducer: the fan's plane cuts it there.
     const Eigen::Vector3d to_edge_W(edge.point_W.x() - p_WS.x(), edge.point_W.y() - p_WS.y(), 0.0);
     const double range_m = to_edge_W.norm();
-    if (range_m >= std::min(best_m, limit_m) || range_m <= 0.0) continue;
+    if (range_m >= bound_m || range_m <= 0.0) continue;
     const Eigen::Vector3d dir_W = to_edge_W / range_m;
-    if ((R_WS.transpose() * dir_W).x() < cos_half_angle_) continue;  // outside the beam
+    if (axis_W.dot(dir_W) < cos_half_angle_) continue;  // outside the beam
     if (caster.Cast(p_WS, dir_W, range_m, &hit) &&
         hit.distance_m < range_m - kEdgeOcclusionToleranceM) {
       continue;  // hidden behind something nearer, or behind the box's own faces
     }
-    best_m = range_m;
+    best_m = bound_m = range_m;
   }
   return best_m;
 }

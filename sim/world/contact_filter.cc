@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/world/mujoco_pair_rules.h"
+
 namespace plywood::sim {
 namespace {
 
@@ -77,17 +79,11 @@ int TightContactFilter(const mjModel* m, mjData* d, int geom1, int geom2) {
   if (Separated(m, d, geom1, geom2, margin) || Separated(m, d, geom2, geom1, margin)) return 1;
   // MuJoCo's own rules, which an installed filter replaces: bodies welded together never collide,
   // nor (unless disabled) a body with its parent, and contype/conaffinity must match.
-  const int body1 = m->body_weldid[m->geom_bodyid[geom1]];
-  const int body2 = m->body_weldid[m->geom_bodyid[geom2]];
-  if (body1 == body2) return 1;
-  if (!(m->opt.disableflags & mjDSBL_FILTERPARENT)) {
-    const int parent1 = m->body_weldid[m->body_parentid[body1]];
-    const int parent2 = m->body_weldid[m->body_parentid[body2]];
-    if ((body1 != 0 && parent2 == body1) || (body2 != 0 && parent1 == body2)) return 1;
+  if (WeldedOrParentPair(m, m->body_weldid[m->geom_bodyid[geom1]],
+                         m->body_weldid[m->geom_bodyid[geom2]])) {
+    return 1;
   }
-  const bool compatible = (m->geom_contype[geom1] & m->geom_conaffinity[geom2]) ||
-                          (m->geom_contype[geom2] & m->geom_conaffinity[geom1]);
-  return compatible ? 0 : 1;
+  return ContactBitsMatch(m, geom1, geom2) ? 0 : 1;
 }
 
 void InstallTightContactFilter() { mjcb_contactfilter = TightContactFilter; }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "sim/world/mujoco_pair_rules.h"
+
 namespace plywood::sim {
 namespace {
 
@@ -15,18 +17,9 @@ constexpr double kCellM = 1.0;
 constexpr int kMaxCells = 1 << 20;
 
 bool CanCollide(const mjModel* m, int g1, int g2) {
-  if (!((m->geom_contype[g1] & m->geom_conaffinity[g2]) ||
-        (m->geom_contype[g2] & m->geom_conaffinity[g1]))) {
-    return false;
-  }
+  if (!ContactBitsMatch(m, g1, g2)) return false;
   const int b1 = m->geom_bodyid[g1], b2 = m->geom_bodyid[g2];
-  const int weld1 = m->body_weldid[b1], weld2 = m->body_weldid[b2];
-  if (weld1 == weld2) return false;
-  if (!(m->opt.disableflags & mjDSBL_FILTERPARENT)) {
-    const int parent1 = m->body_weldid[m->body_parentid[weld1]];
-    const int parent2 = m->body_weldid[m->body_parentid[weld2]];
-    if ((weld1 != 0 && parent2 == weld1) || (weld2 != 0 && parent1 == weld2)) return false;
-  }
+  if (WeldedOrParentPair(m, m->body_weldid[b1], m->body_weldid[b2])) return false;
   const int lo = std::min(b1, b2), hi = std::max(b1, b2);
   const int signature = ((lo + 1) << 16) + hi + 1;
   for (int i = 0; i < m->nexclude; ++i) {

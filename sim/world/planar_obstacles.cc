@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "sim/config/config_error.h"
+#include "sim/world/mujoco_pair_rules.h"
 
 namespace plywood::sim {
 namespace {
@@ -63,13 +64,6 @@ AxisOverlap ProjectionOverlap(const double* v, int n, const double centre[2], do
   const double extent =
       half_x * std::abs(ux * ax + uy * ay) + half_y * std::abs(-uy * ax + ux * ay);
   return {a_hi - (t0 - extent), t0 + extent - a_lo};
-}
-
-// Named apart from near_contact_pairs.cc's CanCollide (which also filters welds and parents): a
-// unity batch joins the two files' anonymous namespaces.
-bool ContactBitsMatch(const mjModel* m, int a, int b) {
-  return (m->geom_contype[a] & m->geom_conaffinity[b]) ||
-         (m->geom_contype[b] & m->geom_conaffinity[a]);
 }
 
 }  // namespace
