@@ -193,6 +193,14 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
         "set.sensors.laser.sigma_mm"}},
       {"bad_value",
        {"experiment: " + experiment + "\nset: {duration_s: [-5]}\n", "set.duration_s"}},
+      // s60: values each fine alone, refused together (the squeeze tier must stay outside the
+      // front corridor, 0.2 m + front_margin_m): blamed on the axis without which the rest load.
+      {"values_refused_together",
+       {"experiment: " + (SourceRoot() / "experiments/seed001_room_1.yaml").string() +
+            "\nset: {controller.front_margin_m: [0.06], controller.squeeze_clearance_m: [0.26]}\n",
+        "set.controller.front_margin_m: " +
+            (SourceRoot() / "experiments/seed001_room_1.yaml").string() +
+            ": controller.squeeze_clearance_m: must be 0 or > robot_radius_m + front_margin_m"}},
       {"negative_count",
        {"experiment: " + experiment + "\nworlds: {family: room, count: -3}\n", "worlds.count"}},
       {"unknown_family",
@@ -696,6 +704,22 @@ TEST(SweepCliTest, AnAxisInsideAnEarlierMappingThatLeavesItsKeyOutReachesTheRuns
   const std::string cells = Slurp(dir / "out" / "cells.json");
   EXPECT_NE(cells.find("controller.side_m=1"), std::string::npos) << cells;
   EXPECT_NE(cells.find("controller.side_m=2"), std::string::npos) << cells;
+}
+
+// s60: each axis value was checked alone against the experiment before any cell, so values valid
+// only together (a squeeze tier of 0.23 m with a front margin of 0.02 m; alone, 0.23 is inside
+// the default 0.25 m corridor) refused the whole sweep, naming the squeeze axis.
+TEST(SweepCliTest, ValuesValidOnlyTogetherAreSweptAsTheCellsSetThem) {
+  const fs::path dir = MakeTempDir("SweepValuesTogether");
+  const fs::path sweep = WriteFile(
+      dir / "together.yaml",
+      "experiment: " + (SourceRoot() / "experiments/seed001_room_1.yaml").string() +
+          "\nset: {controller.front_margin_m: [0.02], controller.squeeze_clearance_m: [0.23]}\n");
+  const auto r = RunPlywood(
+      "sweep " + sweep.string() + " --slurm --dry-run --out " + (dir / "out").string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string cells = Slurp(dir / "out" / "cells.json");
+  EXPECT_NE(cells.find("controller.squeeze_clearance_m=0.23"), std::string::npos) << cells;
 }
 
 // audit s35: a sweep refused for a bad value left its --out holding its sweep.lock, and the

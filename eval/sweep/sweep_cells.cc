@@ -69,6 +69,32 @@ std::vector<std::vector<std::string>> AxisCombinations(const SweepSpec& spec) {
 }
 
 // The world's first spawn pose (worlds/README.md), as --set overrides; none if it has none.
+// The axis to blame for a combination of axis values the experiment refuses: the first whose
+// value alone is refused, else the first without whose value the rest load (values refused only
+// together), else "set".
+std::string CombinationCulprit(const SweepSpec& spec, const std::filesystem::path& experiment,
+                               const std::vector<std::string>& combo) {
+  const auto loads = [&](const std::vector<std::string>& overrides) {
+    try {
+      sim::LoadExperimentConfig(experiment, overrides);
+      return true;
+    } catch (const sim::ConfigError&) {
+      return false;
+    }
+  };
+  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
+    if (!loads({spec.axes[a].key + "=" + combo[a]})) return "set." + spec.axes[a].key;
+  }
+  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
+    std::vector<std::string> without;
+    for (std::size_t b = 0; b < spec.axes.size(); ++b) {
+      if (b != a) without.push_back(spec.axes[b].key + "=" + combo[b]);
+    }
+    if (loads(without)) return "set." + spec.axes[a].key;
+  }
+  return "set";
+}
+
 std::vector<std::string> SpawnOverrides(const std::filesystem::path& world) {
   sim::MjModelPtr model;
   try {
@@ -424,8 +450,19 @@ void CheckSweepOverrides(const SweepSpec& spec) {
                                e.what());
       }
     }
-    for (const auto& axis : spec.axes) {
-      for (const auto& value : axis.values) check({axis.key + "=" + value}, "set." + axis.key);
+    // Every combination of the axes' values as the cells will set them, not each value alone:
+    // fields checked against each other (squeeze_clearance_m against front_margin_m) refused an
+    // axis whose values are fine beside another axis's (s60).
+    for (const auto& combo : AxisCombinations(spec)) {
+      std::vector<std::string> overrides;
+      for (std::size_t a = 0; a < spec.axes.size(); ++a)
+        overrides.push_back(spec.axes[a].key + "=" + combo[a]);
+      try {
+        sim::LoadExperimentConfig(experiment, overrides);
+      } catch (const sim::ConfigError& e) {
+        throw sim::ConfigError(spec.source_file, CombinationCulprit(spec, experiment, combo),
+                               e.what());
+      }
     }
   }
 }
