@@ -2490,5 +2490,36 @@ TEST_F(ReliabilityTest, PhysicsThatDivergesIsReportedAtTheTimeItDid) {
   EXPECT_NEAR(t_s, mujoco_s, 1e-4) << run.err;
   EXPECT_FALSE(fs::exists(dir / "out" / "metrics.json"));
 }
+
+// s60: `--set odometry.ekf.X=...` (a profile line, a sweep axis) on an experiment without an
+// odometry section created the section holding the EKF alone, so the default encoder estimator
+// dropped out of metrics.json; `--set odometry.calibration.track_ratio=1.01` left no estimator
+// at all (an empty `odometry` in metrics.json, exit 0). An override under the absent section now
+// starts from its default; the whole section given by --set, or by the file, is taken as given.
+TEST_F(ReliabilityTest, AnOverrideUnderTheDefaultOdometryKeepsTheEncoderEstimator) {
+  const fs::path root(PLYWOOD_SOURCE_ROOT);
+  const auto enabled = [&](const std::string& yaml, const std::vector<std::string>& overrides) {
+    return sim::ParseExperimentConfig(yaml, "experiment.yaml", root, overrides).odometry.enabled;
+  };
+  using Names = std::vector<std::string>;
+  const std::string yaml = HallExperiment(0.0, 0.0, "", "{encoders: {}, gyro: {}}");
+  EXPECT_EQ(enabled(yaml, {}), Names{"encoder"});
+  EXPECT_EQ(enabled(yaml, {"odometry.ekf.gyro_gain=1"}), (Names{"encoder", "ekf"}));
+  EXPECT_EQ(enabled(yaml, {"odometry.weighted.gyro_gain=0.9", "odometry.ekf.gyro_gain=1"}),
+            (Names{"encoder", "weighted", "ekf"}));
+  const sim::ExperimentConfig calibrated = sim::ParseExperimentConfig(
+      yaml, "experiment.yaml", root, {"odometry.calibration.track_ratio=1.01"});
+  EXPECT_EQ(calibrated.odometry.enabled, Names{"encoder"});
+  EXPECT_EQ(calibrated.odometry.calibration.track_ratio, 1.01);
+  // config.yaml records the estimators, and loads back to the same run.
+  EXPECT_EQ(enabled(sim::ExperimentConfigToYaml(calibrated), {}), Names{"encoder"});
+  // The whole section, from --set or from the file, names exactly what runs.
+  EXPECT_EQ(enabled(yaml, {"odometry={ekf: {}}"}), Names{"ekf"});
+  EXPECT_EQ(enabled(yaml, {"odometry={ekf: {}}", "odometry.ekf.gyro_gain=1"}), Names{"ekf"});
+  EXPECT_EQ(enabled(yaml + "odometry: {ekf: {}}\n", {"odometry.ekf.gyro_gain=1"}), Names{"ekf"});
+  // Without the encoders the default is no estimator, so an override adds only its own.
+  EXPECT_EQ(enabled(HallExperiment(0.0, 0.0, "", "{gyro: {}}"), {"odometry.gyro.gain=1"}),
+            Names{"gyro"});
+}
 }  // namespace
 }  // namespace plywood

@@ -570,6 +570,8 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   // alias of an anchored value.
   root = CopyWithoutSharedNodes(root);
   NormaliseAliases(root, source);
+  // Read before the overrides: whether the file itself wrote the odometry section (see below).
+  const bool file_gives_odometry = root.IsMap() && std::as_const(root)["odometry"].IsDefined();
   std::vector<std::string> set_keys;
   for (const std::string& assignment : overrides) {
     if (!root.IsMap()) break;  // reported below as "expected a mapping"
@@ -670,6 +672,19 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   ReadSensorSuiteConfig(top.Child("sensors"), config.nominal, config.sensors);
   if (top.Has("odometry")) {
     ReadOdometryConfig(top.Child("odometry"), config.nominal, config.odometry);
+    // An override of one key under an odometry section the file does not have changes that key
+    // only: the section starts from its default, so `--set odometry.ekf.gyro_gain=1` (a profile
+    // line, a sweep axis) adds the EKF beside the encoder estimator instead of dropping it, and
+    // `--set odometry.calibration.track_ratio=1.01` calibrates it instead of leaving no estimator
+    // (s60). `--set 'odometry={ekf: {}}'` gives the whole section, as the file would.
+    const bool whole_section_set =
+        std::find(set_keys.begin(), set_keys.end(), "odometry") != set_keys.end();
+    const std::vector<std::string>& enabled = config.odometry.enabled;
+    if (!file_gives_odometry && !whole_section_set && config.sensors.encoders &&
+        std::find(enabled.begin(), enabled.end(), "encoder") == enabled.end()) {
+      // The first column, as KnownEstimators() orders them.
+      config.odometry.enabled.insert(config.odometry.enabled.begin(), "encoder");
+    }
   } else if (config.sensors.encoders) {
     config.odometry.enabled = {"encoder"};
   }
