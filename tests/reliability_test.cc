@@ -2521,5 +2521,25 @@ TEST_F(ReliabilityTest, AnOverrideUnderTheDefaultOdometryKeepsTheEncoderEstimato
   EXPECT_EQ(enabled(HallExperiment(0.0, 0.0, "", "{gyro: {}}"), {"odometry.gyro.gain=1"}),
             Names{"gyro"});
 }
+
+// s60: a single run applies odometry.calibration only to its estimators; with none running
+// (`odometry: {calibration: {track_ratio: 1.01}}`) the calibration changed no figure, exit 0, and
+// metrics.json held no odometry. The identity, which config.yaml records for such a run, runs.
+TEST_F(ReliabilityTest, ACalibrationWithNoEstimatorToCalibrateIsRefused) {
+  const std::string yaml =
+      HallExperiment(0.0, 0.0) + "odometry: {calibration: {track_ratio: 1.01}}\n";
+  ExpectRefused(yaml, "",
+                {"experiment.yaml: odometry.calibration: wheel_diameter_ratio 1 and track_ratio "
+                 "1.01 calibrate the odometry estimators, but none runs (odometry names none)"});
+  ExpectRefused(HallExperiment(0.0, 0.0, "", "{}"), "--set odometry.calibration.track_ratio=1.01",
+                {"odometry.calibration:", "(sensors.encoders is off)"});
+  const fs::path root(PLYWOOD_SOURCE_ROOT);
+  EXPECT_TRUE(sim::ParseExperimentConfig(yaml, "experiment.yaml", root,
+                                         {"odometry.calibration.track_ratio=1"})
+                  .odometry.enabled.empty());
+  EXPECT_EQ(sim::ParseExperimentConfig(yaml, "experiment.yaml", root, {"odometry.encoder={}"})
+                .odometry.calibration.track_ratio,
+            1.01);
+}
 }  // namespace
 }  // namespace plywood

@@ -533,6 +533,24 @@ void RequireEncodersTheOdometryCounts(const YamlFields& top, const ExperimentCon
           ": set robot.nominal.encoder_ticks_per_rev instead (the sensor takes its count)");
 }
 
+// A single run applies odometry.calibration only to the estimators' geometry: with none running
+// a calibration changed no figure, exit 0 (s60; `odometry: {calibration: {track_ratio: 1.01}}`
+// ran with no odometry in metrics.json). The identity is what config.yaml records for a run
+// without estimators, so it stays accepted; the UMBmark and gain protocols drive with it
+// themselves.
+void RequireAnEstimatorForTheCalibration(const YamlFields& top, const ExperimentConfig& config) {
+  const robot::OdometryCalibration& calibration = config.odometry.calibration;
+  if (config.protocol != "single" || !config.odometry.enabled.empty()) return;
+  if (calibration.wheel_diameter_ratio == 1.0 && calibration.track_ratio == 1.0) return;
+  top.Fail("odometry.calibration",
+           "wheel_diameter_ratio " + msgs::ShortestNumber(calibration.wheel_diameter_ratio) +
+               " and track_ratio " + msgs::ShortestNumber(calibration.track_ratio) +
+               " calibrate the odometry estimators, but none runs (" +
+               (config.sensors.encoders ? "odometry names none" : "sensors.encoders is off") +
+               "), so they would change no figure: enable one, e.g. odometry.encoder: {} with "
+               "sensors.encoders");
+}
+
 }  // namespace
 
 void SpawnPose::Validate() const {
@@ -688,6 +706,7 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   } else if (config.sensors.encoders) {
     config.odometry.enabled = {"encoder"};
   }
+  RequireAnEstimatorForTheCalibration(top, config);
   if (top.Has("lines")) ReadLinesConfig(top.Child("lines"), config.lines);
   if (top.Has("geometric_map")) {
     ReadGeometricMapConfig(top.Child("geometric_map"), config.geometric_map);
