@@ -2541,5 +2541,18 @@ TEST_F(ReliabilityTest, ACalibrationWithNoEstimatorToCalibrateIsRefused) {
                 .odometry.calibration.track_ratio,
             1.01);
 }
+
+// s60: the modal line fit (seed 003's segmentation, split_and_merge's `fit: modal`) holds 180 /
+// bin_deg bins per segment: bin_deg 1e-6 ran for minutes at 720 MB, 1e-7 crashed after 7 GB, and
+// 1e-9 overflowed the count to one bin, a mean of every pair's direction, exit 0.
+TEST_F(ReliabilityTest, ModalFitBinsFinerThanAnyDirectionAreRefused) {
+  const std::string seed003 =
+      Slurp(testing::SourceRoot() / "experiments" / "seed003_ir_panels.yaml");
+  ExpectRefused(seed003, "--set duration_s=0.5 --set geometric_map.segmentation.modal.bin_deg=1e-9",
+                {"geometric_map.segmentation.modal.bin_deg: must be in [0.05, 45], got 1e-09"});
+  ExpectRefused(HallExperiment(0.0, 0.0, "lines: {split_and_merge: {fit: modal}}\n", "{laser: {}}"),
+                "--set lines.split_and_merge.modal.bin_deg=0.01",
+                {"lines.split_and_merge.modal.bin_deg: must be in [0.05, 45], got 0.01"});
+}
 }  // namespace
 }  // namespace plywood
