@@ -1525,6 +1525,11 @@ TEST_F(ReliabilityTest, AStringTagWhereANumberOrABooleanIsReadIsRefused) {
                 {"experiment.yaml: output.snapshot: the YAML tag '!!str' says a string, but the "
                  "key takes true or false"});
   EXPECT_EQ(Run(with("duration_s: 0.5", "duration_s: '0.5'"), "").exit_code, 0);
+  // s60 (s59's left item): inside a waypoint row the tag went unnamed ("expected a row of finite
+  // numbers").
+  ExpectRefused(hall, "--set 'controller={type: waypoints, waypoints: [[1, !!str -2]]}'",
+                {"experiment.yaml: controller.waypoints[0][1]: the YAML tag '!!str' says a "
+                 "string, but the row takes numbers [x_m, y_m] (written '-2'): drop the tag"});
 }
 
 // s56: `--set duration_s.=1` (a trailing dot) set duration_s without a word where `a..b` and `.a`
