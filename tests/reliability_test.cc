@@ -2559,5 +2559,23 @@ TEST_F(ReliabilityTest, ModalFitBinsFinerThanAnyDirectionAreRefused) {
                 "--set lines.split_and_merge.modal.bin_deg=0.01",
                 {"lines.split_and_merge.modal.bin_deg: must be in [0.05, 45], got 0.01"});
 }
+
+// s60: the explorer turns these lengths into counts of grid cells. Beyond the grid's diagonal
+// (11.3137 m for its 4 m half extent) nothing changes but the time (path_clearance_m 20 ran
+// for more than 100 s in seed001_room_2); 1e300 overflowed the count: frontier_wall_band_m dropped
+// the band (the tour ended 28 s later, exit 0), obstacle_join_m ended the run with "plywood:
+// max_gap: must be >= 0".
+TEST_F(ReliabilityTest, ExplorerLengthsBeyondTheGridsDiagonalAreRefused) {
+  const std::string yaml = ExplorerExperiment(-0.8, -0.5);
+  for (const std::string key : {"path_clearance_m=20", "frontier_wall_band_m=1e300",
+                                "obstacle_join_m=1e300", "obstacle_peel_net_free_clearance_m=12"}) {
+    SCOPED_TRACE(key);
+    ExpectRefused(yaml, "--set controller." + key,
+                  {"experiment.yaml: controller." + key.substr(0, key.find('=')) +
+                   ": must be at most the grid's diagonal, 11.313708498984761 m (2 sqrt(2) "
+                   "grid_half_extent_m"});
+  }
+  EXPECT_EQ(Run(yaml, "--set controller.frontier_wall_band_m=11.3").exit_code, 0);
+}
 }  // namespace
 }  // namespace plywood
