@@ -2577,5 +2577,25 @@ TEST_F(ReliabilityTest, ExplorerLengthsBeyondTheGridsDiagonalAreRefused) {
   }
   EXPECT_EQ(Run(yaml, "--set controller.frontier_wall_band_m=11.3").exit_code, 0);
 }
+
+// s60: a line is drawn from one laser scan's points, so a count above the laser's beams, or a
+// minimum length above twice its range, finds no line in any scan: the run reported recall 0 and
+// precision 1, exit 0 (as the replay's counts above a log's fullest scan, s58).
+TEST_F(ReliabilityTest, LineOptionsNoScanCanMeetAreRefused) {
+  // The hall's laser: 180 deg at 0.5 deg, 361 beams, range_max_m 8.
+  const std::string yaml =
+      HallExperiment(0.0, 0.0, "lines: {extractors: [split_and_merge, hough]}\n",
+                     "{laser: {resolution_deg: 0.5, range_max_m: 8}}");
+  ExpectRefused(yaml, "--set lines.split_and_merge.min_points=1000",
+                {"experiment.yaml: lines.split_and_merge.min_points: 1000 is more than the 361 "
+                 "beams of a scan (sensors.laser fov_deg / resolution_deg + 1): a line is drawn "
+                 "from one scan's points, so none could be found; give at most 361"});
+  ExpectRefused(yaml, "--set lines.hough.min_votes=362", {"lines.hough.min_votes: 362 is more"});
+  ExpectRefused(yaml, "--set lines.hough.min_length_m=1e300",
+                {"experiment.yaml: lines.hough.min_length_m: 1e+300 m is more than twice "
+                 "sensors.laser.range_max_m (8 m): no two returns of a scan lie farther apart"});
+  EXPECT_EQ(
+      Run(yaml, "--set lines.hough.min_votes=361 --set lines.hough.min_length_m=16").exit_code, 0);
+}
 }  // namespace
 }  // namespace plywood
