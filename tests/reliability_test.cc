@@ -1525,6 +1525,11 @@ TEST_F(ReliabilityTest, AStringTagWhereANumberOrABooleanIsReadIsRefused) {
                 {"experiment.yaml: output.snapshot: the YAML tag '!!str' says a string, but the "
                  "key takes true or false"});
   EXPECT_EQ(Run(with("duration_s: 0.5", "duration_s: '0.5'"), "").exit_code, 0);
+  // s60 (s59's left item): inside a waypoint row the tag went unnamed ("expected a row of finite
+  // numbers").
+  ExpectRefused(hall, "--set 'controller={type: waypoints, waypoints: [[1, !!str -2]]}'",
+                {"experiment.yaml: controller.waypoints[0][1]: the YAML tag '!!str' says a "
+                 "string, but the row takes numbers [x_m, y_m] (written '-2'): drop the tag"});
 }
 
 // s56: `--set duration_s.=1` (a trailing dot) set duration_s without a word where `a..b` and `.a`
@@ -2489,6 +2494,108 @@ TEST_F(ReliabilityTest, PhysicsThatDivergesIsReportedAtTheTimeItDid) {
   EXPECT_GT(mujoco_s, 0.04) << run.err;
   EXPECT_NEAR(t_s, mujoco_s, 1e-4) << run.err;
   EXPECT_FALSE(fs::exists(dir / "out" / "metrics.json"));
+}
+
+// s60: `--set odometry.ekf.X=...` (a profile line, a sweep axis) on an experiment without an
+// odometry section created the section holding the EKF alone, so the default encoder estimator
+// dropped out of metrics.json; `--set odometry.calibration.track_ratio=1.01` left no estimator
+// at all (an empty `odometry` in metrics.json, exit 0). An override under the absent section now
+// starts from its default; the whole section given by --set, or by the file, is taken as given.
+TEST_F(ReliabilityTest, AnOverrideUnderTheDefaultOdometryKeepsTheEncoderEstimator) {
+  const fs::path root(PLYWOOD_SOURCE_ROOT);
+  const auto enabled = [&](const std::string& yaml, const std::vector<std::string>& overrides) {
+    return sim::ParseExperimentConfig(yaml, "experiment.yaml", root, overrides).odometry.enabled;
+  };
+  using Names = std::vector<std::string>;
+  const std::string yaml = HallExperiment(0.0, 0.0, "", "{encoders: {}, gyro: {}}");
+  EXPECT_EQ(enabled(yaml, {}), Names{"encoder"});
+  EXPECT_EQ(enabled(yaml, {"odometry.ekf.gyro_gain=1"}), (Names{"encoder", "ekf"}));
+  EXPECT_EQ(enabled(yaml, {"odometry.weighted.gyro_gain=0.9", "odometry.ekf.gyro_gain=1"}),
+            (Names{"encoder", "weighted", "ekf"}));
+  const sim::ExperimentConfig calibrated = sim::ParseExperimentConfig(
+      yaml, "experiment.yaml", root, {"odometry.calibration.track_ratio=1.01"});
+  EXPECT_EQ(calibrated.odometry.enabled, Names{"encoder"});
+  EXPECT_EQ(calibrated.odometry.calibration.track_ratio, 1.01);
+  // config.yaml records the estimators, and loads back to the same run.
+  EXPECT_EQ(enabled(sim::ExperimentConfigToYaml(calibrated), {}), Names{"encoder"});
+  // The whole section, from --set or from the file, names exactly what runs.
+  EXPECT_EQ(enabled(yaml, {"odometry={ekf: {}}"}), Names{"ekf"});
+  EXPECT_EQ(enabled(yaml, {"odometry={ekf: {}}", "odometry.ekf.gyro_gain=1"}), Names{"ekf"});
+  EXPECT_EQ(enabled(yaml + "odometry: {ekf: {}}\n", {"odometry.ekf.gyro_gain=1"}), Names{"ekf"});
+  // Without the encoders the default is no estimator, so an override adds only its own.
+  EXPECT_EQ(enabled(HallExperiment(0.0, 0.0, "", "{gyro: {}}"), {"odometry.gyro.gain=1"}),
+            Names{"gyro"});
+}
+
+// s60: a single run applies odometry.calibration only to its estimators; with none running
+// (`odometry: {calibration: {track_ratio: 1.01}}`) the calibration changed no figure, exit 0, and
+// metrics.json held no odometry. The identity, which config.yaml records for such a run, runs.
+TEST_F(ReliabilityTest, ACalibrationWithNoEstimatorToCalibrateIsRefused) {
+  const std::string yaml =
+      HallExperiment(0.0, 0.0) + "odometry: {calibration: {track_ratio: 1.01}}\n";
+  ExpectRefused(yaml, "",
+                {"experiment.yaml: odometry.calibration: wheel_diameter_ratio 1 and track_ratio "
+                 "1.01 calibrate the odometry estimators, but none runs (odometry names none)"});
+  ExpectRefused(HallExperiment(0.0, 0.0, "", "{}"), "--set odometry.calibration.track_ratio=1.01",
+                {"odometry.calibration:", "(sensors.encoders is off)"});
+  const fs::path root(PLYWOOD_SOURCE_ROOT);
+  EXPECT_TRUE(sim::ParseExperimentConfig(yaml, "experiment.yaml", root,
+                                         {"odometry.calibration.track_ratio=1"})
+                  .odometry.enabled.empty());
+  EXPECT_EQ(sim::ParseExperimentConfig(yaml, "experiment.yaml", root, {"odometry.encoder={}"})
+                .odometry.calibration.track_ratio,
+            1.01);
+}
+
+// s60: the modal line fit (seed 003's segmentation, split_and_merge's `fit: modal`) holds 180 /
+// bin_deg bins per segment: bin_deg 1e-6 ran for minutes at 720 MB, 1e-7 crashed after 7 GB, and
+// 1e-9 overflowed the count to one bin, a mean of every pair's direction, exit 0.
+TEST_F(ReliabilityTest, ModalFitBinsFinerThanAnyDirectionAreRefused) {
+  const std::string seed003 =
+      Slurp(testing::SourceRoot() / "experiments" / "seed003_ir_panels.yaml");
+  ExpectRefused(seed003, "--set duration_s=0.5 --set geometric_map.segmentation.modal.bin_deg=1e-9",
+                {"geometric_map.segmentation.modal.bin_deg: must be in [0.05, 45], got 1e-09"});
+  ExpectRefused(HallExperiment(0.0, 0.0, "lines: {split_and_merge: {fit: modal}}\n", "{laser: {}}"),
+                "--set lines.split_and_merge.modal.bin_deg=0.01",
+                {"lines.split_and_merge.modal.bin_deg: must be in [0.05, 45], got 0.01"});
+}
+
+// s60: the explorer turns these lengths into counts of grid cells. Beyond the grid's diagonal
+// (11.3137 m for its 4 m half extent) nothing changes but the time (path_clearance_m 20 ran
+// for more than 100 s in seed001_room_2); 1e300 overflowed the count: frontier_wall_band_m dropped
+// the band (the tour ended 28 s later, exit 0), obstacle_join_m ended the run with "plywood:
+// max_gap: must be >= 0".
+TEST_F(ReliabilityTest, ExplorerLengthsBeyondTheGridsDiagonalAreRefused) {
+  const std::string yaml = ExplorerExperiment(-0.8, -0.5);
+  for (const std::string key : {"path_clearance_m=20", "frontier_wall_band_m=1e300",
+                                "obstacle_join_m=1e300", "obstacle_peel_net_free_clearance_m=12"}) {
+    SCOPED_TRACE(key);
+    ExpectRefused(yaml, "--set controller." + key,
+                  {"experiment.yaml: controller." + key.substr(0, key.find('=')) +
+                   ": must be at most the grid's diagonal, 11.313708498984761 m (2 sqrt(2) "
+                   "grid_half_extent_m"});
+  }
+  EXPECT_EQ(Run(yaml, "--set controller.frontier_wall_band_m=11.3").exit_code, 0);
+}
+
+// s60: a line is drawn from one laser scan's points, so a count above the laser's beams, or a
+// minimum length above twice its range, finds no line in any scan: the run reported recall 0 and
+// precision 1, exit 0 (as the replay's counts above a log's fullest scan, s58).
+TEST_F(ReliabilityTest, LineOptionsNoScanCanMeetAreRefused) {
+  // The hall's laser: 180 deg at 0.5 deg, 361 beams, range_max_m 8.
+  const std::string yaml =
+      HallExperiment(0.0, 0.0, "lines: {extractors: [split_and_merge, hough]}\n",
+                     "{laser: {resolution_deg: 0.5, range_max_m: 8}}");
+  ExpectRefused(yaml, "--set lines.split_and_merge.min_points=1000",
+                {"experiment.yaml: lines.split_and_merge.min_points: 1000 is more than the 361 "
+                 "beams of a scan (sensors.laser fov_deg / resolution_deg + 1): a line is drawn "
+                 "from one scan's points, so none could be found; give at most 361"});
+  ExpectRefused(yaml, "--set lines.hough.min_votes=362", {"lines.hough.min_votes: 362 is more"});
+  ExpectRefused(yaml, "--set lines.hough.min_length_m=1e300",
+                {"experiment.yaml: lines.hough.min_length_m: 1e+300 m is more than twice "
+                 "sensors.laser.range_max_m (8 m): no two returns of a scan lie farther apart"});
+  EXPECT_EQ(
+      Run(yaml, "--set lines.hough.min_votes=361 --set lines.hough.min_length_m=16").exit_code, 0);
 }
 }  // namespace
 }  // namespace plywood

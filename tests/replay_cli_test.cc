@@ -109,6 +109,25 @@ TEST(ReplayCliTest, ExtractorOptionsAreSetByKeyAndBadKeysAreNamed) {
                          "at most 151\n");
     EXPECT_FALSE(fs::exists(dir / "d"));
   }
+  // s60: the same for a minimum length no two points of a scan lie apart (min_length_m 1e300 ran,
+  // rays_explained 0); the wall's 15 m segment still passes a 10 m minimum.
+  const Result too_long =
+      RunPlywood("replay " + log.string() + " --set split_and_merge.min_length_m=100 --out " +
+                     (dir / "e").string(),
+                 dir);
+  EXPECT_EQ(too_long.exit_code, 2) << too_long.err;
+  const std::string too_long_line =
+      "plywood: --set: split_and_merge.min_length_m: 100 m is more "
+      "than twice the farthest return (within range) in " +
+      log.string() + ", ";
+  EXPECT_EQ(too_long.err.rfind(too_long_line, 0), 0u) << too_long.err;
+  EXPECT_FALSE(fs::exists(dir / "e"));
+  const Result long_wall =
+      RunPlywood("replay " + log.string() + " --set split_and_merge.min_length_m=10 --out " +
+                     (dir / "f").string(),
+                 dir);
+  ASSERT_EQ(long_wall.exit_code, 0) << long_wall.err;
+  EXPECT_NE(Slurp(dir / "f" / "metrics.json").find("\"lines\": 3"), std::string::npos);
 
   const std::vector<std::pair<std::string, std::string>> bad{
       {"split_and_merge.min_pointz=5", "split_and_merge.min_pointz: unknown key"},

@@ -11,6 +11,7 @@
 #include "msgs/shortest_number.h"
 #include "perception/lines/line_extractor_factory.h"
 #include "perception/lines/scan_points.h"
+#include "perception/lines/what_each_line_needs.h"
 #include "perception/logs/carmen_log.h"
 #include "perception/logs/regular_file.h"
 #include "render/overlay.h"
@@ -76,22 +77,6 @@ void RequireOptionsOfTheExtractorRun(const LogReplayRequest& request) {
   }
 }
 
-// The options of `extractor` that ask each line for at least that many points (or votes, or
-// inliers) of one scan, by key.
-std::vector<std::pair<std::string, int>> PointsEachLineNeeds(
-    const perception::LineExtractorOptions& o, const std::string& extractor) {
-  if (extractor == "polar_neighbour") return {{"min_points", o.polar_neighbour.min_points}};
-  if (extractor == "split_and_merge") return {{"min_points", o.split_and_merge.filter.min_points}};
-  if (extractor == "incremental") return {{"min_points", o.incremental.filter.min_points}};
-  if (extractor == "ransac") {
-    return {{"min_inliers", o.ransac.min_inliers}, {"min_points", o.ransac.min_points}};
-  }
-  if (extractor == "hough") {
-    return {{"min_votes", o.hough.min_votes}, {"min_points", o.hough.min_points}};
-  }
-  return {};
-}
-
 // A line is drawn from the points of one scan: a --set count above the points of the log's
 // fullest scan finds no line in any scan, and the replay reported rays_explained 0, exit 0 (s57's
 // left item). Only counts the user set: a default above a log's sparse scans is the extractor's
@@ -100,19 +85,36 @@ void RequireCountsTheScansCanMeet(const LogReplayRequest& request,
                                   const perception::LineExtractorOptions& options,
                                   const perception::CarmenLog& log) {
   std::vector<std::pair<std::string, int>> counts;
-  for (const auto& [key, count] : PointsEachLineNeeds(options, request.extractor)) {
+  for (const auto& [key, count] : perception::PointsEachLineNeeds(options, request.extractor)) {
     const std::string dotted = request.extractor + "." + key;
     if (std::any_of(request.overrides.begin(), request.overrides.end(),
                     [&](const auto& set) { return set.substr(0, set.find('=')) == dotted; })) {
       counts.emplace_back(dotted, count);
     }
   }
-  if (counts.empty()) return;
+  // The same for a minimum length above twice the farthest return (no two points of a scan lie
+  // farther apart): min_length_m 1e300 gave rays_explained 0, exit 0 (s60).
+  const std::string length_key = request.extractor + ".min_length_m";
+  const bool length_set =
+      std::any_of(request.overrides.begin(), request.overrides.end(),
+                  [&](const auto& set) { return set.substr(0, set.find('=')) == length_key; });
+  if (counts.empty() && !length_set) return;
   std::size_t points = 0;
+  double farthest_m = 0.0;
   for (const auto& record : log.lasers) {
     const perception::ScanPoints scan = perception::MakeScanPoints(
         record.scan, perception::ScanFilter::ForLog(record.scan.range_max_m));
     points = std::max(points, scan.points.size());
+    for (const auto& point : scan.points) farthest_m = std::max(farthest_m, point.norm());
+  }
+  const double shortest_m = perception::ShortestLineKeptM(options, request.extractor);
+  if (length_set && shortest_m > 2.0 * farthest_m) {
+    throw sim::ConfigError("--set", length_key,
+                           msgs::ShortestNumber(shortest_m) +
+                               " m is more than twice the farthest return (within range) in " +
+                               request.log.string() + ", " + msgs::ShortestNumber(farthest_m) +
+                               " m: no two points of a scan lie farther apart, so no line could "
+                               "be found");
   }
   for (const auto& [dotted, count] : counts) {
     if (static_cast<std::size_t>(count) <= points) continue;

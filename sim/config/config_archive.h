@@ -56,6 +56,16 @@ class YamlReadArchive {
       if (!list[i].IsSequence() || list[i].size() != columns.size()) {
         fields_.Fail(element, "expected a row " + Describe(columns));
       }
+      // A `!!str` number was refused as "expected a row of finite numbers", the tag unnamed (s59's
+      // left item); each scalar read alone says what is wrong with it.
+      for (std::size_t j = 0; j < columns.size(); ++j) {
+        if (list[i][j].Tag() == "tag:yaml.org,2002:str") {
+          fields_.Fail(element + "[" + std::to_string(j) + "]",
+                       "the YAML tag '!!str' says a string, but the row takes numbers " +
+                           Describe(columns) + " (written '" + list[i][j].Scalar() +
+                           "'): drop the tag");
+        }
+      }
       try {
         row.Get("row", &values);
       } catch (const std::exception&) {

@@ -19,6 +19,7 @@
 
 #include "msgs/shortest_number.h"
 #include "perception/geometric_map/range_fusion.h"
+#include "perception/lines/what_each_line_needs.h"
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_archive.h"
 #include "sim/config/config_error.h"
@@ -533,6 +534,54 @@ void RequireEncodersTheOdometryCounts(const YamlFields& top, const ExperimentCon
           ": set robot.nominal.encoder_ticks_per_rev instead (the sensor takes its count)");
 }
 
+// A line is drawn from the points of one laser scan: a count above the laser's beams, or a minimum
+// length above twice its range (no two returns lie farther apart), finds no line in any scan; a
+// run gave recall 0 and precision 1 of nothing, exit 0 (s60: `lines.split_and_merge.min_points:
+// 1000` with the 361-beam laser, `min_length_m: 1e300`). The replay's check of the same counts
+// (s58) against a log's fullest scan. Single runs only: seed 004's RANSAC fits a run's cloud.
+void RequireLinesOneScanCanHold(const YamlFields& top, const ExperimentConfig& config) {
+  if (!config.lines.given || !config.sensors.laser || config.protocol != "single") return;
+  const LaserOptions& laser = *config.sensors.laser;
+  const int beams = laser.BeamCount();
+  for (const std::string& extractor : config.lines.extractors) {
+    const std::string section = "lines." + extractor + ".";
+    for (const auto& [key, count] :
+         perception::PointsEachLineNeeds(config.lines.options, extractor)) {
+      if (count <= beams) continue;
+      top.Fail(section + key, std::to_string(count) + " is more than the " + std::to_string(beams) +
+                                  " beams of a scan (sensors.laser fov_deg / resolution_deg + 1): "
+                                  "a line is drawn from one scan's points, so none could be found; "
+                                  "give at most " +
+                                  std::to_string(beams));
+    }
+    const double shortest_m = perception::ShortestLineKeptM(config.lines.options, extractor);
+    if (shortest_m <= 2.0 * laser.range_max_m) continue;
+    top.Fail(section + "min_length_m",
+             msgs::ShortestNumber(shortest_m) +
+                 " m is more than twice sensors.laser.range_max_m (" +
+                 msgs::ShortestNumber(laser.range_max_m) +
+                 " m): no two returns of a scan lie farther apart, so no line could be found");
+  }
+}
+
+// A single run applies odometry.calibration only to the estimators' geometry: with none running
+// a calibration changed no figure, exit 0 (s60; `odometry: {calibration: {track_ratio: 1.01}}`
+// ran with no odometry in metrics.json). The identity is what config.yaml records for a run
+// without estimators, so it stays accepted; the UMBmark and gain protocols drive with it
+// themselves.
+void RequireAnEstimatorForTheCalibration(const YamlFields& top, const ExperimentConfig& config) {
+  const robot::OdometryCalibration& calibration = config.odometry.calibration;
+  if (config.protocol != "single" || !config.odometry.enabled.empty()) return;
+  if (calibration.wheel_diameter_ratio == 1.0 && calibration.track_ratio == 1.0) return;
+  top.Fail("odometry.calibration",
+           "wheel_diameter_ratio " + msgs::ShortestNumber(calibration.wheel_diameter_ratio) +
+               " and track_ratio " + msgs::ShortestNumber(calibration.track_ratio) +
+               " calibrate the odometry estimators, but none runs (" +
+               (config.sensors.encoders ? "odometry names none" : "sensors.encoders is off") +
+               "), so they would change no figure: enable one, e.g. odometry.encoder: {} with "
+               "sensors.encoders");
+}
+
 }  // namespace
 
 void SpawnPose::Validate() const {
@@ -570,6 +619,8 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   // alias of an anchored value.
   root = CopyWithoutSharedNodes(root);
   NormaliseAliases(root, source);
+  // Read before the overrides: whether the file itself wrote the odometry section (see below).
+  const bool file_gives_odometry = root.IsMap() && std::as_const(root)["odometry"].IsDefined();
   std::vector<std::string> set_keys;
   for (const std::string& assignment : overrides) {
     if (!root.IsMap()) break;  // reported below as "expected a mapping"
@@ -670,9 +721,23 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   ReadSensorSuiteConfig(top.Child("sensors"), config.nominal, config.sensors);
   if (top.Has("odometry")) {
     ReadOdometryConfig(top.Child("odometry"), config.nominal, config.odometry);
+    // An override of one key under an odometry section the file does not have changes that key
+    // only: the section starts from its default, so `--set odometry.ekf.gyro_gain=1` (a profile
+    // line, a sweep axis) adds the EKF beside the encoder estimator instead of dropping it, and
+    // `--set odometry.calibration.track_ratio=1.01` calibrates it instead of leaving no estimator
+    // (s60). `--set 'odometry={ekf: {}}'` gives the whole section, as the file would.
+    const bool whole_section_set =
+        std::find(set_keys.begin(), set_keys.end(), "odometry") != set_keys.end();
+    const std::vector<std::string>& enabled = config.odometry.enabled;
+    if (!file_gives_odometry && !whole_section_set && config.sensors.encoders &&
+        std::find(enabled.begin(), enabled.end(), "encoder") == enabled.end()) {
+      // The first column, as KnownEstimators() orders them.
+      config.odometry.enabled.insert(config.odometry.enabled.begin(), "encoder");
+    }
   } else if (config.sensors.encoders) {
     config.odometry.enabled = {"encoder"};
   }
+  RequireAnEstimatorForTheCalibration(top, config);
   if (top.Has("lines")) ReadLinesConfig(top.Child("lines"), config.lines);
   if (top.Has("geometric_map")) {
     ReadGeometricMapConfig(top.Child("geometric_map"), config.geometric_map);
@@ -684,6 +749,7 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   RequireWaypointsAControlPeriodCanReach(top, config);
   RequireASonarRingForEveryIrScan(top, config);
   RequireCountersThatHoldAnInterval(top, config);
+  RequireLinesOneScanCanHold(top, config);
   RequireEncodersTheOdometryCounts(top, config);
   top.Finish();
   return config;
