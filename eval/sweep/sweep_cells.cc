@@ -68,7 +68,6 @@ std::vector<std::vector<std::string>> AxisCombinations(const SweepSpec& spec) {
   return combos;
 }
 
-// The world's first spawn pose (worlds/README.md), as --set overrides; none if it has none.
 // The axis to blame for a combination of axis values the experiment refuses: the first whose
 // value alone is refused, else the first without whose value the rest load (values refused only
 // together), else "set".
@@ -95,6 +94,7 @@ std::string CombinationCulprit(const SweepSpec& spec, const std::filesystem::pat
   return "set";
 }
 
+// The world's first spawn pose (worlds/README.md), as --set overrides; none if it has none.
 std::vector<std::string> SpawnOverrides(const std::filesystem::path& world) {
   sim::MjModelPtr model;
   try {
