@@ -55,6 +55,11 @@ TEST(Seed001DeterminismTest, SameSeedGivesIdenticalMapAndMetricsBytes) {
     EXPECT_EQ(map_a, Slurp(dir / "b" / file));
     EXPECT_NE(map_a, Slurp(dir / "c" / file));
   }
+  // The explorer's decisions are written beside the map, the same for the same seed (30 s may end
+  // before any decision differs, so seed 2's is not compared).
+  const std::string log_a = Slurp(dir / "a" / "exploration_log.csv");
+  EXPECT_EQ(log_a.rfind("time_s,event,detail,x_m,y_m\n", 0), 0u) << log_a;
+  EXPECT_EQ(log_a, Slurp(dir / "b" / "exploration_log.csv"));
 }
 
 }  // namespace

@@ -106,6 +106,16 @@ void WriteSonarMap(const sim::ExperimentRunner& runner, const std::string& out_d
   std::filesystem::create_directories(out_dir);
   const std::filesystem::path path = std::filesystem::path(out_dir) / "cognitive_map.json";
   sim::WriteTextFile(path, CognitiveMapToJson(explorer->Map()));
+  // The explorer's decisions, so that a run's course (why it ended where it did) can be read
+  // without a debugging build (perception/sonar_map/exploration_event.h); positions to 0.1 mm as
+  // cognitive_map.json's.
+  std::string log = "time_s,event,detail,x_m,y_m\n";
+  for (const perception::ExplorationEvent& e : explorer->events()) {
+    log += sim::FormatNumber(sim::TimeAtStepPrecision(e.time_s, runner.scene().timestep_s())) +
+           "," + e.kind + "," + e.detail + "," + sim::FormatFixed(e.at.x(), 4) + "," +
+           sim::FormatFixed(e.at.y(), 4) + "\n";
+  }
+  sim::WriteTextFile(std::filesystem::path(out_dir) / "exploration_log.csv", log);
 }
 
 void WriteSonarMapPictures(const sim::ExperimentRunner& runner, const std::string& out_dir) {

@@ -372,10 +372,13 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
       path_ = std::move(*frontier);
       heading_to_frontier_ = true;
       target_partition_ = -1;
+      Note("goal", "frontier", path_.back());
       return;
     }
     Finish("map_complete", time_s);
+    return;
   }
+  if (!path_.empty()) Note("goal", "place", path_.back());
 }
 
 bool SonarExplorer::PlanCircuit(const CognitiveMap& map, const PlanningCells& planning,
@@ -407,6 +410,7 @@ bool SonarExplorer::PlanCircuit(const CognitiveMap& map, const PlanningCells& pl
         if (!path.empty()) {
           path_ = std::move(path);
           heading_to_circuit_ = true;
+          Note("goal", "circuit_corner", corner);
           return true;
         }
       }
@@ -524,7 +528,20 @@ std::optional<ObstacleOutline> SonarExplorer::OutlineHeard(const Rect& box) cons
                              kMinPointsPerSide);
 }
 
-void SonarExplorer::GiveUpMove(const Eigen::Vector2d& here) {
+void SonarExplorer::Note(const char* kind, const std::string& detail, const Eigen::Vector2d& at) {
+  if (std::string(kind) == "goal") {
+    for (auto it = events_.rbegin(); it != events_.rend(); ++it) {
+      if (it->kind != "goal") continue;
+      // The same goal again, or the same place refitted by less than a cell.
+      if (it->detail == detail && (it->at - at).norm() < grid_.resolution_m()) return;
+      break;
+    }
+  }
+  events_.push_back({now_s_, kind, detail, at});
+}
+
+void SonarExplorer::GiveUpMove(const Eigen::Vector2d& here, const char* why) {
+  Note("given_up", why, here);
   if (heading_to_circuit_) {
     // The way to this circuit corner is blocked: the circuit goes on from the next one.
     if (circuit_ && !circuit_->corners.empty()) {
@@ -539,6 +556,7 @@ void SonarExplorer::GiveUpMove(const Eigen::Vector2d& here) {
 }
 
 void SonarExplorer::Finish(const char* reason, double time_s) {
+  Note("finish", reason, here_);
   finished_ = true;
   end_reason_ = reason;
   end_time_s_ = time_s;
@@ -756,7 +774,8 @@ Eigen::Vector2d SonarExplorer::ContactPoint(const msgs::Pose2D& X_WR, int panel,
 void SonarExplorer::KeepContactAndDropMove(const msgs::Pose2D& X_WR,
                                            const Eigen::Vector2d& contact) {
   contacts_.push_back(contact);
-  if (perimeter_done_ && !path_.empty()) GiveUpMove(Position(X_WR));
+  Note("contact", "", contact);
+  if (perimeter_done_ && !path_.empty()) GiveUpMove(Position(X_WR), "bump");
   path_.clear();
   heading_to_frontier_ = false;
   last_replan_s_ = -1e9;
@@ -933,7 +952,7 @@ msgs::WheelSpeedCommand SonarExplorer::Explore(const robot::ControllerInput& inp
   }
   if (twist.linear_m_s > 0.0 && (echo || MapBlocksFront(X_WR))) {
     // Negative experience: this move cannot be made; forget the path and replan at once.
-    GiveUpMove(Position(X_WR));
+    GiveUpMove(Position(X_WR), echo ? "front_echo" : "map");
     path_.clear();
     last_replan_s_ = -1e9;
     return {};
@@ -942,6 +961,8 @@ msgs::WheelSpeedCommand SonarExplorer::Explore(const robot::ControllerInput& inp
 }
 
 msgs::WheelSpeedCommand SonarExplorer::Update(const robot::ControllerInput& input) {
+  now_s_ = input.time_s;
+  here_ = Position(input.X_WR_estimate);
   const msgs::WheelSpeedCommand wanted = finished_ ? msgs::WheelSpeedCommand{} : Decide(input);
   // Wheel speeds change at most max_wheel_accel_rad_s2: a step in speed makes the tyres slip on
   // the floor, which the encoders do not see (it was most of the heading drift).
@@ -1004,11 +1025,13 @@ msgs::WheelSpeedCommand SonarExplorer::Decide(const robot::ControllerInput& inpu
     if (last_position_ && follower_->wall())
       perimeter_travelled_m_ += (Position(X_WR) - *last_position_).norm();
     last_position_ = Position(X_WR);
-    if ((std::abs(turned_rad_) >= options_.perimeter_turn_rad &&
-         perimeter_travelled_m_ >= options_.perimeter_min_m) ||
-        input.time_s - *perimeter_start_s_ > options_.perimeter_max_s ||
-        spot_turned_rad_ >= options_.perimeter_stuck_turn_rad) {
+    const bool closed = std::abs(turned_rad_) >= options_.perimeter_turn_rad &&
+                        perimeter_travelled_m_ >= options_.perimeter_min_m;
+    const bool timed_out = input.time_s - *perimeter_start_s_ > options_.perimeter_max_s;
+    if (closed || timed_out || spot_turned_rad_ >= options_.perimeter_stuck_turn_rad) {
       perimeter_done_ = true;
+      Note("perimeter_end", closed ? "closed" : (timed_out ? "time_limit" : "stuck"),
+           Position(X_WR));
     } else {
       // The follower cannot hear an obstacle corner met head-on; a close front echo turns the
       // robot on the spot away from the wall (on its left) until the way ahead is clear, and a

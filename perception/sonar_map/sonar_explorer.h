@@ -9,6 +9,7 @@
 
 #include "perception/sonar_map/beam_free_grid.h"
 #include "perception/sonar_map/cognitive_map.h"
+#include "perception/sonar_map/exploration_event.h"
 #include "perception/sonar_map/frontier_planner.h"
 #include "perception/sonar_map/log_odds_grid.h"
 #include "perception/sonar_map/obstacle_circuit.h"
@@ -196,6 +197,8 @@ class SonarExplorer final : public robot::Controller {
   // consecutive ones meet (not yet used for the map's rectangles).
   const std::vector<ObstacleOutline>& closed_outlines() const { return outlines_; }
   int rings_integrated() const { return rings_integrated_; }
+  // The run's decisions so far, in time order (exploration_event.h).
+  const std::vector<ExplorationEvent>& events() const { return events_; }
   // Whether the robot is turning on the spot out of a wedge between two contacts
   // (bump_wedge_turns).
   bool turning_out_of_wedge() const { return wedge_heading_rad_.has_value(); }
@@ -320,7 +323,10 @@ class SonarExplorer final : public robot::Controller {
                                           const Eigen::Vector2d& target) const;
   // A blocked move (front echo, occupied cell, bump): its transition goes into D and its target
   // is never tried again; a circuit corner's is skipped instead.
-  void GiveUpMove(const Eigen::Vector2d& here);
+  void GiveUpMove(const Eigen::Vector2d& here, const char* why);
+  // Appends an event at the current tick's time; a goal only when it differs from the last one
+  // (its kind, or by a cell or more).
+  void Note(const char* kind, const std::string& detail, const Eigen::Vector2d& at);
   // Marks the cells within frontier_view_m of `at` as looked at.
   void MarkLooked(const Eigen::Vector2d& at);
   std::vector<char> looked_;  // cells within frontier_view_m of a frontier goal the robot reached
@@ -357,6 +363,9 @@ class SonarExplorer final : public robot::Controller {
   bool finished_ = false;
   std::string end_reason_;
   double end_time_s_ = -1.0;
+  std::vector<ExplorationEvent> events_;
+  double now_s_ = 0.0;              // the current tick's time, for events_
+  Eigen::Vector2d here_{0.0, 0.0};  // the robot's position at this tick, for events_
   void Finish(const char* reason, double time_s);
   msgs::WheelSpeedCommand command_;  // last command sent
   double last_command_s_ = -1.0;

@@ -26,21 +26,21 @@ constexpr const char* kStagingInfix = ".partial-";
 // named after something (trajectory.<estimator>.tum, <room>.png, cloud_<name>.png). --force
 // removes these and nothing else.
 bool IsRunOutputFile(const std::string& name) {
-  static constexpr std::string_view kNames[] = {"config.yaml",        "metrics.json",
-                                                "timing.json",        "cognitive_map.json",
-                                                "trajectory.csv",     "walls.csv",
-                                                "laser.log",          "laser_hits.csv",
-                                                "laser_scans.csv",    "lines.csv",
-                                                "circles.csv",        "sonar.csv",
-                                                "ir_ring.csv",        "ir_scanner.csv",
-                                                "encoders.csv",       "gyro.csv",
-                                                "bumpers.csv",        "rooms.csv",
-                                                "umbmark_runs.csv",   "snapshot.png",
-                                                "occupancy_grid.png", "occupancy_partitions.png",
-                                                "segments.png",       "lines_truth.csv",
-                                                "lines_odometry.csv", "geometric_map.json",
-                                                "geometric_map.png",  "scans.csv",
-                                                kRunCompleteFile};
+  static constexpr std::string_view kNames[] = {"config.yaml",         "metrics.json",
+                                                "timing.json",         "cognitive_map.json",
+                                                "trajectory.csv",      "walls.csv",
+                                                "laser.log",           "laser_hits.csv",
+                                                "laser_scans.csv",     "lines.csv",
+                                                "circles.csv",         "sonar.csv",
+                                                "ir_ring.csv",         "ir_scanner.csv",
+                                                "encoders.csv",        "gyro.csv",
+                                                "bumpers.csv",         "rooms.csv",
+                                                "umbmark_runs.csv",    "snapshot.png",
+                                                "occupancy_grid.png",  "occupancy_partitions.png",
+                                                "segments.png",        "lines_truth.csv",
+                                                "lines_odometry.csv",  "geometric_map.json",
+                                                "geometric_map.png",   "scans.csv",
+                                                "exploration_log.csv", kRunCompleteFile};
   for (std::string_view known : kNames) {
     if (name == known) return true;
   }

@@ -70,6 +70,32 @@ TEST(SonarExplorerSimTest, GoesRoundTheObstacle) {
     beside[3] = beside[3] || (y < -kHalf - 0.3 && y > -kHalf - 0.8 && std::abs(x) < kHalf);
   }
   for (int k = 0; k < 4; ++k) EXPECT_TRUE(beside[k]) << "face " << k;
+
+  // The run's course as exploration_log.csv tells it: the perimeter ends first, then circuit
+  // corners whose loop encloses the box (planned round the rectangle fitted then, a first piece of
+  // the box, grown by the wall distance), all in time order; the last event is the end the metrics
+  // report, at its time.
+  const std::vector<perception::ExplorationEvent>& events = explorer->events();
+  ASSERT_GE(events.size(), 3u);
+  EXPECT_EQ(events.front().kind, "perimeter_end");
+  for (std::size_t i = 1; i < events.size(); ++i)
+    EXPECT_LE(events[i - 1].time_s, events[i].time_s) << "event " << i;
+  Eigen::Vector2d low(1e9, 1e9), high(-1e9, -1e9);
+  int corners = 0;
+  for (const perception::ExplorationEvent& e : events) {
+    if (e.kind != "goal" || e.detail != "circuit_corner") continue;
+    ++corners;
+    low = low.cwiseMin(e.at);
+    high = high.cwiseMax(e.at);
+  }
+  EXPECT_GE(corners, 4);
+  EXPECT_LT(low.x(), -kHalf);
+  EXPECT_LT(low.y(), -kHalf);
+  EXPECT_GT(high.x(), kHalf);
+  EXPECT_GT(high.y(), kHalf);
+  EXPECT_EQ(events.back().kind, "finish");
+  EXPECT_EQ(events.back().detail, explorer->end_reason());
+  EXPECT_DOUBLE_EQ(events.back().time_s, explorer->end_time_s());
 }
 
 TEST(SonarExplorerSimTest, CorruptedWeightsFileIsAClearError) {
