@@ -7,6 +7,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <tuple>
 #include <utility>
@@ -68,30 +69,52 @@ std::vector<std::vector<std::string>> AxisCombinations(const SweepSpec& spec) {
   return combos;
 }
 
+// `values[a]` as the override that sets axis a.
+std::string AxisOverride(const SweepSpec& spec, const std::vector<std::string>& values,
+                         std::size_t a) {
+  return spec.axes[a].key + "=" + values[a];
+}
+
+// The first axis whose value alone `fails`, as "set.KEY".
+std::optional<std::string> AxisRefusedAlone(
+    const SweepSpec& spec, const std::vector<std::string>& values,
+    const std::function<bool(const std::vector<std::string>&)>& fails) {
+  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
+    if (fails({AxisOverride(spec, values, a)})) return "set." + spec.axes[a].key;
+  }
+  return std::nullopt;
+}
+
+// The first axis without whose value the other axes' values, on top of `base`, no longer `fail`
+// (values refused only together), as "set.KEY".
+std::optional<std::string> AxisRefusedWithTheRest(
+    const SweepSpec& spec, const std::vector<std::string>& values,
+    const std::vector<std::string>& base,
+    const std::function<bool(const std::vector<std::string>&)>& fails) {
+  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
+    std::vector<std::string> without = base;
+    for (std::size_t b = 0; b < spec.axes.size(); ++b) {
+      if (b != a) without.push_back(AxisOverride(spec, values, b));
+    }
+    if (!fails(without)) return "set." + spec.axes[a].key;
+  }
+  return std::nullopt;
+}
+
 // The axis to blame for a combination of axis values the experiment refuses: the first whose
-// value alone is refused, else the first without whose value the rest load (values refused only
-// together), else "set".
+// value alone is refused, else the first without whose value the rest load, else "set".
 std::string CombinationCulprit(const SweepSpec& spec, const std::filesystem::path& experiment,
                                const std::vector<std::string>& combo) {
-  const auto loads = [&](const std::vector<std::string>& overrides) {
+  const auto fails = [&](const std::vector<std::string>& overrides) {
     try {
       sim::LoadExperimentConfig(experiment, overrides);
-      return true;
-    } catch (const sim::ConfigError&) {
       return false;
+    } catch (const sim::ConfigError&) {
+      return true;
     }
   };
-  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
-    if (!loads({spec.axes[a].key + "=" + combo[a]})) return "set." + spec.axes[a].key;
-  }
-  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
-    std::vector<std::string> without;
-    for (std::size_t b = 0; b < spec.axes.size(); ++b) {
-      if (b != a) without.push_back(spec.axes[b].key + "=" + combo[b]);
-    }
-    if (loads(without)) return "set." + spec.axes[a].key;
-  }
-  return "set";
+  if (auto axis = AxisRefusedAlone(spec, combo, fails)) return *axis;
+  return AxisRefusedWithTheRest(spec, combo, {}, fails).value_or("set");
 }
 
 // The world's first spawn pose (worlds/README.md), as --set overrides; none if it has none.
@@ -139,9 +162,7 @@ std::string CulpritField(const SweepSpec& spec, const SweepCell& cell,
       return true;
     }
   };
-  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
-    if (fails({spec.axes[a].key + "=" + cell.values[a]})) return "set." + spec.axes[a].key;
-  }
+  if (auto axis = AxisRefusedAlone(spec, cell.values, fails)) return *axis;
   if (!cell.world.empty() && fails({cell.overrides.front()})) return "worlds";
   if (!profile_lines.empty() && fails(profile_lines)) return "profiles (" + cell.profile + ")";
   return "experiment";
@@ -204,17 +225,10 @@ std::string ConfigCheckCulprit(const SweepSpec& spec, const SweepCell& cell,
       return true;
     }
   };
-  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
-    if (fails({spec.axes[a].key + "=" + cell.values[a]})) return "set." + spec.axes[a].key;
-  }
-  for (std::size_t a = 0; a < spec.axes.size(); ++a) {
-    std::vector<std::string> without = world_overrides;
-    without.insert(without.end(), profile_lines.begin(), profile_lines.end());
-    for (std::size_t b = 0; b < spec.axes.size(); ++b) {
-      if (b != a) without.push_back(spec.axes[b].key + "=" + cell.values[b]);
-    }
-    if (!fails(without)) return "set." + spec.axes[a].key;
-  }
+  if (auto axis = AxisRefusedAlone(spec, cell.values, fails)) return *axis;
+  std::vector<std::string> base = world_overrides;
+  base.insert(base.end(), profile_lines.begin(), profile_lines.end());
+  if (auto axis = AxisRefusedWithTheRest(spec, cell.values, base, fails)) return *axis;
   if (!profile_lines.empty() && fails(profile_lines)) return "profiles (" + cell.profile + ")";
   if (!cell.world.empty() && fails(world_overrides)) return "worlds";
   return "experiment";
@@ -456,7 +470,7 @@ void CheckSweepOverrides(const SweepSpec& spec) {
     for (const auto& combo : AxisCombinations(spec)) {
       std::vector<std::string> overrides;
       for (std::size_t a = 0; a < spec.axes.size(); ++a)
-        overrides.push_back(spec.axes[a].key + "=" + combo[a]);
+        overrides.push_back(AxisOverride(spec, combo, a));
       try {
         sim::LoadExperimentConfig(experiment, overrides);
       } catch (const sim::ConfigError& e) {
@@ -527,7 +541,7 @@ std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<Swee
             cell.overrides = world_overrides;
             for (const auto& line : profile_lines) cell.overrides.push_back(line);
             for (std::size_t a = 0; a < spec.axes.size(); ++a) {
-              cell.overrides.push_back(spec.axes[a].key + "=" + combo[a]);
+              cell.overrides.push_back(AxisOverride(spec, combo, a));
             }
             if (!own_seed) cell.overrides.push_back("seed=" + std::to_string(seed));
             sim::ExperimentConfig config;
