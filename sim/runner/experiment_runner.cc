@@ -54,8 +54,33 @@ struct FaceForLabels {
   double aox = 0.0, aoy = 0.0, t_numerator = 0.0;
 };
 
+// A scan's beam directions in the sensor frame, (cos, sin) of each beam angle, kept while the
+// scan's angles stay the same: the labels then turn them by the heading (one sincos per scan
+// instead of one per beam, ~7 us of a 361-beam scan).
+struct BeamDirections {
+  double angle_min_rad = 0.0, angle_increment_rad = 0.0;
+  std::vector<double> cos, sin;
+
+  void Update(const msgs::LaserScan& scan) {
+    const std::size_t n = scan.ranges_m.size();
+    if (cos.size() == n && angle_min_rad == scan.angle_min_rad &&
+        angle_increment_rad == scan.angle_increment_rad) {
+      return;
+    }
+    angle_min_rad = scan.angle_min_rad;
+    angle_increment_rad = scan.angle_increment_rad;
+    cos.resize(n);
+    sin.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      cos[i] = std::cos(scan.BeamAngleRad(i));
+      sin[i] = std::sin(scan.BeamAngleRad(i));
+    }
+  }
+};
+
 }  // namespace experiment_runner_detail
 
+using experiment_runner_detail::BeamDirections;
 using experiment_runner_detail::FaceForLabels;
 using experiment_runner_detail::Scheduled;
 
@@ -125,6 +150,7 @@ struct ExperimentRunner::Parts {
   mutable std::vector<std::vector<FaceForLabels>> segments_of_geom;
   mutable std::vector<unsigned> labels_stamp;
   mutable unsigned labels_epoch = 0;
+  mutable std::vector<std::pair<int, BeamDirections>> beam_directions_by_site;
   long rays_per_laser_scan = 0, rays_per_sonar_ring = 0, rays_per_ir_ring = 0, rays_per_ir_scan = 0;
 };
 
@@ -251,6 +277,14 @@ LaserRecord ExperimentRunner::MakeScanRecord(int site_id) const {
   record.hit_segment_ids.assign(record.scan.ranges_m.size(), -1);
   const Eigen::Vector2d origin_W = scene_->SitePoseInWorld(site_id).translation().head<2>();
   const double heading_W = (record.X_WR_truth * record.scan.X_RS).theta_rad;
+  const double cos_heading = std::cos(heading_W), sin_heading = std::sin(heading_W);
+  auto site_beams = std::find_if(p.beam_directions_by_site.begin(), p.beam_directions_by_site.end(),
+                                 [&](const auto& entry) { return entry.first == site_id; });
+  if (site_beams == p.beam_directions_by_site.end()) {
+    site_beams = p.beam_directions_by_site.insert(site_beams, {site_id, {}});
+  }
+  BeamDirections& beams = site_beams->second;
+  beams.Update(record.scan);
   if (++p.labels_epoch == 0) {
     std::fill(p.labels_stamp.begin(), p.labels_stamp.end(), 0u);
     p.labels_epoch = 1;
@@ -268,8 +302,10 @@ LaserRecord ExperimentRunner::MakeScanRecord(int site_id) const {
         f.t_numerator = f.aox * f.aby - f.aoy * f.abx;
       }
     }
-    const double angle = heading_W + record.scan.BeamAngleRad(i);
-    record.hit_segment_ids[i] = HitSegment(faces, std::cos(angle), std::sin(angle));
+    // The beam's world direction: its sensor-frame direction turned by the heading.
+    const double dir_x = cos_heading * beams.cos[i] - sin_heading * beams.sin[i];
+    const double dir_y = sin_heading * beams.cos[i] + cos_heading * beams.sin[i];
+    record.hit_segment_ids[i] = HitSegment(faces, dir_x, dir_y);
   }
   return record;
 }
