@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "perception/sonar_map/frontier_planner.h"
+#include "perception/sonar_map/cell_dilation.h"
 
 namespace plywood::perception {
 

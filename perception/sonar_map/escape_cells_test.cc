@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "perception/sonar_map/cell_dilation.h"
 #include "perception/sonar_map/frontier_planner.h"
 
 namespace plywood::perception {

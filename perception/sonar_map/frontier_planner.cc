@@ -58,24 +58,6 @@ std::vector<char> KeepClusters(const std::vector<char>& mask, int width, int hei
   return out;
 }
 
-std::vector<char> Dilate(const std::vector<char>& mask, int width, int height,
-                         double radius_cells) {
-  std::vector<char> out(mask.size(), 0);
-  const int r = static_cast<int>(std::ceil(radius_cells));
-  const double r2 = radius_cells * radius_cells;
-  for (int iy = 0; iy < height; ++iy)
-    for (int ix = 0; ix < width; ++ix) {
-      if (!mask[Index(ix, iy, width)]) continue;
-      for (int dy = -r; dy <= r; ++dy)
-        for (int dx = -r; dx <= r; ++dx) {
-          const int nx = ix + dx, ny = iy + dy;
-          if (nx < 0 || ny < 0 || nx >= width || ny >= height) continue;
-          if (dx * dx + dy * dy <= r2) out[Index(nx, ny, width)] = 1;
-        }
-    }
-  return out;
-}
-
 std::vector<char> ClearMask(const CellMap& map, double radius_cells) {
   std::vector<char> occupied(map.cells.size(), 0);
   for (std::size_t i = 0; i < map.cells.size(); ++i)

@@ -27,8 +27,6 @@ std::vector<char> FrontierMask(const CellMap& map);
 std::vector<char> KeepClusters(const std::vector<char>& mask, int width, int height, int min_cells);
 // Free cells with no occupied cell whose centre is closer than radius_cells (Euclidean, in cells).
 std::vector<char> ClearMask(const CellMap& map, double radius_cells);
-// Marks every cell whose centre lies within radius_cells of a set cell of `mask`.
-std::vector<char> Dilate(const std::vector<char>& mask, int width, int height, double radius_cells);
 
 // Dijkstra over the 8-connected `traversable` cells (steps cost 1 and sqrt 2; a diagonal step
 // needs both side cells traversable) from `start` (always allowed) to the nearest cell with

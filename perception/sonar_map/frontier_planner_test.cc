@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "perception/sonar_map/cell_dilation.h"
+
 namespace plywood::perception {
 namespace {
 

@@ -10,6 +10,7 @@
 
 #include "msgs/shortest_number.h"
 #include "perception/sonar_map/box_face_sides.h"
+#include "perception/sonar_map/cell_dilation.h"
 #include "perception/sonar_map/contact_clearance.h"
 #include "perception/sonar_map/echo_gated_model.h"
 #include "perception/sonar_map/escape_cells.h"

@@ -67,10 +67,19 @@ SonarNet::SonarNet(const std::vector<int>& hidden, std::uint64_t seed) {
 }
 
 double SonarNet::Forward(const Eigen::Matrix<double, 5, 1>& x) const {
-  Eigen::VectorXd a = x;
-  for (std::size_t l = 0; l + 1 < weights_.size(); ++l)
-    a = (weights_[l] * a + biases_[l]).array().tanh().matrix();
-  const double z = (weights_.back() * a + biases_.back())(0);
+  // Called for every cell under every ring (~500k times a run): the activations live in buffers
+  // kept per thread instead of two allocations per layer. Each product is evaluated into its own
+  // vector first, as the one-line expressions did, so every activation is the same double.
+  thread_local Eigen::VectorXd input, hidden, product;
+  input = x;
+  const Eigen::VectorXd* a = &input;
+  for (std::size_t l = 0; l + 1 < weights_.size(); ++l) {
+    product.noalias() = weights_[l] * *a;
+    hidden = (product + biases_[l]).array().tanh().matrix();
+    a = &hidden;
+  }
+  product.noalias() = weights_.back() * *a;
+  const double z = product(0) + biases_.back()(0);
   const double p = 1.0 / (1.0 + std::exp(-z));
   return std::clamp(p, p_clamp, 1.0 - p_clamp);
 }
