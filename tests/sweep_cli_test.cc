@@ -163,6 +163,12 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
       WriteFile(dir / "standing.yaml", "name: standing\nduration_s: 1\nworld: " + hall.string() +
                                            "\nrobot: {model: p3dx}\nsensors: {encoders: {}}\n")
           .string();
+  // An axis of eight values, and nineteen values after a first, for the cell-limit cases.
+  const auto eight_values = [](const std::string& key) {
+    return "  " + key + ": [0.001, 0.002, 0.003, 0.004, 0.005, 0.006, 0.007, 0.008]\n";
+  };
+  std::string nineteen_more;
+  for (int i = 2; i <= 20; ++i) nineteen_more += ", " + std::to_string(i) + "e-3";
   const std::map<std::string, std::pair<std::string, std::string>> cases{
       // audit s47: cells that resolve alike from values written apart were blamed on `set`,
       // naming neither the axis nor the values.
@@ -338,6 +344,32 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
             "duration_s: [1]}\n",
         "set.controller: its value '{type: square_path, side_m: 2}' sets controller.side_m, which "
         "the later axis set.controller.side_m replaces in every cell"}},
+      // s61: a sweep's cells are all loaded and checked before the first runs, and held in
+      // memory: six axes of 8 values (262144 cells) spent minutes before anything ran, eight ran
+      // out of memory (std::bad_alloc). Each case holds a duration every cell refuses, -1, so that
+      // a build without the limit stops at the first cell instead of expanding them all.
+      {"more_cells_than_the_limit",
+       {"experiment: " + experiment + "\nset:\n  duration_s: [-1, 2, 3, 4, 5, 6, 7, 8]\n" +
+            eight_values("sensors.laser.sigma_m") + eight_values("sensors.encoders.slip_sigma") +
+            eight_values("sensors.gyro.noise_sigma_rad_s") +
+            eight_values("sensors.gyro.bias_rad_s") + eight_values("robot.spawn.theta_deg"),
+        "set: the sweep would have 262144 cells (set 8 x 8 x 8 x 8 x 8 x 8), more than the limit "
+        "of 100000: each is loaded and checked before the first runs"}},
+      // Named by the field that contributes most.
+      {"more_seeds_than_the_limit_allows",
+       {"experiment: " + experiment + "\nseeds: {from: 0, to: 99999}\nset: {duration_s: [-1, 2]}\n",
+        "seeds: the sweep would have 200000 cells (set 2 x seeds 100000), more than the limit "
+        "of 100000"}},
+      // Zipped axes advance as one: 20 x 20 cells, not 20 x 20 x 20 x 20 (160000), so the
+      // refused duration is what stops this sweep.
+      {"zipped_axes_count_once",
+       {"experiment: " + experiment + "\nset:\n  duration_s: [-1" + nineteen_more +
+            "]\n  sensors.laser.sigma_m: [0.001" + nineteen_more +
+            "]\n  sensors.encoders.slip_sigma: [0.001" + nineteen_more +
+            "]\n  sensors.gyro.bias_rad_s: [0.001" + nineteen_more +
+            "]\nzip: [sensors.laser.sigma_m, sensors.encoders.slip_sigma, "
+            "sensors.gyro.bias_rad_s]\n",
+        "set.duration_s: " + experiment + ": duration_s: must be"}},
       {"repeated_group",
        {"experiment: " + experiment + "\ngroup_by: [seed, seed]\n",
         "group_by: 'seed' is listed twice"}},
