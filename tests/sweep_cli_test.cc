@@ -1244,6 +1244,33 @@ TEST(SweepCliTest, UnsafeOrUnclearOutputsAreRefused) {
   EXPECT_EQ(CountRunDirs(dir / "typo"), 6);
 }
 
+// s61: a metric the runs write as text (run.world, exploration.end_reason) was summarised as
+// `n 0` beside every run's value, and the plots stopped on it with a Python traceback ("could not
+// convert string to float: 'hall.xml'"), exit 0.
+TEST(SweepCliTest, AMetricTheRunsWriteAsTextIsRefusedNamingARunsValue) {
+  const fs::path dir = MakeTempDir("SweepTextMetric");
+  const fs::path sweep =
+      WriteFile(dir / "text.yaml",
+                "experiment: " + (SourceRoot() / "tests/data/sweep_default.yaml").string() +
+                    "\nseeds: [1]\nworlds: [" + (SourceRoot() / "worlds/hall.xml").string() +
+                    "]\nset:\n  duration_s: [0.5]\n  output.snapshot: [false]\n"
+                    "metrics: [truth.distance_m, run.world]\n");
+  const fs::path out = dir / "out";
+  const auto r = RunPlywood("sweep " + sweep.string() + " --out " + out.string() + " --quiet", dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(sweep.string() + ": metrics: 'run.world' is not a number (run "),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("'s metrics.json gives 'hall.xml'): summary.csv and the plots take numbers"),
+            std::string::npos)
+      << r.err;
+  // The run is kept and tabled; no summary of it as `n 0`.
+  EXPECT_EQ(CountRunDirs(out), 1);
+  EXPECT_NE(Slurp(out / "results.csv").find("hall.xml"), std::string::npos);
+  EXPECT_FALSE(fs::exists(out / "summary.csv"));
+}
+
 TEST(SweepCliTest, ADifferentSweepIntoTheSameDirectoryIsRefused) {
   const fs::path dir = MakeTempDir("SweepDifferent");
   const fs::path a = WriteFile(dir / "a.yaml", SmallSweep());
