@@ -754,6 +754,41 @@ TEST(SweepCliTest, ValuesValidOnlyTogetherAreSweptAsTheCellsSetThem) {
   EXPECT_NE(cells.find("controller.squeeze_clearance_m=0.23"), std::string::npos) << cells;
 }
 
+// s61: the up-front check loaded the axes' values without the profile's lines the cells apply
+// first: a profile's front_margin_m 0.02 with an axis's squeeze_clearance_m 0.23 (and the two the
+// other way round) refused the sweep, though every cell loads.
+TEST(SweepCliTest, ValuesValidOnlyBesideAProfilesLinesAreSweptAsTheCellsSetThem) {
+  const fs::path dir = MakeTempDir("SweepProfileTogether");
+  const std::string experiment = (SourceRoot() / "experiments/seed001_room_1.yaml").string();
+  const fs::path margin = WriteFile(dir / "margin.set", "controller.front_margin_m=0.02\n");
+  const fs::path squeeze = WriteFile(dir / "squeeze.set", "controller.squeeze_clearance_m=0.23\n");
+  const std::map<std::string, std::string> sweeps{
+      {"axis_beside_profile", "experiment: " + experiment + "\nprofiles: [" + margin.string() +
+                                  "]\nset: {controller.squeeze_clearance_m: [0.23, 0.3]}\n"},
+      {"profile_beside_axis", "experiment: " + experiment + "\nprofiles: [" + squeeze.string() +
+                                  "]\nset: {controller.front_margin_m: [0.02]}\n"}};
+  for (const auto& [name, text] : sweeps) {
+    SCOPED_TRACE(name);
+    const fs::path sweep = WriteFile(dir / (name + ".yaml"), text);
+    const fs::path out = dir / ("out_" + name);
+    const auto r =
+        RunPlywood("sweep " + sweep.string() + " --slurm --dry-run --out " + out.string(), dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string cells = Slurp(out / "cells.json");
+    EXPECT_NE(cells.find("controller.squeeze_clearance_m=0.23"), std::string::npos) << cells;
+    EXPECT_NE(cells.find("controller.front_margin_m=0.02"), std::string::npos) << cells;
+  }
+  // Refused beside the profile: blamed on the axis without which the profile's cell loads.
+  const fs::path wide = WriteFile(dir / "wide.set", "controller.front_margin_m=0.06\n");
+  CheckRefusal(WriteFile(dir / "refused.yaml", "experiment: " + experiment + "\nprofiles: [" +
+                                                   wide.string() +
+                                                   "]\nset: {controller.squeeze_clearance_m: "
+                                                   "[0.26]}\n"),
+               "set.controller.squeeze_clearance_m: " + experiment +
+                   ": controller.squeeze_clearance_m: must be 0 or > robot_radius_m + "
+                   "front_margin_m");
+}
+
 // audit s35: a sweep refused for a bad value left its --out holding its sweep.lock, and the
 // corrected sweep into the same --out was refused: "holds files that are not a sweep (no
 // sweep.yaml); choose another --out".
