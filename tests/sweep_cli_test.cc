@@ -360,6 +360,14 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
        {"experiment: " + experiment + "\nseeds: {from: 0, to: 99999}\nset: {duration_s: [-1, 2]}\n",
         "seeds: the sweep would have 200000 cells (set 2 x seeds 100000), more than the limit "
         "of 100000"}},
+      // Two families of 100000 worlds: 200000 generated before a cell was expanded (main wrote
+      // 5618 of them, 45 MB, in its first 30 s).
+      {"more_worlds_than_the_limit_allows",
+       {"experiment: " + experiment +
+            "\nworlds: [{family: room, count: 100000, seed: 1}, {family: room, count: 100000, "
+            "seed: 2}]\nset: {duration_s: [-1]}\n",
+        "worlds: the sweep would have 200000 cells (worlds 200000), more than the limit of "
+        "100000"}},
       // Zipped axes advance as one: 20 x 20 cells, not 20 x 20 x 20 x 20 (160000), so the
       // refused duration is what stops this sweep.
       {"zipped_axes_count_once",
