@@ -163,6 +163,12 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
       WriteFile(dir / "standing.yaml", "name: standing\nduration_s: 1\nworld: " + hall.string() +
                                            "\nrobot: {model: p3dx}\nsensors: {encoders: {}}\n")
           .string();
+  // An axis of eight values, and nineteen values after a first, for the cell-limit cases.
+  const auto eight_values = [](const std::string& key) {
+    return "  " + key + ": [0.001, 0.002, 0.003, 0.004, 0.005, 0.006, 0.007, 0.008]\n";
+  };
+  std::string nineteen_more;
+  for (int i = 2; i <= 20; ++i) nineteen_more += ", " + std::to_string(i) + "e-3";
   const std::map<std::string, std::pair<std::string, std::string>> cases{
       // audit s47: cells that resolve alike from values written apart were blamed on `set`,
       // naming neither the axis nor the values.
@@ -338,6 +344,40 @@ TEST(SweepCliTest, BadSweepInputNamesFileAndFieldAndRunsNothing) {
             "duration_s: [1]}\n",
         "set.controller: its value '{type: square_path, side_m: 2}' sets controller.side_m, which "
         "the later axis set.controller.side_m replaces in every cell"}},
+      // s61: a sweep's cells are all loaded and checked before the first runs, and held in
+      // memory: six axes of 8 values (262144 cells) spent minutes before anything ran, eight ran
+      // out of memory (std::bad_alloc). Each case holds a duration every cell refuses, -1, so that
+      // a build without the limit stops at the first cell instead of expanding them all.
+      {"more_cells_than_the_limit",
+       {"experiment: " + experiment + "\nset:\n  duration_s: [-1, 2, 3, 4, 5, 6, 7, 8]\n" +
+            eight_values("sensors.laser.sigma_m") + eight_values("sensors.encoders.slip_sigma") +
+            eight_values("sensors.gyro.noise_sigma_rad_s") +
+            eight_values("sensors.gyro.bias_rad_s") + eight_values("robot.spawn.theta_deg"),
+        "set: the sweep would have 262144 cells (set 8 x 8 x 8 x 8 x 8 x 8), more than the limit "
+        "of 100000: each is loaded and checked before the first runs"}},
+      // Named by the field that contributes most.
+      {"more_seeds_than_the_limit_allows",
+       {"experiment: " + experiment + "\nseeds: {from: 0, to: 99999}\nset: {duration_s: [-1, 2]}\n",
+        "seeds: the sweep would have 200000 cells (set 2 x seeds 100000), more than the limit "
+        "of 100000"}},
+      // Two families of 100000 worlds: 200000 generated before a cell was expanded (main wrote
+      // 5618 of them, 45 MB, in its first 30 s).
+      {"more_worlds_than_the_limit_allows",
+       {"experiment: " + experiment +
+            "\nworlds: [{family: room, count: 100000, seed: 1}, {family: room, count: 100000, "
+            "seed: 2}]\nset: {duration_s: [-1]}\n",
+        "worlds: the sweep would have 200000 cells (worlds 200000), more than the limit of "
+        "100000"}},
+      // Zipped axes advance as one: 20 x 20 cells, not 20 x 20 x 20 x 20 (160000), so the
+      // refused duration is what stops this sweep.
+      {"zipped_axes_count_once",
+       {"experiment: " + experiment + "\nset:\n  duration_s: [-1" + nineteen_more +
+            "]\n  sensors.laser.sigma_m: [0.001" + nineteen_more +
+            "]\n  sensors.encoders.slip_sigma: [0.001" + nineteen_more +
+            "]\n  sensors.gyro.bias_rad_s: [0.001" + nineteen_more +
+            "]\nzip: [sensors.laser.sigma_m, sensors.encoders.slip_sigma, "
+            "sensors.gyro.bias_rad_s]\n",
+        "set.duration_s: " + experiment + ": duration_s: must be"}},
       {"repeated_group",
        {"experiment: " + experiment + "\ngroup_by: [seed, seed]\n",
         "group_by: 'seed' is listed twice"}},
@@ -720,6 +760,41 @@ TEST(SweepCliTest, ValuesValidOnlyTogetherAreSweptAsTheCellsSetThem) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string cells = Slurp(dir / "out" / "cells.json");
   EXPECT_NE(cells.find("controller.squeeze_clearance_m=0.23"), std::string::npos) << cells;
+}
+
+// s61: the up-front check loaded the axes' values without the profile's lines the cells apply
+// first: a profile's front_margin_m 0.02 with an axis's squeeze_clearance_m 0.23 (and the two the
+// other way round) refused the sweep, though every cell loads.
+TEST(SweepCliTest, ValuesValidOnlyBesideAProfilesLinesAreSweptAsTheCellsSetThem) {
+  const fs::path dir = MakeTempDir("SweepProfileTogether");
+  const std::string experiment = (SourceRoot() / "experiments/seed001_room_1.yaml").string();
+  const fs::path margin = WriteFile(dir / "margin.set", "controller.front_margin_m=0.02\n");
+  const fs::path squeeze = WriteFile(dir / "squeeze.set", "controller.squeeze_clearance_m=0.23\n");
+  const std::map<std::string, std::string> sweeps{
+      {"axis_beside_profile", "experiment: " + experiment + "\nprofiles: [" + margin.string() +
+                                  "]\nset: {controller.squeeze_clearance_m: [0.23, 0.3]}\n"},
+      {"profile_beside_axis", "experiment: " + experiment + "\nprofiles: [" + squeeze.string() +
+                                  "]\nset: {controller.front_margin_m: [0.02]}\n"}};
+  for (const auto& [name, text] : sweeps) {
+    SCOPED_TRACE(name);
+    const fs::path sweep = WriteFile(dir / (name + ".yaml"), text);
+    const fs::path out = dir / ("out_" + name);
+    const auto r =
+        RunPlywood("sweep " + sweep.string() + " --slurm --dry-run --out " + out.string(), dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string cells = Slurp(out / "cells.json");
+    EXPECT_NE(cells.find("controller.squeeze_clearance_m=0.23"), std::string::npos) << cells;
+    EXPECT_NE(cells.find("controller.front_margin_m=0.02"), std::string::npos) << cells;
+  }
+  // Refused beside the profile: blamed on the axis without which the profile's cell loads.
+  const fs::path wide = WriteFile(dir / "wide.set", "controller.front_margin_m=0.06\n");
+  CheckRefusal(WriteFile(dir / "refused.yaml", "experiment: " + experiment + "\nprofiles: [" +
+                                                   wide.string() +
+                                                   "]\nset: {controller.squeeze_clearance_m: "
+                                                   "[0.26]}\n"),
+               "set.controller.squeeze_clearance_m: " + experiment +
+                   ": controller.squeeze_clearance_m: must be 0 or > robot_radius_m + "
+                   "front_margin_m");
 }
 
 // audit s35: a sweep refused for a bad value left its --out holding its sweep.lock, and the
@@ -1210,6 +1285,33 @@ TEST(SweepCliTest, UnsafeOrUnclearOutputsAreRefused) {
             std::string::npos)
       << r.err;
   EXPECT_EQ(CountRunDirs(dir / "typo"), 6);
+}
+
+// s61: a metric the runs write as text (run.world, exploration.end_reason) was summarised as
+// `n 0` beside every run's value, and the plots stopped on it with a Python traceback ("could not
+// convert string to float: 'hall.xml'"), exit 0.
+TEST(SweepCliTest, AMetricTheRunsWriteAsTextIsRefusedNamingARunsValue) {
+  const fs::path dir = MakeTempDir("SweepTextMetric");
+  const fs::path sweep =
+      WriteFile(dir / "text.yaml",
+                "experiment: " + (SourceRoot() / "tests/data/sweep_default.yaml").string() +
+                    "\nseeds: [1]\nworlds: [" + (SourceRoot() / "worlds/hall.xml").string() +
+                    "]\nset:\n  duration_s: [0.5]\n  output.snapshot: [false]\n"
+                    "metrics: [truth.distance_m, run.world]\n");
+  const fs::path out = dir / "out";
+  const auto r = RunPlywood("sweep " + sweep.string() + " --out " + out.string() + " --quiet", dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(sweep.string() + ": metrics: 'run.world' is not a number (run "),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("'s metrics.json gives 'hall.xml'): summary.csv and the plots take numbers"),
+            std::string::npos)
+      << r.err;
+  // The run is kept and tabled; no summary of it as `n 0`.
+  EXPECT_EQ(CountRunDirs(out), 1);
+  EXPECT_NE(Slurp(out / "results.csv").find("hall.xml"), std::string::npos);
+  EXPECT_FALSE(fs::exists(out / "summary.csv"));
 }
 
 TEST(SweepCliTest, ADifferentSweepIntoTheSameDirectoryIsRefused) {

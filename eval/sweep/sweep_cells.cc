@@ -101,22 +101,6 @@ std::optional<std::string> AxisRefusedWithTheRest(
   return std::nullopt;
 }
 
-// The axis to blame for a combination of axis values the experiment refuses: the first whose
-// value alone is refused, else the first without whose value the rest load, else "set".
-std::string CombinationCulprit(const SweepSpec& spec, const std::filesystem::path& experiment,
-                               const std::vector<std::string>& combo) {
-  const auto fails = [&](const std::vector<std::string>& overrides) {
-    try {
-      sim::LoadExperimentConfig(experiment, overrides);
-      return false;
-    } catch (const sim::ConfigError&) {
-      return true;
-    }
-  };
-  if (auto axis = AxisRefusedAlone(spec, combo, fails)) return *axis;
-  return AxisRefusedWithTheRest(spec, combo, {}, fails).value_or("set");
-}
-
 // The world's first spawn pose (worlds/README.md), as --set overrides; none if it has none.
 std::vector<std::string> SpawnOverrides(const std::filesystem::path& world) {
   sim::MjModelPtr model;
@@ -400,6 +384,27 @@ std::string ProfileCulprit(const std::filesystem::path& experiment,
   return profile.string();
 }
 
+// The sweep field to blame for a cell's overrides the experiment refuses (a profile's lines, when
+// the sweep has profiles, then the axes' values): the first axis whose value alone is refused, else
+// the first without whose value the rest load, else the profile (its first line refused alone),
+// else "set".
+std::string CombinationCulprit(const SweepSpec& spec, const std::filesystem::path& experiment,
+                               const std::vector<std::string>& combo,
+                               const std::filesystem::path& profile,
+                               const std::vector<std::string>& profile_lines) {
+  const auto fails = [&](const std::vector<std::string>& overrides) {
+    try {
+      sim::LoadExperimentConfig(experiment, overrides);
+      return false;
+    } catch (const sim::ConfigError&) {
+      return true;
+    }
+  };
+  if (auto axis = AxisRefusedAlone(spec, combo, fails)) return *axis;
+  if (auto axis = AxisRefusedWithTheRest(spec, combo, profile_lines, fails)) return *axis;
+  return profile.empty() ? "set" : "profiles: " + ProfileCulprit(experiment, profile);
+}
+
 }  // namespace
 
 std::string WorldContentHash(const std::filesystem::path& world) {
@@ -434,48 +439,50 @@ std::vector<std::string> ReadProfile(const std::filesystem::path& path) {
 }
 
 void CheckSweepOverrides(const SweepSpec& spec) {
-  for (const auto& experiment : spec.experiments) {
-    const auto check = [&](const std::vector<std::string>& overrides, const std::string& field) {
-      try {
-        sim::LoadExperimentConfig(experiment, overrides);
-      } catch (const sim::ConfigError& e) {
-        throw sim::ConfigError(spec.source_file, field, e.what());
+  // Each profile's lines as the cells apply them, before the axes' values; one empty set without
+  // profiles.
+  std::vector<std::pair<std::filesystem::path, std::vector<std::string>>> profiles;
+  for (const auto& profile : spec.profiles) {
+    std::vector<std::string> lines;
+    for (ProfileLine& line : ReadProfileLines(profile)) {
+      if (ProfileOverridesTheWorldsAxis(spec, line.key)) {
+        throw sim::ConfigError(
+            spec.source_file,
+            "profiles: " + profile.string() + ": line " + std::to_string(line.number),
+            "world: the profile would replace the sweep's worlds in every cell, which "
+            "results.csv would still label with the worlds axis: give worlds in the sweep, not "
+            "in a profile");
       }
-    };
-    check({}, "experiment");
-    for (const auto& profile : spec.profiles) {
-      std::vector<std::string> lines;
-      for (ProfileLine& line : ReadProfileLines(profile)) {
-        if (ProfileOverridesTheWorldsAxis(spec, line.key)) {
-          throw sim::ConfigError(
-              spec.source_file,
-              "profiles: " + profile.string() + ": line " + std::to_string(line.number),
-              "world: the profile would replace the sweep's worlds in every cell, which "
-              "results.csv would still label with the worlds axis: give worlds in the sweep, not "
-              "in a profile");
-        }
-        lines.push_back(std::move(line.text));
-      }
-      try {
-        sim::LoadExperimentConfig(experiment, lines);
-      } catch (const sim::ConfigError& e) {
-        // Named by the profile file and line (was only "profiles", then the experiment).
-        throw sim::ConfigError(spec.source_file, "profiles: " + ProfileCulprit(experiment, profile),
-                               e.what());
-      }
+      lines.push_back(std::move(line.text));
     }
-    // Every combination of the axes' values as the cells will set them, not each value alone:
-    // fields checked against each other (squeeze_clearance_m against front_margin_m) refused an
-    // axis whose values are fine beside another axis's (s60).
-    for (const auto& combo : AxisCombinations(spec)) {
-      std::vector<std::string> overrides;
-      for (std::size_t a = 0; a < spec.axes.size(); ++a)
-        overrides.push_back(AxisOverride(spec, combo, a));
-      try {
-        sim::LoadExperimentConfig(experiment, overrides);
-      } catch (const sim::ConfigError& e) {
-        throw sim::ConfigError(spec.source_file, CombinationCulprit(spec, experiment, combo),
-                               e.what());
+    profiles.emplace_back(profile, std::move(lines));
+  }
+  if (profiles.empty()) profiles.emplace_back();
+  const std::vector<std::vector<std::string>> combos = AxisCombinations(spec);
+  for (const auto& experiment : spec.experiments) {
+    try {
+      sim::LoadExperimentConfig(experiment, {});
+    } catch (const sim::ConfigError& e) {
+      throw sim::ConfigError(spec.source_file, "experiment", e.what());
+    }
+    // Every combination of the axes' values on top of each profile, as the cells will set them,
+    // not each value alone: fields checked against each other (squeeze_clearance_m against
+    // front_margin_m) refused an axis whose values are fine beside another axis's (s60), or
+    // beside a profile's line (s61; a profile's line fine beside an axis's value alike).
+    for (const auto& [profile, lines] : profiles) {
+      for (const auto& combo : combos) {
+        std::vector<std::string> overrides = lines;
+        for (std::size_t a = 0; a < spec.axes.size(); ++a)
+          overrides.push_back(AxisOverride(spec, combo, a));
+        try {
+          sim::LoadExperimentConfig(experiment, overrides);
+        } catch (const sim::ConfigError& e) {
+          // A profile is named by its file and the first line refused alone (was only
+          // "profiles", then the experiment).
+          throw sim::ConfigError(spec.source_file,
+                                 CombinationCulprit(spec, experiment, combo, profile, lines),
+                                 e.what());
+        }
       }
     }
   }

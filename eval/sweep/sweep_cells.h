@@ -55,9 +55,9 @@ inline constexpr const char* kSweepFolderPrefix = "@SWEEP/";
 // @throws sim::ConfigError naming the sweep file and the field.
 std::vector<SweepCell> ExpandCells(const SweepSpec& spec, const std::vector<SweepWorld>& worlds);
 
-// Checks every profile, and every combination of the set values the cells will run, against
-// every base experiment, so a key path the experiment does not have, or values it refuses together,
-// fail before any world is generated or any run starts.
+// Checks every combination of the set values the cells will run, on top of each profile's lines,
+// against every base experiment, so a key path the experiment does not have, or values it refuses
+// together, fail before any world is generated or any run starts.
 // @throws sim::ConfigError naming the sweep file and the field.
 void CheckSweepOverrides(const SweepSpec& spec);
 

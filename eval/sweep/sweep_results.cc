@@ -261,6 +261,22 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
                              "'" + metric + "' is in no run's metrics.json" +
                                  (near.empty() ? std::string() : " (there are: " + near + ")"));
     }
+    // Summarised and plotted as numbers: one the runs write as text (run.world,
+    // exploration.end_reason) was summarised as `n 0` beside every run's value, and the plots
+    // stopped on it with a Python traceback, exit 0 (s61). A null (NaN) is a number not defined.
+    for (const std::string& metric : chosen) {
+      for (const Row& row : finished) {
+        const auto text = row.metrics.text.find(metric);
+        if (text == row.metrics.text.end() || text->second.empty() ||
+            row.metrics.numbers.count(metric) > 0)
+          continue;
+        throw sim::ConfigError(meta.value("sweep_file", out_dir.string()), "metrics",
+                               "'" + metric + "' is not a number (run " + row.cell[0] +
+                                   "'s metrics.json gives '" + text->second +
+                                   "'): summary.csv and the plots take numbers; its values are "
+                                   "in results.csv, so leave it out of metrics:");
+      }
+    }
   }
 
   // summary.csv: groups in order of first appearance.

@@ -4,6 +4,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <optional>
 #include <set>
@@ -323,6 +324,66 @@ void RequireUtf8(const SweepSpec& spec, const sim::YamlFields& top) {
   }
 }
 
+// The most cells a sweep may have. Every cell is loaded and checked before the first runs (about
+// 1 ms each) and held in memory and cells.json (about 0.5 kB each): six axes of 8 values (262144
+// cells) spent minutes and a GB before anything ran, eight axes ran out of memory (s61). 100000
+// is also the most seeds a range and the most worlds a family may give.
+constexpr long double kMaxSweepCells = 100000;
+
+// The number of cells as the factors multiply (experiment x worlds x profiles x set x seeds, the
+// zipped axes once): refused above kMaxSweepCells, naming the field that contributes most.
+void RequireCellsWithinTheLimit(const SweepSpec& spec, const sim::YamlFields& top) {
+  struct Factor {
+    std::string field;
+    long double count;
+    std::string made_of;  // how the count is made (the set axes' lengths), or empty
+  };
+  long double worlds = static_cast<long double>(spec.world_files.size());
+  for (const GeneratedWorlds& g : spec.generated) worlds += g.count;
+  long double combinations = 1;
+  std::vector<std::string> lengths;  // of the axes crossed, the zip group once
+  bool zip_counted = false;
+  for (const SweepAxis& axis : spec.axes) {
+    const bool zipped = std::find(spec.zip.begin(), spec.zip.end(), axis.key) != spec.zip.end();
+    if (zipped && zip_counted) continue;  // the zip group advances as one axis
+    zip_counted = zip_counted || zipped;
+    combinations *= static_cast<long double>(axis.values.size());
+    lengths.push_back(std::to_string(axis.values.size()));
+  }
+  std::string crossed;  // "8 x 8": each crossed axis's length
+  for (const std::string& length : lengths) crossed += (crossed.empty() ? "" : " x ") + length;
+  const std::vector<Factor> factors{
+      {"experiment", static_cast<long double>(spec.experiments.size()), ""},
+      {"worlds", std::max<long double>(worlds, 1), ""},
+      {"profiles", std::max<long double>(static_cast<long double>(spec.profiles.size()), 1), ""},
+      {"set", combinations, lengths.size() > 1 ? crossed : ""},
+      {"seeds", std::max<long double>(static_cast<long double>(spec.seeds.size()), 1), ""}};
+  long double cells = 1;
+  for (const Factor& f : factors) cells *= f.count;
+  if (cells <= kMaxSweepCells) return;
+  const auto count_text = [](long double n) {
+    char text[64];
+    if (n < 1e18L) {
+      std::snprintf(text, sizeof(text), "%.0Lf", n);
+    } else {
+      std::snprintf(text, sizeof(text), "%.3Lg", n);  // inf for counts past long double
+    }
+    return std::string(text);
+  };
+  const Factor* largest = &factors.front();
+  std::string product;
+  for (const Factor& f : factors) {
+    if (f.count > largest->count) largest = &f;
+    if (f.count <= 1) continue;
+    product += (product.empty() ? "" : " x ") + f.field + " " +
+               (f.made_of.empty() ? count_text(f.count) : f.made_of);
+  }
+  top.Fail(largest->field, "the sweep would have " + count_text(cells) + " cells (" + product +
+                               "), more than the limit of " + count_text(kMaxSweepCells) +
+                               ": each is loaded and checked before the first runs; split the "
+                               "sweep, zip axes that advance together, or give fewer values");
+}
+
 }  // namespace
 
 SweepSpec LoadSweepSpec(const fs::path& path) {
@@ -413,6 +474,7 @@ SweepSpec LoadSweepSpec(const fs::path& path) {
   }
   top.Finish();
   RequireUtf8(spec, top);
+  RequireCellsWithinTheLimit(spec, top);
   return spec;
 }
 

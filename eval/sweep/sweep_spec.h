@@ -50,7 +50,8 @@ struct SweepSpec {
 
 // Reads and checks a sweep file. Paths resolve against the sweep file's folder, then the data root.
 // @throws sim::ConfigError naming the file and the field (unknown key, empty list, bad range,
-// unknown family, negative count, a glob that matches nothing, zip axes of unequal length).
+// unknown family, negative count, a glob that matches nothing, zip axes of unequal length, more
+// than 100000 cells).
 SweepSpec LoadSweepSpec(const std::filesystem::path& path);
 
 }  // namespace plywood::eval
