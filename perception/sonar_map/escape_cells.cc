@@ -1,6 +1,8 @@
 #include "perception/sonar_map/escape_cells.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace plywood::perception {
 
@@ -26,11 +28,49 @@ std::vector<char> EscapeCells(const std::vector<char>& around, const std::vector
   if (start.x() < 0 || start.y() < 0 || start.x() >= width || start.y() >= height) return out;
   const int own =
       NearestBlockedDistance2(blocked, width, height, start.x(), start.y(), radius_cells);
-  for (int iy = 0; iy < height; ++iy)
+  int first_row = height, last_row = -1;
+  for (int iy = 0; iy < height; ++iy) {
+    const char* a = around.data() + static_cast<std::size_t>(iy) * width;
+    if (std::find(a, a + width, 1) == a + width) continue;
+    first_row = std::min(first_row, iy);
+    last_row = iy;
+  }
+  if (last_row < 0) return out;
+  // NearestBlockedDistance2 for every cell of `around` at once: within a row the nearest blocking
+  // cell has the least dx^2, so the least dx^2 + dy^2 over the rows within reach is the nearest
+  // blocking cell (the same exact integers). Each row's distance to its nearest blocking cell is
+  // taken once, for the rows within reach of the cells asked about.
+  const int reach = static_cast<int>(
+      std::min(std::ceil(radius_cells), static_cast<double>(std::max(width, height))));
+  const double reach_squared = radius_cells * radius_cells;
+  const int far = reach + 1;
+  const int row_lo = std::max(0, first_row - reach),
+            row_hi = std::min(height - 1, last_row + reach);
+  std::vector<int> row_distance(static_cast<std::size_t>(row_hi - row_lo + 1) * width, far);
+  for (int iy = row_lo; iy <= row_hi; ++iy) {
+    const char* b = blocked.data() + static_cast<std::size_t>(iy) * width;
+    int* d = row_distance.data() + static_cast<std::size_t>(iy - row_lo) * width;
+    int last = -far - 1;
+    for (int ix = 0; ix < width; ++ix) {
+      if (b[ix]) last = ix;
+      d[ix] = std::min(far, ix - last);
+    }
+    last = std::numeric_limits<int>::max() / 2;
+    for (int ix = width - 1; ix >= 0; --ix) {
+      if (b[ix]) last = ix;
+      d[ix] = std::min(d[ix], std::min(far, last - ix));
+    }
+  }
+  for (int iy = first_row; iy <= last_row; ++iy)
     for (int ix = 0; ix < width; ++ix) {
       const std::size_t i = static_cast<std::size_t>(iy) * width + ix;
       if (!around[i]) continue;
-      const int d2 = NearestBlockedDistance2(blocked, width, height, ix, iy, radius_cells);
+      int d2 = -1;
+      for (int y = std::max(row_lo, iy - reach); y <= std::min(row_hi, iy + reach); ++y) {
+        const int dx = row_distance[static_cast<std::size_t>(y - row_lo) * width + ix];
+        const int candidate = dx * dx + (y - iy) * (y - iy);
+        if (dx <= reach && candidate <= reach_squared && (d2 < 0 || candidate < d2)) d2 = candidate;
+      }
       // -1: nothing blocking within the radius, as far as any cell can be.
       out[i] = d2 < 0 || (own >= 0 && d2 >= own);
     }

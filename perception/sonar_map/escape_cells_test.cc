@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <vector>
 
 #include "perception/sonar_map/cell_dilation.h"
@@ -122,6 +123,40 @@ TEST(EscapeCellsTest, ARobotKeepingTheClearanceGetsNoCellThatDoesNot) {
     for (int ix = 0; ix < kW; ++ix)
       EXPECT_EQ(escape[Index(ix, iy)], around[Index(ix, iy)] && !near[Index(ix, iy)])
           << ix << "," << iy;
+}
+
+// EscapeCells takes every cell's nearest blocking cell from per-row distances: the same answer as
+// asking NearestBlockedDistance2 cell by cell (the definition), on random rasters, robots and
+// radii.
+TEST(EscapeCellsTest, EveryCellIsJudgedByItsNearestBlockingCellAsOneByOne) {
+  std::mt19937 rng(11);
+  int cases = 0;
+  for (const int width : {1, 5, 31, 60})
+    for (const int height : {1, 4, 45})
+      for (const double fill : {0.0, 0.01, 0.1, 0.5})
+        for (const double radius : {0.0, 1.0, 2.5, 6.0, 9.0, 9.0 - 1e-9, 30.0}) {
+          std::bernoulli_distribution blocked_draw(fill), around_draw(0.4);
+          std::vector<char> blocked(static_cast<std::size_t>(width) * height),
+              around(blocked.size());
+          for (char& c : blocked) c = blocked_draw(rng) ? 1 : 0;
+          for (char& c : around) c = around_draw(rng) ? 1 : 0;
+          const Eigen::Vector2i start(static_cast<int>(rng() % width),
+                                      static_cast<int>(rng() % height));
+          std::vector<char> expected(blocked.size(), 0);
+          const int own =
+              NearestBlockedDistance2(blocked, width, height, start.x(), start.y(), radius);
+          for (int iy = 0; iy < height; ++iy)
+            for (int ix = 0; ix < width; ++ix) {
+              const std::size_t i = static_cast<std::size_t>(iy) * width + ix;
+              if (!around[i]) continue;
+              const int d2 = NearestBlockedDistance2(blocked, width, height, ix, iy, radius);
+              expected[i] = d2 < 0 || (own >= 0 && d2 >= own);
+            }
+          ASSERT_EQ(EscapeCells(around, blocked, width, height, start, radius), expected)
+              << width << " x " << height << ", fill " << fill << ", radius " << radius;
+          ++cases;
+        }
+  EXPECT_EQ(cases, 4 * 3 * 4 * 7);
 }
 
 }  // namespace
