@@ -594,6 +594,12 @@ SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here
     const Eigen::Vector2i c = grid_.CellAt(p);
     if (c.x() >= 0) touched[static_cast<std::size_t>(c.y()) * W + c.x()] = 1;
   }
+  // The cells of the blocking echoes, found once rather than compared with every cell.
+  std::vector<char> echo_cell(out.cells.cells.size(), 0);
+  for (const Eigen::Vector2d& e : blocking_echoes_) {
+    const Eigen::Vector2i c = grid_.CellAt(e);
+    if (c.x() >= 0) echo_cell[static_cast<std::size_t>(c.y()) * W + c.x()] = 1;
+  }
   for (int iy = 0; iy < H; ++iy)
     for (int ix = 0; ix < W; ++ix) {
       const std::size_t i = static_cast<std::size_t>(iy) * W + ix;
@@ -613,9 +619,7 @@ SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here
       bool in_obstacle = false;
       for (const Rect& o : obstacles)
         in_obstacle = in_obstacle || o.Contains(grid_.CellCentre(ix, iy));
-      heard[i] = state == CellState::kOccupied;
-      for (const Eigen::Vector2d& e : blocking_echoes_)
-        if (grid_.CellAt(e) == Eigen::Vector2i(ix, iy)) heard[i] = 1;
+      heard[i] = state == CellState::kOccupied || echo_cell[i];
       occupied[i] = heard[i] || in_obstacle;
     }
   const double contact_cells = options_.contact_clearance_m / res;
