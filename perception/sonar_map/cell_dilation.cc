@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <limits>
+
+#include "perception/sonar_map/row_distances.h"
 
 namespace plywood::perception {
 
@@ -29,26 +30,12 @@ std::vector<char> Dilate(const std::vector<char>& mask, int width, int height,
   }
   // Per row, each column's distance to the nearest set cell of the same row (capped: anything
   // beyond `reach` is out of reach alike).
-  const int far = reach + 1;
-  std::vector<int> row_distance(mask.size(), far);
+  const std::vector<int> row_distance =
+      RowDistancesToNearestSetCell(mask, width, 0, height - 1, reach + 1);
   std::vector<char> row_has_set(height, 0);
   for (int iy = 0; iy < height; ++iy) {
     const char* m = mask.data() + static_cast<std::size_t>(iy) * width;
-    int* d = row_distance.data() + static_cast<std::size_t>(iy) * width;
-    int last = -far - 1;
-    for (int ix = 0; ix < width; ++ix) {
-      if (m[ix]) {
-        last = ix;
-        row_has_set[iy] = 1;
-      }
-      d[ix] = std::min(far, ix - last);
-    }
-    if (!row_has_set[iy]) continue;
-    last = std::numeric_limits<int>::max() / 2;
-    for (int ix = width - 1; ix >= 0; --ix) {
-      if (m[ix]) last = ix;
-      d[ix] = std::min(d[ix], std::min(far, last - ix));
-    }
+    row_has_set[iy] = std::any_of(m, m + width, [](char c) { return c != 0; });
   }
   // A cell is marked when some row within reach has a set cell within that row's half width.
   for (int iy = 0; iy < height; ++iy) {

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+
+#include "perception/sonar_map/row_distances.h"
 
 namespace plywood::perception {
 
@@ -31,7 +32,7 @@ std::vector<char> EscapeCells(const std::vector<char>& around, const std::vector
   int first_row = height, last_row = -1;
   for (int iy = 0; iy < height; ++iy) {
     const char* a = around.data() + static_cast<std::size_t>(iy) * width;
-    if (std::find(a, a + width, 1) == a + width) continue;
+    if (std::none_of(a, a + width, [](char c) { return c != 0; })) continue;
     first_row = std::min(first_row, iy);
     last_row = iy;
   }
@@ -43,24 +44,10 @@ std::vector<char> EscapeCells(const std::vector<char>& around, const std::vector
   const int reach = static_cast<int>(
       std::min(std::ceil(radius_cells), static_cast<double>(std::max(width, height))));
   const double reach_squared = radius_cells * radius_cells;
-  const int far = reach + 1;
   const int row_lo = std::max(0, first_row - reach),
             row_hi = std::min(height - 1, last_row + reach);
-  std::vector<int> row_distance(static_cast<std::size_t>(row_hi - row_lo + 1) * width, far);
-  for (int iy = row_lo; iy <= row_hi; ++iy) {
-    const char* b = blocked.data() + static_cast<std::size_t>(iy) * width;
-    int* d = row_distance.data() + static_cast<std::size_t>(iy - row_lo) * width;
-    int last = -far - 1;
-    for (int ix = 0; ix < width; ++ix) {
-      if (b[ix]) last = ix;
-      d[ix] = std::min(far, ix - last);
-    }
-    last = std::numeric_limits<int>::max() / 2;
-    for (int ix = width - 1; ix >= 0; --ix) {
-      if (b[ix]) last = ix;
-      d[ix] = std::min(d[ix], std::min(far, last - ix));
-    }
-  }
+  const std::vector<int> row_distance =
+      RowDistancesToNearestSetCell(blocked, width, row_lo, row_hi, reach + 1);
   for (int iy = first_row; iy <= last_row; ++iy)
     for (int ix = 0; ix < width; ++ix) {
       const std::size_t i = static_cast<std::size_t>(iy) * width + ix;
