@@ -6,6 +6,8 @@
 #include <queue>
 #include <utility>
 
+#include "perception/sonar_map/cell_dilation.h"
+
 namespace plywood::perception {
 namespace {
 
