@@ -1,6 +1,7 @@
 #include "eval/sonar_map/sonar_ground_truth.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "sim/config/config_error.h"
 #include "sim/runner/format_number.h"
@@ -65,8 +66,12 @@ std::unique_ptr<OccupancyTruth> MakeOccupancyTruth(const mjModel* model,
   }
   auto truth = std::make_unique<OccupancyTruth>();
   sim::OccupancyRasterOptions options;
-  options.resolution_m = 0.01;
-  truth->raster = sim::RasteriseOccupancy(model, options);
+  options.resolution_m = sim::kOccupancyTruthResolutionM;
+  try {
+    truth->raster = sim::RasteriseOccupancy(model, options);
+  } catch (const std::invalid_argument& e) {  // a world too wide for its cells
+    throw sim::ConfigError(spawn_source, "world", e.what());
+  }
   truth->space = ComputeReachableSpace(truth->raster, start_W);
   truth->FitScoredBox();
   if (truth->x1 < truth->x0) {
