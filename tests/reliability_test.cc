@@ -816,6 +816,30 @@ TEST_F(ReliabilityTest, AWorldTooWideForTheRastersTheRunIsScoredWithIsRefusedBef
   EXPECT_EQ(Run(wide_explorer).exit_code, 0);
 }
 
+// audit s61 (34th pass): the sonar map's truth is the free space reachable from the spawn, cut at
+// the world geometry's bounding box. In seed 001's room with its east wall left out the explorer
+// drove out through the gap, its perimeter ended on its time limit at (2.44, -5.49), 5 m outside,
+// and the run ended `map_complete` with occupancy.error 0.0038 against the room the truth's edge
+// cut, exit 0. Refused before the run; the generator's own `closed` flag agrees (doorways worlds
+// with an opening are refused, closed ones run).
+TEST_F(ReliabilityTest, ASonarMapInARoomNoWallClosesIsRefusedBeforeTheRun) {
+  const fs::path dir = WorldDir();
+  std::string xml = Slurp(testing::SourceRoot() / "worlds" / "seed001_room_2.xml");
+  const std::size_t east = xml.find("<geom name=\"wall_1\"");
+  ASSERT_NE(east, std::string::npos);
+  xml.erase(east, xml.find('\n', east) - east);
+  const fs::path open = WriteFile(dir / "open_east.xml", xml);
+  std::string explorer = ExplorerExperiment(-0.8, -0.5);
+  explorer.replace(explorer.find("worlds/seed001_room_2.xml"),
+                   std::string("worlds/seed001_room_2.xml").size(), open.string());
+  ExpectRefused(explorer, "",
+                {"experiment.yaml: world: ",
+                 "open_east.xml: the free space round the robot at (-0.8, -0.5) reaches (1.",
+                 "the edge of the world's walls: no wall closes the room there"});
+  // The same room closed runs.
+  EXPECT_EQ(Run(ExplorerExperiment(-0.8, -0.5)).exit_code, 0);
+}
+
 // An upright capsule and a sphere are held by the 2-D truth (the disc the slice cuts), so a run
 // scored in a world with them runs and scores them as the sensors see them: a capsule column of the
 // cylinder's radius scores as the cylinder does, every extractor, and a ball cut by the scan plane

@@ -54,6 +54,16 @@ void OccupancyTruth::FitScoredBox() {
       }
 }
 
+std::optional<Eigen::Vector2d> OccupancyTruth::ReachableCellOnTheEdge() const {
+  if (x1 < x0) return std::nullopt;
+  for (int iy = y0; iy <= y1; ++iy)
+    for (int ix = x0; ix <= x1; ++ix) {
+      const bool edge = ix == 0 || iy == 0 || ix == raster.width - 1 || iy == raster.height - 1;
+      if (edge && CellFree(ix, iy)) return raster.CellCentre(ix, iy);
+    }
+  return std::nullopt;
+}
+
 std::unique_ptr<OccupancyTruth> MakeOccupancyTruth(const mjModel* model,
                                                    const Eigen::Vector2d& start_W,
                                                    const std::string& spawn_source) {
