@@ -89,6 +89,7 @@ int SingleRunProtocol(const ProtocolContext& context) {
   const bool quiet = context.quiet;
   const bool snapshots = context.snapshots;
   sim::ExperimentRunner runner(config);
+  RequireASonarMapTruth(runner);  // before the run, not after it
   runner.SetObserver(context.observer);
   render::SnapshotOptions snapshot_options;
   snapshot_options.view.longer_side_px = config.output.snapshot_size_px;

@@ -764,6 +764,82 @@ TEST_F(ReliabilityTest, AWorldGeomTheGroundTruthCannotHoldIsRefusedWhereTheRunIs
                  "0.2 m"});
 }
 
+// audit s61 (34th pass): the occupancy raster a run is scored or drawn with (the sonar map's
+// truth at 0.01 m, the geometric map's picture at 0.02 m) was laid over every static geom of the
+// world after the run, however far: a box 3 km off (a typo in a pos) ended seed 001's and seed
+// 003's runs with `plywood: error: std::bad_alloc`, exit 1, once they had run; a box 20 km long
+// took 197 s and 19 GB, one 2 km long 2 GB. Refused before the run, naming the world and the geom;
+// an unscored run in the same world still runs
+// (AbsurdlyFarOrLargeWorldGeomsDoNotBreakTheContactGrid).
+TEST_F(ReliabilityTest, AWorldTooWideForTheRastersTheRunIsScoredWithIsRefusedBeforeTheRun) {
+  const fs::path dir = WorldDir();
+  const auto with = [&](const std::string& name, const std::string& source,
+                        const std::string& geom) {
+    std::string xml = Slurp(testing::SourceRoot() / "worlds" / source);
+    xml.replace(xml.find("</worldbody>"), std::string("</worldbody>").size(),
+                geom + "</worldbody>");
+    return WriteFile(dir / name, xml);
+  };
+  const fs::path stray = with("stray.xml", "seed001_room_2.xml",
+                              "<geom name=\"stray\" type=\"box\" pos=\"3000 3000 0.5\" "
+                              "size=\"0.1 0.1 0.5\"/>");
+  std::string explorer = ExplorerExperiment(-0.8, -0.5);
+  explorer.replace(explorer.find("worlds/seed001_room_2.xml"),
+                   std::string("worlds/seed001_room_2.xml").size(), stray.string());
+  ExpectRefused(
+      explorer, "",
+      {"experiment.yaml: world: ", "stray.xml: its static geoms span 3001.868 x 3001.618 m ",
+       "(geom 'stray' reaches 4243.701 m from the robot)", "in cells of 0.01 m, would hold ",
+       "more than the limit of 2.5e+07 (50 x 50 m)"});
+  // Seed 003's geometric map, drawn at 0.02 m, in seed 000's room with the box 3 km off (5 s: a
+  // map to draw).
+  const fs::path stray_000 = with("stray_000.xml", "seed000_room_1.xml",
+                                  "<geom name=\"stray\" type=\"box\" pos=\"3000 3000 0.5\" "
+                                  "size=\"0.1 0.1 0.5\"/>");
+  const fs::path run_dir = Dir();
+  ExpectOneLine(
+      RunPlywood("run " + (testing::SourceRoot() / "experiments/seed003_generated.yaml").string() +
+                     " --quiet --set duration_s=5 --set world=" + stray_000.string() + " --out " +
+                     (run_dir / "out").string(),
+                 run_dir),
+      {"seed003_generated.yaml: world: ", "stray_000.xml: its static geoms span ",
+       "(geom 'stray' reaches ", "in cells of 0.02 m, would hold ",
+       "more than the limit of 2.5e+07 (100 x 100 m)"});
+  EXPECT_FALSE(fs::exists(run_dir / "out" / "metrics.json"));
+  // A world within the limit still runs: a box 40 m long beside the room (4000 x 362 cells).
+  const fs::path wide = with("wide.xml", "seed001_room_2.xml",
+                             "<geom name=\"long\" type=\"box\" pos=\"0 2 0.5\" "
+                             "size=\"20 0.1 0.5\"/>");
+  std::string wide_explorer = ExplorerExperiment(-0.8, -0.5);
+  wide_explorer.replace(wide_explorer.find("worlds/seed001_room_2.xml"),
+                        std::string("worlds/seed001_room_2.xml").size(), wide.string());
+  EXPECT_EQ(Run(wide_explorer).exit_code, 0);
+}
+
+// audit s61 (34th pass): the sonar map's truth is the free space reachable from the spawn, cut at
+// the world geometry's bounding box. In seed 001's room with its east wall left out the explorer
+// drove out through the gap, its perimeter ended on its time limit at (2.44, -5.49), 5 m outside,
+// and the run ended `map_complete` with occupancy.error 0.0038 against the room the truth's edge
+// cut, exit 0. Refused before the run; the generator's own `closed` flag agrees (doorways worlds
+// with an opening are refused, closed ones run).
+TEST_F(ReliabilityTest, ASonarMapInARoomNoWallClosesIsRefusedBeforeTheRun) {
+  const fs::path dir = WorldDir();
+  std::string xml = Slurp(testing::SourceRoot() / "worlds" / "seed001_room_2.xml");
+  const std::size_t east = xml.find("<geom name=\"wall_1\"");
+  ASSERT_NE(east, std::string::npos);
+  xml.erase(east, xml.find('\n', east) - east);
+  const fs::path open = WriteFile(dir / "open_east.xml", xml);
+  std::string explorer = ExplorerExperiment(-0.8, -0.5);
+  explorer.replace(explorer.find("worlds/seed001_room_2.xml"),
+                   std::string("worlds/seed001_room_2.xml").size(), open.string());
+  ExpectRefused(explorer, "",
+                {"experiment.yaml: world: ",
+                 "open_east.xml: the free space round the robot at (-0.8, -0.5) reaches (1.",
+                 "the edge of the world's walls: no wall closes the room there"});
+  // The same room closed runs.
+  EXPECT_EQ(Run(ExplorerExperiment(-0.8, -0.5)).exit_code, 0);
+}
+
 // An upright capsule and a sphere are held by the 2-D truth (the disc the slice cuts), so a run
 // scored in a world with them runs and scores them as the sensors see them: a capsule column of the
 // cylinder's radius scores as the cylinder does, every extractor, and a ball cut by the scan plane

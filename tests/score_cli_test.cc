@@ -497,6 +497,41 @@ TEST(ScoreCliTest, AGridOfAWorldWhoseGeomTheTruthCannotHoldIsRefused) {
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
+// audit s61 (34th pass): score grid lays the occupancy truth (0.01 m cells) over every static geom
+// of the run's world; a run that draws no such raster (a laser run) runs in a world with a box 3 km
+// off, and scoring a grid against it ended with `plywood: error: std::bad_alloc`, exit 1.
+TEST(ScoreCliTest, AGridIsNotScoredAgainstAWorldTooWideForTheTruthsRaster) {
+  const fs::path dir = testing::MakeTempDir("score_cli_grid_too_wide");
+  std::string room = Slurp(testing::SourceRoot() / "worlds" / "seed001_room_2.xml");
+  room.replace(
+      room.find("</worldbody>"), std::string("</worldbody>").size(),
+      R"(<geom name="stray" type="box" pos="3000 3000 0.5" size="0.1 0.1 0.5"/></worldbody>)");
+  const fs::path world = testing::WriteFile(dir / "stray.xml", room);
+  const fs::path yaml = testing::WriteFile(
+      dir / "e.yaml", "name: grid_too_wide\nduration_s: 0.5\nworld: " + world.string() +
+                          "\nrobot: {model: p3dx, spawn: {x_m: -0.8, y_m: -0.5, theta_deg: 0}}\n"
+                          "controller: {type: idle}\nsensors: {laser: {}}\n"
+                          "output: {snapshot: false}\n");
+  const fs::path run = dir / "run";
+  ASSERT_EQ(RunPlywood("run " + yaml.string() + " --quiet --out " + run.string(), dir).exit_code,
+            0);
+  std::string pgm = "P2\n100 100\n1\n";  // all free, 5 x 5 m at 0.05 m from (-2.5, -2.5)
+  for (int i = 0; i < 100 * 100; ++i) pgm += "1\n";
+  const fs::path map = testing::WriteFile(dir / "map.pgm", pgm);
+  const auto r = RunPlywood(
+      "score grid " + run.string() + " " + map.string() + " --resolution 0.05 --origin -2.5,-2.5",
+      dir);
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_EQ(r.err.rfind("plywood: " + (run / "config.yaml").string() +
+                            ": world: " + world.string() + ": its static geoms span ",
+                        0),
+            0u)
+      << r.err;
+  EXPECT_NE(r.err.find("(geom 'stray' reaches "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("in cells of 0.01 m, would hold "), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
 // audit s49: the docs name UMBmark's squares (before/cw_1, ...) as scorable one by one, but each
 // was refused as "not a finished run: no complete.json": the protocol's complete.json, two levels
 // up, lists their files. A square scores its own figures; one changed since is still refused.

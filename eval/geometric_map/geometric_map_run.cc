@@ -337,7 +337,7 @@ void WriteGeometricMapPicture(const sim::ExperimentRunner& runner, const Geometr
   const sim::RunRecord& record = runner.record();
   const mjModel* model = runner.scene().model();
   sim::OccupancyRasterOptions raster_options;
-  raster_options.resolution_m = 0.02;
+  raster_options.resolution_m = sim::kGeometricMapPictureResolutionM;
   const int site = mj_name2id(model, mjOBJ_SITE, "ir_scanner");
   if (site >= 0) raster_options.height_m = runner.scene().data()->site_xpos[3 * site + 2];
   const sim::OccupancyRaster raster = sim::RasteriseOccupancy(model, raster_options);

@@ -96,6 +96,11 @@ std::unique_ptr<OccupancyTruth> LoadRunOccupancyTruth(const std::filesystem::pat
     throw sim::ConfigError((run_dir / "config.yaml").string(), "world",
                            config.world_path.string() + ": " + *problem);
   }
+  if (const auto problem =
+          sim::WorldTooWideToRasterise(runner.scene(), sim::kOccupancyTruthResolutionM)) {
+    throw sim::ConfigError((run_dir / "config.yaml").string(), "world",
+                           config.world_path.string() + ": " + *problem);
+  }
   return MakeOccupancyTruth(runner.scene().model(), {config.spawn.x_m, config.spawn.y_m},
                             (run_dir / "config.yaml").string());
 }

@@ -1,6 +1,7 @@
 #include "eval/sonar_map/sonar_ground_truth.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "sim/config/config_error.h"
 #include "sim/runner/format_number.h"
@@ -53,6 +54,16 @@ void OccupancyTruth::FitScoredBox() {
       }
 }
 
+std::optional<Eigen::Vector2d> OccupancyTruth::ReachableCellOnTheEdge() const {
+  if (x1 < x0) return std::nullopt;
+  for (int iy = y0; iy <= y1; ++iy)
+    for (int ix = x0; ix <= x1; ++ix) {
+      const bool edge = ix == 0 || iy == 0 || ix == raster.width - 1 || iy == raster.height - 1;
+      if (edge && CellFree(ix, iy)) return raster.CellCentre(ix, iy);
+    }
+  return std::nullopt;
+}
+
 std::unique_ptr<OccupancyTruth> MakeOccupancyTruth(const mjModel* model,
                                                    const Eigen::Vector2d& start_W,
                                                    const std::string& spawn_source) {
@@ -65,8 +76,12 @@ std::unique_ptr<OccupancyTruth> MakeOccupancyTruth(const mjModel* model,
   }
   auto truth = std::make_unique<OccupancyTruth>();
   sim::OccupancyRasterOptions options;
-  options.resolution_m = 0.01;
-  truth->raster = sim::RasteriseOccupancy(model, options);
+  options.resolution_m = sim::kOccupancyTruthResolutionM;
+  try {
+    truth->raster = sim::RasteriseOccupancy(model, options);
+  } catch (const std::invalid_argument& e) {  // a world too wide for its cells
+    throw sim::ConfigError(spawn_source, "world", e.what());
+  }
   truth->space = ComputeReachableSpace(truth->raster, start_W);
   truth->FitScoredBox();
   if (truth->x1 < truth->x0) {

@@ -6,6 +6,7 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,10 @@ struct OccupancyTruth {
   bool CellFree(int ix, int iy) const {
     return space.free[static_cast<std::size_t>(iy) * raster.width + ix] != 0;
   }
+  // The centre of a reachable cell on the raster's edge, or nothing. The raster ends at the world
+  // geometry's bounding box, so such a cell means no wall closes the space round the spawn: the
+  // truth would end where nothing in the world does. Call after FitScoredBox.
+  std::optional<Eigen::Vector2d> ReachableCellOnTheEdge() const;
   // Sets the scored box to the bounding box of `space` (empty: x1 < x0).
   void FitScoredBox();
 };

@@ -10,8 +10,10 @@
 #include "eval/sonar_map/body_reach.h"
 #include "eval/sonar_map/cognitive_map_json.h"
 #include "eval/sonar_map/sonar_ground_truth.h"
+#include "msgs/shortest_number.h"
 #include "perception/sonar_map/sonar_explorer.h"
 #include "render/png_image.h"
+#include "sim/config/config_error.h"
 #include "sim/runner/format_number.h"
 #include "sim/runner/text_file.h"
 #include "sim/world/occupancy_raster.h"
@@ -53,6 +55,24 @@ std::optional<double> BodyRadius(const sim::Scene& scene, const std::string& sou
 }
 
 }  // namespace
+
+void RequireASonarMapTruth(const sim::ExperimentRunner& runner) {
+  if (dynamic_cast<const perception::SonarExplorer*>(runner.controller()) == nullptr) return;
+  const sim::ExperimentConfig& config = runner.config();
+  const auto truth = MakeOccupancyTruth(runner.scene().model(),
+                                        {config.spawn.x_m, config.spawn.y_m}, config.source_file);
+  if (const auto edge = truth->ReachableCellOnTheEdge()) {
+    throw sim::ConfigError(
+        config.source_file, "world",
+        config.world_path.string() + ": the free space round the robot at (" +
+            sim::FormatNumber(config.spawn.x_m) + ", " + sim::FormatNumber(config.spawn.y_m) +
+            ") reaches (" + msgs::MillimetreNumber(edge->x()) + ", " +
+            msgs::MillimetreNumber(edge->y()) +
+            "), the edge of the world's walls: no wall closes the room there (one left out, or a "
+            "gap), so the sonar map's truth would end where nothing in the world does and the "
+            "explorer would drive out of the room; close the room");
+  }
+}
 
 bool AddSonarMapMetrics(sim::ExperimentRunner& runner) {
   const auto* explorer = dynamic_cast<const perception::SonarExplorer*>(runner.controller());

@@ -250,6 +250,20 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
       throw ConfigError(config.source_file, "world", config.world_path.string() + ": " + *problem);
     }
   }
+  // The rasters laid over the whole world after the run: the sonar map's truth, the geometric
+  // map's picture. Checked now, not after minutes of running.
+  std::vector<double> raster_resolutions_m;
+  if (config.controller.type == "sonar_explorer") {
+    raster_resolutions_m.push_back(kOccupancyTruthResolutionM);
+  }
+  if (config.geometric_map.given && config.output.snapshot) {
+    raster_resolutions_m.push_back(kGeometricMapPictureResolutionM);
+  }
+  for (const double resolution_m : raster_resolutions_m) {
+    if (const auto problem = WorldTooWideToRasterise(*scene_, resolution_m)) {
+      throw ConfigError(config.source_file, "world", config.world_path.string() + ": " + *problem);
+    }
+  }
   p.segments_of_geom.resize(scene_->model()->ngeom);
   p.labels_stamp.assign(scene_->model()->ngeom, 0u);
   for (std::size_t i = 0; i < record_.walls.segments.size(); ++i) {

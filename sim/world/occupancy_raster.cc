@@ -20,8 +20,8 @@ Eigen::AlignedBox2d BoundsOf(const UprightGeom& geom) {
 }
 
 // Cells needed to cover `extent_m`, tolerating round-off when the extent is a whole multiple.
-int CellsToCover(double extent_m, double resolution_m) {
-  return std::max(1, static_cast<int>(std::ceil(extent_m / resolution_m - 1e-9)));
+double CellsToCover(double extent_m, double resolution_m) {
+  return std::max(1.0, std::ceil(extent_m / resolution_m - 1e-9));
 }
 
 }  // namespace
@@ -67,23 +67,40 @@ double OccupancyRaster::OccupiedAreaM2() const {
   return sum / 255.0 * resolution_m * resolution_m;
 }
 
+Eigen::AlignedBox2d OccupancyRasterBounds(const std::vector<UprightGeom>& geoms,
+                                          const OccupancyRasterOptions& options) {
+  if (options.bounds_W) return *options.bounds_W;
+  Eigen::AlignedBox2d bounds;  // empty
+  for (const UprightGeom& g : geoms) bounds.extend(BoundsOf(g));
+  return bounds;
+}
+
+double OccupancyRasterCells(const Eigen::AlignedBox2d& bounds, double resolution_m) {
+  return CellsToCover(bounds.sizes().x(), resolution_m) *
+         CellsToCover(bounds.sizes().y(), resolution_m);
+}
+
 OccupancyRaster RasteriseOccupancy(const std::vector<UprightGeom>& geoms,
                                    const OccupancyRasterOptions& options) {
   options.Validate();
-  Eigen::AlignedBox2d bounds;  // empty
-  if (options.bounds_W) {
-    bounds = *options.bounds_W;
-  } else {
-    for (const UprightGeom& g : geoms) bounds.extend(BoundsOf(g));
-    if (bounds.isEmpty()) {
-      throw std::invalid_argument("bounds_W: unset and there is no geometry to take it from");
-    }
+  const Eigen::AlignedBox2d bounds = OccupancyRasterBounds(geoms, options);
+  if (bounds.isEmpty()) {
+    throw std::invalid_argument("bounds_W: unset and there is no geometry to take it from");
+  }
+  // Checked before the cells are counted in ints: a raster past the limit would not fit memory.
+  const double cells = OccupancyRasterCells(bounds, options.resolution_m);
+  if (!(cells <= kMaxOccupancyRasterCells)) {
+    throw std::invalid_argument("bounds_W: " + msgs::ShortestNumber(bounds.sizes().x()) + " x " +
+                                msgs::ShortestNumber(bounds.sizes().y()) + " m in cells of " +
+                                msgs::ShortestNumber(options.resolution_m) + " m would be " +
+                                msgs::ShortestNumber(cells) + " cells, more than the limit of " +
+                                msgs::ShortestNumber(kMaxOccupancyRasterCells));
   }
   OccupancyRaster raster;
   raster.origin_xy = bounds.min();
   raster.resolution_m = options.resolution_m;
-  raster.width = CellsToCover(bounds.sizes().x(), options.resolution_m);
-  raster.height = CellsToCover(bounds.sizes().y(), options.resolution_m);
+  raster.width = static_cast<int>(CellsToCover(bounds.sizes().x(), options.resolution_m));
+  raster.height = static_cast<int>(CellsToCover(bounds.sizes().y(), options.resolution_m));
   const size_t n_cells = static_cast<size_t>(raster.width) * raster.height;
 
   // One bit per sample, so a sample covered by two touching or overlapping geoms counts once.

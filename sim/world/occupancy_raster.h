@@ -12,6 +12,18 @@
 
 namespace plywood::sim {
 
+// The cell edges of the rasters a run is scored or drawn with: the sonar map's occupancy truth
+// (eval::MakeOccupancyTruth, also `plywood score grid`) and the geometric map's picture.
+inline constexpr double kOccupancyTruthResolutionM = 0.01;
+inline constexpr double kGeometricMapPictureResolutionM = 0.02;
+
+// The most cells a raster may hold: a 50 x 50 m world at the sonar map's 0.01 m, some 0.8 GB while
+// it is scored (about 30 bytes a cell: the samples, the cells, the reachable space, the flood's
+// stack; measured at 6e6 and 6e7 cells). Past it the memory grows with the world's extent squared:
+// a box 20 km long took 19 GB and 197 s, a stray geom 3 km from the room more than any machine has
+// (s61). A seed 001 room is 3.5 x 3 m, the office 14 x 5 m.
+inline constexpr double kMaxOccupancyRasterCells = 2.5e7;
+
 struct OccupancyRasterOptions {
   double resolution_m = 0.05;  // cell edge
   double height_m = 0.2;       // the horizontal slice that is rasterised
@@ -53,11 +65,19 @@ struct OccupancyRaster {
   double OccupiedAreaM2() const;
 };
 
+// The rectangle RasteriseOccupancy covers: options.bounds_W, else the bounding box of the geoms'
+// cross-sections at every height (empty when there are none).
+Eigen::AlignedBox2d OccupancyRasterBounds(const std::vector<UprightGeom>& geoms,
+                                          const OccupancyRasterOptions& options);
+
+// The number of cells of `resolution_m` that cover `bounds` (as a double: it may not fit an int).
+double OccupancyRasterCells(const Eigen::AlignedBox2d& bounds, double resolution_m);
+
 // Rasterises `geoms` (e.g. from ExtractUprightGeoms) that span options.height_m. A sample is
 // occupied when it lies inside or on the boundary of any geom's cross-section; overlapping geoms
 // count once.
-// @throws std::invalid_argument if `options` is invalid or no bounds can be found (unset bounds
-// and no geoms).
+// @throws std::invalid_argument if `options` is invalid, no bounds can be found (unset bounds
+// and no geoms) or the raster would hold more than kMaxOccupancyRasterCells cells.
 OccupancyRaster RasteriseOccupancy(const std::vector<UprightGeom>& geoms,
                                    const OccupancyRasterOptions& options);
 

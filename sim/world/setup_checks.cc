@@ -11,6 +11,7 @@
 #include "sim/raycast/mujoco_ray_caster.h"
 #include "sim/world/ground_truth_walls.h"
 #include "sim/world/mujoco_handles.h"
+#include "sim/world/occupancy_raster.h"
 
 namespace plywood::sim {
 
@@ -424,6 +425,42 @@ std::optional<std::string> OutsideTheWalls(const Scene& scene, double x_m, doubl
 }
 
 }  // namespace
+
+std::optional<std::string> WorldTooWideToRasterise(const Scene& scene, double resolution_m) {
+  OccupancyRasterOptions options;
+  options.resolution_m = resolution_m;
+  GroundTruthOptions geom_options;
+  geom_options.excluded_geom_group = options.excluded_geom_group;
+  const std::vector<UprightGeom> geoms = ExtractUprightGeoms(scene.model(), geom_options);
+  const Eigen::AlignedBox2d bounds = OccupancyRasterBounds(geoms, options);
+  if (bounds.isEmpty()) return std::nullopt;
+  const double cells = OccupancyRasterCells(bounds, resolution_m);
+  if (cells <= kMaxOccupancyRasterCells) return std::nullopt;
+  const msgs::Pose2D spawn = scene.TruePose();
+  const Eigen::Vector2d robot(spawn.x_m, spawn.y_m);
+  int furthest = -1;
+  double furthest_m = -1.0;
+  for (const UprightGeom& g : geoms) {
+    OccupancyRasterOptions one = options;
+    one.bounds_W.reset();
+    const Eigen::AlignedBox2d box = OccupancyRasterBounds({g}, one);
+    const double reach_m =
+        (box.min() - robot).cwiseAbs().cwiseMax((box.max() - robot).cwiseAbs()).norm();
+    if (reach_m > furthest_m) {
+      furthest_m = reach_m;
+      furthest = g.geom_id;
+    }
+  }
+  const double side_m = std::sqrt(kMaxOccupancyRasterCells) * resolution_m;
+  return "its static geoms span " + msgs::MillimetreNumber(bounds.sizes().x()) + " x " +
+         msgs::MillimetreNumber(bounds.sizes().y()) + " m (" + GeomName(scene.model(), furthest) +
+         " reaches " + msgs::MillimetreNumber(furthest_m) +
+         " m from the robot): the occupancy raster this run is scored or drawn with, in cells of " +
+         msgs::ShortestNumber(resolution_m) + " m, would hold " + msgs::SixDigitNumber(cells) +
+         " cells, more than the limit of " + msgs::ShortestNumber(kMaxOccupancyRasterCells) + " (" +
+         msgs::ShortestNumber(side_m) + " x " + msgs::ShortestNumber(side_m) +
+         " m); keep every geom within that";
+}
 
 std::optional<std::string> SpawnOutsideWorld(const Scene& scene) {
   const msgs::Pose2D spawn = scene.TruePose();

@@ -91,6 +91,13 @@ std::optional<std::string> SpawnCollision(const Scene& scene);
 // truth, e 0.0106 -> 0.0259). Checked only for runs that score against the truth at that height.
 std::optional<std::string> GeomTheGroundTruthCannotHold(const Scene& scene, double height_m);
 
+// The world's static upright geoms span more than an occupancy raster of `resolution_m` cells may
+// hold (kMaxOccupancyRasterCells), naming the geom that reaches furthest from the robot: the raster
+// a run is scored or drawn with is laid over all of them, so one geom kilometres off (a typo in a
+// pos) or kilometres long took every gigabyte the machine had, or ended the run with
+// std::bad_alloc after it had run. Checked only for runs that lay such a raster.
+std::optional<std::string> WorldTooWideToRasterise(const Scene& scene, double resolution_m);
+
 // The spawn lies outside the horizontal bounding box of the world's static geometry (floor
 // excepted): outside every room. A world of nothing but a floor has no outside.
 std::optional<std::string> SpawnOutsideWorld(const Scene& scene);
