@@ -840,6 +840,28 @@ TEST_F(ReliabilityTest, ASonarMapInARoomNoWallClosesIsRefusedBeforeTheRun) {
   EXPECT_EQ(Run(ExplorerExperiment(-0.8, -0.5)).exit_code, 0);
 }
 
+// s61 thirty-fifth pass: the explorer's grid spans the spawn +- grid_half_extent_m. A room reaching
+// past it ran to map_complete, exit 0, its error that of a map that never held the far part
+// (seed001_room_2 at 1.5 m: 0.029 against 0.012; a generated office from its spawn_0 with the
+// default 4 m: 0.78). Refused before the run, naming the field and what it must be.
+TEST_F(ReliabilityTest, ARoomReachingPastTheExplorersGridIsRefusedBeforeTheRun) {
+  const auto with_half_extent = [](const std::string& metres) {
+    std::string yaml = ExplorerExperiment(-0.8, -0.5);
+    const std::string controller = "sonar_model: classical}";
+    yaml.replace(yaml.find(controller), controller.size(),
+                 "sonar_model: classical, grid_half_extent_m: " + metres + "}");
+    return yaml;
+  };
+  ExpectRefused(with_half_extent("2.5"), "",
+                {"experiment.yaml: controller.grid_half_extent_m: the free space round the robot "
+                 "at (-0.8, -0.5) spans x in [-1.748, 1.752], y in [-1.498, 1.502] in "
+                 "seed001_room_2.xml, 2.552 m from the spawn, beyond the explorer's grid (2.5 m "
+                 "each way)",
+                 "give at least 2.6"});
+  // A grid that holds the room runs.
+  EXPECT_EQ(Run(with_half_extent("2.6")).exit_code, 0);
+}
+
 // An upright capsule and a sphere are held by the 2-D truth (the disc the slice cuts), so a run
 // scored in a world with them runs and scores them as the sensors see them: a capsule column of the
 // cylinder's radius scores as the cylinder does, every extractor, and a ball cut by the scan plane

@@ -16,6 +16,10 @@
 namespace plywood::perception {
 namespace {
 
+// The shipped networks' weights are within +-13. Within +-1e6 a layer's sum (at most 257
+// products) overflows only for an input beyond 1e299, which no feature or tanh unit reaches.
+constexpr double kMaxAbsWeight = 1e6;
+
 [[noreturn]] void Fail(const std::string& source, int line, const std::string& what) {
   throw std::runtime_error(source + ": line " + std::to_string(line) + ": " + what);
 }
@@ -206,7 +210,9 @@ SonarNet SonarNet::FromText(const std::string& text, const std::string& source) 
     if (!(s >> magic) || magic != kFileMagic)
       Fail(source, line_no,
            "not a sonar network file (expected '" + std::string(kFileMagic) + "')");
-    if (!(s >> version) || version != kFileVersion)
+    std::string extra;
+    // Read with >>, "plywood-sonar-net 1.9" was version 1: the rest of a line must be empty.
+    if (!(s >> version) || version != kFileVersion || (s >> extra))
       Fail(source, line_no,
            "unsupported version (this build reads version " + std::to_string(kFileVersion) + ")");
   }
@@ -231,8 +237,8 @@ SonarNet SonarNet::FromText(const std::string& text, const std::string& source) 
     long rows = 0, cols = 0;
     {
       auto s = next_line("layer header");
-      std::string key;
-      if (!(s >> key >> rows >> cols) || key != "layer" || rows < 1 || rows > 256)
+      std::string key, extra;
+      if (!(s >> key >> rows >> cols) || key != "layer" || rows < 1 || rows > 256 || (s >> extra))
         Fail(source, line_no, "expected 'layer ROWS COLS' with 1 <= ROWS <= 256");
       if (cols != expected_in)
         Fail(source, line_no,
@@ -250,6 +256,13 @@ SonarNet SonarNet::FromText(const std::string& text, const std::string& source) 
           Fail(source, line_no, "expected " + std::to_string(cols + 1) + " numbers");
         const std::optional<double> parsed = ParseFiniteNumber(token);
         if (!parsed) Fail(source, line_no, "'" + token + "' is not a finite number");
+        // Finite but huge weights overflow a layer's sum to inf - inf: the cell's probability is
+        // NaN and its log odds stay NaN for the rest of the run.
+        if (std::abs(*parsed) > kMaxAbsWeight)
+          Fail(source, line_no,
+               "'" + token +
+                   "' is beyond +-1e6 (the shipped networks' are within +-13): a layer's sum "
+                   "of such products overflows and a cell's probability is not a number");
         const double v = *parsed;
         if (c < cols)
           w(r, c) = v;

@@ -95,6 +95,47 @@ TEST(SonarNetTest, CorruptedFilesGiveOneLineErrorsWithLineNumbers) {
   EXPECT_THROW(SonarNet::Load("/nonexistent/weights.txt"), std::runtime_error);
 }
 
+// s61 thirty-fifth pass: the header and layer lines were read with >> and their rest ignored, so
+// "plywood-sonar-net 1.9" loaded as version 1 and "layer 4 5.9" as 5 inputs.
+TEST(SonarNetTest, HeaderAndLayerLinesWithTextAfterTheirNumbersAreRefused) {
+  const std::string good = SonarNet({4}, 1).ToText();
+  auto message = [](const std::string& text) {
+    try {
+      SonarNet::FromText(text, "w.txt");
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message(Corrupt(good, 1, "plywood-sonar-net 1.9")),
+            "w.txt: line 1: unsupported version (this build reads version 1)");
+  EXPECT_EQ(message(Corrupt(good, 1, "plywood-sonar-net 1 2")),
+            "w.txt: line 1: unsupported version (this build reads version 1)");
+  EXPECT_EQ(message(Corrupt(good, 4, "layer 4 5.9")),
+            "w.txt: line 4: expected 'layer ROWS COLS' with 1 <= ROWS <= 256");
+  EXPECT_EQ(message(Corrupt(good, 4, "layer 4 5 junk")),
+            "w.txt: line 4: expected 'layer ROWS COLS' with 1 <= ROWS <= 256");
+  EXPECT_EQ(message(Corrupt(good, 1, "plywood-sonar-net 1\r")), "no error");  // CRLF lines
+}
+
+// s61 thirty-fifth pass: finite weights of 1.7e308 overflowed a unit's sum to inf - inf, so the
+// network gave NaN for a cell and the run went on with NaN log odds (exit 0, a wrong error figure).
+TEST(SonarNetTest, WeightsSoLargeThatALayersSumOverflowsAreRefused) {
+  SonarNet net({2}, 1);
+  std::string text = Corrupt(net.ToText(), 5, "0 0 0 1.7e308 -1.7e308 0");
+  text = Corrupt(text, 6, "0 0 0 -1.7e308 -1.7e308 0");
+  try {
+    SonarNet::FromText(text, "w.txt");
+    FAIL() << "expected std::runtime_error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "w.txt: line 5: '1.7e308' is beyond +-1e6 (the shipped networks' are within +-13): a "
+              "layer's sum of such products overflows and a cell's probability is not a number");
+  }
+  // The bound itself loads.
+  EXPECT_NO_THROW(SonarNet::FromText(Corrupt(net.ToText(), 5, "0 0 0 1e6 -1e6 0"), "w.txt"));
+}
+
 // A small network's text fits in the stream's buffer, which is written only on closing: a full
 // disk (/dev/full) then failed after the check, and `plywood train` reported success.
 TEST(SonarNetTest, SavingOntoAFullDiskIsAnError) {
