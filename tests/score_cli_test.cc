@@ -462,6 +462,25 @@ TEST(ScoreCliTest, AGridOfARunWhoseWorldChangedSinceIsRefused) {
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
+// A half-second laser run (idle P3-DX) in `world`, then `score grid` of an all-free 5 x 5 m map
+// against it, for the tests of worlds whose geoms the grid's truth cannot hold.
+testing::CliResult ScoreAnAllFreeGridAgainstARunIn(const fs::path& dir, const fs::path& world) {
+  const fs::path yaml = testing::WriteFile(
+      dir / "e.yaml", "name: grid_world\nduration_s: 0.5\nworld: " + world.string() +
+                          "\nrobot: {model: p3dx, spawn: {x_m: -0.8, y_m: -0.5, theta_deg: 0}}\n"
+                          "controller: {type: idle}\nsensors: {laser: {}}\n"
+                          "output: {snapshot: false}\n");
+  const fs::path run = dir / "run";
+  EXPECT_EQ(RunPlywood("run " + yaml.string() + " --quiet --out " + run.string(), dir).exit_code,
+            0);
+  std::string pgm = "P2\n100 100\n1\n";  // all free, 5 x 5 m at 0.05 m from (-2.5, -2.5)
+  for (int i = 0; i < 100 * 100; ++i) pgm += "1\n";
+  const fs::path map = testing::WriteFile(dir / "map.pgm", pgm);
+  return RunPlywood(
+      "score grid " + run.string() + " " + map.string() + " --resolution 0.05 --origin -2.5,-2.5",
+      dir);
+}
+
 // s43 fifteenth pass: the occupancy truth holds no tilted geom (upright boxes, cylinders, capsules
 // and spheres only), so a world's box tilted half a degree (seed 001's obstacle) was free space to
 // it: a grid that mapped the box was scored wrong for it, exit 0. The run itself (no scoring) still
@@ -473,20 +492,8 @@ TEST(ScoreCliTest, AGridOfAWorldWhoseGeomTheTruthCannotHoldIsRefused) {
   ASSERT_NE(room.find(upright), std::string::npos);
   room.replace(room.find(upright), upright.size(), R"(size="0.285 0.285 0.3" euler="0.5 0 0"/>)");
   const fs::path world = testing::WriteFile(dir / "tilted.xml", room);
-  const fs::path yaml = testing::WriteFile(
-      dir / "e.yaml", "name: grid_tilted\nduration_s: 0.5\nworld: " + world.string() +
-                          "\nrobot: {model: p3dx, spawn: {x_m: -0.8, y_m: -0.5, theta_deg: 0}}\n"
-                          "controller: {type: idle}\nsensors: {laser: {}}\n"
-                          "output: {snapshot: false}\n");
   const fs::path run = dir / "run";
-  ASSERT_EQ(RunPlywood("run " + yaml.string() + " --quiet --out " + run.string(), dir).exit_code,
-            0);
-  std::string pgm = "P2\n100 100\n1\n";  // all free, 5 x 5 m at 0.05 m from (-2.5, -2.5)
-  for (int i = 0; i < 100 * 100; ++i) pgm += "1\n";
-  const fs::path map = testing::WriteFile(dir / "map.pgm", pgm);
-  const auto r = RunPlywood(
-      "score grid " + run.string() + " " + map.string() + " --resolution 0.05 --origin -2.5,-2.5",
-      dir);
+  const auto r = ScoreAnAllFreeGridAgainstARunIn(dir, world);
   EXPECT_EQ(r.exit_code, 2) << r.out;
   EXPECT_EQ(
       r.err.rfind("plywood: " + (run / "config.yaml").string() + ": world: " + world.string() +
@@ -507,20 +514,8 @@ TEST(ScoreCliTest, AGridIsNotScoredAgainstAWorldTooWideForTheTruthsRaster) {
       room.find("</worldbody>"), std::string("</worldbody>").size(),
       R"(<geom name="stray" type="box" pos="3000 3000 0.5" size="0.1 0.1 0.5"/></worldbody>)");
   const fs::path world = testing::WriteFile(dir / "stray.xml", room);
-  const fs::path yaml = testing::WriteFile(
-      dir / "e.yaml", "name: grid_too_wide\nduration_s: 0.5\nworld: " + world.string() +
-                          "\nrobot: {model: p3dx, spawn: {x_m: -0.8, y_m: -0.5, theta_deg: 0}}\n"
-                          "controller: {type: idle}\nsensors: {laser: {}}\n"
-                          "output: {snapshot: false}\n");
   const fs::path run = dir / "run";
-  ASSERT_EQ(RunPlywood("run " + yaml.string() + " --quiet --out " + run.string(), dir).exit_code,
-            0);
-  std::string pgm = "P2\n100 100\n1\n";  // all free, 5 x 5 m at 0.05 m from (-2.5, -2.5)
-  for (int i = 0; i < 100 * 100; ++i) pgm += "1\n";
-  const fs::path map = testing::WriteFile(dir / "map.pgm", pgm);
-  const auto r = RunPlywood(
-      "score grid " + run.string() + " " + map.string() + " --resolution 0.05 --origin -2.5,-2.5",
-      dir);
+  const auto r = ScoreAnAllFreeGridAgainstARunIn(dir, world);
   EXPECT_EQ(r.exit_code, 2) << r.out;
   EXPECT_EQ(r.err.rfind("plywood: " + (run / "config.yaml").string() +
                             ": world: " + world.string() + ": its static geoms span ",

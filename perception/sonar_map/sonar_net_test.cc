@@ -59,6 +59,16 @@ TEST(SonarNetTest, TextRoundTripIsByteForByte) {
   EXPECT_EQ(SonarNet::FromText(text, "mem").ToText(), text);
 }
 
+// The error a weights file's text gives when read as "w.txt", or "no error".
+std::string FromTextError(const std::string& text) {
+  try {
+    SonarNet::FromText(text, "w.txt");
+  } catch (const std::runtime_error& e) {
+    return std::string(e.what());
+  }
+  return std::string("no error");
+}
+
 std::string Corrupt(const std::string& text, int line, const std::string& replacement) {
   std::istringstream in(text);
   std::string out, l;
@@ -68,30 +78,30 @@ std::string Corrupt(const std::string& text, int line, const std::string& replac
 
 TEST(SonarNetTest, CorruptedFilesGiveOneLineErrorsWithLineNumbers) {
   const std::string good = SonarNet({4}, 1).ToText();
-  auto message = [](const std::string& text) {
-    try {
-      SonarNet::FromText(text, "w.txt");
-    } catch (const std::runtime_error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
-  EXPECT_EQ(message(Corrupt(good, 1, "plywood-sonar-net 2")).rfind("w.txt: line 1: unsupported", 0),
+  EXPECT_EQ(
+      FromTextError(Corrupt(good, 1, "plywood-sonar-net 2")).rfind("w.txt: line 1: unsupported", 0),
+      0u);
+  EXPECT_EQ(FromTextError(Corrupt(good, 1, "hello")).rfind("w.txt: line 1: not a sonar network", 0),
             0u);
-  EXPECT_EQ(message(Corrupt(good, 1, "hello")).rfind("w.txt: line 1: not a sonar network", 0), 0u);
-  EXPECT_EQ(message(Corrupt(good, 5, "1 2 x 4 5 6")).rfind("w.txt: line 5: 'x' is not", 0), 0u);
-  EXPECT_EQ(message(Corrupt(good, 5, "1 2 3")).rfind("w.txt: line 5: expected 6 numbers", 0), 0u);
-  EXPECT_EQ(message(Corrupt(good, 5, "1 2 3 4 5 nan")).rfind("w.txt: line 5: 'nan'", 0), 0u);
-  EXPECT_EQ(message(Corrupt(good, 4, "layer 4 7")).rfind("w.txt: line 4: layer 0 takes 7", 0), 0u);
+  EXPECT_EQ(FromTextError(Corrupt(good, 5, "1 2 x 4 5 6")).rfind("w.txt: line 5: 'x' is not", 0),
+            0u);
+  EXPECT_EQ(FromTextError(Corrupt(good, 5, "1 2 3")).rfind("w.txt: line 5: expected 6 numbers", 0),
+            0u);
+  EXPECT_EQ(FromTextError(Corrupt(good, 5, "1 2 3 4 5 nan")).rfind("w.txt: line 5: 'nan'", 0), 0u);
+  EXPECT_EQ(FromTextError(Corrupt(good, 4, "layer 4 7")).rfind("w.txt: line 4: layer 0 takes 7", 0),
+            0u);
   // Trailing text after the header numbers used to be ignored (p_clamp was read with >>).
-  EXPECT_EQ(message(Corrupt(good, 2, "p_clamp 0.02x")).rfind("w.txt: line 2: expected 'p_clamp", 0),
+  EXPECT_EQ(
+      FromTextError(Corrupt(good, 2, "p_clamp 0.02x")).rfind("w.txt: line 2: expected 'p_clamp", 0),
+      0u);
+  EXPECT_EQ(FromTextError(Corrupt(good, 2, "p_clamp 0.02 7")).rfind("w.txt: line 2: expected", 0),
             0u);
-  EXPECT_EQ(message(Corrupt(good, 2, "p_clamp 0.02 7")).rfind("w.txt: line 2: expected", 0), 0u);
-  EXPECT_EQ(message(Corrupt(good, 2, "p_clamp inf")).rfind("w.txt: line 2: expected", 0), 0u);
-  EXPECT_EQ(message(Corrupt(good, 3, "layers 2 more")).rfind("w.txt: line 3: expected 'layers", 0),
-            0u);
-  EXPECT_EQ(message(good.substr(0, good.size() / 2)).find("w.txt: line"), 0u);
-  EXPECT_EQ(message(""), "w.txt: line 1: unexpected end of file, expected header");
+  EXPECT_EQ(FromTextError(Corrupt(good, 2, "p_clamp inf")).rfind("w.txt: line 2: expected", 0), 0u);
+  EXPECT_EQ(
+      FromTextError(Corrupt(good, 3, "layers 2 more")).rfind("w.txt: line 3: expected 'layers", 0),
+      0u);
+  EXPECT_EQ(FromTextError(good.substr(0, good.size() / 2)).find("w.txt: line"), 0u);
+  EXPECT_EQ(FromTextError(""), "w.txt: line 1: unexpected end of file, expected header");
   EXPECT_THROW(SonarNet::Load("/nonexistent/weights.txt"), std::runtime_error);
 }
 
@@ -99,23 +109,15 @@ TEST(SonarNetTest, CorruptedFilesGiveOneLineErrorsWithLineNumbers) {
 // "plywood-sonar-net 1.9" loaded as version 1 and "layer 4 5.9" as 5 inputs.
 TEST(SonarNetTest, HeaderAndLayerLinesWithTextAfterTheirNumbersAreRefused) {
   const std::string good = SonarNet({4}, 1).ToText();
-  auto message = [](const std::string& text) {
-    try {
-      SonarNet::FromText(text, "w.txt");
-    } catch (const std::runtime_error& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
-  EXPECT_EQ(message(Corrupt(good, 1, "plywood-sonar-net 1.9")),
+  EXPECT_EQ(FromTextError(Corrupt(good, 1, "plywood-sonar-net 1.9")),
             "w.txt: line 1: unsupported version (this build reads version 1)");
-  EXPECT_EQ(message(Corrupt(good, 1, "plywood-sonar-net 1 2")),
+  EXPECT_EQ(FromTextError(Corrupt(good, 1, "plywood-sonar-net 1 2")),
             "w.txt: line 1: unsupported version (this build reads version 1)");
-  EXPECT_EQ(message(Corrupt(good, 4, "layer 4 5.9")),
+  EXPECT_EQ(FromTextError(Corrupt(good, 4, "layer 4 5.9")),
             "w.txt: line 4: expected 'layer ROWS COLS' with 1 <= ROWS <= 256");
-  EXPECT_EQ(message(Corrupt(good, 4, "layer 4 5 junk")),
+  EXPECT_EQ(FromTextError(Corrupt(good, 4, "layer 4 5 junk")),
             "w.txt: line 4: expected 'layer ROWS COLS' with 1 <= ROWS <= 256");
-  EXPECT_EQ(message(Corrupt(good, 1, "plywood-sonar-net 1\r")), "no error");  // CRLF lines
+  EXPECT_EQ(FromTextError(Corrupt(good, 1, "plywood-sonar-net 1\r")), "no error");  // CRLF lines
 }
 
 // s61 thirty-fifth pass: finite weights of 1.7e308 overflowed a unit's sum to inf - inf, so the
