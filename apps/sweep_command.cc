@@ -44,14 +44,14 @@ Command AddSweepCommand(CLI::App& app) {
   cli->add_option("--collect", flags->collect,
                   "re-aggregate a sweep directory (results.csv, summary.csv, plots) and stop")
       ->type_name("DIR");
-  cli->add_option("--jobs", inv.jobs, "runs at once (0: one per core)")
-      ->type_name("N")
-      ->transform(DecimalWholeNumber())
-      ->check(CLI::Range(0, 4096))
-      ->capture_default_str();
-  cli->add_option("--out", inv.out, "sweep directory")
-      ->type_name("DIR")
-      ->default_str("runs/sweeps/NAME");
+  CLI::Option* jobs = cli->add_option("--jobs", inv.jobs, "runs at once (0: one per core)")
+                          ->type_name("N")
+                          ->transform(DecimalWholeNumber())
+                          ->check(CLI::Range(0, 4096))
+                          ->capture_default_str();
+  CLI::Option* out = cli->add_option("--out", inv.out, "sweep directory")
+                         ->type_name("DIR")
+                         ->default_str("runs/sweeps/NAME");
   cli->add_option("--shard", flags->shard,
                   "run only the cells whose index % N == I (what each Slurm task runs)")
       ->type_name("I/N");
@@ -86,11 +86,20 @@ Command AddSweepCommand(CLI::App& app) {
       "  plywood sweep experiments/sweeps/minimal.yaml --slurm --max-parallel 8\n"
       "  plywood sweep --collect runs/sweeps/minimal");
   return {
-      cli, [flags, max_parallel, tasks, partition_flag] {
+      cli, [flags, jobs, out, max_parallel, tasks, partition_flag] {
         eval::SweepInvocation& inv = flags->invocation;
         if (!flags->collect.empty()) {
           if (!flags->sweep.empty()) {
             throw UsageError("sweep: --collect DIR takes no sweep file");
+          }
+          // --collect re-aggregates DIR in place and runs nothing: a run's flags beside it were
+          // dropped without a word (--out X wrote the tables into DIR, not X).
+          if (out->count() > 0 || jobs->count() > 0 || !flags->shard.empty() || flags->no_collect ||
+              inv.slurm || inv.dry_run || inv.bench || partition_flag->count() > 0 ||
+              tasks->count() > 0 || max_parallel->count() > 0) {
+            throw UsageError(
+                "sweep: --collect DIR writes its tables into DIR and runs nothing: it takes only "
+                "--quiet (not --out, --jobs, --shard, --no-collect, --slurm or --bench)");
           }
           return eval::CollectSweepCommand(flags->collect, inv.quiet);
         }
@@ -119,6 +128,13 @@ Command AddSweepCommand(CLI::App& app) {
           throw UsageError(
               "sweep: --bench runs the whole sweep here, twice; it does not go with --slurm or "
               "--shard");
+        }
+        // Each array task runs one shard with --jobs 1 (the job script's own flags): --shard or
+        // --jobs given with --slurm were dropped without a word, and the script ran every shard.
+        if (inv.slurm && (!flags->shard.empty() || jobs->count() > 0)) {
+          throw UsageError(
+              "sweep: --shard and --jobs do not go with --slurm: each array task runs one shard "
+              "with --jobs 1 (set the number of tasks with --tasks)");
         }
         // The name goes into the job script's #SBATCH line: a line break would start a command.
         // An empty name in a list (',', 'a,,b', 'a,') is no partition: sbatch refuses the script

@@ -223,6 +223,25 @@ TEST(CliHelpTest, UsageErrorsAreOneLineNamingTheCulpritWithExitCode2) {
        "sweep: --partition: expected Slurm partition names"},
       {"sweep " + sweep.string() + " --out " + (dir / "sweep").string() + " --partition ''",
        "sweep: --dry-run, --partition, --tasks and --max-parallel go with --slurm"},
+      // s61 thirty-sixth pass: --shard and --jobs with --slurm were dropped without a word (the
+      // dry run wrote a script running every shard with --jobs 1, exit 0).
+      {"sweep " + sweep.string() + " --out " + (dir / "sweep").string() +
+           " --slurm --dry-run --shard 0/2",
+       "sweep: --shard and --jobs do not go with --slurm: each array task runs one shard with "
+       "--jobs 1 (set the number of tasks with --tasks)"},
+      {"sweep " + sweep.string() + " --out " + (dir / "sweep").string() +
+           " --slurm --dry-run --jobs 8",
+       "sweep: --shard and --jobs do not go with --slurm: each array task runs one shard with "
+       "--jobs 1 (set the number of tasks with --tasks)"},
+      // The same pass: --collect ran with a run's flags dropped (--out X wrote the tables into
+      // DIR, not X; --slurm, --jobs, --shard, --bench did nothing).
+      {"sweep --collect " + (dir / "sweep").string() + " --out " + (dir / "elsewhere").string(),
+       "sweep: --collect DIR writes its tables into DIR and runs nothing: it takes only --quiet "
+       "(not --out, --jobs, --shard, --no-collect, --slurm or --bench)"},
+      {"sweep --collect " + (dir / "sweep").string() + " --slurm --dry-run",
+       "sweep: --collect DIR writes its tables into DIR and runs nothing: it takes only --quiet"},
+      {"sweep --collect " + (dir / "sweep").string() + " --jobs 2",
+       "sweep: --collect DIR writes its tables into DIR and runs nothing: it takes only --quiet"},
   };
   // s50: an unknown flag is named even where something required is missing too (`--cuont` said
   // "--count is required"), and in `worlds generate` (which said "worlds: The following argument

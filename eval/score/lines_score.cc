@@ -52,19 +52,23 @@ void RequireNearItsScansReturns(const LinesCsvRow& row, const TruthScan& scan,
 
 // A row repeated whole (a file written twice, or appended to itself) counted each segment twice:
 // lines_per_scan doubled and points_per_line halved, exit 0. An extractor reports a segment once.
+// The ends are compared as a pair in either order: a segment written again from its other end
+// (a tool that walks its lines both ways) is the same segment, and counted twice just the same.
 void RequireNoRepeatedRow(const std::vector<LinesCsvRow>& rows, const std::filesystem::path& file) {
-  std::map<std::tuple<long, std::string, double, double, double, double>, std::size_t> first_line;
+  using End = std::pair<double, double>;
+  std::map<std::tuple<long, std::string, End, End>, std::size_t> first_line;
   for (const LinesCsvRow& row : rows) {
     const perception::LineSegment& s = row.segment;
+    const End a{s.start.x(), s.start.y()};
+    const End b{s.end.x(), s.end.y()};
     const auto [at, inserted] = first_line.emplace(
-        std::tuple{row.scan, row.extractor, s.start.x(), s.start.y(), s.end.x(), s.end.y()},
-        row.line_number);
+        std::tuple{row.scan, row.extractor, std::min(a, b), std::max(a, b)}, row.line_number);
     if (inserted) continue;
     throw sim::ConfigError(file.string() + ":" + std::to_string(row.line_number), "x1_m",
                            "repeats line " + std::to_string(at->second) + " (scan " +
                                std::to_string(row.scan) + ", extractor " + row.extractor +
-                               ", the same ends): an extractor reports each segment once; was "
-                               "the file written twice?");
+                               ", the same ends, in either order): an extractor reports each "
+                               "segment once; was the file written twice?");
   }
 }
 

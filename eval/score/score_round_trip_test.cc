@@ -10,6 +10,9 @@
 #include <fstream>
 #include <numbers>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "eval/protocol.h"
 #include "eval/score/csv_table.h"
@@ -236,6 +239,35 @@ TEST(ScoreRoundTripTest, ALinesFileWrittenTwiceIsRefused) {
   try {
     ScoreLinesFile(RunDir(), file);
     ADD_FAILURE() << "a lines file written twice was scored";
+  } catch (const sim::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find(file.string() + ":" + std::to_string(rows + 2) +
+                                         ": x1_m: repeats line 2 (scan 0, extractor "),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+// s61 thirty-sixth pass: the same segment again with its ends swapped (a tool that writes its
+// lines from either end) passed the repeat check and was counted twice, exit 0.
+TEST(ScoreRoundTripTest, ASegmentRepeatedWithItsEndsSwappedIsRefused) {
+  const std::string own = testing::Slurp(RunDir() / "lines.csv");
+  const std::size_t rows = static_cast<std::size_t>(std::count(own.begin(), own.end(), '\n')) - 1;
+  ASSERT_GT(rows, 0u);
+  // The first row, its fields split on commas (no field of the run's own file is quoted).
+  const std::size_t begin = own.find('\n') + 1;
+  std::vector<std::string> fields;
+  std::stringstream first(own.substr(begin, own.find('\n', begin) - begin));
+  for (std::string field; std::getline(first, field, ',');) fields.push_back(field);
+  ASSERT_GE(fields.size(), 6u);
+  std::swap(fields[2], fields[4]);  // x1_m <-> x2_m
+  std::swap(fields[3], fields[5]);  // y1_m <-> y2_m
+  std::string swapped;
+  for (std::size_t i = 0; i < fields.size(); ++i) swapped += (i ? "," : "") + fields[i];
+  const fs::path file = testing::WriteFile(testing::MakeTempDir("score_swapped") / "swapped.csv",
+                                           own + swapped + "\n");
+  try {
+    ScoreLinesFile(RunDir(), file);
+    ADD_FAILURE() << "a segment given twice, its ends swapped, was scored";
   } catch (const sim::ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find(file.string() + ":" + std::to_string(rows + 2) +
                                          ": x1_m: repeats line 2 (scan 0, extractor "),
