@@ -122,6 +122,22 @@ TEST(ReplayCliTest, ExtractorOptionsAreSetByKeyAndBadKeysAreNamed) {
       log.string() + ", ";
   EXPECT_EQ(too_long.err.rfind(too_long_line, 0), 0u) << too_long.err;
   EXPECT_FALSE(fs::exists(dir / "e"));
+  // s61: the same options given as the extractor's whole mapping were not seen as set (the check
+  // compared the --set's text with `split_and_merge.min_points`): both ran, exit 0, no line found.
+  for (const auto& [assignment, refusal] :
+       {std::pair{"split_and_merge={min_points: 152}",
+                  "plywood: --set: split_and_merge.min_points: 152 is more than the 151 points"},
+        std::pair{"split_and_merge={min_length_m: 100}",
+                  "plywood: --set: split_and_merge.min_length_m: 100 m is more than twice"}}) {
+    SCOPED_TRACE(assignment);
+    const Result r = RunPlywood("replay " + log.string() + " --set '" + std::string(assignment) +
+                                    "' --out " + (dir / "g").string(),
+                                dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.err.rfind(refusal, 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "g"));
+  }
   const Result long_wall =
       RunPlywood("replay " + log.string() + " --set split_and_merge.min_length_m=10 --out " +
                      (dir / "f").string(),

@@ -81,23 +81,23 @@ void RequireOptionsOfTheExtractorRun(const LogReplayRequest& request) {
 // fullest scan finds no line in any scan, and the replay reported rays_explained 0, exit 0 (s57's
 // left item). Only counts the user set: a default above a log's sparse scans is the extractor's
 // own limit. The points are those the replay gives the extractor (returns within range).
-void RequireCountsTheScansCanMeet(const LogReplayRequest& request,
+void RequireCountsTheScansCanMeet(const LogReplayRequest& request, const YAML::Node& lines_node,
                                   const perception::LineExtractorOptions& options,
                                   const perception::CarmenLog& log) {
+  // Set by the user: under the extractor in the node the --sets built (it starts empty), so a
+  // whole mapping (`--set 'split_and_merge={min_points: 1000}'`) counts as its key does (s61).
+  const YAML::Node extractor_node = lines_node[request.extractor];
+  const auto user_set = [&](const std::string& key) {
+    return extractor_node.IsMap() && extractor_node[key].IsDefined();
+  };
   std::vector<std::pair<std::string, int>> counts;
   for (const auto& [key, count] : perception::PointsEachLineNeeds(options, request.extractor)) {
-    const std::string dotted = request.extractor + "." + key;
-    if (std::any_of(request.overrides.begin(), request.overrides.end(),
-                    [&](const auto& set) { return set.substr(0, set.find('=')) == dotted; })) {
-      counts.emplace_back(dotted, count);
-    }
+    if (user_set(key)) counts.emplace_back(request.extractor + "." + key, count);
   }
   // The same for a minimum length above twice the farthest return (no two points of a scan lie
   // farther apart): min_length_m 1e300 gave rays_explained 0, exit 0 (s60).
   const std::string length_key = request.extractor + ".min_length_m";
-  const bool length_set =
-      std::any_of(request.overrides.begin(), request.overrides.end(),
-                  [&](const auto& set) { return set.substr(0, set.find('=')) == length_key; });
+  const bool length_set = user_set("min_length_m");
   if (counts.empty() && !length_set) return;
   std::size_t points = 0;
   double farthest_m = 0.0;
@@ -154,7 +154,7 @@ LogReplaySummary RunLogReplay(const LogReplayRequest& request) {
   } catch (const std::runtime_error& e) {
     throw std::invalid_argument(e.what());  // a malformed log is bad input: one line, exit 2
   }
-  RequireCountsTheScansCanMeet(request, lines.options, log);
+  RequireCountsTheScansCanMeet(request, lines_node, lines.options, log);
   LogReplaySummary summary;
   summary.out_dir = request.out_dir.empty() ? DefaultReplayDirectory(request.log, request.extractor)
                                             : request.out_dir;
