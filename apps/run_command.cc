@@ -1,6 +1,7 @@
 // plywood run EXPERIMENT.yaml [--out DIR] [--seed N] [--set KEY.PATH=VALUE]... [--quiet]
 //                             [--no-snapshot] [--force] [--video OUT.mp4 [--video-fps N]]
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -32,6 +33,26 @@ void RequireWritableVideo(const std::filesystem::path& video, double fps) {
     throw UsageError("--video: " + video.string() + ": no folder " + folder.string() +
                      " to write it in");
   }
+}
+
+// The run is written into OUT.partial-PID and moved to OUT when it ends: a video inside OUT
+// (or OUT itself) made that move fail after the whole run ("cannot move the finished run into
+// place", or with --force "changed while the run was going"), exit 2, the results left in the
+// .partial folder (s61).
+void RequireVideoOutsideTheRunFolder(const std::filesystem::path& video,
+                                     const std::filesystem::path& out_dir) {
+  const auto resolved = [](const std::filesystem::path& path) {
+    std::filesystem::path p = std::filesystem::weakly_canonical(std::filesystem::absolute(path));
+    return p.has_filename() ? p : p.parent_path();  // `runs/x/` names the folder runs/x
+  };
+  const std::filesystem::path folder = resolved(out_dir);
+  const std::filesystem::path file = resolved(video);
+  const auto [end_of_folder, rest] =
+      std::mismatch(folder.begin(), folder.end(), file.begin(), file.end());
+  if (end_of_folder != folder.end()) return;
+  throw UsageError("--video: " + video.string() + " is inside the run's folder " +
+                   out_dir.string() +
+                   " (--out), which the run writes whole when it ends: write the video elsewhere");
 }
 
 }  // namespace
@@ -98,6 +119,7 @@ Command AddRunCommand(CLI::App& app) {
                                  flags->video + "'");
               }
               RequireWritableVideo(flags->video, flags->video_fps);
+              RequireVideoOutsideTheRunFolder(flags->video, out_dir);
               eval::RequireObservableProtocol(config, "--video");
               video = std::make_unique<render::VideoRecorder>(
                   flags->video, render::VideoOptions{.fps = flags->video_fps});

@@ -5,6 +5,9 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <utility>
 
 #include "tests/support/cli_test_support.h"
 #include "tests/support/mujoco_test_support.h"
@@ -59,6 +62,34 @@ TEST(VideoCliTest, RefusesAFileThatIsNotMp4) {
                  dir);
   EXPECT_EQ(result.exit_code, 2);
   EXPECT_NE(result.err.find("--video"), std::string::npos) << result.err;
+}
+
+// s61: the run is written into OUT.partial-PID and moved to OUT at its end, so a video inside OUT
+// (or OUT itself) made the move fail after the whole run: exit 2, "cannot move the finished run
+// into place (...: did another run finish there meanwhile?)", the results left in the .partial
+// folder. Refused before the run, nothing written.
+TEST(VideoCliTest, RefusesAVideoInsideTheRunsFolder) {
+  const std::filesystem::path dir = MakeTempDir("video_cli_inside");
+  std::filesystem::create_directories(dir / "run");
+  for (const auto& [out, video] :
+       {std::pair{dir / "run", dir / "run" / "v.mp4"}, std::pair{dir / "v.mp4", dir / "v.mp4"}}) {
+    SCOPED_TRACE(video.string());
+    const testing::CliResult result =
+        RunPlywood("run " + (SourceRoot() / "experiments/default.yaml").string() +
+                       " --set duration_s=0.5 --quiet --no-snapshot --video " + video.string() +
+                       " --out " + out.string(),
+                   dir);
+    EXPECT_EQ(result.exit_code, 2) << result.err;
+    EXPECT_EQ(result.err, "plywood: --video: " + video.string() + " is inside the run's folder " +
+                              out.string() +
+                              " (--out), which the run writes whole when it ends: write the "
+                              "video elsewhere\n");
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir / "run"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "v.mp4"));
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos) << entry.path();
+  }
 }
 
 }  // namespace
