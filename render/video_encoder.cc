@@ -82,6 +82,7 @@ std::string VideoEncoder::FfmpegSaid() const {
     std::string text = line;
     while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
     // The user gave path_; the staged name is ours.
+    ReplaceAll(text, "file:" + staged_.string(), path_.string());
     ReplaceAll(text, staged_.string(), path_.string());
     if (!text.empty()) return text;
   }
@@ -101,12 +102,15 @@ void VideoEncoder::Start(int width, int height) {
   const std::string size =
       std::to_string(width + width % 2) + "x" + std::to_string(height + height % 2);
   const std::string rate = std::to_string(fps_);
+  // ffmpeg reads its output argument as a protocol URL or an option: `file:a.mp4` was written as
+  // a.partial-PID.mp4 (the rename then failed), `pipe:1.mp4` and `tcp:x.mp4` were no files,
+  // `-y.mp4` an unknown option, each after the whole run (s61). `file:` names the file as given.
+  const std::string output = "file:" + staged_.string();
   std::vector<std::string> args = {
-      "ffmpeg",   "-hide_banner", "-loglevel", "error",      "-y",
-      "-f",       "rawvideo",     "-pix_fmt",  "rgb24",      "-s",
-      size,       "-r",           rate,        "-i",         "pipe:0",
-      "-an",      "-c:v",         "libx264",   "-preset",    "veryfast",
-      "-pix_fmt", "yuv420p",      "-movflags", "+faststart", staged_.string()};
+      "ffmpeg",   "-hide_banner", "-loglevel",  "error",   "-y",      "-f",       "rawvideo",
+      "-pix_fmt", "rgb24",        "-s",         size,      "-r",      rate,       "-i",
+      "pipe:0",   "-an",          "-c:v",       "libx264", "-preset", "veryfast", "-pix_fmt",
+      "yuv420p",  "-movflags",    "+faststart", output};
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);

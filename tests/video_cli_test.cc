@@ -92,5 +92,31 @@ TEST(VideoCliTest, RefusesAVideoInsideTheRunsFolder) {
   }
 }
 
+// s61: ffmpeg read its output name as a protocol URL or an option: `file:a.mp4` was written as
+// a.partial-PID.mp4 and the rename failed, `pipe:1.mp4` was no file, `-y.mp4` an unknown option;
+// each exit 1 after the whole run. Each is now the file it names.
+TEST(VideoCliTest, NamesFfmpegWouldReadAsAProtocolOrAnOptionAreFiles) {
+  if (std::system("ffmpeg -version > /dev/null 2>&1") != 0) {
+    std::printf("SKIPPED: ffmpeg not installed (Debian package ffmpeg)\n");
+    std::exit(77);
+  }
+  const std::filesystem::path dir = MakeTempDir("video_cli_names");
+  int runs = 0;
+  for (const std::string name : {"file:a.mp4", "pipe:1.mp4", "-y.mp4"}) {
+    SCOPED_TRACE(name);
+    const testing::CliResult result =
+        RunPlywood("run " + (SourceRoot() / "experiments/default.yaml").string() +
+                       " --set duration_s=0.5 --quiet --no-snapshot --video " + name +
+                       " --out run-" + std::to_string(++runs),
+                   dir, dir);
+    EXPECT_EQ(result.exit_code, 0) << result.err;
+    std::error_code error;
+    EXPECT_GT(std::filesystem::file_size(dir / name, error), 0u) << error.message();
+  }
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    EXPECT_EQ(entry.path().filename().string().find(".partial"), std::string::npos) << entry.path();
+  }
+}
+
 }  // namespace
 }  // namespace plywood
