@@ -91,12 +91,15 @@ Command AddRunCommand(CLI::App& app) {
   cli->add_flag("--force", flags->force,
                 "replace an earlier run in --out (a directory with its config.yaml and "
                 "metrics.json); refused if it holds any file a run does not write");
-  cli->add_option("--video", flags->video,
-                  "also record the run as an MP4 (top-down, offscreen; needs ffmpeg)")
-      ->type_name("OUT.mp4");
+  CLI::Option* video =
+      cli->add_option("--video", flags->video,
+                      "also record the run as an MP4 (top-down, offscreen; needs ffmpeg)")
+          ->type_name("OUT.mp4");
+  // Without --video no frame is drawn: the rate was dropped without a word, exit 0 (s61).
   cli->add_option("--video-fps", flags->video_fps, "video frames per simulated second")
       ->check(CLI::Range(1.0, 60.0))
-      ->default_str("10");
+      ->default_str("10")
+      ->needs(video);
   cli->footer(
       "Examples:\n"
       "  plywood run experiments/default.yaml\n"

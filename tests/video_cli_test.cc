@@ -118,5 +118,18 @@ TEST(VideoCliTest, NamesFfmpegWouldReadAsAProtocolOrAnOptionAreFiles) {
   }
 }
 
+// s61: --video-fps without --video ran, exit 0, no video and no word that the rate was dropped.
+TEST(VideoCliTest, AFrameRateWithoutAVideoIsRefused) {
+  const std::filesystem::path dir = MakeTempDir("video_cli_fps_alone");
+  const testing::CliResult result =
+      RunPlywood("run " + (SourceRoot() / "experiments/default.yaml").string() +
+                     " --set duration_s=0.5 --quiet --no-snapshot --video-fps 30 --out " +
+                     (dir / "run").string(),
+                 dir);
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_EQ(result.err, "plywood: run: --video-fps requires --video (see plywood run --help)\n");
+  EXPECT_FALSE(std::filesystem::exists(dir / "run"));
+}
+
 }  // namespace
 }  // namespace plywood
