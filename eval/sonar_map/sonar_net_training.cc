@@ -307,6 +307,7 @@ SonarNetTrainingReport TrainSonarNet(
   report.classical = perception::ScoreProbabilities(p_classical, labels);
   report.base_rate = perception::ScoreProbabilities(p_prior, labels);
   // Staged and renamed into place: a failed write leaves an earlier file as it was.
+  net.RequireLoadable(options.out.string());
   sim::WriteTextFile(options.out, net.ToText());
   return report;
 }

@@ -172,7 +172,24 @@ std::string SonarNet::ToText() const {
   return out.str();
 }
 
+void SonarNet::RequireLoadable(const std::string& destination) const {
+  for (std::size_t l = 0; l < weights_.size(); ++l) {
+    for (int r = 0; r < weights_[l].rows(); ++r) {
+      for (int c = 0; c <= weights_[l].cols(); ++c) {
+        const double v = c < weights_[l].cols() ? weights_[l](r, c) : biases_[l](r);
+        if (std::abs(v) <= kMaxAbsWeight) continue;  // NaN fails this too
+        throw std::runtime_error(
+            destination + ": not written: layer " + std::to_string(l + 1) + " row " +
+            std::to_string(r + 1) + " holds " + Format(v) +
+            ", beyond the +-1e6 a run loads (training diverged; the shipped networks' are within "
+            "+-13)");
+      }
+    }
+  }
+}
+
 void SonarNet::Save(const std::filesystem::path& path) const {
+  RequireLoadable(path.string());
   std::ofstream file(path, std::ios::binary);
   if (!file) throw std::runtime_error(path.string() + ": cannot open for writing");
   file << ToText();

@@ -49,7 +49,11 @@ class SonarNet final : public SonarCellModel {
 
   // Text file: magic + version line, layer sizes, then each layer's weights and biases written
   // with 17 significant digits, so Save(Load(f)) reproduces f byte for byte.
+  // @throws std::runtime_error naming `path`, writing nothing, for weights Load would refuse.
   void Save(const std::filesystem::path& path) const;
+  // @throws std::runtime_error "<destination>: ..." for a weight or bias that is not finite or is
+  // beyond the +-1e6 Load accepts: a file no run could load is never written.
+  void RequireLoadable(const std::string& destination) const;
   std::string ToText() const;
   // @throws std::runtime_error "<path>: line N: <what is wrong>" for a missing, truncated or
   // malformed file (wrong magic or version, bad sizes, non-numbers, non-finite weights).

@@ -152,6 +152,33 @@ TEST(SonarNetTest, SavingOntoAFullDiskIsAnError) {
   }
 }
 
+// s61 thirty-eighth pass: training that diverged wrote weights beyond the +-1e6 Load accepts, so
+// `plywood train` succeeded with a file every run then refused. Such a network is never written.
+TEST(SonarNetTest, WeightsLoadWouldRefuseAreNeverWritten) {
+  SonarNetTrainOptions diverging = Tiny();
+  diverging.learning_rate = 1e12;
+  SonarNet net({8}, 3);
+  net.Train(ToyData(200, 7), diverging);
+  const std::filesystem::path file =
+      std::filesystem::path(::testing::TempDir()) / "diverged_sonar_net.txt";
+  std::filesystem::remove(file);
+  try {
+    net.Save(file);
+    FAIL() << "expected std::runtime_error";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind(file.string() + ": not written: layer ", 0), 0u) << what;
+    EXPECT_NE(what.find("beyond the +-1e6 a run loads"), std::string::npos) << what;
+  }
+  EXPECT_FALSE(std::filesystem::exists(file));
+  // A network that trained normally saves and loads back.
+  SonarNet fine({8}, 3);
+  fine.Train(ToyData(200, 7), Tiny());
+  EXPECT_NO_THROW(fine.Save(file));
+  EXPECT_EQ(SonarNet::Load(file).ToText(), fine.ToText());
+  std::filesystem::remove(file);
+}
+
 TEST(SonarNetTest, CommittedWeightsLoadAndBeatTheConeModelOnAWall) {
   const auto path = std::filesystem::path(PLYWOOD_SOURCE_ROOT) / "models" / "sonar_net_v1.txt";
   const SonarNet net = SonarNet::Load(path);

@@ -626,6 +626,8 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
     if (!root.IsMap()) break;  // reported below as "expected a mapping"
     const std::string aliased = AliasedAssignment(assignment);
     ApplyOverride(root, aliased, "--set " + assignment);
+    // A whole mapping given by --set (`sensors.laser={sigma_m: 0.02}`) reads as the file would.
+    NormaliseAliases(root, "--set " + assignment);
     set_keys.push_back(aliased.substr(0, aliased.find('=')));
   }
   RejectNonStandardTags(root, source);  // after the overrides: a --set value may carry one too
