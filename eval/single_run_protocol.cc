@@ -89,7 +89,8 @@ int SingleRunProtocol(const ProtocolContext& context) {
   const bool quiet = context.quiet;
   const bool snapshots = context.snapshots;
   sim::ExperimentRunner runner(config);
-  RequireASonarMapTruth(runner);  // before the run, not after it
+  // Seed 001's ground truth, checked before the run and scored against after it.
+  const auto sonar_map_truth = RequireASonarMapTruth(runner);
   runner.SetObserver(context.observer);
   render::SnapshotOptions snapshot_options;
   snapshot_options.view.longer_side_px = config.output.snapshot_size_px;
@@ -129,7 +130,7 @@ int SingleRunProtocol(const ProtocolContext& context) {
   // below, which may change the record.
   const sim::FormattedSensorLogs formatted = sensor_logs.Finish(runner.record());
 
-  AddSonarMapMetrics(runner);     // seed 001 map scores, if the sonar explorer drove
+  AddSonarMapMetrics(runner, sonar_map_truth.get());  // seed 001 map scores, if it explored
   GeometricMapRun geometric_map;  // seed 003's map, with a geometric_map: section
   const bool has_geometric_map = AddGeometricMapMetrics(runner, &geometric_map);
   // Line extraction scores (lines: section); wall-clock time per scan goes to timing.json only.

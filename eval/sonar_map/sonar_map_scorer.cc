@@ -56,11 +56,13 @@ std::optional<double> BodyRadius(const sim::Scene& scene, const std::string& sou
 
 }  // namespace
 
-void RequireASonarMapTruth(const sim::ExperimentRunner& runner) {
-  if (dynamic_cast<const perception::SonarExplorer*>(runner.controller()) == nullptr) return;
+std::unique_ptr<OccupancyTruth> RequireASonarMapTruth(const sim::ExperimentRunner& runner) {
+  if (dynamic_cast<const perception::SonarExplorer*>(runner.controller()) == nullptr) {
+    return nullptr;
+  }
   const sim::ExperimentConfig& config = runner.config();
-  const auto truth = MakeOccupancyTruth(runner.scene().model(),
-                                        {config.spawn.x_m, config.spawn.y_m}, config.source_file);
+  auto truth = MakeOccupancyTruth(runner.scene().model(), {config.spawn.x_m, config.spawn.y_m},
+                                  config.source_file);
   if (const auto edge = truth->ReachableCellOnTheEdge()) {
     throw sim::ConfigError(
         config.source_file, "world",
@@ -99,14 +101,19 @@ void RequireASonarMapTruth(const sim::ExperimentRunner& runner) {
             "at least " +
             msgs::MillimetreNumber(std::ceil(reach_m * 10.0) / 10.0) + " (or move robot.spawn)");
   }
+  return truth;
 }
 
-bool AddSonarMapMetrics(sim::ExperimentRunner& runner) {
+bool AddSonarMapMetrics(sim::ExperimentRunner& runner, const OccupancyTruth* truth) {
   const auto* explorer = dynamic_cast<const perception::SonarExplorer*>(runner.controller());
   if (explorer == nullptr) return false;
   const auto& spawn = runner.config().spawn;
-  const auto truth = MakeOccupancyTruth(runner.scene().model(), {spawn.x_m, spawn.y_m},
-                                        runner.config().source_file);
+  std::unique_ptr<OccupancyTruth> made;
+  if (truth == nullptr) {
+    made = MakeOccupancyTruth(runner.scene().model(), {spawn.x_m, spawn.y_m},
+                              runner.config().source_file);
+    truth = made.get();
+  }
   const perception::CognitiveMap map = explorer->Map();
   const OccupancyError map_error =
       ScoreOccupancy(*truth, [&](const Eigen::Vector2d& p) { return MapFree(map, p); });

@@ -1,7 +1,9 @@
 #pragma once
 
+#include <memory>
 #include <string>
 
+#include "eval/sonar_map/sonar_ground_truth.h"
 #include "sim/runner/experiment_runner.h"
 
 namespace plywood::eval {
@@ -12,17 +14,18 @@ namespace plywood::eval {
 // occupancy.graph_edges and occupancy.rings. A_tot is the reachable free area inside the room's
 // bounding box; A_e the area inside that box whose free/not-free label differs. The map lives in
 // the odometry frame, which starts at the spawn pose, so it is compared in place. Returns false
-// (and does nothing) for any other controller.
-bool AddSonarMapMetrics(sim::ExperimentRunner& runner);
+// (and does nothing) for any other controller. `truth`: the one RequireASonarMapTruth returned
+// before the run (the same world and spawn), else it is made here.
+bool AddSonarMapMetrics(sim::ExperimentRunner& runner, const OccupancyTruth* truth = nullptr);
 
 // Before a run driven by seed 001's SonarExplorer: the ground truth its map will be scored against
 // can be made (the spawn in free space, the world within the raster's limit) and the free space
 // round the spawn is closed by the world's walls. In a room with a wall left out the robot drove
 // out through the gap and its perimeter ended on its time limit 5 m outside, yet the run ended
 // `map_complete` with occupancy.error 0.0038 against a truth cut at the walls' bounding box (s61).
-// @throws sim::ConfigError naming the experiment file and `world` (or `robot.spawn`). No-op for
-// other controllers.
-void RequireASonarMapTruth(const sim::ExperimentRunner& runner);
+// Returns that truth, for AddSonarMapMetrics after the run; null for other controllers.
+// @throws sim::ConfigError naming the experiment file and `world` (or `robot.spawn`).
+std::unique_ptr<OccupancyTruth> RequireASonarMapTruth(const sim::ExperimentRunner& runner);
 
 // Writes DIR/cognitive_map.json (eval/sonar_map/cognitive_map_json.h): the map the explorer
 // built, in its odometry frame. No-op for other controllers.
