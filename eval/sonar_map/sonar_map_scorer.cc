@@ -9,6 +9,7 @@
 
 #include "eval/sonar_map/body_reach.h"
 #include "eval/sonar_map/cognitive_map_json.h"
+#include "eval/sonar_map/narrow_gaps.h"
 #include "eval/sonar_map/sonar_ground_truth.h"
 #include "msgs/shortest_number.h"
 #include "perception/sonar_map/sonar_explorer.h"
@@ -132,6 +133,13 @@ bool AddSonarMapMetrics(sim::ExperimentRunner& runner, const OccupancyTruth* tru
         ScoreOccupancy(*body, [&](const Eigen::Vector2d& p) { return MapFree(map, p); });
     m.Set("occupancy.error_body_reach", body_error.Error());
     m.Set("occupancy.area_body_reach_m2", body_error.AreaTotalM2());
+    // Also beside e: the same map with the gaps narrower than the body left unscored, which the
+    // seed's method keeps obstacle by its own rule and the world has free (question 6).
+    const auto wide = MakeTruthWithoutNarrowGaps(*truth, 2.0 * *radius);
+    const OccupancyError wide_error =
+        ScoreOccupancy(*wide, [&](const Eigen::Vector2d& p) { return MapFree(map, p); });
+    m.Set("occupancy.error_without_narrow_gaps", wide_error.Error());
+    m.Set("occupancy.area_narrow_gaps_m2", map_error.AreaTotalM2() - wide_error.AreaTotalM2());
   }
   m.Set("occupancy.partitions", static_cast<double>(map.partitions.partitions().size()));
   m.Set("occupancy.graph_nodes", static_cast<double>(map.graph.nodes.size()));
