@@ -16,11 +16,6 @@
 namespace plywood::eval {
 namespace {
 
-// The largest |heading| a CSV trajectory may hold. Unwrapped headings are fine, but doubles are
-// spaced 1.2e-7 rad at 1e9 rad (the scores print 1e-4 deg, 1.7e-6 rad) and 1e284 rad at 1e300,
-// where a heading of 1e300 was scored as some angle (heading_error_deg -41.4, exit 0).
-constexpr double kMaxHeadingRad = 1e9;
-
 bool IsPlywoodCsv(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   bool first_line = true;  // a UTF-8 byte-order mark there hid "time_s" (read as a TUM file)
@@ -87,7 +82,7 @@ std::vector<NamedTrajectory> ReadPlywoodCsv(const std::filesystem::path& path,
                      "must be within 1e+09 m of the origin, got " + sim::FormatNumber(v));
         }
       }
-      if (std::abs(pose.pose.theta_rad) > kMaxHeadingRad) {
+      if (std::abs(pose.pose.theta_rad) > perception::kMaxTrajectoryHeadingRad) {
         table.Fail(row, h[c + 2],
                    "must be within 1e+09 rad of 0 (beyond it a double cannot hold a heading to "
                    "1e-6 rad), got " +

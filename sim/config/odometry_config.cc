@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "sim/config/config_archive.h"
+#include "sim/config/guarded_algorithms.h"
 #include "sim/config/plugin_loader.h"
 #include "sim/config/plugin_options.h"
 #include "sim/config/yaml_fields.h"
@@ -172,9 +173,11 @@ std::vector<std::pair<std::string, std::unique_ptr<robot::OdometryEstimator>>> M
       e = std::make_unique<robot::EkfOdometry>(geometry, config.ekf, X_WR_initial);
     } else if (const auto* entry = RegisteredAlgorithms().odometry_estimators.Find(name)) {
       const auto options = config.registered.find(name);
-      e = robot::MakeRegistered(
-          *entry, options == config.registered.end() ? robot::ParameterMap() : options->second,
-          geometry, X_WR_initial);
+      e = GuardRegistered(
+          robot::MakeRegistered(
+              *entry, options == config.registered.end() ? robot::ParameterMap() : options->second,
+              geometry, X_WR_initial),
+          "odometry estimator '" + name + "' (" + RegisteredBy("odometry estimator", name) + ")");
     }
     if (e) estimators.emplace_back(name, std::move(e));
   }
