@@ -96,6 +96,9 @@ std::vector<std::string> TakenOdometryKeys() {
   keys.push_back("calibration");
   // The ground truth's own name: trajectory.truth.tum and the truth_* columns of trajectory.csv.
   keys.push_back("truth");
+  // controller.steer_by's name for the truth, and its default: an estimator of that name was
+  // steered by in every run that enabled it, the truth in none.
+  keys.push_back("ground_truth");
   return keys;
 }
 
