@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <fstream>
+#include <functional>
+#include <sstream>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -572,6 +574,73 @@ TEST(ScoreCliTest, AProtocolsRunsAreScoredOneByOne) {
             std::string::npos)
       << changed.err;
   EXPECT_EQ(changed.err.find('\n'), changed.err.size() - 1) << changed.err;
+}
+
+// `text`, a TUM file or a trajectory.csv, with `change` applied to the numbers of each data line
+// (comments and the CSV's header kept), written back with full precision.
+std::string TransformRows(const std::string& text, char separator,
+                          const std::function<void(std::vector<double>&)>& change) {
+  std::istringstream in(text);
+  std::ostringstream out;
+  out.precision(17);
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#' || line.rfind("time_s", 0) == 0) {
+      out << line << '\n';
+      continue;
+    }
+    std::vector<double> values;
+    std::istringstream fields(line);
+    for (std::string field; std::getline(fields, field, separator);) {
+      values.push_back(std::stod(field));
+    }
+    change(values);
+    for (std::size_t k = 0; k < values.size(); ++k) out << (k ? "," : "") << values[k];
+    out << '\n';
+  }
+  std::string result = out.str();
+  if (separator == ' ') std::replace(result.begin(), result.end(), ',', ' ');
+  return result;
+}
+
+// audit39: the scores have no alignment (every estimate starts at the spawn), so a file in
+// millimetres was scored as a final error of 5309 m and one in a frame starting at the origin as
+// its 6.5 m offset from the spawn, exit 0. Refused, naming its first pose; a start 5 cm off (the
+// scorer's closed-form test, eval.score_round_trip_test) is still scored.
+TEST(ScoreCliTest, AnEstimateThatDoesNotStartAtTheSpawnIsRefused) {
+  const fs::path dir = testing::MakeTempDir("score_cli_start");
+  const std::string tum = Slurp(RunDir() / "trajectory.fused.tum");
+  const std::string csv = Slurp(RunDir() / "trajectory.csv");
+  const fs::path mm = testing::WriteFile(dir / "mm.tum", TransformRows(tum, ' ', [](auto& v) {
+                                           v[1] *= 1000.0;
+                                           v[2] *= 1000.0;
+                                         }));
+  const fs::path origin =
+      testing::WriteFile(dir / "origin.csv", TransformRows(csv, ',', [](auto& v) {
+                           for (std::size_t c = 4; c < v.size(); c += 3) v[c] += 6.5;
+                         }));
+  const fs::path near =
+      testing::WriteFile(dir / "near.tum", TransformRows(tum, ' ', [](auto& v) { v[1] += 0.05; }));
+  const std::string run = "score trajectory " + RunDir().string() + " ";
+  const auto in_mm = RunPlywood(run + mm.string(), dir);
+  EXPECT_EQ(in_mm.exit_code, 2) << in_mm.err;
+  EXPECT_EQ(in_mm.err.rfind("plywood: " + mm.string() +
+                                ":2: tx, ty, qz, qw: mm starts at (-6500, 0) heading 0 deg, "
+                                "6493.5 m and 0 deg from the run's start (-6.5, 0) heading 0 deg",
+                            0),
+            0u)
+      << in_mm.err;
+  EXPECT_EQ(in_mm.err.find('\n'), in_mm.err.size() - 1) << in_mm.err;
+  const auto at_origin = RunPlywood(run + origin.string(), dir);
+  EXPECT_EQ(at_origin.exit_code, 2) << at_origin.err;
+  EXPECT_NE(at_origin.err.find("origin.csv:2: encoder_x_m, encoder_y_m, encoder_theta_rad: "
+                               "encoder starts at (0, 0) heading 0 deg, 6.5 m"),
+            std::string::npos)
+      << at_origin.err;
+  EXPECT_NE(at_origin.err.find("so one in another frame or unit (millimetres?) would be scored"),
+            std::string::npos)
+      << at_origin.err;
+  const auto close = RunPlywood(run + near.string(), dir);
+  EXPECT_EQ(close.exit_code, 0) << close.err;
 }
 
 }  // namespace

@@ -16,18 +16,6 @@
 namespace plywood::eval {
 namespace {
 
-bool IsPlywoodCsv(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  bool first_line = true;  // a UTF-8 byte-order mark there hid "time_s" (read as a TUM file)
-  for (std::string line; std::getline(in, line);) {
-    if (std::exchange(first_line, false)) perception::DropUtf8ByteOrderMark(line);
-    const auto first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || line[first] == '#') continue;
-    return line.compare(first, 6, "time_s") == 0;
-  }
-  return false;
-}
-
 bool EndsWith(const std::string& text, const std::string& suffix) {
   return text.size() > suffix.size() &&
          text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
@@ -96,13 +84,25 @@ std::vector<NamedTrajectory> ReadPlywoodCsv(const std::filesystem::path& path,
 
 }  // namespace
 
+bool IsPlywoodCsvLayout(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  bool first_line = true;  // a UTF-8 byte-order mark there hid "time_s" (read as a TUM file)
+  for (std::string line; std::getline(in, line);) {
+    if (std::exchange(first_line, false)) perception::DropUtf8ByteOrderMark(line);
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
+    return line.compare(first, 6, "time_s") == 0;
+  }
+  return false;
+}
+
 std::vector<NamedTrajectory> ReadTrajectoryFile(const std::filesystem::path& path,
                                                 const std::string& tum_name,
                                                 const std::string& name_flag) {
   if (!perception::IsRegularFile(path)) {
     throw sim::ConfigError(path.string(), "", perception::WhyNotARegularFile(path));
   }
-  if (IsPlywoodCsv(path)) return ReadPlywoodCsv(path, name_flag);
+  if (IsPlywoodCsvLayout(path)) return ReadPlywoodCsv(path, name_flag);
   try {
     return {{tum_name, perception::ReadTumTrajectory(path)}};
   } catch (const std::invalid_argument& e) {
