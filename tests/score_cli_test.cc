@@ -643,5 +643,44 @@ TEST(ScoreCliTest, AnEstimateThatDoesNotStartAtTheSpawnIsRefused) {
   EXPECT_EQ(close.exit_code, 0) << close.err;
 }
 
+// audit39: a trajectory.csv whose header names are quoted, as R's write.csv writes them (and
+// Python's csv.QUOTE_ALL every field), was read as TUM and refused, `f.csv:1: tx: expected 8
+// fields (timestamp tx ty tz qx qy qz qw), got 1`. It scores the figures of the file unquoted.
+TEST(ScoreCliTest, ATrajectoryCsvWithQuotedFieldsScoresAsWithout) {
+  const fs::path dir = testing::MakeTempDir("score_cli_quoted");
+  // Every field of the header, or of every line, in quotes.
+  const auto quoted = [](const std::string& csv, bool every_line) {
+    std::istringstream in(csv);
+    std::string out;
+    bool first = true;
+    for (std::string line; std::getline(in, line); first = false) {
+      if (!first && !every_line) {
+        out += line + "\n";
+        continue;
+      }
+      std::istringstream fields(line);
+      std::string sep;
+      for (std::string field; std::getline(fields, field, ','); sep = ",") {
+        out += sep + "\"" + field + "\"";
+      }
+      out += "\n";
+    }
+    return out;
+  };
+  const std::string csv = Slurp(RunDir() / "trajectory.csv");
+  const std::string header_quoted = quoted(csv, false), all_quoted = quoted(csv, true);
+  const std::string run = "score trajectory " + RunDir().string() + " ";
+  const auto plain = RunPlywood(run + (RunDir() / "trajectory.csv").string(), dir);
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  const auto figures = [](const std::string& out) { return out.substr(out.find("estimate ")); };
+  for (const auto& [name, text] : {std::pair{"r.csv", header_quoted}, {"all.csv", all_quoted}}) {
+    SCOPED_TRACE(name);
+    const fs::path file = testing::WriteFile(dir / name, text);
+    const auto r = RunPlywood(run + file.string(), dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(figures(r.out), figures(plain.out)) << r.out;
+  }
+}
+
 }  // namespace
 }  // namespace plywood

@@ -91,7 +91,9 @@ bool IsPlywoodCsvLayout(const std::filesystem::path& path) {
     if (std::exchange(first_line, false)) perception::DropUtf8ByteOrderMark(line);
     const auto first = line.find_first_not_of(" \t\r");
     if (first == std::string::npos || line[first] == '#') continue;
-    return line.compare(first, 6, "time_s") == 0;
+    // Quoted, as R's write.csv and Python's csv.QUOTE_ALL write header names, it was read as TUM
+    // and refused as "tx: expected 8 fields ..., got 1"; the CSV reader takes RFC 4180 quotes.
+    return line.compare(first, 6, "time_s") == 0 || line.compare(first, 8, "\"time_s\"") == 0;
   }
   return false;
 }

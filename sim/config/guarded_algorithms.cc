@@ -93,6 +93,7 @@ class GuardedExtractor : public perception::LineExtractor {
       double nearest = std::numeric_limits<double>::infinity();
       for (const Eigen::Vector2d& p : scan.points) {
         nearest = std::min(nearest, std::hypot(p.x() - end.x(), p.y() - end.y()));
+        if (nearest <= kMaxEndToPointM) break;  // near enough: the usual case, and the cheap one
       }
       if (nearest <= kMaxEndToPointM) continue;
       Fail("gave " + segment + " whose end " + Point(end) + " lies " +
