@@ -216,6 +216,15 @@ TEST(PluginMisbehaviourTest, SegmentsFarFromTheirScansPointsEndTheRun) {
                          "in their (the sensor's) frame, not the world's"});
 }
 
+// audit39: a segment of -7 points was scored and written to lines.csv's `points` column, exit 0;
+// `plywood score lines` refuses the run's own file for it (`points: must be in 0..1e9, got -7`).
+TEST(PluginMisbehaviourTest, ASegmentOfANegativePointCountEndsTheRun) {
+  const fs::path dir = MakeTempDir("plugin_negative_points");
+  ExpectNamedRunFailure(RunMisbehavingExtractor("negative_points_lines", dir), dir,
+                        "line extractor 'negative_points_lines'",
+                        {" of -7 points: a segment's point count is in 0..1e9"});
+}
+
 // audit39: an estimator's NaN pose gave null figures, exit 0; a heading of 1e300 rad gave
 // heading_error_deg -41.4, exit 0, a figure `plywood score trajectory` refuses to compute from
 // the run's own trajectory.csv.

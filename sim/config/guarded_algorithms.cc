@@ -5,6 +5,7 @@
 #include <exception>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -80,6 +81,11 @@ class GuardedExtractor : public perception::LineExtractor {
     if (!(s.start.allFinite() && s.end.allFinite() && std::isfinite(s.alpha_rad) &&
           std::isfinite(s.r_m))) {
       Fail("gave " + segment + ", which is not finite");
+    }
+    // lines.csv's `points` column, which `score lines` reads as a count in 0..1e9.
+    if (s.num_points < 0 || s.num_points > 1000000000) {
+      Fail("gave " + segment + " of " + std::to_string(s.num_points) +
+           " points: a segment's point count is in 0..1e9");
     }
     const double off =
         std::max(std::abs(s.SignedLineDistance(s.start)), std::abs(s.SignedLineDistance(s.end)));

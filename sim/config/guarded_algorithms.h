@@ -14,9 +14,10 @@ namespace plywood::sim {
 // (`label`, such as "line extractor 'mine' (plug-in /path/libmine.so)") and what it did, instead
 // of a score computed from it. std::runtime_error (exit 1, a failure during the run) when it
 // throws anything, or gives:
-// - an extractor: a segment or circle that is not finite, a segment whose line (alpha_rad, r_m)
-//   passes more than 1 mm from its ends, or an end more than 0.5 m from every point of the scan
-//   (segments are in the scan's sensor frame): what `plywood score lines` refuses in a file;
+// - an extractor: a segment or circle that is not finite, a segment of a negative point count,
+//   whose line (alpha_rad, r_m) passes more than 1 mm from its ends, or with an end more than
+//   0.5 m from every point of the scan (segments are in the scan's sensor frame): what `plywood
+//   score lines` refuses in a file;
 // - an estimator: a pose not finite, beyond 1e9 m of the origin or 1e9 rad of 0: what `plywood
 //   score trajectory` refuses in a file;
 // - a controller: a wheel speed that is not finite.

@@ -1,8 +1,9 @@
 // A plug-in whose algorithms break their contract, for tests/plugin_errors_test.cc:
 // `nan_lines` returns one segment of NaN per scan, `throwing_lines` throws an int,
 // `throwing_std_lines` a std::runtime_error, `world_frame_lines` a segment 10 m from the scan's
-// points (as if in another frame); the estimators `nan_after_1s` and `spinning_1e300` give a pose
-// of x NaN, or of heading 1e300 rad, from the encoder reading at 1 s on.
+// points (as if in another frame), `negative_points_lines` a segment of -7 points; the estimators
+// `nan_after_1s` and `spinning_1e300` give a pose of x NaN, or of heading 1e300 rad, from the
+// encoder reading at 1 s on.
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -45,22 +46,28 @@ class ThrowingStdLines : public plywood::perception::LineExtractor {
   }
 };
 
-// The segment through the scan's first and last points, moved 10 m along x.
-class WorldFrameLines : public plywood::perception::LineExtractor {
+// The segment through the scan's first and last points, moved `offset_m` along x, of `points`
+// points.
+class ChordLines : public plywood::perception::LineExtractor {
  public:
-  std::string name() const override { return "world_frame_lines"; }
+  ChordLines(double offset_m, int points) : offset_m_(offset_m), points_(points) {}
+  std::string name() const override { return "chord_lines"; }
   std::vector<LineSegment> Extract(const ScanPoints& scan) const override {
     if (scan.size() < 2) return {};
     LineSegment s;
-    s.start = scan.points.front() + Eigen::Vector2d(10, 0);
-    s.end = scan.points.back() + Eigen::Vector2d(10, 0);
+    s.start = scan.points.front() + Eigen::Vector2d(offset_m_, 0);
+    s.end = scan.points.back() + Eigen::Vector2d(offset_m_, 0);
     const Eigen::Vector2d d = (s.end - s.start).normalized();
     const Eigen::Vector2d n(-d.y(), d.x());
     plywood::perception::CanonicalNormalForm(std::atan2(n.y(), n.x()), n.dot(s.start), &s.alpha_rad,
                                              &s.r_m);
-    s.num_points = static_cast<int>(scan.size());
+    s.num_points = points_ ? points_ : static_cast<int>(scan.size());
     return {s};
   }
+
+ private:
+  double offset_m_;
+  int points_;
 };
 
 // Stands still at its initial pose, then gives `bad` from the encoder reading at 1 s on.
@@ -91,7 +98,10 @@ PLYWOOD_PLUGIN(registry) {
                                   return std::make_unique<ThrowingStdLines>();
                                 }});
   registry.line_extractors.Add({"world_frame_lines", [](const plywood::robot::ParameterMap&) {
-                                  return std::make_unique<WorldFrameLines>();
+                                  return std::make_unique<ChordLines>(10.0, 0);
+                                }});
+  registry.line_extractors.Add({"negative_points_lines", [](const plywood::robot::ParameterMap&) {
+                                  return std::make_unique<ChordLines>(0.0, -7);
                                 }});
   registry.odometry_estimators.Add(
       {"nan_after_1s", false,
