@@ -170,6 +170,14 @@ TEST(ScoreCliTest, BadFilesFailWithOneLineNamingFileLineAndField) {
        "l.csv:1: colour: unknown column"},
       {"lines missing column", "lines", "l2.csv", "scan,x1_m,y1_m,x2_m\n0,1,0,1\n",
        "l2.csv:1: y2_m: missing column"},
+      {"lines separated by tabs (audit39: 'scan<TAB>extractor<TAB>...: unknown column (known: "
+       "scan, extractor, ...)')",
+       "lines", "t.csv", "scan\textractor\tx1_m\ty1_m\tx2_m\ty2_m\n0\tmine\t1\t0\t1\t1\n",
+       "t.csv:1: header: one column whose name holds tabs: columns are separated by commas"},
+      {"CSV trajectory separated by semicolons (audit39: 'header: expected time_s then groups "
+       "NAME_x_m,NAME_y_m,NAME_theta_rad, got 1 columns')",
+       "trajectory", "t2.csv", "time_s;mine_x_m;mine_y_m;mine_theta_rad\n0;-6.5;0;0\n",
+       "t2.csv:1: header: one column whose name holds semicolons: columns are separated by commas"},
       {"lines empty", "lines", "m.csv", "", "m.csv: empty file"},
       {"lines header only", "lines", "m2.csv", lines_header, "m2.csv: no rows after the header"},
       {"lines unterminated quote", "lines", "m3.csv", lines_header + "0,\"mine,1,0,1,1\n",
