@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <fstream>
+#include <functional>
+#include <sstream>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -168,6 +170,14 @@ TEST(ScoreCliTest, BadFilesFailWithOneLineNamingFileLineAndField) {
        "l.csv:1: colour: unknown column"},
       {"lines missing column", "lines", "l2.csv", "scan,x1_m,y1_m,x2_m\n0,1,0,1\n",
        "l2.csv:1: y2_m: missing column"},
+      {"lines separated by tabs (audit39: 'scan<TAB>extractor<TAB>...: unknown column (known: "
+       "scan, extractor, ...)')",
+       "lines", "t.csv", "scan\textractor\tx1_m\ty1_m\tx2_m\ty2_m\n0\tmine\t1\t0\t1\t1\n",
+       "t.csv:1: header: one column whose name holds tabs: columns are separated by commas"},
+      {"CSV trajectory separated by semicolons (audit39: 'header: expected time_s then groups "
+       "NAME_x_m,NAME_y_m,NAME_theta_rad, got 1 columns')",
+       "trajectory", "t2.csv", "time_s;mine_x_m;mine_y_m;mine_theta_rad\n0;-6.5;0;0\n",
+       "t2.csv:1: header: one column whose name holds semicolons: columns are separated by commas"},
       {"lines empty", "lines", "m.csv", "", "m.csv: empty file"},
       {"lines header only", "lines", "m2.csv", lines_header, "m2.csv: no rows after the header"},
       {"lines unterminated quote", "lines", "m3.csv", lines_header + "0,\"mine,1,0,1,1\n",
@@ -572,6 +582,112 @@ TEST(ScoreCliTest, AProtocolsRunsAreScoredOneByOne) {
             std::string::npos)
       << changed.err;
   EXPECT_EQ(changed.err.find('\n'), changed.err.size() - 1) << changed.err;
+}
+
+// `text`, a TUM file or a trajectory.csv, with `change` applied to the numbers of each data line
+// (comments and the CSV's header kept), written back with full precision.
+std::string TransformRows(const std::string& text, char separator,
+                          const std::function<void(std::vector<double>&)>& change) {
+  std::istringstream in(text);
+  std::ostringstream out;
+  out.precision(17);
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#' || line.rfind("time_s", 0) == 0) {
+      out << line << '\n';
+      continue;
+    }
+    std::vector<double> values;
+    std::istringstream fields(line);
+    for (std::string field; std::getline(fields, field, separator);) {
+      values.push_back(std::stod(field));
+    }
+    change(values);
+    for (std::size_t k = 0; k < values.size(); ++k) out << (k ? "," : "") << values[k];
+    out << '\n';
+  }
+  std::string result = out.str();
+  if (separator == ' ') std::replace(result.begin(), result.end(), ',', ' ');
+  return result;
+}
+
+// audit39: the scores have no alignment (every estimate starts at the spawn), so a file in
+// millimetres was scored as a final error of 5309 m and one in a frame starting at the origin as
+// its 6.5 m offset from the spawn, exit 0. Refused, naming its first pose; a start 5 cm off (the
+// scorer's closed-form test, eval.score_round_trip_test) is still scored.
+TEST(ScoreCliTest, AnEstimateThatDoesNotStartAtTheSpawnIsRefused) {
+  const fs::path dir = testing::MakeTempDir("score_cli_start");
+  const std::string tum = Slurp(RunDir() / "trajectory.fused.tum");
+  const std::string csv = Slurp(RunDir() / "trajectory.csv");
+  const fs::path mm = testing::WriteFile(dir / "mm.tum", TransformRows(tum, ' ', [](auto& v) {
+                                           v[1] *= 1000.0;
+                                           v[2] *= 1000.0;
+                                         }));
+  const fs::path origin =
+      testing::WriteFile(dir / "origin.csv", TransformRows(csv, ',', [](auto& v) {
+                           for (std::size_t c = 4; c < v.size(); c += 3) v[c] += 6.5;
+                         }));
+  const fs::path near =
+      testing::WriteFile(dir / "near.tum", TransformRows(tum, ' ', [](auto& v) { v[1] += 0.05; }));
+  const std::string run = "score trajectory " + RunDir().string() + " ";
+  const auto in_mm = RunPlywood(run + mm.string(), dir);
+  EXPECT_EQ(in_mm.exit_code, 2) << in_mm.err;
+  EXPECT_EQ(in_mm.err.rfind("plywood: " + mm.string() +
+                                ":2: tx, ty, qz, qw: mm starts at (-6500, 0) heading 0 deg, "
+                                "6493.5 m and 0 deg from the run's start (-6.5, 0) heading 0 deg",
+                            0),
+            0u)
+      << in_mm.err;
+  EXPECT_EQ(in_mm.err.find('\n'), in_mm.err.size() - 1) << in_mm.err;
+  const auto at_origin = RunPlywood(run + origin.string(), dir);
+  EXPECT_EQ(at_origin.exit_code, 2) << at_origin.err;
+  EXPECT_NE(at_origin.err.find("origin.csv:2: encoder_x_m, encoder_y_m, encoder_theta_rad: "
+                               "encoder starts at (0, 0) heading 0 deg, 6.5 m"),
+            std::string::npos)
+      << at_origin.err;
+  EXPECT_NE(at_origin.err.find("so one in another frame or unit (millimetres?) would be scored"),
+            std::string::npos)
+      << at_origin.err;
+  const auto close = RunPlywood(run + near.string(), dir);
+  EXPECT_EQ(close.exit_code, 0) << close.err;
+}
+
+// audit39: a trajectory.csv whose header names are quoted, as R's write.csv writes them (and
+// Python's csv.QUOTE_ALL every field), was read as TUM and refused, `f.csv:1: tx: expected 8
+// fields (timestamp tx ty tz qx qy qz qw), got 1`. It scores the figures of the file unquoted.
+TEST(ScoreCliTest, ATrajectoryCsvWithQuotedFieldsScoresAsWithout) {
+  const fs::path dir = testing::MakeTempDir("score_cli_quoted");
+  // Every field of the header, or of every line, in quotes.
+  const auto quoted = [](const std::string& csv, bool every_line) {
+    std::istringstream in(csv);
+    std::string out;
+    bool first = true;
+    for (std::string line; std::getline(in, line); first = false) {
+      if (!first && !every_line) {
+        out += line + "\n";
+        continue;
+      }
+      std::istringstream fields(line);
+      std::string sep;
+      for (std::string field; std::getline(fields, field, ','); sep = ",") {
+        out += sep + "\"" + field + "\"";
+      }
+      out += "\n";
+    }
+    return out;
+  };
+  const std::string csv = Slurp(RunDir() / "trajectory.csv");
+  const std::string header_quoted = quoted(csv, false), all_quoted = quoted(csv, true);
+  const std::string run = "score trajectory " + RunDir().string() + " ";
+  const auto plain = RunPlywood(run + (RunDir() / "trajectory.csv").string(), dir);
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  const auto figures = [](const std::string& out) { return out.substr(out.find("estimate ")); };
+  for (const auto& [name, text] : {std::pair{"r.csv", header_quoted}, {"all.csv", all_quoted}}) {
+    SCOPED_TRACE(name);
+    const fs::path file = testing::WriteFile(dir / name, text);
+    const auto r = RunPlywood(run + file.string(), dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(figures(r.out), figures(plain.out)) << r.out;
+  }
 }
 
 }  // namespace

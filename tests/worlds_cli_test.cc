@@ -180,5 +180,37 @@ TEST(WorldsCliTest, ASecondGenerationReplacesTheFirstAndNothingElse) {
   EXPECT_TRUE(fs::exists(dir / "out" / "notes.txt"));
 }
 
+// audit39: a second generation removes the first's files by its index.csv; a row naming a path
+// (an index edited or copied by hand) removed that file, its .json and its .png wherever they
+// were: `../victim.xml` beside the folder and an absolute `/.../thesis.xml`, exit 0.
+TEST(WorldsCliTest, AnIndexNamingFilesOutsideTheFolderRemovesNothing) {
+  const fs::path dir = MakeTempDir("worlds_cli_index_paths");
+  const std::string out = (dir / "out").string();
+  ASSERT_EQ(RunPlywood("worlds generate room --count 1 --seed 5 --out " + out, dir).exit_code, 0);
+  const std::string index = Slurp(dir / "out" / "index.csv");
+  testing::WriteFile(dir / "victim.xml", "mine\n");
+  testing::WriteFile(dir / "victim.json", "mine\n");
+  testing::WriteFile(dir / "elsewhere" / "thesis.xml", "mine\n");
+  for (const std::string& row :
+       {std::string("../victim.xml,x,room,5,1,1,4,3,true,0.6"),
+        (dir / "elsewhere" / "thesis.xml").string() + ",x,room,5,1,1,4,3,true,0.6"}) {
+    SCOPED_TRACE(row);
+    testing::WriteFile(dir / "out" / "index.csv", index + row + "\n");
+    const auto r = RunPlywood("worlds generate room --count 1 --seed 5 --out " + out, dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(
+        r.err.rfind("plywood: worlds generate: --out: " + out + "/index.csv: line 3: world '" +
+                        row.substr(0, row.find(',')) + "' is not a world file of the folder",
+                    0),
+        0u)
+        << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+    EXPECT_TRUE(fs::exists(dir / "out" / "room_s5_00000.xml"));
+  }
+  EXPECT_EQ(Slurp(dir / "victim.xml"), "mine\n");
+  EXPECT_EQ(Slurp(dir / "victim.json"), "mine\n");
+  EXPECT_EQ(Slurp(dir / "elsewhere" / "thesis.xml"), "mine\n");
+}
+
 }  // namespace
 }  // namespace plywood

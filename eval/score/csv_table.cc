@@ -122,6 +122,15 @@ CsvTable ReadCsv(const std::filesystem::path& path, const CsvReadOptions& option
       table.header = row.fields;
       table.header_line = row.line_number;
       have_header = true;
+      // A file separated by tabs or semicolons (a spreadsheet's export) read as one column whose
+      // name was the whole header, tabs and all: "scan<TAB>extractor...: unknown column".
+      if (row.fields.size() == 1 && !quoted_field &&
+          row.fields[0].find_first_of("\t;") != std::string::npos) {
+        const bool tabs = row.fields[0].find('\t') != std::string::npos;
+        table.Fail(row, "header",
+                   std::string("one column whose name holds ") + (tabs ? "tabs" : "semicolons") +
+                       ": columns are separated by commas (RFC 4180); write the file with commas");
+      }
       for (std::size_t c = 0; c < table.header.size(); ++c) {
         if (std::count(table.header.begin(), table.header.end(), table.header[c]) > 1) {
           table.Fail(row, table.header[c], "the header names this column twice");

@@ -39,7 +39,8 @@ struct CsvReadOptions {
 };
 
 // @throws sim::ConfigError for an unreadable or empty file (see rows_required), an unterminated
-// quote, and (with a header) a row with a different number of fields or a repeated column name.
+// quote, and (with a header) a header of one unquoted column holding tabs or semicolons (a file
+// with another separator), a row with a different number of fields or a repeated column name.
 CsvTable ReadCsv(const std::filesystem::path& path, const CsvReadOptions& options = {});
 
 // `text` as one CSV field: quoted (quotes doubled) when it holds a comma, a quote or a line break.

@@ -16,23 +16,6 @@
 namespace plywood::eval {
 namespace {
 
-// The largest |heading| a CSV trajectory may hold. Unwrapped headings are fine, but doubles are
-// spaced 1.2e-7 rad at 1e9 rad (the scores print 1e-4 deg, 1.7e-6 rad) and 1e284 rad at 1e300,
-// where a heading of 1e300 was scored as some angle (heading_error_deg -41.4, exit 0).
-constexpr double kMaxHeadingRad = 1e9;
-
-bool IsPlywoodCsv(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  bool first_line = true;  // a UTF-8 byte-order mark there hid "time_s" (read as a TUM file)
-  for (std::string line; std::getline(in, line);) {
-    if (std::exchange(first_line, false)) perception::DropUtf8ByteOrderMark(line);
-    const auto first = line.find_first_not_of(" \t\r");
-    if (first == std::string::npos || line[first] == '#') continue;
-    return line.compare(first, 6, "time_s") == 0;
-  }
-  return false;
-}
-
 bool EndsWith(const std::string& text, const std::string& suffix) {
   return text.size() > suffix.size() &&
          text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
@@ -87,7 +70,7 @@ std::vector<NamedTrajectory> ReadPlywoodCsv(const std::filesystem::path& path,
                      "must be within 1e+09 m of the origin, got " + sim::FormatNumber(v));
         }
       }
-      if (std::abs(pose.pose.theta_rad) > kMaxHeadingRad) {
+      if (std::abs(pose.pose.theta_rad) > perception::kMaxTrajectoryHeadingRad) {
         table.Fail(row, h[c + 2],
                    "must be within 1e+09 rad of 0 (beyond it a double cannot hold a heading to "
                    "1e-6 rad), got " +
@@ -101,13 +84,27 @@ std::vector<NamedTrajectory> ReadPlywoodCsv(const std::filesystem::path& path,
 
 }  // namespace
 
+bool IsPlywoodCsvLayout(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  bool first_line = true;  // a UTF-8 byte-order mark there hid "time_s" (read as a TUM file)
+  for (std::string line; std::getline(in, line);) {
+    if (std::exchange(first_line, false)) perception::DropUtf8ByteOrderMark(line);
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || line[first] == '#') continue;
+    // Quoted, as R's write.csv and Python's csv.QUOTE_ALL write header names, it was read as TUM
+    // and refused as "tx: expected 8 fields ..., got 1"; the CSV reader takes RFC 4180 quotes.
+    return line.compare(first, 6, "time_s") == 0 || line.compare(first, 8, "\"time_s\"") == 0;
+  }
+  return false;
+}
+
 std::vector<NamedTrajectory> ReadTrajectoryFile(const std::filesystem::path& path,
                                                 const std::string& tum_name,
                                                 const std::string& name_flag) {
   if (!perception::IsRegularFile(path)) {
     throw sim::ConfigError(path.string(), "", perception::WhyNotARegularFile(path));
   }
-  if (IsPlywoodCsv(path)) return ReadPlywoodCsv(path, name_flag);
+  if (IsPlywoodCsvLayout(path)) return ReadPlywoodCsv(path, name_flag);
   try {
     return {{tum_name, perception::ReadTumTrajectory(path)}};
   } catch (const std::invalid_argument& e) {

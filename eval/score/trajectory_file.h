@@ -14,8 +14,13 @@ struct NamedTrajectory {
   std::vector<perception::TimedPose> poses;
 };
 
+// Whether `path` has Plywood's trajectory.csv layout: its first line that is not blank or a '#'
+// comment starts with `time_s`, quoted or not (else it is read as TUM).
+bool IsPlywoodCsvLayout(const std::filesystem::path& path);
+
 // Reads the trajectories of `path`, whichever of two layouts it has:
-// - Plywood's trajectory.csv (the first line not a '#' comment starts with `time_s`): a header
+// - Plywood's trajectory.csv (the first line not a '#' comment starts with `time_s`, quoted or
+//   not; fields as RFC 4180 quotes them): a header
 //   `time_s` then groups `NAME_x_m,NAME_y_m,NAME_theta_rad`, one trajectory per group (`truth`
 //   included) in column order;
 // - otherwise TUM (perception/logs/tum_trajectory.h): one trajectory named `tum_name`.

@@ -1,9 +1,12 @@
 #include "eval/score/trajectory_score.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include "eval/score/run_directory.h"
+#include "msgs/shortest_number.h"
 #include "robot/odometry/trajectory_metrics.h"
 #include "sim/config/config_error.h"
 
@@ -11,6 +14,39 @@ namespace plywood::eval {
 namespace {
 
 std::string Seconds(double t) { return sim::FormatNumber(t) + " s"; }
+
+// How far an estimate's start may lie from the run's (the spawn): the scores have no alignment,
+// since every estimator starts at the known spawn pose (and each Plywood file starts exactly
+// there), so a file in another frame or unit (millimetres) was scored as an error of its offset.
+constexpr double kMaxStartOffsetM = 0.1;
+constexpr double kMaxStartHeadingOffsetDeg = 10.0;
+
+// @throws sim::ConfigError naming the file's first pose when `start`, the estimate at the run's
+// first sample, is not at `truth_start`.
+void RequireStartAtTheSpawn(const NamedTrajectory& estimate, const msgs::Pose2D& start,
+                            const msgs::Pose2D& truth_start, const std::string& file, bool tum) {
+  const double offset_m = std::hypot(start.x_m - truth_start.x_m, start.y_m - truth_start.y_m);
+  const double offset_deg =
+      std::abs(msgs::WrapAngle(start.theta_rad - truth_start.theta_rad)) * 180.0 / std::numbers::pi;
+  if (offset_m <= kMaxStartOffsetM && offset_deg <= kMaxStartHeadingOffsetDeg) return;
+  const auto pose = [](const msgs::Pose2D& p) {
+    return "(" + msgs::SixDigitNumber(p.x_m) + ", " + msgs::SixDigitNumber(p.y_m) + ") heading " +
+           msgs::SixDigitNumber(p.theta_rad * 180.0 / std::numbers::pi) + " deg";
+  };
+  const std::string fields =
+      tum ? "tx, ty, qz, qw"
+          : estimate.name + "_x_m, " + estimate.name + "_y_m, " + estimate.name + "_theta_rad";
+  throw sim::ConfigError(
+      file + ":" + std::to_string(estimate.poses.front().line_number), fields,
+      estimate.name + " starts at " + pose(start) + ", " + msgs::SixDigitNumber(offset_m) +
+          " m and " + msgs::SixDigitNumber(offset_deg) + " deg from the run's start " +
+          pose(truth_start) +
+          ": an estimate starts at the spawn pose (it is scored without "
+          "alignment, within " +
+          msgs::ShortestNumber(kMaxStartOffsetM) + " m and " +
+          msgs::ShortestNumber(kMaxStartHeadingOffsetDeg) +
+          " deg), so one in another frame or unit (millimetres?) would be scored as its offset");
+}
 
 }  // namespace
 
@@ -119,8 +155,11 @@ ScoreReport ScoreTrajectoryFile(const std::filesystem::path& run_dir,
                 "heading_error_deg", "drift_percent", "ate_rms_m");
   report.table += line;
   for (const NamedTrajectory& estimate : estimates) {
-    const robot::TrajectoryErrors errors = robot::ScoreTrajectory(
-        truth, PosesAtTimes(estimate, times, file.string(), options.time_tolerance_s));
+    const std::vector<msgs::Pose2D> poses =
+        PosesAtTimes(estimate, times, file.string(), options.time_tolerance_s);
+    RequireStartAtTheSpawn(estimate, poses.front(), truth.front(), file.string(),
+                           !IsPlywoodCsvLayout(file));
+    const robot::TrajectoryErrors errors = robot::ScoreTrajectory(truth, poses);
     const std::string key = "odometry." + estimate.name + ".";
     report.metrics.Set(key + "final_error_m", errors.final_error_m);
     report.metrics.Set(key + "heading_error_deg", errors.heading_error_deg);

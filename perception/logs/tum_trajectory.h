@@ -40,6 +40,11 @@ struct TimedPose {
 // overflow (a TUM x of 1e300 gave ate_rms_m = inf and a 300-digit final error, exit 0).
 inline constexpr double kMaxTrajectoryCoordinateM = 1e9;
 
+// The largest |heading| (rad) a trajectory may hold. Unwrapped headings are fine, but doubles are
+// spaced 1.2e-7 rad at 1e9 rad (the scores print 1e-4 deg, 1.7e-6 rad) and 1e284 rad at 1e300,
+// where a heading of 1e300 was scored as some angle (heading_error_deg -41.4, exit 0).
+inline constexpr double kMaxTrajectoryHeadingRad = 1e9;
+
 // The largest tilt (deg) of a TUM pose, the angle its quaternion turns the z axis away from up.
 // Plywood's floors are level (a tilted one is refused), so a ground robot's pose is level; 45 deg
 // is halfway to the 90 deg at which a heading means nothing. A planar quaternion written w first

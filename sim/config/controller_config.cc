@@ -9,6 +9,7 @@
 #include "robot/control/controller.h"
 #include "sim/config/config_archive.h"
 #include "sim/config/config_fields.h"
+#include "sim/config/guarded_algorithms.h"
 #include "sim/config/plugin_loader.h"
 #include "sim/config/plugin_options.h"
 #include "sim/config/robot_catalog.h"
@@ -138,7 +139,9 @@ std::unique_ptr<robot::Controller> MakeController(const ControllerConfig& config
     return std::make_unique<perception::SonarExplorer>(nominal, o, model);
   }
   if (const auto* entry = RegisteredAlgorithms().controllers.Find(config.type)) {
-    return robot::MakeRegistered(*entry, config.registered, nominal);
+    return GuardRegistered(
+        robot::MakeRegistered(*entry, config.registered, nominal),
+        "controller '" + config.type + "' (" + RegisteredBy("controller", config.type) + ")");
   }
   return nullptr;
 }

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "sim/config/config_archive.h"
+#include "sim/config/guarded_algorithms.h"
 #include "sim/config/lines_fields.h"
 #include "sim/config/plugin_loader.h"
 #include "sim/config/plugin_options.h"
@@ -97,8 +99,11 @@ YAML::Node WriteLinesConfig(LinesConfig& config) {
 
 std::unique_ptr<perception::LineExtractor> MakeLineExtractor(const std::string& name,
                                                              const LinesConfig& config) {
-  return perception::MakeLineExtractor(name, config.options,
-                                       RegisteredAlgorithms().line_extractors);
+  auto extractor =
+      perception::MakeLineExtractor(name, config.options, RegisteredAlgorithms().line_extractors);
+  if (!RegisteredAlgorithms().line_extractors.Find(name)) return extractor;
+  return GuardRegistered(std::move(extractor), "line extractor '" + name + "' (" +
+                                                   RegisteredBy("line extractor", name) + ")");
 }
 
 std::vector<std::string> TakenLinesKeys() {

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "sim/config/config_archive.h"
+#include "sim/config/guarded_algorithms.h"
 #include "sim/config/plugin_loader.h"
 #include "sim/config/plugin_options.h"
 #include "sim/config/yaml_fields.h"
@@ -95,6 +96,9 @@ std::vector<std::string> TakenOdometryKeys() {
   keys.push_back("calibration");
   // The ground truth's own name: trajectory.truth.tum and the truth_* columns of trajectory.csv.
   keys.push_back("truth");
+  // controller.steer_by's name for the truth, and its default: an estimator of that name was
+  // steered by in every run that enabled it, the truth in none.
+  keys.push_back("ground_truth");
   return keys;
 }
 
@@ -172,9 +176,11 @@ std::vector<std::pair<std::string, std::unique_ptr<robot::OdometryEstimator>>> M
       e = std::make_unique<robot::EkfOdometry>(geometry, config.ekf, X_WR_initial);
     } else if (const auto* entry = RegisteredAlgorithms().odometry_estimators.Find(name)) {
       const auto options = config.registered.find(name);
-      e = robot::MakeRegistered(
-          *entry, options == config.registered.end() ? robot::ParameterMap() : options->second,
-          geometry, X_WR_initial);
+      e = GuardRegistered(
+          robot::MakeRegistered(
+              *entry, options == config.registered.end() ? robot::ParameterMap() : options->second,
+              geometry, X_WR_initial),
+          "odometry estimator '" + name + "' (" + RegisteredBy("odometry estimator", name) + ")");
     }
     if (e) estimators.emplace_back(name, std::move(e));
   }

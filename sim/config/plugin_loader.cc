@@ -7,6 +7,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sim/config/controller_config.h"
@@ -19,6 +20,25 @@ namespace {
 perception::AlgorithmRegistry& MutableRegistry() {
   static perception::AlgorithmRegistry registry;
   return registry;
+}
+
+// The library each registered (kind, name) came from; absent: compiled in.
+std::map<std::pair<std::string, std::string>, std::string>& Libraries() {
+  static std::map<std::pair<std::string, std::string>, std::string> libraries;
+  return libraries;
+}
+
+// RegisterAlgorithms, remembering `library` ("" when compiled in) as each name's origin.
+void RegisterAlgorithmsFrom(const perception::AlgorithmRegistry& additions,
+                            const std::string& library) {
+  RegisterAlgorithms(additions);
+  if (library.empty()) return;
+  const auto remember = [&](const auto& registry, const char* kind) {
+    for (const auto& entry : registry.entries()) Libraries()[{kind, entry.name}] = library;
+  };
+  remember(additions.line_extractors, "line extractor");
+  remember(additions.odometry_estimators, "odometry estimator");
+  remember(additions.controllers, "controller");
 }
 
 // Throws when `name` is taken by a built-in algorithm, a section key or an earlier registration.
@@ -65,6 +85,11 @@ void RegisterAlgorithms(const perception::AlgorithmRegistry& additions) {
     checked.controllers.Add(entry);
   }
   registry = std::move(checked);
+}
+
+std::string RegisteredBy(const std::string& kind, const std::string& name) {
+  const auto it = Libraries().find({kind, name});
+  return it == Libraries().end() ? "registered" : "plug-in " + it->second;
 }
 
 void LoadPlugin(const std::filesystem::path& library) {
@@ -117,7 +142,7 @@ void LoadPlugin(const std::filesystem::path& library) {
   perception::AlgorithmRegistry additions;
   try {
     entry(&additions);
-    RegisterAlgorithms(additions);
+    RegisterAlgorithmsFrom(additions, name);
   } catch (const std::exception& e) {
     failure = name + ": " + e.what();
   } catch (...) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 
 #include "perception/plugins/plugin.h"
 
@@ -17,6 +18,12 @@ const perception::AlgorithmRegistry& RegisteredAlgorithms();
 // @throws std::invalid_argument (one line) when a name is a built-in one, a key of its YAML
 // section (lines.scoring, odometry.calibration, ...) or already registered.
 void RegisterAlgorithms(const perception::AlgorithmRegistry& additions);
+
+// Who registered the algorithm `name` of `kind` ("line extractor", "odometry estimator",
+// "controller"), for the errors its run-time misbehaviour ends a run with: "plug-in LIBRARY" for
+// one a plug-in registered (LIBRARY as the experiment named it), "registered" for one added with
+// RegisterAlgorithms.
+std::string RegisteredBy(const std::string& kind, const std::string& name);
 
 // Loads the plug-in `library` (dlopen, RTLD_NOW | RTLD_LOCAL; never unloaded, since the
 // algorithms it made live in the host), checks that it was built like this host

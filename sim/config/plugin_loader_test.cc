@@ -120,7 +120,9 @@ TEST_F(RegisteredAlgorithmsTest, NamesMustNotShadowBuiltInsSectionKeysOrEachOthe
     r.line_extractors.Add({name, extractor});
     rejects(r, std::string("line extractor '") + name + "'");
   }
-  for (const char* name : {"ekf", "calibration", "truth", "test_frozen"}) {
+  // audit39: "ground_truth", controller.steer_by's name for the truth and its default, was
+  // accepted, and the controller then steered by that estimator in every run that enabled it.
+  for (const char* name : {"ekf", "calibration", "truth", "ground_truth", "test_frozen"}) {
     perception::AlgorithmRegistry r;
     r.odometry_estimators.Add({name, false, estimator});
     rejects(r, std::string("odometry estimator '") + name + "'");

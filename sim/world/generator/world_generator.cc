@@ -88,20 +88,34 @@ void RemoveEarlierGeneration(const std::filesystem::path& dir) {
                                 "choose an empty or new folder");
   }
   std::vector<fs::path> generated{dir / "index.csv"};
-  while (std::getline(index, line)) {
-    const fs::path world = dir / line.substr(0, line.find(','));
+  for (int line_number = 2; std::getline(index, line); ++line_number) {
+    // A generation names its worlds FAMILY_sSEED_IIIII.xml inside the folder; a row naming a path
+    // ("../thesis.xml", "/home/me/a.xml": an index edited or copied by hand) removed that file,
+    // its .json and its .png outside the folder.
+    const std::string name = line.substr(0, line.find(','));
+    if (name.size() <= 4 || name.find_first_of("/\\") != std::string::npos || name[0] == '.' ||
+        fs::path(name).extension() != ".xml") {
+      throw std::invalid_argument(
+          "out: " + (dir / "index.csv").string() + ": line " + std::to_string(line_number) +
+          ": world '" + name +
+          "' is not a world file of the folder (a generation writes FAMILY_sSEED_IIIII.xml), so "
+          "this is not an index a generation wrote and nothing was removed; choose another "
+          "folder");
+    }
     for (const char* extension : {".xml", ".json", ".png"}) {
-      generated.push_back(fs::path(world).replace_extension(extension));
+      generated.push_back(fs::path(dir / name).replace_extension(extension));
     }
   }
+  std::vector<fs::path> earlier;  // only the folder's own files are ever removed
   for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
     if (std::find(generated.begin(), generated.end(), entry.path()) == generated.end()) {
       throw std::invalid_argument("out: " + dir.string() + " holds " +
                                   entry.path().filename().string() +
                                   ", which no world generation wrote; choose another folder");
     }
+    earlier.push_back(entry.path());
   }
-  for (const fs::path& file : generated) fs::remove(file);
+  for (const fs::path& file : earlier) fs::remove(file);
 }
 
 }  // namespace
