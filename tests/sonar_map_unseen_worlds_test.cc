@@ -166,5 +166,32 @@ TEST(SonarMapUnseenWorldsTest, ARoomFittedOnABoxFaceIsNotCompleteWhileFloorWasSe
   EXPECT_EQ(score.contacts, 0.0);
 }
 
+// Question 6 to steering: a 3 x 3 m room with a 1.0 x 0.5 m box whose south face is 0.30 m from
+// the south wall. The gap is narrower than the Magellan Pro (0.429 m across its bumper ring), so
+// occupancy.area_narrow_gaps_m2 is the gap's 0.30 m^2 (to a row or column of 1 cm cells), and
+// leaving it unscored can only take error area away: e' (A_tot - A_gap) <= e A_tot.
+TEST(SonarMapUnseenWorldsTest, AGapNarrowerThanTheRobotIsLeftUnscoredBesideE) {
+  const fs::path dir = MakeTempDir("sonar_map_narrow_gap");
+  const fs::path world = dir / "narrow_gap_room.xml";
+  std::ofstream(world) << "<mujoco model=\"narrow_gap_room\"><worldbody>\n"
+                       << FloorAndWalls(3.0, 3.0) << Box("obstacle_0", 0.0, -0.95, 0.5, 0.25, 0.3)
+                       << "</worldbody></mujoco>\n";
+  const fs::path out = dir / "run";
+  const SonarMapScore score = RunSonarMap(
+      "seed001_room_1.yaml", out,
+      "--set world=" + world.string() +
+          " --set robot.spawn.x_m=0 --set robot.spawn.y_m=0.8 --set robot.spawn.theta_deg=0"
+          " --set output.snapshot=false");
+  ASSERT_FALSE(::testing::Test::HasFatalFailure());
+  const YAML::Node occupancy = YAML::LoadFile((out / "metrics.json").string())["occupancy"];
+  const double total_m2 = occupancy["area_total_m2"].as<double>();
+  const double gap_m2 = occupancy["area_narrow_gaps_m2"].as<double>();
+  const double without = occupancy["error_without_narrow_gaps"].as<double>();
+  std::printf("e %.4f, without the narrow gap %.4f, gap %.4f m^2 of %.4f\n", score.error, without,
+              gap_m2, total_m2);
+  EXPECT_NEAR(gap_m2, 0.30, 0.011);
+  EXPECT_LE(without * (total_m2 - gap_m2), score.error * total_m2 + 1e-9);
+}
+
 }  // namespace
 }  // namespace plywood
