@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include "sim/config/experiment_config.h"
 #include "sim/runner/experiment_runner.h"
 #include "tests/support/mujoco_test_support.h"
@@ -13,6 +15,9 @@ namespace {
 // the office tour's waypoint controller finishes at 73.66 s, so the line said "120.0 s simulated"
 // and overstated the run's real-time factor by 1.6x. It is the time the run simulated.
 TEST(BenchExperimentTest, TheDefaultRunsSimulatedTimeIsTheTimeItRan) {
+  // RunBench writes its tiled world and the default run under the temp directory: a private one,
+  // so that a `plywood bench` running beside the tests is not touched.
+  ASSERT_EQ(setenv("TMPDIR", testing::MakeTempDir("bench_experiment").c_str(), 1), 0);
   BenchOptions options;
   options.seconds = 1.0;
   options.repeats = 1;
