@@ -313,7 +313,7 @@ Command AddViewCommand(CLI::App& app) {
       ->default_str("10");
   cli->footer(
       "Keys: F1 help, Space pause, N step, 1/2/3 speed, arrows drive (H hands back), L S I P E M "
-      "B\n"
+      "G B\n"
       "overlays, T/F top-down/follow camera, V record video. Mouse: orbit, pan (right), zoom.\n"
       "Examples:\n"
       "  plywood view experiments/default.yaml\n"

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -25,6 +26,7 @@
 #include "tests/support/cli_test_support.h"
 #include "tests/support/mujoco_test_support.h"
 #include "tests/support/xvfb_display.h"
+#include "viewer/view_controls.h"
 
 namespace plywood {
 namespace {
@@ -68,6 +70,49 @@ TEST(ViewHelpTest, HelpListsEveryFlagAndAnUnknownOneIsNamed) {
   const auto unknown = RunPlywood("view --colour", dir);
   EXPECT_EQ(unknown.exit_code, 2);
   EXPECT_EQ(unknown.err, "plywood: view: unknown option --colour (see plywood view --help)\n");
+}
+
+// Splits `text` into its runs of letters and digits.
+std::vector<std::string> Words(const std::string& text) {
+  std::vector<std::string> words;
+  std::string word;
+  for (const char c : text + ' ') {
+    if (std::isalnum(static_cast<unsigned char>(c)) != 0) {
+      word += c;
+    } else if (!word.empty()) {
+      words.push_back(std::exchange(word, {}));
+    }
+  }
+  return words;
+}
+
+// s62: the footer of `view --help` left out G (seed 001's occupancy grid), which the window's own
+// F1 help lists. Every key of that help (the text before each tab) is a word of the footer.
+TEST(ViewHelpTest, HelpNamesEveryKeyTheWindowsF1HelpLists) {
+  const std::filesystem::path dir = MakeTempDir("view_help_keys");
+  const auto r = RunPlywood("view --help", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string footer = r.out.substr(r.out.find("Keys:"));
+  std::vector<std::string> footer_words;
+  for (std::string word : Words(footer)) {
+    std::transform(word.begin(), word.end(), word.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    footer_words.push_back(word);
+  }
+  const std::string help = viewer::ViewControls::HelpText();
+  std::size_t line_start = 0;
+  while (line_start < help.size()) {
+    const std::size_t line_end = std::min(help.find('\n', line_start), help.size());
+    const std::string line = help.substr(line_start, line_end - line_start);
+    for (std::string key : Words(line.substr(0, line.find('\t')))) {
+      std::transform(key.begin(), key.end(), key.begin(),
+                     [](unsigned char c) { return std::tolower(c); });
+      EXPECT_NE(std::find(footer_words.begin(), footer_words.end(), key), footer_words.end())
+          << "key '" << key << "' (F1 help: " << line << ") missing from:\n"
+          << footer;
+    }
+    line_start = line_end + 1;
+  }
 }
 
 class ViewCliTest : public ::testing::Test {
