@@ -17,6 +17,7 @@
 #include "msgs/shortest_number.h"
 #include "perception/logs/byte_order_mark.h"
 #include "perception/logs/fixed_decimals.h"
+#include "perception/logs/gzip_trailing_bytes.h"
 #include "perception/logs/parse_number.h"
 #include "perception/logs/regular_file.h"
 
@@ -182,7 +183,8 @@ bool FlaserCanCarry(const msgs::LaserScan& scan) {
 // Line-oriented reader over plain or gzip files (zlib reads both transparently).
 class LineReader {
  public:
-  explicit LineReader(const std::filesystem::path& path) : file_(gzopen(path.c_str(), "rb")) {
+  explicit LineReader(const std::filesystem::path& path)
+      : path_(path), file_(gzopen(path.c_str(), "rb")) {
     if (file_ == nullptr) throw std::runtime_error(path.string() + ": cannot open");
   }
   ~LineReader() { gzclose(file_); }
@@ -208,11 +210,21 @@ class LineReader {
       throw std::runtime_error(std::string("corrupt or truncated gzip data (zlib: ") +
                                (message ? message : "unknown error") + ")");
     }
+    // zlib ends a gzip stream at the first bytes after a member that start no other member, as
+    // if the file ended there: a plain log appended to a compressed one lost its scans, exit 0.
+    if (!end_checked_ && gzdirect(file_) == 0) {
+      end_checked_ = true;
+      if (const auto trailing = DescribeBytesAfterGzipData(path_)) {
+        throw std::runtime_error(*trailing);
+      }
+    }
     return !line->empty();
   }
 
  private:
+  std::filesystem::path path_;
   gzFile file_;
+  bool end_checked_ = false;
 };
 
 }  // namespace

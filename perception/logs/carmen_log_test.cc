@@ -511,6 +511,52 @@ TEST(CarmenLogTest, CorruptOrTruncatedGzipIsAnError) {
   }
 }
 
+// The bytes of `text` as one gzip member.
+std::string GzipMember(const std::string& text) {
+  const auto path = std::filesystem::temp_directory_path() / "plywood_carmen_member.gz";
+  gzFile gz = gzopen(path.c_str(), "wb");
+  EXPECT_NE(gz, nullptr);
+  EXPECT_EQ(gzwrite(gz, text.data(), static_cast<unsigned>(text.size())),
+            static_cast<int>(text.size()));
+  EXPECT_EQ(gzclose(gz), Z_OK);
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// zlib's gzread ends the stream at bytes after a member that start no other member: a plain log
+// appended to a compressed one (`cat more.log >> run.log.gz`), or two members cut one byte into
+// the second, replayed the first member's scans alone, exit 0 (the s62 fortieth pass).
+TEST(CarmenLogTest, BytesAfterTheGzipDataThatZlibWouldSkipAreAnError) {
+  std::string first = "PARAM front_laser_max 8 host 0\n", second;
+  for (int i = 0; i < 20; ++i) first += Flaser("1 2 3", 3, std::to_string(100 + i));
+  for (int i = 20; i < 40; ++i) second += Flaser("1 2 3", 3, std::to_string(100 + i));
+  const std::string member1 = GzipMember(first), member2 = GzipMember(second);
+
+  // Whole members, one after the other (gzip's own way to join files), and zero padding: all read.
+  EXPECT_EQ(ReadCarmenLog(WriteTemp("two_members.log.gz", member1 + member2)).lasers.size(), 40u);
+  EXPECT_EQ(
+      ReadCarmenLog(WriteTemp("padded.log.gz", member1 + std::string(512, '\0'))).lasers.size(),
+      20u);
+
+  const std::string offset = std::to_string(member1.size());
+  for (const auto& [name, bytes, what] :
+       {std::tuple{"appended_plain", member1 + second,
+                   std::to_string(second.size()) +
+                       " bytes after the gzip data, which ends at byte " + offset},
+        {"cut_into_second", member1 + member2.substr(0, 1),
+         "1 byte after the gzip data, which ends at byte " + offset}}) {
+    const auto path = WriteTemp(std::string(name) + ".log.gz", bytes);
+    try {
+      const CarmenLog log = ReadCarmenLog(path);
+      ADD_FAILURE() << name << ": read " << log.lasers.size() << " scans without an error";
+    } catch (const std::runtime_error& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find(path.string() + ":22: " + what), std::string::npos) << message;
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+  }
+}
+
 TEST(CarmenLogTest, MissingFileIsAnError) {
   EXPECT_THROW(ReadCarmenLog("/nonexistent/file.log"), std::runtime_error);
 }
