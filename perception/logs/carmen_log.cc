@@ -2,11 +2,13 @@
 
 #include <zlib.h>
 
+#include <array>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <numbers>
 #include <optional>
 #include <sstream>
@@ -191,18 +193,30 @@ class LineReader {
   LineReader(const LineReader&) = delete;
   LineReader& operator=(const LineReader&) = delete;
 
+  // The next line, without its "\n" or "\r\n", NUL bytes and all: gzgets ended its text at a
+  // NUL, so a line starting with NULs (a block a crash left zero-filled) was read as empty and
+  // its scan lost without a word, and a NUL inside a line joined the rest of it to the next one.
   // @throws std::runtime_error with zlib's message when the gzip stream is corrupt or truncated
-  // (gzgets reports those as the end of the file).
+  // (gzread reports those as the end of the file).
   bool Next(std::string* line) {
     line->clear();
-    char buffer[65536];
-    while (gzgets(file_, buffer, sizeof(buffer)) != nullptr) {
-      line->append(buffer);
-      if (!line->empty() && line->back() == '\n') {
-        line->pop_back();
-        if (!line->empty() && line->back() == '\r') line->pop_back();
-        return true;
+    for (;;) {
+      if (next_ < have_) {
+        const char* start = buffer_.data() + next_;
+        const auto* end = static_cast<const char*>(std::memchr(start, '\n', have_ - next_));
+        if (end != nullptr) {
+          line->append(start, end);
+          next_ += static_cast<std::size_t>(end - start) + 1;
+          if (!line->empty() && line->back() == '\r') line->pop_back();
+          return true;
+        }
+        line->append(start, have_ - next_);
+        next_ = have_;
       }
+      const int got = gzread(file_, buffer_.data(), static_cast<unsigned>(buffer_.size()));
+      if (got <= 0) break;
+      have_ = static_cast<std::size_t>(got);
+      next_ = 0;
     }
     int error = Z_OK;
     const char* message = gzerror(file_, &error);
@@ -224,6 +238,9 @@ class LineReader {
  private:
   std::filesystem::path path_;
   gzFile file_;
+  std::array<char, 65536> buffer_{};
+  std::size_t have_ = 0;  // bytes in buffer_
+  std::size_t next_ = 0;  // the first not yet returned
   bool end_checked_ = false;
 };
 
@@ -298,6 +315,12 @@ CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptio
     if (number == 1) DropUtf8ByteOrderMark(line);
     const std::size_t before = log.lasers.size();
     try {
+      if (const std::size_t nul = line.find('\0'); nul != std::string::npos) {
+        throw std::runtime_error(
+            "a NUL byte at column " + std::to_string(nul + 1) +
+            ": a log is text (a file a crash left with zero-filled blocks, or not a log?); the "
+            "line cannot be read");
+      }
       ParseCarmenLine(line, &log);
       if (log.lasers.size() > before) {
         // Some converters write every scan twice, as FLASER and as ROBOTLASER1 at one time stamp:

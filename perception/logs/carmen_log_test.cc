@@ -557,6 +557,36 @@ TEST(CarmenLogTest, BytesAfterTheGzipDataThatZlibWouldSkipAreAnError) {
   }
 }
 
+// gzgets ended a line's text at its first NUL byte: a scan line after a zero-filled block (what a
+// crash leaves in a file being written) read as an empty line and its scan was lost, "0 lines
+// skipped", exit 0; a NUL inside a line joined its rest to the next line (the s62 fortieth pass).
+TEST(CarmenLogTest, ALineWithANulByteIsRefusedNamingItsLineAndColumn) {
+  const std::string head = "PARAM front_laser_max 8 host 0\n" + Flaser("1 2 3", 3, "100");
+  const std::string scan = Flaser("1 2 3", 3, "101");
+  const std::string tail = Flaser("1 2 3", 3, "102") + Flaser("1 2 3", 3, "103");
+  for (const auto& [name, text, column] :
+       {std::tuple{"nul_start.log", head + std::string(16, '\0') + scan + tail, 1},
+        {"nul_inside.log", head + scan.substr(0, 9) + '\0' + scan.substr(9) + tail, 10}}) {
+    const auto path = WriteTemp(name, text);
+    try {
+      const CarmenLog log = ReadCarmenLog(path);
+      ADD_FAILURE() << name << ": read " << log.lasers.size() << " scans without an error";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(path.string() + ":3: a NUL byte at column " +
+                                           std::to_string(column) + ": "),
+                std::string::npos)
+          << e.what();
+    }
+    // --skip-bad skips that line alone and counts it; the lines after it keep their numbers.
+    CarmenReadOptions options;
+    options.skip_bad = true;
+    const CarmenLog log = ReadCarmenLog(path, options);
+    EXPECT_EQ(log.skipped_lines, 1u) << name;
+    ASSERT_EQ(log.lasers.size(), 3u) << name;
+    EXPECT_EQ(log.lasers.back().line_number, 5u) << name;
+  }
+}
+
 TEST(CarmenLogTest, MissingFileIsAnError) {
   EXPECT_THROW(ReadCarmenLog("/nonexistent/file.log"), std::runtime_error);
 }
