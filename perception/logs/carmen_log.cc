@@ -9,10 +9,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <numbers>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 #include <unordered_map>
 #include <utility>
 
@@ -291,9 +293,43 @@ bool SameScan(const CarmenLaserRecord& a, const CarmenLaserRecord& b) {
 
 }  // namespace
 
+namespace {
+
+// The program that compressed `path` when it starts as xz, bzip2, zstd, zip or 7-Zip data, which
+// zlib reads as plain bytes: such a log read as binary lines ("no usable laser scan in 43 lines",
+// or a NUL byte on line 1), not as the compressed log it is.
+std::optional<std::string> OtherCompressor(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(6, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  const struct {
+    std::string_view magic, program, undo;
+  } kKnown[] = {{"\xFD\x37zXZ", "xz", "xz -dk"},
+                {"BZh", "bzip2", "bunzip2 -k"},
+                {"\x28\xB5\x2F\xFD", "zstd", "zstd -d"},
+                {"PK\x03\x04", "zip", "unzip"},
+                {"7z\xBC\xAF\x27\x1C", "7-Zip", "7z x"}};
+  for (const auto& known : kKnown) {
+    const bool bzip2_level =
+        known.program != "bzip2" || (head.size() > 3 && head[3] >= '1' && head[3] <= '9');
+    if (head.starts_with(known.magic) && bzip2_level) {
+      return "compressed with " + std::string(known.program) +
+             ", which Plywood does not read (plain text or gzip only): decompress it first (" +
+             std::string(known.undo) + " " + path.filename().string() + ")";
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 CarmenLog ReadCarmenLog(const std::filesystem::path& path, const CarmenReadOptions& options) {
   if (!IsRegularFile(path)) {
     throw std::runtime_error(path.string() + ": " + WhyNotARegularFile(path, "log file"));
+  }
+  if (const auto compressor = OtherCompressor(path)) {
+    throw std::runtime_error(path.string() + ": " + *compressor);
   }
   CarmenLog log;
   LineReader reader(path);

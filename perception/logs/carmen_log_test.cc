@@ -587,6 +587,29 @@ TEST(CarmenLogTest, ALineWithANulByteIsRefusedNamingItsLineAndColumn) {
   }
 }
 
+// zlib reads any file that is not gzip as plain bytes: a log compressed with xz, bzip2 or zstd
+// was read as binary lines, "no usable laser scan (FLASER or ROBOTLASER1 line) in 43 lines", not
+// named as the compressed file it is (the s62 fortieth pass).
+TEST(CarmenLogTest, ALogCompressedWithAnotherProgramIsNamedAsSuch) {
+  const std::string body = "\x01\x02 PARAM FLASER binary\n\x03";
+  for (const auto& [name, magic, program] :
+       {std::tuple{"log.xz", std::string("\xFD\x37zXZ\0", 6), "xz"},
+        {"log.bz2", std::string("BZh9"), "bzip2"},
+        {"log.zst", std::string("\x28\xB5\x2F\xFD"), "zstd"},
+        {"log.zip", std::string("PK\x03\x04"), "zip"}}) {
+    const auto path = WriteTemp(name, magic + body);
+    try {
+      ReadCarmenLog(path);
+      ADD_FAILURE() << "no error for " << name;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(path.string() + ": compressed with " + program +
+                                           ", which Plywood does not read"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 TEST(CarmenLogTest, MissingFileIsAnError) {
   EXPECT_THROW(ReadCarmenLog("/nonexistent/file.log"), std::runtime_error);
 }
