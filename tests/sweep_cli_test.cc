@@ -956,6 +956,43 @@ TEST(SweepCliTest, AnEditedWorldOfTheBaseExperimentRunsItsCellsAnew) {
       << "the run in the table is of the world before the edit: " << WallsOfTabledRun(out);
 }
 
+// s62 fortieth pass: a resume after the experiment was edited expands the sweep again and writes
+// sweep.json (the new inputs), then cells.json (the new cells' ids), each renamed into place. A
+// kill between the two left the new inputs beside the old cells: the next resume found its inputs
+// unchanged, took the old ids' finished runs as the edited experiment's, "1 of 1 runs finished",
+// exit 0, the table the old experiment's. sweep.json records cells.json's hash now.
+TEST(SweepCliTest, AResumeKilledBetweenItsManifestFilesNeverKeepsTheOldCells) {
+  const fs::path dir = MakeTempDir("SweepKilledBetweenManifestFiles");
+  std::string experiment = Slurp(SourceRoot() / "tests/data/sweep_default.yaml");
+  const std::string slip = "encoders: {slip_sigma: 0.01}";
+  ASSERT_NE(experiment.find(slip), std::string::npos);
+  const fs::path e = WriteFile(dir / "e.yaml", experiment);
+  const fs::path sweep = WriteFile(dir / "s.yaml",
+                                   "experiment: e.yaml\nseeds: [1]\nset:\n  duration_s: [1]\n"
+                                   "  output.snapshot: [false]\n");
+  const fs::path out = dir / "out", edited = dir / "edited";
+  const auto sweep_into = [&](const fs::path& folder) {
+    const auto r =
+        RunPlywood("sweep " + sweep.string() + " --out " + folder.string() + " --quiet", dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+  };
+  sweep_into(out);
+  const std::string before = Slurp(out / "results.csv");
+
+  experiment.replace(experiment.find(slip), slip.size(), "encoders: {slip_sigma: 0.05}");
+  WriteFile(e, experiment);
+  fs::copy(out, edited, fs::copy_options::recursive);
+  sweep_into(edited);  // the resume that was not killed: the edited experiment's cells and table
+  ASSERT_NE(Slurp(edited / "results.csv"), before)
+      << "the edit changes nothing: the test shows nothing";
+  // What the kill left: the new sweep.json, the old cells.json and cells.csv.
+  fs::copy_file(edited / "sweep.json", out / "sweep.json", fs::copy_options::overwrite_existing);
+  sweep_into(out);
+  EXPECT_EQ(Slurp(out / "results.csv"), Slurp(edited / "results.csv"))
+      << "the table holds the run of the experiment before the edit";
+  EXPECT_EQ(Slurp(out / "cells.json"), Slurp(edited / "cells.json"));
+}
+
 // s42 thirteenth pass: a sweep of a seed000_rooms experiment runs every room of its list when its
 // world is the first room's, but a cell's id hashed only that first world: a resume after a later
 // room's world was edited (a wall moved 0.5 m) kept the finished run of the old room

@@ -19,7 +19,7 @@ bool IsStringMap(const nlohmann::json& value) {
 
 std::optional<SweepMetaDamage> FindSweepMetaDamage(const nlohmann::json& meta) {
   if (!meta.is_object()) return SweepMetaDamage{"", "expected a JSON object"};
-  for (const char* key : {"name", "sweep_file", "plywood_build_id"}) {
+  for (const char* key : {"name", "sweep_file", "plywood_build_id", "cells_json_hash"}) {
     if (meta.contains(key) && !meta[key].is_string()) return SweepMetaDamage{key, "expected text"};
   }
   for (const char* key : {"experiments", "axes", "metrics", "group_by"}) {

@@ -287,6 +287,23 @@ std::string CellsCsv(const std::vector<std::string>& axes, const std::vector<Swe
   return csv;
 }
 
+// cells.json: every cell with what its run is made from, as a resume reads it back.
+std::string CellsJson(const std::vector<SweepCell>& cells) {
+  nlohmann::ordered_json full = nlohmann::ordered_json::array();
+  for (const SweepCell& cell : cells) {
+    full.push_back({{"index", cell.index},
+                    {"id", cell.id},
+                    {"experiment", cell.experiment},
+                    {"world", cell.world},
+                    {"family", cell.family},
+                    {"profile", cell.profile},
+                    {"seed", cell.seed},
+                    {"values", cell.values},
+                    {"overrides", cell.overrides}});
+  }
+  return full.dump(1) + "\n";
+}
+
 }  // namespace
 
 void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cells,
@@ -311,6 +328,12 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
   meta["metrics"] = spec.metrics;
   meta["group_by"] = spec.group_by;
   meta["cells"] = cells.size();
+  // cells.json by its hash: sweep.json and cells.json are renamed into place one after the other,
+  // so a kill between the two (a resume expanding the sweep again after its experiment was edited)
+  // left the new inputs beside the old cells, whose ids and finished runs a later resume then took
+  // as the edited experiment's, exit 0 (the s62 fortieth pass).
+  const std::string cells_json = CellsJson(cells);
+  meta["cells_json_hash"] = StableHash(cells_json);
   std::map<std::string, std::string> inputs = InputHashes(spec);
   for (const SweepCell& cell : cells) {
     for (const auto& [file, hash] : cell.read_files) inputs.try_emplace(file.string(), hash);
@@ -339,20 +362,8 @@ void WriteSweepManifest(const SweepSpec& spec, const std::vector<SweepCell>& cel
   }
   meta["robot_models"] = robots;
 
-  nlohmann::ordered_json full = nlohmann::ordered_json::array();
-  for (const SweepCell& cell : cells) {
-    full.push_back({{"index", cell.index},
-                    {"id", cell.id},
-                    {"experiment", cell.experiment},
-                    {"world", cell.world},
-                    {"family", cell.family},
-                    {"profile", cell.profile},
-                    {"seed", cell.seed},
-                    {"values", cell.values},
-                    {"overrides", cell.overrides}});
-  }
   sim::WriteTextFile(layout.out / "sweep.json", meta.dump(2) + "\n");
-  sim::WriteTextFile(layout.out / "cells.json", full.dump(1) + "\n");
+  sim::WriteTextFile(layout.out / "cells.json", cells_json);
   sim::WriteTextFile(layout.out / "cells.csv", CellsCsv(keys, cells));
   if (!fs::exists(copy)) sim::WriteTextFile(copy, spec.text);
 }
@@ -530,9 +541,12 @@ std::optional<std::vector<SweepCell>> ReadSweepManifest(const SweepSpec& spec,
       return std::nullopt;
     }
   }
+  // cells.json of another expansion than sweep.json's (a kill between their writes): expand again.
+  const std::string cells_json = sim::ReadTextFile(cells_file);
+  if (meta.value("cells_json_hash", std::string()) != StableHash(cells_json)) return std::nullopt;
   std::vector<SweepCell> cells;
   try {
-    for (const auto& item : nlohmann::json::parse(sim::ReadTextFile(cells_file))) {
+    for (const auto& item : nlohmann::json::parse(cells_json)) {
       SweepCell cell;
       cell.index = item.at("index").get<int>();
       cell.id = item.at("id").get<std::string>();
