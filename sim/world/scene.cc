@@ -397,6 +397,16 @@ void Scene::MakePlanarDrive() {
   kinematics_stale_ = false;
 }
 
+std::vector<int> Scene::PlanarBoundingDiscGeoms() const {
+  if (!planar_) return {};
+  return planar_->obstacles().bounding_disc_geom_ids();
+}
+
+std::vector<int> Scene::PlanarRaisedHeightFields() const {
+  if (!planar_) return {};
+  return planar_->obstacles().height_field_geom_ids();
+}
+
 std::vector<double> Scene::PlanarContactBearings() const {
   std::vector<double> bearings;
   if (planar_) planar_->ContactBearings(TruePose(), kPlanarContactSkinM, &bearings);

@@ -91,6 +91,14 @@ std::optional<std::string> SpawnCollision(const Scene& scene);
 // truth, e 0.0106 -> 0.0259). Checked only for runs that score against the truth at that height.
 std::optional<std::string> GeomTheGroundTruthCannotHold(const Scene& scene, double height_m);
 
+// A static geom of the world within the bumper ring's height that the planar drive
+// (physics.drive: planar) holds only by the disc of its bounding radius: a box, cylinder or capsule
+// tilted from upright, an ellipsoid, a mesh (PlanarObstacles::bounding_disc_geom_ids). The robot
+// would stop at that disc, short of what its sensors see and of where the contact drive stops (a
+// 2 m panel tilted 3 deg stopped it 1.1 m short), so the run is refused. Also a height field rising
+// into the ring's height, which the planar drive passes through. Nullopt in the contact drive.
+std::optional<std::string> GeomThePlanarDriveHoldsByItsBound(const Scene& scene);
+
 // The world's static upright geoms span more than an occupancy raster of `resolution_m` cells may
 // hold (kMaxOccupancyRasterCells), naming the geom that reaches furthest from the robot: the raster
 // a run is scored or drawn with is laid over all of them, so one geom kilometres off (a typo in a
