@@ -16,6 +16,7 @@
 #include <cstring>
 #include <filesystem>
 #include <numbers>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -2515,6 +2516,64 @@ TEST_F(ReliabilityTest, ARobotFileWhoseBumpersOrWheelsCannotWorkIsRefused) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(Slurp(dir / "shipped" / "metrics.json").find("\"contact_samples\": 23"),
             std::string::npos);
+}
+
+// audit s62 (forty-first pass): a robot file's <compiler> and <option> reach the world's file and
+// every world's physics, as a world's reach the robot (s40). A P3-DX file copied from elsewhere
+// with <compiler angle="radian"/> and its own angles in radians compiled alike alone and in the
+// scene, but read rotated_room.xml's euler="0 0 20" walls as 20 rad: walls.csv, the truth and the
+// sensors all took another room, exit 0. A robot file's <option gravity="0 0 -1"/> was refused as
+// the world's ("the world sets the physics option gravity ...: remove the world's <option>"), which
+// has none. Each is now one line naming the robot's file.
+TEST_F(ReliabilityTest, ARobotFileThatChangesTheWorldOrThePhysicsIsRefusedNamingIt) {
+  const fs::path dir = Dir();
+  const fs::path root = UsersDataRoot(dir);
+  const fs::path robot = root / "models" / "p3dx.xml";
+  const std::string shipped = Slurp(robot);
+  // The robot file as written in radians: every euler converted, and the compiler told so.
+  std::string radian;
+  const std::regex euler("euler=\"([^\"]*)\"");
+  std::size_t last = 0;
+  for (auto it = std::sregex_iterator(shipped.begin(), shipped.end(), euler);
+       it != std::sregex_iterator(); ++it) {
+    radian += shipped.substr(last, it->position() - last) + "euler=\"";
+    std::istringstream degrees((*it)[1].str());
+    double d = 0.0;
+    for (int i = 0; degrees >> d; ++i) {
+      radian += (i ? " " : "") + msgs::ShortestNumber(d * std::numbers::pi / 180.0);
+    }
+    radian += "\"";
+    last = it->position() + it->length();
+  }
+  radian += shipped.substr(last);
+  ASSERT_NE(radian.find("<default>"), std::string::npos);
+  radian.replace(radian.find("<default>"), 0, "<compiler angle=\"radian\"/>\n  ");
+  std::string with_option = shipped;
+  with_option.replace(with_option.find("<default>"), 0, "<option gravity=\"0 0 -1\"/>\n  ");
+
+  std::string rotated = HallExperiment(0.0, 0.0);
+  rotated.replace(rotated.find("worlds/hall.xml"), std::string("worlds/hall.xml").size(),
+                  "worlds/rotated_room.xml");
+  const fs::path in_rotated = WriteFile(dir / "rotated.yaml", rotated);
+  const fs::path in_hall = WriteFile(dir / "hall.yaml", HallExperiment(0.0, 0.0));
+  ASSERT_EQ(setenv("PLYWOOD_ROOT", root.c_str(), 1), 0);
+  const auto run = [&](const fs::path& experiment, const std::string& out) {
+    return RunPlywood("run " + experiment.string() + " --quiet --out " + (dir / out).string(), dir);
+  };
+  WriteFile(robot, radian);
+  ExpectOneLine(
+      run(in_rotated, "radian"),
+      {robot.string() + ": it changes the world ", "rotated_room.xml: geom 'wall_0': quat",
+       "a <compiler> or <default> setting of the robot's file applies to the world too"});
+  WriteFile(robot, with_option);
+  ExpectOneLine(run(in_hall, "option"),
+                {robot.string() + ": the robot's file sets the physics option gravity to 0 0 -1 "
+                                  "(MuJoCo's default 0 0 -9.81)",
+                 "remove the robot file's <option>"});
+  WriteFile(robot, shipped);
+  const CliResult as_shipped = run(in_rotated, "shipped");
+  unsetenv("PLYWOOD_ROOT");
+  EXPECT_EQ(as_shipped.exit_code, 0) << as_shipped.err;
 }
 
 // A world file named with what XML quotes: `Tom & Jerry "hall" <2>.xml` was refused as "does not

@@ -297,9 +297,17 @@ std::optional<std::string> PlaneThatIsNotTheFloor(const Scene& scene) {
 }
 
 std::optional<std::string> NonDefaultPhysicsOptions(const Scene& scene) {
+  if (const auto option = PhysicsOptionOffDefault(scene.model()->opt)) {
+    return "the world sets " + *option +
+           "; every world runs with the same physics (the experiment sets only "
+           "physics.timestep_s): remove the world's <option>";
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> PhysicsOptionOffDefault(const mjOption& o) {
   mjOption defaults;
   mj_defaultOption(&defaults);
-  const mjOption& o = scene.model()->opt;
   const auto numbers = [](const mjtNum* v, int n) {
     std::string text;
     for (int i = 0; i < n; ++i) text += (i ? " " : "") + msgs::ShortestNumber(v[i]);
@@ -307,10 +315,7 @@ std::optional<std::string> NonDefaultPhysicsOptions(const Scene& scene) {
   };
   const auto refuse = [](const std::string& name, const std::string& value,
                          const std::string& fallback) {
-    return "the world sets the physics option " + name + " to " + value + " (MuJoCo's default " +
-           fallback +
-           "); every world runs with the same physics (the experiment sets only "
-           "physics.timestep_s): remove the world's <option>";
+    return "the physics option " + name + " to " + value + " (MuJoCo's default " + fallback + ")";
   };
   // What the world may not change: every option but the timestep (the experiment's
   // physics.timestep_s), the remote API's rate and the magnetic field (no sensor reads it).

@@ -64,6 +64,11 @@ std::optional<std::string> PlaneThatIsNotTheFloor(const Scene& scene);
 // gravity="0 0 9.81" ran, the robot afloat, exit 0).
 std::optional<std::string> NonDefaultPhysicsOptions(const Scene& scene);
 
+// The first physics option of `option` other than MuJoCo's default, the timestep aside, as "the
+// physics option gravity to 0 0 -1 (MuJoCo's default 0 0 -9.81)"; NonDefaultPhysicsOptions' test,
+// also applied to the robot's file alone (Scene), whose <option> reached every world it ran in.
+std::optional<std::string> PhysicsOptionOffDefault(const mjOption& option);
+
 // A <size> nconmax or njmax below MuJoCo's own (those of a model with nothing in it): MuJoCo
 // drops the contacts, or constraint rows, beyond it with only a warning, so the wheels lost the
 // floor (a world with <size nconmax="1"/> ran, the encoder ate_rms_m 3.06 m instead of 0.0017,
