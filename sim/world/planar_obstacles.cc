@@ -177,6 +177,9 @@ PlanarObstacles::PlanarObstacles(const mjModel* m, const mjData* d, int base_bod
     } else {
       o.disc = true;
       o.radius_m = m->geom_rbound[g];
+      // Its exact height range: one lying below the ring (a log on the floor) is no obstacle.
+      half_height = GeomVerticalHalfExtent(
+          m, g, Eigen::Map<const Eigen::Matrix<mjtNum, 3, 3, Eigen::RowMajor>>(r));
       by_bound = true;
     }
     if (std::isnan(z_min)) {
