@@ -11,9 +11,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <numbers>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -709,6 +712,62 @@ TEST_F(ReliabilityTest, AWorldThatChangesTheRobotIsRefused) {
 // false), a seed 001 obstacle tilted 0.5 deg left the occupancy truth (e 0.0106 -> 0.0259 in 120
 // s). Refused when the run is scored in the geom's slice; unscored runs and upright geoms still
 // run.
+// audit s62 (forty-first pass): the planar drive stops the robot at a static geom's footprint. It
+// took every shape but an upright box, cylinder or sphere for the disc of its bounding radius and
+// height fields for floor, so in the hall a 2 m panel tilted 3 deg stopped a planar robot 1.1 m
+// short of what its laser saw (the contact drive stops at the panel), and a 0.5 m height-field
+// block its laser saw 1.8 m ahead was driven through, exit 0. A wall on its side and a capsule
+// column, which the ground truth holds exactly, are held exactly (planar_drive_test) and run.
+TEST_F(ReliabilityTest, APlanarDriveWorldGeomItCouldOnlyApproximateIsRefused) {
+  const fs::path dir = WorldDir();
+  const std::string hall = Slurp(testing::SourceRoot() / "worlds" / "hall.xml");
+  const auto with = [&](const std::string& name, const std::string& geom) {
+    std::string xml = hall;
+    xml.replace(xml.find("</asset>"), std::string("</asset>").size(),
+                "<hfield name=\"rock\" file=\"rock.bin\" size=\"0.3 1 0.5 0.05\"/></asset>");
+    xml.replace(xml.find("<geom name=\"wall_0\""), 0, geom + "\n    ");
+    return WriteFile(dir / name, xml);
+  };
+  // MuJoCo's binary height field: rows, columns (int32), then the elevations (float32), here a
+  // block one cell in from the border.
+  std::string rock(8 + 16 * 4, '\0');
+  const std::int32_t four = 4;
+  std::memcpy(rock.data(), &four, 4);
+  std::memcpy(rock.data() + 4, &four, 4);
+  for (const int i : {5, 6, 9, 10}) {
+    const float one = 1.0f;
+    std::memcpy(rock.data() + 8 + 4 * i, &one, 4);
+  }
+  WriteFile(dir / "rock.bin", rock);
+  const auto in = [&](const fs::path& world) {
+    std::string yaml = HallExperiment(-2.0, -2.0);
+    yaml.replace(yaml.find("worlds/hall.xml"), std::string("worlds/hall.xml").size(),
+                 world.string());
+    return yaml;
+  };
+  const fs::path tilted = with("tilted.xml",
+                               "<geom name=\"panel\" type=\"box\" pos=\"0 -2 0.5\" "
+                               "size=\"0.009 1 0.5\" euler=\"3 0 0\"/>");
+  const fs::path field =
+      with("field.xml", "<geom name=\"block\" type=\"hfield\" hfield=\"rock\" pos=\"0 -2 0\"/>");
+  const fs::path lying = with("lying.xml",
+                              "<geom name=\"panel\" type=\"box\" pos=\"0 -2 0.5\" "
+                              "size=\"0.5 1 0.009\" euler=\"0 90 0\"/>");
+  const fs::path capsule = with(
+      "capsule.xml", "<geom name=\"post\" type=\"capsule\" pos=\"0 -2 0.5\" size=\"0.1 0.4\"/>");
+  ExpectRefused(
+      in(tilted), "--set physics.drive=planar",
+      {"experiment.yaml: world: ", "tilted.xml: its geom 'panel' is a box tilted 3 deg",
+       "physics.drive: planar holds only upright boxes", "bounding disc (radius 1.118 m)"});
+  ExpectRefused(in(field), "--set physics.drive=planar",
+                {"experiment.yaml: world: ", "field.xml: its geom 'block' is a height field",
+                 "drives through them"});
+  for (const fs::path& world : {tilted, field}) EXPECT_EQ(Run(in(world)).exit_code, 0) << world;
+  for (const fs::path& world : {lying, capsule}) {
+    EXPECT_EQ(Run(in(world), "--set physics.drive=planar").exit_code, 0) << world;
+  }
+}
+
 TEST_F(ReliabilityTest, AWorldGeomTheGroundTruthCannotHoldIsRefusedWhereTheRunIsScored) {
   const fs::path dir = WorldDir();
   const std::string room_1 = Slurp(testing::SourceRoot() / "worlds" / "seed000_room_1.xml");
@@ -2457,6 +2516,64 @@ TEST_F(ReliabilityTest, ARobotFileWhoseBumpersOrWheelsCannotWorkIsRefused) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(Slurp(dir / "shipped" / "metrics.json").find("\"contact_samples\": 23"),
             std::string::npos);
+}
+
+// audit s62 (forty-first pass): a robot file's <compiler> and <option> reach the world's file and
+// every world's physics, as a world's reach the robot (s40). A P3-DX file copied from elsewhere
+// with <compiler angle="radian"/> and its own angles in radians compiled alike alone and in the
+// scene, but read rotated_room.xml's euler="0 0 20" walls as 20 rad: walls.csv, the truth and the
+// sensors all took another room, exit 0. A robot file's <option gravity="0 0 -1"/> was refused as
+// the world's ("the world sets the physics option gravity ...: remove the world's <option>"), which
+// has none. Each is now one line naming the robot's file.
+TEST_F(ReliabilityTest, ARobotFileThatChangesTheWorldOrThePhysicsIsRefusedNamingIt) {
+  const fs::path dir = Dir();
+  const fs::path root = UsersDataRoot(dir);
+  const fs::path robot = root / "models" / "p3dx.xml";
+  const std::string shipped = Slurp(robot);
+  // The robot file as written in radians: every euler converted, and the compiler told so.
+  std::string radian;
+  const std::regex euler("euler=\"([^\"]*)\"");
+  std::size_t last = 0;
+  for (auto it = std::sregex_iterator(shipped.begin(), shipped.end(), euler);
+       it != std::sregex_iterator(); ++it) {
+    radian += shipped.substr(last, it->position() - last) + "euler=\"";
+    std::istringstream degrees((*it)[1].str());
+    double d = 0.0;
+    for (int i = 0; degrees >> d; ++i) {
+      radian += (i ? " " : "") + msgs::ShortestNumber(d * std::numbers::pi / 180.0);
+    }
+    radian += "\"";
+    last = it->position() + it->length();
+  }
+  radian += shipped.substr(last);
+  ASSERT_NE(radian.find("<default>"), std::string::npos);
+  radian.replace(radian.find("<default>"), 0, "<compiler angle=\"radian\"/>\n  ");
+  std::string with_option = shipped;
+  with_option.replace(with_option.find("<default>"), 0, "<option gravity=\"0 0 -1\"/>\n  ");
+
+  std::string rotated = HallExperiment(0.0, 0.0);
+  rotated.replace(rotated.find("worlds/hall.xml"), std::string("worlds/hall.xml").size(),
+                  "worlds/rotated_room.xml");
+  const fs::path in_rotated = WriteFile(dir / "rotated.yaml", rotated);
+  const fs::path in_hall = WriteFile(dir / "hall.yaml", HallExperiment(0.0, 0.0));
+  ASSERT_EQ(setenv("PLYWOOD_ROOT", root.c_str(), 1), 0);
+  const auto run = [&](const fs::path& experiment, const std::string& out) {
+    return RunPlywood("run " + experiment.string() + " --quiet --out " + (dir / out).string(), dir);
+  };
+  WriteFile(robot, radian);
+  ExpectOneLine(
+      run(in_rotated, "radian"),
+      {robot.string() + ": it changes the world ", "rotated_room.xml: geom 'wall_0': quat",
+       "a <compiler> or <default> setting of the robot's file applies to the world too"});
+  WriteFile(robot, with_option);
+  ExpectOneLine(run(in_hall, "option"),
+                {robot.string() + ": the robot's file sets the physics option gravity to 0 0 -1 "
+                                  "(MuJoCo's default 0 0 -9.81)",
+                 "remove the robot file's <option>"});
+  WriteFile(robot, shipped);
+  const CliResult as_shipped = run(in_rotated, "shipped");
+  unsetenv("PLYWOOD_ROOT");
+  EXPECT_EQ(as_shipped.exit_code, 0) << as_shipped.err;
 }
 
 // A world file named with what XML quotes: `Tom & Jerry "hall" <2>.xml` was refused as "does not

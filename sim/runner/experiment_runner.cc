@@ -250,6 +250,9 @@ ExperimentRunner::ExperimentRunner(const ExperimentConfig& config)
       throw ConfigError(config.source_file, "world", config.world_path.string() + ": " + *problem);
     }
   }
+  if (const auto problem = GeomThePlanarDriveHoldsByItsBound(*scene_)) {
+    throw ConfigError(config.source_file, "world", config.world_path.string() + ": " + *problem);
+  }
   // The rasters laid over the whole world after the run: the sonar map's truth, the geometric
   // map's picture. Checked now, not after minutes of running.
   std::vector<double> raster_resolutions_m;

@@ -58,6 +58,26 @@ int BoxAxisNearestVertical(const Eigen::Matrix3d& R_WG) {
   return up;
 }
 
+double GeomVerticalHalfExtent(const mjModel* m, int g, const Eigen::Matrix3d& R_WG) {
+  const mjtNum* size = m->geom_size + 3 * g;
+  // Row 2 of R_WG: how much each of the geom's axes rises per unit along it.
+  const double rx = R_WG(2, 0), ry = R_WG(2, 1), rz = R_WG(2, 2);
+  switch (m->geom_type[g]) {
+    case mjGEOM_BOX:
+      return std::abs(rx) * size[0] + std::abs(ry) * size[1] + std::abs(rz) * size[2];
+    case mjGEOM_ELLIPSOID:  // the support of the ellipsoid along z
+      return std::hypot(rx * size[0], ry * size[1], rz * size[2]);
+    case mjGEOM_CYLINDER:  // the axis' rise, and the rim's
+      return std::abs(rz) * size[1] + size[0] * std::sqrt(std::max(0.0, 1.0 - rz * rz));
+    case mjGEOM_CAPSULE:
+      return std::abs(rz) * size[1] + size[0];
+    case mjGEOM_SPHERE:
+      return size[0];
+    default:  // meshes and height fields: their bounding sphere
+      return m->geom_rbound[g];
+  }
+}
+
 namespace {
 
 bool SpansHeight(const GroundTruthOptions& options, double z_min, double z_max) {
@@ -85,8 +105,8 @@ Classification Classify(const mjModel* m, int g, const GroundTruthOptions& optio
   const bool prism_or_round = type == mjGEOM_BOX || type == mjGEOM_CYLINDER ||
                               type == mjGEOM_SPHERE || type == mjGEOM_CAPSULE;
   if (!upright || !prism_or_round) {
-    const double rbound = m->geom_rbound[g];
-    return SpansHeight(options, X_WG.p.z() - rbound, X_WG.p.z() + rbound)
+    const double half_m = GeomVerticalHalfExtent(m, g, X_WG.R);
+    return SpansHeight(options, X_WG.p.z() - half_m, X_WG.p.z() + half_m)
                ? Classification::kUnrepresented
                : Classification::kSkip;
   }

@@ -105,6 +105,12 @@ double AxisTiltRad(const Eigen::Matrix3d& R_WG, int axis);
 // along the beam) does.
 int BoxAxisNearestVertical(const Eigen::Matrix3d& R_WG);
 
+// Half the vertical extent of geom g turned by R_WG: exact for boxes, ellipsoids, cylinders,
+// capsules and spheres, the bounding radius for meshes and height fields. A capsule lying on the
+// floor (fromto at z 0.05, radius 0.05) spans z in [0, 0.1], where its bounding radius (0.35 for a
+// 0.6 m capsule) reached the laser's 0.34 m and refused a scored run it could not touch.
+double GeomVerticalHalfExtent(const mjModel* model, int geom_id, const Eigen::Matrix3d& R_WG);
+
 // True when the geom's body is welded to the world: no joint anywhere in its chain, not mocap.
 bool IsStaticGeom(const mjModel* model, int geom_id);
 

@@ -310,6 +310,40 @@ TEST(GroundTruthWallsTest, HeightFilterDropsGeomsThatDoNotSpanTheHeight) {
   EXPECT_TRUE(none.circles.empty());
 }
 
+// Shapes the truth cannot hold are reported only where they reach the slice, by their exact
+// vertical extent: a 0.6 m capsule and a flat ellipsoid lying on the floor (tops at 0.1 m) were
+// reported at the laser's 0.34 m by their bounding radii (0.35 and 0.5 m), which refused a scored
+// run in a world the laser could not see them in.
+TEST(GroundTruthWallsTest, ShapesLyingBelowTheSliceAreNotReportedAtIt) {
+  const MjModelPtr m = Load(
+      "<mujoco><worldbody>"
+      "<geom name=\"log\" type=\"capsule\" fromto=\"1 0.2 0.05 1 0.8 0.05\" size=\"0.05\"/>"
+      "<geom name=\"mat\" type=\"ellipsoid\" pos=\"2 0 0.05\" size=\"0.5 0.1 0.05\"/>"
+      "<geom name=\"beam\" type=\"cylinder\" fromto=\"3 0 0.1 3.6 0 0.1\" size=\"0.1\"/>"
+      "<geom name=\"plank\" type=\"box\" pos=\"4 0 0.1\" size=\"0.5 0.1 0.02\" "
+      "euler=\"10 0 0\"/>"
+      "</worldbody></mujoco>");
+  GroundTruthOptions laser;
+  laser.height_m = 0.34;
+  EXPECT_TRUE(ExtractGroundTruthWalls(m.get(), laser).unrepresented_geom_ids.empty());
+  GroundTruthOptions low;
+  low.height_m = 0.09;
+  EXPECT_EQ(ExtractGroundTruthWalls(m.get(), low).unrepresented_geom_ids.size(), 4u);
+  // The extents by hand: the plank (0.5 x 0.1 x 0.02) turned 10 deg about x rises
+  // 0.1 sin 10 + 0.02 cos 10 either side of its centre.
+  const Eigen::Matrix3d level = Eigen::Matrix3d::Identity();
+  EXPECT_NEAR(GeomVerticalHalfExtent(m.get(), GeomId(m.get(), "mat"), level), 0.05, kTol);
+  Eigen::Matrix3d about_x;
+  const double a = 10.0 * std::numbers::pi / 180.0;
+  about_x << 1, 0, 0, 0, std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a);
+  EXPECT_NEAR(GeomVerticalHalfExtent(m.get(), GeomId(m.get(), "plank"), about_x),
+              0.1 * std::sin(a) + 0.02 * std::cos(a), kTol);
+  Eigen::Matrix3d lying;  // the axis along x
+  lying << 0, 0, 1, 0, 1, 0, -1, 0, 0;
+  EXPECT_NEAR(GeomVerticalHalfExtent(m.get(), GeomId(m.get(), "beam"), lying), 0.1, kTol);
+  EXPECT_NEAR(GeomVerticalHalfExtent(m.get(), GeomId(m.get(), "log"), lying), 0.05, kTol);
+}
+
 TEST(GroundTruthWallsTest, InvalidOptionsNameTheField) {
   const MjModelPtr m = Load(kInlineWorld);
   GroundTruthOptions bad;

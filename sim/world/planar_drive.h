@@ -77,6 +77,7 @@ class PlanarDrive {
   double stiffness() const { return stiffness_; }
   double command_gain() const { return command_gain_; }
   PlanarObstacles& obstacles() { return obstacles_; }
+  const PlanarObstacles& obstacles() const { return obstacles_; }
 
  private:
   PlanarDriveIndices ids_;

@@ -349,6 +349,36 @@ TEST(PlanarDriveTest, PressedAgainstAColumnItStillTurns) {
   EXPECT_LT(scene.TruePose().theta_rad - theta0, -2.9);
 }
 
+// A wall lying on its side (turned 90 deg about y, its sizes to match) and a capsule column are
+// the prism and the disc the ground truth holds them as (docs/worlds.md), so the robot stops at
+// their faces exactly as at the upright box and the cylinder they equal; the planar drive took
+// both for their bounding discs and stopped 1.1 m (the wall) and 0.4 m (the capsule) short of
+// what its laser saw, where the contact drive stops at the face.
+TEST(PlanarDriveTest, AWallOnItsSideAndACapsuleStopTheRobotWhereTheirUprightTwinsDo) {
+  const auto stop_x = [](const std::string& name, const std::string& geom) {
+    const std::unique_ptr<Scene> scene = MakeP3dxSceneAmong(name, geom);
+    const double w = 0.3 / robot::P3dxSpec().wheel_radius_m;
+    Drive(*scene, w, w, 500);
+    EXPECT_FALSE(scene->PlanarContactBearings().empty()) << name;  // stopped by the geom
+    return scene->TruePose().x_m;
+  };
+  const double at_wall =
+      stop_x("planar_drive_upright_wall",
+             "    <geom name=\"wall\" type=\"box\" pos=\"1.025 0 0.5\" size=\"0.025 2 0.5\"/>\n");
+  EXPECT_NEAR(stop_x("planar_drive_wall_on_its_side",
+                     "    <geom name=\"wall\" type=\"box\" pos=\"1.025 0 0.5\" "
+                     "size=\"0.5 2 0.025\" euler=\"0 90 0\"/>\n"),
+              at_wall, 1e-9);
+  const double at_cylinder =
+      stop_x("planar_drive_cylinder",
+             "    <geom name=\"post\" type=\"cylinder\" pos=\"1.1 0 0.5\" size=\"0.1 0.5\"/>\n");
+  EXPECT_NEAR(stop_x("planar_drive_capsule",
+                     "    <geom name=\"post\" type=\"capsule\" pos=\"1.1 0 0.5\" "
+                     "size=\"0.1 0.4\"/>\n"),
+              at_cylinder, 1e-9);
+  EXPECT_GT(at_cylinder, 0.7);  // the post's face at x = 1 less the footprint's front
+}
+
 // A turn that the walls leave no room for (the footprint wedged between two walls closer than
 // its reach) stays blocked, as before: nothing is pushed through a wall.
 TEST(PlanarDriveTest, WedgedBetweenTwoWallsItCannotTurn) {

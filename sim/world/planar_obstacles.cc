@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "sim/config/config_error.h"
+#include "sim/world/ground_truth_walls.h"
 #include "sim/world/mujoco_pair_rules.h"
 
 namespace plywood::sim {
@@ -112,36 +113,81 @@ PlanarObstacles::PlanarObstacles(const mjModel* m, const mjData* d, int base_bod
     reach_m_ = std::max(reach_m_, std::hypot(a.first, a.second));
   }
 
+  // The ground truth's reading of each geom, so that a shape it holds exactly (a box standing on
+  // any of its axes, an upright capsule, a geom upright within its tilt tolerance) stops the robot
+  // where the truth and the contact drive put its faces, not at its bounding disc.
+  GroundTruthOptions outline;
+  outline.excluded_geom_group = -1;  // the drive's obstacles are chosen by the contact bits alone
+  std::vector<const UprightGeom*> truth_shape(m->ngeom, nullptr);
+  const std::vector<UprightGeom> truth_geoms = ExtractUprightGeoms(m, outline);
+  for (const UprightGeom& u : truth_geoms) truth_shape[u.geom_id] = &u;
+
   for (int g = 0; g < m->ngeom; ++g) {
     if (m->body_weldid[m->geom_bodyid[g]] != 0 || !ContactBitsMatch(m, g, ring)) continue;
     const int type = m->geom_type[g];
-    if (type == mjGEOM_PLANE || type == mjGEOM_HFIELD) continue;
+    if (type == mjGEOM_PLANE) continue;
     const mjtNum* p = d->geom_xpos + 3 * g;
     const mjtNum* r = d->geom_xmat + 9 * g;
+    if (type == mjGEOM_HFIELD) {
+      // A height field is driven over as floor; one that rises to the ring's height is an
+      // obstacle the footprint test does not hold (its top: the elevation scale when level).
+      const bool level = r[2] == 0.0 && r[5] == 0.0 && r[8] > 0.0;
+      const double top =
+          p[2] + (level ? m->hfield_size[4 * m->geom_dataid[g] + 2] : m->geom_rbound[g]);
+      if (top > z_lo) height_field_geom_ids_.push_back(g);
+      continue;
+    }
     const mjtNum* size = m->geom_size + 3 * g;
     const bool upright = r[2] == 0.0 && r[5] == 0.0;  // local z along world z
     Obstacle o;
     o.cx = p[0];
     o.cy = p[1];
     double half_height = m->geom_rbound[g];
+    double z_min = std::numeric_limits<double>::quiet_NaN(), z_max = z_min;
+    const UprightGeom* truth = truth_shape[g];
+    bool by_bound = false;
     if (upright && type == mjGEOM_BOX) {
       o.ux = r[0];
       o.uy = r[3];
       o.half_x = size[0];
       o.half_y = size[1];
       half_height = size[2];
+    } else if (upright && type == mjGEOM_CYLINDER) {
+      o.disc = true;
+      o.radius_m = size[0];
+      half_height = size[1];
+    } else if (type == mjGEOM_SPHERE) {
+      o.disc = true;
+      o.radius_m = size[0];
+    } else if (truth != nullptr) {
+      o.cx = truth->centre_W.x();
+      o.cy = truth->centre_W.y();
+      z_min = truth->z_min_m;
+      z_max = truth->z_max_m;
+      if (truth->shape == UprightGeom::Shape::kBox) {
+        const double length = truth->R_WG.col(0).norm();
+        o.ux = truth->R_WG(0, 0) / length;
+        o.uy = truth->R_WG(1, 0) / length;
+        o.half_x = truth->half_size_xy.x();
+        o.half_y = truth->half_size_xy.y();
+      } else {
+        o.disc = true;
+        o.radius_m = truth->radius_m;
+      }
     } else {
       o.disc = true;
-      if (upright && type == mjGEOM_CYLINDER) {
-        o.radius_m = size[0];
-        half_height = size[1];
-      } else if (type == mjGEOM_SPHERE) {
-        o.radius_m = size[0];
-      } else {
-        o.radius_m = m->geom_rbound[g];
-      }
+      o.radius_m = m->geom_rbound[g];
+      // Its exact height range: one lying below the ring (a log on the floor) is no obstacle.
+      half_height = GeomVerticalHalfExtent(
+          m, g, Eigen::Map<const Eigen::Matrix<mjtNum, 3, 3, Eigen::RowMajor>>(r));
+      by_bound = true;
     }
-    if (p[2] + half_height < z_lo || p[2] - half_height > z_hi) continue;
+    if (std::isnan(z_min)) {
+      z_min = p[2] - half_height;
+      z_max = p[2] + half_height;
+    }
+    if (z_max < z_lo || z_min > z_hi) continue;
+    if (by_bound) bounding_disc_geom_ids_.push_back(g);
     // Padded so that rounding in CentreDistance cannot put a footprint the box test drops within
     // its limit.
     o.bound_m = (o.disc ? o.radius_m : std::hypot(o.half_x, o.half_y)) * (1.0 + 1e-9) + 1e-9;

@@ -18,9 +18,13 @@ namespace plywood::sim {
 // "bumper_ring" mesh geom, in the robot frame, with the ring's height range. The obstacles are the
 // static geoms (welded to the world) that could collide with the ring (MuJoCo's contype /
 // conaffinity rule) and whose height range meets the ring's: an upright box is its rectangle, an
-// upright cylinder or a sphere its disc, and any other shape (tilted boxes and cylinders, capsules,
-// ellipsoids, meshes) the disc of its bounding radius, i.e. the robot stops early beside those.
-// Planes and height fields are the floor, never obstacles. Nothing else of the robot (chassis,
+// upright cylinder, capsule or a sphere its disc (the shapes the ground truth holds, read as
+// ExtractUprightGeoms reads them: a box standing on any of its axes is its rectangle), and any
+// other shape (tilted boxes, cylinders and capsules, ellipsoids, meshes) the disc of its bounding
+// radius, i.e. the robot would stop early beside those: bounding_disc_geom_ids() lists them, and
+// a run refuses them (sim::GeomThePlanarDriveHoldsByItsBound).
+// Planes and height fields are the floor, never obstacles (height_field_geom_ids() lists those
+// rising into the ring's height, which a run refuses). Nothing else of the robot (chassis,
 // wheels, laser) is tested: an obstacle above or below the ring's height range is driven under or
 // over, as it would be by a robot that touches the world only through its ring.
 class PlanarObstacles {
@@ -52,6 +56,12 @@ class PlanarObstacles {
   const std::vector<double>& footprint_xy() const { return hull_; }
   double reach_m() const { return reach_m_; }
   int obstacle_count() const { return static_cast<int>(obstacles_.size()); }
+  // The obstacles held only by the disc of their bounding radius (a tilted box, cylinder or
+  // capsule, an ellipsoid, a mesh), which stops the robot short of what its sensors see.
+  const std::vector<int>& bounding_disc_geom_ids() const { return bounding_disc_geom_ids_; }
+  // The height fields that rise above the ring's lowest point: the drive takes a height field for
+  // floor and passes through it, while the sensors and the contact drive meet it.
+  const std::vector<int>& height_field_geom_ids() const { return height_field_geom_ids_; }
 
  private:
   struct Obstacle {
@@ -92,6 +102,8 @@ class PlanarObstacles {
   double Penetration(const Obstacle& o, const msgs::Pose2D& X_WR, double direction_W[2]) const;
 
   static constexpr double kNearPadM = 0.5;
+  std::vector<int> bounding_disc_geom_ids_;
+  std::vector<int> height_field_geom_ids_;
   std::vector<double> hull_;     // x0, y0, x1, y1, ... counter-clockwise
   std::vector<double> normals_;  // outward unit normal of edge i (vertex i to i + 1)
   double reach_m_ = 0.0;

@@ -14,9 +14,11 @@
 #include "sim/world/finite_geometry.h"
 #include "sim/world/planar_drive.h"
 #include "sim/world/robot_changed_by_world.h"
+#include "sim/world/setup_checks.h"
 #include "sim/world/static_geom_step.h"
 #include "sim/world/step_skipped_sites.h"
 #include "sim/world/upright_pose.h"
+#include "sim/world/world_changed_by_robot.h"
 
 namespace plywood::sim {
 namespace {
@@ -284,6 +286,27 @@ Scene::Scene(const SceneOptions& options) : options_(options) {
     if (const auto problem = RobotChangedByWorld(model_.get(), robot_alone.get())) {
       throw ConfigError(options.world_mjcf.string(), "", *problem);
     }
+    // A robot file's <option> would change the physics of every world it runs in; named here, as
+    // the robot's, before the world's own check would blame the world for it.
+    if (const auto option = PhysicsOptionOffDefault(robot_alone->opt)) {
+      throw ConfigError(options.robot_mjcf.string(), "",
+                        "the robot's file sets " + *option +
+                            "; every robot runs with the same physics (the experiment sets only "
+                            "physics.timestep_s): remove the robot file's <option>");
+    }
+  }
+  // And the robot's <compiler> and <default> settings reach the world's file: the world must
+  // compile as it does alone (a world that does not compile alone is left to the checks below).
+  MjModelPtr world_alone;
+  try {
+    world_alone = LoadModelFromFile(world.string());
+  } catch (const std::exception&) {
+  }
+  if (world_alone) {
+    if (const auto problem = WorldChangedByRobot(model_.get(), world_alone.get())) {
+      throw ConfigError(options.robot_mjcf.string(), "",
+                        "it changes the world " + options.world_mjcf.string() + ": " + *problem);
+    }
   }
   if (!(options.timestep_s > 0.0) || !std::isfinite(options.timestep_s)) {
     throw std::invalid_argument("timestep_s: must be a finite number > 0");
@@ -395,6 +418,16 @@ void Scene::MakePlanarDrive() {
   planar_ =
       std::make_unique<PlanarDrive>(model_.get(), data_.get(), ids, options_.robot_mjcf.string());
   kinematics_stale_ = false;
+}
+
+std::vector<int> Scene::PlanarBoundingDiscGeoms() const {
+  if (!planar_) return {};
+  return planar_->obstacles().bounding_disc_geom_ids();
+}
+
+std::vector<int> Scene::PlanarRaisedHeightFields() const {
+  if (!planar_) return {};
+  return planar_->obstacles().height_field_geom_ids();
 }
 
 std::vector<double> Scene::PlanarContactBearings() const {

@@ -75,6 +75,12 @@ class Scene {
   // contact drive (the bumpers read MuJoCo's contacts there).
   static constexpr double kPlanarContactSkinM = 1e-3;
   std::vector<double> PlanarContactBearings() const;
+  // The planar drive's obstacles held only by their bounding disc (PlanarObstacles); empty in the
+  // contact drive.
+  std::vector<int> PlanarBoundingDiscGeoms() const;
+  // The planar drive's height fields that rise into the bumper ring's height (PlanarObstacles),
+  // which it drives through; empty in the contact drive.
+  std::vector<int> PlanarRaisedHeightFields() const;
 
   double time_s() const { return data_->time; }
   double timestep_s() const { return model_->opt.timestep; }

@@ -123,6 +123,39 @@ std::optional<std::string> GeomTheGroundTruthCannotHold(const Scene& scene, doub
   return std::nullopt;
 }
 
+std::optional<std::string> GeomThePlanarDriveHoldsByItsBound(const Scene& scene) {
+  const mjModel* m = scene.model();
+  if (const std::vector<int> fields = scene.PlanarRaisedHeightFields(); !fields.empty()) {
+    return "its " + GeomName(m, fields.front()) +
+           " is a height field rising into the bumper ring's height: physics.drive: planar takes "
+           "height fields for floor and drives through them, where its sensors and the contact "
+           "drive meet them; use physics.drive: contact, or make it of upright boxes, cylinders, "
+           "capsules and spheres (worlds/README.md)";
+  }
+  if (const std::vector<int> discs = scene.PlanarBoundingDiscGeoms(); !discs.empty()) {
+    const int g = discs.front();
+    const int type = m->geom_type[g];
+    const std::string shape = Shape(m, g);
+    std::string what = (shape.front() == 'e' ? "an " : "a ") + shape;
+    if (type == mjGEOM_BOX || type == mjGEOM_CYLINDER || type == mjGEOM_CAPSULE) {
+      const Eigen::Matrix3d R_WG = Eigen::Map<const Eigen::Matrix<mjtNum, 3, 3, Eigen::RowMajor>>(
+          scene.data()->geom_xmat + 9 * g);
+      const int up = type == mjGEOM_BOX ? BoxAxisNearestVertical(R_WG) : 2;
+      const double tilt_deg = AxisTiltRad(R_WG, up) * 180.0 / std::numbers::pi;
+      what += " tilted " + msgs::ShortestNumber(std::round(tilt_deg * 100.0) / 100.0) +
+              " deg from upright";
+    }
+    return "its " + GeomName(m, g) + " is " + what +
+           " within the bumper ring's height: physics.drive: planar holds only upright boxes (on "
+           "any of their axes), cylinders, capsules and spheres, and would stop the robot at this "
+           "one's bounding disc (radius " +
+           msgs::MillimetreNumber(m->geom_rbound[g]) +
+           " m), short of what its sensors see; use physics.drive: contact, or make it of those "
+           "(worlds/README.md)";
+  }
+  return std::nullopt;
+}
+
 std::optional<std::string> WorldGeomInTheRobotsGroup(const Scene& scene) {
   const mjModel* m = scene.model();
   for (int g = 0; g < m->ngeom; ++g) {
@@ -264,9 +297,17 @@ std::optional<std::string> PlaneThatIsNotTheFloor(const Scene& scene) {
 }
 
 std::optional<std::string> NonDefaultPhysicsOptions(const Scene& scene) {
+  if (const auto option = PhysicsOptionOffDefault(scene.model()->opt)) {
+    return "the world sets " + *option +
+           "; every world runs with the same physics (the experiment sets only "
+           "physics.timestep_s): remove the world's <option>";
+  }
+  return std::nullopt;
+}
+
+std::optional<std::string> PhysicsOptionOffDefault(const mjOption& o) {
   mjOption defaults;
   mj_defaultOption(&defaults);
-  const mjOption& o = scene.model()->opt;
   const auto numbers = [](const mjtNum* v, int n) {
     std::string text;
     for (int i = 0; i < n; ++i) text += (i ? " " : "") + msgs::ShortestNumber(v[i]);
@@ -274,10 +315,7 @@ std::optional<std::string> NonDefaultPhysicsOptions(const Scene& scene) {
   };
   const auto refuse = [](const std::string& name, const std::string& value,
                          const std::string& fallback) {
-    return "the world sets the physics option " + name + " to " + value + " (MuJoCo's default " +
-           fallback +
-           "); every world runs with the same physics (the experiment sets only "
-           "physics.timestep_s): remove the world's <option>";
+    return "the physics option " + name + " to " + value + " (MuJoCo's default " + fallback + ")";
   };
   // What the world may not change: every option but the timestep (the experiment's
   // physics.timestep_s), the remote API's rate and the magnetic field (no sensor reads it).

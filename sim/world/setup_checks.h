@@ -64,6 +64,11 @@ std::optional<std::string> PlaneThatIsNotTheFloor(const Scene& scene);
 // gravity="0 0 9.81" ran, the robot afloat, exit 0).
 std::optional<std::string> NonDefaultPhysicsOptions(const Scene& scene);
 
+// The first physics option of `option` other than MuJoCo's default, the timestep aside, as "the
+// physics option gravity to 0 0 -1 (MuJoCo's default 0 0 -9.81)"; NonDefaultPhysicsOptions' test,
+// also applied to the robot's file alone (Scene), whose <option> reached every world it ran in.
+std::optional<std::string> PhysicsOptionOffDefault(const mjOption& option);
+
 // A <size> nconmax or njmax below MuJoCo's own (those of a model with nothing in it): MuJoCo
 // drops the contacts, or constraint rows, beyond it with only a warning, so the wheels lost the
 // floor (a world with <size nconmax="1"/> ran, the encoder ate_rms_m 3.06 m instead of 0.0017,
@@ -90,6 +95,14 @@ std::optional<std::string> SpawnCollision(const Scene& scene);
 // split_and_merge's precision from 1 to 0.75; a seed 001 obstacle tilted 0.5 deg left the map's
 // truth, e 0.0106 -> 0.0259). Checked only for runs that score against the truth at that height.
 std::optional<std::string> GeomTheGroundTruthCannotHold(const Scene& scene, double height_m);
+
+// A static geom of the world within the bumper ring's height that the planar drive
+// (physics.drive: planar) holds only by the disc of its bounding radius: a box, cylinder or capsule
+// tilted from upright, an ellipsoid, a mesh (PlanarObstacles::bounding_disc_geom_ids). The robot
+// would stop at that disc, short of what its sensors see and of where the contact drive stops (a
+// 2 m panel tilted 3 deg stopped it 1.1 m short), so the run is refused. Also a height field rising
+// into the ring's height, which the planar drive passes through. Nullopt in the contact drive.
+std::optional<std::string> GeomThePlanarDriveHoldsByItsBound(const Scene& scene);
 
 // The world's static upright geoms span more than an occupancy raster of `resolution_m` cells may
 // hold (kMaxOccupancyRasterCells), naming the geom that reaches furthest from the robot: the raster
