@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "apps/command.h"
+#include "apps/seed_flag.h"
 #include "eval/protocol.h"
 #include "msgs/shortest_number.h"
 #include "render/video_recorder.h"
@@ -107,8 +108,8 @@ Command AddRunCommand(CLI::App& app) {
       "--force\n"
       "  plywood run experiments/default.yaml --set duration_s=20 --video default.mp4");
   return {cli, [flags, seed] {
-            std::vector<std::string> overrides = flags->overrides;
-            if (seed->count() > 0) overrides.push_back("seed=" + flags->seed);
+            const std::vector<std::string> overrides =
+                WithSeedFlag(flags->overrides, *seed, flags->seed, "run");
             const sim::ExperimentConfig config =
                 sim::LoadExperimentConfig(flags->experiment, overrides);
             const std::filesystem::path out_dir =

@@ -2645,6 +2645,55 @@ TEST_F(ReliabilityTest, ACalibrationWithNoEstimatorToCalibrateIsRefused) {
             1.01);
 }
 
+// s62: options read only when another turns them on: with mixed_pixels or edge_echoes off (their
+// default), `--set sensors.laser.mixed_pixel_probability=0.9` or
+// `sensors.sonar.edge_echo_range_m=1` ran without a word, the value in config.yaml and in no
+// reading. Their defaults, which config.yaml writes for every laser and sonar, still run, and the
+// switch on honours them.
+TEST_F(ReliabilityTest, OptionsOfAFeatureThatIsOffAreRefused) {
+  const std::string laser = HallExperiment(0.0, 0.0, "", "{laser: {}}");
+  ExpectRefused(laser, "--set sensors.laser.mixed_pixel_probability=0.9",
+                {"experiment.yaml: sensors.laser.mixed_pixel_probability: 0.9 is read only with "
+                 "mixed_pixels: true"});
+  ExpectRefused(
+      laser, "--set sensors.laser.mixed_pixel_min_jump_m=0.3",
+      {"sensors.laser.mixed_pixel_min_jump_m: 0.3", "leave mixed_pixel_min_jump_m at 0.1"});
+  ExpectRefused(HallExperiment(0.0, 0.0, "", "{sonar: {edge_echo_range_m: 1}}"), "",
+                {"experiment.yaml: sensors.sonar.edge_echo_range_m: 1 is read only with "
+                 "edge_echoes: true"});
+  for (const std::string args :
+       {"--set sensors.laser.mixed_pixel_probability=0.5",
+        "--set sensors.laser.mixed_pixels=true --set sensors.laser.mixed_pixel_min_jump_m=0.3"}) {
+    SCOPED_TRACE(args);
+    const CliResult r = Run(laser, args);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+  }
+  const CliResult edges =
+      Run(HallExperiment(0.0, 0.0, "", "{sonar: {edge_echoes: true, edge_echo_range_m: 1}}"));
+  EXPECT_EQ(edges.exit_code, 0) << edges.err;
+}
+
+// s62: `--seed N` is `--set seed=N`, applied after every --set: beside a --set of the seed it won
+// whatever the order, the other value dropped without a word (config.yaml `seed: 3` for both
+// `--seed 3 --set seed=4` and `--set seed=4 --seed 3`).
+TEST_F(ReliabilityTest, ASeedGivenByBothSeedAndSetIsRefused) {
+  const std::string yaml = HallExperiment(0.0, 0.0);
+  for (const std::string args : {"--seed 3 --set seed=4", "--set seed=4 --seed 3"}) {
+    SCOPED_TRACE(args);
+    ExpectRefused(yaml, args, {"plywood: run: --seed 3 and --set seed=4 both give the seed"});
+  }
+  for (const auto& [args, seed] :
+       {std::pair{"--seed 3", "seed: 3\n"}, std::pair{"--set seed=4 --set seed=5", "seed: 5\n"}}) {
+    SCOPED_TRACE(args);
+    const fs::path dir = MakeTempDir("reliability_seed_given_once");
+    const fs::path file = WriteFile(dir / "experiment.yaml", yaml);
+    const CliResult r = RunPlywood(
+        "run " + file.string() + " --quiet --out " + (dir / "out").string() + " " + args, dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(Slurp(dir / "out" / "config.yaml").find(seed), std::string::npos);
+  }
+}
+
 // s60: the modal line fit (seed 003's segmentation, split_and_merge's `fit: modal`) holds 180 /
 // bin_deg bins per segment: bin_deg 1e-6 ran for minutes at 720 MB, 1e-7 crashed after 7 GB, and
 // 1e-9 overflowed the count to one bin, a mean of every pair's direction, exit 0.
