@@ -2694,6 +2694,22 @@ TEST_F(ReliabilityTest, ASeedGivenByBothSeedAndSetIsRefused) {
   }
 }
 
+// s62: yaml-cpp reads text after a value's closing quote or bracket as a second document, and
+// --set kept the first: `name="x" extra` ran as name x, `controller.waypoints=[[..]] [[..]]` with
+// the first list alone, exit 0. A comment after the value still reads as one.
+TEST_F(ReliabilityTest, TextAfterASetValuesEndIsRefused) {
+  const std::string yaml = HallExperiment(0.0, 0.0);
+  for (const std::string args :
+       {"--set 'name=\"x\" extra'", "--set \"name='x'y\"",
+        "--set controller.type=waypoints --set 'controller.waypoints=[[1, 0]] [[1, 1]]'"}) {
+    SCOPED_TRACE(args);
+    ExpectRefused(yaml, args,
+                  {"--set ", "value is not valid YAML: text follows the end of its value"});
+  }
+  const CliResult r = Run(yaml, "--set 'name=\"x\" # a comment'");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
 // s60: the modal line fit (seed 003's segmentation, split_and_merge's `fit: modal`) holds 180 /
 // bin_deg bins per segment: bin_deg 1e-6 ran for minutes at 720 MB, 1e-7 crashed after 7 GB, and
 // 1e-9 overflowed the count to one bin, a mean of every pair's direction, exit 0.
