@@ -11,6 +11,7 @@
 #include "apps/command.h"
 #include "apps/seed_flag.h"
 #include "eval/protocol.h"
+#include "eval/score/rerun_world_check.h"
 #include "msgs/shortest_number.h"
 #include "render/video_recorder.h"
 #include "sim/config/experiment_config.h"
@@ -112,6 +113,7 @@ Command AddRunCommand(CLI::App& app) {
                 WithSeedFlag(flags->overrides, *seed, flags->seed, "run");
             const sim::ExperimentConfig config =
                 sim::LoadExperimentConfig(flags->experiment, overrides);
+            eval::RequireWorldOfARerunUnchanged(flags->experiment, overrides);
             const std::filesystem::path out_dir =
                 flags->out.empty() ? "runs/" + config.name + "-seed" + std::to_string(config.seed)
                                    : flags->out;

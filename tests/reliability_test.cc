@@ -2710,6 +2710,40 @@ TEST_F(ReliabilityTest, TextAfterASetValuesEndIsRefused) {
   EXPECT_EQ(r.exit_code, 0) << r.err;
 }
 
+// s62: `plywood run RUN/config.yaml` repeats the run exactly (docs/run_outputs.md); after the
+// world file it names was edited (the east wall moved in) it ran another run, exit 0, walls.csv
+// and the snapshot different. Now refused, naming the wall, unless --set world= asks for it.
+TEST_F(ReliabilityTest, ARerunOfAConfigYamlWhoseWorldChangedIsRefused) {
+  const fs::path dir = MakeTempDir("reliability_rerun_world");
+  const fs::path world = dir / "hall.xml";
+  std::string hall = Slurp(testing::SourceRoot() / "worlds" / "hall.xml");
+  WriteFile(world, hall);
+  const std::string yaml = "duration_s: 0.5\nworld: " + world.string() +
+                           "\nsensors: {laser: {}}\noutput: {snapshot: false}\n";
+  const fs::path file = WriteFile(dir / "experiment.yaml", yaml);
+  const auto run = [&](const fs::path& experiment, const std::string& out,
+                       const std::string& extra = "") {
+    return RunPlywood(
+        "run " + experiment.string() + " --quiet --out " + (dir / out).string() + " " + extra, dir);
+  };
+  ASSERT_EQ(run(file, "first").exit_code, 0);
+  const fs::path config = dir / "first" / "config.yaml";
+  const CliResult again = run(config, "again");
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(Slurp(dir / "again" / "trajectory.csv"), Slurp(dir / "first" / "trajectory.csv"));
+
+  const std::string east = "pos=\"4.009 0 0.5\"";
+  ASSERT_NE(hall.find(east), std::string::npos);
+  hall.replace(hall.find(east), east.size(), "pos=\"3.5 0 0.5\"");
+  WriteFile(world, hall);
+  const CliResult edited = run(config, "edited", "--seed 2");
+  ExpectOneLine(edited, {config.string() + ": world: " + world.string() + " changed since the run",
+                         "--set world="});
+  EXPECT_FALSE(fs::exists(dir / "edited"));
+  const CliResult asked = run(config, "asked", "--set world=" + world.string());
+  EXPECT_EQ(asked.exit_code, 0) << asked.err;
+}
+
 // s60: the modal line fit (seed 003's segmentation, split_and_merge's `fit: modal`) holds 180 /
 // bin_deg bins per segment: bin_deg 1e-6 ran for minutes at 720 MB, 1e-7 crashed after 7 GB, and
 // 1e-9 overflowed the count to one bin, a mean of every pair's direction, exit 0.
