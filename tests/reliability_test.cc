@@ -2744,6 +2744,28 @@ TEST_F(ReliabilityTest, ARerunOfAConfigYamlWhoseWorldChangedIsRefused) {
   EXPECT_EQ(asked.exit_code, 0) << asked.err;
 }
 
+// s62: UMBmark's squares are copies of the experiment whose protocol options were emptied by
+// assigning to a shared YAML handle: config.yaml recorded `umbmark: ~`, and its rerun drove 5
+// squares each way (the default) and wrote their runs where the run had 1 and none.
+TEST_F(ReliabilityTest, AnUmbmarkRunsConfigYamlKeepsItsOptionsAndRepeatsTheRun) {
+  const fs::path dir = MakeTempDir("reliability_umbmark_rerun");
+  const std::string first = (dir / "first").string();
+  const CliResult r = RunPlywood(
+      "run " + (testing::SourceRoot() / "experiments" / "umbmark.yaml").string() +
+          " --quiet --set umbmark.runs_per_direction=1 --set umbmark.write_runs=false --out " +
+          first,
+      dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string config = Slurp(dir / "first" / "config.yaml");
+  EXPECT_NE(config.find("runs_per_direction: 1"), std::string::npos) << config;
+  EXPECT_NE(config.find("write_runs: false"), std::string::npos) << config;
+  const CliResult again =
+      RunPlywood("run " + first + "/config.yaml --quiet --out " + (dir / "again").string(), dir);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(Slurp(dir / "again" / "metrics.json"), Slurp(dir / "first" / "metrics.json"));
+  EXPECT_FALSE(fs::exists(dir / "again" / "before"));
+}
+
 // s60: the modal line fit (seed 003's segmentation, split_and_merge's `fit: modal`) holds 180 /
 // bin_deg bins per segment: bin_deg 1e-6 ran for minutes at 720 MB, 1e-7 crashed after 7 GB, and
 // 1e-9 overflowed the count to one bin, a mean of every pair's direction, exit 0.

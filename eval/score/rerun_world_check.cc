@@ -23,6 +23,8 @@ void RequireWorldOfARerunUnchanged(const std::filesystem::path& experiment,
     return;
   }
   const sim::ExperimentConfig config = sim::LoadExperimentConfig(experiment, {});
+  // A protocol's walls.csv holds the walls of each of its rooms (seed000_rooms), or none.
+  if (config.protocol != "single") return;
   const sim::ExperimentRunner runner(config);  // the scene as the run built it; nothing runs
   RequireWorldAsTheRunSawIt(runner.scene(), config, ReadWallsCsv(dir / "walls.csv"), experiment,
                             "running it would not repeat the run: restore the world, or give "
