@@ -2766,6 +2766,24 @@ TEST_F(ReliabilityTest, AnUmbmarkRunsConfigYamlKeepsItsOptionsAndRepeatsTheRun) 
   EXPECT_FALSE(fs::exists(dir / "again" / "before"));
 }
 
+// s62: a PLYWOOD_ROOT that is no folder read as "/missing/models/p3dx.xml: no such robot MJCF
+// file" or "world: no such file: worlds/hall.xml (looked in ... and /missing)", the variable
+// unnamed.
+TEST_F(ReliabilityTest, APlywoodRootThatIsNoFolderIsNamed) {
+  const fs::path missing = MakeTempDir("reliability_plywood_root") / "missing";
+  const char* old = std::getenv("PLYWOOD_ROOT");
+  const std::string saved = old ? old : "";
+  ASSERT_EQ(setenv("PLYWOOD_ROOT", missing.c_str(), 1), 0);
+  const CliResult r = Run(HallExperiment(0.0, 0.0));
+  if (old) {
+    setenv("PLYWOOD_ROOT", saved.c_str(), 1);
+  } else {
+    unsetenv("PLYWOOD_ROOT");
+  }
+  ExpectOneLine(r, {"plywood: PLYWOOD_ROOT: " + missing.string() + ": No such file or directory",
+                    "point it at a copy of the repository, or unset it"});
+}
+
 // s60: the modal line fit (seed 003's segmentation, split_and_merge's `fit: modal`) holds 180 /
 // bin_deg bins per segment: bin_deg 1e-6 ran for minutes at 720 MB, 1e-7 crashed after 7 GB, and
 // 1e-9 overflowed the count to one bin, a mean of every pair's direction, exit 0.
