@@ -9,7 +9,9 @@
 #include <vector>
 
 #include "apps/command.h"
+#include "apps/seed_flag.h"
 #include "eval/protocol.h"
+#include "eval/score/rerun_world_check.h"
 #include "msgs/shortest_number.h"
 #include "render/video_recorder.h"
 #include "sim/config/experiment_config.h"
@@ -107,10 +109,11 @@ Command AddRunCommand(CLI::App& app) {
       "--force\n"
       "  plywood run experiments/default.yaml --set duration_s=20 --video default.mp4");
   return {cli, [flags, seed] {
-            std::vector<std::string> overrides = flags->overrides;
-            if (seed->count() > 0) overrides.push_back("seed=" + flags->seed);
+            const std::vector<std::string> overrides =
+                WithSeedFlag(flags->overrides, *seed, flags->seed, "run");
             const sim::ExperimentConfig config =
                 sim::LoadExperimentConfig(flags->experiment, overrides);
+            eval::RequireWorldOfARerunUnchanged(flags->experiment, overrides);
             const std::filesystem::path out_dir =
                 flags->out.empty() ? "runs/" + config.name + "-seed" + std::to_string(config.seed)
                                    : flags->out;

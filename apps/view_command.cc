@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "apps/command.h"
+#include "apps/seed_flag.h"
 #include "eval/protocol.h"
 #include "msgs/shortest_number.h"
 #include "plywood_paths.h"
@@ -332,8 +333,8 @@ Command AddViewCommand(CLI::App& app) {
             WindowOf(*flags);
             if (!replay && !flags->bench) SpeedOf(flags->speed);
             if (replay) return Replay(*flags);
-            std::vector<std::string> overrides = flags->overrides;
-            if (seed->count() > 0) overrides.push_back("seed=" + flags->seed);
+            const std::vector<std::string> overrides =
+                WithSeedFlag(flags->overrides, *seed, flags->seed, "view");
             const sim::ExperimentConfig config =
                 sim::LoadExperimentConfig(flags->target, overrides);
             // The bench, as a live run, shows one run: `view umbmark.yaml --bench` benched its

@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -427,6 +429,73 @@ TEST(CliTrainTest, AnOutThatCannotBeWrittenIsRefusedBeforeTraining) {
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_TRUE(IsOneLine(r.err)) << r.err;
   EXPECT_EQ(r.err.rfind("plywood: train: --out: /sys/plywood_n.txt: cannot write there: ", 0), 0u)
+      << r.err;
+  EXPECT_EQ(r.out.find("data:"), std::string::npos) << "training started: " << r.out;
+}
+
+// s62: TMPDIR as the shell gives it for the one command, restored however the test ends.
+class ScopedTmpdir {
+ public:
+  explicit ScopedTmpdir(const std::string& value) {
+    if (const char* old = std::getenv("TMPDIR")) old_ = old;
+    setenv("TMPDIR", value.c_str(), 1);
+  }
+  ~ScopedTmpdir() {
+    if (old_) {
+      setenv("TMPDIR", old_->c_str(), 1);
+    } else {
+      unsetenv("TMPDIR");
+    }
+  }
+  ScopedTmpdir(const ScopedTmpdir&) = delete;
+  ScopedTmpdir& operator=(const ScopedTmpdir&) = delete;
+
+ private:
+  std::optional<std::string> old_;
+};
+
+// s62: train and bench write scratch files under $TMPDIR. A missing one read "plywood: No such
+// file or directory" (naming neither the variable nor the folder), one plywood may not write in
+// (/sys) exit 1, and an empty TMPDIR, which POSIX reads as unset, was taken as a folder named "".
+TEST(CliTrainTest, AScratchFolderThatCannotBeUsedIsNamedAsTmpdirBeforeAnyWork) {
+  const fs::path dir = MakeTempDir("cli_train_tmpdir");
+  const fs::path missing = dir / "missing";
+  const fs::path file = WriteFile(dir / "a_file", "x\n");
+  const std::string small = " --rooms 2 --test-rooms 1 --poses 2 --epochs 1 --quiet";
+  for (const fs::path& tmpdir : {missing, file}) {
+    SCOPED_TRACE(tmpdir);
+    const ScopedTmpdir scoped(tmpdir.string());
+    for (const std::string& command :
+         {"train sonar-net" + small + " --out " + (dir / "w.txt").string(),
+          std::string("bench --seconds 0.5 --repeats 1 --min-wall 0")}) {
+      SCOPED_TRACE(command);
+      const CliResult r = RunPlywood(command, dir);
+      EXPECT_EQ(r.exit_code, 2) << r.err;
+      EXPECT_TRUE(IsOneLine(r.err)) << r.err;
+      EXPECT_EQ(r.err.rfind("plywood: TMPDIR: " + tmpdir.string() + ": ", 0), 0u) << r.err;
+      EXPECT_TRUE(r.out.empty()) << "work started: " << r.out;
+    }
+  }
+  const ScopedTmpdir empty("");
+  const CliResult r =
+      RunPlywood("train sonar-net" + small + " --out " + (dir / "w.txt").string(), dir);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "w.txt"));
+}
+
+// s62: the default --out, runs/sonar_net/sonar_net.txt, from a current folder no folder can be
+// made in read "plywood: runs/sonar_net: Operation not permitted", exit 1, naming no flag.
+TEST(CliTrainTest, TheDefaultOutWhereNoFolderCanBeMadeIsRefusedBeforeTraining) {
+  if (!fs::is_directory("/sys/kernel")) GTEST_SKIP() << "no /sys";
+  const fs::path dir = MakeTempDir("cli_train_unwritable_cwd");
+  const CliResult r =
+      RunPlywood("train sonar-net --rooms 1 --test-rooms 1 --poses 2 --epochs 1", dir, "/sys");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_TRUE(IsOneLine(r.err)) << r.err;
+  EXPECT_EQ(r.err.rfind("plywood: train: --out: runs/sonar_net/sonar_net.txt: cannot create its "
+                        "folder runs/sonar_net: ",
+                        0),
+            0u)
       << r.err;
   EXPECT_EQ(r.out.find("data:"), std::string::npos) << "training started: " << r.out;
 }

@@ -2762,6 +2762,145 @@ TEST_F(ReliabilityTest, ACalibrationWithNoEstimatorToCalibrateIsRefused) {
             1.01);
 }
 
+// s62: options read only when another turns them on: with mixed_pixels or edge_echoes off (their
+// default), `--set sensors.laser.mixed_pixel_probability=0.9` or
+// `sensors.sonar.edge_echo_range_m=1` ran without a word, the value in config.yaml and in no
+// reading. Their defaults, which config.yaml writes for every laser and sonar, still run, and the
+// switch on honours them.
+TEST_F(ReliabilityTest, OptionsOfAFeatureThatIsOffAreRefused) {
+  const std::string laser = HallExperiment(0.0, 0.0, "", "{laser: {}}");
+  ExpectRefused(laser, "--set sensors.laser.mixed_pixel_probability=0.9",
+                {"experiment.yaml: sensors.laser.mixed_pixel_probability: 0.9 is read only with "
+                 "mixed_pixels: true"});
+  ExpectRefused(
+      laser, "--set sensors.laser.mixed_pixel_min_jump_m=0.3",
+      {"sensors.laser.mixed_pixel_min_jump_m: 0.3", "leave mixed_pixel_min_jump_m at 0.1"});
+  ExpectRefused(HallExperiment(0.0, 0.0, "", "{sonar: {edge_echo_range_m: 1}}"), "",
+                {"experiment.yaml: sensors.sonar.edge_echo_range_m: 1 is read only with "
+                 "edge_echoes: true"});
+  for (const std::string args :
+       {"--set sensors.laser.mixed_pixel_probability=0.5",
+        "--set sensors.laser.mixed_pixels=true --set sensors.laser.mixed_pixel_min_jump_m=0.3"}) {
+    SCOPED_TRACE(args);
+    const CliResult r = Run(laser, args);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+  }
+  const CliResult edges =
+      Run(HallExperiment(0.0, 0.0, "", "{sonar: {edge_echoes: true, edge_echo_range_m: 1}}"));
+  EXPECT_EQ(edges.exit_code, 0) << edges.err;
+}
+
+// s62: `--seed N` is `--set seed=N`, applied after every --set: beside a --set of the seed it won
+// whatever the order, the other value dropped without a word (config.yaml `seed: 3` for both
+// `--seed 3 --set seed=4` and `--set seed=4 --seed 3`).
+TEST_F(ReliabilityTest, ASeedGivenByBothSeedAndSetIsRefused) {
+  const std::string yaml = HallExperiment(0.0, 0.0);
+  for (const std::string args : {"--seed 3 --set seed=4", "--set seed=4 --seed 3"}) {
+    SCOPED_TRACE(args);
+    ExpectRefused(yaml, args, {"plywood: run: --seed 3 and --set seed=4 both give the seed"});
+  }
+  for (const auto& [args, seed] :
+       {std::pair{"--seed 3", "seed: 3\n"}, std::pair{"--set seed=4 --set seed=5", "seed: 5\n"}}) {
+    SCOPED_TRACE(args);
+    const fs::path dir = MakeTempDir("reliability_seed_given_once");
+    const fs::path file = WriteFile(dir / "experiment.yaml", yaml);
+    const CliResult r = RunPlywood(
+        "run " + file.string() + " --quiet --out " + (dir / "out").string() + " " + args, dir);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(Slurp(dir / "out" / "config.yaml").find(seed), std::string::npos);
+  }
+}
+
+// s62: yaml-cpp reads text after a value's closing quote or bracket as a second document, and
+// --set kept the first: `name="x" extra` ran as name x, `controller.waypoints=[[..]] [[..]]` with
+// the first list alone, exit 0. A comment after the value still reads as one.
+TEST_F(ReliabilityTest, TextAfterASetValuesEndIsRefused) {
+  const std::string yaml = HallExperiment(0.0, 0.0);
+  for (const std::string args :
+       {"--set 'name=\"x\" extra'", "--set \"name='x'y\"",
+        "--set controller.type=waypoints --set 'controller.waypoints=[[1, 0]] [[1, 1]]'"}) {
+    SCOPED_TRACE(args);
+    ExpectRefused(yaml, args,
+                  {"--set ", "value is not valid YAML: text follows the end of its value"});
+  }
+  const CliResult r = Run(yaml, "--set 'name=\"x\" # a comment'");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+// s62: `plywood run RUN/config.yaml` repeats the run exactly (docs/run_outputs.md); after the
+// world file it names was edited (the east wall moved in) it ran another run, exit 0, walls.csv
+// and the snapshot different. Now refused, naming the wall, unless --set world= asks for it.
+TEST_F(ReliabilityTest, ARerunOfAConfigYamlWhoseWorldChangedIsRefused) {
+  const fs::path dir = MakeTempDir("reliability_rerun_world");
+  const fs::path world = dir / "hall.xml";
+  std::string hall = Slurp(testing::SourceRoot() / "worlds" / "hall.xml");
+  WriteFile(world, hall);
+  const std::string yaml = "duration_s: 0.5\nworld: " + world.string() +
+                           "\nsensors: {laser: {}}\noutput: {snapshot: false}\n";
+  const fs::path file = WriteFile(dir / "experiment.yaml", yaml);
+  const auto run = [&](const fs::path& experiment, const std::string& out,
+                       const std::string& extra = "") {
+    return RunPlywood(
+        "run " + experiment.string() + " --quiet --out " + (dir / out).string() + " " + extra, dir);
+  };
+  ASSERT_EQ(run(file, "first").exit_code, 0);
+  const fs::path config = dir / "first" / "config.yaml";
+  const CliResult again = run(config, "again");
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(Slurp(dir / "again" / "trajectory.csv"), Slurp(dir / "first" / "trajectory.csv"));
+
+  const std::string east = "pos=\"4.009 0 0.5\"";
+  ASSERT_NE(hall.find(east), std::string::npos);
+  hall.replace(hall.find(east), east.size(), "pos=\"3.5 0 0.5\"");
+  WriteFile(world, hall);
+  const CliResult edited = run(config, "edited", "--seed 2");
+  ExpectOneLine(edited, {config.string() + ": world: " + world.string() + " changed since the run",
+                         "--set world="});
+  EXPECT_FALSE(fs::exists(dir / "edited"));
+  const CliResult asked = run(config, "asked", "--set world=" + world.string());
+  EXPECT_EQ(asked.exit_code, 0) << asked.err;
+}
+
+// s62: UMBmark's squares are copies of the experiment whose protocol options were emptied by
+// assigning to a shared YAML handle: config.yaml recorded `umbmark: ~`, and its rerun drove 5
+// squares each way (the default) and wrote their runs where the run had 1 and none.
+TEST_F(ReliabilityTest, AnUmbmarkRunsConfigYamlKeepsItsOptionsAndRepeatsTheRun) {
+  const fs::path dir = MakeTempDir("reliability_umbmark_rerun");
+  const std::string first = (dir / "first").string();
+  const CliResult r = RunPlywood(
+      "run " + (testing::SourceRoot() / "experiments" / "umbmark.yaml").string() +
+          " --quiet --set umbmark.runs_per_direction=1 --set umbmark.write_runs=false --out " +
+          first,
+      dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string config = Slurp(dir / "first" / "config.yaml");
+  EXPECT_NE(config.find("runs_per_direction: 1"), std::string::npos) << config;
+  EXPECT_NE(config.find("write_runs: false"), std::string::npos) << config;
+  const CliResult again =
+      RunPlywood("run " + first + "/config.yaml --quiet --out " + (dir / "again").string(), dir);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(Slurp(dir / "again" / "metrics.json"), Slurp(dir / "first" / "metrics.json"));
+  EXPECT_FALSE(fs::exists(dir / "again" / "before"));
+}
+
+// s62: a PLYWOOD_ROOT that is no folder read as "/missing/models/p3dx.xml: no such robot MJCF
+// file" or "world: no such file: worlds/hall.xml (looked in ... and /missing)", the variable
+// unnamed.
+TEST_F(ReliabilityTest, APlywoodRootThatIsNoFolderIsNamed) {
+  const fs::path missing = MakeTempDir("reliability_plywood_root") / "missing";
+  const char* old = std::getenv("PLYWOOD_ROOT");
+  const std::string saved = old ? old : "";
+  ASSERT_EQ(setenv("PLYWOOD_ROOT", missing.c_str(), 1), 0);
+  const CliResult r = Run(HallExperiment(0.0, 0.0));
+  if (old) {
+    setenv("PLYWOOD_ROOT", saved.c_str(), 1);
+  } else {
+    unsetenv("PLYWOOD_ROOT");
+  }
+  ExpectOneLine(r, {"plywood: PLYWOOD_ROOT: " + missing.string() + ": No such file or directory",
+                    "point it at a copy of the repository, or unset it"});
+}
+
 // s60: the modal line fit (seed 003's segmentation, split_and_merge's `fit: modal`) holds 180 /
 // bin_deg bins per segment: bin_deg 1e-6 ran for minutes at 720 MB, 1e-7 crashed after 7 GB, and
 // 1e-9 overflowed the count to one bin, a mean of every pair's direction, exit 0.

@@ -13,6 +13,7 @@
 #include "sim/config/yaml_text_value.h"
 #include "sim/runner/file_writer.h"
 #include "sim/runner/format_number.h"
+#include "sim/runner/scratch_folder.h"
 #include "sim/runner/spawn_refused.h"
 
 namespace plywood::eval {
@@ -95,6 +96,7 @@ std::vector<WorldSpeed> MeasureWorldsInTurn(
 BenchFigures RunBench(const BenchOptions& options) {
   if (options.repeats < 1) throw std::invalid_argument("bench: --repeats: must be >= 1");
   if (!(options.min_wall_s >= 0.0)) throw std::invalid_argument("bench: --min-wall: must be >= 0");
+  const std::filesystem::path scratch = sim::ScratchFolderRoot();  // before any measurement
   BenchFigures figures;
   const sim::ExperimentConfig config = BenchConfig(options.world, options.seconds);
   figures.world = config.world_path;
@@ -113,8 +115,7 @@ BenchFigures RunBench(const BenchOptions& options) {
   }
 
   const std::filesystem::path worlds = sim::DataRoot() / "worlds";
-  const std::filesystem::path tiled_path =
-      std::filesystem::temp_directory_path() / "plywood-bench-office-3x3.xml";
+  const std::filesystem::path tiled_path = scratch / "plywood-bench-office-3x3.xml";
   {
     sim::FileWriter out(tiled_path);
     out.out() << TiledWorldMjcf(worlds / "office.xml", 3, 3, 17.0, 11.0);
@@ -138,8 +139,7 @@ BenchFigures RunBench(const BenchOptions& options) {
 
   const sim::ExperimentConfig default_run =
       sim::LoadExperimentConfig(sim::DataRoot() / "experiments" / "default.yaml", {});
-  const std::filesystem::path out_dir =
-      std::filesystem::temp_directory_path() / "plywood-bench-default-run";
+  const std::filesystem::path out_dir = scratch / "plywood-bench-default-run";
   figures.default_run_wall_s = std::numeric_limits<double>::infinity();
   figures.default_run_simulation_wall_s = std::numeric_limits<double>::infinity();
   // The fastest of at least `repeats` pairs, and of as many more as it takes for each of the two

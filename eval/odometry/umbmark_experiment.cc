@@ -197,7 +197,10 @@ UmbmarkOutcome RunUmbmark(const sim::ExperimentConfig& config, const UmbmarkOpti
       for (int i = 1; i <= options.runs_per_direction; ++i) {
         sim::ExperimentConfig run = config;
         run.protocol = "single";
-        run.protocol_options = YAML::Node();
+        // reset(), not `= YAML::Node()`: the copy's node is the experiment's (yaml-cpp nodes are
+        // handles), and assigning to it emptied the experiment's umbmark: options, so config.yaml
+        // recorded `umbmark: ~` and a rerun of it took the defaults (s62).
+        run.protocol_options.reset();
         const std::string name = std::string(robot::ToString(direction)) + "_" + std::to_string(i);
         // Each square's noise from its own stream of the experiment's seed. seed + index made seed
         // 1's cw_2 the same run as seed 2's cw_1, so a sweep over seeds pooled copies. The

@@ -21,6 +21,7 @@
 #include "sim/raycast/mujoco_ray_caster.h"
 #include "sim/runner/file_writer.h"
 #include "sim/runner/format_number.h"
+#include "sim/runner/scratch_folder.h"
 #include "sim/runner/text_file.h"
 #include "sim/sensors/sonar_sensor.h"
 #include "sim/world/occupancy_raster.h"
@@ -152,8 +153,7 @@ void Generate(const RandomRoom& room, int poses, const sim::SonarOptions& sonar_
 class TemporaryFolder {
  public:
   TemporaryFolder()
-      : path_(std::filesystem::temp_directory_path() /
-              ("plywood-train-" + std::to_string(::getpid()))) {
+      : path_(sim::ScratchFolderRoot() / ("plywood-train-" + std::to_string(::getpid()))) {
     std::filesystem::create_directories(path_);
   }
   ~TemporaryFolder() {
@@ -269,8 +269,19 @@ SonarNetTrainingReport TrainSonarNet(
   SonarNetTrainingReport report;
   report.out = options.out;
   // Before the long part, so an unwritable place fails at once.
-  if (options.out.has_parent_path()) std::filesystem::create_directories(options.out.parent_path());
+  if (options.out.has_parent_path()) {
+    // The default --out, runs/sonar_net/, in a folder plywood may not write in (a read-only
+    // current folder) read "plywood: runs/sonar_net: Operation not permitted", exit 1.
+    std::error_code error;
+    std::filesystem::create_directories(options.out.parent_path(), error);
+    if (error) {
+      throw std::invalid_argument("train: --out: " + options.out.string() +
+                                  ": cannot create its folder " +
+                                  options.out.parent_path().string() + ": " + error.message());
+    }
+  }
   RequireWritablePlace(options.out);
+  sim::ScratchFolderRoot();  // the rooms' files go there: a bad TMPDIR is named before training
 
   std::mt19937_64 rng(train.seed);
   Dataset train_set, test_set;

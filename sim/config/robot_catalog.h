@@ -23,6 +23,7 @@ const RobotCatalogEntry& FindRobot(const std::string& name);
 
 // Folder with models/, worlds/ and experiments/ (the source tree the binary was built from, or
 // $PLYWOOD_ROOT when set, so an installed binary can point at a copy).
+// @throws std::invalid_argument naming PLYWOOD_ROOT when it is set to what is not a folder.
 std::filesystem::path DataRoot();
 
 }  // namespace plywood::sim

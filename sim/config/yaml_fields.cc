@@ -237,10 +237,22 @@ void ApplyOverride(YAML::Node root, const std::string& assignment, const std::st
   }
   const std::string path = assignment.substr(0, equals);
   YAML::Node value;
+  std::size_t documents = 0;
   try {
-    value = YAML::Load(assignment.substr(equals + 1));
+    const std::string text = assignment.substr(equals + 1);
+    value = YAML::Load(text);
+    documents = YAML::LoadAll(text).size();
   } catch (const YAML::Exception& e) {
     throw ConfigError(source, path, std::string("value is not valid YAML: ") + e.what());
+  }
+  // yaml-cpp reads text after a value's closing quote or bracket as a second document and Load
+  // keeps the first: `name="x" extra` set x, `controller.waypoints=[[1, 2]] [[3, 4]]` the first
+  // list, the rest dropped without a word (s62).
+  if (documents > 1) {
+    throw ConfigError(source, path,
+                      "value is not valid YAML: text follows the end of its value (a closing "
+                      "quote or bracket), which would be dropped: quote the whole value, or "
+                      "remove the rest");
   }
   RejectAliasExpansion(value, source);
   // getline yields no last empty key: `duration_s.=1` set duration_s without a word (s56).

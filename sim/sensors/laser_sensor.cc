@@ -3,7 +3,11 @@
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
+#include <tuple>
 
+#include "msgs/shortest_number.h"
 #include "sim/config/require_field.h"
 #include "sim/sensors/noise_draws.h"
 
@@ -47,6 +51,22 @@ void LaserOptions::Validate() const {
                "mixed_pixel_probability", "must be in [0, 1]", mixed_pixel_probability);
   RequireField(std::isfinite(rate_hz) && rate_hz > 0.0 && rate_hz <= 75.0, "rate_hz",
                "must be in (0, 75] (the LMS 200's fastest scan)", rate_hz);
+  // With mixed_pixels off the two are never read: `--set sensors.laser.mixed_pixel_probability=0.9`
+  // ran without mixed pixels and without a word (s62). Their defaults still pass, as config.yaml
+  // writes them for every laser.
+  const LaserOptions defaults;
+  for (const auto& [field, value, fallback] :
+       {std::tuple{"mixed_pixel_min_jump_m", mixed_pixel_min_jump_m,
+                   defaults.mixed_pixel_min_jump_m},
+        std::tuple{"mixed_pixel_probability", mixed_pixel_probability,
+                   defaults.mixed_pixel_probability}}) {
+    if (!mixed_pixels && value != fallback) {
+      throw std::invalid_argument(std::string(field) + ": " + msgs::ShortestNumber(value) +
+                                  " is read only with mixed_pixels: true (it is false, so the "
+                                  "value would change nothing): set mixed_pixels: true, or leave " +
+                                  field + " at " + msgs::ShortestNumber(fallback));
+    }
+  }
 }
 
 double LaserOptions::RangeResolutionM() const { return range_max_m > 32.0 ? 0.01 : 0.001; }

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "msgs/angle_units.h"
+#include "msgs/shortest_number.h"
 #include "sim/config/require_field.h"
 #include "sim/sensors/foot_in_beam.h"
 #include "sim/sensors/noise_draws.h"
@@ -46,6 +47,15 @@ void SonarOptions::Validate() const {
   RequireField(std::isfinite(edge_echo_range_m) && edge_echo_range_m > 0.0, "edge_echo_range_m",
                "must be > 0", edge_echo_range_m);
   RequireField(std::isfinite(rate_hz) && rate_hz > 0.0, "rate_hz", "must be > 0", rate_hz);
+  // Read only for edge echoes: another value with them off ran without a word (s62). The default
+  // still passes, as config.yaml writes it for every sonar.
+  if (!edge_echoes && edge_echo_range_m != SonarOptions{}.edge_echo_range_m) {
+    throw std::invalid_argument(
+        "edge_echo_range_m: " + msgs::ShortestNumber(edge_echo_range_m) +
+        " is read only with edge_echoes: true (it is false, so the value would change nothing): "
+        "set edge_echoes: true, or leave edge_echo_range_m at " +
+        msgs::ShortestNumber(SonarOptions{}.edge_echo_range_m));
+  }
 }
 
 std::vector<std::string> SonarSensor::DefaultSiteNames() { return NumberedSiteNames("sonar_", 16); }
