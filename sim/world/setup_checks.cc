@@ -85,6 +85,24 @@ std::string ShapeAndName(const mjModel* m, int geom) {
   return Shape(m, geom) + " " + GeomName(m, geom);
 }
 
+// "a box tilted 3 deg from upright", "an ellipsoid": the geom's shape with an article, and for a
+// box, cylinder or capsule its tilt from upright (a box on whichever axis is nearest vertical).
+std::string ShapeAndTilt(const Scene& scene, int geom) {
+  const mjModel* m = scene.model();
+  const int type = m->geom_type[geom];
+  const std::string shape = Shape(m, geom);
+  std::string what = (shape.front() == 'e' ? "an " : "a ") + shape;  // "an" for the one vowel
+  if (type == mjGEOM_BOX || type == mjGEOM_CYLINDER || type == mjGEOM_CAPSULE) {
+    const Eigen::Matrix3d R_WG = Eigen::Map<const Eigen::Matrix<mjtNum, 3, 3, Eigen::RowMajor>>(
+        scene.data()->geom_xmat + 9 * geom);
+    const int up = type == mjGEOM_BOX ? BoxAxisNearestVertical(R_WG) : 2;
+    const double tilt_deg = AxisTiltRad(R_WG, up) * 180.0 / std::numbers::pi;
+    what += " tilted " + msgs::ShortestNumber(std::round(tilt_deg * 100.0) / 100.0) +
+            " deg from upright";
+  }
+  return what;
+}
+
 }  // namespace
 
 bool IsOnTheRobot(const Scene& scene, int geom) {
@@ -102,18 +120,7 @@ std::optional<std::string> GeomTheGroundTruthCannotHold(const Scene& scene, doub
   const GroundTruthWalls walls = ExtractGroundTruthWalls(m, options);
   for (const int g : walls.unrepresented_geom_ids) {
     if (!IsStaticWorldGeom(scene, g)) continue;
-    const int type = m->geom_type[g];
-    const std::string shape = Shape(m, g);
-    std::string what = (shape.front() == 'e' ? "an " : "a ") + shape;  // "an" for the one vowel
-    if (type == mjGEOM_BOX || type == mjGEOM_CYLINDER || type == mjGEOM_CAPSULE) {
-      // Only tilted ones reach here: upright ones the truth holds (a box on any of its axes).
-      const Eigen::Matrix3d R_WG = Eigen::Map<const Eigen::Matrix<mjtNum, 3, 3, Eigen::RowMajor>>(
-          scene.data()->geom_xmat + 9 * g);
-      const int up = type == mjGEOM_BOX ? BoxAxisNearestVertical(R_WG) : 2;
-      const double tilt_deg = AxisTiltRad(R_WG, up) * 180.0 / std::numbers::pi;
-      what += " tilted " + msgs::ShortestNumber(std::round(tilt_deg * 100.0) / 100.0) +
-              " deg from upright";
-    }
+    const std::string what = ShapeAndTilt(scene, g);
     return "its " + GeomName(m, g) + " is " + what +
            " within reach of z = " + msgs::MillimetreNumber(height_m) +
            " m, where this run is scored: the 2-D ground truth (walls.csv, the line and occupancy "
@@ -134,17 +141,7 @@ std::optional<std::string> GeomThePlanarDriveHoldsByItsBound(const Scene& scene)
   }
   if (const std::vector<int> discs = scene.PlanarBoundingDiscGeoms(); !discs.empty()) {
     const int g = discs.front();
-    const int type = m->geom_type[g];
-    const std::string shape = Shape(m, g);
-    std::string what = (shape.front() == 'e' ? "an " : "a ") + shape;
-    if (type == mjGEOM_BOX || type == mjGEOM_CYLINDER || type == mjGEOM_CAPSULE) {
-      const Eigen::Matrix3d R_WG = Eigen::Map<const Eigen::Matrix<mjtNum, 3, 3, Eigen::RowMajor>>(
-          scene.data()->geom_xmat + 9 * g);
-      const int up = type == mjGEOM_BOX ? BoxAxisNearestVertical(R_WG) : 2;
-      const double tilt_deg = AxisTiltRad(R_WG, up) * 180.0 / std::numbers::pi;
-      what += " tilted " + msgs::ShortestNumber(std::round(tilt_deg * 100.0) / 100.0) +
-              " deg from upright";
-    }
+    const std::string what = ShapeAndTilt(scene, g);
     return "its " + GeomName(m, g) + " is " + what +
            " within the bumper ring's height: physics.drive: planar holds only upright boxes (on "
            "any of their axes), cylinders, capsules and spheres, and would stop the robot at this "
