@@ -277,6 +277,33 @@ TEST_F(ReliabilityTest, SonarExplorerLengthsThatOverflowAreRefused) {
                 {"controller.grid_resolution_m", "cells wide"});
 }
 
+// audit44 (s62): lambda decayed the visit counts once per replan_period_s elapsed, a pass over the
+// grid each: at 1e-9 s that was 1e8 passes per control step, and at 1e-17 s, below the clock's
+// last digit at t = 1 s, the decay's own clock never moved: both runs hung for ever.
+TEST_F(ReliabilityTest, AReplanPeriodFarBelowTheControlStepRunsToItsEnd) {
+  std::string yaml = ExplorerExperiment(-0.8, -0.5);
+  yaml.replace(yaml.find("sonar_model: classical"), 22,
+               "sonar_model: classical, perimeter_max_s: 0.5");
+  yaml.replace(yaml.find("duration_s: 0.5"), 15, "duration_s: 3");
+  for (const std::string period : {"1e-9", "1e-17"}) {
+    const CliResult run = Run(yaml, "--set controller.replan_period_s=" + period);
+    EXPECT_EQ(run.exit_code, 0) << period << ": " << run.err;
+    EXPECT_EQ(run.err, "") << period;
+  }
+}
+
+// audit44 (s62): a wall distance the perimeter follower's 2 m wall range cannot keep was refused
+// as "controller: max_wall_range_m: must exceed distance_m, got 2", a key this controller has not.
+TEST_F(ReliabilityTest, AWallDistanceBeyondTheFollowersRangeNamesTheExplorersField) {
+  const std::string yaml = ExplorerExperiment(-0.8, -0.5);
+  ExpectRefused(yaml, "--set controller.wall_distance_m=1e300",
+                {"experiment.yaml: controller.wall_distance_m: must be below 2 m, the range beyond "
+                 "which the perimeter follower takes nothing for the wall, got 1e+300\n"});
+  ExpectRefused(yaml, "--set controller.wall_distance_m=2",
+                {"controller.wall_distance_m: must be below 2 m", "got 2\n"});
+  EXPECT_EQ(Run(yaml, "--set controller.wall_distance_m=1.99").exit_code, 0);
+}
+
 TEST_F(ReliabilityTest, RunsOfMoreThanAHundredMillionStepsAreRefused) {
   ExpectRefused(HallExperiment(0.0, 0.0), "--set duration_s=9.3e16", {"duration_s", "steps"});
   ExpectRefused(HallExperiment(0.0, 0.0), "--set physics.timestep_s=1e-9",

@@ -49,6 +49,9 @@ Eigen::Vector2d Position(const msgs::Pose2D& X) { return {X.x_m, X.y_m}; }
 
 // A heading error below this counts as aligned: DriveTo drives on from here.
 constexpr double kAlignedRad = 0.2;
+// Decay passes over the visit counts one replan makes one period at a time; the periods past
+// this many are decayed at once, by lambda^n.
+constexpr int kMaxDecayPasses = 64;
 
 // Whether two of the map's obstacle rectangles are one obstacle: they overlap, or lie less than
 // `same_m` apart (the map is refitted at every replan, and joins or grows its rectangles).
@@ -105,6 +108,14 @@ void SonarExplorerOptions::Validate() const {
   RequirePositive("log_odds_limit", log_odds_limit);
   map.Validate();
   RequirePositive("wall_distance_m", wall_distance_m);
+  // The perimeter follower takes side points beyond its max_wall_range_m for no wall; nearer than
+  // the distance it keeps, it refused itself naming that field, which is no key of this controller.
+  if (const double reach_m = robot::WallFollowingOptions{}.max_wall_range_m;
+      !(wall_distance_m < reach_m))
+    throw std::invalid_argument(
+        "wall_distance_m: must be below " + msgs::ShortestNumber(reach_m) +
+        " m, the range beyond which the perimeter follower takes nothing for the wall, got " +
+        msgs::ShortestNumber(wall_distance_m));
   RequirePositive("perimeter_turn_rad", perimeter_turn_rad);
   RequirePositive("perimeter_max_s", perimeter_max_s);
   RequirePositive("perimeter_stuck_turn_rad", perimeter_stuck_turn_rad);
@@ -272,7 +283,18 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
   const Eigen::Vector2d here = Position(X_WR);
   // lambda per replan period, however often a blocked move makes the robot replan: otherwise
   // 1/c of a visited place outgrows K within seconds.
+  // A period far below the time between replans (replan_period_s 1e-9: 1e8 passes over the grid
+  // per control step, and below the clock's last digit last_decay_s_ + period never moved, so the
+  // run hung for ever) decays the periods past kMaxDecayPasses at once, by lambda^n.
+  int passes = 0;
   while (time_s - last_decay_s_ >= options_.replan_period_s) {
+    if (++passes > kMaxDecayPasses) {
+      const double periods = std::floor((time_s - last_decay_s_) / options_.replan_period_s);
+      const double factor = std::pow(options_.visit_decay, periods);
+      for (double& c : visits_) c *= factor;
+      last_decay_s_ = time_s - std::fmod(time_s - last_decay_s_, options_.replan_period_s);
+      break;
+    }
     for (double& c : visits_) c *= options_.visit_decay;
     last_decay_s_ = last_decay_s_ < 0.0 ? time_s : last_decay_s_ + options_.replan_period_s;
   }
