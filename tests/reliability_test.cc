@@ -1328,6 +1328,31 @@ TEST_F(ReliabilityTest, SigmasOfNoMatchedLineAreNull) {
   EXPECT_EQ(found_metrics.find("null"), std::string::npos) << found_metrics;
 }
 
+// s62: seed 003's map draws each segment from one IR scan: geometric_map.segmentation.
+// min_line_points above the scanner's 200 beams ran the whole run and was then refused as
+// "geometric_map: no wall surface was hit by 10000 beams", naming the section, not the key. Now
+// refused before the run, naming it; at most the beams, the run is as before.
+TEST_F(ReliabilityTest, MapLinesOfMoreBeamsThanAnIrScanAreRefusedNamingTheKey) {
+  const fs::path dir = Dir();
+  const auto run = [&](const std::string& count) {
+    return RunPlywood(
+        "run " + (testing::SourceRoot() / "experiments" / "seed003_ir_panels.yaml").string() +
+            " --quiet --no-snapshot --set duration_s=1 --set "
+            "geometric_map.segmentation.min_line_points=" +
+            count + " --out " + (dir / "out").string(),
+        dir);
+  };
+  ExpectOneLine(run("10000"),
+                {"seed003_ir_panels.yaml: geometric_map.segmentation.min_line_points: 10000 is "
+                 "more than the 200 beams of an IR scan",
+                 "give at most 200"});
+  ExpectOneLine(run("201"), {"geometric_map.segmentation.min_line_points: 201 is more than the "
+                             "200 beams of an IR scan"});
+  // 200 beams fit a scan: the run goes on to the map's own check (no wall holds all 200).
+  const CliResult fits = run("200");
+  ExpectOneLine(fits, {"seed003_ir_panels.yaml: geometric_map: no wall surface was hit by 200"});
+}
+
 TEST_F(ReliabilityTest, AnUnreadableExperimentIsNotReportedAsMissing) {
   const fs::path dir = Dir();
   const fs::path folder = dir / "folder.yaml";
