@@ -1328,6 +1328,58 @@ TEST_F(ReliabilityTest, ARansacCloudWithNoWallToFindIsRefused) {
        "undefined, nothing to score against"});
 }
 
+// s62: a seed004_ransac cloud in which RANSAC finds no line (ransac.distance_threshold_m 1e-300)
+// reported sigma_r_m 0 and sigma_alpha_deg 0 beside recall 0, exit 0: a perfect fit of no line.
+// The sigmas of no matched line are null (no number), as drift_percent of a robot that stands.
+TEST_F(ReliabilityTest, SigmasOfNoMatchedLineAreNull) {
+  const auto experiment = [](const std::string& tolerance) {
+    return HallExperiment(0.0, 0.0,
+                          "protocol: seed004_ransac\n"
+                          "odometry: {encoder: {}}\n"
+                          "seed004_ransac: {scan_stride: 1, beam_stride: 1, ransac: "
+                          "{distance_threshold_m: " +
+                              tolerance + "}}\n",
+                          "{encoders: {}, laser: {}}");
+  };
+  const fs::path dir = Dir();  // each Run() empties it
+  const CliResult none = Run(experiment("1e-300"));
+  ASSERT_EQ(none.exit_code, 0) << none.err;
+  const std::string metrics = Slurp(dir / "out" / "metrics.json");
+  EXPECT_NE(metrics.find("\"lines\": 0"), std::string::npos) << metrics;
+  EXPECT_NE(metrics.find("\"sigma_r_m\": null"), std::string::npos) << metrics;
+  EXPECT_NE(metrics.find("\"sigma_alpha_deg\": null"), std::string::npos) << metrics;
+  // The shipped tolerance finds the hall's walls, and their sigmas are numbers.
+  const CliResult found = Run(experiment("0.03"));
+  ASSERT_EQ(found.exit_code, 0) << found.err;
+  const std::string found_metrics = Slurp(dir / "out" / "metrics.json");
+  EXPECT_EQ(found_metrics.find("null"), std::string::npos) << found_metrics;
+}
+
+// s62: seed 003's map draws each segment from one IR scan: geometric_map.segmentation.
+// min_line_points above the scanner's 200 beams ran the whole run and was then refused as
+// "geometric_map: no wall surface was hit by 10000 beams", naming the section, not the key. Now
+// refused before the run, naming it; at most the beams, the run is as before.
+TEST_F(ReliabilityTest, MapLinesOfMoreBeamsThanAnIrScanAreRefusedNamingTheKey) {
+  const fs::path dir = Dir();
+  const auto run = [&](const std::string& count) {
+    return RunPlywood(
+        "run " + (testing::SourceRoot() / "experiments" / "seed003_ir_panels.yaml").string() +
+            " --quiet --no-snapshot --set duration_s=1 --set "
+            "geometric_map.segmentation.min_line_points=" +
+            count + " --out " + (dir / "out").string(),
+        dir);
+  };
+  ExpectOneLine(run("10000"),
+                {"seed003_ir_panels.yaml: geometric_map.segmentation.min_line_points: 10000 is "
+                 "more than the 200 beams of an IR scan",
+                 "give at most 200"});
+  ExpectOneLine(run("201"), {"geometric_map.segmentation.min_line_points: 201 is more than the "
+                             "200 beams of an IR scan"});
+  // 200 beams fit a scan: the run goes on to the map's own check (no wall holds all 200).
+  const CliResult fits = run("200");
+  ExpectOneLine(fits, {"seed003_ir_panels.yaml: geometric_map: no wall surface was hit by 200"});
+}
+
 TEST_F(ReliabilityTest, AnUnreadableExperimentIsNotReportedAsMissing) {
   const fs::path dir = Dir();
   const fs::path folder = dir / "folder.yaml";

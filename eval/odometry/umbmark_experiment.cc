@@ -55,6 +55,26 @@ void RequireFinishedSquare(const sim::ExperimentConfig& config, const std::strin
           "check that the square fits in the world");
 }
 
+// Borenstein's E_b and E_d come from small-angle formulas (alpha and beta are the return errors
+// over 4 sides): errors not small beside the side break them. A 1e-05 m square (below one encoder
+// count) measured E_b 0.986 and, corrected by it, E_b -7.998 and E_d -0.999, exit 0; a 1e-09 m one
+// failed as "plywood: wheel_diameter_ratio: must be a ratio in [0.5, 2], got 3.82", no file, no
+// field (s62). Each stage's ratios must be ones a calibration can hold, [0.5, 2].
+void RequireSmallAngleRatios(const sim::ExperimentConfig& config, const std::string& stage,
+                             const robot::UmbmarkResult& result) {
+  const auto in_range = [](double ratio) { return ratio >= 0.5 && ratio <= 2.0; };
+  if (in_range(result.eb) && in_range(result.ed)) return;
+  const double side_m = config.controller.square_path.side_m;
+  throw sim::ConfigError(
+      config.source_file, "controller.side_m",
+      "the " + stage + " squares' return errors (" + sim::FormatNumber(result.r_cg_cw_m) +
+          " m cw, " + sim::FormatNumber(result.r_cg_ccw_m) + " m ccw) on a " +
+          sim::FormatNumber(side_m) + " m square give E_b " + sim::FormatNumber(result.eb) +
+          " and E_d " + sim::FormatNumber(result.ed) +
+          ", outside [0.5, 2]: Borenstein's correction holds only for return errors small beside "
+          "the side; drive larger squares (his are 4 m)");
+}
+
 // The squares must fit in the world: a 7 m square from the hall's (-2, -2) ran into its walls, the
 // wheels slipped there while the encoder estimate the robot steers by drove on, the squares were
 // "finished", and UMBmark gave E_max,syst 6.37 m, E_d 0.99948 and E_b 0.92825 for a robot built
@@ -233,6 +253,7 @@ UmbmarkOutcome RunUmbmark(const sim::ExperimentConfig& config, const UmbmarkOpti
     }
     stage.result = robot::AnalyseUmbmark(
         stage.runs, side_m, robot::CalibratedGeometry(config.nominal, calibration).track_m);
+    RequireSmallAngleRatios(config, stage_name, stage.result);
     if (!stage.turns.empty()) stage.turn_calibration = robot::CalibrateTurns(stage.turns);
     return stage;
   };

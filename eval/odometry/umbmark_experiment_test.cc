@@ -152,5 +152,33 @@ TEST(UmbmarkExperimentTest, RejectsLapsOtherThanOneNamingTheKey) {
   }
 }
 
+// Borenstein's ratios are small-angle formulas: on squares whose sides are not large beside the
+// return errors they go wild. A 1e-05 m square measured E_b 0.986, and its corrected squares E_b
+// -7.998, E_d -0.999, exit 0; a 1e-09 m square's correction failed as "wheel_diameter_ratio: must
+// be a ratio in [0.5, 2], got 3.82", naming no file or field (s62). Both are refused naming
+// controller.side_m, the first at its after squares, the second at its before squares.
+TEST(UmbmarkExperimentTest, SquaresTooSmallForTheSmallAngleFormulasAreRefusedNamingTheSide) {
+  for (const std::string side : {"1e-05", "1e-09"}) {
+    // The shipped robot as it is (no injected errors), as `plywood run umbmark.yaml` drives it.
+    const sim::ExperimentConfig config =
+        sim::LoadExperimentConfig(std::string(PLYWOOD_SOURCE_ROOT) + "/experiments/umbmark.yaml",
+                                  {"controller.side_m=" + side});
+    UmbmarkOptions options = ReadUmbmarkOptions(config);
+    options.runs_per_direction = 1;
+    try {
+      RunUmbmark(config, options);
+      ADD_FAILURE() << "a " << side << " m square was scored";
+    } catch (const sim::ConfigError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("umbmark.yaml: controller.side_m: the " +
+                          std::string(side == "1e-05" ? "after" : "before") + " squares'"),
+                std::string::npos)
+          << what;
+      EXPECT_NE(what.find("on a " + side + " m square give E_b "), std::string::npos) << what;
+      EXPECT_NE(what.find(", outside [0.5, 2]"), std::string::npos) << what;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace plywood::eval

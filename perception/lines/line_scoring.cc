@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -35,14 +36,18 @@ void LineScoringOptions::Validate() const {
   if (min_observed_rays < 1) throw std::invalid_argument("min_observed_rays: must be >= 1");
 }
 
+// No matched line, no error to measure: NaN (metrics.json's null). 0 read as a perfect fit:
+// seed004_ransac with ransac.distance_threshold_m 1e-300 found no line and reported sigma_r_m 0,
+// sigma_alpha_deg 0 beside recall 0, exit 0 (s62).
 double LineScore::SigmaRM() const {
-  return extracted_matched ? std::sqrt(sum_d_r_sq / extracted_matched) : 0.0;
+  return extracted_matched ? std::sqrt(sum_d_r_sq / extracted_matched)
+                           : std::numeric_limits<double>::quiet_NaN();
 }
 
 double LineScore::SigmaAlphaDeg() const {
   return extracted_matched
              ? std::sqrt(sum_d_alpha_sq / extracted_matched) * 180.0 / std::numbers::pi
-             : 0.0;
+             : std::numeric_limits<double>::quiet_NaN();
 }
 
 void LineScore::Add(const LineScore& o) {

@@ -63,6 +63,7 @@ struct LineScore {
   // 1 when there was nothing to find / nothing found (no evidence against the extractor).
   double Recall() const { return observable ? double(observable_matched) / observable : 1.0; }
   double Precision() const { return extracted ? double(extracted_matched) / extracted : 1.0; }
+  // RMS errors of the matched lines; NaN (no number) when no line matched.
   double SigmaRM() const;
   double SigmaAlphaDeg() const;
   double PointsPerLine() const { return extracted ? double(points) / extracted : 0.0; }

@@ -564,6 +564,22 @@ void RequireLinesOneScanCanHold(const YamlFields& top, const ExperimentConfig& c
   }
 }
 
+// Seed 003's map draws each segment from one IR scan's points, and scores only surfaces hit by
+// segmentation.min_line_points beams in one scan: a count above the scanner's beams mapped nothing
+// and, after the whole run, was refused as "geometric_map: no wall surface was hit by 10000
+// beams", naming the section, not the key (s62).
+void RequireMapLinesOneScanCanHold(const YamlFields& top, const ExperimentConfig& config) {
+  if (!config.geometric_map.given || !config.sensors.ir_scanner) return;
+  const int beams = config.sensors.ir_scanner->BeamCount();
+  const int count = config.geometric_map.options.segmentation.min_line_points;
+  if (count <= beams) return;
+  top.Fail("geometric_map.segmentation.min_line_points",
+           std::to_string(count) + " is more than the " + std::to_string(beams) +
+               " beams of an IR scan (sensors.ir_scanner fov_deg / resolution_deg): a segment is "
+               "drawn from one scan's points, so none could be found; give at most " +
+               std::to_string(beams));
+}
+
 // A single run applies odometry.calibration only to the estimators' geometry: with none running
 // a calibration changed no figure, exit 0 (s60; `odometry: {calibration: {track_ratio: 1.01}}`
 // ran with no odometry in metrics.json). The identity is what config.yaml records for a run
@@ -752,6 +768,7 @@ ExperimentConfig ParseExperimentConfig(const std::string& yaml_text, const std::
   RequireASonarRingForEveryIrScan(top, config);
   RequireCountersThatHoldAnInterval(top, config);
   RequireLinesOneScanCanHold(top, config);
+  RequireMapLinesOneScanCanHold(top, config);
   RequireEncodersTheOdometryCounts(top, config);
   top.Finish();
   return config;
