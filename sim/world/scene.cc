@@ -23,6 +23,15 @@
 namespace plywood::sim {
 namespace {
 
+// The file's model compiled alone, or null when it does not compile by itself.
+MjModelPtr LoadModelOrNothing(const std::filesystem::path& path) {
+  try {
+    return LoadModelFromFile(path.string());
+  } catch (const std::exception&) {
+    return nullptr;
+  }
+}
+
 // "'chassis'", or "geom 7" for an unnamed one.
 std::string GeomNameOrIndex(const mjModel* m, int geom) {
   const char* name = mj_id2name(m, mjOBJ_GEOM, geom);
@@ -276,13 +285,8 @@ Scene::Scene(const SceneOptions& options) : options_(options) {
   }
   // The world's <compiler> and <default> settings reach the robot's file too (angle="radian"
   // turned its sonars and wheels, exit 0): the robot must compile as it does alone.
-  MjModelPtr robot_alone;
-  try {
-    robot_alone = LoadModelFromFile(robot.string());
-  } catch (const std::exception&) {
-    // The checks below name what such a robot file lacks.
-  }
-  if (robot_alone) {
+  // A robot file that does not compile alone is left to the checks below, which name what it lacks.
+  if (const MjModelPtr robot_alone = LoadModelOrNothing(robot); robot_alone) {
     if (const auto problem = RobotChangedByWorld(model_.get(), robot_alone.get())) {
       throw ConfigError(options.world_mjcf.string(), "", *problem);
     }
@@ -297,12 +301,7 @@ Scene::Scene(const SceneOptions& options) : options_(options) {
   }
   // And the robot's <compiler> and <default> settings reach the world's file: the world must
   // compile as it does alone (a world that does not compile alone is left to the checks below).
-  MjModelPtr world_alone;
-  try {
-    world_alone = LoadModelFromFile(world.string());
-  } catch (const std::exception&) {
-  }
-  if (world_alone) {
+  if (const MjModelPtr world_alone = LoadModelOrNothing(world); world_alone) {
     if (const auto problem = WorldChangedByRobot(model_.get(), world_alone.get())) {
       throw ConfigError(options.robot_mjcf.string(), "",
                         "it changes the world " + options.world_mjcf.string() + ": " + *problem);
