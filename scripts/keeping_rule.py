@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Issue 14's keeping rule read on pooled held-out sweeps (docs/sonar_map.md, "The keeping rule,
+"""Issue 14's keeping rule read on pooled held-out sweeps (docs/sonar_map/history.md, "The keeping rule,
 stop 57"): may a change that moves seed-001 runs become the default? Takes pairs of finished
 sweep folders, BASE then NEW, one pair per generator seed, pairs their runs as
 scripts/sweep_compare.py does, and prints per sweep mean / p90 (nearest rank) / worst / runs above

@@ -8,7 +8,7 @@ and up, crossed the threshold either way, rose by more than --rise, and gained a
 it lists the runs that moved most. With --rooms each group gets a second row read per room: a
 room's figure is the mean over its runs (its run seeds), and mean / p90 / worst / count above the
 threshold / rooms with a contact are taken over rooms (the other reading of issue 14's "no room
-above 0.10"; docs/sonar_map.md, "Where it stands").
+above 0.10"; docs/sonar_map.md, "Issue 14: where it stands").
 
 usage: scripts/sweep_compare.py BASE NEW [--metric M] [--threshold T] [--rise R]
                                  [--contacts M] [--rooms] [-v]
