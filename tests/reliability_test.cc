@@ -3085,5 +3085,30 @@ TEST_F(ReliabilityTest, LineOptionsNoScanCanMeetAreRefused) {
   EXPECT_EQ(
       Run(yaml, "--set lines.hough.min_votes=361 --set lines.hough.min_length_m=16").exit_code, 0);
 }
+
+// s63: the same counts in seed000_rooms, whose scan is the rig's pair of back-to-back lasers (2 x
+// 361 points): min_points 1000 or 2147483647 ran every room, recall 0, exit 0. Refused as in a
+// single run, against the pair's points.
+TEST_F(ReliabilityTest, LineOptionsNoScanPairOfSeed000CanMeetAreRefused) {
+  const fs::path dir = Dir();
+  const auto run = [&](const std::string& set) {
+    return RunPlywood("run " +
+                          (testing::SourceRoot() / "experiments" / "seed000_rooms.yaml").string() +
+                          " --quiet --no-snapshot --set seed000_rooms.scans=1 --set "
+                          "'lines.extractors=[split_and_merge, hough]' " +
+                          set + " --out " + (dir / "out").string() + " --force",
+                      dir);
+  };
+  ExpectOneLine(run("--set lines.split_and_merge.min_points=723"),
+                {"seed000_rooms.yaml: lines.split_and_merge.min_points: 723 is more than the 722 "
+                 "points of the rig's scan pair (two back-to-back lasers of 361 beams each: "
+                 "sensors.laser fov_deg / resolution_deg + 1): a line is drawn from one pair's "
+                 "points, so none could be found; give at most 722"});
+  ExpectOneLine(run("--set lines.hough.min_length_m=17"),
+                {"seed000_rooms.yaml: lines.hough.min_length_m: 17 m is more than twice "
+                 "sensors.laser.range_max_m (8 m)"});
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  EXPECT_EQ(run("--set lines.split_and_merge.min_points=722").exit_code, 0);
+}
 }  // namespace
 }  // namespace plywood
