@@ -1355,6 +1355,61 @@ TEST_F(ReliabilityTest, SigmasOfNoMatchedLineAreNull) {
   EXPECT_EQ(found_metrics.find("null"), std::string::npos) << found_metrics;
 }
 
+// s63: the figures per line of no line read 0 where the sigmas beside them read null: a lines:
+// section whose extractor found nothing wrote points_per_line 0, seed000_rooms' reduction 0 (722
+// points "reduced" to nothing), and plywood replay of such a log rms_m 0 (a perfect fit of no
+// ray) and rays_per_line 0. Each is null now, and a number where lines were found.
+TEST_F(ReliabilityTest, FiguresPerLineOfNoLineAreNull) {
+  const fs::path dir = Dir();
+  const auto run = [&](const std::string& min_length_m) {
+    return RunPlywood(
+        "run " + (testing::SourceRoot() / "experiments" / "default.yaml").string() +
+            " --quiet --no-snapshot --set duration_s=0.3 --set 'lines={extractors: [ransac], "
+            "ransac: {min_length_m: " +
+            min_length_m + "}}' --out " + (dir / "run").string() + " --force",
+        dir);
+  };
+  const CliResult found = run("0.06");
+  ASSERT_EQ(found.exit_code, 0) << found.err;
+  EXPECT_EQ(Slurp(dir / "run" / "metrics.json").find("\"points_per_line\": null"),
+            std::string::npos);
+  const CliResult none = run("15");  // no two returns of the office 15 m apart
+  ASSERT_EQ(none.exit_code, 0) << none.err;
+  const std::string metrics = Slurp(dir / "run" / "metrics.json");
+  EXPECT_NE(metrics.find("\"lines_per_scan\": 0,"), std::string::npos) << metrics;
+  EXPECT_NE(metrics.find("\"points_per_line\": null"), std::string::npos) << metrics;
+
+  const auto replay = [&](const std::string& min_length_m, const std::string& out) {
+    return RunPlywood("replay " + (dir / "run" / "laser.log").string() +
+                          " --set split_and_merge.min_length_m=" + min_length_m + " --out " +
+                          (dir / out).string(),
+                      dir);
+  };
+  const CliResult replayed = replay("15", "replay");
+  ASSERT_EQ(replayed.exit_code, 0) << replayed.err;
+  const std::string replay_metrics = Slurp(dir / "replay" / "metrics.json");
+  EXPECT_NE(replay_metrics.find("\"lines\": 0,"), std::string::npos) << replay_metrics;
+  EXPECT_NE(replay_metrics.find("\"rms_m\": null"), std::string::npos) << replay_metrics;
+  EXPECT_NE(replay_metrics.find("\"rays_per_line\": null"), std::string::npos) << replay_metrics;
+  const CliResult replayed_lines = replay("0.06", "replay_lines");
+  ASSERT_EQ(replayed_lines.exit_code, 0) << replayed_lines.err;
+  EXPECT_EQ(Slurp(dir / "replay_lines" / "metrics.json").find("null"), std::string::npos);
+
+  const CliResult rooms = RunPlywood(
+      "run " + (testing::SourceRoot() / "experiments" / "seed000_rooms.yaml").string() +
+          " --quiet --no-snapshot --set seed000_rooms.scans=1 --set 'lines.extractors=[ransac]' "
+          "--set lines.ransac.min_length_m=15 --out " +
+          (dir / "rooms").string(),
+      dir);
+  ASSERT_EQ(rooms.exit_code, 0) << rooms.err;
+  const std::string rooms_csv = Slurp(dir / "rooms" / "rooms.csv");
+  // lines_per_scan, points_per_scan, reduction, recall, precision, sigma_r_m, sigma_alpha_deg
+  EXPECT_NE(rooms_csv.find(",ransac,0,722,null,0,1,null,null\n"), std::string::npos) << rooms_csv;
+  const std::string rooms_metrics = Slurp(dir / "rooms" / "metrics.json");
+  EXPECT_NE(rooms_metrics.find("\"reduction\": null"), std::string::npos) << rooms_metrics;
+  EXPECT_EQ(rooms_metrics.find("\"reduction\": 0"), std::string::npos) << rooms_metrics;
+}
+
 // s62: seed 003's map draws each segment from one IR scan: geometric_map.segmentation.
 // min_line_points above the scanner's 200 beams ran the whole run and was then refused as
 // "geometric_map: no wall surface was hit by 10000 beams", naming the section, not the key. Now
@@ -3029,6 +3084,31 @@ TEST_F(ReliabilityTest, LineOptionsNoScanCanMeetAreRefused) {
                  "sensors.laser.range_max_m (8 m): no two returns of a scan lie farther apart"});
   EXPECT_EQ(
       Run(yaml, "--set lines.hough.min_votes=361 --set lines.hough.min_length_m=16").exit_code, 0);
+}
+
+// s63: the same counts in seed000_rooms, whose scan is the rig's pair of back-to-back lasers (2 x
+// 361 points): min_points 1000 or 2147483647 ran every room, recall 0, exit 0. Refused as in a
+// single run, against the pair's points.
+TEST_F(ReliabilityTest, LineOptionsNoScanPairOfSeed000CanMeetAreRefused) {
+  const fs::path dir = Dir();
+  const auto run = [&](const std::string& set) {
+    return RunPlywood("run " +
+                          (testing::SourceRoot() / "experiments" / "seed000_rooms.yaml").string() +
+                          " --quiet --no-snapshot --set seed000_rooms.scans=1 --set "
+                          "'lines.extractors=[split_and_merge, hough]' " +
+                          set + " --out " + (dir / "out").string() + " --force",
+                      dir);
+  };
+  ExpectOneLine(run("--set lines.split_and_merge.min_points=723"),
+                {"seed000_rooms.yaml: lines.split_and_merge.min_points: 723 is more than the 722 "
+                 "points of the rig's scan pair (two back-to-back lasers of 361 beams each: "
+                 "sensors.laser fov_deg / resolution_deg + 1): a line is drawn from one pair's "
+                 "points, so none could be found; give at most 722"});
+  ExpectOneLine(run("--set lines.hough.min_length_m=17"),
+                {"seed000_rooms.yaml: lines.hough.min_length_m: 17 m is more than twice "
+                 "sensors.laser.range_max_m (8 m)"});
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  EXPECT_EQ(run("--set lines.split_and_merge.min_points=722").exit_code, 0);
 }
 }  // namespace
 }  // namespace plywood

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "sim/config/config_error.h"
+#include "sim/runner/format_number.h"
 
 namespace plywood::viewer {
 namespace {
@@ -22,12 +23,23 @@ Json ReadJson(const std::filesystem::path& path) {
   }
 }
 
-// A finite number at `value`, else an error naming `field`.
+// Beyond it no map is of a room (trajectory files take the same bound); a pseudo segment 1e300 m
+// long hung the replay (s63).
+constexpr double kMaxCoordinateM = 1e9;
+
+// A coordinate at `value`: a finite number within kMaxCoordinateM of the origin, else an error
+// naming `field`.
 double Number(const Json& value, const std::filesystem::path& path, const std::string& field) {
   if (!value.is_number() || !std::isfinite(value.get<double>())) {
     throw sim::ConfigError(path.string(), field, "must be a finite number");
   }
-  return value.get<double>();
+  const double v = value.get<double>();
+  if (!(std::abs(v) <= kMaxCoordinateM)) {
+    throw sim::ConfigError(path.string(), field,
+                           "must be within " + sim::FormatNumber(kMaxCoordinateM) +
+                               " m of the origin, got " + sim::FormatNumber(v));
+  }
+  return v;
 }
 
 // [x, y] at `value`.

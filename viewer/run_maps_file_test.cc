@@ -58,6 +58,11 @@ TEST(RunMapsFileTest, BadFilesNameTheFileAndField) {
        "segments[0].tag: must be real, pseudo or unconfirmed"},
       {R"({"segments": [{"start": [0, 0], "end": [1, "x"], "tag": "real"}], "clusters": []})",
        "segments[0].end: must be a finite number"},
+      // s63: a pseudo segment 1e300 m long hung the replay's dash loop.
+      {R"({"segments": [{"start": [1e300, 0], "end": [1, 1], "tag": "pseudo"}], "clusters": []})",
+       "segments[0].start: must be within 1e+09 m of the origin, got 1e+300"},
+      {R"({"segments": [], "clusters": [{"min": [0, -2e9], "max": [1, 1]}]})",
+       "clusters[0].min: must be within 1e+09 m of the origin, got -2e+09"},
   };
   for (const auto& [text, expected] : cases) {
     const std::filesystem::path path = Write("geometric_map.json", text);
@@ -69,6 +74,18 @@ TEST(RunMapsFileTest, BadFilesNameTheFileAndField) {
       EXPECT_NE(what.find(path.string()), std::string::npos) << what;
       EXPECT_NE(what.find(expected), std::string::npos) << what;
     }
+  }
+  // The same bound for the cognitive map's partitions.
+  const std::filesystem::path far = Write("cognitive_map.json", R"({
+    "partitions": [{"rect": [0, 0, 1e300, 2], "label": "free"}], "graph": {"arcs": []}})");
+  try {
+    ReadCognitiveMapFile(far);
+    ADD_FAILURE() << "accepted a partition 1e300 m wide";
+  } catch (const sim::ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find(
+                  "partitions[0]: must be within 1e+09 m of the origin, got 1e+300"),
+              std::string::npos)
+        << e.what();
   }
   const std::filesystem::path arcs = Write("cognitive_map.json", R"({
     "partitions": [{"rect": [0, 0, 2, 2], "label": "free"}],

@@ -17,6 +17,7 @@
 #include "render/overlay.h"
 #include "sim/config/config_error.h"
 #include "sim/config/robot_catalog.h"
+#include "sim/runner/format_number.h"
 #include "sim/runner/run_directory.h"
 #include "sim/sensors/sonar_sensor.h"
 #include "viewer/run_content.h"
@@ -38,20 +39,48 @@ std::size_t LastAtOrBefore(const Vector& items, double t_s, TimeOf time_of) {
   return it == items.begin() ? 0 : static_cast<std::size_t>(it - items.begin() - 1);
 }
 
-std::vector<msgs::RangeRing> ReadSonarCsv(const std::filesystem::path& path, double range_max_m) {
+// sonar.csv as the run writes it (sim/runner/run_writer.cc): time_s, then one column per
+// transducer of the ring, each empty (no echo) or a range the sonar can report. Anything else was
+// drawn without a word: a range of -5 as a beam pointing backwards, 1e300 as one across the
+// screen, a 17th column as a transducer at the robot's centre (s63).
+std::vector<msgs::RangeRing> ReadSonarCsv(const std::filesystem::path& path,
+                                          const sim::SonarOptions& sonar) {
   const eval::CsvTable table = eval::ReadCsv(path, {.header = true, .rows_required = false});
   if (table.header.empty() || table.header.front() != "time_s") {
     throw sim::ConfigError(path.string(), "time_s", "expected a header starting with time_s");
+  }
+  const std::size_t transducers = sim::SonarSensor::DefaultSiteNames().size();
+  if (!table.rows.empty()) {
+    bool named = table.header.size() == 1 + transducers;
+    for (std::size_t c = 1; named && c < table.header.size(); ++c) {
+      named = table.header[c] == "range_" + std::to_string(c - 1) + "_m";
+    }
+    if (!named) {
+      throw sim::ConfigError(path.string(), "header",
+                             "expected time_s, then range_0_m .. range_" +
+                                 std::to_string(transducers - 1) + "_m (one column per sonar of " +
+                                 "the ring), got " + std::to_string(table.header.size()) +
+                                 " columns");
+    }
   }
   std::vector<msgs::RangeRing> rings;
   for (const eval::CsvRow& row : table.rows) {
     msgs::RangeRing ring;
     ring.time_s = table.Number(row, 0, "time_s");
-    ring.range_max_m = range_max_m;
+    ring.range_max_m = sonar.range_max_m;
     for (std::size_t c = 1; c < row.fields.size(); ++c) {
       msgs::RangeReading reading;
       reading.echo = !row.fields[c].empty();
-      if (reading.echo) reading.range_m = table.Number(row, c, table.header[c]);
+      if (reading.echo) {
+        reading.range_m = table.Number(row, c, table.header[c]);
+        if (!(reading.range_m >= sonar.range_min_m && reading.range_m <= sonar.range_max_m)) {
+          table.Fail(row, table.header[c],
+                     "must be in [" + sim::FormatNumber(sonar.range_min_m) + ", " +
+                         sim::FormatNumber(sonar.range_max_m) +
+                         "] m (config.yaml's sensors.sonar range_min_m and range_max_m), got " +
+                         sim::FormatNumber(reading.range_m));
+        }
+      }
       ring.readings.push_back(reading);
     }
     if (!rings.empty() && ring.time_s < rings.back().time_s) {
@@ -81,14 +110,23 @@ RunReplayData LoadRunReplay(const std::filesystem::path& run_dir) {
     throw sim::ConfigError(trajectory.string(), "truth_x_m",
                            "the ground truth columns are missing");
   }
-  if (std::filesystem::exists(run_dir / "laser.log")) {
-    for (perception::CarmenLaserRecord& r :
-         perception::ReadCarmenLog(run_dir / "laser.log").lasers) {
+  if (const std::filesystem::path log = run_dir / "laser.log"; std::filesystem::exists(log)) {
+    for (perception::CarmenLaserRecord& r : perception::ReadCarmenLog(log).lasers) {
+      // The frame at t shows the last scan at or before t, found by bisection: scans out of time
+      // order showed another moment's scan, at its own pose, without a word (s63). A run writes
+      // them in order, as sonar.csv's rings.
+      if (!data.laser.empty() && r.scan.time_s < data.laser.back().time_s) {
+        throw sim::ConfigError(log.string() + ":" + std::to_string(r.line_number), "ipc_timestamp",
+                               sim::FormatNumber(r.scan.time_s) +
+                                   " s comes before the previous scan's " +
+                                   sim::FormatNumber(data.laser.back().time_s) +
+                                   " s: a run logs its scans in time order");
+      }
       data.laser.push_back({r.scan.time_s, r.X_WL, std::move(r.scan)});
     }
   }
   if (std::filesystem::exists(run_dir / "sonar.csv") && data.config.sensors.sonar) {
-    data.sonar = ReadSonarCsv(run_dir / "sonar.csv", data.config.sensors.sonar->range_max_m);
+    data.sonar = ReadSonarCsv(run_dir / "sonar.csv", *data.config.sensors.sonar);
   }
   if (std::filesystem::exists(run_dir / "cognitive_map.json")) {
     data.map = ReadCognitiveMapFile(run_dir / "cognitive_map.json");

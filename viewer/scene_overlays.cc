@@ -168,10 +168,21 @@ void AddOverlays(mjvScene& scene, OverlayPrimitives& lines, const FrameContent& 
         sink.Line(At(s.a_W, kMapZ), At(s.b_W, kMapZ), overlay_colours::kRealSegment, 3.0);
         continue;
       }
-      // Dashes of 10 cm every 20 cm, as geometric_map.png.
+      // Dashes of 10 cm every 20 cm, as geometric_map.png, counted by a whole number: a pseudo
+      // segment 1e300 m long (a hand-edited geometric_map.json) looped for ever on `t += 0.2`,
+      // and one of 1e8 m would take 5e8 dashes of memory (s63). Longer than any room a run maps,
+      // it is drawn whole.
       const Eigen::Vector2d d = s.b_W - s.a_W;
       const double length = d.norm();
-      for (double t = 0.0; t < length; t += 0.2) {
+      constexpr double kDashPeriodM = 0.2;
+      constexpr double kMaxDashes = 10000;  // 2 km
+      if (!(length / kDashPeriodM <= kMaxDashes)) {
+        sink.Line(At(s.a_W, kMapZ), At(s.b_W, kMapZ), overlay_colours::kPseudoSegment, 2.0);
+        continue;
+      }
+      const int dashes = static_cast<int>(std::ceil(length / kDashPeriodM));
+      for (int k = 0; k < dashes; ++k) {
+        const double t = k * kDashPeriodM;
         sink.Line(At(s.a_W + d * (t / length), kMapZ),
                   At(s.a_W + d * (std::min(t + 0.1, length) / length), kMapZ),
                   overlay_colours::kPseudoSegment, 2.0);

@@ -170,6 +170,96 @@ TEST_F(ViewCliTest, RefusesARunDirectoryThatDidNotFinishInOneLine) {
   EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
 }
 
+// s63: the replay drew whatever sonar.csv held: a range of -5 as a beam pointing backwards, 1e300
+// as one across the screen, a 17th column as a transducer at the robot's centre; and laser.log's
+// scans out of time order showed another moment's scan, exit 0 (the files' sizes in complete.json
+// were the only guard, and an edit of the same length passes it). A range outside [range_min_m,
+// range_max_m] of config.yaml's sonar, columns other than the ring's, or a scan before the one
+// above it is refused in one line naming the file, its line and the field.
+TEST_F(ViewCliTest, SensorFilesNoRunCouldHaveWrittenAreRefusedNamingTheirField) {
+  const std::filesystem::path dir = MakeTempDir("view_cli_sensor_files");
+  const std::filesystem::path run = dir / "run";
+  ASSERT_EQ(RunPlywood("run " + (SourceRoot() / "experiments/default.yaml").string() +
+                           " --set duration_s=1 --quiet --no-snapshot --out " + run.string(),
+                       dir)
+                .exit_code,
+            0);
+  const auto lines_of = [](const std::string& text) {
+    std::vector<std::string> lines;
+    for (std::size_t at = 0; at < text.size();) {
+      const std::size_t end = text.find('\n', at);
+      lines.push_back(text.substr(at, end - at));
+      at = end + 1;
+    }
+    return lines;
+  };
+  // A copy of the run whose `file` has its lines changed by `edit`, complete.json rewritten.
+  const auto copy_with = [&](const std::string& name, const std::string& file, const auto& edit) {
+    const std::filesystem::path copy = dir / name;
+    std::filesystem::copy(run, copy, std::filesystem::copy_options::recursive);
+    std::vector<std::string> changed = lines_of(Slurp(run / file));
+    EXPECT_GT(changed.size(), 8u);
+    edit(changed);
+    std::string text;
+    for (const std::string& line : changed) text += line + "\n";
+    testing::WriteFile(copy / file, text);
+    sim::WriteCompletionRecord(copy);
+    return copy;
+  };
+  // Line 3 of the file (its second ring) with its first range set to `range`.
+  const auto first_range = [&](const std::string& range) {
+    return [range](std::vector<std::string>& changed) {
+      std::string& line = changed[2];
+      const std::size_t first = line.find(',') + 1;
+      line = line.substr(0, first) + range + line.substr(line.find(',', first));
+    };
+  };
+  const std::filesystem::path negative = copy_with("negative", "sonar.csv", first_range("-5"));
+  const std::filesystem::path far = copy_with("far", "sonar.csv", first_range("1e300"));
+  const std::filesystem::path at_max = copy_with("at_max", "sonar.csv", first_range("5"));
+  const std::filesystem::path wide =
+      copy_with("wide", "sonar.csv", [](std::vector<std::string>& changed) {
+        changed[0] += ",range_16_m";
+        for (std::size_t i = 1; i < changed.size(); ++i) changed[i] += ",1";
+      });
+  // laser.log: two comment lines, two PARAM lines, then one scan a line from t = 0 every 0.1 s.
+  const std::filesystem::path unordered =
+      copy_with("unordered", "laser.log", [](std::vector<std::string>& changed) {
+        EXPECT_EQ(changed[5].rfind("FLASER ", 0), 0u);
+        std::swap(changed[5], changed[6]);
+      });
+  const std::string range_rule =
+      "range_0_m: must be in [0.15, 5] m (config.yaml's sensors.sonar range_min_m and "
+      "range_max_m), got ";
+  const std::vector<std::pair<std::filesystem::path, std::string>> cases = {
+      {negative, (negative / "sonar.csv").string() + ":3: " + range_rule + "-5\n"},
+      {far, (far / "sonar.csv").string() + ":3: " + range_rule + "1e+300\n"},
+      {wide, (wide / "sonar.csv").string() +
+                 ": header: expected time_s, then range_0_m .. range_15_m (one column per sonar "
+                 "of the ring), got 18 columns\n"},
+      {unordered, (unordered / "laser.log").string() +
+                      ":7: ipc_timestamp: 0.1 s comes before the previous scan's 0.2 s: a run logs "
+                      "its scans in time order\n"},
+  };
+  for (const auto& [copy, line] : cases) {
+    SCOPED_TRACE(copy.string());
+    const testing::CliResult result =
+        RunPlywood("view " + copy.string() + " --time 0.5 --size 320x200 --screenshot " +
+                       (dir / "x.png").string(),
+                   dir);
+    EXPECT_EQ(result.exit_code, 2) << result.err;
+    EXPECT_EQ(result.err, "plywood: " + line);
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+  // The sonar's own maximum range is a range it can report: the copy is shown.
+  const testing::CliResult shown =
+      RunPlywood("view " + at_max.string() + " --time 0.5 --size 320x200 --screenshot " +
+                     (dir / "x.png").string(),
+                 dir);
+  EXPECT_EQ(shown.exit_code, 0) << shown.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "x.png"));
+}
+
 // audit s34: these were read silently (--time nan showed t = 0, a live run ignored --time,
 // --bench-seconds nan "drew 29.6 frames/s" in a run of 0 s, exit 0) or failed after the whole run
 // (a screenshot into a missing folder or onto a folder, exit 1). Each is refused before a window

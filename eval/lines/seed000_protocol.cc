@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 #include "eval/lines/lines_csv.h"
@@ -109,7 +110,9 @@ int Seed000Protocol(const ProtocolContext& context) {
     for (const auto& s : result.scores) {
       const double lines_per_scan =
           s.score.scans ? static_cast<double>(s.score.extracted) / s.score.scans : 0.0;
-      const double reduction = lines_per_scan > 0 ? result.PointsPerScan() / lines_per_scan : 0.0;
+      // No line, no reduction to report: null, not 0 (s63).
+      const double reduction = lines_per_scan > 0 ? result.PointsPerScan() / lines_per_scan
+                                                  : std::numeric_limits<double>::quiet_NaN();
       metrics.Set(key + "." + s.name + ".lines_per_scan", lines_per_scan);
       metrics.Set(key + "." + s.name + ".reduction", reduction);
       metrics.Set(key + "." + s.name + ".recall", s.score.Recall());

@@ -52,6 +52,24 @@ Seed000RoomsOptions ReadSeed000RoomsOptions(const sim::ExperimentConfig& config)
     rooms[i].Get("range_cut_m", &room.range_cut_m);
     if (!(room.range_cut_m > 0.0)) rooms[i].Fail("range_cut_m", "must be > 0");
     rooms[i].Get("paper_lines", &room.paper_lines);
+    if (room.paper_lines < 0) {
+      rooms[i].Fail("paper_lines", "must be >= 0 (0: no figure from the paper), got " +
+                                       std::to_string(room.paper_lines));
+    }
+    // Each room's figures are keyed by its world's name (metrics.json's seed000.NAME, the rows of
+    // rooms.csv, lines.csv and walls.csv, NAME.png): a room listed twice kept only its second
+    // entry's figures in metrics.json, beside rooms.csv rows of one name and both entries' scans
+    // pooled in the totals (s63).
+    for (std::size_t j = 0; j < i; ++j) {
+      if (options.rooms[j].world_path.stem() == room.world_path.stem()) {
+        rooms[i].Fail("world", "'" + room.world + "' has the name '" +
+                                   room.world_path.stem().string() + "' of rooms[" +
+                                   std::to_string(j) + "]'s world ('" + options.rooms[j].world +
+                                   "'): each room's figures, rows and picture are keyed by that "
+                                   "name, so the two would be mixed; list each room once, under "
+                                   "a name of its own");
+      }
+    }
     rooms[i].Finish();
     options.rooms.push_back(room);
   }

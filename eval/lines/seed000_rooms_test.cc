@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -184,6 +185,46 @@ TEST(Seed000RoomsTest, ASetTopLevelCutTheListedRoomsIgnoreIsRefused) {
   // applies (a world outside the list), are not refused.
   EXPECT_EQ(refusal({"world=worlds/seed000_room_1.xml"}), "");
   EXPECT_EQ(refusal({"seed000_rooms.range_cut_m=6"}), "");
+}
+
+// s63: a room listed twice in seed000_rooms.rooms (or two worlds of one file name) ran both, but
+// metrics.json kept only the second entry's figures under seed000.NAME, rooms.csv held two rows of
+// one name (4 and 6 walls visible for seed000_room_1 and a copy of room 2 so named), and the one
+// NAME.png was drawn twice; a negative paper_lines was written as it stood. Each is refused naming
+// the entry's field.
+TEST(Seed000RoomsTest, RoomsOfOneNameAndNegativePaperLinesAreRefused) {
+  const std::filesystem::path dir = testing::MakeTempDir("seed000_rooms_one_name");
+  const std::filesystem::path copy = dir / "seed000_room_1.xml";
+  std::filesystem::copy_file(testing::SourceRoot() / "worlds/seed000_room_2.xml", copy);
+  const auto refusal = [](const std::string& rooms) -> std::string {
+    try {
+      ReadSeed000RoomsOptions(Config({"seed000_rooms.rooms=" + rooms}));
+    } catch (const sim::ConfigError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_NE(refusal("[{world: worlds/seed000_room_1.xml, range_cut_m: 4}, {world: "
+                    "worlds/seed000_room_1.xml, range_cut_m: 3}]")
+                .find("seed000_rooms.yaml: seed000_rooms.rooms[1].world: "
+                      "'worlds/seed000_room_1.xml' has the name 'seed000_room_1' of rooms[0]'s "
+                      "world ('worlds/seed000_room_1.xml'): each room's figures, rows and picture "
+                      "are keyed by that name"),
+            std::string::npos);
+  EXPECT_NE(refusal("[{world: worlds/seed000_room_1.xml}, {world: worlds/seed000_room_2.xml}, "
+                    "{world: " +
+                    copy.string() + "}]")
+                .find("seed000_rooms.rooms[2].world: '" + copy.string() +
+                      "' has the name 'seed000_room_1' of rooms[0]'s world"),
+            std::string::npos);
+  EXPECT_NE(refusal("[{world: worlds/seed000_room_1.xml, paper_lines: -7}]")
+                .find("seed000_rooms.rooms[0].paper_lines: must be >= 0 (0: no figure from the "
+                      "paper), got -7"),
+            std::string::npos);
+  // Rooms of names of their own, and paper_lines 0, are read.
+  EXPECT_EQ(refusal("[{world: worlds/seed000_room_1.xml, paper_lines: 0}, {world: "
+                    "worlds/seed000_room_2.xml}]"),
+            "");
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
 #include <optional>
 #include <span>
 #include <vector>
@@ -66,7 +67,10 @@ struct LineScore {
   // RMS errors of the matched lines; NaN (no number) when no line matched.
   double SigmaRM() const;
   double SigmaAlphaDeg() const;
-  double PointsPerLine() const { return extracted ? double(points) / extracted : 0.0; }
+  // NaN (no number) when no line was extracted: 0 read as lines of no points (s63).
+  double PointsPerLine() const {
+    return extracted ? double(points) / extracted : std::numeric_limits<double>::quiet_NaN();
+  }
   void Add(const LineScore& other);
 };
 

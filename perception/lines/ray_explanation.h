@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <cmath>
+#include <limits>
 #include <span>
 
 #include "perception/lines/circle_feature.h"
@@ -18,7 +19,10 @@ struct RayExplanation {
   double sum_sq_m2 = 0.0;  // squared distances of the explained rays
 
   double Fraction() const { return rays ? double(explained) / rays : 0.0; }
-  double RmsM() const { return explained ? std::sqrt(sum_sq_m2 / explained) : 0.0; }
+  // NaN (no number) when no ray was explained: 0 read as a perfect fit of nothing (s63).
+  double RmsM() const {
+    return explained ? std::sqrt(sum_sq_m2 / explained) : std::numeric_limits<double>::quiet_NaN();
+  }
   void Add(const RayExplanation& o) {
     rays += o.rays;
     explained += o.explained;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "perception/lines/line_extractor.h"
@@ -36,7 +37,10 @@ struct ReplayResult {
   // Every circle: the scan it came from (log order) and the circle in the laser frame.
   std::vector<std::pair<long, CircleFeature>> circles_L;
 
-  double RaysPerLine() const { return lines ? double(rays.rays) / lines : 0.0; }
+  // NaN (no number) when no line was found, as PointsPerLine.
+  double RaysPerLine() const {
+    return lines ? double(rays.rays) / lines : std::numeric_limits<double>::quiet_NaN();
+  }
   double LinesPerScan() const { return scans ? double(lines) / scans : 0.0; }
   double CirclesPerScan() const { return scans ? double(circles) / scans : 0.0; }
   double UsPerScan() const { return scans ? 1e6 * extract_wall_s / scans : 0.0; }
