@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "perception/lines/chords_of_known_round_objects.h"
 #include "perception/lines/line_extractor_factory.h"
 #include "sim/config/config_error.h"
 #include "sim/runner/json_text.h"
@@ -76,7 +77,8 @@ perception::LineScore ScoreScanLines(std::span<const perception::LineSegment> li
 }
 
 std::vector<ExtractorScore> ScoreExtractors(std::span<const TruthScan> scans,
-                                            const sim::LinesConfig& config) {
+                                            const sim::LinesConfig& config,
+                                            const KnownRoundObjects* known) {
   std::vector<ExtractorScore> scores;
   for (const std::string& name : config.extractors) {
     const auto extractor = sim::MakeLineExtractor(name, config);
@@ -87,6 +89,10 @@ std::vector<ExtractorScore> ScoreExtractors(std::span<const TruthScan> scans,
       const auto start = std::chrono::steady_clock::now();
       perception::ExtractedFeatures features = extractor->ExtractFeatures(scan.points);
       std::vector<perception::LineSegment>& lines = features.lines;
+      if (known != nullptr) {
+        perception::RemoveChordsOfKnownRoundObjects(scan.points, known->circles,
+                                                    known->noise_sigma_m, {}, &lines);
+      }
       seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       result.score.Add(ScoreScanLines(lines, scan, config.scoring));
       ScanLines found;

@@ -61,9 +61,19 @@ perception::LineScore ScoreScanLines(std::span<const perception::LineSegment> li
                                      const TruthScan& scan,
                                      const perception::LineScoringOptions& options);
 
+// Round objects found in a lower-noise view of the spot every scan was taken from
+// (seed000_rooms.round_objects_from_scans); `noise_sigma_m` is one scan's range noise.
+struct KnownRoundObjects {
+  std::vector<perception::CircleFeature> circles;
+  double noise_sigma_m = 0.01;
+};
+
 // Runs each of config.extractors on every scan and scores it (perception/lines/line_scoring.h).
+// With `known`, every extractor's lines that are chords of a known round object are removed from
+// each scan before scoring (perception/lines/chords_of_known_round_objects.h).
 std::vector<ExtractorScore> ScoreExtractors(std::span<const TruthScan> scans,
-                                            const sim::LinesConfig& config);
+                                            const sim::LinesConfig& config,
+                                            const KnownRoundObjects* known = nullptr);
 
 // Adds lines.<extractor>.{recall, precision, sigma_r_m, sigma_alpha_deg, points_per_line,
 // lines_per_scan} and lines.scans to `metrics`. A scorer never reports a number against empty

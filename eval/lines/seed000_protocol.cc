@@ -90,8 +90,8 @@ int Seed000Protocol(const ProtocolContext& context) {
                 "extractor", "lines", "reduction", "recall", "prec");
   }
   for (const eval::Seed000Room& room : rooms) {
-    const eval::Seed000RoomResult result =
-        eval::RunSeed000Room(config, room, options.scans, options.median_of_scans);
+    const eval::Seed000RoomResult result = eval::RunSeed000Room(
+        config, room, options.scans, options.median_of_scans, options.round_objects_from_scans);
     const std::string stem = room.world_path.stem().string();
     const std::string key = "seed000." + stem;
     for (const LinesCsvRow& row : LinesCsvRows(result.scores, stem)) line_rows.push_back(row);

@@ -1,9 +1,11 @@
 #include "eval/lines/seed000_rooms.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 
 #include "msgs/shortest_number.h"
+#include "perception/lines/round_objects_of_quiet_scan.h"
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
 #include "sim/config/robot_catalog.h"
@@ -40,6 +42,7 @@ Seed000RoomsOptions ReadSeed000RoomsOptions(const sim::ExperimentConfig& config)
   if (!(options.range_cut_m > 0.0)) fields.Fail("range_cut_m", "must be > 0");
   fields.Get("rig_at", &options.rig_at);
   fields.Get("median_of_scans", &options.median_of_scans);
+  fields.Get("round_objects_from_scans", &options.round_objects_from_scans);
   if (options.rig_at != "origin" && options.rig_at != "spawn") {
     fields.Fail("rig_at", "expected origin or spawn, got '" + options.rig_at + "'");
   }
@@ -161,10 +164,28 @@ void MedianOfScans(std::vector<sim::LaserRecord>* records) {
   for (auto& record : *records) record.scan.ranges_m = median;
 }
 
+// The round objects of the rig's spot, found in the per-beam median of its scans
+// (perception::RoundObjectsOfQuietScan) with split_and_merge's options, its noise sigma scaled to
+// the median's: the median of n Gaussian draws has 1.25 sigma / sqrt(n).
+KnownRoundObjects RoundObjectsOfMedianScan(const BackToBackScans& rig, double range_cut_m,
+                                           const sim::LinesConfig& lines) {
+  BackToBackScans median = rig;
+  MedianOfScans(&median.front);
+  MedianOfScans(&median.back);
+  KnownRoundObjects known;
+  perception::SplitAndMergeOptions quiet = lines.options.split_and_merge;
+  known.noise_sigma_m = quiet.breakpoints.sigma_m;
+  const std::vector<TruthScan> scans = MakeTruthScans(median, range_cut_m);
+  if (scans.empty()) return known;
+  quiet.breakpoints.sigma_m *= 1.2533 / std::sqrt(static_cast<double>(rig.front.size()));
+  known.circles = perception::RoundObjectsOfQuietScan(scans.front().points, quiet);
+  return known;
+}
+
 }  // namespace
 
 Seed000RoomResult RunSeed000Room(const sim::ExperimentConfig& config, const Seed000Room& room,
-                                 int scans, bool median_of_scans) {
+                                 int scans, bool median_of_scans, bool round_objects_from_scans) {
   sim::ExperimentConfig room_config = config;
   room_config.world = room.world;
   room_config.world_path = room.world_path;
@@ -190,7 +211,12 @@ Seed000RoomResult RunSeed000Room(const sim::ExperimentConfig& config, const Seed
   result.scans = MakeTruthScans(result.rig, room.range_cut_m);
   sim::LinesConfig lines = config.lines;
   if (!lines.given) lines.extractors = perception::LineExtractorNames();
-  result.scores = ScoreExtractors(result.scans, lines);
+  if (round_objects_from_scans) {
+    const KnownRoundObjects known = RoundObjectsOfMedianScan(result.rig, room.range_cut_m, lines);
+    result.scores = ScoreExtractors(result.scans, lines, &known);
+  } else {
+    result.scores = ScoreExtractors(result.scans, lines);
+  }
   return result;
 }
 

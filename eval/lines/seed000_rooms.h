@@ -44,6 +44,13 @@ struct Seed000RoomsOptions {
   // in fewer than half of them gives none), so each extractor sees the same lower-noise scan
   // `scans` times. Set the extractors' noise (breakpoints.sigma_m) to match (docs/lines.md).
   bool median_of_scans = false;
+  // OPTION, off by default (outside seed 000's protocol, where each scan stands alone): every
+  // scan keeps its own lines, scored on its own, but split_and_merge also runs once on the
+  // per-beam median of the `scans` scans (its noise sigma scaled to the median's, 1.25 /
+  // sqrt(scans)), and every extractor's line that is a chord of a round object found there is
+  // dropped from each scan (perception/lines/round_objects_of_quiet_scan.h; docs/lines.md, stop
+  // 63).
+  bool round_objects_from_scans = false;
   std::vector<Seed000Room> rooms;
 };
 
@@ -66,6 +73,7 @@ struct Seed000RoomResult {
 
 // Two back-to-back lasers at the room's origin facing +x and -x, `scans` pairs, every extractor.
 Seed000RoomResult RunSeed000Room(const sim::ExperimentConfig& config, const Seed000Room& room,
-                                 int scans, bool median_of_scans = false);
+                                 int scans, bool median_of_scans = false,
+                                 bool round_objects_from_scans = false);
 
 }  // namespace plywood::eval
