@@ -379,13 +379,13 @@ TEST(CliOutputDirectoryTest, ReplayOntoAnEarlierReplayNeedsForce) {
   const std::string replay = "replay " + log_file.string() + " --out " + out.string();
   ASSERT_EQ(RunPlywood(replay, dir).exit_code, 0);
   EXPECT_NE(Slurp(out / "config.yaml").find("extractor: split_and_merge"), std::string::npos);
-  WriteFile(out / "stale.png", "x");
+  WriteFile(out / "snapshot.png", "x");  // a name a run writes; a replay does not
   const CliResult refused = RunPlywood(replay, dir);
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_NE(refused.err.find("--force"), std::string::npos) << refused.err;
   const CliResult forced = RunPlywood(replay + " --force", dir);
   ASSERT_EQ(forced.exit_code, 0) << forced.err;
-  EXPECT_FALSE(fs::exists(out / "stale.png"));
+  EXPECT_FALSE(fs::exists(out / "snapshot.png"));
   EXPECT_TRUE(fs::exists(out / "metrics.json"));
 }
 

@@ -8,6 +8,8 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
 #include <string_view>
 
 #include "sim/config/config_error.h"
@@ -22,10 +24,9 @@ namespace fs = std::filesystem;
 
 constexpr const char* kStagingInfix = ".partial-";
 
-// Every file name a run or a protocol writes (docs/run_outputs.md), and the patterns of the ones
-// named after something (trajectory.<estimator>.tum, <room>.png, cloud_<name>.png). --force
-// removes these and nothing else.
-bool IsRunOutputFile(const std::string& name) {
+// Every file name a run or a protocol writes (docs/run_outputs.md). --force removes these and
+// nothing else.
+bool IsFixedRunOutputName(const std::string& name) {
   static constexpr std::string_view kNames[] = {"config.yaml",         "metrics.json",
                                                 "timing.json",         "cognitive_map.json",
                                                 "trajectory.csv",      "walls.csv",
@@ -44,25 +45,55 @@ bool IsRunOutputFile(const std::string& name) {
   for (std::string_view known : kNames) {
     if (name == known) return true;
   }
-  if (name.starts_with("trajectory.") && name.ends_with(".tum")) return true;
-  return name.ends_with(".png");  // pictures a protocol names after a room or a cloud
+  return name.starts_with("trajectory.") && name.ends_with(".tum");
 }
 
-// The first entry under `dir` that no run writes, or empty when there is none. Subfolders count as
-// run output when everything in them does (UMBmark's before/cw_1/...).
-fs::path FirstForeignEntry(const fs::path& dir) {
-  for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
+// The files a finished run lists in its complete.json (paths relative to its folder), or nothing
+// when it has no readable record (a run older than the record, a killed run's staging folder).
+std::optional<std::set<std::string>> ListedRunFiles(const fs::path& dir) {
+  std::error_code error;
+  if (!fs::is_regular_file(dir / kRunCompleteFile, error)) return std::nullopt;
+  const nlohmann::json record =
+      nlohmann::json::parse(ReadTextFile(dir / kRunCompleteFile), nullptr, false);
+  if (!record.is_object() || !record.contains("files") || !record["files"].is_object()) {
+    return std::nullopt;
+  }
+  std::set<std::string> listed;
+  for (const auto& [name, size] : record["files"].items()) listed.insert(name);
+  return listed;
+}
+
+// The first entry under `folder`, inside the run folder `root`, that no run writes. A fixed name
+// (a run of an older version may have left one its successor does not write) is the run's; a
+// picture named after a room or a cloud (<room>.png) only when the run's record lists it, or by
+// its name when there is no record. A subfolder is the run's when everything in it is and it is no
+// finished run of its own: a protocol's runs (UMBmark's before/cw_1) have no complete.json.
+fs::path FirstForeignEntryBelow(const fs::path& root, const fs::path& folder,
+                                const std::optional<std::set<std::string>>& listed) {
+  for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
     if (entry.is_symlink()) return entry.path();
     if (entry.is_directory()) {
-      const fs::path inner = FirstForeignEntry(entry.path());
+      if (fs::exists(entry.path() / kRunCompleteFile)) return entry.path();
+      const fs::path inner = FirstForeignEntryBelow(root, entry.path(), listed);
       if (!inner.empty()) return inner;
       continue;
     }
-    if (!entry.is_regular_file() || !IsRunOutputFile(entry.path().filename().string())) {
-      return entry.path();
-    }
+    if (!entry.is_regular_file()) return entry.path();
+    const std::string name = entry.path().filename().string();
+    if (IsFixedRunOutputName(name)) continue;
+    const bool written =
+        listed ? listed->contains(entry.path().lexically_relative(root).generic_string())
+               : name.ends_with(".png");
+    if (!written) return entry.path();
   }
   return {};
+}
+
+// The first entry under `dir` that no run writes, or empty when there is none. By names alone, a
+// user's own picture (any *.png) and another run put in a subfolder (`--out /tmp/o/S` beside
+// `--out /tmp/o`) passed as the run's, and --force deleted them (s63).
+fs::path FirstForeignEntry(const fs::path& dir) {
+  return FirstForeignEntryBelow(dir, dir, ListedRunFiles(dir));
 }
 
 // `path` absolute and without a trailing '/' ("runs/x/" and "runs/x" are one target).

@@ -119,6 +119,44 @@ TEST(RunDirectoryTest, ForceRefusesARunFolderThatAlsoHoldsAUsersFiles) {
   }
 }
 
+// A picture the finished run's complete.json does not list is the user's, and a subfolder with a
+// complete.json of its own another run (docs/geometric_map.md's `--out /tmp/o/S` beside `--out
+// /tmp/o`). By name alone both passed as the run's own, and --force deleted them (s63).
+TEST(RunDirectoryTest, ForceRefusesAPictureOrARunTheFinishedRunDidNotWrite) {
+  const fs::path dir = MakeTempDir("run_directory_unlisted");
+  const fs::path run = dir / "run";
+  WriteSmallRun(run, "small");
+  WriteFile(run / "before" / "cw_1" / "metrics.json", "{}\n");  // a protocol's own run
+  WriteCompletionRecord(run);
+  WriteFile(run / "timing.json", "{}\n");  // written beside the record, not in it
+  const auto expect_refused_naming = [&run](const std::string& foreign) {
+    try {
+      StagedRunDirectory staged(run, true);
+      ADD_FAILURE() << "--force would have deleted " << foreign;
+    } catch (const ConfigError& e) {
+      EXPECT_NE(std::string(e.what()).find("also " + foreign), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("which no run writes"), std::string::npos) << e.what();
+    }
+  };
+  WriteFile(run / "my_figure.png", "the user's\n");
+  expect_refused_naming("my_figure.png");
+  EXPECT_EQ(ReadTextFile(run / "my_figure.png"), "the user's\n");
+  fs::remove(run / "my_figure.png");
+  WriteSmallRun(run / "seed2", "another");
+  WriteCompletionRecord(run / "seed2");
+  expect_refused_naming("seed2, ");
+  EXPECT_EQ(WhyNotAFinishedRun(run / "seed2"), "");
+  fs::remove_all(run / "seed2");
+  {  // what the run listed, timing.json and the record itself are replaced as before
+    StagedRunDirectory staged(run, true);
+    WriteSmallRun(staged.staging(), "new");
+    staged.Commit();
+  }
+  EXPECT_FALSE(fs::exists(run / "before"));
+  EXPECT_FALSE(fs::exists(run / "timing.json"));
+  EXPECT_EQ(ReadTextFile(run / "config.yaml"), "name: new\nseed: 1\n");
+}
+
 TEST(RunDirectoryTest, OtherFilesAreNeverDeletedEvenWithForce) {
   const fs::path dir = MakeTempDir("run_directory_foreign");
   WriteFile(dir / "thesis.tex", "\\documentclass{article}\n");
