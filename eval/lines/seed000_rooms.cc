@@ -29,6 +29,35 @@ std::filesystem::path ResolveWorld(const std::string& text, const sim::Experimen
   fields.Fail(key, "no such file: " + text);
 }
 
+// round_objects_from_scans where it has nothing to go on ran as if it did (s63): with one scan the
+// "median" is that scan, its noise scaled up by 1.25; with median_of_scans the extractors already
+// see the median, in which the round objects were looked for with the noise scaled twice; with
+// split_and_merge's round-object stage off it found nothing and changed no figure.
+void RefuseRoundObjectsFromScansItCannotUse(const sim::ExperimentConfig& config,
+                                            const Seed000RoomsOptions& options,
+                                            const sim::YamlFields& fields) {
+  if (!options.round_objects_from_scans) return;
+  const std::string field = "round_objects_from_scans";
+  if (options.scans < 2) {
+    fields.Fail(field, "needs the spot's other scans, but scans is " +
+                           std::to_string(options.scans) +
+                           ": the median of one scan is that scan (set scans: 2 or more, or "
+                           "round_objects_from_scans: false)");
+  }
+  if (options.median_of_scans) {
+    fields.Fail(field,
+                "cannot be combined with median_of_scans: the extractors then see the median "
+                "scan itself, and the round objects would be looked for in a median of medians "
+                "with its noise scaled down twice; set one of the two");
+  }
+  if (!config.lines.options.split_and_merge.round_objects.reject_round_objects) {
+    fields.Fail(field,
+                "finds round objects with split_and_merge's round-object stage, which "
+                "lines.split_and_merge.reject_round_objects: false turns off, so it would change "
+                "no figure; set one of the two");
+  }
+}
+
 }  // namespace
 
 Seed000RoomsOptions ReadSeed000RoomsOptions(const sim::ExperimentConfig& config) {
@@ -43,6 +72,7 @@ Seed000RoomsOptions ReadSeed000RoomsOptions(const sim::ExperimentConfig& config)
   fields.Get("rig_at", &options.rig_at);
   fields.Get("median_of_scans", &options.median_of_scans);
   fields.Get("round_objects_from_scans", &options.round_objects_from_scans);
+  RefuseRoundObjectsFromScansItCannotUse(config, options, fields);
   if (options.rig_at != "origin" && options.rig_at != "spawn") {
     fields.Fail("rig_at", "expected origin or spawn, got '" + options.rig_at + "'");
   }

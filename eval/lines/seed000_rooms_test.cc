@@ -227,5 +227,43 @@ TEST(Seed000RoomsTest, RoomsOfOneNameAndNegativePaperLinesAreRefused) {
             "");
 }
 
+// s63 (forty-seventh pass): round_objects_from_scans where it has nothing to go on ran, exit 0:
+// with scans: 1 the "median" was the one scan with its noise scaled up 1.25 times
+// (polar_neighbour's precision 0.9231 -> 1 on a generated columns room from that one scan); with
+// median_of_scans the round objects were looked for in a median of medians with the noise scaled
+// twice; with lines.split_and_merge.reject_round_objects: false every figure was the option's off
+// figure.
+TEST(Seed000RoomsTest, RoundObjectsFromScansWithNothingToGoOnIsRefused) {
+  const auto refusal = [](const std::vector<std::string>& overrides) -> std::string {
+    std::vector<std::string> all{"seed000_rooms.round_objects_from_scans=true"};
+    all.insert(all.end(), overrides.begin(), overrides.end());
+    try {
+      ReadSeed000RoomsOptions(Config(all));
+    } catch (const sim::ConfigError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_NE(refusal({"seed000_rooms.scans=1"})
+                .find("seed000_rooms.yaml: seed000_rooms.round_objects_from_scans: needs the "
+                      "spot's other scans, but scans is 1"),
+            std::string::npos);
+  EXPECT_NE(refusal({"seed000_rooms.median_of_scans=true"})
+                .find("seed000_rooms.yaml: seed000_rooms.round_objects_from_scans: cannot be "
+                      "combined with median_of_scans"),
+            std::string::npos);
+  EXPECT_NE(refusal({"lines.split_and_merge.reject_round_objects=false"})
+                .find("seed000_rooms.yaml: seed000_rooms.round_objects_from_scans: finds round "
+                      "objects with split_and_merge's round-object stage, which "
+                      "lines.split_and_merge.reject_round_objects: false turns off"),
+            std::string::npos);
+  // Two scans, and each of the three with the option off, are read.
+  EXPECT_EQ(refusal({}), "");
+  for (const char* alone : {"seed000_rooms.scans=1", "seed000_rooms.median_of_scans=true",
+                            "lines.split_and_merge.reject_round_objects=false"}) {
+    EXPECT_NO_THROW(ReadSeed000RoomsOptions(Config({alone}))) << alone;
+  }
+}
+
 }  // namespace
 }  // namespace plywood::eval

@@ -49,15 +49,30 @@ bool IsFixedRunOutputName(const std::string& name) {
 }
 
 // The files a finished run lists in its complete.json (paths relative to its folder), or nothing
-// when it has no readable record (a run older than the record, a killed run's staging folder).
-std::optional<std::set<std::string>> ListedRunFiles(const fs::path& dir) {
+// when it has no record (a run older than the record, a killed run's staging folder). A record
+// that is there but unreadable (corrupt, or a folder of that name) lists nothing: it was read as
+// no record, so a user's picture passed by its name and --force deleted it (s63).
+bool HasRecord(const fs::path& dir) {
   std::error_code error;
-  if (!fs::is_regular_file(dir / kRunCompleteFile, error)) return std::nullopt;
-  const nlohmann::json record =
+  return fs::exists(fs::symlink_status(dir / kRunCompleteFile, error));
+}
+
+// The record's JSON when it is a completion record ({"files": {...}}), else null.
+nlohmann::json ReadableRecord(const fs::path& dir) {
+  std::error_code error;
+  if (!fs::is_regular_file(dir / kRunCompleteFile, error)) return nullptr;
+  nlohmann::json record =
       nlohmann::json::parse(ReadTextFile(dir / kRunCompleteFile), nullptr, false);
   if (!record.is_object() || !record.contains("files") || !record["files"].is_object()) {
-    return std::nullopt;
+    return nullptr;
   }
+  return record;
+}
+
+std::optional<std::set<std::string>> ListedRunFiles(const fs::path& dir) {
+  if (!HasRecord(dir)) return std::nullopt;
+  const nlohmann::json record = ReadableRecord(dir);
+  if (record.is_null()) return std::set<std::string>();
   std::set<std::string> listed;
   for (const auto& [name, size] : record["files"].items()) listed.insert(name);
   return listed;
@@ -72,6 +87,10 @@ fs::path FirstForeignEntryBelow(const fs::path& root, const fs::path& folder,
                                 const std::optional<std::set<std::string>>& listed) {
   for (const fs::directory_entry& entry : fs::directory_iterator(folder)) {
     if (entry.is_symlink()) return entry.path();
+    // A run writes its fixed names as files: a folder so named (complete.json/) is not its own.
+    if (entry.is_directory() && IsFixedRunOutputName(entry.path().filename().string())) {
+      return entry.path();
+    }
     if (entry.is_directory()) {
       if (fs::exists(entry.path() / kRunCompleteFile)) return entry.path();
       const fs::path inner = FirstForeignEntryBelow(root, entry.path(), listed);
@@ -260,11 +279,19 @@ StagedRunDirectory::StagedRunDirectory(const fs::path& target, bool force)
     }
     const fs::path foreign = FirstForeignEntry(target_);
     if (!foreign.empty()) {
+      const std::string what = foreign.lexically_relative(target_).string();
+      const bool unreadable = HasRecord(target_) && ReadableRecord(target_).is_null();
+      const std::string why =
+          !unreadable ? "holds an earlier run and also " + what + ", which no run writes"
+          : what == kRunCompleteFile
+              ? "holds an earlier run whose " + what + " is a folder, not a completion record"
+              : "holds an earlier run whose " + std::string(kRunCompleteFile) +
+                    " is not a completion record, and also " + what +
+                    ", which only that record could show to be the run's";
       throw ConfigError(given_.string(), "",
-                        "holds an earlier run and also " +
-                            foreign.lexically_relative(target_).string() +
-                            ", which no run writes; --force deletes only a run's own files: move "
-                            "it away or choose another --out");
+                        why +
+                            "; --force deletes only a run's own files: move it away or choose "
+                            "another --out");
     }
     replace_ = true;
   }

@@ -157,6 +157,49 @@ TEST(RunDirectoryTest, ForceRefusesAPictureOrARunTheFinishedRunDidNotWrite) {
   EXPECT_EQ(ReadTextFile(run / "config.yaml"), "name: new\nseed: 1\n");
 }
 
+// s63 (forty-seventh pass): a complete.json that is there but no completion record (corrupt, or a
+// folder of that name) was read as no record at all, so a user's picture passed by its name and a
+// file in the folder by its fixed name, and --force deleted both (exit 0). Both are now refused,
+// naming the record; a record listing paths outside the folder (../x) deletes nothing there.
+TEST(RunDirectoryTest, ForceRefusesAPictureOrFolderAnUnreadableRecordCannotVouchFor) {
+  const fs::path dir = MakeTempDir("run_directory_unreadable_record");
+  const fs::path run = dir / "run";
+  const auto refusal = [&run]() -> std::string {
+    try {
+      StagedRunDirectory staged(run, true);
+    } catch (const ConfigError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  WriteSmallRun(run, "small");
+  WriteFile(run / kRunCompleteFile, "{\"files\": ");  // cut short
+  WriteFile(run / "my_figure.png", "the user's\n");
+  EXPECT_NE(refusal().find("holds an earlier run whose complete.json is not a completion record, "
+                           "and also my_figure.png, which only that record could show to be the "
+                           "run's; --force deletes only a run's own files"),
+            std::string::npos);
+  EXPECT_EQ(ReadTextFile(run / "my_figure.png"), "the user's\n");
+  fs::remove(run / kRunCompleteFile);
+  WriteFile(run / kRunCompleteFile / "config.yaml", "the user's\n");
+  fs::remove(run / "my_figure.png");
+  EXPECT_NE(refusal().find("holds an earlier run whose complete.json is a folder, not a completion "
+                           "record"),
+            std::string::npos);
+  EXPECT_EQ(ReadTextFile(run / kRunCompleteFile / "config.yaml"), "the user's\n");
+  // A record that lists a file outside the run's folder: the run is replaced, the file kept.
+  fs::remove_all(run / kRunCompleteFile);
+  WriteFile(dir / "x", "beside the run\n");
+  WriteFile(run / kRunCompleteFile, "{\"files\": {\"../x\": 15, \"config.yaml\": 20}}\n");
+  {
+    StagedRunDirectory staged(run, true);
+    WriteSmallRun(staged.staging(), "new");
+    staged.Commit();
+  }
+  EXPECT_EQ(ReadTextFile(run / "config.yaml"), "name: new\nseed: 1\n");
+  EXPECT_EQ(ReadTextFile(dir / "x"), "beside the run\n");
+}
+
 TEST(RunDirectoryTest, OtherFilesAreNeverDeletedEvenWithForce) {
   const fs::path dir = MakeTempDir("run_directory_foreign");
   WriteFile(dir / "thesis.tex", "\\documentclass{article}\n");
