@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
 
+#include "plywood_paths.h"
 #include "tests/support/cli_test_support.h"
 #include "tests/support/mujoco_test_support.h"
 
@@ -36,13 +38,36 @@ ScriptResult RunTable(const fs::path& out, const std::string& seeds) {
           Slurp(out / "stderr")};
 }
 
-// A finished sweep's results.csv with the columns the table reads (and one it does not).
-void WriteSweep(const fs::path& folder, const std::string& rows) {
+ScriptResult RunScript(const fs::path& out, const std::string& args) {
+  const std::string command = (SourceRoot() / "scripts" / "sonar_map_held_out").string() + " " +
+                              args + " >" + (out / "stdout").string() + " 2>" +
+                              (out / "stderr").string();
+  const int status = std::system(command.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, Slurp(out / "stdout"),
+          Slurp(out / "stderr")};
+}
+
+// A finished sweep's results.csv with the columns the table reads (and one it does not), and its
+// manifest's cells.csv: `cells` cells (by default one per row of results.csv).
+void WriteSweep(const fs::path& folder, const std::string& rows, int cells = -1) {
   fs::create_directories(folder);
   WriteFile(folder / "results.csv",
             "id,world,seed,occupancy.error,occupancy.grid_error,sensors.bumpers.contact_samples,"
             "occupancy.error_without_narrow_gaps\n" +
                 rows);
+  if (cells < 0) cells = static_cast<int>(std::count(rows.begin(), rows.end(), '\n'));
+  std::string manifest = "index,id,world,seed\n";
+  for (int i = 0; i < cells; ++i)
+    manifest += std::to_string(i) + ",c" + std::to_string(i) + ",w,1\n";
+  WriteFile(folder / "cells.csv", manifest);
+}
+
+void ExpectOneLineNaming(const ScriptResult& r, const std::string& text) {
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(r.err.find("Traceback"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(text), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+  EXPECT_EQ(r.out.find("| generator seed"), std::string::npos) << r.out;  // no half table
 }
 
 TEST(SonarMapHeldOutScriptTest, TabulatesEachSweepPoolsThemAndReadsRoomsByTheirMeans) {
@@ -87,6 +112,42 @@ TEST(SonarMapHeldOutScriptTest, AFolderWithoutAFinishedSweepIsNamedInOneLine) {
   EXPECT_EQ(r.err.find("Traceback"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find((dir / "g5-net" / "results.csv").string()), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+}
+
+// s63 (forty-seventh pass): results.csv holds only a sweep's finished runs, so a sweep with failed
+// runs (plywood sweep exits 1, failures.csv) or one killed and then collected was tabulated as if
+// whole, under its generator seed, exit 0; a seed listed twice counted its runs twice in the pooled
+// figures and the rooms.
+TEST(SonarMapHeldOutScriptTest, ASweepMissingRunsOrASeedListedTwiceIsNotTabulated) {
+  const fs::path dir = MakeTempDir("SonarMapHeldOutPartial");
+  WriteSweep(dir / "g1-net", "a,w0.xml,1,0.01,0.5,0,0.01\n", 3);
+  WriteFile(dir / "g1-net" / "failures.csv", "id,exit_code,error\nc1,2,plywood: x\n");
+  ExpectOneLineNaming(RunTable(dir, "1"), (dir / "g1-net" / "results.csv").string() +
+                                              ": holds 1 of the sweep's 3 runs (1 failed, in "
+                                              "failures.csv; 1 unfinished)");
+  WriteSweep(dir / "g2-net", "a,w0.xml,1,0.01,0.5,0,0.01\n");
+  ExpectOneLineNaming(RunTable(dir, "2,2"), "--seeds: 2 is listed twice");
+  ExpectOneLineNaming(RunTable(dir, "-2"), "--seeds: -2: a generator seed is >= 0");
+  // A results.csv without the sweep's manifest beside it is no sweep's.
+  fs::remove(dir / "g2-net" / "cells.csv");
+  ExpectOneLineNaming(RunTable(dir, "2"), (dir / "g2-net" / "cells.csv").string());
+}
+
+// s63 (forty-seventh pass): a --build without apps/plywood, an --out under a file and a negative
+// --jobs stopped with a Python traceback (or plywood's line and then the script's).
+TEST(SonarMapHeldOutScriptTest, AMissingProgramAnUnwritableOutOrNegativeJobsIsNamedInOneLine) {
+  const fs::path dir = MakeTempDir("SonarMapHeldOutFlags");
+  WriteFile(dir / "a_file", "not a folder\n");
+  ExpectOneLineNaming(
+      RunScript(dir, "--seeds 1 --build " + (dir / "nobuild").string() + " --out " +
+                         (dir / "o").string()),
+      "--build: " + (dir / "nobuild" / "apps" / "plywood").string() + ": no such program");
+  ExpectOneLineNaming(RunScript(dir, "--seeds 1 --build " + fs::path(PLYWOOD_BINARY_DIR).string() +
+                                         " --out " + (dir / "a_file" / "o").string()),
+                      "--out: " + (dir / "a_file" / "o").string() + ": cannot write");
+  ExpectOneLineNaming(RunScript(dir, "--seeds 1 --jobs -1 --out " + (dir / "o").string()),
+                      "--jobs: must be >= 0");
+  EXPECT_FALSE(fs::exists(dir / "o"));
 }
 
 }  // namespace
