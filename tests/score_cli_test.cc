@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "sim/runner/run_directory.h"
@@ -302,6 +303,26 @@ TEST(ScoreCliTest, AnOutThatCannotBeWrittenIsRefusedBeforeAnyFigureIsPrinted) {
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "not one line: " << r.err;
   }
   EXPECT_FALSE(fs::exists(dir / "s.json"));
+}
+
+// s63 (forty-seventh pass): an --out in a folder that does not exist, or under a file, printed the
+// whole table of figures and only then "cannot write: No such file or directory", exit 2.
+TEST(ScoreCliTest, AnOutInAFolderThatIsNotThereIsRefusedBeforeAnyFigureIsPrinted) {
+  const fs::path dir = testing::MakeTempDir("score_cli_out_folder");
+  testing::WriteFile(dir / "a_file", "not a folder\n");
+  const std::string tum = (RunDir() / "trajectory.encoder.tum").string();
+  for (const auto& [out, why] : std::vector<std::pair<fs::path, std::string>>{
+           {dir / "absent" / "s.json", (dir / "absent").string() + " does not exist"},
+           {dir / "a_file" / "s.json", (dir / "a_file").string() + " is not a folder"}}) {
+    SCOPED_TRACE(out.string());
+    const auto r = RunPlywood(
+        "score trajectory " + RunDir().string() + " " + tum + " --out " + out.string(), dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(r.err.rfind("plywood: " + out.string() + ": --out: cannot write: " + why, 0), 0u)
+        << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "not one line: " << r.err;
+  }
 }
 
 // s58: a `plywood replay` folder passes the finished-run rules (config.yaml, metrics.json,

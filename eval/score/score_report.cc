@@ -38,6 +38,15 @@ void CheckScoreOut(const std::filesystem::path& out, const std::filesystem::path
   if (fs::is_directory(target)) {
     throw sim::ConfigError(out.string(), "--out", "is a folder; give a file name (scores.json)");
   }
+  // A folder that is not there (or a file where it should be) printed the whole table of figures
+  // and then "cannot write: No such file or directory", exit 2 (s63).
+  const fs::path folder = target.parent_path();
+  if (!fs::is_directory(folder, error)) {
+    throw sim::ConfigError(
+        out.string(), "--out",
+        "cannot write: " + folder.string() +
+            (fs::exists(folder, error) ? " is not a folder" : " does not exist; make it first"));
+  }
 }
 
 void WriteScoreJson(const ScoreReport& report, const std::filesystem::path& out,
