@@ -213,4 +213,19 @@ TEST(WorldsCliTest, AnIndexNamingFilesOutsideTheFolderRemovesNothing) {
 }
 
 }  // namespace
+// s63 (forty-seventh pass): a folder holding an index.csv of the user's own was refused as having
+// "no index.csv", naming as missing the file that was there.
+TEST(WorldsCliTest, AFolderWithAnIndexOfTheUsersOwnIsNamedForWhatItHolds) {
+  const fs::path dir = MakeTempDir("worlds_cli_users_index");
+  testing::WriteFile(dir / "out" / "index.csv", "my,own,table\n");
+  const auto r =
+      RunPlywood("worlds generate room --count 1 --seed 5 --out " + (dir / "out").string(), dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err, "plywood: worlds generate: --out: " + (dir / "out").string() +
+                       " holds files that are not a world generation (its index.csv is not a "
+                       "generation's: the first line is not the world index header); choose an "
+                       "empty or new folder\n");
+  EXPECT_EQ(Slurp(dir / "out" / "index.csv"), "my,own,table\n");
+}
+
 }  // namespace plywood

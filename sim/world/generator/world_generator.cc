@@ -83,9 +83,13 @@ void RemoveEarlierGeneration(const std::filesystem::path& dir) {
   std::ifstream index(dir / "index.csv");
   std::string line;
   if (!index || !std::getline(index, line) || line + "\n" != kWorldIndexHeader) {
-    throw std::invalid_argument("out: " + dir.string() +
-                                " holds files that are not a world generation (no index.csv); "
-                                "choose an empty or new folder");
+    // An index.csv of the user's own was named as missing (s63).
+    throw std::invalid_argument(
+        "out: " + dir.string() + " holds files that are not a world generation (" +
+        (fs::exists(dir / "index.csv") ? "its index.csv is not a generation's: the first line is "
+                                         "not the world index header"
+                                       : "no index.csv") +
+        "); choose an empty or new folder");
   }
   std::vector<fs::path> generated{dir / "index.csv"};
   for (int line_number = 2; std::getline(index, line); ++line_number) {
