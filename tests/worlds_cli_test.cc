@@ -228,4 +228,25 @@ TEST(WorldsCliTest, AFolderWithAnIndexOfTheUsersOwnIsNamedForWhatItHolds) {
   EXPECT_EQ(Slurp(dir / "out" / "index.csv"), "my,own,table\n");
 }
 
+// s63 (forty-seventh pass): a folder (or a link) under a name an earlier generation wrote stopped
+// the second generation's removal part way: index.csv and the worlds before it were gone, and the
+// line was "plywood: DIR/room_s1_00000.json: Directory not empty", exit 1.
+TEST(WorldsCliTest, AFolderUnderAGeneratedNameRemovesNothing) {
+  const fs::path dir = MakeTempDir("worlds_cli_folder_named_json");
+  const fs::path out = dir / "out";
+  ASSERT_EQ(
+      RunPlywood("worlds generate room --count 1 --seed 1 --out " + out.string(), dir).exit_code,
+      0);
+  fs::remove(out / "room_s1_00000.json");
+  testing::WriteFile(out / "room_s1_00000.json" / "notes", "mine\n");
+  const auto r = RunPlywood("worlds generate room --count 1 --seed 1 --out " + out.string(), dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err, "plywood: worlds generate: --out: " + out.string() +
+                       " holds room_s1_00000.json, which is not a file a world generation wrote "
+                       "(not a plain file); nothing was removed; choose another folder\n");
+  EXPECT_TRUE(fs::exists(out / "index.csv"));
+  EXPECT_TRUE(fs::exists(out / "room_s1_00000.xml"));
+  EXPECT_EQ(Slurp(out / "room_s1_00000.json" / "notes"), "mine\n");
+}
+
 }  // namespace plywood

@@ -117,6 +117,15 @@ void RemoveEarlierGeneration(const std::filesystem::path& dir) {
                                   entry.path().filename().string() +
                                   ", which no world generation wrote; choose another folder");
     }
+    // A generation writes plain files: a folder of one of their names stopped the removal part way
+    // (index.csv and the worlds before it gone), "Directory not empty", exit 1 (s63).
+    if (!fs::is_regular_file(entry.symlink_status())) {
+      throw std::invalid_argument("out: " + dir.string() + " holds " +
+                                  entry.path().filename().string() +
+                                  ", which is not a file a world generation wrote (" +
+                                  (entry.is_symlink() ? "a symbolic link" : "not a plain file") +
+                                  "); nothing was removed; choose another folder");
+    }
     earlier.push_back(entry.path());
   }
   for (const fs::path& file : earlier) fs::remove(file);
