@@ -138,7 +138,8 @@ std::map<fs::path, long> StagingFolders(const fs::path& target) {
   for (fs::directory_iterator it(target.parent_path(), error), end; !error && it != end;
        it.increment(error)) {
     const std::string name = it->path().filename().string();
-    if (!name.starts_with(prefix) || !it->is_directory()) continue;
+    // A run makes its staging folder itself: a link of that name is the user's (it was deleted).
+    if (!name.starts_with(prefix) || it->is_symlink() || !it->is_directory()) continue;
     const std::string pid = name.substr(prefix.size());
     if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) continue;
     found[it->path()] = std::stol(pid);

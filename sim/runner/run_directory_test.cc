@@ -264,5 +264,20 @@ TEST(RunDirectoryTest, PartialOutputOfAKilledRunIsNamedAndThenCleanedUp) {
   EXPECT_FALSE(fs::exists(dir / ("run.partial-" + std::to_string(gone))));
 }
 
+// s63 (forty-seventh pass): a symbolic link named like a killed run's staging folder
+// (run.partial-PID, pointing at the user's own folder) was taken for one and deleted.
+TEST(RunDirectoryTest, ALinkNamedLikeAStagingFolderIsLeftAlone) {
+  const fs::path dir = MakeTempDir("run_directory_staging_link");
+  WriteFile(dir / "user" / "pic.png", "the user's\n");
+  fs::create_directory_symlink(dir / "user", dir / "run.partial-999999999");
+  {
+    StagedRunDirectory staged(dir / "run", false);
+    WriteSmallRun(staged.staging(), "small");
+    staged.Commit();
+  }
+  EXPECT_TRUE(fs::is_symlink(dir / "run.partial-999999999"));
+  EXPECT_EQ(ReadTextFile(dir / "user" / "pic.png"), "the user's\n");
+}
+
 }  // namespace
 }  // namespace plywood::sim
