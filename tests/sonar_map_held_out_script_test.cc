@@ -117,7 +117,7 @@ TEST(SonarMapHeldOutScriptTest, AFolderWithoutAFinishedSweepIsNamedInOneLine) {
 // s63 (forty-seventh pass): results.csv holds only a sweep's finished runs, so a sweep with failed
 // runs (plywood sweep exits 1, failures.csv) or one killed and then collected was tabulated as if
 // whole, under its generator seed, exit 0; a seed listed twice counted its runs twice in the pooled
-// figures and the rooms.
+// figures and the rooms; a run without a number was sorted as NaN.
 TEST(SonarMapHeldOutScriptTest, ASweepMissingRunsOrASeedListedTwiceIsNotTabulated) {
   const fs::path dir = MakeTempDir("SonarMapHeldOutPartial");
   WriteSweep(dir / "g1-net", "a,w0.xml,1,0.01,0.5,0,0.01\n", 3);
@@ -128,6 +128,15 @@ TEST(SonarMapHeldOutScriptTest, ASweepMissingRunsOrASeedListedTwiceIsNotTabulate
   WriteSweep(dir / "g2-net", "a,w0.xml,1,0.01,0.5,0,0.01\n");
   ExpectOneLineNaming(RunTable(dir, "2,2"), "--seeds: 2 is listed twice");
   ExpectOneLineNaming(RunTable(dir, "-2"), "--seeds: -2: a generator seed is >= 0");
+  // A run without a number (an empty cell) gave `nan` for the mean beside a p90 and worst of a
+  // list sorted with a NaN in it, and its room left out of the rooms above the bar.
+  WriteSweep(dir / "g3-net",
+             "a,w0.xml,1,0.01,0.5,0,0.01\n"
+             "b,w1.xml,1,,0.5,0,0.01\n"
+             "c,w1.xml,2,0.2,0.5,0,0.01\n");
+  ExpectOneLineNaming(RunTable(dir, "3"), (dir / "g3-net" / "results.csv").string() +
+                                              ": line 3 (run b): occupancy.error: expected a "
+                                              "number, got ''");
   // A results.csv without the sweep's manifest beside it is no sweep's.
   fs::remove(dir / "g2-net" / "cells.csv");
   ExpectOneLineNaming(RunTable(dir, "2"), (dir / "g2-net" / "cells.csv").string());
