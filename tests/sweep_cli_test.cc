@@ -1157,9 +1157,12 @@ TEST(SweepCliTest, ResultsOfAnotherBuildOrOfChangedInputsAreNeverKept) {
   }
   EXPECT_EQ(Slurp(out / "results.csv"), results);
 
-  // The whole sweep run by another build: started again from scratch, the same results.
+  // The whole sweep run by another build: started again from scratch, the same results. The
+  // user's own files kept in the folder stay (s63: they were deleted with the runs, exit 0).
   const auto before_rebuild = RunMarkTimes(out);
   SetRecordedBuild(out / "sweep.json", "0123456789abcdef");
+  WriteFile(out / "notes.md", "mine\n");
+  WriteFile(out / "analysis" / "plot.py", "mine\n");
   auto r = RunPlywood(command, dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("another plywood build (build id 0123456789ab"), std::string::npos) << r.err;
@@ -1167,6 +1170,8 @@ TEST(SweepCliTest, ResultsOfAnotherBuildOrOfChangedInputsAreNeverKept) {
   now = RunMarkTimes(out);
   for (const auto& [id, time] : before_rebuild) EXPECT_NE(now.at(id), time) << id << " was kept";
   EXPECT_EQ(Slurp(out / "results.csv"), results);
+  EXPECT_EQ(Slurp(out / "notes.md"), "mine\n");
+  EXPECT_EQ(Slurp(out / "analysis" / "plot.py"), "mine\n");
 
   // An edited experiment: expanded again; cells whose resolved config changed run anew (all six
   // here: the edit is a key every cell inherits), and the table follows the edit.

@@ -480,6 +480,25 @@ std::string WhySweepIsStale(const SweepLayout& layout) {
   return "";
 }
 
+namespace {
+
+// What a sweep writes in its folder besides sweep.yaml and its locks (docs/sweeps.md), and the
+// staged copies of its files. Starting again removes these and nothing else: a user's notes or
+// plots kept in the folder were deleted with the runs (s63).
+bool IsSweepsOwnEntry(const std::string& name) {
+  for (const char* file :
+       {"sweep.json", "cells.json", "cells.csv", "results.csv", "summary.csv", "failures.csv"}) {
+    if (IsFileOrItsStagedCopy(name, file)) return true;
+  }
+  for (const char* folder :
+       {"runs", "logs", "failures", "plots", "worlds", "slurm", "bench-jobs1", "bench-jobsN"}) {
+    if (name == folder) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
 void StartAgainIfStale(const SweepLayout& layout, bool shard, bool quiet) {
   const std::string why = WhySweepIsStale(layout);
   if (why.empty()) return;
@@ -492,11 +511,11 @@ void StartAgainIfStale(const SweepLayout& layout, bool shard, bool quiet) {
     std::fprintf(stderr, "plywood sweep: %s: %s; its results no longer hold: starting again\n",
                  layout.out.c_str(), why.c_str());
   }
-  // Everything but the sweep file and the locks is made from them again (worlds included: the
-  // generator may have changed too).
+  // Everything the sweep wrote but the sweep file and the locks is made from them again (worlds
+  // included: the generator may have changed too).
   for (const auto& entry : fs::directory_iterator(layout.out)) {
     const std::string name = entry.path().filename().string();
-    if (name == "sweep.yaml" || name.ends_with(".lock")) continue;
+    if (name == "sweep.yaml" || name.ends_with(".lock") || !IsSweepsOwnEntry(name)) continue;
     fs::remove_all(entry.path());
   }
 }
