@@ -127,7 +127,10 @@ TEST(SonarMapHeldOutScriptTest, ASweepMissingRunsOrASeedListedTwiceIsNotTabulate
                                               "failures.csv; 1 unfinished)");
   WriteSweep(dir / "g2-net", "a,w0.xml,1,0.01,0.5,0,0.01\n");
   ExpectOneLineNaming(RunTable(dir, "2,2"), "--seeds: 2 is listed twice");
-  ExpectOneLineNaming(RunTable(dir, "-2"), "--seeds: -2: a generator seed is >= 0");
+  ExpectOneLineNaming(RunTable(dir, "-2"), "--seeds: -2: a generator seed is a whole number >= 0");
+  ExpectOneLineNaming(RunTable(dir, "10000000000000000000"),
+                      "--seeds: 10000000000000000000: a generator seed is a whole number >= 0 of "
+                      "at most 19 digits");
   // A run without a number (an empty cell) gave `nan` for the mean beside a p90 and worst of a
   // list sorted with a NaN in it, and its room left out of the rooms above the bar.
   WriteSweep(dir / "g3-net",
