@@ -32,7 +32,7 @@ std::filesystem::path ResolveWorld(const std::string& text, const sim::Experimen
 // round_objects_from_scans where it has nothing to go on ran as if it did (s63): with one scan the
 // "median" is that scan, its noise scaled up by 1.25; with median_of_scans the extractors already
 // see the median, in which the round objects were looked for with the noise scaled twice; with
-// split_and_merge's round-object stage off it found nothing and changed no figure.
+// split_and_merge's round-object stage off, or its noise 0, it found nothing and changed no figure.
 void RefuseRoundObjectsFromScansItCannotUse(const sim::ExperimentConfig& config,
                                             const Seed000RoomsOptions& options,
                                             const sim::YamlFields& fields) {
@@ -49,6 +49,15 @@ void RefuseRoundObjectsFromScansItCannotUse(const sim::ExperimentConfig& config,
                 "cannot be combined with median_of_scans: the extractors then see the median "
                 "scan itself, and the round objects would be looked for in a median of medians "
                 "with its noise scaled down twice; set one of the two");
+  }
+  // With no noise no circle passes the round-object test (its residual over sigma^2), nor does a
+  // line lie within 3 sigma of a rim: every figure was the off figure.
+  if (!(config.lines.options.split_and_merge.breakpoints.sigma_m > 0.0)) {
+    fields.Fail(field,
+                "measures round objects against lines.split_and_merge.breakpoints.sigma_m, "
+                "the scans' range noise, which is " +
+                    msgs::ShortestNumber(config.lines.options.split_and_merge.breakpoints.sigma_m) +
+                    ": no circle can pass, so it would change no figure; give the noise");
   }
   if (!config.lines.options.split_and_merge.round_objects.reject_round_objects) {
     fields.Fail(field,

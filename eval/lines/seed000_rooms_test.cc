@@ -257,10 +257,16 @@ TEST(Seed000RoomsTest, RoundObjectsFromScansWithNothingToGoOnIsRefused) {
                       "objects with split_and_merge's round-object stage, which "
                       "lines.split_and_merge.reject_round_objects: false turns off"),
             std::string::npos);
-  // Two scans, and each of the three with the option off, are read.
+  EXPECT_NE(refusal({"lines.split_and_merge.breakpoints.sigma_m=0"})
+                .find("seed000_rooms.yaml: seed000_rooms.round_objects_from_scans: measures round "
+                      "objects against lines.split_and_merge.breakpoints.sigma_m, the scans' range "
+                      "noise, which is 0"),
+            std::string::npos);
+  // Two scans, and each of the four with the option off, are read.
   EXPECT_EQ(refusal({}), "");
   for (const char* alone : {"seed000_rooms.scans=1", "seed000_rooms.median_of_scans=true",
-                            "lines.split_and_merge.reject_round_objects=false"}) {
+                            "lines.split_and_merge.reject_round_objects=false",
+                            "lines.split_and_merge.breakpoints.sigma_m=0"}) {
     EXPECT_NO_THROW(ReadSeed000RoomsOptions(Config({alone}))) << alone;
   }
 }
