@@ -89,5 +89,37 @@ TEST(SonarMapHeldOutScriptTest, AFolderWithoutAFinishedSweepIsNamedInOneLine) {
   EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
 }
 
+// s63 review: an empty figure in results.csv read as NaN, which sorted anywhere (p90 and worst
+// any run's) and kept its room from ever being "above 0.10"; a sweep with failed runs was
+// tabulated without them; a generator seed listed twice was pooled twice. Each exited 0 with a
+// table. Each is refused in one line now.
+TEST(SonarMapHeldOutScriptTest, AnEmptyFigureAFailedRunOrASeedListedTwiceIsRefused) {
+  const fs::path dir = MakeTempDir("SonarMapHeldOutRefusals");
+  const auto expect_one_line = [](const ScriptResult& r, const std::string& expected) {
+    EXPECT_NE(r.exit_code, 0) << r.out;
+    EXPECT_EQ(r.err.find("Traceback"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+  };
+  WriteSweep(dir / "g1-net",
+             "a,w0.xml,1,0.01,0.5,0,0.01\n"
+             "b,w0.xml,2,,0.5,0,0.01\n"
+             "c,w1.xml,1,0.12,0.5,0,0.02\n");
+  expect_one_line(RunTable(dir, "1"), (dir / "g1-net" / "results.csv").string() +
+                                          ":3: occupancy.error: '' is not a number (run b)");
+  WriteSweep(dir / "g2-net", "a,w0.xml,1,0.01,0.5,0,0.01\n");
+  WriteFile(dir / "g2-net" / "failures.csv",
+            "id,experiment,world,family,profile,seed,exit_code,error\n"
+            "b,e.yaml,w0.xml,seed001,,2,1,diverged\n");
+  expect_one_line(RunTable(dir, "2"),
+                  (dir / "g2-net" / "failures.csv").string() + ": 1 run(s) failed");
+  WriteFile(dir / "g2-net" / "failures.csv",
+            "id,experiment,world,family,profile,seed,exit_code,error\n");
+  expect_one_line(RunTable(dir, "2,2"), "--seeds: 2 is listed 2 times");
+  const ScriptResult once = RunTable(dir, "2");  // the header alone: no run failed
+  EXPECT_EQ(once.exit_code, 0) << once.err;
+  EXPECT_NE(once.out.find("| pooled (1 runs) |"), std::string::npos) << once.out;
+}
+
 }  // namespace
 }  // namespace plywood

@@ -43,6 +43,16 @@ Seed000RoomsOptions ReadSeed000RoomsOptions(const sim::ExperimentConfig& config)
   fields.Get("rig_at", &options.rig_at);
   fields.Get("median_of_scans", &options.median_of_scans);
   fields.Get("round_objects_from_scans", &options.round_objects_from_scans);
+  // With median_of_scans every scan already is the median (its noise the extractors'
+  // breakpoints.sigma_m, set to match): the round objects' search scaled that noise by 1.25 /
+  // sqrt(scans) a second time, 0.4x the scan's, and its chi-square and bulge tests read 2.5x too
+  // many sigmas, without a word (s63 review).
+  if (options.median_of_scans && options.round_objects_from_scans) {
+    fields.Fail("round_objects_from_scans",
+                "true goes with scans that are each their own spot's (median_of_scans: false): "
+                "with median_of_scans: true every scan is already the median, whose noise the "
+                "search would scale by 1.25 / sqrt(scans) a second time; set one of the two");
+  }
   if (options.rig_at != "origin" && options.rig_at != "spawn") {
     fields.Fail("rig_at", "expected origin or spawn, got '" + options.rig_at + "'");
   }
