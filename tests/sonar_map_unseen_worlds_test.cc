@@ -95,7 +95,7 @@ TEST(SonarMapUnseenWorldsTest, MapErrorDoesNotWorsen) {
 // complete at 175-186 s; with squeeze_clearance_m 0 seed 3 stays east (e 0.077, complete at
 // 122 s). Until stop 51 this test ran generator seed 9's world 5, a 0.61 m gap between two boxes
 // met at a slant: with the sensors in step the front check hears the north box's corner 0.19 m
-// beside the path and gives the move up (e 0.046 -> 0.082; docs/sonar_map.md, stop 52).
+// beside the path and gives the move up (e 0.046 -> 0.082; docs/sonar_map/history.md, stop 52).
 std::string PartitionedRoomMjcf(double gap_m) {
   const double w = 3.4, h = 3.0, x = 0.3, centre_y = 0.3;
   const double lo = centre_y - gap_m / 2.0, hi = centre_y + gap_m / 2.0;

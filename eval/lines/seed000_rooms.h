@@ -49,7 +49,7 @@ struct Seed000RoomsOptions {
   // per-beam median of the `scans` scans (its noise sigma scaled to the median's, 1.25 /
   // sqrt(scans)), and every extractor's line that is a chord of a round object found there is
   // dropped from each scan (perception/lines/round_objects_of_quiet_scan.h; docs/lines.md, stop
-  // 63).
+  // 63). Refused with median_of_scans, whose scans are already the median.
   bool round_objects_from_scans = false;
   std::vector<Seed000Room> rooms;
 };

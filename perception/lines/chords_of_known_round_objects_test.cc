@@ -154,6 +154,15 @@ TEST(ChordsOfKnownRoundObjectsTest, ALineOnACirclesRimGoesAndOneOffItStays) {
   lines = {chord};
   EXPECT_EQ(
       RemoveChordsOfKnownRoundObjects(scan, std::vector<CircleFeature>{tiny}, 0.01, {}, &lines), 0);
+  // The same six points, all on the rim, but the line's ends reach 0.1 m past them: 0.3 m, longer
+  // than the diameter + 3 cm, so it is more than a chord (s63 review: `tiny` above is off the rim
+  // too, so it left the length test untested).
+  LineSegment longer = chord;
+  const Eigen::Vector2d along = (chord.end - chord.start).normalized();
+  longer.start -= 0.1 * along;
+  longer.end += 0.1 * along;
+  lines = {longer};
+  EXPECT_EQ(RemoveChordsOfKnownRoundObjects(scan, known, 0.01, {}, &lines), 0);
 }
 
 }  // namespace

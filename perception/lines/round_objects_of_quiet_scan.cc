@@ -42,6 +42,9 @@ bool HiddenPast(const ScanPoints& scan, const CircleFeature& circle, int end, do
   const int n = static_cast<int>(scan.size());
   const bool first = end == circle.point_indices.front();
   if (!first && end != circle.point_indices.back()) return false;
+  // Past an open scan's first or last return there is no neighbour: the wrap would read the
+  // other end of the scan, half a turn away, as the return beside it (s63 review).
+  if (!scan.closed && (first ? end == 0 : end == n - 1)) return false;
   const int next = first ? (end + n - 1) % n : (end + 1) % n;
   if (next == end) return false;
   if (scan.MissingBeams(first ? next : end, first ? end : next) > 0) return false;

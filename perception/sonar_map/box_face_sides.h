@@ -13,7 +13,7 @@ namespace plywood::perception {
 // given) at least `min_length_m` long along the side, every part of it seen free over more than
 // `min_depth_m` outwards. A room fitted early on the faces of a box heard from a pocket has such a
 // side (the floor past the box seen through a gap); a wall heard from the inside has only stray
-// cells beyond it (issue 14, docs/sonar_map.md round 58b).
+// cells beyond it (issue 14, docs/sonar_map/history.md round 58b).
 struct RoomSides {
   bool west = false, south = false, east = false, north = false;
   bool Any() const { return west || south || east || north; }

@@ -20,9 +20,9 @@ RoomSides Sides(const CellMap& map, const Rect& room) {
   return SidesSeenPast(map, TestGrid(), nullptr, 2, room, kBodyM, kDepthM);
 }
 
-// Issue 14, generator seed 76 world 26 s3 (docs/sonar_map.md, stall76 and round 58b): the run ends
-// early in a pocket and the room is fitted with its east side on the west face of a box the robot
-// heard, the floor past the box seen free through a gap north of it. The reported room is
+// Issue 14, generator seed 76 world 26 s3 (docs/sonar_map/history.md, stall76 and round 58b): the
+// run ends early in a pocket and the room is fitted with its east side on the west face of a box
+// the robot heard, the floor past the box seen free through a gap north of it. The reported room is
 // x 0.5-2.0, y 1.0-3.0 (cells x 5-19, y 10-29); the robot saw cells x 5-16, y 10-24 free, the box
 // face at the east side (cells x 18-19, y 15-19) and, past it, cells x 20-24, y 20-29: 0.5 m deep,
 // 1.0 m along the side. The east side is seen past (and only it): opened to the grid's edge

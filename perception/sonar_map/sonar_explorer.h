@@ -44,7 +44,7 @@ struct SonarExplorerOptions {
   // of perimeter_max_s (generated rooms: up to 145 s, ~10,000 deg in a run). Once the robot has
   // turned this much without leaving a circle of robot_radius_m, the perimeter ends there and the
   // planner takes over. Two turns: the follower's own turns ended by 3.7 pi in most runs, and
-  // ending them at 3 pi changed runs that would have gone on (docs/sonar_map.md, round 20).
+  // ending them at 3 pi changed runs that would have gone on (docs/sonar_map/history.md, round 20).
   double perimeter_stuck_turn_rad = 4.0 * std::numbers::pi;
   // A point a bump panel touched during the perimeter lies where the sonar does not hear (a
   // corner inside its blanking range or met at a grazing angle): while it is in the corridor the
@@ -96,17 +96,17 @@ struct SonarExplorerOptions {
   // is approached over free cells this far from the cells heard, i.e. through a gap between heard
   // faces 2 x this wide (0.6 m: the robot is 0.41 m wide). Without it an unknown region behind a
   // gap wider than the robot but heard narrower than 2 narrow_clearance_m was never entered and
-  // the map guessed it (generated rooms: e up to 0.45-0.57; docs/sonar_map.md rounds 23-24).
-  // 0.28 let a layout run touch a box once, 0.30 touches nothing in the layouts x seeds 1-20.
-  // 0 = off; otherwise between robot_radius_m + front_margin_m (the front check's corridor) and
-  // narrow_clearance_m.
+  // the map guessed it (generated rooms: e up to 0.45-0.57; docs/sonar_map/history.md rounds
+  // 23-24). 0.28 let a layout run touch a box once, 0.30 touches nothing in the layouts x seeds
+  // 1-20. 0 = off; otherwise between robot_radius_m + front_margin_m (the front check's corridor)
+  // and narrow_clearance_m.
   double squeeze_clearance_m = 0.30;
   // A point a bump panel touched keeps every path's centre min(this, the tier's clearance) away,
   // not the tier's clearance: it is exact to the body (the panel's arc), whereas a heard cell's
   // face may lie anywhere in the cell and the beam. With the tier's clearance, a contact at a box
   // corner the sonar never heard closed a 0.61 m gap the robot fits for good (generated world 46
-  // of seed 22; docs/sonar_map.md round 37a). 0 = a contact blocks like a heard cell; otherwise
-  // more than robot_radius_m (0.25: the front check's corridor).
+  // of seed 22; docs/sonar_map/history.md round 37a). 0 = a contact blocks like a heard cell;
+  // otherwise more than robot_radius_m (0.25: the front check's corridor).
   double contact_clearance_m = 0.25;
   double stop_range_m = 0.3;  // a front echo closer than this aborts the move (into D)
   // Half-width of that corridor beyond the body. It is narrower than path_clearance_m, so that a
@@ -136,16 +136,17 @@ struct SonarExplorerOptions {
   // few blocked legs from one spot can give up every frontier goal behind a gap and end the run
   // "map_complete" with most of the room never seen (generated world 38 of seed 47: two legs
   // stopped at 38-39 s by a box face beyond their ends, 59 % of the reported room unknown, e 0.60;
-  // docs/sonar_map.md, round 42a). When the end test finds nothing left while more than this share
-  // of the reported room's cells is unknown, the given-up targets are tried once more (once per
-  // run) if a frontier goal among them can be reached. In (0, 1]; 1 = off (no share exceeds it).
+  // docs/sonar_map/history.md, round 42a). When the end test finds nothing left while more than
+  // this share of the reported room's cells is unknown, the given-up targets are tried once more
+  // (once per run) if a frontier goal among them can be reached. In (0, 1]; 1 = off (no share
+  // exceeds it).
   double complete_unknown_share_max = 0.5;
   // Whether the end test judges the reported room's sides before it ends a run (issue 14,
-  // docs/sonar_map.md round 58b): a run that ends early fits sides on the faces of boxes heard from
-  // a pocket. A side the robot has seen floor past (a patch of seen-free cells beyond it, the
-  // body's width along it and deep, SidesSeenPast) is opened to the grid's edge before the unknown
-  // share is measured, and the circuit corners skipped after blocked moves count as given up, so
-  // the retry drives to them again. Off: round 42a's test on the reported room as fitted.
+  // docs/sonar_map/history.md round 58b): a run that ends early fits sides on the faces of boxes
+  // heard from a pocket. A side the robot has seen floor past (a patch of seen-free cells beyond
+  // it, the body's width along it and deep, SidesSeenPast) is opened to the grid's edge before the
+  // unknown share is measured, and the circuit corners skipped after blocked moves count as given
+  // up, so the retry drives to them again. Off: round 42a's test on the reported room as fitted.
   bool complete_room_check = false;
   // @throws std::invalid_argument naming the field.
   void Validate() const;

@@ -10,7 +10,7 @@
 namespace plywood::perception {
 namespace {
 
-// Issue 14, generator seed 47 world 38 (docs/sonar_map.md, round 42a): the robot saw only a
+// Issue 14, generator seed 47 world 38 (docs/sonar_map/history.md, round 42a): the robot saw only a
 // pocket in one corner of a room whose far walls the sonar had heard, and the run ended
 // "map_complete" with most of the reported room unknown. The room here is 3 x 2 m (cells x 5-34,
 // y 10-29: 600 centres); the robot saw its east 0.9 m (cells x 26-34): free, with a box face

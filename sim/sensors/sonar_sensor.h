@@ -33,8 +33,9 @@ namespace plywood::sim {
 //    edge sends no specular echo, but it diffracts (Kuc & Siegel 1987 model it as a line source;
 //    Leonard & Durrant-Whyte 1992 list edges with planes, corners and cylinders as the sonar's
 //    targets, weaker than planes and heard only at short range). Without it a box's corner met
-//    obliquely is silent, and an explorer drives into corners a real ring would hear (round 58a,
-//    docs/sonar_map.md: 0 of 103 touched corners ever echoed). No amplitude model: heard or not;
+//    obliquely is silent, and an explorer drives into corners a real ring would hear (round
+//    58a, docs/sonar_map/history.md: 0 of 103 touched corners ever echoed). No amplitude model:
+//    heard or not;
 //  - if nothing echoes, a specular miss: echo = false, unless `multipath` is on, when the
 //    central-most hitting ray's single specular bounce is reported as a long reading
 //    (d1 + d2 + |p2 - sensor|) / 2 whatever its direction, if that is below range_max_m.
@@ -53,8 +54,8 @@ struct SonarOptions {
   // How far a right-angle edge met on its bisector is heard: where its back-diffracted echo
   // (Keller's wedge coefficient, spreading 1 / r^1.5) falls to what a normal plane returns at the
   // 6500's rated 10.7 m (spreading 1 / 2r), both with ISO 9613-1 air absorption at 49.4 kHz, 20 C,
-  // 50 % RH (1.64 dB/m): 2.36 m, rounded down (docs/sonar_map.md, round 59a). An upper bound: the
-  // ranging module's gain still rises over the first metres, which only shortens it.
+  // 50 % RH (1.64 dB/m): 2.36 m, rounded down (docs/sonar_map/history.md, round 59a). An upper
+  // bound: the ranging module's gain still rises over the first metres, which only shortens it.
   double edge_echo_range_m = 2.3;
   double range_min_m = 0.15;
   double range_max_m = 5.0;
