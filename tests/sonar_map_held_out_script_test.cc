@@ -23,11 +23,8 @@ using testing::Slurp;
 using testing::SourceRoot;
 using testing::WriteFile;
 
-struct ScriptResult {
-  int exit_code = -1;
-  std::string out;
-  std::string err;
-};
+// The script's exit code, stdout and stderr, as the CLI tests read plywood's.
+using ScriptResult = testing::CliResult;
 
 ScriptResult RunTable(const fs::path& out, const std::string& seeds) {
   const std::string command = (SourceRoot() / "scripts" / "sonar_map_held_out").string() +

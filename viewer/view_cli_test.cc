@@ -120,6 +120,18 @@ class ViewCliTest : public ::testing::Test {
   static void SetUpTestSuite() { testing::RequireXvfbOrSkip(); }
 };
 
+// A finished one-second run of the default experiment in dir/run (no snapshot), for the tests
+// that view or refuse a run directory.
+std::filesystem::path OneSecondRun(const std::filesystem::path& dir) {
+  const std::filesystem::path run = dir / "run";
+  const testing::CliResult result =
+      RunPlywood("run " + (SourceRoot() / "experiments/default.yaml").string() +
+                     " --set duration_s=1 --quiet --no-snapshot --out " + run.string(),
+                 dir);
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  return run;
+}
+
 TEST_F(ViewCliTest, AnUntouchedViewedRunWritesTheSameBytesAsPlywoodRun) {
   const std::filesystem::path dir = MakeTempDir("view_cli_identity");
   const std::string experiment = (SourceRoot() / "experiments/default.yaml").string();
@@ -157,12 +169,8 @@ TEST_F(ViewCliTest, ScreenshotCommandOfTheReadme) {
 
 TEST_F(ViewCliTest, RefusesARunDirectoryThatDidNotFinishInOneLine) {
   const std::filesystem::path dir = MakeTempDir("view_cli_refusal");
-  const std::filesystem::path run = dir / "run";
-  ASSERT_EQ(RunPlywood("run " + (SourceRoot() / "experiments/default.yaml").string() +
-                           " --set duration_s=1 --quiet --no-snapshot --out " + run.string(),
-                       dir)
-                .exit_code,
-            0);
+  const std::filesystem::path run = OneSecondRun(dir);
+  ASSERT_FALSE(::testing::Test::HasFailure());
   std::filesystem::remove(run / "metrics.json");
   const testing::CliResult result = RunPlywood("view " + run.string() + " --screenshot x.png", dir);
   EXPECT_EQ(result.exit_code, 2);
@@ -178,12 +186,8 @@ TEST_F(ViewCliTest, RefusesARunDirectoryThatDidNotFinishInOneLine) {
 // above it is refused in one line naming the file, its line and the field.
 TEST_F(ViewCliTest, SensorFilesNoRunCouldHaveWrittenAreRefusedNamingTheirField) {
   const std::filesystem::path dir = MakeTempDir("view_cli_sensor_files");
-  const std::filesystem::path run = dir / "run";
-  ASSERT_EQ(RunPlywood("run " + (SourceRoot() / "experiments/default.yaml").string() +
-                           " --set duration_s=1 --quiet --no-snapshot --out " + run.string(),
-                       dir)
-                .exit_code,
-            0);
+  const std::filesystem::path run = OneSecondRun(dir);
+  ASSERT_FALSE(::testing::Test::HasFailure());
   const auto lines_of = [](const std::string& text) {
     std::vector<std::string> lines;
     for (std::size_t at = 0; at < text.size();) {
@@ -267,12 +271,8 @@ TEST_F(ViewCliTest, SensorFilesNoRunCouldHaveWrittenAreRefusedNamingTheirField) 
 TEST_F(ViewCliTest, FlagsThatCannotBeHonouredAreRefusedBeforeAnythingRuns) {
   const std::filesystem::path dir = MakeTempDir("view_cli_flags");
   const std::string experiment = (SourceRoot() / "experiments/default.yaml").string();
-  const std::filesystem::path run = dir / "run";
-  ASSERT_EQ(RunPlywood("run " + experiment + " --set duration_s=1 --quiet --no-snapshot --out " +
-                           run.string(),
-                       dir)
-                .exit_code,
-            0);
+  const std::filesystem::path run = OneSecondRun(dir);
+  ASSERT_FALSE(::testing::Test::HasFailure());
   const std::string live =
       experiment + " --set duration_s=1 --speed max --exit-at-end --out " + (dir / "live").string();
   const std::string protocol = (SourceRoot() / "experiments/umbmark.yaml").string();
