@@ -12,7 +12,7 @@ foreach(layer msgs robot perception)
   install(DIRECTORY "${PROJECT_SOURCE_DIR}/${layer}/" DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/${layer}"
           FILES_MATCHING PATTERN "*.h")
 endforeach()
-install(FILES "${PLYWOOD_VERSION_HEADER}"
+install(FILES "${PLYWOOD_VERSION_HEADER}" "${PLYWOOD_HEADERS_HASH_HEADER}"
         DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/perception/plugins")
 install(TARGETS plywood_msgs plywood_robot plywood_perception EXPORT PlywoodTargets
         ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}")

@@ -34,6 +34,7 @@ foreach(layer msgs robot perception)
   endif()
 endforeach()
 foreach(header perception/plugins/plugin.h perception/plugins/plywood_version.h
+               perception/plugins/plywood_headers.h
                perception/lines/line_extractor_registry.h robot/plugins/parameter_map.h)
   if(NOT EXISTS "${prefix}/include/${header}")
     message(FATAL_ERROR "${header} not installed under ${prefix}/include")

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "perception/plugins/plywood_version.h"
 #include "tests/support/cli_test_support.h"
 #include "tests/support/mujoco_test_support.h"
 
@@ -69,6 +70,19 @@ TEST_F(PluginErrorsTest, LibraryBuiltForAnotherPlywood) {
   ExpectOneLineError({std::string("plugins=[") + PLYWOOD_WRONG_ABI_PLUGIN + "]"},
                      {std::string("plugins[0]: ") + PLYWOOD_WRONG_ABI_PLUGIN,
                       "built for plywood 0.0.1, gcc 4.8.5", "rebuild the plug-in"});
+}
+
+// audit49: a plug-in built against another commit's headers of the same version (0.1.0) and
+// compiler passed the check, whose string named only those: one whose LineSegment had a member
+// more ran, its segments read in the host's layout (`gave a segment ... whose line passes 2.00142 m
+// from its ends`, blaming the extractor; a layout change the guard cannot see gives wrong figures
+// or a crash). The ABI string now carries a hash of the installed headers.
+TEST_F(PluginErrorsTest, LibraryBuiltAgainstOtherHeadersOfThisVersionIsRefused) {
+  ExpectOneLineError({std::string("plugins=[") + PLYWOOD_OTHER_HEADERS_PLUGIN + "]"},
+                     {std::string("plugins[0]: ") + PLYWOOD_OTHER_HEADERS_PLUGIN,
+                      std::string("built for plywood ") + PLYWOOD_VERSION + ", ",
+                      std::string("but this plywood is plywood ") + PLYWOOD_VERSION + " (headers ",
+                      "rebuild the plug-in"});
 }
 
 // audit s40: a plywood_plugin_abi() that returns a null pointer ended the run with
@@ -239,6 +253,20 @@ TEST(PluginMisbehaviourTest, EstimatorPosesScoreTrajectoryWouldRefuseEndTheRun) 
   ExpectNamedRunFailure(
       RunMisbehaving("{extractors: [split_and_merge]}", "{encoder: {}, spinning_1e300: {}}", spin),
       spin, "odometry estimator 'spinning_1e300'", {"theta 1e+300 rad"});
+}
+
+// audit49: an estimator that ignores the initial pose its factory gets (integrating from the
+// origin, say) was scored as its offset from the spawn, exit 0 (ate_rms_m 6.5 for a spawn 6.5 m
+// from the origin), while `plywood score trajectory` refuses the run's own trajectory.csv and TUM
+// file for it: an estimate starts at the spawn.
+TEST(PluginMisbehaviourTest, AnEstimateThatDoesNotStartAtTheSpawnEndsTheRun) {
+  const fs::path dir = MakeTempDir("plugin_start_off_spawn");
+  ExpectNamedRunFailure(RunMisbehaving("{extractors: [split_and_merge]}",
+                                       "{encoder: {}, starts_off_the_spawn: {}}", dir),
+                        dir, "odometry estimator 'starts_off_the_spawn'",
+                        {"starts at (1, 0) heading 90 deg",
+                         "1 m and 90 deg from the initial pose (0, 0) heading 0 deg",
+                         "within 0.1 m and 10 deg", "nothing was scored"});
 }
 
 // audit39: a controller steering by a plug-in estimator that gave NaN was blamed for it:

@@ -7,6 +7,7 @@
 
 #include "eval/score/run_directory.h"
 #include "msgs/shortest_number.h"
+#include "perception/logs/tum_trajectory.h"
 #include "robot/odometry/trajectory_metrics.h"
 #include "sim/config/config_error.h"
 
@@ -15,11 +16,8 @@ namespace {
 
 std::string Seconds(double t) { return sim::FormatNumber(t) + " s"; }
 
-// How far an estimate's start may lie from the run's (the spawn): the scores have no alignment,
-// since every estimator starts at the known spawn pose (and each Plywood file starts exactly
-// there), so a file in another frame or unit (millimetres) was scored as an error of its offset.
-constexpr double kMaxStartOffsetM = 0.1;
-constexpr double kMaxStartHeadingOffsetDeg = 10.0;
+using perception::kMaxStartHeadingOffsetDeg;
+using perception::kMaxStartOffsetM;
 
 // @throws sim::ConfigError naming the file's first pose when `start`, the estimate at the run's
 // first sample, is not at `truth_start`.

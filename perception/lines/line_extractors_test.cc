@@ -197,6 +197,26 @@ TEST(LineScoringTest, ASegmentThatIsNotFiniteMatchesNothing) {
   }
 }
 
+// audit49: a segment of no length (both ends one point of the face, of 1 or 2 points) has no
+// direction; it was taken as parallel to the face and matched it, so a plug-in returning each
+// scan point as a "segment" scored recall 1 and precision 0.94 in a run and in `score lines`.
+TEST(LineScoringTest, ASegmentOfNoLengthMatchesNothing) {
+  const std::vector<TruthSegment> truth{{{2, -1}, {2, 1}, 20}};
+  for (const int points : {1, 2}) {
+    LineSegment point;
+    point.start = point.end = Eigen::Vector2d(2.0, 0.25);
+    CanonicalNormalForm(std::atan2(0.25, 2.0), point.start.norm(), &point.alpha_rad, &point.r_m);
+    point.num_points = points;
+    EXPECT_EQ(MatchSegment(point, truth, {}), -1) << points << " points";
+    const LineScore score = ScoreScan(std::vector<LineSegment>{point}, truth, 50);
+    EXPECT_EQ(score.extracted, 1);
+    EXPECT_EQ(score.extracted_matched, 0);
+    EXPECT_EQ(score.Recall(), 0.0);
+  }
+  // A short piece of the face still matches: the rule is about no length, not little.
+  EXPECT_EQ(MatchSegment(SegmentThrough({2.0, 0.25}, {2.0, 0.26}, 2), truth, {}), 0);
+}
+
 TEST(LineScoringTest, ShortSegmentFarFromThePerpendicularFootMatches) {
   // Issue 13's lever arm: a 0.4 m piece of the wall x = 2, 1.7 m from the foot of the
   // perpendicular from the sensor, turned by 1.9 deg about its middle. Its endpoints lie within

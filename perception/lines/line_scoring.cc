@@ -101,12 +101,13 @@ std::optional<FaceMatch> MatchFace(const LineSegment& segment, const TruthSegmen
   match.endpoint_distance_m =
       std::max(std::abs(n.dot(segment.start - face.a)), std::abs(n.dot(segment.end - face.a)));
   if (!(match.endpoint_distance_m <= options.max_endpoint_distance_m)) return std::nullopt;
-  // (2) Direction, within what the segment's length and points allow.
+  // (2) Direction, within what the segment's length and points allow. A segment of no length (its
+  // ends one point) has no direction, so it matches nothing: taken as parallel to every face it
+  // touched, a plug-in's one-point "segments" scored recall 1 and precision 0.94.
   const Eigen::Vector2d d = segment.end - segment.start;
   const double segment_length = d.norm();
-  match.angle_rad = segment_length > 1e-12
-                        ? std::atan2(std::abs(d.x() * u.y() - d.y() * u.x()), std::abs(d.dot(u)))
-                        : 0.0;
+  if (!(segment_length > 1e-12)) return std::nullopt;
+  match.angle_rad = std::atan2(std::abs(d.x() * u.y() - d.y() * u.x()), std::abs(d.dot(u)));
   match.angle_tolerance_rad = DirectionToleranceRad(segment_length, segment.num_points, options);
   if (!(match.angle_rad <= match.angle_tolerance_rad)) return std::nullopt;
   // (3) Overlap of the segment's projection with the face [0, length].

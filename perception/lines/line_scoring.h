@@ -16,7 +16,8 @@ namespace plywood::perception {
 //   used rays (returns inside the range cut) hit it (the simulator's per-beam hit segment ids).
 // - An extracted segment MATCHES a ground-truth face (MatchFace) when
 //   (1) both its endpoints lie within max_endpoint_distance_m (at most 1 m) of the face's line,
-//   (2) its direction is within max(max_alpha_diff_deg, direction_sigmas * sigma_theta) of the
+//   (2) it has a length (ends more than 1e-12 m apart: a point has no direction) and its
+//       direction is within max(max_alpha_diff_deg, direction_sigmas * sigma_theta) of the
 //       face's, where sigma_theta = range_noise_sigma_m / sqrt(S) is the standard deviation of the
 //       direction a least-squares fit gets from num_points points spread evenly over the
 //       segment's length L with independent range noise, S = L^2 n (n + 1) / (12 (n - 1)) their

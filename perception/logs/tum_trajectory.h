@@ -45,6 +45,13 @@ inline constexpr double kMaxTrajectoryCoordinateM = 1e9;
 // where a heading of 1e300 was scored as some angle (heading_error_deg -41.4, exit 0).
 inline constexpr double kMaxTrajectoryHeadingRad = 1e9;
 
+// How far an estimate's start may lie from the run's (the spawn): the scores have no alignment,
+// since every estimator starts at the known spawn pose (and each Plywood file starts exactly
+// there), so a file in another frame or unit (millimetres) was scored as an error of its offset.
+// `plywood score trajectory` refuses such a file; a run refuses such a registered estimator.
+inline constexpr double kMaxStartOffsetM = 0.1;
+inline constexpr double kMaxStartHeadingOffsetDeg = 10.0;
+
 // The largest tilt (deg) of a TUM pose, the angle its quaternion turns the z axis away from up.
 // Plywood's floors are level (a tilted one is refused), so a ground robot's pose is level; 45 deg
 // is halfway to the 90 deg at which a heading means nothing. A planar quaternion written w first

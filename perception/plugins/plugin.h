@@ -11,12 +11,13 @@
 // with the host's registry. The host links Plywood's static libraries and so does the plug-in, so
 // each has its own copy of every non-inline function and global: everything a plug-in does to the
 // host's objects goes through the header-only code below and the algorithms' virtual functions.
-// That only works when both were built from the same Plywood version with the same compiler and
+// That only works when both were built from the same Plywood headers with the same compiler and
 // standard library; the host checks PLYWOOD_PLUGIN_ABI before calling anything else.
 
 #include <string>
 
 #include "perception/lines/line_extractor_registry.h"
+#include "perception/plugins/plywood_headers.h"
 #include "perception/plugins/plywood_version.h"
 #include "robot/control/controller_registry.h"
 #include "robot/odometry/odometry_estimator_registry.h"
@@ -45,9 +46,11 @@ inline constexpr const char* kPluginAbiSymbol = "plywood_plugin_abi";
 #else
 #define PLYWOOD_PLUGIN_COMPILER "unknown compiler"
 #endif
-// What host and plug-in must share: Plywood's version, the compiler and libstdc++'s string ABI.
-#define PLYWOOD_PLUGIN_ABI                                \
-  "plywood " PLYWOOD_VERSION ", " PLYWOOD_PLUGIN_COMPILER \
+// What host and plug-in must share: Plywood's version, the headers (a hash of every installed
+// header: another commit's struct or interface may differ under the same version), the compiler
+// and libstdc++'s string ABI.
+#define PLYWOOD_PLUGIN_ABI                                                                   \
+  "plywood " PLYWOOD_VERSION " (headers " PLYWOOD_HEADERS_HASH "), " PLYWOOD_PLUGIN_COMPILER \
   ", libstdc++ cxx11 abi " PLYWOOD_PLUGIN_STRINGIFY(_GLIBCXX_USE_CXX11_ABI)
 
 // Defines the plug-in's two exported entry points; the braces that follow are the body of the

@@ -4,11 +4,13 @@
 #include <cmath>
 #include <exception>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "msgs/pose2d.h"
 #include "msgs/shortest_number.h"
 #include "perception/logs/tum_trajectory.h"
 
@@ -117,8 +119,9 @@ class GuardedExtractor : public perception::LineExtractor {
 
 class GuardedEstimator : public robot::OdometryEstimator {
  public:
-  GuardedEstimator(std::unique_ptr<robot::OdometryEstimator> inner, std::string label)
-      : inner_(std::move(inner)), label_(std::move(label)) {}
+  GuardedEstimator(std::unique_ptr<robot::OdometryEstimator> inner, std::string label,
+                   const msgs::Pose2D& X_WR_initial)
+      : inner_(std::move(inner)), label_(std::move(label)), X_WR_initial_(X_WR_initial) {}
 
   void AddEncoders(const msgs::WheelEncoders& encoders) override {
     Guarded(label_, "AddEncoders", [&] { inner_->AddEncoders(encoders); });
@@ -134,11 +137,11 @@ class GuardedEstimator : public robot::OdometryEstimator {
     const msgs::Pose2D p = Guarded(label_, "pose", [&] { return inner_->pose(); });
     const double m = perception::kMaxTrajectoryCoordinateM;
     const double rad = perception::kMaxTrajectoryHeadingRad;
-    if (std::abs(p.x_m) <= m && std::abs(p.y_m) <= m && std::abs(p.theta_rad) <= rad) return p;
-    const std::string when =
-        std::isnan(last_encoders_s_)
-            ? "before the first encoder reading"
-            : "after the encoder reading at t=" + msgs::SixDigitNumber(last_encoders_s_) + " s";
+    if (std::abs(p.x_m) <= m && std::abs(p.y_m) <= m && std::abs(p.theta_rad) <= rad) {
+      if (!start_checked_) RequireStartAtTheInitialPose(p);
+      return p;
+    }
+    const std::string when = When();
     throw std::runtime_error(label_ + ": gave the pose x " + ShortestNumber(p.x_m) + " m, y " +
                              ShortestNumber(p.y_m) + " m, theta " + ShortestNumber(p.theta_rad) +
                              " rad " + when + ": a pose must be finite, within " +
@@ -148,8 +151,42 @@ class GuardedEstimator : public robot::OdometryEstimator {
   }
 
  private:
+  // The first pose asked for (the run's first sample) is the estimate's start, which `plywood
+  // score trajectory` requires at the spawn: the scores have no alignment. An estimator that
+  // ignores the initial pose its factory got (integrating from the origin, say) would be scored
+  // as its offset from the spawn.
+  void RequireStartAtTheInitialPose(const msgs::Pose2D& p) const {
+    start_checked_ = true;
+    const double offset_m = std::hypot(p.x_m - X_WR_initial_.x_m, p.y_m - X_WR_initial_.y_m);
+    const double offset_deg =
+        std::abs(msgs::WrapAngle(p.theta_rad - X_WR_initial_.theta_rad)) * 180.0 / std::numbers::pi;
+    if (offset_m <= perception::kMaxStartOffsetM &&
+        offset_deg <= perception::kMaxStartHeadingOffsetDeg) {
+      return;
+    }
+    const auto pose = [](const msgs::Pose2D& q) {
+      return "(" + msgs::SixDigitNumber(q.x_m) + ", " + msgs::SixDigitNumber(q.y_m) + ") heading " +
+             msgs::SixDigitNumber(q.theta_rad * 180.0 / std::numbers::pi) + " deg";
+    };
+    throw std::runtime_error(
+        label_ + ": starts at " + pose(p) + " " + When() + ", " + msgs::SixDigitNumber(offset_m) +
+        " m and " + msgs::SixDigitNumber(offset_deg) + " deg from the initial pose " +
+        pose(X_WR_initial_) + " its factory was given: an estimate starts there (plywood score " +
+        "trajectory scores without alignment, within " +
+        ShortestNumber(perception::kMaxStartOffsetM) + " m and " +
+        ShortestNumber(perception::kMaxStartHeadingOffsetDeg) + " deg); nothing was scored");
+  }
+
+  std::string When() const {
+    return std::isnan(last_encoders_s_)
+               ? "before the first encoder reading"
+               : "after the encoder reading at t=" + msgs::SixDigitNumber(last_encoders_s_) + " s";
+  }
+
   std::unique_ptr<robot::OdometryEstimator> inner_;
   std::string label_;
+  msgs::Pose2D X_WR_initial_;
+  mutable bool start_checked_ = false;
   double last_encoders_s_ = std::numeric_limits<double>::quiet_NaN();
 };
 
@@ -184,8 +221,9 @@ std::unique_ptr<perception::LineExtractor> GuardRegistered(
 }
 
 std::unique_ptr<robot::OdometryEstimator> GuardRegistered(
-    std::unique_ptr<robot::OdometryEstimator> estimator, std::string label) {
-  return std::make_unique<GuardedEstimator>(std::move(estimator), std::move(label));
+    std::unique_ptr<robot::OdometryEstimator> estimator, std::string label,
+    const msgs::Pose2D& X_WR_initial) {
+  return std::make_unique<GuardedEstimator>(std::move(estimator), std::move(label), X_WR_initial);
 }
 
 std::unique_ptr<robot::Controller> GuardRegistered(std::unique_ptr<robot::Controller> controller,

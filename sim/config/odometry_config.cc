@@ -180,7 +180,8 @@ std::vector<std::pair<std::string, std::unique_ptr<robot::OdometryEstimator>>> M
           robot::MakeRegistered(
               *entry, options == config.registered.end() ? robot::ParameterMap() : options->second,
               geometry, X_WR_initial),
-          "odometry estimator '" + name + "' (" + RegisteredBy("odometry estimator", name) + ")");
+          "odometry estimator '" + name + "' (" + RegisteredBy("odometry estimator", name) + ")",
+          X_WR_initial);
     }
     if (e) estimators.emplace_back(name, std::move(e));
   }

@@ -3,10 +3,12 @@
 // `throwing_std_lines` a std::runtime_error, `world_frame_lines` a segment 10 m from the scan's
 // points (as if in another frame), `negative_points_lines` a segment of -7 points; the estimators
 // `nan_after_1s` and `spinning_1e300` give a pose of x NaN, or of heading 1e300 rad, from the
-// encoder reading at 1 s on.
+// encoder reading at 1 s on, and `starts_off_the_spawn` starts 1 m east of and 90 deg left of
+// the initial pose it was given (as one integrating from the origin, or in another frame).
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -115,5 +117,13 @@ PLYWOOD_PLUGIN(registry) {
        [](const plywood::robot::OdometryGeometry&, const plywood::msgs::Pose2D& X_WR,
           const plywood::robot::ParameterMap&) {
          return std::make_unique<BadFromOneSecond>(X_WR, plywood::msgs::Pose2D{0.0, 0.0, 1e300});
+       }});
+  registry.odometry_estimators.Add(
+      {"starts_off_the_spawn", false,
+       [](const plywood::robot::OdometryGeometry&, const plywood::msgs::Pose2D& X_WR,
+          const plywood::robot::ParameterMap&) {
+         const plywood::msgs::Pose2D off{X_WR.x_m + 1.0, X_WR.y_m,
+                                         X_WR.theta_rad + std::numbers::pi / 2};
+         return std::make_unique<BadFromOneSecond>(off, off);
        }});
 }
