@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -47,9 +48,13 @@ void PrintSummary(const sim::ExperimentRunner& runner) {
   std::printf("%-34s %.3f m\n", "distance travelled (truth)", m.Number("truth.distance_m"));
   for (const auto& name : runner.record().estimator_names) {
     const std::string key = "odometry." + name + ".";
-    std::printf("%-34s final %.3f m, heading %.2f deg, drift %.2f %%, ATE %.3f m\n", name.c_str(),
-                m.Number(key + "final_error_m"), m.Number(key + "heading_error_deg"),
-                m.Number(key + "drift_percent"), m.Number(key + "ate_rms_m"));
+    // metrics.json's null (the truth travelled less than 1 cm) is printed as null, not nan.
+    const double drift = m.Number(key + "drift_percent");
+    char drift_text[64] = "null (travelled < 1 cm)";
+    if (std::isfinite(drift)) std::snprintf(drift_text, sizeof drift_text, "%.2f %%", drift);
+    std::printf("%-34s final %.3f m, heading %.2f deg, drift %s, ATE %.3f m\n", name.c_str(),
+                m.Number(key + "final_error_m"), m.Number(key + "heading_error_deg"), drift_text,
+                m.Number(key + "ate_rms_m"));
   }
   if (m.values().count("occupancy.error")) {
     std::printf(

@@ -1,0 +1,103 @@
+// Runs that are valid but degenerate (a robot that never moves, a range cut below every wall, a
+// search over less than a centimetre of travel): every figure they print or write is right, or
+// null, or the run is refused naming its field; never nan, nor a figure computed over nothing
+// (docs/errors.md, the s63 forty-eighth pass).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tests/support/cli_test_support.h"
+#include "tests/support/mujoco_test_support.h"
+
+namespace plywood {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::CliResult;
+using testing::MakeTempDir;
+using testing::RunPlywood;
+using testing::Slurp;
+using testing::WriteFile;
+
+fs::path Dir() {
+  return MakeTempDir(std::string("degenerate_runs_") +
+                     ::testing::UnitTest::GetInstance()->current_test_info()->name());
+}
+
+// One line on stderr, exit 2, naming each of `must_contain`; nothing on stdout (no figure was
+// printed before the refusal) and no results.
+void ExpectRefusedBeforeAnyFigure(const CliResult& result, const fs::path& out,
+                                  const std::vector<std::string>& must_contain) {
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  ASSERT_FALSE(result.err.empty());
+  EXPECT_EQ(result.err.find('\n'), result.err.size() - 1) << "not one line: " << result.err;
+  EXPECT_EQ(result.err.rfind("plywood: ", 0), 0u) << result.err;
+  for (const std::string& text : must_contain) {
+    EXPECT_NE(result.err.find(text), std::string::npos) << "'" << text << "' in: " << result.err;
+  }
+  EXPECT_EQ(result.out, "") << "figures printed before the refusal";
+  EXPECT_FALSE(fs::exists(out / "metrics.json"));
+}
+
+// The printed summary of a robot that stands: metrics.json's drift_percent is null, and the
+// summary says so (main printed "drift nan %").
+TEST(DegenerateRunsTest, AStandingRobotsSummaryPrintsItsDriftAsNullNotNan) {
+  const fs::path dir = Dir();
+  const fs::path file = WriteFile(dir / "experiment.yaml",
+                                  "name: standing\n"
+                                  "duration_s: 0.5\n"
+                                  "world: worlds/hall.xml\n"
+                                  "robot: {model: p3dx, spawn: {x_m: 0, y_m: 0, theta_deg: 0}}\n"
+                                  "sensors: {encoders: {}}\n"
+                                  "output: {snapshot: false}\n");
+  const CliResult run =
+      RunPlywood("run " + file.string() + " --out " + (dir / "out").string(), dir);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(Slurp(dir / "out" / "metrics.json").find("\"drift_percent\": null"), std::string::npos);
+  EXPECT_NE(run.out.find("drift null (travelled < 1 cm)"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("nan"), std::string::npos) << run.out;
+}
+
+// A seed 000 room whose range cut lies below every wall: recall 0 / 0. Beside a room that has
+// walls in view, main wrote recall 1 and precision 1 for it (metrics.json, rooms.csv), exit 0.
+TEST(DegenerateRunsTest, ASeed000RoomWithNoWallWithinItsCutIsRefusedBeforeAnyFigure) {
+  const fs::path dir = Dir();
+  const std::string experiment =
+      (testing::SourceRoot() / "experiments/seed000_rooms.yaml").string();
+  const std::string common =
+      " --set seed000_rooms.scans=1 --set 'lines.extractors=[split_and_merge]'";
+  const CliResult two = RunPlywood(
+      "run " + experiment + " --out " + (dir / "two").string() + common +
+          " --set 'seed000_rooms.rooms=[{world: worlds/seed000_room_1.xml, range_cut_m: 4}, "
+          "{world: worlds/seed000_room_2.xml, range_cut_m: 0.3}]'",
+      dir);
+  ExpectRefusedBeforeAnyFigure(two, dir / "two",
+                               {experiment, "seed000_rooms.rooms[1].range_cut_m",
+                                "seed000_room_2.xml", "0.3 m", "recall is undefined"});
+  // The room alone: main refused, but only after printing its row (recall 1.000, reduction nanx).
+  const CliResult alone = RunPlywood(
+      "run " + experiment + " --out " + (dir / "alone").string() + common +
+          " --set world=worlds/seed000_room_2.xml"
+          " --set 'seed000_rooms.rooms=[{world: worlds/seed000_room_2.xml, range_cut_m: 0.3}]'",
+      dir);
+  ExpectRefusedBeforeAnyFigure(alone, dir / "alone",
+                               {experiment, "seed000_rooms.rooms[0].range_cut_m", "0.3 m"});
+}
+
+// A weighted-gain search over a run that travels less than 1 cm: main's line named neither the
+// file nor a field ("plywood: run: distance_m: drift is undefined ...").
+TEST(DegenerateRunsTest, AWeightedGainSearchOverLessThanACentimetreNamesTheExperiment) {
+  const fs::path dir = Dir();
+  const std::string experiment =
+      (testing::SourceRoot() / "experiments/weighted_gain_calibration.yaml").string();
+  const CliResult run = RunPlywood(
+      "run " + experiment + " --out " + (dir / "out").string() + " --set duration_s=0.2", dir);
+  ExpectRefusedBeforeAnyFigure(
+      run, dir / "out",
+      {experiment + ": weighted_gain_search: ", "less than 1 cm", "duration_s = 0.2 s"});
+}
+
+}  // namespace
+}  // namespace plywood
