@@ -99,5 +99,29 @@ TEST(DegenerateRunsTest, AWeightedGainSearchOverLessThanACentimetreNamesTheExper
       {experiment + ": weighted_gain_search: ", "less than 1 cm", "duration_s = 0.2 s"});
 }
 
+// A sweep of one cell whose one run stood: its drift_percent is null. Main printed "n 0" with no
+// word why, and plotted an empty box on axes round 0.
+TEST(DegenerateRunsTest, ASweepOfOneStandingRunSaysItsMetricHasNoValue) {
+  const fs::path dir = Dir();
+  WriteFile(dir / "standing.yaml",
+            "name: standing\n"
+            "duration_s: 0.5\n"
+            "world: worlds/hall.xml\n"
+            "robot: {model: p3dx, spawn: {x_m: 0, y_m: 0, theta_deg: 0}}\n"
+            "sensors: {encoders: {}}\n"
+            "output: {snapshot: false}\n");
+  const fs::path sweep = WriteFile(dir / "one.yaml",
+                                   "experiment: standing.yaml\n"
+                                   "seeds: [1]\n"
+                                   "metrics: [odometry.encoder.drift_percent, truth.distance_m]\n");
+  const CliResult run =
+      RunPlywood("sweep " + sweep.string() + " --jobs 1 --out " + (dir / "sweep").string(), dir);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("all runs: n 0 (no value in its run: null or absent in metrics.json"),
+            std::string::npos)
+      << run.out;
+  EXPECT_FALSE(fs::exists(dir / "sweep" / "plots" / "odometry.encoder.drift_percent.png"));
+}
+
 }  // namespace
 }  // namespace plywood
