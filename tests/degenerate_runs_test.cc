@@ -86,6 +86,30 @@ TEST(DegenerateRunsTest, ASeed000RoomWithNoWallWithinItsCutIsRefusedBeforeAnyFig
                                {experiment, "seed000_rooms.rooms[0].range_cut_m", "0.3 m"});
 }
 
+// A rooms list given with --set that holds not the world: main ran the world alone at the
+// top-level cut (seed000_room_1 at 4 m, exit 0), the list silently unused.
+TEST(DegenerateRunsTest, ASeed000RoomsListWithoutTheWorldIsRefused) {
+  const fs::path dir = Dir();
+  const std::string experiment =
+      (testing::SourceRoot() / "experiments/seed000_rooms.yaml").string();
+  const CliResult run = RunPlywood(
+      "run " + experiment + " --out " + (dir / "out").string() +
+          " --set seed000_rooms.scans=1 --set 'lines.extractors=[split_and_merge]'"
+          " --set 'seed000_rooms.rooms=[{world: worlds/seed000_room_2.xml, range_cut_m: 2}]'",
+      dir);
+  ExpectRefusedBeforeAnyFigure(
+      run, dir / "out",
+      {experiment + ": seed000_rooms.rooms: ", "changes nothing", "seed000_room_1.xml"});
+  // The list with the world runs it, at the listed cut.
+  const CliResult listed = RunPlywood(
+      "run " + experiment + " --quiet --out " + (dir / "listed").string() +
+          " --set seed000_rooms.scans=1 --set 'lines.extractors=[split_and_merge]'"
+          " --set 'seed000_rooms.rooms=[{world: worlds/seed000_room_1.xml, range_cut_m: 3}]'",
+      dir);
+  ASSERT_EQ(listed.exit_code, 0) << listed.err;
+  EXPECT_NE(Slurp(dir / "listed" / "rooms.csv").find("\nseed000_room_1,3,"), std::string::npos);
+}
+
 // A weighted-gain search over a run that travels less than 1 cm: main's line named neither the
 // file nor a field ("plywood: run: distance_m: drift is undefined ...").
 TEST(DegenerateRunsTest, AWeightedGainSearchOverLessThanACentimetreNamesTheExperiment) {
