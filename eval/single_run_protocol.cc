@@ -10,6 +10,7 @@
 #include "eval/geometric_map/geometric_map_run.h"
 #include "eval/lines/line_scan_scorer.h"
 #include "eval/lines/lines_csv.h"
+#include "eval/printed_figure.h"
 #include "eval/sonar_map/sonar_map_scorer.h"
 #include "render/async_snapshot_writer.h"
 #include "render/overlay.h"
@@ -157,10 +158,16 @@ int SingleRunProtocol(const ProtocolContext& context) {
   if (!quiet) {
     for (const auto& s : line_scores) {
       std::printf(
-          "%-34s recall %.3f, precision %.3f, sigma_r %.4f m, sigma_alpha %.3f deg, "
-          "%.1f points/line, %.1f us/scan\n",
-          ("lines " + s.name).c_str(), s.score.Recall(), s.score.Precision(), s.score.SigmaRM(),
-          s.score.SigmaAlphaDeg(), s.score.PointsPerLine(), s.us_per_scan);
+          "%-34s recall %.3f, precision %.3f, sigma_r %s, sigma_alpha %s, "
+          "%s, %.1f us/scan\n",
+          ("lines " + s.name).c_str(), s.score.Recall(), s.score.Precision(),
+          PrintedFigure(s.score.SigmaRM(), "%.4f", "m").c_str(),
+          PrintedFigure(s.score.SigmaAlphaDeg(), "%.3f", "deg").c_str(),
+          (std::isfinite(s.score.PointsPerLine())
+               ? PrintedFigure(s.score.PointsPerLine(), "%.1f") + " points/line"
+               : std::string("points/line null"))
+              .c_str(),
+          s.us_per_scan);
     }
   }
   return 0;

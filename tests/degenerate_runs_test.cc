@@ -123,6 +123,58 @@ TEST(DegenerateRunsTest, AWeightedGainSearchOverLessThanACentimetreNamesTheExper
       {experiment + ": weighted_gain_search: ", "less than 1 cm", "duration_s = 0.2 s"});
 }
 
+// An extractor that finds no line: its sigmas, points per line and reduction are null in
+// metrics.json; the printed tables said "nan" (main), now "null".
+TEST(DegenerateRunsTest, TablesOfAnExtractorThatFindsNoLinePrintNullNotNan) {
+  const fs::path dir = Dir();
+  const std::string experiment =
+      (testing::SourceRoot() / "experiments/seed000_rooms.yaml").string();
+  const CliResult rooms = RunPlywood(
+      "run " + experiment + " --out " + (dir / "rooms").string() +
+          " --set seed000_rooms.scans=1 --set 'lines.extractors=[split_and_merge, ransac]'"
+          " --set lines.ransac.min_inliers=500 --set lines.ransac.min_points=500",
+      dir);
+  ASSERT_EQ(rooms.exit_code, 0) << rooms.err;
+  EXPECT_NE(Slurp(dir / "rooms" / "metrics.json").find("\"sigma_r_m\": null"), std::string::npos);
+  EXPECT_NE(rooms.out.find("ransac              0.00      null   0.000"), std::string::npos)
+      << rooms.out;
+  EXPECT_NE(rooms.out.find("ransac             0.000   1.000      null        null      null"),
+            std::string::npos)
+      << rooms.out;
+  EXPECT_EQ(rooms.out.find("nan"), std::string::npos) << rooms.out;
+
+  // One step of a standing robot in the hall: one laser scan, ransac asked for more inliers than
+  // any wall gives it.
+  const fs::path file =
+      WriteFile(dir / "experiment.yaml",
+                "name: one_scan\n"
+                "duration_s: 0.01\n"
+                "world: worlds/hall.xml\n"
+                "robot: {model: p3dx, spawn: {x_m: 0, y_m: 0, theta_deg: 0}}\n"
+                "sensors: {laser: {rate_hz: 10}}\n"
+                "lines: {extractors: [ransac], ransac: {min_inliers: 300, min_points: 300}}\n"
+                "output: {snapshot: false}\n");
+  const CliResult run =
+      RunPlywood("run " + file.string() + " --out " + (dir / "run").string(), dir);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("sigma_r null, sigma_alpha null, points/line null"), std::string::npos)
+      << run.out;
+  EXPECT_EQ(run.out.find("nan"), std::string::npos) << run.out;
+
+  // The run's log of one scan replayed with the same extractor options.
+  const CliResult replay = RunPlywood("replay " + (dir / "run" / "laser.log").string() +
+                                          " --extractor ransac --set ransac.min_inliers=300"
+                                          " --set ransac.min_points=300 --out " +
+                                          (dir / "replay").string(),
+                                      dir);
+  ASSERT_EQ(replay.exit_code, 0) << replay.err;
+  EXPECT_NE(replay.out.find("rms distance           null (no ray explained)"), std::string::npos)
+      << replay.out;
+  EXPECT_NE(replay.out.find("rays per line          null (no line found)"), std::string::npos)
+      << replay.out;
+  EXPECT_EQ(replay.out.find("nan"), std::string::npos) << replay.out;
+}
+
 // A sweep of one cell whose one run stood: its drift_percent is null. Main printed "n 0" with no
 // word why, and plotted an empty box on axes round 0.
 TEST(DegenerateRunsTest, ASweepOfOneStandingRunSaysItsMetricHasNoValue) {

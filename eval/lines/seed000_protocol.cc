@@ -1,12 +1,14 @@
 #include "eval/lines/seed000_protocol.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
 
 #include "eval/lines/lines_csv.h"
 #include "eval/lines/seed000_rooms.h"
+#include "eval/printed_figure.h"
 #include "eval/score/csv_table.h"
 #include "msgs/shortest_number.h"
 #include "render/overlay.h"
@@ -161,10 +163,13 @@ int Seed000Protocol(const ProtocolContext& context) {
              "," + sim::FormatNumber(s.score.SigmaRM()) + "," +
              sim::FormatNumber(s.score.SigmaAlphaDeg()) + "\n";
       if (!context.quiet) {
-        std::printf("%-16s %5.1f %7.2f %6s %-16s %7.2f %8.1fx %7.3f %7.3f\n", stem.c_str(),
+        const std::string reduction_text = std::isfinite(reduction)
+                                               ? PrintedFigure(reduction, "%8.1f") + "x"
+                                               : PrintedFigure(reduction, "%9.1f");
+        std::printf("%-16s %5.1f %7.2f %6s %-16s %7.2f %s %7.3f %7.3f\n", stem.c_str(),
                     room.range_cut_m, result.WallsVisible(),
                     room.paper_lines ? std::to_string(room.paper_lines).c_str() : "-",
-                    s.name.c_str(), lines_per_scan, reduction, s.score.Recall(),
+                    s.name.c_str(), lines_per_scan, reduction_text.c_str(), s.score.Recall(),
                     s.score.Precision());
       }
     }
@@ -195,9 +200,10 @@ int Seed000Protocol(const ProtocolContext& context) {
     std::printf("\nall rooms (%ld scan pairs)\n%-16s %7s %7s %9s %11s %9s %9s\n", total_scans,
                 "extractor", "recall", "prec", "sigma_r_m", "sigma_a_deg", "pts/line", "us/scan");
     for (const auto& s : total) {
-      std::printf("%-16s %7.3f %7.3f %9.4f %11.3f %9.1f %9.1f\n", s.name.c_str(), s.score.Recall(),
-                  s.score.Precision(), s.score.SigmaRM(), s.score.SigmaAlphaDeg(),
-                  s.score.PointsPerLine(), s.us_per_scan);
+      std::printf("%-16s %7.3f %7.3f %s %s %s %9.1f\n", s.name.c_str(), s.score.Recall(),
+                  s.score.Precision(), PrintedFigure(s.score.SigmaRM(), "%9.4f").c_str(),
+                  PrintedFigure(s.score.SigmaAlphaDeg(), "%11.3f").c_str(),
+                  PrintedFigure(s.score.PointsPerLine(), "%9.1f").c_str(), s.us_per_scan);
     }
   }
   return 0;
