@@ -67,10 +67,11 @@ void PrintSummary(const sim::ExperimentRunner& runner) {
   }
   if (m.values().count("geometric_map.recall")) {
     std::printf(
-        "%-34s recall %.3f, precision %.3f, endpoint error %.3f m, %.0f segments, %.0f "
+        "%-34s recall %.3f, precision %.3f, endpoint error %s, %.0f segments, %.0f "
         "clusters, IR-invisible %.0f/%.0f\n",
         "geometric map (seed 003)", m.Number("geometric_map.recall"),
-        m.Number("geometric_map.precision"), m.Number("geometric_map.endpoint_error_m"),
+        m.Number("geometric_map.precision"),
+        PrintedFigure(m.Number("geometric_map.endpoint_error_m"), "%.3f", "m").c_str(),
         m.Number("geometric_map.segments"), m.Number("geometric_map.clusters"),
         m.Number("geometric_map.ir_invisible_mapped"),
         m.Number("geometric_map.ir_invisible_geoms"));

@@ -175,6 +175,29 @@ TEST(DegenerateRunsTest, TablesOfAnExtractorThatFindsNoLinePrintNullNotNan) {
   EXPECT_EQ(replay.out.find("nan"), std::string::npos) << replay.out;
 }
 
+// Seed 003's map over 3 s of the office with a scoring gate no segment passes, and no small object
+// in view: main wrote endpoint_error_m and orientation_error_deg 0 (no segment matched) and
+// cluster_recall 1 (0 objects of 0), and printed "endpoint error 0.000 m".
+TEST(DegenerateRunsTest, AGeometricMapsFiguresOfNothingAreNull) {
+  const fs::path dir = Dir();
+  const std::string experiment =
+      (testing::SourceRoot() / "experiments/seed003_office.yaml").string();
+  const CliResult run =
+      RunPlywood("run " + experiment + " --out " + (dir / "out").string() +
+                     " --set duration_s=3 --set geometric_map.scoring.max_endpoint_distance_m=1e-6",
+                 dir);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string metrics = Slurp(dir / "out" / "metrics.json");
+  for (const char* key :
+       {"\"cluster_recall\": null", "\"endpoint_error_m\": null", "\"orientation_error_deg\": null",
+        "\"small_objects_observed\": 0", "\"precision\": 0", "\"segments\": 4"}) {
+    EXPECT_NE(metrics.find(key), std::string::npos) << key << " in " << metrics;
+  }
+  EXPECT_NE(run.out.find("recall 0.000, precision 0.000, endpoint error null, 4 segments"),
+            std::string::npos)
+      << run.out;
+}
+
 // A sweep of one cell whose one run stood: its drift_percent is null. Main printed "n 0" with no
 // word why, and plotted an empty box on axes round 0.
 TEST(DegenerateRunsTest, ASweepOfOneStandingRunSaysItsMetricHasNoValue) {
