@@ -1,12 +1,14 @@
 // plywood replay LOG [--extractor NAME] [--set EXTRACTOR.KEY=VALUE]... [--skip-bad] [--out DIR]
 //                    [--force]
 
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <string>
 
 #include "apps/command.h"
 #include "eval/lines/log_replay_run.h"
+#include "eval/printed_figure.h"
 #include "perception/lines/line_extractor_factory.h"
 
 namespace plywood::apps {
@@ -28,8 +30,14 @@ void PrintSummary(const eval::LogReplayRequest& request, const eval::LogReplaySu
   std::printf("%-22s %.4f of %ld valid rays (lines only)\n", "rays explained", r.rays.Fraction(),
               r.rays.rays);
   std::printf("%-22s %.4f (lines + %ld circles)\n", "", r.rays_with_circles.Fraction(), r.circles);
-  std::printf("%-22s %.4f m\n", "rms distance", r.rays.RmsM());
-  std::printf("%-22s %.1f\n", "rays per line", r.RaysPerLine());
+  // Undefined (metrics.json's null) with no ray explained, no line found: said, not "nan".
+  const double rms_m = r.rays.RmsM();
+  std::printf("%-22s %s\n", "rms distance",
+              std::isfinite(rms_m) ? (eval::PrintedFigure(rms_m, "%.4f") + " m").c_str()
+                                   : "null (no ray explained)");
+  std::printf("%-22s %s\n", "rays per line",
+              std::isfinite(r.RaysPerLine()) ? eval::PrintedFigure(r.RaysPerLine(), "%.1f").c_str()
+                                             : "null (no line found)");
   std::printf("%-22s %.2f\n", "lines per scan", r.LinesPerScan());
   std::printf("%-22s %.1f us (%.0f scans/s)\n", "time per scan", r.UsPerScan(),
               r.UsPerScan() > 0 ? 1e6 / r.UsPerScan() : 0.0);

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -9,6 +10,7 @@
 #include "eval/geometric_map/geometric_map_run.h"
 #include "eval/lines/line_scan_scorer.h"
 #include "eval/lines/lines_csv.h"
+#include "eval/printed_figure.h"
 #include "eval/sonar_map/sonar_map_scorer.h"
 #include "render/async_snapshot_writer.h"
 #include "render/overlay.h"
@@ -47,9 +49,13 @@ void PrintSummary(const sim::ExperimentRunner& runner) {
   std::printf("%-34s %.3f m\n", "distance travelled (truth)", m.Number("truth.distance_m"));
   for (const auto& name : runner.record().estimator_names) {
     const std::string key = "odometry." + name + ".";
-    std::printf("%-34s final %.3f m, heading %.2f deg, drift %.2f %%, ATE %.3f m\n", name.c_str(),
-                m.Number(key + "final_error_m"), m.Number(key + "heading_error_deg"),
-                m.Number(key + "drift_percent"), m.Number(key + "ate_rms_m"));
+    // metrics.json's null (the truth travelled less than 1 cm) is printed as null, not nan.
+    const double drift = m.Number(key + "drift_percent");
+    char drift_text[64] = "null (travelled < 1 cm)";
+    if (std::isfinite(drift)) std::snprintf(drift_text, sizeof drift_text, "%.2f %%", drift);
+    std::printf("%-34s final %.3f m, heading %.2f deg, drift %s, ATE %.3f m\n", name.c_str(),
+                m.Number(key + "final_error_m"), m.Number(key + "heading_error_deg"), drift_text,
+                m.Number(key + "ate_rms_m"));
   }
   if (m.values().count("occupancy.error")) {
     std::printf(
@@ -61,10 +67,11 @@ void PrintSummary(const sim::ExperimentRunner& runner) {
   }
   if (m.values().count("geometric_map.recall")) {
     std::printf(
-        "%-34s recall %.3f, precision %.3f, endpoint error %.3f m, %.0f segments, %.0f "
+        "%-34s recall %.3f, precision %.3f, endpoint error %s, %.0f segments, %.0f "
         "clusters, IR-invisible %.0f/%.0f\n",
         "geometric map (seed 003)", m.Number("geometric_map.recall"),
-        m.Number("geometric_map.precision"), m.Number("geometric_map.endpoint_error_m"),
+        m.Number("geometric_map.precision"),
+        PrintedFigure(m.Number("geometric_map.endpoint_error_m"), "%.3f", "m").c_str(),
         m.Number("geometric_map.segments"), m.Number("geometric_map.clusters"),
         m.Number("geometric_map.ir_invisible_mapped"),
         m.Number("geometric_map.ir_invisible_geoms"));
@@ -152,10 +159,16 @@ int SingleRunProtocol(const ProtocolContext& context) {
   if (!quiet) {
     for (const auto& s : line_scores) {
       std::printf(
-          "%-34s recall %.3f, precision %.3f, sigma_r %.4f m, sigma_alpha %.3f deg, "
-          "%.1f points/line, %.1f us/scan\n",
-          ("lines " + s.name).c_str(), s.score.Recall(), s.score.Precision(), s.score.SigmaRM(),
-          s.score.SigmaAlphaDeg(), s.score.PointsPerLine(), s.us_per_scan);
+          "%-34s recall %.3f, precision %.3f, sigma_r %s, sigma_alpha %s, "
+          "%s, %.1f us/scan\n",
+          ("lines " + s.name).c_str(), s.score.Recall(), s.score.Precision(),
+          PrintedFigure(s.score.SigmaRM(), "%.4f", "m").c_str(),
+          PrintedFigure(s.score.SigmaAlphaDeg(), "%.3f", "deg").c_str(),
+          (std::isfinite(s.score.PointsPerLine())
+               ? PrintedFigure(s.score.PointsPerLine(), "%.1f") + " points/line"
+               : std::string("points/line null"))
+              .c_str(),
+          s.us_per_scan);
     }
   }
   return 0;

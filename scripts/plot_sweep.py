@@ -56,6 +56,11 @@ def main(out_dir):
                 v = float(text)
                 if math.isfinite(v):
                     values[label(row)].append(v)
+        if not any(values.values()):
+            # Every run's value is null (undefined there: drift_percent of a robot that stood):
+            # an empty box plot would draw axes round a figure of nothing.
+            print(f"plot_sweep: {metric}: no run has a value (every run's is null); no plot")
+            continue
         stats = {label(r): r for r in summary if r["metric"] == metric}
         width = max(4.0, 0.09 * max(len(line) for g in groups for line in g.split("\n")) * len(groups) + 1.5)
         fig, ax = plt.subplots(figsize=(min(width, 30.0), 4.6))

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <numbers>
 
@@ -263,8 +264,11 @@ bool AddGeometricMapMetrics(sim::ExperimentRunner& runner, GeometricMapRun* run)
   m.Set(key + "segments", static_cast<double>(real.size()));
   m.Set(key + "pseudo_segments", static_cast<double>(pseudo));
   m.Set(key + "unconfirmed_segments", static_cast<double>(unconfirmed));
+  // Figures of nothing are null, never 0 or 1 (s63): no segment, no segment matched, no small
+  // object in view.
+  const double kNull = std::numeric_limits<double>::quiet_NaN();
   m.Set(key + "points_per_segment",
-        real.empty() ? 0.0 : static_cast<double>(run->points_seen) / real.size());
+        real.empty() ? kNull : static_cast<double>(run->points_seen) / real.size());
   m.Set(key + "clusters", static_cast<double>(run->map.clusters().size()));
   m.Set(key + "observed_walls", static_cast<double>(observable));
   m.Set(key + "recall", observable ? static_cast<double>(observable_matched) / observable : 1.0);
@@ -274,11 +278,12 @@ bool AddGeometricMapMetrics(sim::ExperimentRunner& runner, GeometricMapRun* run)
   m.Set(key + "precision",
         real.empty() ? 1.0 : static_cast<double>(matched_segments) / real.size());
   m.Set(key + "orientation_error_deg",
-        matched_segments ? std::sqrt(sum_d_alpha_sq / matched_segments) * kRadToDeg : 0.0);
-  m.Set(key + "endpoint_error_m", matched_segments ? endpoint_error / (2 * matched_segments) : 0.0);
+        matched_segments ? std::sqrt(sum_d_alpha_sq / matched_segments) * kRadToDeg : kNull);
+  m.Set(key + "endpoint_error_m",
+        matched_segments ? endpoint_error / (2 * matched_segments) : kNull);
   m.Set(key + "small_objects_observed", static_cast<double>(objects_seen));
   m.Set(key + "cluster_recall",
-        objects_seen ? static_cast<double>(objects_found) / objects_seen : 1.0);
+        objects_seen ? static_cast<double>(objects_found) / objects_seen : kNull);
   m.Set(key + "ir_invisible_geoms", static_cast<double>(invisible_mapped.size()));
   m.Set(key + "ir_invisible_mapped", static_cast<double>(panels_mapped));
   AddPoseErrors(run->truth, run->corrected, key + "pose.corrected.", m);

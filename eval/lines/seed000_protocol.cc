@@ -1,16 +1,20 @@
 #include "eval/lines/seed000_protocol.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
 
 #include "eval/lines/lines_csv.h"
 #include "eval/lines/seed000_rooms.h"
+#include "eval/printed_figure.h"
 #include "eval/score/csv_table.h"
+#include "msgs/shortest_number.h"
 #include "render/overlay.h"
 #include "render/png_image.h"
 #include "render/world_to_pixel.h"
+#include "sim/config/config_error.h"
 #include "sim/config/experiment_config.h"
 #include "sim/runner/text_file.h"
 
@@ -48,6 +52,33 @@ void WriteRoomPicture(const eval::Seed000RoomResult& result, const sim::LinesCon
   render::WritePng(image, path);
 }
 
+// The field that sets a room's range cut: its entry in rooms:, else the top-level range_cut_m.
+std::string RangeCutField(const sim::ExperimentConfig& config,
+                          const eval::Seed000RoomsOptions& options, const eval::Seed000Room& room) {
+  for (std::size_t i = 0; i < options.rooms.size(); ++i) {
+    if (std::filesystem::equivalent(options.rooms[i].world_path, room.world_path)) {
+      return config.protocol + ".rooms[" + std::to_string(i) + "].range_cut_m";
+    }
+  }
+  return config.protocol + ".range_cut_m";
+}
+
+// A room with no wall observable within its cut has recall 0 / 0: its figures would read 1 over
+// nothing (s63), so the run is refused before any figure is printed or written.
+void RefuseARoomWithNoWallInView(const sim::ExperimentConfig& config,
+                                 const eval::Seed000RoomsOptions& options,
+                                 const eval::Seed000RoomResult& result) {
+  if (result.scores.empty() || result.scores.front().score.observable > 0) return;
+  throw sim::ConfigError(
+      config.source_file, RangeCutField(config, options, result.room),
+      "no ground-truth wall of " + result.room.world_path.filename().string() +
+          " was observable within the range cut of " +
+          msgs::ShortestNumber(result.room.range_cut_m) + " m in any of the " +
+          std::to_string(result.scans.size()) +
+          " scan pairs (scoring.min_observed_rays returns): recall is undefined, nothing to "
+          "score against; raise the cut");
+}
+
 }  // namespace
 
 void CheckSeed000Options(const sim::ExperimentConfig& config) {
@@ -83,15 +114,21 @@ int Seed000Protocol(const ProtocolContext& context) {
   std::string csv =
       "room,range_cut_m,walls_visible,paper_lines,extractor,lines_per_scan,points_per_scan,"
       "reduction,recall,precision,sigma_r_m,sigma_alpha_deg\n";
+  // Every room is run and checked before the first figure is printed or written.
+  std::vector<eval::Seed000RoomResult> results;
+  for (const eval::Seed000Room& room : rooms) {
+    results.push_back(eval::RunSeed000Room(config, room, options.scans, options.median_of_scans,
+                                           options.round_objects_from_scans));
+    RefuseARoomWithNoWallInView(config, options, results.back());
+  }
   if (!context.quiet) {
     std::printf("\nseed 000 rooms: two back-to-back LMS 200 at the origin, %d scan pairs each\n",
                 options.scans);
     std::printf("%-16s %5s %7s %6s %-16s %7s %9s %7s %7s\n", "room", "cut_m", "visible", "paper",
                 "extractor", "lines", "reduction", "recall", "prec");
   }
-  for (const eval::Seed000Room& room : rooms) {
-    const eval::Seed000RoomResult result = eval::RunSeed000Room(
-        config, room, options.scans, options.median_of_scans, options.round_objects_from_scans);
+  for (const eval::Seed000RoomResult& result : results) {
+    const eval::Seed000Room& room = result.room;
     const std::string stem = room.world_path.stem().string();
     const std::string key = "seed000." + stem;
     for (const LinesCsvRow& row : LinesCsvRows(result.scores, stem)) line_rows.push_back(row);
@@ -126,10 +163,13 @@ int Seed000Protocol(const ProtocolContext& context) {
              "," + sim::FormatNumber(s.score.SigmaRM()) + "," +
              sim::FormatNumber(s.score.SigmaAlphaDeg()) + "\n";
       if (!context.quiet) {
-        std::printf("%-16s %5.1f %7.2f %6s %-16s %7.2f %8.1fx %7.3f %7.3f\n", stem.c_str(),
+        const std::string reduction_text = std::isfinite(reduction)
+                                               ? PrintedFigure(reduction, "%8.1f") + "x"
+                                               : PrintedFigure(reduction, "%9.1f");
+        std::printf("%-16s %5.1f %7.2f %6s %-16s %7.2f %s %7.3f %7.3f\n", stem.c_str(),
                     room.range_cut_m, result.WallsVisible(),
                     room.paper_lines ? std::to_string(room.paper_lines).c_str() : "-",
-                    s.name.c_str(), lines_per_scan, reduction, s.score.Recall(),
+                    s.name.c_str(), lines_per_scan, reduction_text.c_str(), s.score.Recall(),
                     s.score.Precision());
       }
     }
@@ -160,9 +200,10 @@ int Seed000Protocol(const ProtocolContext& context) {
     std::printf("\nall rooms (%ld scan pairs)\n%-16s %7s %7s %9s %11s %9s %9s\n", total_scans,
                 "extractor", "recall", "prec", "sigma_r_m", "sigma_a_deg", "pts/line", "us/scan");
     for (const auto& s : total) {
-      std::printf("%-16s %7.3f %7.3f %9.4f %11.3f %9.1f %9.1f\n", s.name.c_str(), s.score.Recall(),
-                  s.score.Precision(), s.score.SigmaRM(), s.score.SigmaAlphaDeg(),
-                  s.score.PointsPerLine(), s.us_per_scan);
+      std::printf("%-16s %7.3f %7.3f %s %s %s %9.1f\n", s.name.c_str(), s.score.Recall(),
+                  s.score.Precision(), PrintedFigure(s.score.SigmaRM(), "%9.4f").c_str(),
+                  PrintedFigure(s.score.SigmaAlphaDeg(), "%11.3f").c_str(),
+                  PrintedFigure(s.score.PointsPerLine(), "%9.1f").c_str(), s.us_per_scan);
     }
   }
   return 0;

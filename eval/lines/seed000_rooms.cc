@@ -158,6 +158,20 @@ std::vector<Seed000Room> RoomsToRun(const sim::ExperimentConfig& config,
       return RefuseASetCutTheRoomsIgnore(config, {room});
     }
   }
+  // A rooms list given on the command line that holds not the world runs none of its rooms: the
+  // run would be the world's alone, at the top-level cut, as if the --set were not given (s63).
+  const std::string rooms_key = config.protocol + ".rooms";
+  for (const std::string& key : config.set_keys) {
+    if (key == rooms_key || key.rfind(rooms_key + "[", 0) == 0 ||
+        key.rfind(rooms_key + ".", 0) == 0) {
+      throw sim::ConfigError(
+          config.source_file, rooms_key,
+          "set on the command line, it changes nothing: no room of it has the world " +
+              config.world_path.filename().string() +
+              ", and the rooms run only when the world is the first room's (a listed world runs "
+              "that room alone); give --set world= the room to run, or list the world");
+    }
+  }
   Seed000Room user;
   user.world = config.world;
   user.world_path = config.world_path;

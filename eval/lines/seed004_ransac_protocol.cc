@@ -6,6 +6,7 @@
 #include <string>
 
 #include "eval/lines/lines_csv.h"
+#include "eval/printed_figure.h"
 #include "perception/lines/line_scoring.h"
 #include "perception/lines/ransac_extractor.h"
 #include "render/overlay.h"
@@ -176,10 +177,10 @@ int Seed004RansacProtocol(const ProtocolContext& context) {
     }
     if (!context.quiet) {
       std::printf(
-          "%-9s %7zu points  %3zu lines  recall %.3f  precision %.3f  sigma_r %.4f m  "
+          "%-9s %7zu points  %3zu lines  recall %.3f  precision %.3f  sigma_r %s  "
           "false %d (%d on legs/columns)\n",
           name.c_str(), cloud.points_W.size(), lines.size(), score.Recall(), score.Precision(),
-          score.SigmaRM(), false_lines, false_on_legs);
+          PrintedFigure(score.SigmaRM(), "%.4f", "m").c_str(), false_lines, false_on_legs);
     }
   }
   WriteLinesCsv(out / "lines.csv", line_rows);

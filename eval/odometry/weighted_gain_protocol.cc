@@ -4,8 +4,10 @@
 #include <cstddef>
 #include <cstdio>
 
+#include "msgs/shortest_number.h"
 #include "robot/calibration/weighted_gain_search.h"
 #include "robot/odometry/odometry_increments.h"
+#include "robot/odometry/trajectory_metrics.h"
 #include "sim/config/config_archive.h"
 #include "sim/config/config_error.h"
 #include "sim/config/experiment_config.h"
@@ -63,6 +65,16 @@ int WeightedGainProtocol(const ProtocolContext& context) {
     const msgs::Pose2D& a = record.trajectory[i - 1].truth;
     const msgs::Pose2D& b = record.trajectory[i].truth;
     run.distance_m += std::hypot(b.x_m - a.x_m, b.y_m - a.y_m);
+  }
+  // The search minimises drift_percent, which is undefined below 1 cm of travel: refused naming
+  // the experiment, not as the search's own "run: distance_m" (s63).
+  if (!(run.distance_m >= robot::kMinDriftDistanceM)) {
+    throw sim::ConfigError(
+        config.source_file, "weighted_gain_search",
+        "the robot travelled " + msgs::ShortestNumber(run.distance_m) +
+            " m in the run (duration_s = " + msgs::ShortestNumber(config.duration_s) +
+            " s), less than 1 cm: drift_percent, which the search minimises, is undefined; give a "
+            "run that travels (a longer duration_s, a controller that moves)");
   }
   const robot::GainSearchResult result =
       robot::SearchWeightedGains(geometry, config.odometry.weighted, grid, run);

@@ -11,6 +11,7 @@
 
 #include "eval/lines/line_scan_scorer.h"
 #include "eval/lines/lines_csv.h"
+#include "eval/printed_figure.h"
 #include "eval/score/run_laser_scans.h"
 #include "eval/score/trajectory_file.h"
 #include "msgs/shortest_number.h"
@@ -124,9 +125,10 @@ ScoreReport ScoreLinesFile(const std::filesystem::path& run_dir, const std::file
   report.table += line;
   for (const ExtractorScore& s : scores) {
     std::snprintf(
-        line, sizeof(line), "%-18s %8.4f %9.4f %10.5f %15.4f %15.2f %14.2f\n", s.name.c_str(),
-        s.score.Recall(), s.score.Precision(), s.score.SigmaRM(), s.score.SigmaAlphaDeg(),
-        s.score.PointsPerLine(),
+        line, sizeof(line), "%-18s %8.4f %9.4f %s %s %s %14.2f\n", s.name.c_str(), s.score.Recall(),
+        s.score.Precision(), PrintedFigure(s.score.SigmaRM(), "%10.5f").c_str(),
+        PrintedFigure(s.score.SigmaAlphaDeg(), "%15.4f").c_str(),
+        PrintedFigure(s.score.PointsPerLine(), "%15.2f").c_str(),
         scans ? static_cast<double>(s.score.extracted) / static_cast<double>(scans) : 0.0);
     report.table += line;
   }

@@ -352,6 +352,16 @@ SweepCollectOutcome CollectSweep(const fs::path& out_dir) {
         label += (i ? ", " : "") + group_columns[i] + "=" + group[i];
       if (label.empty()) label = "all runs";
       table += "  " + label + ": n " + std::to_string(s.n);
+      // Runs without a value (null: undefined there, as drift_percent of a robot that stood) are
+      // said, not left to read as a figure of nothing or a mean of all the group's runs (s63).
+      const std::size_t runs = members[group].size();
+      if (s.n == 0) {
+        table += " (no value in " + std::string(runs == 1 ? "its run" : "any of its runs") +
+                 ": null or absent in metrics.json, docs/run_outputs.md)";
+      } else if (static_cast<std::size_t>(s.n) < runs) {
+        table += " (of " + std::to_string(runs) + " runs; " + std::to_string(runs - s.n) +
+                 " without a value)";
+      }
       if (s.n == 1) {
         table += ", value " + Fixed(s.mean, "%.4g") + " (one run: no spread or 95 % CI)";
       } else if (s.n) {
