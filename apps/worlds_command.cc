@@ -4,12 +4,15 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <stdexcept>
+#include <system_error>
 
 #include "apps/command.h"
 #include "apps/decimal_whole_number.h"
+#include "apps/interrupt_signals.h"
 #include "render/world_preview.h"
 #include "sim/config/decimal_whole_number.h"
 #include "sim/world/generator/robot_reach.h"
@@ -92,21 +95,46 @@ Command AddWorldsCommand(CLI::App& app) {
         }
         options.seed = *seed;
         options.out_dir = flags->out;
+        // SIGINT / SIGTERM stop the generation between two files and remove it, then end the
+        // process by that signal: killed mid-way, it left worlds without index.csv, and the
+        // folder refused the next generation (s63 fiftieth pass).
+        InterruptSignals signals;
+        options.interrupted = [&signals] { return signals.Received() != 0; };
         const auto start = std::chrono::steady_clock::now();
         std::vector<sim::worldgen::GeneratedWorldFile> files;
         try {
           files = sim::worldgen::GenerateWorlds(options);
+        } catch (const sim::worldgen::GenerationInterrupted&) {
+          signals.DieOfTheReceivedSignal();
+          throw;
         } catch (const std::invalid_argument& e) {
           throw UsageError("worlds generate: --" + std::string(e.what()));
         }
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (flags->pictures) {
-          for (const auto& file : files) {
-            render::WriteWorldPreview(file.mjcf, sim::worldgen::LargestRobotReachM(),
-                                      std::filesystem::path(file.mjcf).replace_extension(".png"));
+          try {
+            for (const auto& file : files) {
+              if (options.interrupted()) throw sim::worldgen::GenerationInterrupted();
+              render::WriteWorldPreview(file.mjcf, sim::worldgen::LargestRobotReachM(),
+                                        std::filesystem::path(file.mjcf).replace_extension(".png"));
+            }
+          } catch (...) {
+            // A generation whose pictures cannot be written is removed as a whole, as one cut
+            // short by a world: its worlds and index.csv without pictures looked finished (s63).
+            std::error_code ignored;
+            for (const auto& file : files) {
+              std::filesystem::remove(file.mjcf, ignored);
+              std::filesystem::remove(file.sidecar, ignored);
+              std::filesystem::remove(std::filesystem::path(file.mjcf).replace_extension(".png"),
+                                      ignored);
+            }
+            std::filesystem::remove(options.out_dir / "index.csv", ignored);
+            signals.DieOfTheReceivedSignal();
+            throw;
           }
         }
+        signals.DieOfTheReceivedSignal();  // one that came after the last file: the folder is whole
         if (!flags->quiet) {
           std::printf("%d %s world%s (seed %llu) in %s: %.1f ms per world\n", options.count,
                       options.family.c_str(), options.count == 1 ? "" : "s",

@@ -8,6 +8,9 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <system_error>
+
+#include "sim/runner/text_file.h"
 
 namespace plywood::render {
 namespace {
@@ -41,10 +44,10 @@ void WritePngBytes(png_structp png, png_bytep data, png_size_t size) {
 
 void FlushPngBytes(png_structp) {}
 
-}  // namespace
-
-void WritePng(const RgbImage& image, const std::filesystem::path& path) {
-  std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "wb"));
+// Encodes `image` into `target`; errors name `path`, the file the caller asked for.
+void EncodePng(const RgbImage& image, const std::filesystem::path& target,
+               const std::filesystem::path& path) {
+  std::unique_ptr<std::FILE, FileCloser> file(std::fopen(target.c_str(), "wb"));
   if (!file) throw std::runtime_error(path.string() + ": cannot open for writing");
   PngWriteState state{.file = file.get(), .error = {}};
   png_structp png =
@@ -73,6 +76,32 @@ void WritePng(const RgbImage& image, const std::filesystem::path& path) {
   // The stdio buffer's last bytes are written on closing: a full disk may show only here.
   if (std::fclose(file.release()) != 0) {
     throw std::runtime_error(path.string() + ": cannot write: " + std::strerror(errno));
+  }
+}
+
+}  // namespace
+
+void WritePng(const RgbImage& image, const std::filesystem::path& path) {
+  std::error_code error;
+  // A device or a FIFO (/dev/full, /dev/stdout) is written to: a rename would replace it.
+  if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error)) {
+    EncodePng(image, path, path);
+    return;
+  }
+  // Staged and renamed into place: a failed write (a full disk, a file-size limit) left a cut PNG
+  // where a whole one was expected, in place of an earlier picture (s63 fiftieth pass).
+  const std::filesystem::path partial = sim::StagedTextFilePath(path);
+  try {
+    EncodePng(image, partial, path);
+  } catch (const std::runtime_error&) {
+    std::filesystem::remove(partial, error);
+    throw;
+  }
+  std::filesystem::rename(partial, path, error);
+  if (error) {
+    std::error_code ignored;
+    std::filesystem::remove(partial, ignored);
+    throw std::runtime_error(path.string() + ": cannot write: " + error.message());
   }
 }
 

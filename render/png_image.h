@@ -20,7 +20,9 @@ struct RgbImage {
   }
 };
 
-// Writes `image` as PNG. @throws std::runtime_error naming `path` on failure.
+// Writes `image` as PNG under a temporary name beside `path` ("PATH.partial-PID") and renames it
+// into place, so a failed write leaves no cut picture and an earlier one as it was; a device
+// (/dev/full) is written to directly. @throws std::runtime_error naming `path` on failure.
 void WritePng(const RgbImage& image, const std::filesystem::path& path);
 
 // Reads an 8-bit RGB or RGBA PNG (alpha dropped). @throws std::runtime_error naming `path`.

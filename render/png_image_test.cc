@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "tests/support/file_size_limit.h"
 #include "tests/support/mujoco_test_support.h"
 
 namespace plywood::render {
@@ -79,6 +80,35 @@ TEST(PngImageTest, AFullDiskIsOneErrorNamingTheFileForBigAndSmallPictures) {
     }
     EXPECT_EQ(::testing::internal::GetCapturedStderr(), "") << width << " x " << height;
   }
+}
+
+// A write past a file-size limit (as a full disk) left the picture cut at the limit in place of
+// the earlier one: a PNG is staged beside its path and renamed into place, so the earlier picture
+// stays whole and no staged copy is left (s63 fiftieth pass).
+TEST(PngImageTest, AFailedWriteKeepsTheEarlierPictureAndLeavesNoCutFile) {
+  const std::filesystem::path dir = testing::MakeTempDir("png_image_limit");
+  const std::filesystem::path path = dir / "picture.png";
+  const RgbImage earlier = TestPicture(7, 3);
+  WritePng(earlier, path);
+  const auto earlier_size = std::filesystem::file_size(path);
+  {
+    const testing::FileSizeLimit limit(16 * 1024);  // the 1024 x 653 picture is about 1.3 MB
+    if (!limit.active()) GTEST_SKIP() << "cannot lower the file-size limit";
+    try {
+      WritePng(TestPicture(1024, 653), path);
+      ADD_FAILURE() << "expected std::runtime_error";
+    } catch (const std::runtime_error& e) {
+      EXPECT_EQ(std::string(e.what()), path.string() + ": cannot write: File too large");
+    }
+  }
+  EXPECT_EQ(std::filesystem::file_size(path), earlier_size);
+  EXPECT_TRUE(ReadPng(path).pixels == earlier.pixels);
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    ++files;
+    EXPECT_EQ(entry.path(), path);
+  }
+  EXPECT_EQ(files, 1);
 }
 
 }  // namespace

@@ -16,6 +16,27 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 
+# Exit status of a plot that could not be written, after its one line: `plywood sweep` then adds
+# no note of its own and exits 1.
+CANNOT_WRITE = 3
+
+
+def save(fig, path):
+    """Staged and renamed into place: a full disk or a file-size limit left a cut PNG in plots/
+    and a Python traceback, the sweep exiting 0 (s63 fiftieth pass)."""
+    partial = f"{path}.partial-{os.getpid()}"
+    try:
+        fig.savefig(partial, dpi=110, format="png")
+        os.replace(partial, path)
+    except OSError as e:
+        try:
+            os.remove(partial)
+        except OSError:
+            pass
+        print(f"plywood sweep: {path}: cannot write: {e.strerror}", file=sys.stderr)
+        sys.exit(CANNOT_WRITE)
+
+
 def main(out_dir):
     with open(os.path.join(out_dir, "sweep.json")) as f:
         meta = json.load(f)
@@ -89,7 +110,7 @@ def main(out_dir):
             ax.legend(loc="best", fontsize=8)
         fig.tight_layout()
         path = os.path.join(plots, metric.replace("/", "_") + ".png")
-        fig.savefig(path, dpi=110)
+        save(fig, path)
         plt.close(fig)
         print(f"plot_sweep: {path}")
 

@@ -18,6 +18,7 @@
 #include "eval/sweep/sweep_csv.h"
 #include "plywood_paths.h"
 #include "tests/support/cli_test_support.h"
+#include "tests/support/file_size_limit.h"
 #include "tests/support/mujoco_test_support.h"
 #include "tests/support/nested_yaml_aliases.h"
 
@@ -1742,6 +1743,42 @@ TEST(SweepCliTest, AWorldSpawnTheSweepCannotUseIsRefusedAtLoad) {
     EXPECT_NE(r.err.find(got), std::string::npos) << r.err;
     EXPECT_EQ(CountRunDirs(out), 0);
   }
+}
+
+// A plot the disk would not take (a file-size limit, as a full disk) was left in plots/ cut at the
+// limit, with matplotlib's traceback and "plotting failed", exit 0. Now the plot is staged: one
+// line naming it and why, no cut file, exit 1, and the next collect writes it (s63 fiftieth pass).
+TEST(SweepCliTest, APlotThatCannotBeWrittenIsOneLineAndNoCutFile) {
+  if (std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") != 0) {
+    GTEST_SKIP() << "python3-matplotlib not installed: no plots";
+  }
+  const fs::path dir = MakeTempDir("SweepPlotLimit");
+  const fs::path out = dir / "out";
+  const fs::path sweep =
+      WriteFile(dir / "s.yaml",
+                "experiment: " + (SourceRoot() / "tests/data/sweep_default.yaml").string() +
+                    "\nseeds: [1, 2]\nworlds: [" + (SourceRoot() / "worlds/hall.xml").string() +
+                    "]\nset:\n  duration_s: [0.5]\n  output.snapshot: [false]\n"
+                    "metrics: [truth.distance_m]\n");
+  const auto first = RunPlywood("sweep " + sweep.string() + " --quiet --out " + out.string(), dir);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const fs::path plot = out / "plots" / "truth.distance_m.png";
+  ASSERT_GT(fs::file_size(plot), 8u * 1024);
+  fs::remove(plot);
+  testing::CliResult collected;
+  {
+    const testing::FileSizeLimit limit(8 * 1024);  // results.csv is 1 kB, the plot 20 kB
+    if (!limit.active()) GTEST_SKIP() << "cannot lower the file-size limit";
+    collected = RunPlywood("sweep --collect " + out.string() + " --quiet", dir);
+  }
+  EXPECT_EQ(collected.exit_code, 1) << collected.err;
+  EXPECT_EQ(collected.err, "plywood sweep: " + plot.string() + ": cannot write: File too large\n");
+  for (const auto& entry : fs::directory_iterator(out / "plots")) {
+    ADD_FAILURE() << "left " << entry.path();
+  }
+  const auto again = RunPlywood("sweep --collect " + out.string() + " --quiet", dir);
+  EXPECT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_GT(fs::file_size(plot), 8u * 1024);
 }
 
 }  // namespace

@@ -2,11 +2,17 @@
 // same bytes for the same seed, and bad input gives one line naming the field and exit code 2.
 
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <cstdio>
 #include <string>
 #include <vector>
 
+#include "plywood_paths.h"
 #include "tests/support/cli_test_support.h"
+#include "tests/support/file_size_limit.h"
 #include "tests/support/mujoco_test_support.h"
 
 namespace plywood {
@@ -247,6 +253,92 @@ TEST(WorldsCliTest, AFolderUnderAGeneratedNameRemovesNothing) {
   EXPECT_TRUE(fs::exists(out / "index.csv"));
   EXPECT_TRUE(fs::exists(out / "room_s1_00000.xml"));
   EXPECT_EQ(Slurp(out / "room_s1_00000.json" / "notes"), "mine\n");
+}
+
+// `--pictures` past a file-size limit (as a full disk) left the generation's worlds and index.csv
+// with the first picture cut at the limit and the others missing, exit 1: a glob of the folder
+// loaded them as a finished generation. Now the generation is removed as a whole, as one cut short
+// by a world, and the next generation into the folder runs (s63 fiftieth pass).
+TEST(WorldsCliTest, PicturesThatCannotBeWrittenLeaveNoGeneration) {
+  const fs::path dir = MakeTempDir("worlds_cli_pictures_limit");
+  const fs::path out = dir / "wg";
+  const std::string generate =
+      "worlds generate office --count 2 --seed 7 --pictures --quiet --out " + out.string();
+  testing::CliResult result;
+  {
+    const testing::FileSizeLimit limit(12 * 1024);  // a world is 9 kB, its picture 19 kB
+    if (!limit.active()) GTEST_SKIP() << "cannot lower the file-size limit";
+    result = RunPlywood(generate, dir);
+  }
+  EXPECT_EQ(result.exit_code, 1) << "killed by a signal? " << result.err;
+  EXPECT_EQ(result.err, "plywood: error: " + (out / "office_s7_00000.png").string() +
+                            ": cannot write: File too large\n");
+  ASSERT_TRUE(fs::is_directory(out));
+  for (const auto& entry : fs::directory_iterator(out)) ADD_FAILURE() << "left " << entry.path();
+  const auto rerun = RunPlywood(generate, dir);
+  EXPECT_EQ(rerun.exit_code, 0) << rerun.err;
+  for (const char* file : {"office_s7_00000.png", "office_s7_00001.png", "index.csv"}) {
+    EXPECT_TRUE(fs::is_regular_file(out / file)) << file;
+  }
+}
+
+// SIGTERM or SIGINT mid-generation left the worlds written so far without index.csv, and the next
+// generation into the folder was refused ("holds files that are not a world generation (no
+// index.csv)"). Now the generation stops between two files, removes itself and dies of the
+// signal, and the folder takes the next one (s63 fiftieth pass).
+TEST(WorldsCliTest, AGenerationStoppedBySigtermOrSigintLeavesNothingAndTheNextRuns) {
+  const fs::path dir = MakeTempDir("worlds_cli_signal");
+  const fs::path plywood = fs::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood";
+  for (const int signal_number : {SIGTERM, SIGINT}) {
+    const fs::path out = dir / ("wg" + std::to_string(signal_number));
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      signal(SIGINT, SIG_DFL);  // as from a terminal, even when the test runs in the background
+      std::freopen("/dev/null", "w", stdout);
+      std::freopen("/dev/null", "w", stderr);
+      execl(plywood.c_str(), plywood.c_str(), "worlds", "generate", "office", "--count", "5000",
+            "--seed", "3", "--out", out.c_str(), static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    const fs::path first = out / "office_s3_00000.json";  // written after its world
+    for (int i = 0; i < 3000 && !fs::exists(first); ++i) usleep(2000);
+    ASSERT_TRUE(fs::exists(first)) << "the generation never started";
+    kill(pid, signal_number);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    EXPECT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == signal_number) << status;
+    ASSERT_TRUE(fs::is_directory(out));
+    for (const auto& entry : fs::directory_iterator(out)) {
+      ADD_FAILURE() << "left " << entry.path();
+    }
+    const auto rerun =
+        RunPlywood("worlds generate office --count 1 --seed 3 --quiet --out " + out.string(), dir);
+    EXPECT_EQ(rerun.exit_code, 0) << rerun.err;
+    EXPECT_TRUE(fs::is_regular_file(out / "index.csv"));
+  }
+}
+
+// A picture is staged as NAME.png.partial-PID (render::WritePng): one a SIGKILL left beside an
+// index.csv naming NAME goes with the generation it belongs to; a staged copy of any other name
+// is the user's and still stops the next generation (s63 fiftieth pass).
+TEST(WorldsCliTest, AStagedPictureAKillLeftGoesWithItsGeneration) {
+  const fs::path dir = MakeTempDir("worlds_cli_staged_picture");
+  const fs::path out = dir / "wg";
+  const std::string generate =
+      "worlds generate room --count 1 --seed 5 --quiet --out " + out.string();
+  ASSERT_EQ(RunPlywood(generate, dir).exit_code, 0);
+  testing::WriteFile(out / "room_s5_00000.png.partial-99", "cut");
+  const auto rerun = RunPlywood(generate, dir);
+  EXPECT_EQ(rerun.exit_code, 0) << rerun.err;
+  EXPECT_FALSE(fs::exists(out / "room_s5_00000.png.partial-99"));
+  testing::WriteFile(out / "notes.txt.partial-99", "mine");
+  const auto refused = RunPlywood(generate, dir);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("notes.txt.partial-99, which no world generation wrote"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_EQ(Slurp(out / "notes.txt.partial-99"), "mine");
 }
 
 }  // namespace plywood

@@ -1,5 +1,6 @@
 #include "eval/sweep/sweep.h"
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -18,16 +19,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// scripts/plot_sweep.py's exit status for a plot it could not write (CANNOT_WRITE there).
+constexpr int kPlotCannotBeWritten = 3;
+
 // One PNG per chosen metric (scripts/plot_sweep.py, matplotlib); skipped with a note when
-// python3-matplotlib is missing, since plots are a convenience, not a result.
-void Plot(const fs::path& out_dir, bool quiet) {
+// python3-matplotlib is missing, since plots are a convenience, not a result. False when a plot
+// could not be written (a full disk).
+bool Plot(const fs::path& out_dir, bool quiet) {
   const fs::path script = sim::DataRoot() / "scripts" / "plot_sweep.py";
-  if (!fs::is_regular_file(script)) return;
+  if (!fs::is_regular_file(script)) return true;
   const std::string check = "/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1";
   if (std::system(check.c_str()) != 0) {
     if (!quiet)
       std::fprintf(stderr, "plywood sweep: no plots (python3-matplotlib not installed)\n");
-    return;
+    return true;
   }
   const auto quote = [](const std::string& text) {  // single quotes for the shell
     std::string quoted = "'";
@@ -36,14 +41,21 @@ void Plot(const fs::path& out_dir, bool quiet) {
   };
   const std::string command = "/usr/bin/python3 " + quote(script.string()) + " " +
                               quote(out_dir.string()) + (quiet ? " >/dev/null" : "");
-  if (std::system(command.c_str()) != 0 && !quiet) {
+  const int status = std::system(command.c_str());
+  // A plot the disk would not take was named on one line by the script, which left no cut file:
+  // a failed write, not a missing convenience, so the sweep exits 1 (s63 fiftieth pass).
+  if (status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == kPlotCannotBeWritten) {
+    return false;
+  }
+  if (status != 0 && !quiet) {
     std::fprintf(stderr, "plywood sweep: plotting failed (see above)\n");
   }
+  return true;
 }
 
 int Collect(const fs::path& out_dir, bool quiet) {
   const SweepCollectOutcome outcome = CollectSweep(out_dir);
-  Plot(out_dir, quiet);
+  const bool plotted = Plot(out_dir, quiet);
   if (!quiet) {
     std::printf("%s", outcome.table.c_str());
     std::printf("\n%-12s %d of %d runs finished, %d failed, %d not run", "sweep", outcome.done,
@@ -56,7 +68,7 @@ int Collect(const fs::path& out_dir, bool quiet) {
     std::printf("%-12s %s (results.csv, summary.csv, failures.csv, plots/)\n", "results",
                 out_dir.c_str());
   }
-  return outcome.done == outcome.cells ? 0 : 1;
+  return outcome.done == outcome.cells && plotted ? 0 : 1;
 }
 
 std::vector<SweepCell> Cells(const SweepSpec& spec, const SweepLayout& layout, bool quiet) {

@@ -112,7 +112,18 @@ void RemoveEarlierGeneration(const std::filesystem::path& dir) {
   }
   std::vector<fs::path> earlier;  // only the folder's own files are ever removed
   for (const fs::directory_entry& entry : fs::directory_iterator(dir)) {
-    if (std::find(generated.begin(), generated.end(), entry.path()) == generated.end()) {
+    // A staged copy ("office_s7_00000.png.partial-PID") is what a kill mid-write left of one of
+    // the generation's files, so it goes with them.
+    const std::string name = entry.path().filename().string();
+    const std::size_t infix = name.rfind(".partial-");
+    const fs::path staged_of =
+        infix == std::string::npos ? fs::path() : dir / name.substr(0, infix);
+    const bool staged_copy =
+        infix != std::string::npos &&
+        StagedCopyPid(name, staged_of.filename().string()).has_value() &&
+        std::find(generated.begin(), generated.end(), staged_of) != generated.end();
+    if (!staged_copy &&
+        std::find(generated.begin(), generated.end(), entry.path()) == generated.end()) {
       throw std::invalid_argument("out: " + dir.string() + " holds " +
                                   entry.path().filename().string() +
                                   ", which no world generation wrote; choose another folder");
@@ -146,6 +157,7 @@ std::vector<GeneratedWorldFile> GenerateWorlds(const GenerateWorldsOptions& opti
   std::string index = kWorldIndexHeader;
   try {
     for (int i = 0; i < options.count; ++i) {
+      if (options.interrupted && options.interrupted()) throw GenerationInterrupted();
       const GeneratedWorld world = GenerateWorld(options.family, options.seed, i);
       GeneratedWorldFile file;
       file.mjcf = options.out_dir / (world.Name() + ".xml");
@@ -163,6 +175,7 @@ std::vector<GeneratedWorldFile> GenerateWorlds(const GenerateWorldsOptions& opti
       }
       index += WorldIndexRow(world);
     }
+    if (options.interrupted && options.interrupted()) throw GenerationInterrupted();
     WriteText(options.out_dir / "index.csv", index);
   } catch (...) {
     // A generation cut short (a full disk) is removed as a whole: a few worlds without index.csv

@@ -2,6 +2,8 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -27,9 +29,18 @@ struct GenerateWorldsOptions {
   // Compile each written world with MuJoCo, alone and with the largest robot at every spawn pose
   // (CheckWrittenWorld); a defect is a generator bug and throws.
   bool check_with_mujoco = true;
+  // Asked before each world: true stops the generation, which is removed as a whole (a SIGTERM
+  // to `plywood worlds generate` left worlds without index.csv, and the folder refused the next
+  // generation), and GenerationInterrupted is thrown.
+  std::function<bool()> interrupted;
 
   // @throws std::invalid_argument whose message starts with the field: family, count, out.
   void Validate() const;
+};
+
+// Thrown by GenerateWorlds when its options' `interrupted` said so; nothing of it is left.
+struct GenerationInterrupted : std::runtime_error {
+  GenerationInterrupted() : std::runtime_error("world generation interrupted") {}
 };
 
 struct GeneratedWorldFile {

@@ -1,0 +1,46 @@
+#include "apps/interrupt_signals.h"
+
+#include <signal.h>
+
+#include <csignal>
+
+namespace plywood::apps {
+namespace {
+
+volatile std::sig_atomic_t received_signal = 0;
+struct sigaction previous_int {};
+struct sigaction previous_term {};
+
+void Remember(int signal_number) { received_signal = signal_number; }
+
+}  // namespace
+
+InterruptSignals::InterruptSignals() {
+  received_signal = 0;
+  struct sigaction action {};
+  action.sa_handler = Remember;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGINT, &action, &previous_int);
+  sigaction(SIGTERM, &action, &previous_term);
+  // A signal the caller ignores (a background job's SIGINT, nohup) stays ignored.
+  if (previous_int.sa_handler == SIG_IGN) sigaction(SIGINT, &previous_int, nullptr);
+  if (previous_term.sa_handler == SIG_IGN) sigaction(SIGTERM, &previous_term, nullptr);
+}
+
+InterruptSignals::~InterruptSignals() {
+  sigaction(SIGINT, &previous_int, nullptr);
+  sigaction(SIGTERM, &previous_term, nullptr);
+}
+
+int InterruptSignals::Received() const { return received_signal; }
+
+void InterruptSignals::DieOfTheReceivedSignal() {
+  const int signal_number = received_signal;
+  sigaction(SIGINT, &previous_int, nullptr);
+  sigaction(SIGTERM, &previous_term, nullptr);
+  if (signal_number == 0) return;
+  std::signal(signal_number, SIG_DFL);
+  std::raise(signal_number);
+}
+
+}  // namespace plywood::apps
