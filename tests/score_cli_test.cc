@@ -3,8 +3,10 @@
 // field.
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <functional>
 #include <sstream>
@@ -13,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "plywood_paths.h"
 #include "sim/runner/run_directory.h"
 #include "tests/support/cli_test_support.h"
 #include "tests/support/metrics_json_test_support.h"
@@ -709,6 +712,25 @@ TEST(ScoreCliTest, ATrajectoryCsvWithQuotedFieldsScoresAsWithout) {
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(figures(r.out), figures(plain.out)) << r.out;
   }
+}
+
+// `--out /dev/stdout` into a pipe (`| jq`) was refused, "cannot be resolved: No such file or
+// directory", exit 2: /dev/stdout then resolves to "pipe:[N]", no path. A pipe or a device is
+// written to as it is (s63 fiftieth pass).
+TEST(ScoreCliTest, OutToStdoutThroughAPipeIsWritten) {
+  const std::string command = (fs::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood").string() +
+                              " score trajectory " + RunDir().string() + " " +
+                              (RunDir() / "trajectory.encoder.tum").string() +
+                              " --out /dev/stdout 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string out;
+  char buffer[4096];
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) out.append(buffer, n);
+  const int status = pclose(pipe);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << out;
+  EXPECT_EQ(out.find("plywood:"), std::string::npos) << out;
+  EXPECT_NE(out.find("\"drift_percent\""), std::string::npos) << out;  // the JSON, after the table
 }
 
 }  // namespace
