@@ -8,20 +8,6 @@
 #include "sim/runner/text_file.h"
 
 namespace plywood::eval {
-namespace {
-
-// A pipe or a device given as --out (/dev/stdout into `| jq`, /dev/null): written to as it is.
-// /dev/stdout to a pipe resolves to "pipe:[N]", no path, and was refused "cannot be resolved: No
-// such file or directory" though a write reaches it (s63 fiftieth pass).
-bool IsAStreamOrADevice(const std::filesystem::path& out) {
-  std::error_code error;
-  const std::filesystem::file_status status = std::filesystem::status(out, error);
-  return !error && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
-         !std::filesystem::is_directory(status);
-}
-
-}  // namespace
-
 void CheckScoreOut(const std::filesystem::path& out, const std::filesystem::path& run_dir,
                    const std::filesystem::path& scored) {
   namespace fs = std::filesystem;
@@ -32,7 +18,9 @@ void CheckScoreOut(const std::filesystem::path& out, const std::filesystem::path
                            "names a folder (it ends in '/', '.' or '..'); give a file name "
                            "(scores.json)");
   }
-  if (IsAStreamOrADevice(out)) return;  // never the run's folder nor the scored file
+  // A pipe or a device (/dev/stdout into `| jq`: "pipe:[N]", no path) is written to as it is; it
+  // was refused "cannot be resolved: No such file or directory" (s63 fiftieth pass).
+  if (sim::IsADeviceOrAPipe(out)) return;  // never the run's folder nor the scored file
   // The error_code form: a symbolic-link loop as --out threw filesystem_error, a line naming no
   // flag and exit 1.
   std::error_code error;
@@ -68,8 +56,9 @@ void WriteScoreJson(const ScoreReport& report, const std::filesystem::path& out,
                     const std::filesystem::path& run_dir, const std::filesystem::path& scored) {
   CheckScoreOut(out, run_dir, scored);
   const std::filesystem::path target =
-      IsAStreamOrADevice(out) ? out
-                              : std::filesystem::weakly_canonical(std::filesystem::absolute(out));
+      sim::IsADeviceOrAPipe(out)
+          ? out
+          : std::filesystem::weakly_canonical(std::filesystem::absolute(out));
   // Staged beside the target and renamed into place (WriteTextFile): written in place, a full
   // disk or a file-size limit left an earlier scores file cut to 0 bytes.
   try {

@@ -235,6 +235,9 @@ std::vector<std::filesystem::path> ShippedSonarNetPaths() {
 
 void RefuseShippedSonarNet(const std::filesystem::path& out) {
   namespace fs = std::filesystem;
+  // A device or a pipe is no model file; /dev/stdout into a pipe (no path to resolve) was refused
+  // "plywood: /dev/stdout: No such file or directory" (s63 fiftieth pass).
+  if (sim::IsADeviceOrAPipe(out)) return;
   for (const fs::path& shipped : ShippedSonarNetPaths()) {
     std::error_code error;
     const bool same_file = fs::equivalent(out, shipped, error);  // false if either is missing
@@ -250,6 +253,8 @@ void RequireWritablePlace(const std::filesystem::path& out) {
   // A file of the name the weights are staged under (sim::WriteTextFile), made and removed: a
   // read-only file system or a folder plywood may not write in (/sys) was found only when the
   // trained weights were saved, minutes later, as exit 1.
+  // A device or a pipe is written to as it is (sim::WriteTextFile), not beside: nothing to probe.
+  if (sim::IsADeviceOrAPipe(out)) return;
   const std::string probe = sim::StagedTextFilePath(out).string();
   const int fd = open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
   if (fd < 0) {

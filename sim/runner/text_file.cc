@@ -36,6 +36,13 @@ std::optional<long> StagedCopyPid(std::string_view name, std::string_view of) {
   return std::stol(std::string(digits));
 }
 
+bool IsADeviceOrAPipe(const std::filesystem::path& path) {
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(path, error);
+  return !error && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status) &&
+         !std::filesystem::is_directory(status);
+}
+
 void WriteTextFile(const std::filesystem::path& path, const std::string& text) {
   std::error_code error;
   // A device or a FIFO (/dev/null, /dev/stdout) is written to: a rename would replace it.

@@ -21,6 +21,11 @@ std::filesystem::path StagedTextFilePath(const std::filesystem::path& path);
 // user's own file by this, and a stale copy from a live writer's by the PID.
 std::optional<long> StagedCopyPid(std::string_view name, std::string_view of);
 
+// True when `path` is there and neither a file nor a folder: a device or a pipe (/dev/null,
+// /dev/full, /dev/stdout into `| jq`, whose path resolves to "pipe:[N]", no path at all), which
+// an output is written to as it is: renaming a staged copy over it would replace it.
+bool IsADeviceOrAPipe(const std::filesystem::path& path);
+
 // Writes `text` under a temporary name beside `path` and renames it into place, so a reader (a
 // resumed sweep, `--collect`, a person) never sees half a file.
 // @throws std::runtime_error naming the file when it cannot be written.
