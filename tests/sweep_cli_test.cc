@@ -1781,5 +1781,31 @@ TEST(SweepCliTest, APlotThatCannotBeWrittenIsOneLineAndNoCutFile) {
   EXPECT_GT(fs::file_size(plot), 8u * 1024);
 }
 
+// A sweep's world generation that the disk would not take (a file-size limit, as a full disk)
+// ended with its one line, exit 2, and left the emptied staging folder
+// worlds/room-seed1.partial-PID beside the sets. Now nothing of it stays (s63 fiftieth pass).
+TEST(SweepCliTest, AWorldSetTheDiskWillNotTakeLeavesNoStagingFolder) {
+  const fs::path dir = MakeTempDir("SweepWorldsLimit");
+  const fs::path out = dir / "out";
+  const fs::path sweep = WriteFile(
+      dir / "s.yaml", "experiment: " + (SourceRoot() / "experiments/seed000_rooms.yaml").string() +
+                          "\nseeds: [1]\nworlds:\n  - {family: room, count: 2, seed: 1}\n");
+  testing::CliResult result;
+  {
+    const testing::FileSizeLimit limit(1024);  // a room's world is 2.3 kB
+    if (!limit.active()) GTEST_SKIP() << "cannot lower the file-size limit";
+    result = RunPlywood("sweep " + sweep.string() + " --quiet --out " + out.string(), dir);
+  }
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  EXPECT_NE(result.err.find("/room_s1_00000.xml: write failed: File too large"), std::string::npos)
+      << result.err;
+  EXPECT_EQ(result.err.find('\n'), result.err.size() - 1) << "not one line: " << result.err;
+  if (fs::is_directory(out / "worlds")) {
+    for (const auto& entry : fs::directory_iterator(out / "worlds")) {
+      ADD_FAILURE() << "left " << entry.path();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace plywood

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <fstream>
 #include <stdexcept>
+#include <system_error>
 
 #include "sim/config/config_error.h"
 #include "sim/runner/text_file.h"
@@ -83,8 +84,16 @@ std::vector<SweepWorld> Generated(const SweepSpec& spec, const GeneratedWorlds& 
     options.out_dir = partial;
     try {
       sim::worldgen::GenerateWorlds(options);
-    } catch (const std::invalid_argument& e) {
-      throw sim::ConfigError(spec.source_file, "worlds", e.what());
+    } catch (...) {
+      // The staging folder a failed generation (a full disk) emptied is no set a kill left: it
+      // stayed beside the sets until the next sweep (s63 fiftieth pass).
+      std::error_code ignored;
+      fs::remove_all(partial, ignored);
+      try {
+        throw;
+      } catch (const std::invalid_argument& e) {
+        throw sim::ConfigError(spec.source_file, "worlds", e.what());
+      }
     }
     const bool complete = kept_rows >= generated.count;
     const std::string edited = complete ? FirstDifferentFile(partial, dir) : "";
