@@ -19,6 +19,7 @@ InterruptSignals::InterruptSignals() {
   received_signal = 0;
   struct sigaction action {};
   action.sa_handler = Remember;
+  action.sa_flags = SA_RESTART;  // a read or write the signal lands in goes on, not EINTR
   sigemptyset(&action.sa_mask);
   sigaction(SIGINT, &action, &previous_int);
   sigaction(SIGTERM, &action, &previous_term);
