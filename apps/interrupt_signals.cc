@@ -21,11 +21,13 @@ InterruptSignals::InterruptSignals() {
   action.sa_handler = Remember;
   action.sa_flags = SA_RESTART;  // a read or write the signal lands in goes on, not EINTR
   sigemptyset(&action.sa_mask);
-  sigaction(SIGINT, &action, &previous_int);
-  sigaction(SIGTERM, &action, &previous_term);
-  // A signal the caller ignores (a background job's SIGINT, nohup) stays ignored.
-  if (previous_int.sa_handler == SIG_IGN) sigaction(SIGINT, &previous_int, nullptr);
-  if (previous_term.sa_handler == SIG_IGN) sigaction(SIGTERM, &previous_term, nullptr);
+  // A signal the caller ignores (a background job's SIGINT, nohup) stays ignored: looked up
+  // first, so it is never caught, not even between installing the handler and putting SIG_IGN
+  // back.
+  sigaction(SIGINT, nullptr, &previous_int);
+  sigaction(SIGTERM, nullptr, &previous_term);
+  if (previous_int.sa_handler != SIG_IGN) sigaction(SIGINT, &action, nullptr);
+  if (previous_term.sa_handler != SIG_IGN) sigaction(SIGTERM, &action, nullptr);
 }
 
 InterruptSignals::~InterruptSignals() {
@@ -36,9 +38,11 @@ InterruptSignals::~InterruptSignals() {
 int InterruptSignals::Received() const { return received_signal; }
 
 void InterruptSignals::DieOfTheReceivedSignal() {
-  const int signal_number = received_signal;
+  // The handlers go back before the flag is read: one read first lost a signal that came between
+  // the two (caught, recorded and never acted on), and the process went on to exit 0.
   sigaction(SIGINT, &previous_int, nullptr);
   sigaction(SIGTERM, &previous_term, nullptr);
+  const int signal_number = received_signal;
   if (signal_number == 0) return;
   std::signal(signal_number, SIG_DFL);
   std::raise(signal_number);
