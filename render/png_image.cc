@@ -82,27 +82,11 @@ void EncodePng(const RgbImage& image, const std::filesystem::path& target,
 }  // namespace
 
 void WritePng(const RgbImage& image, const std::filesystem::path& path) {
-  std::error_code error;
-  // A device or a FIFO (/dev/full, /dev/stdout) is written to: a rename would replace it.
-  if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error)) {
-    EncodePng(image, path, path);
-    return;
-  }
   // Staged and renamed into place: a failed write (a full disk, a file-size limit) left a cut PNG
   // where a whole one was expected, in place of an earlier picture (s63 fiftieth pass).
-  const std::filesystem::path partial = sim::StagedTextFilePath(path);
-  try {
-    EncodePng(image, partial, path);
-  } catch (const std::runtime_error&) {
-    std::filesystem::remove(partial, error);
-    throw;
-  }
-  std::filesystem::rename(partial, path, error);
-  if (error) {
-    std::error_code ignored;
-    std::filesystem::remove(partial, ignored);
-    throw std::runtime_error(path.string() + ": cannot write: " + error.message());
-  }
+  const std::error_code error = sim::WriteStagedThenRename(
+      path, [&](const std::filesystem::path& target) { EncodePng(image, target, path); });
+  if (error) throw std::runtime_error(path.string() + ": cannot write: " + error.message());
 }
 
 RgbImage ReadPng(const std::filesystem::path& path) {

@@ -21,6 +21,15 @@ using testing::RunPlywood;
 using testing::Slurp;
 using testing::WriteFile;
 
+// A robot that stands half a second in the hall, its encoders on: nothing moves, nothing is seen.
+constexpr const char* kStandingExperiment =
+    "name: standing\n"
+    "duration_s: 0.5\n"
+    "world: worlds/hall.xml\n"
+    "robot: {model: p3dx, spawn: {x_m: 0, y_m: 0, theta_deg: 0}}\n"
+    "sensors: {encoders: {}}\n"
+    "output: {snapshot: false}\n";
+
 fs::path Dir() {
   return MakeTempDir(std::string("degenerate_runs_") +
                      ::testing::UnitTest::GetInstance()->current_test_info()->name());
@@ -45,13 +54,7 @@ void ExpectRefusedBeforeAnyFigure(const CliResult& result, const fs::path& out,
 // summary says so (main printed "drift nan %").
 TEST(DegenerateRunsTest, AStandingRobotsSummaryPrintsItsDriftAsNullNotNan) {
   const fs::path dir = Dir();
-  const fs::path file = WriteFile(dir / "experiment.yaml",
-                                  "name: standing\n"
-                                  "duration_s: 0.5\n"
-                                  "world: worlds/hall.xml\n"
-                                  "robot: {model: p3dx, spawn: {x_m: 0, y_m: 0, theta_deg: 0}}\n"
-                                  "sensors: {encoders: {}}\n"
-                                  "output: {snapshot: false}\n");
+  const fs::path file = WriteFile(dir / "experiment.yaml", kStandingExperiment);
   const CliResult run =
       RunPlywood("run " + file.string() + " --out " + (dir / "out").string(), dir);
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -202,13 +205,7 @@ TEST(DegenerateRunsTest, AGeometricMapsFiguresOfNothingAreNull) {
 // word why, and plotted an empty box on axes round 0.
 TEST(DegenerateRunsTest, ASweepOfOneStandingRunSaysItsMetricHasNoValue) {
   const fs::path dir = Dir();
-  WriteFile(dir / "standing.yaml",
-            "name: standing\n"
-            "duration_s: 0.5\n"
-            "world: worlds/hall.xml\n"
-            "robot: {model: p3dx, spawn: {x_m: 0, y_m: 0, theta_deg: 0}}\n"
-            "sensors: {encoders: {}}\n"
-            "output: {snapshot: false}\n");
+  WriteFile(dir / "standing.yaml", kStandingExperiment);
   const fs::path sweep = WriteFile(dir / "one.yaml",
                                    "experiment: standing.yaml\n"
                                    "seeds: [1]\n"

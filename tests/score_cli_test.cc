@@ -718,17 +718,11 @@ TEST(ScoreCliTest, ATrajectoryCsvWithQuotedFieldsScoresAsWithout) {
 // directory", exit 2: /dev/stdout then resolves to "pipe:[N]", no path. A pipe or a device is
 // written to as it is (s63 fiftieth pass).
 TEST(ScoreCliTest, OutToStdoutThroughAPipeIsWritten) {
-  const std::string command = (fs::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood").string() +
-                              " score trajectory " + RunDir().string() + " " +
-                              (RunDir() / "trajectory.encoder.tum").string() +
-                              " --out /dev/stdout 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string out;
-  char buffer[4096];
-  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) out.append(buffer, n);
-  const int status = pclose(pipe);
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << out;
+  const testing::CliResult piped = testing::RunPlywoodIntoAPipe(
+      "score trajectory " + RunDir().string() + " " +
+      (RunDir() / "trajectory.encoder.tum").string() + " --out /dev/stdout");
+  const std::string& out = piped.out;
+  EXPECT_EQ(piped.exit_code, 0) << out;
   EXPECT_EQ(out.find("plywood:"), std::string::npos) << out;
   EXPECT_NE(out.find("\"drift_percent\""), std::string::npos) << out;  // the JSON, after the table
 }

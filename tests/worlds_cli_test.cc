@@ -345,16 +345,10 @@ TEST(WorldsCliTest, AStagedPictureAKillLeftGoesWithItsGeneration) {
 // or directory", exit 2: /dev/stdout then resolves to "pipe:[N]", no path. A pipe or a device is
 // written to as it is (s63 fiftieth pass).
 TEST(WorldsCliTest, TrainWritesItsWeightsToStdoutThroughAPipe) {
-  const std::string command = (fs::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood").string() +
-                              " train sonar-net --rooms 1 --test-rooms 1 --poses 2 --epochs 1 "
-                              "--hidden 4 --out /dev/stdout 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  ASSERT_NE(pipe, nullptr);
-  std::string out;
-  char buffer[4096];
-  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) out.append(buffer, n);
-  const int status = pclose(pipe);
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << out;
+  const testing::CliResult piped = testing::RunPlywoodIntoAPipe(
+      "train sonar-net --rooms 1 --test-rooms 1 --poses 2 --epochs 1 --hidden 4 --out /dev/stdout");
+  const std::string& out = piped.out;
+  EXPECT_EQ(piped.exit_code, 0) << out;
   EXPECT_EQ(out.find("plywood:"), std::string::npos) << out;
   EXPECT_NE(out.find("plywood-sonar-net 1\n"), std::string::npos) << out;  // the weights
   EXPECT_NE(out.find("weights written to /dev/stdout"), std::string::npos) << out;

@@ -7,6 +7,7 @@
 
 #include "eval/score/csv_table.h"
 #include "eval/score/score_report.h"
+#include "perception/lines/line_segment.h"
 #include "sim/config/config_error.h"
 #include "sim/runner/file_writer.h"
 #include "sim/runner/metrics.h"
@@ -143,7 +144,7 @@ std::vector<LinesCsvRow> ReadLinesCsv(const std::filesystem::path& path,
       s.r_m = table.Number(csv, r, "r_m");
       const double off =
           std::max(std::abs(s.SignedLineDistance(s.start)), std::abs(s.SignedLineDistance(s.end)));
-      if (off > 1e-3) {
+      if (off > perception::kMaxLineToEndsM) {
         table.Fail(csv, "r_m",
                    "the line (alpha_rad, r_m) passes " + sim::FormatNumber(off) +
                        " m from the segment's endpoints");

@@ -15,16 +15,15 @@
 #include "eval/score/run_laser_scans.h"
 #include "eval/score/trajectory_file.h"
 #include "msgs/shortest_number.h"
+#include "perception/lines/line_segment.h"
 #include "sim/config/config_error.h"
 
 namespace plywood::eval {
 namespace {
 
-// An extractor fits a segment to its scan's returns, so each end lies within the fit's tolerance of
-// one (the built-in extractors: under 3 cm). Half a metre, ten times the scorer's 5 cm gate, tells
-// a file written in another frame (the world's, as mapping programs write segments), which scored
-// recall 0.02 against walls it had found, exit 0.
-constexpr double kMaxEndToReturnM = 0.5;
+// A file written in another frame (the world's, as mapping programs write segments) scored
+// recall 0.02 against walls it had found, exit 0: its ends lie far from every return.
+constexpr double kMaxEndToReturnM = perception::kMaxEndToScanPointM;
 
 void RequireNearItsScansReturns(const LinesCsvRow& row, const TruthScan& scan,
                                 const std::filesystem::path& file) {

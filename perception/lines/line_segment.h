@@ -30,6 +30,14 @@ struct LineSegment {
   double SegmentDistance(const Eigen::Vector2d& p) const;
 };
 
+// The bounds a segment given from outside is held to, the same wherever it comes from (a
+// lines.csv read back, a file `plywood score lines` scores, a plug-in extractor's output): its
+// line (alpha_rad, r_m) passes within kMaxLineToEndsM of its own ends, and each end lies within
+// kMaxEndToScanPointM of a point of the scan it was fitted to (the built-in extractors: under 3 cm;
+// half a metre, ten times the scorer's 5 cm gate, tells a segment written in another frame).
+inline constexpr double kMaxLineToEndsM = 1e-3;
+inline constexpr double kMaxEndToScanPointM = 0.5;
+
 // Normal form (alpha, r >= 0) of the line through `point` with unit normal (cos a, sin a):
 // flips the normal when needed so r is not negative, and wraps alpha to (-pi, pi].
 void CanonicalNormalForm(double a_rad, double signed_r_m, double* alpha_rad, double* r_m);

@@ -12,6 +12,7 @@
 
 #include "msgs/pose2d.h"
 #include "msgs/shortest_number.h"
+#include "perception/lines/line_segment.h"
 #include "perception/logs/tum_trajectory.h"
 
 namespace plywood::sim {
@@ -19,11 +20,9 @@ namespace {
 
 using msgs::ShortestNumber;
 
-// An end farther than this from every point of its scan was not fitted to that scan; the same
-// bound `plywood score lines` puts on a file's segments (eval/score/lines_score.cc).
-constexpr double kMaxEndToPointM = 0.5;
-// How far a segment's line (alpha_rad, r_m) may pass from its ends, as `score lines` allows.
-constexpr double kMaxLineToEndM = 1e-3;
+// The bounds `plywood score lines` puts on a file's segments (perception/lines/line_segment.h).
+constexpr double kMaxEndToPointM = perception::kMaxEndToScanPointM;
+constexpr double kMaxLineToEndM = perception::kMaxLineToEndsM;
 
 // Runs `call`, the algorithm's `function`; whatever it throws becomes one line naming it.
 template <typename Call>
@@ -77,22 +76,24 @@ class GuardedExtractor : public perception::LineExtractor {
   // What `plywood score lines` requires of a file's segment, so a run never scores what the
   // scorer of its own lines.csv would refuse.
   void RequireFitted(const perception::LineSegment& s, const perception::ScanPoints& scan) const {
-    const std::string segment = "a segment from " + Point(s.start) + " to " + Point(s.end) +
-                                " (alpha_rad " + ShortestNumber(s.alpha_rad) + ", r_m " +
-                                ShortestNumber(s.r_m) + ")";
+    // Described only when it fails: this runs on every segment of every scan.
+    const auto segment = [&] {
+      return "a segment from " + Point(s.start) + " to " + Point(s.end) + " (alpha_rad " +
+             ShortestNumber(s.alpha_rad) + ", r_m " + ShortestNumber(s.r_m) + ")";
+    };
     if (!(s.start.allFinite() && s.end.allFinite() && std::isfinite(s.alpha_rad) &&
           std::isfinite(s.r_m))) {
-      Fail("gave " + segment + ", which is not finite");
+      Fail("gave " + segment() + ", which is not finite");
     }
     // lines.csv's `points` column, which `score lines` reads as a count in 0..1e9.
     if (s.num_points < 0 || s.num_points > 1000000000) {
-      Fail("gave " + segment + " of " + std::to_string(s.num_points) +
+      Fail("gave " + segment() + " of " + std::to_string(s.num_points) +
            " points: a segment's point count is in 0..1e9");
     }
     const double off =
         std::max(std::abs(s.SignedLineDistance(s.start)), std::abs(s.SignedLineDistance(s.end)));
     if (!(off <= kMaxLineToEndM)) {
-      Fail("gave " + segment + " whose line passes " + msgs::SixDigitNumber(off) +
+      Fail("gave " + segment() + " whose line passes " + msgs::SixDigitNumber(off) +
            " m from its ends, more than " + ShortestNumber(kMaxLineToEndM) +
            " m: the line and the ends must describe one segment");
     }
@@ -104,7 +105,7 @@ class GuardedExtractor : public perception::LineExtractor {
         if (nearest <= kMaxEndToPointM) break;  // near enough: the usual case, and the cheap one
       }
       if (nearest <= kMaxEndToPointM) continue;
-      Fail("gave " + segment + " whose end " + Point(end) + " lies " +
+      Fail("gave " + segment() + " whose end " + Point(end) + " lies " +
            (scan.empty() ? std::string("in a scan of no points")
                          : msgs::SixDigitNumber(nearest) + " m from every point of its scan") +
            ", more than " + ShortestNumber(kMaxEndToPointM) +

@@ -43,20 +43,17 @@ bool IsADeviceOrAPipe(const std::filesystem::path& path) {
          !std::filesystem::is_directory(status);
 }
 
-void WriteTextFile(const std::filesystem::path& path, const std::string& text) {
+std::error_code WriteStagedThenRename(
+    const std::filesystem::path& path,
+    const std::function<void(const std::filesystem::path& target)>& write) {
   std::error_code error;
-  // A device or a FIFO (/dev/null, /dev/stdout) is written to: a rename would replace it.
   if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error)) {
-    FileWriter file(path);
-    file.out() << text;
-    file.Close();
-    return;
+    write(path);
+    return {};
   }
   const std::filesystem::path partial = StagedTextFilePath(path);
   try {
-    FileWriter file(partial, path.string());
-    file.out() << text;
-    file.Close();
+    write(partial);
   } catch (const std::runtime_error&) {
     std::filesystem::remove(partial, error);  // no half file left beside the earlier one
     throw;
@@ -65,8 +62,17 @@ void WriteTextFile(const std::filesystem::path& path, const std::string& text) {
   if (error) {
     std::error_code ignored;
     std::filesystem::remove(partial, ignored);
-    throw std::runtime_error("cannot write " + path.string() + ": " + error.message());
   }
+  return error;
+}
+
+void WriteTextFile(const std::filesystem::path& path, const std::string& text) {
+  const std::error_code error = WriteStagedThenRename(path, [&](const std::filesystem::path& to) {
+    FileWriter file(to, path.string());
+    file.out() << text;
+    file.Close();
+  });
+  if (error) throw std::runtime_error("cannot write " + path.string() + ": " + error.message());
 }
 
 }  // namespace plywood::sim

@@ -1,9 +1,11 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <system_error>
 
 namespace plywood::sim {
 
@@ -25,6 +27,15 @@ std::optional<long> StagedCopyPid(std::string_view name, std::string_view of);
 // /dev/full, /dev/stdout into `| jq`, whose path resolves to "pipe:[N]", no path at all), which
 // an output is written to as it is: renaming a staged copy over it would replace it.
 bool IsADeviceOrAPipe(const std::filesystem::path& path);
+
+// Writes `path` by `write(target)`: into `path` itself when it is there and not a regular file (a
+// device or a pipe: a rename would replace it), else into StagedTextFilePath(path), which is
+// removed when `write` throws (its exception passes on) and renamed into place after, so a failed
+// write never leaves a cut file where a whole one is expected. Returns the rename's error (empty
+// when it succeeded or nothing was renamed); the caller names it in its own words.
+std::error_code WriteStagedThenRename(
+    const std::filesystem::path& path,
+    const std::function<void(const std::filesystem::path& target)>& write);
 
 // Writes `text` under a temporary name beside `path` and renames it into place, so a reader (a
 // resumed sweep, `--collect`, a person) never sees half a file.

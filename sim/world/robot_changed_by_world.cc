@@ -1,67 +1,10 @@
 #include "sim/world/robot_changed_by_world.h"
 
-#include <algorithm>
 #include <vector>
 
-#include "msgs/shortest_number.h"
+#include "sim/world/model_field_comparison.h"
 
 namespace plywood::sim {
-namespace {
-
-// The ids of the objects of one kind that belong to the bodies [first_body, end_body), in order.
-std::vector<int> IdsOnBodies(const int* body_of, int count, int first_body, int end_body) {
-  std::vector<int> ids;
-  for (int i = 0; i < count; ++i) {
-    if (body_of[i] >= first_body && body_of[i] < end_body) ids.push_back(i);
-  }
-  return ids;
-}
-
-template <typename T>
-std::string Values(const T* v, int n) {
-  std::string text;
-  for (int i = 0; i < n; ++i) text += (i ? " " : "") + msgs::ShortestNumber(double(v[i]));
-  return text;
-}
-
-// Compares one object's fields between the scene and the robot alone; the first difference found
-// is kept in `problem`.
-class Comparison {
- public:
-  explicit Comparison(const mjModel* alone) : alone_(alone) {}
-
-  // Object `s` of the scene is object `a` of the robot alone; messages name the robot's object
-  // `named` of `type` (a degree of freedom is named by its joint).
-  void Object(mjtObj type, const char* kind, int s, int a, int named = -1) {
-    type_ = type, kind_ = kind, s_ = s, a_ = a, named_ = named < 0 ? a : named;
-  }
-
-  // Field `name`, n values per object, in each model's array.
-  template <typename T>
-  void Field(const char* name, const T* in_scene, const T* alone, int n) {
-    if (problem_) return;
-    const T* x = in_scene + static_cast<long>(n) * s_;
-    const T* y = alone + static_cast<long>(n) * a_;
-    if (std::equal(x, x + n, y)) return;
-    const char* object_name = mj_id2name(alone_, type_, named_);
-    const std::string object = object_name ? std::string(kind_) + " '" + object_name + "'"
-                                           : "unnamed " + std::string(kind_) + " #" +
-                                                 std::to_string(named_) + " of the robot";
-    problem_ = object + ": " + name + " is " + Values(x, n) + " in this world, " + Values(y, n) +
-               " in the robot's file alone";
-  }
-
-  const std::optional<std::string>& problem() const { return problem_; }
-
- private:
-  const mjModel* alone_;
-  mjtObj type_ = mjOBJ_BODY;
-  const char* kind_ = "body";
-  int s_ = 0, a_ = 0, named_ = 0;
-  std::optional<std::string> problem_;
-};
-
-}  // namespace
 
 std::optional<std::string> RobotChangedByWorld(const mjModel* scene, const mjModel* alone) {
   const int base_s = mj_name2id(scene, mjOBJ_BODY, "base");
@@ -87,7 +30,7 @@ std::optional<std::string> RobotChangedByWorld(const mjModel* scene, const mjMod
   };
   if (auto p = count_problem("bodies", end_s - base_s, end_a - base_a)) return p;
 
-  Comparison c(alone);
+  ModelFieldComparison c(alone, "in this world", "in the robot's file alone", " of the robot");
   for (int i = 0; i < end_a - base_a && !c.problem(); ++i) {
     const int s = base_s + i, a = base_a + i;
     c.Object(mjOBJ_BODY, "body", s, a);

@@ -2,6 +2,7 @@
 
 #include <sys/wait.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -27,6 +28,22 @@ CliResult RunPlywood(const std::string& args, const std::filesystem::path& dir,
   const int status = std::system(command.c_str());
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, Slurp(dir / "stdout"),
           Slurp(dir / "stderr")};
+}
+
+CliResult RunPlywoodIntoAPipe(const std::string& args) {
+  const std::string command =
+      (std::filesystem::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood").string() + " " + args +
+      " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  if (pipe == nullptr) return {};
+  CliResult result;
+  char buffer[4096];
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) {
+    result.out.append(buffer, n);
+  }
+  const int status = pclose(pipe);
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
 }
 
 }  // namespace plywood::testing

@@ -19,4 +19,8 @@ struct CliResult {
 CliResult RunPlywood(const std::string& args, const std::filesystem::path& dir,
                      const std::filesystem::path& working_dir = {});
 
+// Runs the built `plywood` binary with `args`, its stdout and stderr both into a pipe the test
+// reads (as `plywood ... | jq` would): `out` holds both, `err` is empty.
+CliResult RunPlywoodIntoAPipe(const std::string& args);
+
 }  // namespace plywood::testing
