@@ -24,6 +24,46 @@ double DistanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
   return (p - (a + t * ab)).norm();
 }
 
+// The whole pixels whose centres lie within `reach_px` of the box [lo, hi], clipped to the image.
+struct PixelBox {
+  int x0, y0, x1, y1;
+};
+
+PixelBox BoxNear(int width, int height, const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
+                 double reach_px) {
+  return {std::max(0, static_cast<int>(std::floor(lo.x() - reach_px))),
+          std::max(0, static_cast<int>(std::floor(lo.y() - reach_px))),
+          std::min(width - 1, static_cast<int>(std::ceil(hi.x() + reach_px))),
+          std::min(height - 1, static_cast<int>(std::ceil(hi.y() + reach_px)))};
+}
+
+// Calls visit(x, y), row by row, for the pixels of the box within `reach_px` of [a, b] whose
+// centres may lie within `reach_px` of the segment's line (a pixel to spare each side). A long
+// diagonal's box holds ~length^2 pixels, this strip ~length; the pixels left out lie farther than
+// `reach_px` from the segment.
+template <typename V>
+void ForSegmentStrip(int width, int height, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                     double reach_px, V visit) {
+  const PixelBox box = BoxNear(width, height, a.cwiseMin(b), a.cwiseMax(b), reach_px);
+  const Eigen::Vector2d d = b - a;
+  // |d.y (x - a.x) - d.x (y - a.y)| <= reach |d| on the strip: in row y, x within half_span of the
+  // line's x there. A segment less than a pixel from horizontal spans its (short) box, which also
+  // keeps half_span and the line's x far from overflow and cancellation.
+  const bool by_strip = std::abs(d.y()) >= 1.0;
+  const double half_span = by_strip ? reach_px * d.norm() / std::abs(d.y()) : 0.0;
+  for (int y = box.y0; y <= box.y1; ++y) {
+    int x0 = box.x0, x1 = box.x1;
+    if (by_strip) {
+      const double line_x = a.x() + d.x() * (y + 0.5 - a.y()) / d.y();
+      const double lo = std::floor(line_x - half_span - 0.5) - 1.0;
+      const double hi = std::ceil(line_x + half_span - 0.5) + 1.0;
+      if (lo > x0) x0 = lo > x1 ? x1 + 1 : static_cast<int>(lo);
+      if (hi < x1) x1 = hi < x0 ? x0 - 1 : static_cast<int>(hi);
+    }
+    for (int x = x0; x <= x1; ++x) visit(x, y);
+  }
+}
+
 // Per-pixel coverage of one shape, so overlapping pieces of it blend once. The buffer covers only
 // the shape's pixel box (every pixel within `reach_px` of [lo, hi], clipped to the image): drawing
 // costs what the shape covers, not the whole image.
@@ -47,16 +87,17 @@ class CoverageMask {
     const PixelBox box = BoxNear(lo, hi, reach_px);
     for (int y = box.y0; y <= box.y1; ++y) {
       for (int x = box.x0; x <= box.x1; ++x) {
-        const double c = f(Eigen::Vector2d(x + 0.5, y + 0.5));
-        if (c <= 0.0) continue;
-        float& cell = coverage_[static_cast<std::size_t>(y - y0_) * stride_ + (x - x0_)];
-        cell = std::max(cell, static_cast<float>(c));
-        touched_x0_ = std::min(touched_x0_, x);
-        touched_y0_ = std::min(touched_y0_, y);
-        touched_x1_ = std::max(touched_x1_, x);
-        touched_y1_ = std::max(touched_y1_, y);
+        Cover(x, y, f(Eigen::Vector2d(x + 0.5, y + 0.5)));
       }
     }
+  }
+
+  // As ForPixelsNear for the segment [a, b], over its strip (ForSegmentStrip) instead of its box.
+  template <typename F>
+  void ForPixelsNearSegment(const Eigen::Vector2d& a, const Eigen::Vector2d& b, double reach_px,
+                            F f) {
+    ForSegmentStrip(width_, height_, a, b, reach_px,
+                    [&](int x, int y) { Cover(x, y, f(Eigen::Vector2d(x + 0.5, y + 0.5))); });
   }
 
   void BlendInto(RgbImage& image, Rgb colour) const {
@@ -69,15 +110,19 @@ class CoverageMask {
   }
 
  private:
-  struct PixelBox {
-    int x0, y0, x1, y1;
-  };
+  // Pixel (x, y) covered by c (the largest of the shape's pieces counts).
+  void Cover(int x, int y, double c) {
+    if (c <= 0.0) return;
+    float& cell = coverage_[static_cast<std::size_t>(y - y0_) * stride_ + (x - x0_)];
+    cell = std::max(cell, static_cast<float>(c));
+    touched_x0_ = std::min(touched_x0_, x);
+    touched_y0_ = std::min(touched_y0_, y);
+    touched_x1_ = std::max(touched_x1_, x);
+    touched_y1_ = std::max(touched_y1_, y);
+  }
 
   PixelBox BoxNear(const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, double reach_px) const {
-    return {std::max(0, static_cast<int>(std::floor(lo.x() - reach_px))),
-            std::max(0, static_cast<int>(std::floor(lo.y() - reach_px))),
-            std::min(width_ - 1, static_cast<int>(std::ceil(hi.x() + reach_px))),
-            std::min(height_ - 1, static_cast<int>(std::ceil(hi.y() + reach_px)))};
+    return render::BoxNear(width_, height_, lo, hi, reach_px);
   }
 
   int width_, height_;
@@ -109,13 +154,28 @@ void DrawPolylinePx(RgbImage& image, std::span<const Eigen::Vector2d> points_px,
     hi = hi.cwiseMax(p);
   }
   if (!lo.allFinite()) return;
-  CoverageMask mask(image, lo, hi, half + 1.0);
   const std::size_t n_segments = points_px.size() == 1 ? 1 : points_px.size() - 1;
+  // Coverage is 0 from half + 0.5 px off the centre line on: the segments' strips reach that far.
+  if (n_segments == 1) {
+    // One segment covers each pixel once, so it blends straight into the image (as the mask
+    // would: its coverage rounded to float, nothing where that is 0) without a buffer its box's
+    // size: a replay draws ~10^5 of them.
+    const Eigen::Vector2d& a = points_px.front();
+    const Eigen::Vector2d& b = points_px.back();
+    if (!a.allFinite() || !b.allFinite()) return;
+    ForSegmentStrip(image.width, image.height, a, b, half + 0.5, [&](int x, int y) {
+      const float c = static_cast<float>(
+          Coverage(DistanceToSegment(Eigen::Vector2d(x + 0.5, y + 0.5), a, b), half));
+      if (c > 0.0f) BlendPixel(image, x, y, colour, c);
+    });
+    return;
+  }
+  CoverageMask mask(image, lo, hi, half + 1.0);
   for (std::size_t i = 0; i < n_segments; ++i) {
     const Eigen::Vector2d& a = points_px[i];
-    const Eigen::Vector2d& b = points_px[std::min(i + 1, points_px.size() - 1)];
+    const Eigen::Vector2d& b = points_px[i + 1];
     if (!a.allFinite() || !b.allFinite()) continue;
-    mask.ForPixelsNear(a.cwiseMin(b), a.cwiseMax(b), half + 1.0, [&](const Eigen::Vector2d& p) {
+    mask.ForPixelsNearSegment(a, b, half + 0.5, [&](const Eigen::Vector2d& p) {
       return Coverage(DistanceToSegment(p, a, b), half);
     });
   }

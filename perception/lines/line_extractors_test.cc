@@ -263,6 +263,41 @@ TEST(RayExplanationTest, DistanceIsToTheSegmentNotTheLine) {
   EXPECT_NEAR(e.RmsM(), std::sqrt((0.03 * 0.03 + 0.04 * 0.04) / 2), 1e-12);
 }
 
+// Segments far from a point are not measured; what is counted is what measuring every segment
+// gives, to the last bit: rays near ends, on two segments at once, at exactly the distance.
+TEST(RayExplanationTest, CountsWhatMeasuringEverySegmentGives) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> coord(-3.0, 3.0), near(-0.08, 0.08);
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<LineSegment> segments(1 + trial % 12);
+    for (LineSegment& s : segments) {
+      s.start = {coord(rng), coord(rng)};
+      s.end = trial % 9 == 0 ? s.start : Eigen::Vector2d(coord(rng), coord(rng));
+    }
+    std::vector<Eigen::Vector2d> points;
+    for (int i = 0; i < 150; ++i) {
+      const LineSegment& s = segments[i % segments.size()];
+      const double t = (i % 7) / 6.0;  // ends included
+      points.push_back(s.start + t * (s.end - s.start) + Eigen::Vector2d(near(rng), near(rng)));
+    }
+    points.push_back(segments[0].start + Eigen::Vector2d(0.05, 0.0));  // at max_distance_m
+    const double max_distance_m = trial % 3 == 0 ? 0.05 : 0.2;
+    RayExplanation expected;
+    expected.rays = static_cast<long>(points.size());
+    for (const Eigen::Vector2d& p : points) {
+      double best = std::numeric_limits<double>::infinity();
+      for (const LineSegment& s : segments) best = std::min(best, s.SegmentDistance(p));
+      if (best <= max_distance_m) {
+        ++expected.explained;
+        expected.sum_sq_m2 += best * best;
+      }
+    }
+    const RayExplanation e = ExplainRays(points, segments, max_distance_m);
+    EXPECT_EQ(e.explained, expected.explained) << trial;
+    EXPECT_EQ(e.sum_sq_m2, expected.sum_sq_m2) << trial;  // bit for bit
+  }
+}
+
 TEST(LineFitTest, CovarianceShrinksWithMorePoints) {
   std::mt19937_64 rng(3);
   std::normal_distribution<double> noise(0.0, 0.01);

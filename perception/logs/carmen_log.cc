@@ -12,7 +12,6 @@
 #include <fstream>
 #include <numbers>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <string_view>
 #include <unordered_map>
@@ -44,11 +43,19 @@ std::string FormatTime(double time_s) {
   return text;
 }
 
+// The line's words, split where `std::istream >> std::string` splits in the C locale (space,
+// \t, \n, \v, \f, \r), without a stream: a log of 10^4 scans has 10^6 of them.
 std::vector<std::string> Tokens(const std::string& line) {
-  std::istringstream in(line);
+  const auto is_space = [](char c) { return c == ' ' || (c >= '\t' && c <= '\r'); };
   std::vector<std::string> tokens;
-  for (std::string t; in >> t;) tokens.push_back(t);
-  return tokens;
+  std::size_t i = 0;
+  while (true) {
+    while (i < line.size() && is_space(line[i])) ++i;
+    if (i == line.size()) return tokens;
+    const std::size_t start = i;
+    while (i < line.size() && !is_space(line[i])) ++i;
+    tokens.emplace_back(line, start, i - start);
+  }
 }
 
 // A count field ("FLASER beam count"): a whole number in min..100000.

@@ -47,6 +47,24 @@ TEST(CarmenLogTest, ParsesFlaserPosesRangesAndGeometry) {
   EXPECT_EQ(r.line_number, 3u);
 }
 
+// Fields are split at every kind of white space the C library's isspace knows, any number of it.
+TEST(CarmenLogTest, FieldsSplitAtTabsAndEveryOtherWhiteSpace) {
+  CarmenLog spaced, mixed;
+  ASSERT_TRUE(ParseCarmenLine("FLASER 3 1 2 3 1.0 2.0 0.5 1.1 2.1 0.6 100.25 host 100.3", &spaced));
+  ASSERT_TRUE(ParseCarmenLine(
+      "\t FLASER\t3 \v1\f2\r3  1.0\t\t2.0 0.5 1.1 2.1 0.6 100.25 host 100.3 \r", &mixed));
+  ASSERT_EQ(mixed.lasers.size(), 1u);
+  EXPECT_EQ(mixed.lasers[0].scan.ranges_m, spaced.lasers[0].scan.ranges_m);
+  EXPECT_EQ(mixed.lasers[0].scan.time_s, spaced.lasers[0].scan.time_s);
+  EXPECT_EQ(mixed.lasers[0].X_WL.theta_rad, spaced.lasers[0].X_WL.theta_rad);
+  EXPECT_EQ(mixed.lasers[0].X_WR_odom.theta_rad, spaced.lasers[0].X_WR_odom.theta_rad);
+  // A character that is not white space (here a NUL is not one) stays inside its field.
+  CarmenLog log;
+  EXPECT_THROW(ParseCarmenLine(std::string("FLASER 3 1 2\0 3", 16) + " 1 2 0 1 2 0 5 h 5", &log),
+               std::runtime_error);
+  EXPECT_FALSE(ParseCarmenLine(" \t\r", &log));
+}
+
 TEST(CarmenLogTest, RangeMaxDefaultsToTheLargestRangeInTheLog) {
   const auto path = WriteTemp("max.log", Flaser("1 81.91 3", 3) + Flaser("2 2 2", 3));
   EXPECT_DOUBLE_EQ(ReadCarmenLog(path).lasers[1].scan.range_max_m, 81.91);
