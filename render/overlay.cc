@@ -20,6 +20,12 @@ double DistanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
                          const Eigen::Vector2d& b) {
   const Eigen::Vector2d ab = b - a;
   const double length_sq = ab.squaredNorm();
+  if (std::isinf(length_sq)) {
+    // A segment longer than 1e154 px (its squared length overflows): along its unit direction.
+    const double length = ab.stableNorm();
+    const Eigen::Vector2d u = ab / length;
+    return (p - (a + std::clamp((p - a).dot(u), 0.0, length) * u)).norm();
+  }
   const double t = length_sq > 0.0 ? std::clamp((p - a).dot(ab) / length_sq, 0.0, 1.0) : 0.0;
   return (p - (a + t * ab)).norm();
 }
@@ -29,12 +35,20 @@ struct PixelBox {
   int x0, y0, x1, y1;
 };
 
+// A whole-pixel coordinate clamped to [lo, hi] as a double first: a shape far off the image (an
+// estimate that ran away, 1e12 px) has coordinates no int holds, and the cast alone is undefined
+// (on x86 it gave INT_MIN, and the visible part of a segment to there was not drawn). NaN gives lo.
+int ClampedPixel(double whole, int lo, int hi) {
+  if (!(whole > lo)) return lo;  // NaN too
+  return whole >= hi ? hi : static_cast<int>(whole);
+}
+
 PixelBox BoxNear(int width, int height, const Eigen::Vector2d& lo, const Eigen::Vector2d& hi,
                  double reach_px) {
-  return {std::max(0, static_cast<int>(std::floor(lo.x() - reach_px))),
-          std::max(0, static_cast<int>(std::floor(lo.y() - reach_px))),
-          std::min(width - 1, static_cast<int>(std::ceil(hi.x() + reach_px))),
-          std::min(height - 1, static_cast<int>(std::ceil(hi.y() + reach_px)))};
+  return {ClampedPixel(std::floor(lo.x() - reach_px), 0, width),
+          ClampedPixel(std::floor(lo.y() - reach_px), 0, height),
+          ClampedPixel(std::ceil(hi.x() + reach_px), -1, width - 1),
+          ClampedPixel(std::ceil(hi.y() + reach_px), -1, height - 1)};
 }
 
 // Calls visit(x, y), row by row, for the pixels of the box within `reach_px` of [a, b] whose
@@ -211,8 +225,8 @@ void FillPolygonPx(RgbImage& image, std::span<const Eigen::Vector2d> vertices_px
     y_lo = std::min(y_lo, v.y());
     y_hi = std::max(y_hi, v.y());
   }
-  const int row0 = std::max(0, static_cast<int>(std::floor(y_lo)));
-  const int row1 = std::min(image.height - 1, static_cast<int>(std::ceil(y_hi)));
+  const int row0 = ClampedPixel(std::floor(y_lo), 0, image.height);
+  const int row1 = ClampedPixel(std::ceil(y_hi), -1, image.height - 1);
   std::vector<double> crossings;
   for (int row = row0; row <= row1; ++row) {
     const double y = row + 0.5;
@@ -228,8 +242,8 @@ void FillPolygonPx(RgbImage& image, std::span<const Eigen::Vector2d> vertices_px
     std::sort(crossings.begin(), crossings.end());
     for (std::size_t k = 0; k + 1 < crossings.size(); k += 2) {
       // Pixels whose centre x + 0.5 lies in [crossings[k], crossings[k + 1]).
-      const int x0 = std::max(0, static_cast<int>(std::ceil(crossings[k] - 0.5)));
-      const int x1 = std::min(image.width, static_cast<int>(std::ceil(crossings[k + 1] - 0.5)));
+      const int x0 = ClampedPixel(std::ceil(crossings[k] - 0.5), 0, image.width);
+      const int x1 = ClampedPixel(std::ceil(crossings[k + 1] - 0.5), 0, image.width);
       for (int x = x0; x < x1; ++x) BlendPixel(image, x, row, colour);
     }
   }

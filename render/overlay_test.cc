@@ -105,6 +105,30 @@ TEST(OverlayTest, EveryPixelIsPaintedByItsDistanceFromTheNearestSegment) {
   }
 }
 
+// A shape reaching far off the image (an estimate that ran away: 1e12 or 1e300 px) still paints
+// its visible part, as the same shape cut at the image's edge does.
+TEST(OverlayTest, ShapesReachingFarOffTheImagePaintTheirVisiblePart) {
+  for (const double far : {1e12, 1e300}) {
+    RgbImage drawn(40, 20), cut(40, 20);
+    Fill(drawn, colours::kWhite);
+    Fill(cut, colours::kWhite);
+    const std::vector<Eigen::Vector2d> to_far = {{10.0, 10.0}, {far, 10.0}};
+    const std::vector<Eigen::Vector2d> to_edge = {{10.0, 10.0}, {45.0, 10.0}};
+    DrawPolylinePx(drawn, to_far, colours::kBlack, 2.0);
+    DrawPolylinePx(cut, to_edge, colours::kBlack, 2.0);
+    EXPECT_EQ(drawn.pixels, cut.pixels) << far;
+    EXPECT_EQ(PixelAt(drawn, 39, 9), colours::kBlack) << far;
+    // A triangle with a vertex far to the left covers the rows it spans up to its right edge.
+    RgbImage filled(40, 20);
+    Fill(filled, colours::kWhite);
+    const std::vector<Eigen::Vector2d> triangle = {{-far, 10.0}, {30.0, 2.0}, {30.0, 18.0}};
+    FillPolygonPx(filled, triangle, colours::kBlack);
+    EXPECT_EQ(PixelAt(filled, 29, 10), colours::kBlack) << far;
+    EXPECT_EQ(PixelAt(filled, 0, 10), colours::kBlack) << far;
+    EXPECT_EQ(PixelAt(filled, 31, 10), colours::kWhite) << far;
+  }
+}
+
 TEST(OverlayTest, FilledCircleCoversItsArea) {
   RgbImage image(64, 64);
   Fill(image, kGrey);
