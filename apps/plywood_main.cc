@@ -49,7 +49,7 @@ std::string Where(const CLI::App& app) {
 
 // The first word the innermost command did not take that looks like a flag ("" if none).
 std::string UnknownOption(const CLI::App& app) {
-  for (const std::string& word : Innermost(app)->remaining()) {
+  for (const std::string& word : WordsNotTaken(*Innermost(app))) {
     if (word.size() > 1 && word.starts_with('-')) return word;
   }
   return "";
@@ -74,7 +74,7 @@ void CheckFirstArgument(const std::vector<Command>& commands, const std::string&
 
 // Each command takes only its own flags and positionals: the first stray word is named.
 void RejectExtras(const CLI::App& app, const Command& command) {
-  const std::vector<std::string> extras = Innermost(app)->remaining();
+  const std::vector<std::string> extras = WordsNotTaken(*Innermost(app));
   if (extras.empty() || command.takes_any_arguments) return;
   const std::string where = Where(app);
   if (extras.front().starts_with('-')) {

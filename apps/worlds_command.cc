@@ -72,9 +72,8 @@ Command AddWorldsCommand(CLI::App& app) {
           }
           return 0;
         }
-        if (!generate->remaining().empty()) {
-          throw UsageError("worlds generate: unexpected argument '" +
-                           generate->remaining().front() + "'");
+        if (const auto extras = WordsNotTaken(*generate); !extras.empty()) {
+          throw UsageError("worlds generate: unexpected argument '" + extras.front() + "'");
         }
         sim::worldgen::GenerateWorldsOptions options;
         options.family = flags->family;
