@@ -6,11 +6,14 @@
 #include <gtest/gtest.h>
 #include <sys/file.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <string>
 
+#include "plywood_paths.h"
 #include "tests/support/cli_test_support.h"
 #include "tests/support/mujoco_test_support.h"
 
@@ -164,6 +167,50 @@ TEST(PathsAndProcessesTest, ADoubleDashEndsTheFlagsSoAFileMayStartWithADash) {
   const CliResult flag = RunPlywood("run --quiet --out out2 -e.yaml", dir, dir);
   EXPECT_EQ(flag.exit_code, 2);
   EXPECT_EQ(flag.err, "plywood: run: unknown option -e.yaml (see plywood run --help)\n");
+}
+
+// Two trainings into one --out both exited 0, each saying "weights written to" it, while the file
+// held the weights of the one that finished last. Here the other process is the test, writing the
+// file once the training has drawn its rooms (its 40 epochs take some 0.6 s more).
+TEST(PathsAndProcessesTest, WeightsSomeoneElseWroteWhileTrainingAreNotReplaced) {
+  const fs::path dir = MakeTempDir("TrainingsIntoOneOut");
+  const fs::path out = dir / "net.txt";
+  const std::string command =
+      (fs::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood").string() +
+      " train sonar-net --rooms 4 --test-rooms 1 --poses 10 --epochs 40 --out " + out.string() +
+      " 2>" + (dir / "stderr").string();
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  char line[512];
+  bool data_drawn = false;
+  while (!data_drawn && std::fgets(line, sizeof line, pipe) != nullptr) {
+    data_drawn = std::string(line).starts_with("data: ");
+  }
+  EXPECT_TRUE(data_drawn);
+  WriteFile(out, "another training's weights\n");
+  while (std::fgets(line, sizeof line, pipe) != nullptr) {
+  }
+  const int status = pclose(pipe);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  const std::string err = Slurp(dir / "stderr");
+  EXPECT_EQ(err.find('\n'), err.size() - 1) << "not one line: " << err;
+  EXPECT_EQ(
+      err.rfind("plywood: train: --out: " + out.string() +
+                    ": another process wrote it while this one trained; these weights are in " +
+                    out.string() + ".partial-",
+                0),
+      0u)
+      << err;
+  EXPECT_EQ(Slurp(out), "another training's weights\n");
+  int kept = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) {
+    if (entry.path().filename().string().starts_with("net.txt.partial-")) {
+      EXPECT_TRUE(Slurp(entry.path()).starts_with("plywood-sonar-net 1\n"));
+      ++kept;
+    }
+  }
+  EXPECT_EQ(kept, 1);
 }
 
 }  // namespace
