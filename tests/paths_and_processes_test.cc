@@ -169,6 +169,30 @@ TEST(PathsAndProcessesTest, ADoubleDashEndsTheFlagsSoAFileMayStartWithADash) {
   EXPECT_EQ(flag.err, "plywood: run: unknown option -e.yaml (see plywood run --help)\n");
 }
 
+// Two generations at once into one folder (another seed or count) both exited 0, the worlds of
+// the one that finished first left unlisted beside the other's index.csv. Here the generation
+// beside is the test, holding the folder's lock.
+TEST(PathsAndProcessesTest, AGenerationBesideAnotherInOneFolderIsRefused) {
+  const fs::path dir = MakeTempDir("GenerationsIntoOneOut");
+  const fs::path out = dir / "worlds";
+  fs::create_directories(out);
+  const std::string generate =
+      "worlds generate room --count 2 --seed 2 --quiet --out " + out.string();
+  {
+    const HeldLock other_generation(out, LOCK_EX);
+    ASSERT_TRUE(other_generation.ok());
+    const CliResult beside = RunPlywood(generate, dir);
+    EXPECT_EQ(beside.exit_code, 2) << beside.err;
+    EXPECT_EQ(beside.err, "plywood: worlds generate: --out: " + out.string() +
+                              ": another plywood worlds generate is writing this folder; wait for "
+                              "it or choose another folder\n");
+    EXPECT_TRUE(fs::is_empty(out));
+  }
+  const CliResult after = RunPlywood(generate, dir);
+  EXPECT_EQ(after.exit_code, 0) << after.err;
+  EXPECT_TRUE(fs::exists(out / "index.csv"));
+}
+
 // Two trainings into one --out both exited 0, each saying "weights written to" it, while the file
 // held the weights of the one that finished last. Here the other process is the test, writing the
 // file once the training has drawn its rooms (its 40 epochs take some 0.6 s more).
