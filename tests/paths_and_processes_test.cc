@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -167,6 +168,25 @@ TEST(PathsAndProcessesTest, ADoubleDashEndsTheFlagsSoAFileMayStartWithADash) {
   const CliResult flag = RunPlywood("run --quiet --out out2 -e.yaml", dir, dir);
   EXPECT_EQ(flag.exit_code, 2);
   EXPECT_EQ(flag.err, "plywood: run: unknown option -e.yaml (see plywood run --help)\n");
+}
+
+// A relative path given in a current folder deleted since the shell entered it read "../e.yaml:
+// No such file or directory", the file there all along: the line now says why.
+TEST(PathsAndProcessesTest, ARelativePathInADeletedCurrentFolderSaysTheFolderIsGone) {
+  const fs::path dir = MakeTempDir("DeletedCurrentFolder");
+  WriteFile(dir / "still.yaml", StillExperiment((SourceRoot() / "worlds/hall.xml").string()));
+  fs::create_directories(dir / "gone");
+  const std::string command = "cd '" + (dir / "gone").string() + "' && rmdir ../gone && " +
+                              (fs::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood").string() +
+                              " run ../still.yaml --quiet --out '" + (dir / "out").string() +
+                              "' 2>'" + (dir / "stderr").string() + "'";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 2);
+  EXPECT_EQ(Slurp(dir / "stderr"),
+            "plywood: ../still.yaml: No such file or directory (the current folder was deleted, so "
+            "no relative path can be found in it: cd to a folder that exists)\n");
+  EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
 // Two generations at once into one folder (another seed or count) both exited 0, the worlds of
