@@ -189,6 +189,36 @@ TEST(PathsAndProcessesTest, ARelativePathInADeletedCurrentFolderSaysTheFolderIsG
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
+// An --out that is a symbolic link to nowhere read "cannot create the sweep folder: File exists"
+// (sweep; worlds generate alike; train for the folder of its --out), naming neither the link nor
+// where it points; `run` already said so.
+TEST(PathsAndProcessesTest, AnOutThatLinksToNowhereIsNamedAsSuch) {
+  const fs::path dir = MakeTempDir("OutLinksToNowhere");
+  const fs::path link = dir / "results";
+  fs::create_symlink(dir / "missing", link);
+  const std::string nowhere = link.string() + ": is a symbolic link to " +
+                              (dir / "missing").string() +
+                              ", which does not exist (or links round in a loop)";
+  const CliResult sweep =
+      RunPlywood("sweep " + OneCellSweep(dir).string() + " --quiet --out " + link.string(), dir);
+  EXPECT_EQ(sweep.exit_code, 2);
+  EXPECT_EQ(sweep.err, "plywood: " + nowhere + "; make that folder or choose another --out\n");
+  const CliResult generate =
+      RunPlywood("worlds generate room --count 1 --seed 1 --quiet --out " + link.string(), dir);
+  EXPECT_EQ(generate.exit_code, 2);
+  EXPECT_EQ(generate.err, "plywood: worlds generate: --out: " + nowhere +
+                              "; make that folder or choose another folder\n");
+  const CliResult train =
+      RunPlywood("train sonar-net --rooms 2 --test-rooms 1 --poses 3 --epochs 1 --quiet --out " +
+                     (link / "net.txt").string(),
+                 dir);
+  EXPECT_EQ(train.exit_code, 2);
+  EXPECT_EQ(train.err, "plywood: train: --out: " + (link / "net.txt").string() + ": its folder " +
+                           link.string() + " is a symbolic link to " + (dir / "missing").string() +
+                           ", which does not exist (or links round in a loop)\n");
+  EXPECT_FALSE(fs::exists(dir / "missing"));
+}
+
 // Two generations at once into one folder (another seed or count) both exited 0, the worlds of
 // the one that finished first left unlisted beside the other's index.csv. Here the generation
 // beside is the test, holding the folder's lock.

@@ -22,6 +22,7 @@
 #include "sim/runner/file_stamp.h"
 #include "sim/runner/file_writer.h"
 #include "sim/runner/format_number.h"
+#include "sim/runner/link_to_nowhere.h"
 #include "sim/runner/scratch_folder.h"
 #include "sim/runner/text_file.h"
 #include "sim/sensors/sonar_sensor.h"
@@ -278,6 +279,10 @@ SonarNetTrainingReport TrainSonarNet(
   if (options.out.has_parent_path()) {
     // The default --out, runs/sonar_net/, in a folder plywood may not write in (a read-only
     // current folder) read "plywood: runs/sonar_net: Operation not permitted", exit 1.
+    if (const auto nowhere = sim::LinkToNowhere(options.out.parent_path())) {
+      throw std::invalid_argument("train: --out: " + options.out.string() + ": its folder " +
+                                  options.out.parent_path().string() + " " + *nowhere);
+    }
     std::error_code error;
     std::filesystem::create_directories(options.out.parent_path(), error);
     if (error) {

@@ -27,6 +27,7 @@
 #include "sim/config/robot_catalog.h"
 #include "sim/config/yaml_text_value.h"
 #include "sim/runner/build_id.h"
+#include "sim/runner/link_to_nowhere.h"
 #include "sim/runner/run_directory.h"
 #include "sim/runner/text_file.h"
 #include "sim/world/generator/world_families.h"
@@ -289,6 +290,10 @@ void PrepareSweepFolder(const SweepSpec& spec, const fs::path& out) {
                              "another --out");
     }
     return;
+  }
+  if (const auto nowhere = sim::LinkToNowhere(out)) {
+    throw sim::ConfigError(out.string(), "",
+                           *nowhere + "; make that folder or choose another --out");
   }
   fs::create_directories(out, error);
   if (error) {
