@@ -219,6 +219,22 @@ TEST(PathsAndProcessesTest, AnOutThatLinksToNowhereIsNamedAsSuch) {
   EXPECT_FALSE(fs::exists(dir / "missing"));
 }
 
+// A file name of 250 bytes (the file system takes 255) was refused, "NAME: cannot write: File name
+// too long" (train --out, score --out, any staged write): its staged copy NAME.partial-PID was the
+// name too long.
+TEST(PathsAndProcessesTest, AFileNameNearTheFileSystemsLimitIsWritten) {
+  const fs::path dir = MakeTempDir("NameNearNameMax");
+  const fs::path out = dir / (std::string(246, 'n') + ".txt");
+  const CliResult train = RunPlywood(
+      "train sonar-net --rooms 2 --test-rooms 1 --poses 3 --epochs 1 --quiet --out " + out.string(),
+      dir);
+  EXPECT_EQ(train.exit_code, 0) << train.err;
+  EXPECT_TRUE(Slurp(out).starts_with("plywood-sonar-net 1\n"));
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(dir)) files += entry.is_regular_file();
+  EXPECT_EQ(files, 3);  // the weights, stdout and stderr: no staged copy left
+}
+
 // Two generations at once into one folder (another seed or count) both exited 0, the worlds of
 // the one that finished first left unlisted beside the other's index.csv. Here the generation
 // beside is the test, holding the folder's lock.
