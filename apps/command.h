@@ -3,6 +3,8 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace plywood::apps {
 
@@ -21,6 +23,14 @@ struct Command {
 struct UsageError : std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
+
+// The words `cli` did not take, without `--`: the mark that ends the flags, so that a file whose
+// name starts with '-' can be given (`plywood run -- -e.yaml`), is kept among them by CLI11.
+inline std::vector<std::string> WordsNotTaken(const CLI::App& cli) {
+  std::vector<std::string> words = cli.remaining();
+  std::erase(words, std::string("--"));
+  return words;
+}
 
 Command AddRunCommand(CLI::App& app);
 Command AddBenchCommand(CLI::App& app);

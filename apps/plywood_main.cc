@@ -49,7 +49,7 @@ std::string Where(const CLI::App& app) {
 
 // The first word the innermost command did not take that looks like a flag ("" if none).
 std::string UnknownOption(const CLI::App& app) {
-  for (const std::string& word : Innermost(app)->remaining()) {
+  for (const std::string& word : WordsNotTaken(*Innermost(app))) {
     if (word.size() > 1 && word.starts_with('-')) return word;
   }
   return "";
@@ -74,7 +74,7 @@ void CheckFirstArgument(const std::vector<Command>& commands, const std::string&
 
 // Each command takes only its own flags and positionals: the first stray word is named.
 void RejectExtras(const CLI::App& app, const Command& command) {
-  const std::vector<std::string> extras = Innermost(app)->remaining();
+  const std::vector<std::string> extras = WordsNotTaken(*Innermost(app));
   if (extras.empty() || command.takes_any_arguments) return;
   const std::string where = Where(app);
   if (extras.front().starts_with('-')) {
@@ -147,6 +147,20 @@ std::string OneLine(std::string text) {
   return text;
 }
 
+// `message`, and, when it says a file was not found, why while the current folder is gone (deleted
+// since the shell entered it): "runs/e-seed1: No such file or directory" and "../e.yaml: No such
+// file or directory" (the file there all along) named the path, not the cause.
+std::string WithTheCurrentFolder(const std::string& message) {
+  std::error_code gone;
+  static_cast<void>(std::filesystem::current_path(gone));
+  const bool not_found = message.find("No such file") != std::string::npos ||
+                         message.find("no such") != std::string::npos;
+  if (!not_found || gone != std::errc::no_such_file_or_directory) return message;
+  return message +
+         " (the current folder was deleted, so no relative path can be found in it: cd "
+         "to a folder that exists)";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -157,10 +171,10 @@ int main(int argc, char** argv) {
   try {
     return plywood::apps::Main(argc, argv);
   } catch (const plywood::sim::ConfigError& e) {
-    std::fprintf(stderr, "plywood: %s\n", e.what());
+    std::fprintf(stderr, "plywood: %s\n", WithTheCurrentFolder(e.what()).c_str());
     return 2;
   } catch (const std::invalid_argument& e) {  // UsageError too
-    std::fprintf(stderr, "plywood: %s\n", OneLine(e.what()).c_str());
+    std::fprintf(stderr, "plywood: %s\n", WithTheCurrentFolder(OneLine(e.what())).c_str());
     return 2;
   } catch (const std::filesystem::filesystem_error& e) {
     // A name the file system refuses (over PATH_MAX, a link loop) reaching a std::filesystem call
@@ -168,13 +182,14 @@ int main(int argc, char** argv) {
     // [PATH]", exit 1: the path and the reason, and a bad name is bad input (exit 2).
     const std::error_code code = e.code();
     const std::string path = e.path1().empty() ? "" : e.path1().string() + ": ";
-    std::fprintf(stderr, "plywood: %s\n", OneLine(path + code.message()).c_str());
+    std::fprintf(stderr, "plywood: %s\n",
+                 WithTheCurrentFolder(OneLine(path + code.message())).c_str());
     const bool bad_name =
         code == std::errc::filename_too_long || code == std::errc::too_many_symbolic_link_levels ||
         code == std::errc::not_a_directory || code == std::errc::no_such_file_or_directory;
     return bad_name ? 2 : 1;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "plywood: error: %s\n", OneLine(e.what()).c_str());
+    std::fprintf(stderr, "plywood: error: %s\n", WithTheCurrentFolder(OneLine(e.what())).c_str());
     return 1;
   } catch (...) {  // a plug-in's algorithm may throw anything; uncaught, it aborted plywood
     std::fputs(

@@ -15,6 +15,7 @@
 #include "apps/interrupt_signals.h"
 #include "render/world_preview.h"
 #include "sim/config/decimal_whole_number.h"
+#include "sim/runner/folder_lock.h"
 #include "sim/world/generator/robot_reach.h"
 #include "sim/world/generator/world_families.h"
 #include "sim/world/generator/world_generator.h"
@@ -72,9 +73,8 @@ Command AddWorldsCommand(CLI::App& app) {
           }
           return 0;
         }
-        if (!generate->remaining().empty()) {
-          throw UsageError("worlds generate: unexpected argument '" +
-                           generate->remaining().front() + "'");
+        if (const auto extras = WordsNotTaken(*generate); !extras.empty()) {
+          throw UsageError("worlds generate: unexpected argument '" + extras.front() + "'");
         }
         sim::worldgen::GenerateWorldsOptions options;
         options.family = flags->family;
@@ -100,6 +100,16 @@ Command AddWorldsCommand(CLI::App& app) {
         // folder refused the next generation (s63 fiftieth pass).
         InterruptSignals signals;
         options.interrupted = [&signals] { return signals.Received() != 0; };
+        // One generation at a time in a folder, pictures included: two at once (another seed or
+        // count) both exited 0, one's worlds left unlisted beside the other's index.csv.
+        std::error_code not_made;  // GenerateWorlds names why
+        std::filesystem::create_directories(options.out_dir, not_made);
+        const sim::FolderLock lock(options.out_dir);
+        if (lock.busy()) {
+          throw UsageError("worlds generate: --out: " + options.out_dir.string() +
+                           ": another plywood worlds generate is writing this folder; wait for "
+                           "it or choose another folder");
+        }
         const auto start = std::chrono::steady_clock::now();
         std::vector<sim::worldgen::GeneratedWorldFile> files;
         try {

@@ -8,6 +8,7 @@
 #include "perception/lines/round_objects_of_quiet_scan.h"
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
+#include "sim/config/folder_behind_links.h"
 #include "sim/config/robot_catalog.h"
 #include "sim/config/yaml_fields.h"
 #include "sim/runner/spawn_refused.h"
@@ -21,7 +22,7 @@ std::filesystem::path ResolveWorld(const std::string& text, const sim::Experimen
   if (given.is_absolute()) {
     if (perception::IsRegularFile(given)) return given.lexically_normal();
   } else {
-    const auto base = std::filesystem::absolute(config.source_file).parent_path();
+    const auto base = sim::FolderBehindLinks(config.source_file);
     for (const auto& root : {base, sim::DataRoot()}) {
       if (perception::IsRegularFile(root / given)) return (root / given).lexically_normal();
     }

@@ -19,8 +19,10 @@
 #include "perception/sonar_map/sonar_cell_model.h"
 #include "sim/config/robot_catalog.h"
 #include "sim/raycast/mujoco_ray_caster.h"
+#include "sim/runner/file_stamp.h"
 #include "sim/runner/file_writer.h"
 #include "sim/runner/format_number.h"
+#include "sim/runner/link_to_nowhere.h"
 #include "sim/runner/scratch_folder.h"
 #include "sim/runner/text_file.h"
 #include "sim/sensors/sonar_sensor.h"
@@ -277,6 +279,10 @@ SonarNetTrainingReport TrainSonarNet(
   if (options.out.has_parent_path()) {
     // The default --out, runs/sonar_net/, in a folder plywood may not write in (a read-only
     // current folder) read "plywood: runs/sonar_net: Operation not permitted", exit 1.
+    if (const auto nowhere = sim::LinkToNowhere(options.out.parent_path())) {
+      throw std::invalid_argument("train: --out: " + options.out.string() + ": its folder " +
+                                  options.out.parent_path().string() + " " + *nowhere);
+    }
     std::error_code error;
     std::filesystem::create_directories(options.out.parent_path(), error);
     if (error) {
@@ -286,6 +292,7 @@ SonarNetTrainingReport TrainSonarNet(
     }
   }
   RequireWritablePlace(options.out);
+  const sim::FileStamp out_at_start = sim::StampOf(options.out);
   sim::ScratchFolderRoot();  // the rooms' files go there: a bad TMPDIR is named before training
 
   std::mt19937_64 rng(train.seed);
@@ -324,6 +331,17 @@ SonarNetTrainingReport TrainSonarNet(
   report.base_rate = perception::ScoreProbabilities(p_prior, labels);
   // Staged and renamed into place: a failed write leaves an earlier file as it was.
   net.RequireLoadable(options.out.string());
+  // Another process wrote --out while this one trained (two trainings into one file): the rename
+  // would replace its weights, and both would exit 0 saying they wrote theirs there. The first to
+  // finish wins; the later keeps its weights beside and says so.
+  if (!sim::IsADeviceOrAPipe(options.out) && sim::StampOf(options.out) != out_at_start) {
+    const std::filesystem::path beside = sim::StagedTextFilePath(options.out);
+    sim::WriteTextFile(beside, net.ToText());
+    throw std::invalid_argument("train: --out: " + options.out.string() +
+                                ": another process wrote it while this one trained; these "
+                                "weights are in " +
+                                beside.string() + " (choose another --out, or move them there)");
+  }
   sim::WriteTextFile(options.out, net.ToText());
   return report;
 }

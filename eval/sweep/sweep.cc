@@ -140,6 +140,9 @@ int RunSweep(const SweepInvocation& invocation) {
   return outcome.failed > 0 ? 1 : collected;
 }
 
-int CollectSweepCommand(const fs::path& out_dir, bool quiet) { return Collect(out_dir, quiet); }
+int CollectSweepCommand(const fs::path& out_dir, bool quiet) {
+  const SweepFolderLock lock = SweepFolderLock::ForCollect(out_dir);
+  return Collect(out_dir, quiet);
+}
 
 }  // namespace plywood::eval

@@ -27,6 +27,7 @@
 #include "sim/config/robot_catalog.h"
 #include "sim/config/yaml_text_value.h"
 #include "sim/runner/build_id.h"
+#include "sim/runner/link_to_nowhere.h"
 #include "sim/runner/run_directory.h"
 #include "sim/runner/text_file.h"
 #include "sim/world/generator/world_families.h"
@@ -76,7 +77,7 @@ pid_t StartRun(const SweepCell& cell, const fs::path& plywood, const fs::path& p
   // The sweep runs processes side by side, one per core: Mesa's software renderer (snapshots)
   // would otherwise start a thread per core in every run and oversubscribe the machine.
   setenv("LP_NUM_THREADS", "1", 0);
-  const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  const int fd = open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);  // the umask decides
   if (fd >= 0) {
     dup2(fd, STDOUT_FILENO);
     dup2(fd, STDERR_FILENO);
@@ -140,10 +141,24 @@ std::string RobotModelHash(const std::string& robot) {
   }
 }
 
+namespace {
+
+// Opens a lock file for flock, made when missing. Its mode is the umask's (0666 before it), as
+// every file a sweep writes: one a teammate's sweep made 0644 under umask 002 could not be opened
+// for writing, and the sweep ran unlocked without a word. flock needs no write access, so a lock
+// file that is read-only to us is opened for reading.
+int OpenLockFile(const fs::path& file, bool create) {
+  int fd = open(file.c_str(), O_RDWR | O_CLOEXEC | (create ? O_CREAT : 0), 0666);
+  if (fd < 0 && errno == EACCES) fd = open(file.c_str(), O_RDONLY | O_CLOEXEC);
+  return fd;
+}
+
+}  // namespace
+
 SweepFolderLock::SweepFolderLock(const fs::path& out, int shard_index, int shard_count,
                                  bool quiet) {
   const auto take = [&](const fs::path& file, int how) {
-    const int fd = open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    const int fd = OpenLockFile(file, true);
     if (fd < 0) return;
     fds_.push_back(fd);
     if (flock(fd, how | LOCK_NB) == 0) return;
@@ -164,6 +179,30 @@ SweepFolderLock::SweepFolderLock(const fs::path& out, int shard_index, int shard
                 ".lock"),
          LOCK_EX);
   }
+}
+
+SweepFolderLock SweepFolderLock::ForCollect(const fs::path& out) {
+  SweepFolderLock lock;
+  // Shared on sweep.lock, which a whole sweep holds exclusively and shards shared; nothing to
+  // lock when it is missing, as no sweep ever ran there (the collect then says what OUT is).
+  if (const int fd = OpenLockFile(out / "sweep.lock", false); fd >= 0) {
+    lock.fds_.push_back(fd);
+    if (flock(fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK) {
+      throw sim::ConfigError(out.string(), "",
+                             "a plywood sweep is running in this folder and collects its results "
+                             "when its runs end; wait for it");
+    }
+  }
+  // Exclusive on the folder itself, which only collects lock: one collect at a time.
+  if (const int fd = open(out.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); fd >= 0) {
+    lock.fds_.push_back(fd);
+    if (flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK) {
+      throw sim::ConfigError(out.string(), "",
+                             "another plywood sweep --collect is writing this folder's tables; "
+                             "wait for it");
+    }
+  }
+  return lock;
 }
 
 SweepFolderLock::~SweepFolderLock() {
@@ -251,6 +290,10 @@ void PrepareSweepFolder(const SweepSpec& spec, const fs::path& out) {
                              "another --out");
     }
     return;
+  }
+  if (const auto nowhere = sim::LinkToNowhere(out)) {
+    throw sim::ConfigError(out.string(), "",
+                           *nowhere + "; make that folder or choose another --out");
   }
   fs::create_directories(out, error);
   if (error) {

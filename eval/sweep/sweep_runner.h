@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "eval/sweep/sweep_cells.h"
@@ -73,8 +74,19 @@ class SweepFolderLock {
   ~SweepFolderLock();
   SweepFolderLock(const SweepFolderLock&) = delete;
   SweepFolderLock& operator=(const SweepFolderLock&) = delete;
+  SweepFolderLock(SweepFolderLock&& other) noexcept : fds_(std::move(other.fds_)) {
+    other.fds_.clear();
+  }
+  SweepFolderLock& operator=(SweepFolderLock&&) = delete;
+
+  // Held while `sweep --collect OUT` writes OUT's tables: refused with one line while a whole
+  // sweep works there (it collects when its runs end) or another collect writes them, either of
+  // which would leave one collect's results.csv beside the other's summary.csv. Shards run on:
+  // they write no table, and a collect beside them reports their cells as not run.
+  static SweepFolderLock ForCollect(const std::filesystem::path& out);
 
  private:
+  SweepFolderLock() = default;
   std::vector<int> fds_;
 };
 

@@ -15,6 +15,7 @@
 #include "sim/config/config_error.h"
 #include "sim/config/decimal_whole_number.h"
 #include "sim/config/experiment_config.h"
+#include "sim/config/folder_behind_links.h"
 #include "sim/config/robot_catalog.h"
 #include "sim/config/utf8_text.h"
 #include "sim/config/yaml_alias_expansion.h"
@@ -404,7 +405,7 @@ SweepSpec LoadSweepSpec(const fs::path& path) {
   sim::RejectDuplicateKeys(root, spec.source_file);  // a repeated axis would silently win
   sim::RejectNonStandardTags(root, spec.source_file);
   sim::RejectNulCharacters(root, spec.source_file);
-  const fs::path base_dir = fs::absolute(path).parent_path();
+  const fs::path base_dir = sim::FolderBehindLinks(path);  // a link's target's folder
   sim::YamlFields top(root, spec.source_file, "");
   spec.name = path.stem().string();
   top.Get("name", &spec.name);

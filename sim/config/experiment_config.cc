@@ -24,6 +24,7 @@
 #include "sim/config/config_archive.h"
 #include "sim/config/config_error.h"
 #include "sim/config/config_fields.h"
+#include "sim/config/folder_behind_links.h"
 #include "sim/config/plugin_loader.h"
 #include "sim/config/robot_catalog.h"
 #include "sim/config/utf8_text.h"
@@ -800,8 +801,8 @@ ExperimentConfig LoadExperimentConfig(const std::filesystem::path& yaml_path,
   }
   std::stringstream text;
   text << in.rdbuf();
-  return ParseExperimentConfig(text.str(), yaml_path.string(),
-                               std::filesystem::absolute(yaml_path).parent_path(), overrides);
+  return ParseExperimentConfig(text.str(), yaml_path.string(), FolderBehindLinks(yaml_path),
+                               overrides);
 }
 
 void RequireOdometryEstimator(const ExperimentConfig& config, const std::string& field,

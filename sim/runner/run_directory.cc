@@ -15,6 +15,7 @@
 #include "sim/config/config_error.h"
 #include "sim/runner/build_id.h"
 #include "sim/runner/json_text.h"
+#include "sim/runner/link_to_nowhere.h"
 #include "sim/runner/text_file.h"
 
 namespace plywood::sim {
@@ -252,11 +253,8 @@ StagedRunDirectory::StagedRunDirectory(const fs::path& target, bool force)
     : given_(target), target_(Normalised(target)) {
   std::error_code error;
   const fs::file_status status = fs::status(target_, error);
-  if (!fs::exists(status) && fs::is_symlink(target_, error)) {
-    throw ConfigError(given_.string(), "",
-                      "is a symbolic link to " + fs::read_symlink(target_, error).string() +
-                          ", which does not exist (or links round in a loop); make that folder "
-                          "or choose another --out");
+  if (const auto nowhere = LinkToNowhere(target_)) {
+    throw ConfigError(given_.string(), "", *nowhere + "; make that folder or choose another --out");
   }
   if (!fs::exists(status)) {
     // Made now, so an unwritable place is refused before anything is simulated.

@@ -1,5 +1,6 @@
 #include "sim/runner/text_file.h"
 
+#include <limits.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -19,7 +20,14 @@ std::string ReadTextFile(const std::filesystem::path& path) {
 }
 
 std::filesystem::path StagedTextFilePath(const std::filesystem::path& path) {
-  return path.string() + ".partial-" + std::to_string(getpid());
+  const std::string suffix = ".partial-" + std::to_string(getpid());
+  const std::string name = path.filename().string();
+  // A name the file system takes (up to NAME_MAX bytes) whose staged copy's would be longer is
+  // staged under its head: "FILE: cannot write: File name too long" named a legal name (s64).
+  if (name.size() + suffix.size() > NAME_MAX && name.size() <= NAME_MAX) {
+    return path.parent_path() / (name.substr(0, NAME_MAX - suffix.size()) + suffix);
+  }
+  return path.string() + suffix;
 }
 
 std::optional<long> StagedCopyPid(std::string_view name, std::string_view of) {

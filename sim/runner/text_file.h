@@ -15,7 +15,8 @@ std::string ReadTextFile(const std::filesystem::path& path);
 
 // The temporary name WriteTextFile writes `path` under before renaming it into place:
 // "PATH.partial-PID" (the pid keeps two processes writing one file, Slurm tasks or a sweep and
-// --collect, apart).
+// --collect, apart); for a name within NAME_MAX whose staged name would not be, the name's head
+// with that suffix, so the file system takes it.
 std::filesystem::path StagedTextFilePath(const std::filesystem::path& path);
 
 // The PID in `name` when it is the staged copy of `of` that StagedTextFilePath names

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "sim/runner/link_to_nowhere.h"
 #include "sim/runner/text_file.h"
 #include "sim/world/generator/robot_reach.h"
 #include "sim/world/generator/spawn_placer.h"
@@ -146,6 +147,10 @@ void RemoveEarlierGeneration(const std::filesystem::path& dir) {
 
 std::vector<GeneratedWorldFile> GenerateWorlds(const GenerateWorldsOptions& options) {
   options.Validate();
+  if (const auto nowhere = LinkToNowhere(options.out_dir)) {
+    throw std::invalid_argument("out: " + options.out_dir.string() + ": " + *nowhere +
+                                "; make that folder or choose another folder");
+  }
   std::error_code error;
   std::filesystem::create_directories(options.out_dir, error);
   if (error || !std::filesystem::is_directory(options.out_dir)) {

@@ -1,0 +1,15 @@
+#pragma once
+
+#include <filesystem>
+
+namespace plywood::sim {
+
+// The folder an experiment or sweep file's relative paths resolve against: the folder of the file
+// itself, found by following the symbolic links its name goes through (the last component only,
+// hop by hop), as an absolute path. A file reached through a link in another folder
+// (`ln -s ../lab/e.yaml mine.yaml`) means what its author wrote beside it: the same file gives the
+// same run whichever name it is given by. The folders above are taken as named (lexically), as
+// everywhere else a path is resolved.
+std::filesystem::path FolderBehindLinks(const std::filesystem::path& file);
+
+}  // namespace plywood::sim
