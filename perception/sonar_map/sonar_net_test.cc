@@ -264,6 +264,23 @@ TEST(SonarCellModelTest, ARingTheNetworkCannotReadIsRefusedByField) {
   }
 }
 
+TEST(SonarNetTest, ANetworkOfLayersNoFileCanHoldIsRefusedByField) {
+  // SonarNet({0}, seed) gave a network whose output ignores its inputs (a 0 x 5 first layer),
+  // SonarNet({-1}, seed) asked Eigen for a matrix of negative size. Refused as training refuses
+  // them; no hidden layer at all (a logistic unit) stays allowed, as a weights file allows it.
+  for (const std::vector<int>& hidden : {std::vector<int>{0}, std::vector<int>{16, -1}}) {
+    try {
+      const SonarNet net(hidden, 1);
+      ADD_FAILURE() << "no throw; P " << net.Forward(Eigen::Matrix<double, 5, 1>::Zero());
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("hidden: layer sizes must be in [1, 256], got ", 0), 0u)
+          << e.what();
+    }
+  }
+  EXPECT_THROW(SonarNet(std::vector<int>(8, 4), 1), std::invalid_argument);
+  EXPECT_NO_THROW(SonarNet({}, 1));
+}
+
 TEST(SonarNetTest, CommittedWeightsLoadAndBeatTheConeModelOnAWall) {
   const auto path = std::filesystem::path(PLYWOOD_SOURCE_ROOT) / "models" / "sonar_net_v1.txt";
   const SonarNet net = SonarNet::Load(path);
