@@ -2,10 +2,8 @@
 
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
-#include <string>
 
-#include "msgs/shortest_number.h"
+#include "perception/geometric_map/option_checks.h"
 
 namespace plywood::perception {
 namespace {
@@ -35,12 +33,8 @@ GeometricMapper::GeometricMapper(const GeometricMapOptions& options)
 
 msgs::Pose2D GeometricMapper::AddScan(const msgs::LaserScan& ir, const msgs::RangeRing* sonar,
                                       const msgs::Pose2D& X_OR) {
-  // A NaN pose would put NaN segments into the map for good.
-  if (!std::isfinite(X_OR.x_m) || !std::isfinite(X_OR.y_m) || !std::isfinite(X_OR.theta_rad)) {
-    throw std::invalid_argument("X_OR: must be finite, got (" + msgs::ShortestNumber(X_OR.x_m) +
-                                ", " + msgs::ShortestNumber(X_OR.y_m) + ", " +
-                                msgs::ShortestNumber(X_OR.theta_rad) + ")");
-  }
+  // Before anything is counted: a NaN pose would put NaN segments into the map for good.
+  RequireFinitePose("X_OR", X_OR);
   const std::vector<RangePoint> points = FuseRanges(ir, sonar, options_.fusion);
   points_seen_ += static_cast<long>(points.size());
   for (const RangePoint& p : points) sonar_points_ += p.from_sonar;

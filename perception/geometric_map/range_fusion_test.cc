@@ -131,6 +131,8 @@ TEST_F(RangeFusionTest, TheMapperRefusesAPoseThatIsNotFinite) {
   }
   EXPECT_TRUE(mapper.map().segments().empty());
   mapper.AddScan(ir, nullptr, {0.0, 0.0, 0.0});
+  // A NaN heading once the map has a reference crashed the pose correction (a segfault).
+  EXPECT_THROW(mapper.AddScan(ir, nullptr, {0.0, 0.0, std::nan("")}), std::invalid_argument);
   EXPECT_FALSE(mapper.map().segments().empty());
   for (const MapSegment& s : mapper.map().segments()) {
     EXPECT_TRUE(s.line.start.allFinite() && s.line.end.allFinite());
