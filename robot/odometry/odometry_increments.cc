@@ -138,6 +138,10 @@ void IncrementSource::AddGyro(const msgs::GyroRate& gyro) {
     // The sample is the mean rate since the previous one.
     gyro_.push_back({gyro.time_s, gyro_.back().angle_rad +
                                       gyro.yaw_rate_rad_s * (gyro.time_s - gyro_.back().time_s)});
+  } else {
+    // A repeated or backward timestamp: dropped, and not counted either, or a driver that sends
+    // every sample twice halved the sample period the EKF's gyro noise scales with.
+    return;
   }
   ++gyro_samples_;
 }

@@ -86,7 +86,8 @@ class IncrementSource {
   // dropped (the counts are cumulative: the next reading carries its motion); a jump only a wrap
   // explains throws std::invalid_argument "left_ticks: ..." / "right_ticks: ...".
   void AddEncoders(const msgs::WheelEncoders& encoders);
-  // A sample whose rate or time is not finite is dropped (the next one's mean rate covers the gap).
+  // A sample whose rate or time is not finite, or whose time is not after the previous one's, is
+  // dropped (the next one's mean rate covers the gap).
   void AddGyro(const msgs::GyroRate& gyro);
   // The next complete increment, oldest first.
   std::optional<OdometryIncrement> Next();
