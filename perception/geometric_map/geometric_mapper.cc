@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "perception/geometric_map/option_checks.h"
+
 namespace plywood::perception {
 namespace {
 
@@ -31,6 +33,8 @@ GeometricMapper::GeometricMapper(const GeometricMapOptions& options)
 
 msgs::Pose2D GeometricMapper::AddScan(const msgs::LaserScan& ir, const msgs::RangeRing* sonar,
                                       const msgs::Pose2D& X_OR) {
+  // Before anything is counted: a NaN pose would put NaN segments into the map for good.
+  RequireFinitePose("X_OR", X_OR);
   const std::vector<RangePoint> points = FuseRanges(ir, sonar, options_.fusion);
   points_seen_ += static_cast<long>(points.size());
   for (const RangePoint& p : points) sonar_points_ += p.from_sonar;

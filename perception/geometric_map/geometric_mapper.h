@@ -39,7 +39,8 @@ class GeometricMapper {
   explicit GeometricMapper(const GeometricMapOptions& options);
 
   // One IR scan with the sonar ring read with it (null: none) at odometry pose X_OR. Returns the
-  // corrected pose of the scan in the map frame.
+  // corrected pose of the scan in the map frame. A non-finite X_OR throws std::invalid_argument
+  // "X_OR: ..." (as do the scan's angles, FuseRanges).
   msgs::Pose2D AddScan(const msgs::LaserScan& ir, const msgs::RangeRing* sonar,
                        const msgs::Pose2D& X_OR);
 

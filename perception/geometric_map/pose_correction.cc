@@ -241,6 +241,7 @@ bool HistogramPoseCorrector::AxisShift(const std::vector<double>& scan, int axis
 msgs::Pose2D HistogramPoseCorrector::Correct(const msgs::Pose2D& X_OR,
                                              std::span<const RangePoint> points_R,
                                              std::span<const LineSegment> lines_R) {
+  RequireFinitePose("X_OR", X_OR);
   msgs::Pose2D X_WR = X_WO_ * X_OR;
   const AngleHistogram predicted = MakeAngleHistogram(points_R, histogram_options_, X_WR.theta_rad);
   if (predicted.TotalVotes() < options_.min_virtual_lines) return X_WR;

@@ -82,7 +82,7 @@ class HistogramPoseCorrector {
 
   // The corrected map-frame pose of a scan taken at odometry pose X_OR; `points_R` in the robot
   // frame, beam order, `lines_R` the lines fitted to them (robot frame). Updates the correction
-  // and the reference histograms.
+  // and the reference histograms. A non-finite X_OR throws std::invalid_argument "X_OR: ...".
   msgs::Pose2D Correct(const msgs::Pose2D& X_OR, std::span<const RangePoint> points_R,
                        std::span<const LineSegment> lines_R = {});
 

@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "perception/geometric_map/scan_segmentation.h"
 #include "tests/support/synthetic_scan.h"
@@ -172,6 +175,32 @@ TEST(PoseCorrectionTest, OffLeavesOdometryAlone) {
     EXPECT_NEAR(corrected.y_m, odometry.y_m, 1e-12);
     EXPECT_NEAR(corrected.theta_rad, odometry.theta_rad, 1e-12);
   }
+}
+
+TEST(PoseCorrectionTest, AnOdometryPoseThatIsNotFiniteIsRefused) {
+  // A NaN pose from the odometry went into the histograms (UBSan: a signed overflow binning it)
+  // and the correction; refused, naming it, the correction goes on as before.
+  HistogramPoseCorrector corrector({}, {});
+  const msgs::Pose2D truth{0.3, -0.2, 0.1};
+  corrector.Correct(truth, IrScan(Room(), truth));
+  const msgs::Pose2D X_WO = corrector.X_WO();
+  for (const msgs::Pose2D& bad :
+       {msgs::Pose2D{std::nan(""), 0.0, 0.0}, msgs::Pose2D{0.0, HUGE_VAL, 0.0},
+        msgs::Pose2D{0.0, 0.0, std::nan("")}}) {
+    try {
+      corrector.Correct(bad, IrScan(Room(), truth));
+      ADD_FAILURE() << "no throw";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("X_OR: must be finite, got (", 0), 0u) << e.what();
+    }
+  }
+  EXPECT_EQ(corrector.X_WO().x_m, X_WO.x_m);
+  EXPECT_EQ(corrector.X_WO().y_m, X_WO.y_m);
+  EXPECT_EQ(corrector.X_WO().theta_rad, X_WO.theta_rad);
+  const msgs::Pose2D corrected = corrector.Correct(truth, IrScan(Room(), truth));
+  EXPECT_NEAR(corrected.x_m, truth.x_m, 0.02);
+  EXPECT_NEAR(corrected.y_m, truth.y_m, 0.02);
+  EXPECT_NEAR(corrected.theta_rad, truth.theta_rad, 0.01);
 }
 
 }  // namespace

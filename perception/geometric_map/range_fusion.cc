@@ -7,6 +7,7 @@
 
 #include "msgs/angle_units.h"
 #include "perception/geometric_map/option_checks.h"
+#include "perception/lines/scan_points.h"
 
 namespace plywood::perception {
 namespace {
@@ -48,6 +49,7 @@ void FusionOptions::Validate() const {
 
 std::vector<RangePoint> FuseRanges(const msgs::LaserScan& ir, const msgs::RangeRing* sonar,
                                    const FusionOptions& options) {
+  ValidateScanAngles(ir);
   const int n = static_cast<int>(ir.ranges_m.size());
   const Eigen::Vector2d origin(ir.X_RS.x_m, ir.X_RS.y_m);
   std::vector<Eigen::Vector2d> dir(n);

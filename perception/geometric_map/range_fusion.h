@@ -52,6 +52,7 @@ struct RangePoint {
 
 // The points of one IR scan fused with the sonar ring read at the same instant (`sonar` may be
 // null: no sonar), in the robot frame and beam order. Beams without a range give no point.
+// @throws std::invalid_argument from ValidateScanAngles(ir).
 std::vector<RangePoint> FuseRanges(const msgs::LaserScan& ir, const msgs::RangeRing* sonar,
                                    const FusionOptions& options);
 

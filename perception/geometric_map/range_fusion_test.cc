@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <stdexcept>
+
+#include "perception/geometric_map/geometric_mapper.h"
 #include "tests/support/synthetic_scan.h"
 
 namespace plywood::perception {
@@ -93,6 +97,45 @@ TEST_F(RangeFusionTest, TauNaNNamesTheField) {
     FAIL() << "NaN tau accepted";
   } catch (const std::invalid_argument& e) {
     EXPECT_EQ(std::string(e.what()).rfind("tau_m:", 0), 0u) << e.what();
+  }
+}
+
+TEST_F(RangeFusionTest, AScanWhoseAnglesCannotPlaceItsBeamsIsRefusedByField) {
+  // angle_increment_rad 0: every IR beam on one ray, the wall a spray of points along it; a NaN
+  // angle: every point NaN, and the geometric map's lines with them.
+  msgs::LaserScan bad = ir;
+  bad.angle_increment_rad = 0.0;
+  EXPECT_THROW(
+      {
+        try {
+          FuseRanges(bad, nullptr, {});
+        } catch (const std::invalid_argument& e) {
+          EXPECT_STREQ(e.what(), "angle_increment_rad: must be finite and non-zero, got 0");
+          throw;
+        }
+      },
+      std::invalid_argument);
+  bad = ir;
+  bad.angle_min_rad = std::nan("");
+  EXPECT_THROW(FuseRanges(bad, nullptr, {}), std::invalid_argument);
+}
+
+TEST_F(RangeFusionTest, TheMapperRefusesAPoseThatIsNotFinite) {
+  // A NaN odometry pose put NaN segments into the map for good (every later scan merged with them).
+  GeometricMapper mapper(GeometricMapOptions{});
+  try {
+    mapper.AddScan(ir, nullptr, {std::nan(""), 0.0, 0.0});
+    ADD_FAILURE() << "no throw; segments " << mapper.map().segments().size();
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "X_OR: must be finite, got (nan, 0, 0)");
+  }
+  EXPECT_TRUE(mapper.map().segments().empty());
+  mapper.AddScan(ir, nullptr, {0.0, 0.0, 0.0});
+  // A NaN heading once the map has a reference crashed the pose correction (a segfault).
+  EXPECT_THROW(mapper.AddScan(ir, nullptr, {0.0, 0.0, std::nan("")}), std::invalid_argument);
+  EXPECT_FALSE(mapper.map().segments().empty());
+  for (const MapSegment& s : mapper.map().segments()) {
+    EXPECT_TRUE(s.line.start.allFinite() && s.line.end.allFinite());
   }
 }
 

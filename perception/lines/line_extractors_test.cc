@@ -4,7 +4,10 @@
 #include <limits>
 #include <numbers>
 #include <random>
+#include <stdexcept>
+#include <string>
 #include <tuple>
+#include <utility>
 
 #include "perception/lines/hough_extractor.h"
 #include "perception/lines/line_extractor_factory.h"
@@ -115,6 +118,95 @@ TEST(LineExtractorsTest, DegenerateScansGiveNoLines) {
     EXPECT_TRUE(extractor->Extract(empty).empty()) << name;
     EXPECT_TRUE(extractor->Extract(all_max).empty()) << name;
     EXPECT_TRUE(extractor->Extract(single).empty()) << name;
+  }
+}
+
+// A wall x = 2 seen by 181 beams from -45 to 45 deg, as a LaserScan (range_max_m 8).
+msgs::LaserScan WallScan(double angle_increment_rad = kPi / 360) {
+  msgs::LaserScan scan;
+  scan.angle_increment_rad = angle_increment_rad;
+  scan.angle_min_rad = angle_increment_rad > 0 ? -kPi / 4 : kPi / 4;
+  scan.range_max_m = 8.0;
+  for (int i = 0; i <= 180; ++i) scan.ranges_m.push_back(2.0 / std::cos(scan.BeamAngleRad(i)));
+  return scan;
+}
+
+bool Finite(const LineSegment& s) {
+  return s.start.allFinite() && s.end.allFinite() && std::isfinite(s.alpha_rad) &&
+         std::isfinite(s.r_m);
+}
+
+TEST(LineExtractorsTest, WhatARealDriverReportsAsNoReturnIsNoReturn) {
+  // NaN, +-inf, 0, negative ranges and the sensor's max-range code scattered along a wall, each a
+  // single dropout: the wall is found as on the clean scan and no line is NaN.
+  const msgs::LaserScan clean = WallScan();
+  msgs::LaserScan dirty = clean;
+  const double bad[] = {std::nan(""), HUGE_VAL, -HUGE_VAL, 0.0, -1.0, 8.0, 1e308, -0.0};
+  for (int k = 0; k < 8; ++k) dirty.ranges_m[10 + 20 * k] = bad[k];
+  // The same handed over one by one, as a lab's own driver would (ScanPoints::Add, which knows no
+  // range_max_m: the max-range code and 1e308 stay out), and a beam with a NaN bearing. They
+  // became points at NaN, at the sensor and behind it: polar_neighbour cut the wall into 6.
+  ScanPoints added;
+  added.angle_increment_rad = clean.angle_increment_rad;
+  for (int i = 0; i <= 180; ++i) {
+    const bool bad_beam =
+        i % 20 == 10 && i <= 150 && bad[(i - 10) / 20] != 8.0 && bad[(i - 10) / 20] != 1e308;
+    const double r = bad_beam ? bad[(i - 10) / 20] : clean.ranges_m[i];
+    added.Add(r, i == 60 ? std::nan("") : clean.BeamAngleRad(i), i);
+  }
+  EXPECT_EQ(added.size(), 181u - 7u);
+  for (const std::string& name : LineExtractorNames()) {
+    const auto extractor = MakeLineExtractor(name);
+    const auto expected = extractor->Extract(MakeScanPoints(clean, ScanFilter{}));
+    ASSERT_EQ(expected.size(), 1u) << name;
+    for (const auto& [scan, via] : {std::pair{MakeScanPoints(dirty, ScanFilter{}), "LaserScan"},
+                                    std::pair{added, "ScanPoints::Add"}}) {
+      SCOPED_TRACE(via);
+      const auto lines = extractor->Extract(scan);
+      ASSERT_EQ(lines.size(), 1u) << name;
+      EXPECT_TRUE(Finite(lines[0])) << name;
+      EXPECT_NEAR(lines[0].r_m, 2.0, 1e-6) << name;
+    }
+  }
+}
+
+TEST(LineExtractorsTest, AScanWhoseAnglesCannotPlaceItsBeamsIsRefusedByField) {
+  // angle_increment_rad 0 put every beam on one ray: a wall became a line pointing away from the
+  // sensor. A non-finite angle made every point NaN.
+  const auto message = [](const msgs::LaserScan& scan) {
+    try {
+      MakeScanPoints(scan, ScanFilter{});
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no throw");
+  };
+  msgs::LaserScan scan = WallScan();
+  scan.angle_increment_rad = 0.0;
+  EXPECT_EQ(message(scan), "angle_increment_rad: must be finite and non-zero, got 0");
+  scan.angle_increment_rad = std::nan("");
+  EXPECT_EQ(message(scan), "angle_increment_rad: must be finite and non-zero, got nan");
+  scan = WallScan();
+  scan.angle_min_rad = HUGE_VAL;
+  EXPECT_EQ(message(scan), "angle_min_rad: must be finite, got inf");
+  // One beam needs no increment: a single range is a point whatever the step.
+  scan = WallScan();
+  scan.ranges_m.resize(1);
+  scan.angle_increment_rad = 0.0;
+  EXPECT_EQ(MakeScanPoints(scan, ScanFilter{}).size(), 1u);
+}
+
+TEST(LineExtractorsTest, AClockwiseScanGivesTheSameLinesAsACounterClockwiseOne) {
+  // A negative angle_increment_rad (a sensor mounted upside down, or sweeping clockwise) sees the
+  // same wall.
+  for (const std::string& name : LineExtractorNames()) {
+    const auto extractor = MakeLineExtractor(name);
+    const auto ccw = extractor->Extract(MakeScanPoints(WallScan(kPi / 360), ScanFilter{}));
+    const auto cw = extractor->Extract(MakeScanPoints(WallScan(-kPi / 360), ScanFilter{}));
+    ASSERT_EQ(ccw.size(), 1u) << name;
+    ASSERT_EQ(cw.size(), 1u) << name;
+    EXPECT_NEAR(cw[0].r_m, ccw[0].r_m, 1e-9) << name;
+    EXPECT_NEAR((cw[0].end - cw[0].start).norm(), (ccw[0].end - ccw[0].start).norm(), 1e-6) << name;
   }
 }
 

@@ -35,6 +35,7 @@ struct ScanPoints {
   bool HasScanOrder() const {
     return range_m.size() == points.size() && beam_index.size() == points.size();
   }
+  // A range that is NaN, infinite or <= 0, or a bearing that is not finite, is no return: skipped.
   void Add(double range_m, double bearing_rad, int beam);
   // Beams without a usable return between point i and the next point j in scan order (past the
   // seam of a closed scan too): no return, a dropout, or a return filtered out (range cut).
@@ -68,8 +69,14 @@ struct ScanFilter {
   }
 };
 
+// Refuses, once per scan, angles that cannot place its beams: a non-finite angle_min_rad, or an
+// angle_increment_rad that is 0 or not finite with more than one beam (every beam on one ray).
+// @throws std::invalid_argument "<field>: must be ..., got <value>".
+void ValidateScanAngles(const msgs::LaserScan& scan);
+
 // The scan's returns that pass `filter` (and scan.IsReturn), in the sensor frame; those only the
-// range cut removed go to the beyond_cut_* fields.
+// range cut removed go to the beyond_cut_* fields. NaN, inf, < range_min_m and >= range_max_m
+// ranges are no return; each scan's angles go through ValidateScanAngles.
 ScanPoints MakeScanPoints(const msgs::LaserScan& scan, const ScanFilter& filter);
 
 // Several scans taken from one spot, combined in the frame of the first sensor: scans[k] is

@@ -23,7 +23,7 @@ double EchoGatedModel::Probability(const msgs::RangeRing& ring, const Eigen::Vec
       nearest = i;
     }
   }
-  if (nearest < 0 || !ring.readings[nearest].echo) return 0.5;
+  if (nearest < 0 || !ring.readings[nearest].HeardEcho()) return 0.5;
   return inner_->Probability(ring, p_R);
 }
 

@@ -51,8 +51,19 @@ LogOddsGrid::LogOddsGrid(const LogOddsGridOptions& options) : options_(options) 
   occupied_votes_.assign(log_odds_.size(), 0);
 }
 
+void LogOddsGrid::ThrowOutside(int ix, int iy) const {
+  throw std::invalid_argument("ix, iy: cell (" + std::to_string(ix) + ", " + std::to_string(iy) +
+                              ") is outside the " + std::to_string(width()) + " x " +
+                              std::to_string(height()) + " grid");
+}
+
 void LogOddsGrid::Add(int ix, int iy, double p) {
-  const std::size_t i = Index(ix, iy);
+  const std::size_t i = CheckedIndex(ix, iy);
+  // A NaN would pass the clamp and make the cell NaN for good.
+  if (!(p >= 0.0 && p <= 1.0)) {
+    throw std::invalid_argument("p: must be a probability in [0, 1], got " +
+                                msgs::ShortestNumber(p));
+  }
   log_odds_[i] = std::clamp(log_odds_[i] + ClampedLogit(p, options_.log_odds),
                             -options_.log_odds.log_odds_limit, options_.log_odds.log_odds_limit);
   if (p > 0.5) ++occupied_votes_[i];

@@ -48,17 +48,19 @@ class LogOddsGrid {
  public:
   explicit LogOddsGrid(const LogOddsGridOptions& options = {});
 
-  // Adds one reading p of cell (ix, iy) (product formula, clamped).
+  // Adds one reading p of cell (ix, iy) (product formula, clamped). A cell outside the grid or a p
+  // outside [0, 1] (NaN included) throws std::invalid_argument naming it; nothing is written.
   void Add(int ix, int iy, double p);
   // Integrates a whole ring seen from X_WR (odometry frame).
   void Integrate(const SonarCellModel& model, const msgs::RangeRing& ring,
                  const msgs::Pose2D& X_WR);
 
-  double LogOdds(int ix, int iy) const { return log_odds_[Index(ix, iy)]; }
+  // These three throw std::invalid_argument for a cell outside the grid, as Add does.
+  double LogOdds(int ix, int iy) const { return log_odds_[CheckedIndex(ix, iy)]; }
   // How many readings called cell (ix, iy) occupied (p > 0.5). The log-odds saturate, so a cell
   // the network painted from a few far readings and a box face heard a hundred times both read
   // P ~ 1; the count tells them apart.
-  int OccupiedVotes(int ix, int iy) const { return occupied_votes_[Index(ix, iy)]; }
+  int OccupiedVotes(int ix, int iy) const { return occupied_votes_[CheckedIndex(ix, iy)]; }
   double Probability(int ix, int iy) const;
   bool Contains(int ix, int iy) const {
     return ix >= 0 && iy >= 0 && ix < width() && iy < height();
@@ -75,6 +77,12 @@ class LogOddsGrid {
 
  private:
   std::size_t Index(int ix, int iy) const { return static_cast<std::size_t>(iy) * width() + ix; }
+  // Index(ix, iy); @throws std::invalid_argument "ix, iy: ..." outside the grid.
+  std::size_t CheckedIndex(int ix, int iy) const {
+    if (!Contains(ix, iy)) ThrowOutside(ix, iy);
+    return Index(ix, iy);
+  }
+  [[noreturn]] void ThrowOutside(int ix, int iy) const;
   LogOddsGridOptions options_;
   std::vector<double> log_odds_;
   std::vector<int> occupied_votes_;

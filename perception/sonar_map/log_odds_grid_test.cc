@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
 namespace plywood::perception {
 namespace {
 
@@ -37,6 +41,39 @@ TEST(LogOddsGridTest, AddMatchesCombine) {
   EXPECT_EQ(grid.Probability(0, 0), 0.5);
   EXPECT_EQ(grid.CellAt(o.origin_xy + Eigen::Vector2d(0.12, 0.06)), Eigen::Vector2i(2, 1));
   EXPECT_EQ(grid.CellAt(o.origin_xy - Eigen::Vector2d(0.01, 0.0)), Eigen::Vector2i(-1, -1));
+}
+
+TEST(LogOddsGridTest, ACellOutsideTheGridOrAReadingThatIsNoProbabilityIsRefused) {
+  // Add(4, 0) wrote past the row into cell (0, 1), Add(0, 3) past the end of the vector, and a
+  // NaN reading made its cell NaN for good (the clamp keeps a NaN).
+  LogOddsGridOptions o;
+  o.width = 4;
+  o.height = 3;
+  LogOddsGrid grid(o);
+  const auto message = [](auto&& f) {
+    try {
+      f();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no throw");
+  };
+  EXPECT_EQ(message([&] { grid.Add(4, 0, 0.9); }), "ix, iy: cell (4, 0) is outside the 4 x 3 grid");
+  EXPECT_EQ(message([&] { grid.Add(0, 3, 0.9); }), "ix, iy: cell (0, 3) is outside the 4 x 3 grid");
+  EXPECT_EQ(message([&] { grid.Add(-1, 0, 0.9); }),
+            "ix, iy: cell (-1, 0) is outside the 4 x 3 grid");
+  EXPECT_EQ(message([&] { grid.Probability(0, -1); }),
+            "ix, iy: cell (0, -1) is outside the 4 x 3 grid");
+  EXPECT_EQ(message([&] { grid.LogOdds(7, 7); }), "ix, iy: cell (7, 7) is outside the 4 x 3 grid");
+  EXPECT_EQ(message([&] { grid.OccupiedVotes(4, 2); }),
+            "ix, iy: cell (4, 2) is outside the 4 x 3 grid");
+  EXPECT_EQ(message([&] { grid.Add(1, 1, std::nan("")); }),
+            "p: must be a probability in [0, 1], got nan");
+  EXPECT_EQ(message([&] { grid.Add(1, 1, 1.5); }), "p: must be a probability in [0, 1], got 1.5");
+  // Nothing was written: every cell still holds the prior.
+  for (double l : grid.log_odds()) EXPECT_EQ(l, 0.0);
+  grid.Add(1, 1, 1.0);  // certainty is allowed; the clamp makes it 1 - p_min
+  EXPECT_NEAR(grid.Probability(1, 1), 1.0 - o.log_odds.p_min, 1e-15);
 }
 
 TEST(LogOddsGridTest, OccupiedVotesCountTheReadingsAboveOneHalf) {

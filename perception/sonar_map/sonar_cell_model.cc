@@ -17,6 +17,10 @@ double Logit(double p) { return std::log(p / (1.0 - p)); }
 }  // namespace
 
 SonarCellFeatures ComputeCellFeatures(const msgs::RangeRing& ring, const Eigen::Vector2d& p_R) {
+  if (!(ring.range_max_m > 0.0 && ring.range_max_m < std::numeric_limits<double>::infinity())) {
+    throw std::invalid_argument("range_max_m: must be a finite number > 0, got " +
+                                msgs::ShortestNumber(ring.range_max_m));
+  }
   const double bearing = std::atan2(p_R.y(), p_R.x());
   // Three smallest angular offsets; ties go to the lower index so the choice is deterministic.
   std::array<int, 3> best{-1, -1, -1};
@@ -35,10 +39,20 @@ SonarCellFeatures ComputeCellFeatures(const msgs::RangeRing& ring, const Eigen::
       }
     }
   }
+  // A NaN heading is never nearest: with fewer than 3 usable transducers best[2] stays -1.
+  if (best[2] < 0) {
+    const int usable =
+        static_cast<int>(std::count_if(best.begin(), best.end(), [](int i) { return i >= 0; }));
+    throw std::invalid_argument(
+        ring.readings.size() < 3
+            ? "readings: need at least 3 transducers, got " + std::to_string(ring.readings.size())
+            : "readings: need at least 3 transducers with a finite X_RS.theta_rad, got " +
+                  std::to_string(usable));
+  }
   SonarCellFeatures f;
   for (int k = 0; k < 3; ++k) {
     const msgs::RangeReading& r = ring.readings[best[k]];
-    f.range_m[k] = r.echo ? std::min(r.range_m, ring.range_max_m) : ring.range_max_m;
+    f.range_m[k] = r.HeardEcho() ? std::min(r.range_m, ring.range_max_m) : ring.range_max_m;
   }
   f.angle_rad = msgs::WrapAngle(bearing - ring.readings[best[0]].X_RS.theta_rad);
   f.distance_m = p_R.norm();
@@ -79,11 +93,11 @@ double ClassicalSonarModel::Probability(const msgs::RangeRing& ring,
   const double half = options_.beam_half_angle_deg * kPi / 180.0;
   double log_odds = 0.0;
   for (const msgs::RangeReading& r : ring.readings) {
-    if (!r.echo) continue;
+    if (!r.HeardEcho()) continue;
     const Eigen::Vector2d d(p_R.x() - r.X_RS.x_m, p_R.y() - r.X_RS.y_m);
     const double dist = d.norm();
     const double phi = msgs::WrapAngle(std::atan2(d.y(), d.x()) - r.X_RS.theta_rad);
-    if (std::abs(phi) > half) continue;
+    if (!(std::abs(phi) <= half)) continue;  // a transducer without a pose (NaN) says nothing
     const double w = 1.0 - (phi / half) * (phi / half);
     if (std::abs(dist - r.range_m) <= options_.arc_half_width_m) {
       log_odds += w * Logit(options_.p_occupied);

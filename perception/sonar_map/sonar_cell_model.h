@@ -18,7 +18,10 @@ struct SonarCellFeatures {
   double distance_m = 0.0;
 };
 
-// @pre ring has at least 3 readings and range_max_m > 0. p_R: cell centre in the robot frame.
+// p_R: cell centre in the robot frame. A transducer without a usable echo (RangeReading::HeardEcho)
+// reads range_max_m; transducers whose X_RS.theta_rad is not finite are left out.
+// @throws std::invalid_argument naming the field when range_max_m is not a finite number > 0 or
+// fewer than 3 transducers have a finite heading.
 SonarCellFeatures ComputeCellFeatures(const msgs::RangeRing& ring, const Eigen::Vector2d& p_R);
 
 // The features scaled to about [-1, 1], the network's input vector.
@@ -36,7 +39,8 @@ class SonarCellModel {
 // cone (half-angle beam_half_angle_deg) says "free" up to its echo, "occupied" on an arc of width
 // 2 * arc_half_width_m around the echo, and nothing beyond, both weighted by (1 - (phi/half)^2) so
 // the cone's axis counts most. Cones overlapping a cell add their log-odds. A transducer without an
-// echo says nothing: on smooth plywood a miss is usually specular, not free space.
+// echo (RangeReading::HeardEcho) or without a finite pose says nothing: on smooth plywood a miss is
+// usually specular, not free space.
 struct ClassicalSonarOptions {
   double beam_half_angle_deg = 15.0;
   double arc_half_width_m = 0.05;

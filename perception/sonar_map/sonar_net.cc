@@ -30,10 +30,8 @@ std::string Format(double v) {
   return buffer;
 }
 
-}  // namespace
-
-void SonarNetTrainOptions::Validate() const {
-  if (hidden.empty()) throw std::invalid_argument("hidden: needs at least one layer");
+// The layers a weights file can hold (FromText): shared by training and the constructor.
+void ValidateHiddenSizes(const std::vector<int>& hidden) {
   // A weights file holds at most 8 layers (FromText), the output layer one of them; 1000 hidden
   // layers trained for ever and would not have loaded back.
   if (hidden.size() > 7)
@@ -45,6 +43,13 @@ void SonarNetTrainOptions::Validate() const {
     if (h < 1 || h > 256)
       throw std::invalid_argument("hidden: layer sizes must be in [1, 256], got " +
                                   std::to_string(h));
+}
+
+}  // namespace
+
+void SonarNetTrainOptions::Validate() const {
+  if (hidden.empty()) throw std::invalid_argument("hidden: needs at least one layer");
+  ValidateHiddenSizes(hidden);
   if (epochs < 1) throw std::invalid_argument("epochs: must be >= 1");
   if (batch_size < 1) throw std::invalid_argument("batch_size: must be >= 1");
   if (!(learning_rate > 0.0)) throw std::invalid_argument("learning_rate: must be > 0");
@@ -53,6 +58,9 @@ void SonarNetTrainOptions::Validate() const {
 }
 
 SonarNet::SonarNet(const std::vector<int>& hidden, std::uint64_t seed) {
+  // A size of 0 gave a network whose output ignores its inputs, a negative one an Eigen matrix of
+  // negative size.
+  ValidateHiddenSizes(hidden);
   std::mt19937_64 rng(seed);
   int in = 5;
   std::vector<int> sizes = hidden;

@@ -38,7 +38,8 @@ class SonarNet final : public SonarCellModel {
   static constexpr const char* kFileMagic = "plywood-sonar-net";
   static constexpr int kFileVersion = 1;
 
-  // Random (Xavier-uniform) weights from `seed`.
+  // Random (Xavier-uniform) weights from `seed`. @throws std::invalid_argument "hidden: ..." for a
+  // layer size outside [1, 256] or more than 7 hidden layers (what a weights file holds).
   SonarNet(const std::vector<int>& hidden, std::uint64_t seed);
 
   double Forward(const Eigen::Matrix<double, 5, 1>& x) const;

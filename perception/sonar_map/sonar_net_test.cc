@@ -2,10 +2,15 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <random>
+#include <stdexcept>
+#include <string>
 
+#include "perception/sonar_map/echo_gated_model.h"
 #include "plywood_paths.h"
 
 namespace plywood::perception {
@@ -177,6 +182,103 @@ TEST(SonarNetTest, WeightsLoadWouldRefuseAreNeverWritten) {
   EXPECT_NO_THROW(fine.Save(file));
   EXPECT_EQ(SonarNet::Load(file).ToText(), fine.ToText());
   std::filesystem::remove(file);
+}
+
+// A 16-transducer ring facing a wall 0.5 m ahead (the transducers within 45 deg of it hear it).
+msgs::RangeRing WallRing() {
+  msgs::RangeRing ring;
+  ring.range_max_m = 5.0;
+  for (int i = 0; i < 16; ++i) {
+    msgs::RangeReading r;
+    const double a = i * 2 * M_PI / 16;
+    r.X_RS = {0.2 * std::cos(a), 0.2 * std::sin(a), a};
+    const double c = std::cos(a);
+    r.echo = c > 0.7;
+    r.range_m = r.echo ? (0.5 - r.X_RS.x_m) / c : 0.0;
+    ring.readings.push_back(r);
+  }
+  return ring;
+}
+
+TEST(SonarCellModelTest, AnEchoWithoutAUsableRangeIsNoEcho) {
+  // A driver flagging an echo with a NaN, infinite, zero or negative range: each model reads it
+  // as the transducer having heard nothing. The network got NaN (and the grid cell with it, for
+  // good) or a range below zero; the cone model cleared the whole cone for an infinite range.
+  const SonarNet net =
+      SonarNet::Load(std::filesystem::path(PLYWOOD_SOURCE_ROOT) / "models" / "sonar_net_v1.txt");
+  const ClassicalSonarModel cone;
+  const EchoGatedModel gated(std::make_shared<SonarNet>(net));
+  for (double bad : {std::nan(""), HUGE_VAL, 0.0, -0.3}) {
+    msgs::RangeRing dirty = WallRing(), silent = WallRing();
+    for (int i : {15, 0, 1}) {  // the three transducers facing the wall
+      dirty.readings[i].range_m = bad;
+      silent.readings[i].echo = false;
+    }
+    for (const SonarCellModel* model :
+         std::initializer_list<const SonarCellModel*>{&net, &cone, &gated}) {
+      for (const Eigen::Vector2d& p : {Eigen::Vector2d(0.3, 0.0), Eigen::Vector2d(0.52, 0.05),
+                                       Eigen::Vector2d(2.0, 0.0), Eigen::Vector2d(0.0, 0.4)}) {
+        EXPECT_EQ(model->Probability(dirty, p), model->Probability(silent, p))
+            << "range " << bad << " at " << p.transpose();
+      }
+    }
+  }
+}
+
+TEST(SonarCellModelTest, ARingTheNetworkCannotReadIsRefusedByField) {
+  // Fewer than three readings: the network read readings[-1]. A range_max_m of 0 (a ring whose
+  // driver left it unset) made every range 0 m: an obstacle touching every transducer.
+  const SonarNet net =
+      SonarNet::Load(std::filesystem::path(PLYWOOD_SOURCE_ROOT) / "models" / "sonar_net_v1.txt");
+  const auto message = [&](const msgs::RangeRing& ring) {
+    try {
+      net.Probability(ring, {0.5, 0.0});
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no throw");
+  };
+  msgs::RangeRing ring = WallRing();
+  ring.readings.resize(2);
+  EXPECT_EQ(message(ring), "readings: need at least 3 transducers, got 2");
+  ring.readings.clear();
+  EXPECT_EQ(message(ring), "readings: need at least 3 transducers, got 0");
+  ring = WallRing();
+  ring.range_max_m = 0.0;
+  EXPECT_EQ(message(ring), "range_max_m: must be a finite number > 0, got 0");
+  ring.range_max_m = std::nan("");
+  EXPECT_EQ(message(ring), "range_max_m: must be a finite number > 0, got nan");
+  ring = WallRing();
+  for (int i = 0; i < 14; ++i) ring.readings[i].X_RS.theta_rad = std::nan("");
+  EXPECT_EQ(message(ring),
+            "readings: need at least 3 transducers with a finite X_RS.theta_rad, got 2");
+  // One transducer without a heading is left out, by every model: the cone model's P was NaN.
+  ring = WallRing();
+  ring.readings[0].X_RS.theta_rad = std::nan("");
+  EXPECT_TRUE(std::isfinite(net.Probability(ring, {0.52, 0.0})));
+  msgs::RangeRing silent = WallRing();
+  silent.readings[0].echo = false;
+  for (const Eigen::Vector2d& p : {Eigen::Vector2d(0.52, 0.05), Eigen::Vector2d(0.6, 0.3)}) {
+    EXPECT_EQ(ClassicalSonarModel().Probability(ring, p),
+              ClassicalSonarModel().Probability(silent, p));
+  }
+}
+
+TEST(SonarNetTest, ANetworkOfLayersNoFileCanHoldIsRefusedByField) {
+  // SonarNet({0}, seed) gave a network whose output ignores its inputs (a 0 x 5 first layer),
+  // SonarNet({-1}, seed) asked Eigen for a matrix of negative size. Refused as training refuses
+  // them; no hidden layer at all (a logistic unit) stays allowed, as a weights file allows it.
+  for (const std::vector<int>& hidden : {std::vector<int>{0}, std::vector<int>{16, -1}}) {
+    try {
+      const SonarNet net(hidden, 1);
+      ADD_FAILURE() << "no throw; P " << net.Forward(Eigen::Matrix<double, 5, 1>::Zero());
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("hidden: layer sizes must be in [1, 256], got ", 0), 0u)
+          << e.what();
+    }
+  }
+  EXPECT_THROW(SonarNet(std::vector<int>(8, 4), 1), std::invalid_argument);
+  EXPECT_NO_THROW(SonarNet({}, 1));
 }
 
 TEST(SonarNetTest, CommittedWeightsLoadAndBeatTheConeModelOnAWall) {

@@ -4,6 +4,11 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "msgs/shortest_number.h"
+#include "robot/number_checks.h"
 
 namespace plywood::robot {
 
@@ -17,11 +22,18 @@ UmbmarkRun UmbmarkReturnError(SquareDirection direction, const msgs::Pose2D& X_W
 }
 
 UmbmarkResult AnalyseUmbmark(const std::vector<UmbmarkRun>& runs, double side_m, double track_m) {
-  if (!(side_m > 0.0) || !(track_m > 0.0)) {
-    throw std::invalid_argument("side_m and track_m must be > 0");
-  }
+  internal::RequirePositive("side_m", side_m);
+  internal::RequirePositive("track_m", track_m);
   UmbmarkResult r;
-  for (const UmbmarkRun& run : runs) {
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    const UmbmarkRun& run = runs[k];
+    for (const auto& [field, value] :
+         {std::pair{".error_x_m", run.error_x_m}, std::pair{".error_y_m", run.error_y_m}}) {
+      if (!std::isfinite(value)) {
+        throw std::invalid_argument("runs[" + std::to_string(k) + "]" + field +
+                                    ": must be finite, got " + msgs::ShortestNumber(value));
+      }
+    }
     if (run.direction == SquareDirection::kClockwise) {
       ++r.runs_cw;
       r.x_cg_cw_m += run.error_x_m;

@@ -53,7 +53,8 @@ struct UmbmarkResult {
 // odometry used; the curvature is converted with the corrected wheelbase E_b * track_m, since the
 // legs curve with the real one (the paper uses the nominal b; the difference is (E_b - 1)(E_d -
 // 1)).
-// @throws std::invalid_argument without runs in both directions or with side_m/track_m <= 0.
+// @throws std::invalid_argument without runs in both directions, naming the field and value for
+// a side_m or track_m that is not a finite number > 0 or a run error that is not finite.
 UmbmarkResult AnalyseUmbmark(const std::vector<UmbmarkRun>& runs, double side_m, double track_m);
 
 // The calibration to use next: the measured ratios compose with the one the runs were driven with

@@ -8,6 +8,9 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "robot/calibration/turn_calibration.h"
 #include "robot/drive/diff_drive_kinematics.h"
@@ -120,6 +123,30 @@ TEST(UmbmarkTest, ReturnErrorIsInTheStartFrame) {
 TEST(UmbmarkTest, NeedsBothDirections) {
   EXPECT_THROW(AnalyseUmbmark({{SquareDirection::kClockwise, 0.1, 0.1}}, kSide, kTrack),
                std::invalid_argument);
+}
+
+TEST(UmbmarkTest, ARunOrLengthThatIsNotAFiniteNumberIsRefusedByField) {
+  // A NaN return error (an end pose the tracker lost) made every result NaN, and an infinite side
+  // made alpha and beta 0: E_d = E_b = 1, a perfect robot. Each is refused, naming the field.
+  const auto message = [](const std::vector<UmbmarkRun>& runs, double side_m, double track_m) {
+    try {
+      AnalyseUmbmark(runs, side_m, track_m);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no throw");
+  };
+  const std::vector<UmbmarkRun> good{{SquareDirection::kClockwise, -0.1, -0.1},
+                                     {SquareDirection::kCounterClockwise, 0.05, -0.05}};
+  EXPECT_EQ(message(good, HUGE_VAL, kTrack), "side_m: must be a finite number > 0, got inf");
+  EXPECT_EQ(message(good, 0.0, kTrack), "side_m: must be a finite number > 0, got 0");
+  EXPECT_EQ(message(good, kSide, std::nan("")), "track_m: must be a finite number > 0, got nan");
+  std::vector<UmbmarkRun> runs = good;
+  runs.push_back({SquareDirection::kCounterClockwise, std::nan(""), 0.0});
+  EXPECT_EQ(message(runs, kSide, kTrack), "runs[2].error_x_m: must be finite, got nan");
+  runs.back() = {SquareDirection::kClockwise, 0.0, -HUGE_VAL};
+  EXPECT_EQ(message(runs, kSide, kTrack), "runs[2].error_y_m: must be finite, got -inf");
+  EXPECT_EQ(message(good, kSide, kTrack), "no throw");
 }
 
 TEST(TurnCalibrationTest, MeanErrorOfNinetyDegreeTurns) {

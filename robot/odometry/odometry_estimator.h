@@ -15,8 +15,11 @@ class OdometryEstimator {
   OdometryEstimator& operator=(const OdometryEstimator&) = delete;
   virtual ~OdometryEstimator() = default;
 
+  // Readings out of time order or without a finite time are dropped, and a tick jump only a
+  // counter wrap explains throws std::invalid_argument naming the wheel (IncrementSource).
   virtual void AddEncoders(const msgs::WheelEncoders& encoders) = 0;
-  // Estimators that do not use a gyro ignore it.
+  // Estimators that do not use a gyro ignore it; those that do drop a sample whose rate or time is
+  // not finite.
   virtual void AddGyro(const msgs::GyroRate& /*gyro*/) {}
 
   // X_WR: the estimated pose of the robot in the frame of its initial pose estimate.

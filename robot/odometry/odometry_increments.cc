@@ -52,8 +52,10 @@ void IncrementOptions::Validate() const {
     throw std::invalid_argument("dead_band_rad: must be in [0, 0.5], got " +
                                 msgs::ShortestNumber(dead_band_rad));
   }
-  if (counter_modulus != 0 && counter_modulus < 4) {
-    throw std::invalid_argument("counter_modulus: must be 0 (no wrap) or >= 4, got " +
+  // Above 2^62 the modulus no longer fits the signed arithmetic of a delta (2^64 - 1 was cast to
+  // -1, and every delta became 0).
+  if (counter_modulus != 0 && (counter_modulus < 4 || counter_modulus > (std::uint64_t{1} << 62))) {
+    throw std::invalid_argument("counter_modulus: must be 0 (no wrap) or in [4, 2^62], got " +
                                 std::to_string(counter_modulus));
   }
 }
@@ -74,8 +76,18 @@ IncrementSource::IncrementSource(const OdometryGeometry& geometry, const Increme
   }
 }
 
-std::int64_t IncrementSource::Delta(std::int64_t from, std::int64_t to) const {
-  std::int64_t delta = to - from;
+std::int64_t IncrementSource::Delta(const char* field, std::int64_t from, std::int64_t to) const {
+  // A counter that has not wrapped never jumps by 2^31 ticks in one reading (at 1000 ticks per
+  // revolution, 10^6 wheel turns): only an int32 counter's wrap read without counter_modulus, or
+  // garbage, does. Refused rather than integrated as kilometres of travel.
+  constexpr std::int64_t kLargestJump = std::int64_t{1} << 31;
+  std::int64_t delta = 0;
+  if (__builtin_sub_overflow(to, from, &delta) ||
+      (options_.counter_modulus == 0 && (delta >= kLargestJump || delta <= -kLargestJump))) {
+    throw std::invalid_argument(std::string(field) + ": jumped from " + std::to_string(from) +
+                                " to " + std::to_string(to) +
+                                " in one reading; a wrapping counter needs counter_modulus");
+  }
   if (options_.counter_modulus == 0) return delta;
   // The counter wrapped if the raw difference exceeds half its range: take the short way round.
   const auto modulus = static_cast<std::int64_t>(options_.counter_modulus);
@@ -90,12 +102,17 @@ double IncrementSource::DeadBand(double value) const {
 }
 
 void IncrementSource::AddEncoders(const msgs::WheelEncoders& encoders) {
+  // A reading without a time, or not after the previous one (a repeated or backward timestamp),
+  // is dropped: the counts are cumulative, so the next good reading carries its motion.
+  if (!std::isfinite(encoders.time_s) || (previous_ && !(encoders.time_s > previous_->time_s))) {
+    return;
+  }
   if (previous_) {
     const double radians_per_tick = 2.0 * std::numbers::pi / geometry_.ticks_per_rev;
-    const double left_rad =
-        DeadBand(radians_per_tick * Delta(previous_->left_ticks, encoders.left_ticks));
-    const double right_rad =
-        DeadBand(radians_per_tick * Delta(previous_->right_ticks, encoders.right_ticks));
+    const double left_rad = DeadBand(
+        radians_per_tick * Delta("left_ticks", previous_->left_ticks, encoders.left_ticks));
+    const double right_rad = DeadBand(
+        radians_per_tick * Delta("right_ticks", previous_->right_ticks, encoders.right_ticks));
     OdometryIncrement increment;
     increment.start_s = previous_->time_s;
     increment.end_s = encoders.time_s;
@@ -111,6 +128,9 @@ void IncrementSource::AddEncoders(const msgs::WheelEncoders& encoders) {
 
 void IncrementSource::AddGyro(const msgs::GyroRate& gyro) {
   if (!uses_gyro_) return;
+  // A sample without a rate or a time is dropped: the next one reports the mean rate since the
+  // last good one, so it covers the gap. Kept, a NaN made the integrated angle NaN for good.
+  if (!std::isfinite(gyro.yaw_rate_rad_s) || !std::isfinite(gyro.time_s)) return;
   if (gyro_.empty()) {
     first_gyro_s_ = gyro.time_s;
     gyro_.push_back({gyro.time_s, 0.0});
@@ -118,6 +138,10 @@ void IncrementSource::AddGyro(const msgs::GyroRate& gyro) {
     // The sample is the mean rate since the previous one.
     gyro_.push_back({gyro.time_s, gyro_.back().angle_rad +
                                       gyro.yaw_rate_rad_s * (gyro.time_s - gyro_.back().time_s)});
+  } else {
+    // A repeated or backward timestamp: dropped, and not counted either, or a driver that sends
+    // every sample twice halved the sample period the EKF's gyro noise scales with.
+    return;
   }
   ++gyro_samples_;
 }

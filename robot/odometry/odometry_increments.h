@@ -52,7 +52,8 @@ struct IncrementOptions {
   // taken as zero, "to avoid accumulating low errors". The seed used 0.01; 0 turns it off.
   double dead_band_rad = 0.0;
   // Width of the motor controller's tick counter, when it wraps (a 16-bit counter: 65536). Deltas
-  // are then taken modulo it, assuming less than half a wrap per sample. 0: never wraps.
+  // are then taken modulo it, assuming less than half a wrap per sample. 0: never wraps; a jump of
+  // 2^31 ticks or more in one reading (an int32 counter's wrap) is then refused. At most 2^62.
   std::uint64_t counter_modulus = 0;
   Integration integration = Integration::kMidpoint;
 
@@ -81,7 +82,12 @@ class IncrementSource {
   IncrementSource(const OdometryGeometry& geometry, const IncrementOptions& options,
                   bool uses_gyro);
 
+  // Hardware input: a reading whose time_s is not finite or not after the previous reading's is
+  // dropped (the counts are cumulative: the next reading carries its motion); a jump only a wrap
+  // explains throws std::invalid_argument "left_ticks: ..." / "right_ticks: ...".
   void AddEncoders(const msgs::WheelEncoders& encoders);
+  // A sample whose rate or time is not finite, or whose time is not after the previous one's, is
+  // dropped (the next one's mean rate covers the gap).
   void AddGyro(const msgs::GyroRate& gyro);
   // The next complete increment, oldest first.
   std::optional<OdometryIncrement> Next();
@@ -90,7 +96,8 @@ class IncrementSource {
   const IncrementOptions& options() const { return options_; }
 
  private:
-  std::int64_t Delta(std::int64_t from, std::int64_t to) const;
+  // @throws std::invalid_argument naming `field` for a jump only a wrap explains (see .cc).
+  std::int64_t Delta(const char* field, std::int64_t from, std::int64_t to) const;
   double DeadBand(double value) const;
   // Integrated gyro angle at time_s; @pre gyro samples reach time_s.
   double GyroAngleAt(double time_s) const;
