@@ -187,6 +187,17 @@ TEST(PathsAndProcessesTest, ARelativePathInADeletedCurrentFolderSaysTheFolderIsG
             "plywood: ../still.yaml: No such file or directory (the current folder was deleted, so "
             "no relative path can be found in it: cd to a folder that exists)\n");
   EXPECT_FALSE(fs::exists(dir / "out"));
+  // An absolute path is not looked for in the current folder: its being gone is not named as why.
+  const std::string absolute = "cd '" + dir.string() + "' && mkdir gone2 && cd gone2 && rmdir " +
+                               "../gone2 && " +
+                               (fs::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood").string() +
+                               " run '" + (dir / "missing.yaml").string() + "' --quiet --out '" +
+                               (dir / "out").string() + "' 2>'" + (dir / "stderr").string() + "'";
+  const int absolute_status = std::system(absolute.c_str());
+  ASSERT_TRUE(WIFEXITED(absolute_status));
+  EXPECT_EQ(WEXITSTATUS(absolute_status), 2);
+  EXPECT_EQ(Slurp(dir / "stderr"),
+            "plywood: " + (dir / "missing.yaml").string() + ": no such experiment file\n");
 }
 
 // An --out that is a symbolic link to nowhere read "cannot create the sweep folder: File exists"
