@@ -91,6 +91,15 @@ TEST(PathsAndProcessesTest, ACollectBesideARunningSweepOrAnotherCollectIsRefused
                         "another plywood sweep --collect is writing this folder's tables");
     EXPECT_FALSE(fs::exists(out / "summary.csv"));
   }
+  {
+    // A sweep beside a collect (sweep.lock shared, the folder locked) names the collect, not a
+    // sweep that is not running.
+    const HeldLock collect_on_lock(out / "sweep.lock", LOCK_SH), collect_on_folder(out, LOCK_EX);
+    ASSERT_TRUE(collect_on_lock.ok() && collect_on_folder.ok());
+    ExpectOneLineNaming(
+        RunPlywood("sweep " + (dir / "one.yaml").string() + " --quiet --out " + out.string(), dir),
+        out.string(), "a plywood sweep --collect is writing this folder's tables; wait for it");
+  }
   // A shard of a Slurm array holds sweep.lock shared and writes no table: a collect runs beside it.
   const HeldLock shard(out / "sweep.lock", LOCK_SH);
   ASSERT_TRUE(shard.ok());
