@@ -149,13 +149,17 @@ std::string OneLine(std::string text) {
 
 // `message`, and, when it says a file was not found, why while the current folder is gone (deleted
 // since the shell entered it): "runs/e-seed1: No such file or directory" and "../e.yaml: No such
-// file or directory" (the file there all along) named the path, not the cause.
+// file or directory" (the file there all along) named the path, not the cause. Not for a line
+// that starts with an absolute path: that file (and what it names, resolved beside it) is not
+// looked for in the current folder, so its being gone is not why.
 std::string WithTheCurrentFolder(const std::string& message) {
   std::error_code gone;
   static_cast<void>(std::filesystem::current_path(gone));
   const bool not_found = message.find("No such file") != std::string::npos ||
                          message.find("no such") != std::string::npos;
-  if (!not_found || gone != std::errc::no_such_file_or_directory) return message;
+  if (!not_found || gone != std::errc::no_such_file_or_directory || message.starts_with('/')) {
+    return message;
+  }
   return message +
          " (the current folder was deleted, so no relative path can be found in it: cd "
          "to a folder that exists)";

@@ -78,6 +78,39 @@ void ForSegmentStrip(int width, int height, const Eigen::Vector2d& a, const Eige
   }
 }
 
+// Pieces of a segment reaching beyond this many px are cut away unless near the image: there a
+// coordinate's rounding is over 2^-22 px, and beyond 2^52 px over a pixel, so the distance from a
+// pixel to the whole segment (its nearest point a + t (b - a) found through those coordinates)
+// says little about where the line crosses the image: one from -1e16 to 1e16 px painted nothing.
+constexpr double kFarPx = 1 << 30;
+
+// Calls visit(a', b') for pieces of [a, b] that together hold every point within `reach_px` of
+// the image [0, width] x [0, height], each within kFarPx: the segment is halved until its pieces
+// are that near, those whose box lies beyond `reach_px` of the image dropped. A midpoint
+// 0.5 a + 0.5 b is exact to the ulps of its own size, so a piece by the image is exact to its
+// own, not to those of the far ends. `reach_px` must be well below kFarPx, or pieces near the
+// image would never be that near.
+template <typename V>
+void ForPiecesNearImage(int width, int height, double reach_px, const Eigen::Vector2d& a,
+                        const Eigen::Vector2d& b, V visit) {
+  if (std::max(a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff()) <= kFarPx) {
+    visit(a, b);
+    return;
+  }
+  const Eigen::Vector2d lo = a.cwiseMin(b), hi = a.cwiseMax(b);
+  if (hi.x() < -reach_px || hi.y() < -reach_px || lo.x() > width + reach_px ||
+      lo.y() > height + reach_px) {
+    return;
+  }
+  const Eigen::Vector2d middle = 0.5 * a + 0.5 * b;
+  if (middle == a || middle == b) {  // no shorter halves (ends an ulp apart): the piece as it is
+    visit(a, b);
+    return;
+  }
+  ForPiecesNearImage(width, height, reach_px, a, middle, visit);
+  ForPiecesNearImage(width, height, reach_px, middle, b, visit);
+}
+
 // Per-pixel coverage of one shape, so overlapping pieces of it blend once. The buffer covers only
 // the shape's pixel box (every pixel within `reach_px` of [lo, hi], clipped to the image): drawing
 // costs what the shape covers, not the whole image.
@@ -169,8 +202,13 @@ void DrawPolylinePx(RgbImage& image, std::span<const Eigen::Vector2d> points_px,
   }
   if (!lo.allFinite()) return;
   const std::size_t n_segments = points_px.size() == 1 ? 1 : points_px.size() - 1;
+  // A polyline reaching beyond kFarPx is drawn by its pieces near the image, which a mask blends
+  // once (a line wider than 2^20 px covers the image wherever it is, and is drawn whole; no image
+  // is that large).
+  const bool far = std::max(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff()) > kFarPx &&
+                   half + 1.0 < (1 << 20) && std::max(image.width, image.height) < (1 << 20);
   // Coverage is 0 from half + 0.5 px off the centre line on: the segments' strips reach that far.
-  if (n_segments == 1) {
+  if (n_segments == 1 && !far) {
     // One segment covers each pixel once, so it blends straight into the image (as the mask
     // would: its coverage rounded to float, nothing where that is 0) without a buffer its box's
     // size: a replay draws ~10^5 of them.
@@ -189,9 +227,16 @@ void DrawPolylinePx(RgbImage& image, std::span<const Eigen::Vector2d> points_px,
     const Eigen::Vector2d& a = points_px[i];
     const Eigen::Vector2d& b = points_px[i + 1];
     if (!a.allFinite() || !b.allFinite()) continue;
-    mask.ForPixelsNearSegment(a, b, half + 0.5, [&](const Eigen::Vector2d& p) {
-      return Coverage(DistanceToSegment(p, a, b), half);
-    });
+    const auto cover = [&](const Eigen::Vector2d& from, const Eigen::Vector2d& to) {
+      mask.ForPixelsNearSegment(from, to, half + 0.5, [&](const Eigen::Vector2d& p) {
+        return Coverage(DistanceToSegment(p, from, to), half);
+      });
+    };
+    if (far) {
+      ForPiecesNearImage(image.width, image.height, half + 1.0, a, b, cover);
+    } else {
+      cover(a, b);
+    }
   }
   mask.BlendInto(image, colour);
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -126,6 +127,30 @@ TEST(OverlayTest, ShapesReachingFarOffTheImagePaintTheirVisiblePart) {
     EXPECT_EQ(PixelAt(filled, 29, 10), colours::kBlack) << far;
     EXPECT_EQ(PixelAt(filled, 0, 10), colours::kBlack) << far;
     EXPECT_EQ(PixelAt(filled, 31, 10), colours::kWhite) << far;
+  }
+}
+
+// A line reaching far off the image at both ends (1e16 px and beyond: past 2^53 px a coordinate's
+// rounding exceeds a pixel) paints where it crosses the image as the same line cut near the
+// image does: through the whole segment's rounded nearest points it painted nothing or dashes.
+TEST(OverlayTest, ALineFarOffTheImageAtBothEndsPaintsWhereItCrossesIt) {
+  const auto draw = [](const std::vector<Eigen::Vector2d>& points, double width) {
+    RgbImage image(40, 20);
+    Fill(image, colours::kWhite);
+    DrawPolylinePx(image, points, colours::kBlack, width);
+    return image.pixels;
+  };
+  for (const double far : {1e16, 1e20, 1e300}) {
+    EXPECT_EQ(draw({{-far, 10.3}, {far, 10.3}}, 2.0), draw({{-5.0, 10.3}, {45.0, 10.3}}, 2.0))
+        << far;
+  }
+  for (const int exponent : {40, 60, 1000}) {  // y = x / 2, the image's diagonal
+    const double far = std::ldexp(1.0, exponent);
+    for (const double width : {0.7, 2.0, 5.5}) {
+      const auto cut = draw({{-8.0, -4.0}, {48.0, 24.0}}, width);
+      EXPECT_EQ(draw({{-far, -far / 2}, {far, far / 2}}, width), cut) << exponent << " " << width;
+      EXPECT_EQ(draw({{-far, -far / 2}, {0.0, 0.0}, {far, far / 2}}, width), cut) << exponent;
+    }
   }
 }
 

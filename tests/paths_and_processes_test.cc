@@ -91,6 +91,15 @@ TEST(PathsAndProcessesTest, ACollectBesideARunningSweepOrAnotherCollectIsRefused
                         "another plywood sweep --collect is writing this folder's tables");
     EXPECT_FALSE(fs::exists(out / "summary.csv"));
   }
+  {
+    // A sweep beside a collect (sweep.lock shared, the folder locked) names the collect, not a
+    // sweep that is not running.
+    const HeldLock collect_on_lock(out / "sweep.lock", LOCK_SH), collect_on_folder(out, LOCK_EX);
+    ASSERT_TRUE(collect_on_lock.ok() && collect_on_folder.ok());
+    ExpectOneLineNaming(
+        RunPlywood("sweep " + (dir / "one.yaml").string() + " --quiet --out " + out.string(), dir),
+        out.string(), "a plywood sweep --collect is writing this folder's tables; wait for it");
+  }
   // A shard of a Slurm array holds sweep.lock shared and writes no table: a collect runs beside it.
   const HeldLock shard(out / "sweep.lock", LOCK_SH);
   ASSERT_TRUE(shard.ok());
@@ -187,6 +196,17 @@ TEST(PathsAndProcessesTest, ARelativePathInADeletedCurrentFolderSaysTheFolderIsG
             "plywood: ../still.yaml: No such file or directory (the current folder was deleted, so "
             "no relative path can be found in it: cd to a folder that exists)\n");
   EXPECT_FALSE(fs::exists(dir / "out"));
+  // An absolute path is not looked for in the current folder: its being gone is not named as why.
+  const std::string absolute = "cd '" + dir.string() + "' && mkdir gone2 && cd gone2 && rmdir " +
+                               "../gone2 && " +
+                               (fs::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood").string() +
+                               " run '" + (dir / "missing.yaml").string() + "' --quiet --out '" +
+                               (dir / "out").string() + "' 2>'" + (dir / "stderr").string() + "'";
+  const int absolute_status = std::system(absolute.c_str());
+  ASSERT_TRUE(WIFEXITED(absolute_status));
+  EXPECT_EQ(WEXITSTATUS(absolute_status), 2);
+  EXPECT_EQ(Slurp(dir / "stderr"),
+            "plywood: " + (dir / "missing.yaml").string() + ": no such experiment file\n");
 }
 
 // An --out that is a symbolic link to nowhere read "cannot create the sweep folder: File exists"

@@ -153,6 +153,16 @@ int OpenLockFile(const fs::path& file, bool create) {
   return fd;
 }
 
+// Whether a `sweep --collect` holds `out` (the folder lock only collects take): what a sweep
+// refused beside it names. Tried and let go at once; flock has no query.
+bool ACollectWrites(const fs::path& out) {
+  const int fd = open(out.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool held = flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+  close(fd);
+  return held;
+}
+
 }  // namespace
 
 SweepFolderLock::SweepFolderLock(const fs::path& out, int shard_index, int shard_count,
@@ -163,9 +173,14 @@ SweepFolderLock::SweepFolderLock(const fs::path& out, int shard_index, int shard
     fds_.push_back(fd);
     if (flock(fd, how | LOCK_NB) == 0) return;
     if (errno == EWOULDBLOCK) {
+      // A collect holds sweep.lock shared too: "another sweep is running" named a sweep that was
+      // not.
       throw sim::ConfigError(out.string(), "",
-                             "another plywood sweep is running in this folder; wait for it or "
-                             "choose another --out");
+                             ACollectWrites(out)
+                                 ? "a plywood sweep --collect is writing this folder's tables; "
+                                   "wait for it"
+                                 : "another plywood sweep is running in this folder; wait for it "
+                                   "or choose another --out");
     }
     // Some network file systems have no flock: run unlocked rather than not at all.
     if (!quiet)

@@ -8,6 +8,7 @@
 #include <string>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 #include "perception/lines/hough_extractor.h"
 #include "perception/lines/line_extractor_factory.h"
@@ -388,6 +389,30 @@ TEST(RayExplanationTest, CountsWhatMeasuringEverySegmentGives) {
     EXPECT_EQ(e.explained, expected.explained) << trial;
     EXPECT_EQ(e.sum_sq_m2, expected.sum_sq_m2) << trial;  // bit for bit
   }
+}
+
+// A ray's end a hair beyond a segment's end (0.13 um, on a segment of metres): the computed
+// distance (through start + 1 * (end - start)) comes out 7e-9 relative below the distance from
+// the segment's box, so a box bound with only a relative margin skipped the segment that
+// measuring it counts: as the one within max_distance_m, and as the nearest of two.
+TEST(RayExplanationTest, ANearbySegmentIsMeasuredWhenItsDistanceRoundsBelowItsBox) {
+  LineSegment s;
+  s.start = {-0x1.9287bbf8fcff3p+2, -0x1.174b97648e3aap+3};
+  s.end = {0x1.cfcb94c0b1a3p+0, 0x1.ae82d6c90e088p+2};
+  const std::vector<Eigen::Vector2d> points = {{0x1.cfcb9703bcb08p+0, 0x1.ae82d6c90e088p+2}};
+  const double d = s.SegmentDistance(points[0]);
+  ASSERT_LT(d, points[0].x() - s.end.x());  // below the distance from the box
+  const RayExplanation alone = ExplainRays(points, std::vector<LineSegment>{s}, d);
+  EXPECT_EQ(alone.explained, 1);
+  EXPECT_EQ(alone.sum_sq_m2, d * d);
+  // A point-like segment first, 3e-9 relative farther than d: the nearest is still s.
+  const Eigen::Vector2d farther = points[0] + Eigen::Vector2d(d * (1.0 + 3e-9), 0.0);
+  LineSegment dot;
+  dot.start = dot.end = farther;
+  ASSERT_GT(dot.SegmentDistance(points[0]), d);
+  const RayExplanation two = ExplainRays(points, std::vector<LineSegment>{dot, s}, 1.0);
+  EXPECT_EQ(two.explained, 1);
+  EXPECT_EQ(two.sum_sq_m2, d * d);
 }
 
 TEST(LineFitTest, CovarianceShrinksWithMorePoints) {

@@ -15,7 +15,15 @@ std::filesystem::path FolderBehindLinks(const std::filesystem::path& file) {
     if (!fs::is_symlink(fs::symlink_status(at, error))) break;
     const fs::path target = fs::read_symlink(at, error);
     if (error) break;
-    at = (target.is_absolute() ? target : at.parent_path() / target).lexically_normal();
+    const fs::path joined = target.is_absolute() ? target : at.parent_path() / target;
+    at = joined.lexically_normal();
+    // The kernel reads a ".." of the target in the folder the link really is in: where that is
+    // reached through a linked folder (mine -> /data/mine, holding e.yaml -> ../lab/e.yaml), the
+    // lexical climb names another folder, or none, than the one the file is read from.
+    std::error_code missing;
+    if (fs::exists(joined, missing) && !fs::equivalent(at, joined, missing)) {
+      at = fs::canonical(joined, missing);
+    }
   }
   return at.parent_path();
 }
