@@ -631,7 +631,8 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
         placed(SideFromEchoes(echoes, BeamFreeGrid::kNorth, r0.y1, r0.x0, r0.x1, band, min_pts),
                r0.y1, fitted.y1, 1.0);
   }
-  // A side with floor seen past it is a face nearer than the wall: opened (the reported map only).
+  // A side with floor seen past it through a gap in it is a face nearer than the wall: opened (the
+  // reported map only).
   if (options.open_sides_seen_past_m > 0.0 && beam_free != nullptr &&
       options.beam_free_min_passes > 0) {
     CellMap states{W, H, std::vector<CellState>(occ.size(), CellState::kUnknown)};
@@ -642,10 +643,11 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
         if (p < options.eps) states.cells[i] = CellState::kFree;
         if (occ[i]) states.cells[i] = CellState::kOccupied;
       }
-    map.room = OpenSides(map.room,
-                         SidesSeenPast(states, grid, beam_free, options.beam_free_min_passes,
-                                       map.room, options.open_sides_seen_past_m, res),
-                         grid);
+    map.room =
+        OpenSides(map.room,
+                  SidesSeenPastThroughGaps(states, grid, beam_free, options.beam_free_min_passes,
+                                           map.room, options.open_sides_seen_past_m, res),
+                  grid);
   }
   if (map.room.x1 - map.room.x0 < res || map.room.y1 - map.room.y0 < res) {
     map.room = {inside.x() - res, inside.y() - res, inside.x() + res, inside.y() + res};

@@ -1121,6 +1121,28 @@ TEST(CognitiveMapTest, ARoomSideWithFloorSeenPastItIsOpenedToTheGridsEdge) {
   EXPECT_NEAR(BuildCognitiveMap(grid, kInside, open).room.x0, 1.55, kTol);
 }
 
+TEST(CognitiveMapTest, FloorSeenPastASideOpensItOnlyThroughAGapInTheSide) {
+  const BeamFreeGrid no_axes(TestGridGeometry(), {});
+  CognitiveMapOptions open;
+  open.open_sides_seen_past_m = 0.4;
+  // The faces heard over the gap too: the floor "seen" behind their cells is the network painting
+  // through a wall.
+  LogOddsGrid heard_along = FloorSeenPastBoxFaces(9, 4);
+  for (int iy = kWallY0 + 1; iy <= kWallY0 + 9; ++iy)
+    for (int ix = 29; ix <= 30; ++ix)
+      for (int k = 0; k < 2; ++k) Mark(heard_along, ix, iy, 0.98);  // over the free marks
+
+  EXPECT_NEAR(BuildCognitiveMap(heard_along, kInside, open, &no_axes).room.x0, 1.55, kTol);
+  // The floor seen through the gap ends on a heard cell: a notch painted into a wall's thickness
+  // with the wall's back heard behind it.
+  LogOddsGrid backed = FloorSeenPastBoxFaces(9, 4);
+  for (int iy = kWallY0 + 1; iy <= kWallY0 + 9; ++iy) Mark(backed, 26, iy, 0.98);
+  EXPECT_NEAR(BuildCognitiveMap(backed, kInside, open, &no_axes).room.x0, 1.55, kTol);
+  // The same gap with nothing heard behind the floor seen through it is opened.
+  EXPECT_NEAR(BuildCognitiveMap(FloorSeenPastBoxFaces(9, 4), kInside, open, &no_axes).room.x0, 0.0,
+              kTol);
+}
+
 TEST(CognitiveMapTest, InvalidJoinDistanceOrFillThrowsNamingTheField) {
   EXPECT_NO_THROW(CognitiveMapOptions{}.Validate());
   for (const double join :
