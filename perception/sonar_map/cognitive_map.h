@@ -121,8 +121,9 @@ struct CognitiveMapOptions {
   // 0.4 m is the body's width (2 robot_radius_m). Round 64a opened a side on any floor seen past
   // it; 49 of its 50 sides on the held-out sweeps were true walls the network had painted free
   // cells into; the gap rule leaves 43 of them, and on the twelve held-out sweeps it moves one run
-  // of 1,800 (g69 w22 s2 0.2985 -> 0.1277), none up (round 64b). 0: off.
-  double open_sides_seen_past_m = 0.0;
+  // of 1,800 (g69 w22 s2 0.2985 -> 0.1277), none up, and fresh seed 87 and the classical model on
+  // seeds 69 and 74 hold too: the default since round 64b. 0: off.
+  double open_sides_seen_past_m = 0.4;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
 };

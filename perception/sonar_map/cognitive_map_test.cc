@@ -1097,7 +1097,9 @@ TEST(CognitiveMapTest, ARoomSideWithFloorSeenPastItIsOpenedToTheGridsEdge) {
   // faces: too little for the free columns (side_free_overrun_m 0.3) to move the side.
   const LogOddsGrid grid = FloorSeenPastBoxFaces(9, 4);
   const BeamFreeGrid no_axes(TestGridGeometry(), {});
-  const CognitiveMap fitted = BuildCognitiveMap(grid, kInside, {}, &no_axes);
+  CognitiveMapOptions closed;
+  closed.open_sides_seen_past_m = 0.0;
+  const CognitiveMap fitted = BuildCognitiveMap(grid, kInside, closed, &no_axes);
   EXPECT_NEAR(fitted.room.x0, 1.55, kTol);
   CognitiveMapOptions open;
   open.open_sides_seen_past_m = 0.4;  // the body's width
