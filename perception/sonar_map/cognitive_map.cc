@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <map>
 #include <optional>
@@ -11,6 +12,7 @@
 #include <utility>
 
 #include "msgs/shortest_number.h"
+#include "perception/sonar_map/box_face_sides.h"
 #include "perception/sonar_map/faces_heard_apart.h"
 #include "perception/sonar_map/line_fit.h"
 #include "perception/sonar_map/well_painted_groups.h"
@@ -324,6 +326,8 @@ void CognitiveMapOptions::Validate() const {
   if (!(std::isfinite(obstacle_peel_net_free_clearance_m) &&
         obstacle_peel_net_free_clearance_m >= 0.0))
     throw std::invalid_argument("obstacle_peel_net_free_clearance_m: must be a finite number >= 0");
+  if (!(std::isfinite(open_sides_seen_past_m) && open_sides_seen_past_m >= 0.0))
+    throw std::invalid_argument("open_sides_seen_past_m: must be a finite number >= 0");
 }
 
 CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& inside,
@@ -626,6 +630,24 @@ CognitiveMap BuildCognitiveMap(const LogOddsGrid& grid, const Eigen::Vector2d& i
     map.room.y1 =
         placed(SideFromEchoes(echoes, BeamFreeGrid::kNorth, r0.y1, r0.x0, r0.x1, band, min_pts),
                r0.y1, fitted.y1, 1.0);
+  }
+  // A side with floor seen past it through a gap in it is a face nearer than the wall: opened (the
+  // reported map only).
+  if (options.open_sides_seen_past_m > 0.0 && beam_free != nullptr &&
+      options.beam_free_min_passes > 0) {
+    CellMap states{W, H, std::vector<CellState>(occ.size(), CellState::kUnknown)};
+    for (int iy = 0; iy < H; ++iy)
+      for (int ix = 0; ix < W; ++ix) {
+        const std::size_t i = static_cast<std::size_t>(iy) * W + ix;
+        const double p = grid.Probability(ix, iy);
+        if (p < options.eps) states.cells[i] = CellState::kFree;
+        if (occ[i]) states.cells[i] = CellState::kOccupied;
+      }
+    map.room =
+        OpenSides(map.room,
+                  SidesSeenPastThroughGaps(states, grid, beam_free, options.beam_free_min_passes,
+                                           map.room, options.open_sides_seen_past_m, res),
+                  grid);
   }
   if (map.room.x1 - map.room.x0 < res || map.room.y1 - map.room.y0 < res) {
     map.room = {inside.x() - res, inside.y() - res, inside.x() + res, inside.y() + res};

@@ -1073,6 +1073,78 @@ TEST(CognitiveMapTest, OneBoxWhoseInsideFewReadingsPaintedStaysOneObstacle) {
   ExpectRectNear(map.obstacles[0], {1.62, box.y0, 2.38, box.y1});
 }
 
+// What the network saw of a room whose west side the line fit puts on a band of box faces at
+// x 1.45-1.55 (cell columns 29 and 30): the room east of it free, its south wall (row 10) heard on
+// past the faces for `past_cells` columns, and in the gap the faces leave along that wall (rows 11
+// to 10 + gap_cells) the floor seen free as far; everything else west of the faces unknown.
+LogOddsGrid FloorSeenPastBoxFaces(int gap_cells, int past_cells) {
+  LogOddsGrid grid(TestGridGeometry());
+  for (int iy = kWallY0; iy <= kWallY1; ++iy)
+    for (int ix = 31 - past_cells; ix <= kWallX1; ++ix) {
+      const bool in_gap = iy > kWallY0 && iy <= kWallY0 + gap_cells;
+      if (ix < 29 && iy != kWallY0 && !in_gap) continue;  // behind the faces: never seen
+      const bool wall = ix == kWallX1 || iy == kWallY0 || (iy == kWallY1 && ix >= 29);
+      if (wall || ((ix == 29 || ix == 30) && !in_gap))
+        Mark(grid, ix, iy, 0.98);
+      else
+        Mark(grid, ix, iy, 0.02);
+    }
+  return grid;
+}
+
+TEST(CognitiveMapTest, ARoomSideWithFloorSeenPastItIsOpenedToTheGridsEdge) {
+  // A 0.45 m gap between the faces and the south wall, the floor in it seen 0.2 m past the
+  // faces: too little for the free columns (side_free_overrun_m 0.3) to move the side.
+  const LogOddsGrid grid = FloorSeenPastBoxFaces(9, 4);
+  const BeamFreeGrid no_axes(TestGridGeometry(), {});
+  CognitiveMapOptions closed;
+  closed.open_sides_seen_past_m = 0.0;
+  const CognitiveMap fitted = BuildCognitiveMap(grid, kInside, closed, &no_axes);
+  EXPECT_NEAR(fitted.room.x0, 1.55, kTol);
+  CognitiveMapOptions open;
+  open.open_sides_seen_past_m = 0.4;  // the body's width
+  const CognitiveMap opened = BuildCognitiveMap(grid, kInside, open, &no_axes);
+  // Where the room ends beyond the faces the robot cannot tell: the grid's edge.
+  ExpectRectNear(opened.room, {0.0, kY0, kX1, kY1});
+  ExpectTilesTheRoom(opened);
+  // The faces are an obstacle, and the floor behind them is mapped free.
+  bool faces = false;
+  for (const Rect& o : opened.obstacles)
+    faces = faces || (std::abs(o.x0 - 1.45) < kTol && std::abs(o.x1 - 1.55) < kTol);
+  EXPECT_TRUE(faces);
+  bool behind_free = false;
+  for (const Rect& r : PartitionRects(opened, Label::kFree))
+    behind_free = behind_free || r.Contains({1.0, 1.5});
+  EXPECT_TRUE(behind_free);
+  // A patch shorter along the side than the length asked for (0.35 m) leaves the side where it
+  // was fitted; so does the map the robot plans on (no axes' free space).
+  EXPECT_NEAR(BuildCognitiveMap(FloorSeenPastBoxFaces(7, 4), kInside, open, &no_axes).room.x0, 1.55,
+              kTol);
+  EXPECT_NEAR(BuildCognitiveMap(grid, kInside, open).room.x0, 1.55, kTol);
+}
+
+TEST(CognitiveMapTest, FloorSeenPastASideOpensItOnlyThroughAGapInTheSide) {
+  const BeamFreeGrid no_axes(TestGridGeometry(), {});
+  CognitiveMapOptions open;
+  open.open_sides_seen_past_m = 0.4;
+  // The faces heard over the gap too: the floor "seen" behind their cells is the network painting
+  // through a wall.
+  LogOddsGrid heard_along = FloorSeenPastBoxFaces(9, 4);
+  for (int iy = kWallY0 + 1; iy <= kWallY0 + 9; ++iy)
+    for (int ix = 29; ix <= 30; ++ix)
+      for (int k = 0; k < 2; ++k) Mark(heard_along, ix, iy, 0.98);  // over the free marks
+
+  EXPECT_NEAR(BuildCognitiveMap(heard_along, kInside, open, &no_axes).room.x0, 1.55, kTol);
+  // The floor seen through the gap ends on a heard cell: a notch painted into a wall's thickness
+  // with the wall's back heard behind it.
+  LogOddsGrid backed = FloorSeenPastBoxFaces(9, 4);
+  for (int iy = kWallY0 + 1; iy <= kWallY0 + 9; ++iy) Mark(backed, 26, iy, 0.98);
+  EXPECT_NEAR(BuildCognitiveMap(backed, kInside, open, &no_axes).room.x0, 1.55, kTol);
+  // The same gap with nothing heard behind the floor seen through it is opened.
+  EXPECT_NEAR(BuildCognitiveMap(FloorSeenPastBoxFaces(9, 4), kInside, open, &no_axes).room.x0, 0.0,
+              kTol);
+}
+
 TEST(CognitiveMapTest, InvalidJoinDistanceOrFillThrowsNamingTheField) {
   EXPECT_NO_THROW(CognitiveMapOptions{}.Validate());
   for (const double join :
@@ -1101,6 +1173,12 @@ TEST(CognitiveMapTest, InvalidJoinDistanceOrFillThrowsNamingTheField) {
     CognitiveMapOptions options;
     options.obstacle_cut_min_votes = -1;
     ExpectThrowsNaming(options, "obstacle_cut_min_votes");
+  }
+  for (const double length :
+       {-0.4, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    CognitiveMapOptions options;
+    options.open_sides_seen_past_m = length;
+    ExpectThrowsNaming(options, "open_sides_seen_past_m");
   }
   // BuildCognitiveMap validates too.
   CognitiveMapOptions options;

@@ -202,6 +202,15 @@ CognitiveMap SonarExplorer::Map() const {
 
 CognitiveMap SonarExplorer::PlanningMap() const { return BuildMap(nullptr); }
 
+Rect SonarExplorer::RoomAsFitted() const {
+  if (options_.map.open_sides_seen_past_m <= 0.0) return Map().room;
+  CognitiveMapOptions fitted = options_.map;
+  fitted.open_sides_seen_past_m = 0.0;
+  const Eigen::Vector2d inside =
+      start_ ? Position(*start_) : grid_.CellCentre(grid_.width() / 2, grid_.height() / 2);
+  return BuildCognitiveMap(grid_, inside, fitted, start_ ? &beam_free_ : nullptr).room;
+}
+
 CognitiveMap SonarExplorer::BuildMap(const BeamFreeGrid* beam_free) const {
   const Eigen::Vector2d inside =
       start_ ? Position(*start_) : grid_.CellCentre(grid_.width() / 2, grid_.height() / 2);
@@ -375,7 +384,8 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
     const bool anything_given_up = !abandoned_.empty() || (check_room && !skipped_corners_.empty());
     if (!(frontier && !frontier->empty()) && !abandoned_retried_ && anything_given_up &&
         options_.complete_unknown_share_max < 1.0 &&
-        UnknownShareOfRoom(planning.cells, grid_, check_room ? RoomJudged(planning) : Map().room) >
+        UnknownShareOfRoom(planning.cells, grid_,
+                           check_room ? RoomJudged(planning) : RoomAsFitted()) >
             options_.complete_unknown_share_max) {
       std::vector<Eigen::Vector2d> given_up;
       given_up.swap(abandoned_);
@@ -462,7 +472,7 @@ Rect SonarExplorer::RoomJudged(const PlanningCells& planning) const {
   // Floor past a side: seen free the body's width along it, and deeper than the sonar's range
   // noise (what the axes' free space already stops short by), so that a wall's far edge read free
   // is not floor.
-  const Rect& room = Map().room;
+  const Rect room = RoomAsFitted();
   return OpenSides(room,
                    SidesSeenPast(planning.cells, grid_, start_ ? &beam_free_ : nullptr,
                                  options_.map.beam_free_min_passes, room,

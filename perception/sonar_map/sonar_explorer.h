@@ -206,6 +206,9 @@ class SonarExplorer final : public robot::Controller {
 
  private:
   CognitiveMap BuildMap(const BeamFreeGrid* beam_free) const;
+  // The reported map's room before the sides seen past are opened (open_sides_seen_past_m): the
+  // room whose unknown share ends exploration, so that the option changes the map, not the run.
+  Rect RoomAsFitted() const;
   // The wheel speeds wanted now, before the acceleration limit.
   msgs::WheelSpeedCommand Decide(const robot::ControllerInput& input);
   msgs::WheelSpeedCommand Explore(const robot::ControllerInput& input);

@@ -36,6 +36,7 @@ void VisitFields(A& a, perception::SonarExplorerOptions& o) {
   a("obstacle_peel_net_free_clearance_m", o.map.obstacle_peel_net_free_clearance_m);
   a("obstacle_cut_unheard_gaps", o.map.obstacle_cut_unheard_gaps);
   a("obstacle_cut_min_votes", o.map.obstacle_cut_min_votes);
+  a("open_sides_seen_past_m", o.map.open_sides_seen_past_m);
   a("beam_free_axis_tolerance_rad", o.beam_free.axis_tolerance_rad);
   a("beam_free_stop_short_m", o.beam_free.stop_short_m);
   a("beam_free_max_range_m", o.beam_free.max_range_m);
