@@ -285,17 +285,7 @@ TEST(SonarNetTest, CommittedWeightsLoadAndBeatTheConeModelOnAWall) {
   const auto path = std::filesystem::path(PLYWOOD_SOURCE_ROOT) / "models" / "sonar_net_v1.txt";
   const SonarNet net = SonarNet::Load(path);
   // A ring facing a wall 0.5 m ahead: the cell on the wall reads occupied, the cell between free.
-  msgs::RangeRing ring;
-  ring.range_max_m = 5.0;
-  for (int i = 0; i < 16; ++i) {
-    msgs::RangeReading r;
-    const double a = i * 2 * M_PI / 16;
-    r.X_RS = {0.2 * std::cos(a), 0.2 * std::sin(a), a};
-    const double c = std::cos(a);
-    r.echo = c > 0.7;
-    r.range_m = r.echo ? (0.5 - r.X_RS.x_m) / c : 0.0;
-    ring.readings.push_back(r);
-  }
+  const msgs::RangeRing ring = WallRing();
   EXPECT_GT(net.Probability(ring, {0.52, 0.0}), 0.5);
   EXPECT_LT(net.Probability(ring, {0.3, 0.0}), 0.5);
 }
