@@ -2,7 +2,7 @@
 
 namespace plywood::msgs {
 
-// Wraps an angle to (-pi, pi].
+// Wraps a finite angle (1e300 too) to (-pi, pi]; NaN and +-inf give NaN: no angle.
 double WrapAngle(double angle_rad);
 
 // A planar rigid transform. Frame notation follows Drake: X_AB is the pose of frame B expressed in

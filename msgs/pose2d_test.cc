@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace plywood::msgs {
@@ -14,6 +16,19 @@ TEST(WrapAngleTest, MapsIntoHalfOpenInterval) {
   EXPECT_DOUBLE_EQ(WrapAngle(-kPi), kPi);
   EXPECT_NEAR(WrapAngle(3.0 * kPi / 2.0), -kPi / 2.0, 1e-12);
   EXPECT_NEAR(WrapAngle(-5.0 * kPi / 2.0), -kPi / 2.0, 1e-12);
+}
+
+TEST(WrapAngleTest, HugeAnglesWrapAndNonFiniteOnesGiveNan) {
+  for (const double angle : {1e300, -1e300, 1e17, -7e15, 12345.678}) {
+    SCOPED_TRACE(angle);
+    const double wrapped = WrapAngle(angle);
+    EXPECT_GT(wrapped, -kPi);
+    EXPECT_LE(wrapped, kPi);
+  }
+  EXPECT_NEAR(WrapAngle(1000.0 * kPi + 0.25), 0.25, 1e-9);
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  for (const double angle : {kInf, -kInf, std::numeric_limits<double>::quiet_NaN()})
+    EXPECT_TRUE(std::isnan(WrapAngle(angle))) << angle;
 }
 
 TEST(Pose2DTest, ComposeMatchesHandComputedTransform) {

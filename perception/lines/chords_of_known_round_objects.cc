@@ -1,6 +1,11 @@
 #include "perception/lines/chords_of_known_round_objects.h"
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "msgs/shortest_number.h"
 
 namespace plywood::perception {
 namespace {
@@ -24,6 +29,32 @@ std::vector<Eigen::Vector2d> PointsOf(const ScanPoints& scan, const LineSegment&
   return out;
 }
 
+void RequirePositive(const std::string& field, double value) {
+  if (!(std::isfinite(value) && value > 0.0))
+    throw std::invalid_argument(field + ": must be a finite number > 0, got " +
+                                msgs::ShortestNumber(value));
+}
+
+// Every number the test compares: with a NaN or a fraction of 0 it would keep (or remove) lines
+// whatever the scan says.
+void Validate(std::span<const CircleFeature> known_round_objects, double noise_sigma_m,
+              const KnownRoundObjectOptions& options) {
+  RequirePositive("noise_sigma_m", noise_sigma_m);
+  RequirePositive("rim_sigmas", options.rim_sigmas);
+  if (!(options.min_on_rim_fraction > 0.0 && options.min_on_rim_fraction <= 1.0))
+    throw std::invalid_argument("min_on_rim_fraction: must be in (0, 1], got " +
+                                msgs::ShortestNumber(options.min_on_rim_fraction));
+  for (std::size_t i = 0; i < known_round_objects.size(); ++i) {
+    const CircleFeature& circle = known_round_objects[i];
+    const std::string field = "known_round_objects[" + std::to_string(i) + "]";
+    if (!circle.centre.allFinite())
+      throw std::invalid_argument(field + ".centre: must be finite, got (" +
+                                  msgs::ShortestNumber(circle.centre.x()) + ", " +
+                                  msgs::ShortestNumber(circle.centre.y()) + ")");
+    RequirePositive(field + ".radius_m", circle.radius_m);
+  }
+}
+
 bool IsChordOf(const std::vector<Eigen::Vector2d>& points, const LineSegment& line,
                const CircleFeature& circle, double tolerance_m, double min_fraction) {
   if (line.LengthM() > 2.0 * circle.radius_m + tolerance_m) return false;
@@ -40,6 +71,7 @@ int RemoveChordsOfKnownRoundObjects(const ScanPoints& scan,
                                     double noise_sigma_m, const KnownRoundObjectOptions& options,
                                     std::vector<LineSegment>* lines) {
   if (known_round_objects.empty()) return 0;
+  Validate(known_round_objects, noise_sigma_m, options);
   const double tolerance_m = options.rim_sigmas * noise_sigma_m;
   const auto chord = [&](const LineSegment& line) {
     const std::vector<Eigen::Vector2d> points = PointsOf(scan, line, tolerance_m);

@@ -24,7 +24,9 @@ struct KnownRoundObjectOptions {
   double min_on_rim_fraction = 0.8;
 };
 
-// Returns how many lines were removed.
+// Returns how many lines were removed. A circle whose centre is not finite or whose radius is not
+// a finite number > 0, noise_sigma_m or rim_sigmas not a finite number > 0, or
+// min_on_rim_fraction outside (0, 1] throws std::invalid_argument naming it; lines untouched.
 int RemoveChordsOfKnownRoundObjects(const ScanPoints& scan,
                                     std::span<const CircleFeature> known_round_objects,
                                     double noise_sigma_m, const KnownRoundObjectOptions& options,

@@ -4,10 +4,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
+#include "msgs/shortest_number.h"
 #include "perception/lines/round_objects_of_quiet_scan.h"
 #include "perception/lines/scan_scene_test_support.h"
 #include "perception/lines/split_and_merge_extractor.h"
@@ -163,6 +167,69 @@ TEST(ChordsOfKnownRoundObjectsTest, ALineOnACirclesRimGoesAndOneOffItStays) {
   longer.end += 0.1 * along;
   lines = {longer};
   EXPECT_EQ(RemoveChordsOfKnownRoundObjects(scan, known, 0.01, {}, &lines), 0);
+}
+
+// A lab's own list of round objects, or options out of range (docs/errors.md, the s64 fifty-third
+// pass): each is refused by name, the lines untouched.
+TEST(ChordsOfKnownRoundObjectsTest, ACircleOrOptionNoTestCanUseIsRefusedByName) {
+  ScanPoints scan;
+  const Eigen::Vector2d centre(2.0, 0.0);
+  for (int k = 0; k < 6; ++k) {
+    const double a = kPi + (-30.0 + 12.0 * k) * kPi / 180.0;
+    const Eigen::Vector2d p = centre + 0.1 * Eigen::Vector2d(std::cos(a), std::sin(a));
+    scan.Add(p.norm(), std::atan2(p.y(), p.x()), k);
+  }
+  LineSegment chord;
+  chord.start = scan.points.front();
+  chord.end = scan.points.back();
+  chord.first_index = 0;
+  chord.last_index = 5;
+  CircleFeature good;
+  good.centre = {5.0, 5.0};  // far from the line: it stays
+  good.radius_m = 0.1;
+  const auto expect_refused = [&](const std::vector<CircleFeature>& known, double noise_sigma_m,
+                                  const KnownRoundObjectOptions& options,
+                                  const std::string& message) {
+    std::vector<LineSegment> lines{chord};
+    try {
+      RemoveChordsOfKnownRoundObjects(scan, known, noise_sigma_m, options, &lines);
+      ADD_FAILURE() << "no exception, expected " << message;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()), message);
+    }
+    EXPECT_EQ(lines.size(), 1u);
+  };
+  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  for (const double radius : {0.0, -0.1, kNan, kInf}) {
+    CircleFeature bad = good;
+    bad.radius_m = radius;
+    expect_refused({good, bad}, 0.01, {},
+                   "known_round_objects[1].radius_m: must be a finite number > 0, got " +
+                       msgs::ShortestNumber(radius));
+  }
+  CircleFeature nowhere = good;
+  nowhere.centre = {kNan, 0.0};
+  expect_refused({nowhere}, 0.01, {},
+                 "known_round_objects[0].centre: must be finite, got (nan, 0)");
+  expect_refused({good}, kNan, {}, "noise_sigma_m: must be a finite number > 0, got nan");
+  expect_refused({good}, 0.0, {}, "noise_sigma_m: must be a finite number > 0, got 0");
+  KnownRoundObjectOptions options;
+  options.rim_sigmas = kInf;
+  expect_refused({good}, 0.01, options, "rim_sigmas: must be a finite number > 0, got inf");
+  // A fraction of 0 removed every line short enough, on no rim at all (was: the chord went).
+  options = {};
+  options.min_on_rim_fraction = 0.0;
+  expect_refused({good}, 0.01, options, "min_on_rim_fraction: must be in (0, 1], got 0");
+  options.min_on_rim_fraction = kNan;
+  expect_refused({good}, 0.01, options, "min_on_rim_fraction: must be in (0, 1], got nan");
+  // A circle with its centre at the sensor is a circle like any other.
+  CircleFeature at_sensor = good;
+  at_sensor.centre = {0.0, 0.0};
+  std::vector<LineSegment> lines{chord};
+  EXPECT_EQ(RemoveChordsOfKnownRoundObjects(scan, std::vector<CircleFeature>{at_sensor}, 0.01, {},
+                                            &lines),
+            0);
 }
 
 }  // namespace

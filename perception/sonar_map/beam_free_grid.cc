@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "perception/geometric_map/option_checks.h"
+
 namespace plywood::perception {
 
 void BeamFreeOptions::Validate() const {
@@ -80,9 +82,11 @@ void BeamFreeGrid::AddObliqueFace(const msgs::RangeReading& reading, const msgs:
 void BeamFreeGrid::Integrate(const msgs::RangeRing& ring, const msgs::Pose2D& X_WR) {
   const double half_pi = 0.5 * 3.14159265358979323846;
   const double res = geometry_.resolution_m;
+  RequireFinitePose("X_WR", X_WR);
   std::vector<std::size_t> touched;
   for (const msgs::RangeReading& reading : ring.readings) {
-    if (!reading.echo || reading.range_m > options_.max_range_m) continue;
+    // An echo flagged with a NaN, infinite or non-positive range heard nothing usable.
+    if (!reading.HeardEcho() || reading.range_m > options_.max_range_m) continue;
     // A reading at the blanking range stands for anything nearer: it places no face and frees
     // nothing.
     if (reading.range_m <= ring.range_min_m) continue;

@@ -47,6 +47,8 @@ class BeamFreeGrid {
   BeamFreeGrid() = default;
   BeamFreeGrid(const LogOddsGridOptions& geometry, const BeamFreeOptions& options);
 
+  // An echo without a usable range (RangeReading::HeardEcho) says nothing; an X_WR that is not
+  // finite throws std::invalid_argument naming it, nothing written.
   void Integrate(const msgs::RangeRing& ring, const msgs::Pose2D& X_WR);
   // Readings whose axis passed through cell (ix, iy); 0 outside the grid.
   int Passes(int ix, int iy) const;

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace plywood::perception {
 namespace {
@@ -165,6 +167,34 @@ TEST(BeamFreeGridTest, OutsideTheGridIsNoPassAndBadOptionsThrow) {
   bad = {};
   bad.half_angle_rad = -0.1;
   EXPECT_THROW(BeamFreeGrid(Geometry(), bad), std::invalid_argument);
+}
+
+// What a real driver can hand it (docs/errors.md, the s64 fifty-third pass).
+TEST(BeamFreeGridTest, AnEchoWithoutAUsableRangeOrAPoseThatIsNotFiniteWritesNothing) {
+  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+  BeamFreeGrid grid(Geometry(), {});
+  // On a grid axis (was: floor(NaN / step) cast to int, UBSan's float-cast-overflow) and 25 deg
+  // off one (was: an oblique face at NaN).
+  for (const double range : {kNan, std::numeric_limits<double>::infinity(), 0.0, -0.3}) {
+    SCOPED_TRACE(range);
+    grid.Integrate(Ring(0.0, range), {1.02, 1.02, 0.0});
+    grid.Integrate(Ring(0.0, range), {1.02, 1.22, 25.0 * kPi / 180.0});
+  }
+  EXPECT_TRUE(grid.face_echoes().empty());
+  EXPECT_TRUE(grid.oblique_face_echoes().empty());
+  for (const msgs::Pose2D& pose :
+       {msgs::Pose2D{kNan, 1.0, 0.0}, msgs::Pose2D{1.0, 1.0, kNan},
+        msgs::Pose2D{1.0, -std::numeric_limits<double>::infinity(), 0.0}}) {
+    try {
+      grid.Integrate(Ring(0.0, 1.0), pose);
+      ADD_FAILURE() << "no exception";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("X_WR: must be finite, got (", 0), 0u) << e.what();
+    }
+  }
+  EXPECT_TRUE(grid.face_echoes().empty());
+  for (int iy = 0; iy < 80; ++iy)
+    for (int ix = 0; ix < 80; ++ix) ASSERT_EQ(grid.Passes(ix, iy), 0) << ix << " " << iy;
 }
 
 }  // namespace

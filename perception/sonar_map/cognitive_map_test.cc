@@ -1186,5 +1186,31 @@ TEST(CognitiveMapTest, InvalidJoinDistanceOrFillThrowsNamingTheField) {
   EXPECT_THROW(BuildCognitiveMap(Room(), kInside, options), std::invalid_argument);
 }
 
+// Grids a lab's own mapper can hand it (docs/errors.md, the s64 fifty-third pass): one cell, all
+// unknown, all occupied, all free. Each gives a map, the room at least the cell round the inside
+// point, and reads no cell outside the grid (the sanitizer build checks that).
+TEST(CognitiveMapTest, GridsOfOneCellOrOneValueGiveAMap) {
+  for (const int cells : {1, 2, 80}) {
+    for (const double p : {0.5, 0.98, 0.02}) {
+      SCOPED_TRACE(std::to_string(cells) + " cells, p " + std::to_string(p));
+      LogOddsGridOptions options = TestGridGeometry();
+      options.width = options.height = cells;
+      LogOddsGrid grid(options);
+      for (int iy = 0; iy < cells; ++iy)
+        for (int ix = 0; ix < cells; ++ix) Mark(grid, ix, iy, p);
+      const Eigen::Vector2d inside = Eigen::Vector2d::Constant(0.5 * kRes * cells);
+      const CognitiveMap map = BuildCognitiveMap(grid, inside, {});
+      EXPECT_LE(map.room.x0, inside.x());
+      EXPECT_GE(map.room.x1, inside.x());
+      EXPECT_LE(map.room.y0, inside.y());
+      EXPECT_GE(map.room.y1, inside.y());
+    }
+  }
+  // The inside point off the grid, or NaN, is refused by name.
+  LogOddsGrid grid(TestGridGeometry());
+  EXPECT_THROW(BuildCognitiveMap(grid, {std::nan(""), 1.0}, {}), std::invalid_argument);
+  EXPECT_THROW(BuildCognitiveMap(grid, {-1.0, 1.0}, {}), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace plywood::perception

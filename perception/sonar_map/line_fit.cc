@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
+
+#include "msgs/shortest_number.h"
 
 namespace plywood::perception {
 
@@ -12,7 +15,17 @@ LineFit ChiSquareLineFit(const std::vector<double>& x, const std::vector<double>
     throw std::invalid_argument("y: x, y and sigma must have the same size");
   double S = 0, Sx = 0, Sy = 0;
   for (std::size_t i = 0; i < x.size(); ++i) {
-    if (!(sigma[i] > 0.0)) throw std::invalid_argument("sigma: must be > 0");
+    // A NaN or inf point made the fit NaN (y) or was called "all points share one x" (x).
+    const auto where = [i](const char* field) { return field + ("[" + std::to_string(i) + "]"); };
+    if (!std::isfinite(x[i]))
+      throw std::invalid_argument(where("x") + ": must be finite, got " +
+                                  msgs::ShortestNumber(x[i]));
+    if (!std::isfinite(y[i]))
+      throw std::invalid_argument(where("y") + ": must be finite, got " +
+                                  msgs::ShortestNumber(y[i]));
+    if (!(std::isfinite(sigma[i]) && sigma[i] > 0.0))
+      throw std::invalid_argument(where("sigma") + ": must be a finite number > 0, got " +
+                                  msgs::ShortestNumber(sigma[i]));
     const double w = 1.0 / (sigma[i] * sigma[i]);
     S += w;
     Sx += x[i] * w;

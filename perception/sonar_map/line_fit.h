@@ -15,8 +15,9 @@ struct LineFit {
   double chi2 = 0.0;
 };
 
-// @throws std::invalid_argument for fewer than 2 points, mismatched sizes, non-positive sigma, or
-// all x equal (a vertical line: fit x = a + b y instead).
+// @throws std::invalid_argument for fewer than 2 points, mismatched sizes, an x or y that is not
+// finite, a sigma that is not a finite number > 0 (each naming its index and value), or all x
+// equal (a vertical line: fit x = a + b y instead).
 LineFit ChiSquareLineFit(const std::vector<double>& x, const std::vector<double>& y,
                          const std::vector<double>& sigma);
 

@@ -3,6 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace plywood::perception {
 namespace {
@@ -32,6 +36,30 @@ TEST(ChiSquareLineFitTest, RejectsDegenerateInput) {
   EXPECT_THROW(ChiSquareLineFit({1}, {1}, {1}), std::invalid_argument);
   EXPECT_THROW(ChiSquareLineFit({1, 1}, {0, 2}, {1, 1}), std::invalid_argument);
   EXPECT_THROW(ChiSquareLineFit({0, 1}, {0, 2}, {1, 0}), std::invalid_argument);
+}
+
+// A lab's own points (docs/errors.md, the s64 fifty-third pass): each bad number refused by name.
+TEST(ChiSquareLineFitTest, APointOrSigmaThatIsNotAFiniteNumberIsRefusedByIndex) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  const auto expect_refused = [](const std::vector<double>& x, const std::vector<double>& y,
+                                 const std::vector<double>& sigma, const std::string& message) {
+    try {
+      ChiSquareLineFit(x, y, sigma);
+      ADD_FAILURE() << "no exception, expected " << message;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()), message);
+    }
+  };
+  // Was: a = b = NaN, no error.
+  expect_refused({0, 1, 2}, {0, nan, 2}, {1, 1, 1}, "y[1]: must be finite, got nan");
+  // Was: "all points share one x".
+  expect_refused({0, 1, nan}, {0, 1, 2}, {1, 1, 1}, "x[2]: must be finite, got nan");
+  expect_refused({0, inf, 2}, {0, 1, 2}, {1, 1, 1}, "x[1]: must be finite, got inf");
+  expect_refused({0, 1, 2}, {0, 1, 2}, {inf, inf, inf},
+                 "sigma[0]: must be a finite number > 0, got inf");
+  expect_refused({0, 1, 2}, {0, 1, 2}, {1, nan, 1},
+                 "sigma[1]: must be a finite number > 0, got nan");
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "msgs/shortest_number.h"
+#include "perception/geometric_map/option_checks.h"
 
 namespace plywood::perception {
 namespace {
@@ -35,13 +36,21 @@ double CombineReadings(const std::vector<double>& p, const LogOddsOptions& optio
 }
 
 void LogOddsGridOptions::Validate() const {
-  if (!(resolution_m > 0.0))
-    throw std::invalid_argument("resolution_m: must be > 0, got " +
+  // An infinite cell put every point in cell (0, 0); a NaN origin put none in the grid.
+  if (!(std::isfinite(resolution_m) && resolution_m > 0.0))
+    throw std::invalid_argument("resolution_m: must be a finite number > 0, got " +
                                 msgs::ShortestNumber(resolution_m));
+  if (!origin_xy.allFinite())
+    throw std::invalid_argument("origin_xy: must be finite, got (" +
+                                msgs::ShortestNumber(origin_xy.x()) + ", " +
+                                msgs::ShortestNumber(origin_xy.y()) + ")");
   if (width < 1 || width > 20000) throw std::invalid_argument("width: must be in [1, 20000]");
   if (height < 1 || height > 20000) throw std::invalid_argument("height: must be in [1, 20000]");
   if (local_cells < 1) throw std::invalid_argument("local_cells: must be >= 1");
-  if (!(local_cell_m > 0.0)) throw std::invalid_argument("local_cell_m: must be > 0");
+  // An infinite one let every ring write every cell of the grid.
+  if (!(std::isfinite(local_cell_m) && local_cell_m > 0.0))
+    throw std::invalid_argument("local_cell_m: must be a finite number > 0, got " +
+                                msgs::ShortestNumber(local_cell_m));
   log_odds.Validate();
 }
 
@@ -87,20 +96,19 @@ Eigen::Vector2i LogOddsGridOptions::CellAt(const Eigen::Vector2d& p) const {
 
 void LogOddsGrid::Integrate(const SonarCellModel& model, const msgs::RangeRing& ring,
                             const msgs::Pose2D& X_WR) {
+  RequireFinitePose("X_WR", X_WR);
   const double half = 0.5 * options_.local_cells * options_.local_cell_m;
   const double c = std::cos(X_WR.theta_rad), s = std::sin(X_WR.theta_rad);
   // Bounding box of the rotated local square in the global grid.
   const double reach = half * std::sqrt(2.0);
-  const Eigen::Vector2i lo =
-      ((Eigen::Vector2d(X_WR.x_m - reach, X_WR.y_m - reach) - options_.origin_xy) / resolution_m())
-          .array()
-          .floor()
-          .cast<int>();
-  const Eigen::Vector2i hi =
-      ((Eigen::Vector2d(X_WR.x_m + reach, X_WR.y_m + reach) - options_.origin_xy) / resolution_m())
-          .array()
-          .floor()
-          .cast<int>();
+  // Clamped as doubles first: a pose far off the grid (a diverged estimate) must not overflow the
+  // int; within the grid the cells are the same.
+  const auto cell = [&](const Eigen::Vector2d& p) -> Eigen::Vector2i {
+    const Eigen::Array2d q = ((p - options_.origin_xy) / resolution_m()).array().floor();
+    return q.max(-1.0).min(Eigen::Array2d(width(), height())).cast<int>();
+  };
+  const Eigen::Vector2i lo = cell({X_WR.x_m - reach, X_WR.y_m - reach});
+  const Eigen::Vector2i hi = cell({X_WR.x_m + reach, X_WR.y_m + reach});
   for (int iy = std::max(0, lo.y()); iy <= std::min(height() - 1, hi.y()); ++iy) {
     for (int ix = std::max(0, lo.x()); ix <= std::min(width() - 1, hi.x()); ++ix) {
       const Eigen::Vector2d p = CellCentre(ix, iy) - Eigen::Vector2d(X_WR.x_m, X_WR.y_m);

@@ -38,7 +38,8 @@ struct LogOddsGridOptions {
   int local_cells = 14;
   double local_cell_m = 0.10;
   LogOddsOptions log_odds;
-  // @throws std::invalid_argument naming the field.
+  // @throws std::invalid_argument naming the field (resolution_m, local_cell_m and origin_xy must
+  // be finite).
   void Validate() const;
   // Cell holding p, or (-1, -1) outside.
   Eigen::Vector2i CellAt(const Eigen::Vector2d& p) const;
@@ -51,7 +52,8 @@ class LogOddsGrid {
   // Adds one reading p of cell (ix, iy) (product formula, clamped). A cell outside the grid or a p
   // outside [0, 1] (NaN included) throws std::invalid_argument naming it; nothing is written.
   void Add(int ix, int iy, double p);
-  // Integrates a whole ring seen from X_WR (odometry frame).
+  // Integrates a whole ring seen from X_WR (odometry frame); an X_WR that is not finite throws
+  // std::invalid_argument naming it, nothing written (one far off the grid writes nothing).
   void Integrate(const SonarCellModel& model, const msgs::RangeRing& ring,
                  const msgs::Pose2D& X_WR);
 

@@ -117,5 +117,46 @@ TEST(LogOddsGridTest, LocalGridIsPlacedAtTheOdometryPose) {
   EXPECT_EQ(at(1.8, 1.0), 0.5);
 }
 
+// What a real robot's odometry can hand it (docs/errors.md, the s64 fifty-third pass).
+TEST(LogOddsGridTest, APoseThatIsNotFiniteIsRefusedAndOneFarOffTheGridWritesNothing) {
+  LogOddsGridOptions o;  // 5 cm cells over [-4, 4]^2
+  LogOddsGrid grid(o);
+  const msgs::RangeRing ring;
+  try {
+    grid.Integrate(AheadModel(), ring, {std::nan(""), 0.0, 0.0});
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "X_WR: must be finite, got (nan, 0, 0)");
+  }
+  EXPECT_THROW(grid.Integrate(AheadModel(), ring, {0.0, 0.0, INFINITY}), std::invalid_argument);
+  // Far off (was: the cell bounds cast to int overflowed, UBSan's float-cast-overflow), and just
+  // past the edge, where the local square still overlaps the grid.
+  for (const double x : {1e10, -1e300}) grid.Integrate(AheadModel(), ring, {x, 0.0, 0.0});
+  for (int iy = 0; iy < grid.height(); ++iy)
+    for (int ix = 0; ix < grid.width(); ++ix) ASSERT_EQ(grid.LogOdds(ix, iy), 0.0);
+  grid.Integrate(AheadModel(), ring, {4.3, 0.0, 0.0});
+  EXPECT_NEAR(grid.Probability(grid.width() - 1, grid.height() / 2), 0.2, 1e-12);  // behind it
+}
+
+TEST(LogOddsGridTest, AGeometryThatPlacesNoCellIsRefusedByField) {
+  const auto expect_refused = [](const LogOddsGridOptions& o, const std::string& message) {
+    try {
+      LogOddsGrid grid(o);
+      ADD_FAILURE() << "no exception, expected " << message;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_EQ(std::string(e.what()), message);
+    }
+  };
+  LogOddsGridOptions o;
+  o.resolution_m = INFINITY;  // was: every point in cell (0, 0)
+  expect_refused(o, "resolution_m: must be a finite number > 0, got inf");
+  o = {};
+  o.origin_xy = {std::nan(""), 0.0};  // was: no point in the grid
+  expect_refused(o, "origin_xy: must be finite, got (nan, 0)");
+  o = {};
+  o.local_cell_m = INFINITY;  // was: every ring wrote every cell
+  expect_refused(o, "local_cell_m: must be a finite number > 0, got inf");
+}
+
 }  // namespace
 }  // namespace plywood::perception

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "msgs/shortest_number.h"
+#include "perception/geometric_map/option_checks.h"
 #include "perception/sonar_map/box_face_sides.h"
 #include "perception/sonar_map/cell_dilation.h"
 #include "perception/sonar_map/contact_clearance.h"
@@ -998,12 +999,18 @@ msgs::WheelSpeedCommand SonarExplorer::Explore(const robot::ControllerInput& inp
 }
 
 msgs::WheelSpeedCommand SonarExplorer::Update(const robot::ControllerInput& input) {
+  // A NaN would go into the grid's origin, the planner's cells and every time test for good.
+  if (!std::isfinite(input.time_s))
+    throw std::invalid_argument("time_s: must be finite, got " +
+                                msgs::ShortestNumber(input.time_s));
+  RequireFinitePose("X_WR_estimate", input.X_WR_estimate);
   now_s_ = input.time_s;
   here_ = Position(input.X_WR_estimate);
   const msgs::WheelSpeedCommand wanted = finished_ ? msgs::WheelSpeedCommand{} : Decide(input);
   // Wheel speeds change at most max_wheel_accel_rad_s2: a step in speed makes the tyres slip on
   // the floor, which the encoders do not see (it was most of the heading drift).
-  const double dt = last_command_s_ < 0.0 ? 0.0 : input.time_s - last_command_s_;
+  // A tick whose time repeats or steps back (a driver's clock) changes no wheel speed.
+  const double dt = last_command_s_ < 0.0 ? 0.0 : std::max(input.time_s - last_command_s_, 0.0);
   last_command_s_ = input.time_s;
   const double step = options_.max_wheel_accel_rad_s2 * dt;
   command_.left_rad_s += std::clamp(wanted.left_rad_s - command_.left_rad_s, -step, step);

@@ -171,6 +171,8 @@ class SonarExplorer final : public robot::Controller {
   SonarExplorer(const robot::DiffDriveSpec& spec, const SonarExplorerOptions& options,
                 std::shared_ptr<const SonarCellModel> model);
 
+  // A time_s or X_WR_estimate that is not finite throws std::invalid_argument naming it, the
+  // explorer unchanged; a tick whose time repeats or steps back changes no wheel speed.
   msgs::WheelSpeedCommand Update(const robot::ControllerInput& input) override;
   bool Finished() const override { return finished_; }
   // Why exploration ended: "map_complete" (no place and no frontier left that the robot can

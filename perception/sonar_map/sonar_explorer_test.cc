@@ -631,5 +631,107 @@ TEST(SonarExplorerTest, CircuitOptionsOutOfRangeThrowNamingTheField) {
   ExpectThrowsNaming(options, "circuit_same_m");
 }
 
+// What a real robot's driver can hand the explorer (docs/errors.md, the s64 fifty-third pass).
+void ExpectRefused(SonarExplorer& explorer, const robot::ControllerInput& input,
+                   const std::string& message) {
+  try {
+    explorer.Update(input);
+    ADD_FAILURE() << "no exception, expected " << message;
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), message);
+  }
+}
+
+TEST(SonarExplorerTest, APoseOrTimeThatIsNotFiniteIsRefusedAndTheRunGoesOn) {
+  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+  auto explorer = MakeExplorer(ClassicalOptions());
+  msgs::RangeRing ring = RoomRing(0.0);
+  robot::ControllerInput input;
+  input.sonar = &ring;
+  // As the first tick: no start, no grid placed at NaN.
+  input.X_WR_estimate = {kNan, 0.0, 0.0};
+  ExpectRefused(*explorer, input, "X_WR_estimate: must be finite, got (nan, 0, 0)");
+  EXPECT_FALSE(explorer->start().has_value());
+  EXPECT_EQ(explorer->rings_integrated(), 0);
+  Driver driver(*explorer);
+  for (int k = 0; k < 100; ++k) driver.Tick();
+  const int rings = explorer->rings_integrated();
+  ring = RoomRing(driver.time_s());
+  input.time_s = driver.time_s();
+  input.X_WR_estimate = {0.0, 0.0, kNan};
+  ExpectRefused(*explorer, input, "X_WR_estimate: must be finite, got (0, 0, nan)");
+  input.X_WR_estimate = {0.0, std::numeric_limits<double>::infinity(), 0.0};
+  ExpectRefused(*explorer, input, "X_WR_estimate: must be finite, got (0, inf, 0)");
+  input.X_WR_estimate = {};
+  input.time_s = kNan;
+  ExpectRefused(*explorer, input, "time_s: must be finite, got nan");
+  EXPECT_EQ(explorer->rings_integrated(), rings);
+  // The next good tick integrates its ring as before.
+  input.time_s = driver.time_s();
+  explorer->Update(input);
+  EXPECT_EQ(explorer->rings_integrated(), rings + 1);
+}
+
+TEST(SonarExplorerTest, ATickWhoseTimeRepeatsOrStepsBackChangesNoWheelSpeed) {
+  auto explorer = MakeExplorer(ClassicalOptions());
+  Driver driver(*explorer);
+  msgs::WheelSpeedCommand last;
+  for (int k = 0; k < 100; ++k) last = driver.Tick();
+  ASSERT_GT(std::abs(last.left_rad_s) + std::abs(last.right_rad_s), 0.0);
+  msgs::RangeRing ring = RoomRing(0.5);
+  robot::ControllerInput input;
+  input.sonar = &ring;
+  for (const double back_s : {0.0, 0.5, 1e6}) {
+    SCOPED_TRACE(back_s);
+    input.time_s = 0.99 - back_s;  // the last tick's time, or earlier
+    const msgs::WheelSpeedCommand c = explorer->Update(input);
+    EXPECT_EQ(c.left_rad_s, last.left_rad_s);
+    EXPECT_EQ(c.right_rad_s, last.right_rad_s);
+  }
+}
+
+TEST(SonarExplorerTest, RingsWithUnusableRangesFewTransducersAndAFarPoseAreTakenInStride) {
+  constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  SonarExplorerOptions options = ClassicalOptions();
+  options.perimeter_max_s = 0.3;  // the far pose below meets the planner too
+  auto explorer = MakeExplorer(options);
+  Driver driver(*explorer);
+  for (int k = 0; k < 50; ++k) driver.Tick();
+  robot::ControllerInput input;
+  double t = driver.time_s();
+  msgs::RangeRing ring = RoomRing(t);
+  const double bad[] = {kNan, kInf, -kInf, 0.0, -0.3};
+  for (int i = 0; i < kSonars; ++i) ring.readings[i].range_m = bad[i % 5];
+  input.sonar = &ring;
+  for (int k = 0; k < 20; ++k, t += kDt) {
+    ring.time_s = t;
+    input.time_s = t;
+    const msgs::WheelSpeedCommand c = explorer->Update(input);
+    EXPECT_TRUE(std::isfinite(c.left_rad_s) && std::isfinite(c.right_rad_s));
+  }
+  ring.readings.resize(2);  // fewer transducers than the ring had
+  for (int k = 0; k < 20; ++k, t += kDt) {
+    ring.time_s = t;
+    input.time_s = t;
+    explorer->Update(input);
+  }
+  // An estimate that jumps 1e6 m (and 1e300 m) off the grid: nothing is written, no cell read.
+  ring = RoomRing(t);
+  for (const double x : {1e6, 1e300}) {
+    for (int k = 0; k < 300; ++k, t += kDt) {
+      ring.time_s = t;
+      input.time_s = t;
+      input.X_WR_estimate = {x, -x, 1e300};
+      const msgs::WheelSpeedCommand c = explorer->Update(input);
+      EXPECT_TRUE(std::isfinite(c.left_rad_s) && std::isfinite(c.right_rad_s));
+    }
+  }
+  EXPECT_TRUE(explorer->perimeter_done());
+  for (int ix = 0; ix < explorer->grid().width(); ++ix)
+    for (int iy = 0; iy < explorer->grid().height(); ++iy)
+      ASSERT_TRUE(std::isfinite(explorer->grid().LogOdds(ix, iy)));
+}
+
 }  // namespace
 }  // namespace plywood::perception
