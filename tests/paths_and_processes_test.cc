@@ -281,13 +281,14 @@ TEST(PathsAndProcessesTest, AGenerationBesideAnotherInOneFolderIsRefused) {
 
 // Two trainings into one --out both exited 0, each saying "weights written to" it, while the file
 // held the weights of the one that finished last. Here the other process is the test, writing the
-// file once the training has drawn its rooms (its 40 epochs take some 0.6 s more).
+// file once the training has drawn its rooms. The write must land while the epochs run: 120 of
+// them take some 0.8 s here (40 took 0.3 s), the margin for a faster or busier host.
 TEST(PathsAndProcessesTest, WeightsSomeoneElseWroteWhileTrainingAreNotReplaced) {
   const fs::path dir = MakeTempDir("TrainingsIntoOneOut");
   const fs::path out = dir / "net.txt";
   const std::string command =
       (fs::path(PLYWOOD_BINARY_DIR) / "apps" / "plywood").string() +
-      " train sonar-net --rooms 4 --test-rooms 1 --poses 10 --epochs 40 --out " + out.string() +
+      " train sonar-net --rooms 4 --test-rooms 1 --poses 10 --epochs 120 --out " + out.string() +
       " 2>" + (dir / "stderr").string();
   FILE* pipe = popen(command.c_str(), "r");
   ASSERT_NE(pipe, nullptr);
