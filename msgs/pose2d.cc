@@ -2,6 +2,10 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "msgs/shortest_number.h"
 
 namespace plywood::msgs {
 
@@ -27,6 +31,14 @@ Pose2D Pose2D::operator*(const Pose2D& X_BC) const {
 Pose2D Pose2D::Inverse() const {
   const double c = std::cos(theta_rad), s = std::sin(theta_rad);
   return {-c * x_m - s * y_m, s * x_m - c * y_m, WrapAngle(-theta_rad)};
+}
+
+void RequireFinitePose(const char* field, const Pose2D& pose) {
+  if (!std::isfinite(pose.x_m) || !std::isfinite(pose.y_m) || !std::isfinite(pose.theta_rad)) {
+    throw std::invalid_argument(std::string(field) + ": must be finite, got (" +
+                                ShortestNumber(pose.x_m) + ", " + ShortestNumber(pose.y_m) + ", " +
+                                ShortestNumber(pose.theta_rad) + ")");
+  }
 }
 
 }  // namespace plywood::msgs

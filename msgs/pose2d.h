@@ -20,4 +20,8 @@ struct Pose2D {
   bool operator==(const Pose2D&) const = default;
 };
 
+// A pose handed to a library (a scan's, a ring's, an estimate): NaN or inf would go into its maps
+// for good. Throws std::invalid_argument "<field>: must be finite, got (x, y, theta)".
+void RequireFinitePose(const char* field, const Pose2D& pose);
+
 }  // namespace plywood::msgs

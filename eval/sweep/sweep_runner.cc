@@ -27,6 +27,7 @@
 #include "sim/config/robot_catalog.h"
 #include "sim/config/yaml_text_value.h"
 #include "sim/runner/build_id.h"
+#include "sim/runner/folder_lock.h"
 #include "sim/runner/link_to_nowhere.h"
 #include "sim/runner/run_directory.h"
 #include "sim/runner/text_file.h"
@@ -155,13 +156,7 @@ int OpenLockFile(const fs::path& file, bool create) {
 
 // Whether a `sweep --collect` holds `out` (the folder lock only collects take): what a sweep
 // refused beside it names. Tried and let go at once; flock has no query.
-bool ACollectWrites(const fs::path& out) {
-  const int fd = open(out.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-  if (fd < 0) return false;
-  const bool held = flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
-  close(fd);
-  return held;
-}
+bool ACollectWrites(const fs::path& out) { return sim::FolderLock(out).busy(); }
 
 }  // namespace
 
@@ -209,13 +204,11 @@ SweepFolderLock SweepFolderLock::ForCollect(const fs::path& out) {
     }
   }
   // Exclusive on the folder itself, which only collects lock: one collect at a time.
-  if (const int fd = open(out.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); fd >= 0) {
-    lock.fds_.push_back(fd);
-    if (flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK) {
-      throw sim::ConfigError(out.string(), "",
-                             "another plywood sweep --collect is writing this folder's tables; "
-                             "wait for it");
-    }
+  lock.collect_ = std::make_unique<sim::FolderLock>(out);
+  if (lock.collect_->busy()) {
+    throw sim::ConfigError(out.string(), "",
+                           "another plywood sweep --collect is writing this folder's tables; "
+                           "wait for it");
   }
   return lock;
 }

@@ -1,13 +1,14 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "eval/sweep/sweep_cells.h"
 #include "eval/sweep/sweep_spec.h"
+#include "sim/runner/folder_lock.h"
 
 namespace plywood::eval {
 
@@ -74,9 +75,7 @@ class SweepFolderLock {
   ~SweepFolderLock();
   SweepFolderLock(const SweepFolderLock&) = delete;
   SweepFolderLock& operator=(const SweepFolderLock&) = delete;
-  SweepFolderLock(SweepFolderLock&& other) noexcept : fds_(std::move(other.fds_)) {
-    other.fds_.clear();
-  }
+  SweepFolderLock(SweepFolderLock&&) noexcept = default;  // a moved-from vector is empty
   SweepFolderLock& operator=(SweepFolderLock&&) = delete;
 
   // Held while `sweep --collect OUT` writes OUT's tables: refused with one line while a whole
@@ -88,6 +87,7 @@ class SweepFolderLock {
  private:
   SweepFolderLock() = default;
   std::vector<int> fds_;
+  std::unique_ptr<sim::FolderLock> collect_;  // ForCollect's lock on the folder itself
 };
 
 // Writes OUT/sweep.yaml and OUT/cells.csv (the manifest that --collect and shards read). Refuses

@@ -1,10 +1,8 @@
 #pragma once
 
-#include <cmath>
 #include <stdexcept>
 #include <string>
 
-#include "msgs/pose2d.h"
 #include "msgs/shortest_number.h"
 
 namespace plywood::perception {
@@ -16,16 +14,6 @@ inline void RequireOption(bool ok, const char* field, const char* what, double v
   if (!ok) {
     throw std::invalid_argument(std::string(field) + ": " + what + ", got " +
                                 msgs::ShortestNumber(value));
-  }
-}
-
-// A pose handed in with a scan: NaN or inf would go into the map (and its histograms) for good.
-// Throws std::invalid_argument "<field>: must be finite, got (x, y, theta)".
-inline void RequireFinitePose(const char* field, const msgs::Pose2D& pose) {
-  if (!std::isfinite(pose.x_m) || !std::isfinite(pose.y_m) || !std::isfinite(pose.theta_rad)) {
-    throw std::invalid_argument(
-        std::string(field) + ": must be finite, got (" + msgs::ShortestNumber(pose.x_m) + ", " +
-        msgs::ShortestNumber(pose.y_m) + ", " + msgs::ShortestNumber(pose.theta_rad) + ")");
   }
 }
 

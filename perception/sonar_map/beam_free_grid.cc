@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "perception/geometric_map/option_checks.h"
+#include "msgs/pose2d.h"
 
 namespace plywood::perception {
 

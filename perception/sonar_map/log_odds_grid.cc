@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "msgs/pose2d.h"
 #include "msgs/shortest_number.h"
-#include "perception/geometric_map/option_checks.h"
 
 namespace plywood::perception {
 namespace {

@@ -8,8 +8,8 @@
 #include <string>
 #include <utility>
 
+#include "msgs/pose2d.h"
 #include "msgs/shortest_number.h"
-#include "perception/geometric_map/option_checks.h"
 #include "perception/sonar_map/box_face_sides.h"
 #include "perception/sonar_map/cell_dilation.h"
 #include "perception/sonar_map/contact_clearance.h"
