@@ -21,8 +21,9 @@
 namespace plywood::eval {
 namespace {
 
-// Ground-truth faces (grey; observed ones black), the first scan pair's points (red) and the
-// first extractor's segments on it (blue), in the world frame (= the front sensor's frame).
+// Ground-truth faces (grey; observed ones black), the first scan pair's points (red), the first
+// extractor's segments on it (blue) and the round objects of the spot (magenta), in the world
+// frame (= the front sensor's frame).
 void WriteRoomPicture(const eval::Seed000RoomResult& result, const sim::LinesConfig& lines,
                       const std::filesystem::path& path) {
   if (result.scans.empty()) return;
@@ -42,11 +43,16 @@ void WriteRoomPicture(const eval::Seed000RoomResult& result, const sim::LinesCon
   }
   for (const auto& p : scan.points.points)
     render::DrawPoint(image, frame.world_to_pixel, p, render::colours::kRed, 1.5);
-  const std::string name =
-      lines.extractors.empty() ? std::string("split_and_merge") : lines.extractors.front();
-  const auto extractor = sim::MakeLineExtractor(name, lines);
-  for (const auto& s : extractor->Extract(scan.points))
-    render::DrawSegment(image, frame.world_to_pixel, s.start, s.end, render::colours::kBlue, 2.0);
+  // The first extractor's lines as they were scored (the spot's round objects' chords left out),
+  // and those round objects in magenta.
+  if (!result.scores.empty() && !result.scores.front().scans.empty()) {
+    for (const auto& s : result.scores.front().scans.front().segments)
+      render::DrawSegment(image, frame.world_to_pixel, s.start, s.end, render::colours::kBlue, 2.0);
+  }
+  for (const perception::CircleFeature& c : result.spot_round_objects) {
+    render::DrawCircle(image, frame.world_to_pixel, c.centre, c.radius_m, render::colours::kMagenta,
+                       2.0);
+  }
   render::DrawPoint(image, frame.world_to_pixel, Eigen::Vector2d::Zero(), render::colours::kGreen,
                     4.0);
   render::WritePng(image, path);
@@ -110,6 +116,7 @@ int Seed000Protocol(const ProtocolContext& context) {
   long total_scans = 0;
   std::vector<LinesCsvRow> line_rows;
   std::string circles_csv = CirclesCsvHeader(/*with_room=*/true);
+  std::string spot_csv = "room,x_m,y_m,radius_m,rms_m,points\n";
   std::string walls_csv = "room,segment,geom_id,face,ax_m,ay_m,bx_m,by_m\n";
   std::string csv =
       "room,range_cut_m,walls_visible,paper_lines,extractor,lines_per_scan,points_per_scan,"
@@ -122,8 +129,11 @@ int Seed000Protocol(const ProtocolContext& context) {
     RefuseARoomWithNoWallInView(config, options, results.back());
   }
   if (!context.quiet) {
-    std::printf("\nseed 000 rooms: two back-to-back LMS 200 at the origin, %d scan pairs each\n",
-                options.scans);
+    std::printf("\nseed 000 rooms: two back-to-back LMS 200 at the origin, %d scan pairs each%s\n",
+                options.scans,
+                options.round_objects_from_scans
+                    ? "; chords of the round objects in the spot's median scan left out"
+                    : "");
     std::printf("%-16s %5s %7s %6s %-16s %7s %9s %7s %7s\n", "room", "cut_m", "visible", "paper",
                 "extractor", "lines", "reduction", "recall", "prec");
   }
@@ -133,6 +143,11 @@ int Seed000Protocol(const ProtocolContext& context) {
     const std::string key = "seed000." + stem;
     for (const LinesCsvRow& row : LinesCsvRows(result.scores, stem)) line_rows.push_back(row);
     circles_csv += CirclesCsvRows(result.scores, stem);
+    for (const perception::CircleFeature& c : result.spot_round_objects) {
+      spot_csv += CsvField(stem) + "," + sim::FormatNumber(c.centre.x()) + "," +
+                  sim::FormatNumber(c.centre.y()) + "," + sim::FormatNumber(c.radius_m) + "," +
+                  sim::FormatNumber(c.rms_m) + "," + std::to_string(c.num_points()) + "\n";
+    }
     for (std::size_t i = 0; i < result.rig.walls.segments.size(); ++i) {
       const sim::WallSegment& w = result.rig.walls.segments[i];
       walls_csv += CsvField(stem) + "," + std::to_string(i) + "," + std::to_string(w.geom_id) +
@@ -196,6 +211,9 @@ int Seed000Protocol(const ProtocolContext& context) {
   sim::WriteTextFile(out / "walls.csv", walls_csv);
   WriteLinesCsv(out / "lines.csv", line_rows, /*with_room=*/true);
   sim::WriteTextFile(out / "circles.csv", circles_csv);
+  if (options.round_objects_from_scans) {
+    sim::WriteTextFile(out / "spot_round_objects.csv", spot_csv);
+  }
   if (!context.quiet) {
     std::printf("\nall rooms (%ld scan pairs)\n%-16s %7s %7s %9s %11s %9s %9s\n", total_scans,
                 "extractor", "recall", "prec", "sigma_r_m", "sigma_a_deg", "pts/line", "us/scan");

@@ -30,42 +30,66 @@ std::filesystem::path ResolveWorld(const std::string& text, const sim::Experimen
   fields.Fail(key, "no such file: " + text);
 }
 
-// round_objects_from_scans where it has nothing to go on ran as if it did (s63): with one scan the
+// What the spot's scans cannot give round objects from, or "" when they can: with one scan the
 // "median" is that scan, its noise scaled up by 1.25; with median_of_scans the extractors already
-// see the median, in which the round objects were looked for with the noise scaled twice; with
-// split_and_merge's round-object stage off, or its noise 0, it found nothing and changed no figure.
-void RefuseRoundObjectsFromScansItCannotUse(const sim::ExperimentConfig& config,
-                                            const Seed000RoomsOptions& options,
-                                            const sim::YamlFields& fields) {
-  if (!options.round_objects_from_scans) return;
-  const std::string field = "round_objects_from_scans";
+// see the median, in which the round objects would be looked for with the noise scaled twice;
+// with split_and_merge's round-object stage off, or its noise 0, nothing is found and no figure
+// changes. `true` ran as if it could (s63); now it is refused, and `auto` stays off.
+std::string WhyRoundObjectsFromScansCannotWork(const sim::ExperimentConfig& config,
+                                               const Seed000RoomsOptions& options) {
   if (options.scans < 2) {
-    fields.Fail(field, "needs the spot's other scans, but scans is " +
-                           std::to_string(options.scans) +
-                           ": the median of one scan is that scan (set scans: 2 or more, or "
-                           "round_objects_from_scans: false)");
+    return "needs the spot's other scans, but scans is " + std::to_string(options.scans) +
+           ": the median of one scan is that scan (set scans: 2 or more, or "
+           "round_objects_from_scans: false)";
   }
   if (options.median_of_scans) {
-    fields.Fail(field,
-                "cannot be combined with median_of_scans: the extractors then see the median "
-                "scan itself, and the round objects would be looked for in a median of medians "
-                "with its noise scaled down twice; set one of the two");
+    return "cannot be combined with median_of_scans: the extractors then see the median scan "
+           "itself, and the round objects would be looked for in a median of medians with its "
+           "noise scaled down twice; set one of the two";
   }
   // With no noise no circle passes the round-object test (its residual over sigma^2), nor does a
   // line lie within 3 sigma of a rim: every figure was the off figure.
-  if (!(config.lines.options.split_and_merge.breakpoints.sigma_m > 0.0)) {
-    fields.Fail(field,
-                "measures round objects against lines.split_and_merge.breakpoints.sigma_m, "
-                "the scans' range noise, which is " +
-                    msgs::ShortestNumber(config.lines.options.split_and_merge.breakpoints.sigma_m) +
-                    ": no circle can pass, so it would change no figure; give the noise");
+  const double sigma_m = config.lines.options.split_and_merge.breakpoints.sigma_m;
+  if (!(sigma_m > 0.0)) {
+    return "measures round objects against lines.split_and_merge.breakpoints.sigma_m, the "
+           "scans' range noise, which is " +
+           msgs::ShortestNumber(sigma_m) +
+           ": no circle can pass, so it would change no figure; "
+           "give the noise";
   }
   if (!config.lines.options.split_and_merge.round_objects.reject_round_objects) {
-    fields.Fail(field,
-                "finds round objects with split_and_merge's round-object stage, which "
-                "lines.split_and_merge.reject_round_objects: false turns off, so it would change "
-                "no figure; set one of the two");
+    return "finds round objects with split_and_merge's round-object stage, which "
+           "lines.split_and_merge.reject_round_objects: false turns off, so it would change no "
+           "figure; set one of the two";
   }
+  return "";
+}
+
+void ReadRoundObjectsFromScans(const sim::ExperimentConfig& config, sim::YamlFields& fields,
+                               Seed000RoomsOptions* options) {
+  const std::string field = "round_objects_from_scans";
+  if (fields.Has(field)) {
+    const YAML::Node node = fields.Raw(field);
+    if (!node.IsScalar()) fields.Fail(field, "expected true, false or auto");
+    const std::string mode = node.Scalar();
+    using Mode = Seed000RoomsOptions::SpotRoundObjects;
+    if (mode == "true") {
+      options->round_objects_mode = Mode::kOn;
+    } else if (mode == "false") {
+      options->round_objects_mode = Mode::kOff;
+    } else if (mode == "auto") {
+      options->round_objects_mode = Mode::kAuto;
+    } else {
+      fields.Fail(field, "expected true, false or auto, got '" + mode + "'");
+    }
+  }
+  if (options->round_objects_mode == Seed000RoomsOptions::SpotRoundObjects::kOff) return;
+  const std::string why_not = WhyRoundObjectsFromScansCannotWork(config, *options);
+  if (options->round_objects_mode == Seed000RoomsOptions::SpotRoundObjects::kOn &&
+      !why_not.empty()) {
+    fields.Fail(field, why_not);
+  }
+  options->round_objects_from_scans = why_not.empty();
 }
 
 }  // namespace
@@ -81,8 +105,7 @@ Seed000RoomsOptions ReadSeed000RoomsOptions(const sim::ExperimentConfig& config)
   if (!(options.range_cut_m > 0.0)) fields.Fail("range_cut_m", "must be > 0");
   fields.Get("rig_at", &options.rig_at);
   fields.Get("median_of_scans", &options.median_of_scans);
-  fields.Get("round_objects_from_scans", &options.round_objects_from_scans);
-  RefuseRoundObjectsFromScansItCannotUse(config, options, fields);
+  ReadRoundObjectsFromScans(config, fields, &options);
   if (options.rig_at != "origin" && options.rig_at != "spawn") {
     fields.Fail("rig_at", "expected origin or spawn, got '" + options.rig_at + "'");
   }
@@ -268,6 +291,7 @@ Seed000RoomResult RunSeed000Room(const sim::ExperimentConfig& config, const Seed
   if (round_objects_from_scans) {
     const KnownRoundObjects known = RoundObjectsOfMedianScan(result.rig, room.range_cut_m, lines);
     result.scores = ScoreExtractors(result.scans, lines, &known);
+    result.spot_round_objects = known.circles;
   } else {
     result.scores = ScoreExtractors(result.scans, lines);
   }

@@ -44,12 +44,18 @@ struct Seed000RoomsOptions {
   // in fewer than half of them gives none), so each extractor sees the same lower-noise scan
   // `scans` times. Set the extractors' noise (breakpoints.sigma_m) to match (docs/lines.md).
   bool median_of_scans = false;
-  // OPTION, off by default (outside seed 000's protocol, where each scan stands alone): every
-  // scan keeps its own lines, scored on its own, but split_and_merge also runs once on the
-  // per-beam median of the `scans` scans (its noise sigma scaled to the median's, 1.25 /
-  // sqrt(scans)), and every extractor's line that is a chord of a round object found there is
-  // dropped from each scan (perception/lines/round_objects_of_quiet_scan.h; docs/lines.md, stop
-  // 63). Refused with median_of_scans, whose scans are already the median.
+  // The spot's scans as evidence for round objects: every scan keeps its own lines, scored on
+  // its own, but split_and_merge also runs once on the per-beam median of the `scans` scans (its
+  // noise sigma scaled to the median's, 1.25 / sqrt(scans)), and every extractor's line that is a
+  // chord of a round object found there is dropped from each scan
+  // (perception/lines/round_objects_of_quiet_scan.h; docs/lines.md, stops 63 and 65).
+  // `round_objects_from_scans` reads true, false or auto: true refuses a setup that gives it
+  // nothing to go on (one scan, median_of_scans, no noise, split_and_merge's round-object stage
+  // off); auto (the shipped experiment's) uses the spot wherever it has that evidence and stays
+  // off elsewhere; false (the default of a file that does not name it) never does.
+  enum class SpotRoundObjects { kOff, kOn, kAuto };
+  SpotRoundObjects round_objects_mode = SpotRoundObjects::kOff;
+  // What the run does: the mode resolved against scans, median_of_scans and the extractors' noise.
   bool round_objects_from_scans = false;
   std::vector<Seed000Room> rooms;
 };
@@ -67,8 +73,11 @@ struct Seed000RoomResult {
   BackToBackScans rig;
   std::vector<TruthScan> scans;
   std::vector<ExtractorScore> scores;  // in config.lines.extractors order (all five by default)
-  double WallsVisible() const;         // observable ground-truth faces per scan
-  double PointsPerScan() const;        // all beams of the pair (722 at 0.5 deg)
+  // The round objects found in the median of the spot's scans, in the rig's frame (empty unless
+  // round_objects_from_scans is in use); every extractor's chords of them were dropped.
+  std::vector<perception::CircleFeature> spot_round_objects;
+  double WallsVisible() const;   // observable ground-truth faces per scan
+  double PointsPerScan() const;  // all beams of the pair (722 at 0.5 deg)
 };
 
 // Two back-to-back lasers at the room's origin facing +x and -x, `scans` pairs, every extractor.
