@@ -70,8 +70,21 @@ void ReadRoundObjectsFromScans(const sim::ExperimentConfig& config, sim::YamlFie
   const std::string field = "round_objects_from_scans";
   if (fields.Has(field)) {
     const YAML::Node node = fields.Raw(field);
-    if (!node.IsScalar()) fields.Fail(field, "expected true, false or auto");
+    if (!node.IsScalar()) {
+      fields.Fail(field, std::string("expected true, false or auto, got ") +
+                             (node.IsNull()       ? "nothing"
+                              : node.IsSequence() ? "a list"
+                                                  : "a mapping"));
+    }
     const std::string mode = node.Scalar();
+    // `!!str true` is the text "true", not the boolean: every true/false key refuses the tag
+    // (sim/config/yaml_fields.cc), and this one did until it also took auto (s65 review).
+    if (node.Tag() == "tag:yaml.org,2002:str" && (mode == "true" || mode == "false")) {
+      fields.Fail(field,
+                  "the YAML tag '!!str' says a string, but true and false are the key's "
+                  "booleans (written '" +
+                      mode + "'): drop the tag");
+    }
     using Mode = Seed000RoomsOptions::SpotRoundObjects;
     if (mode == "true") {
       options->round_objects_mode = Mode::kOn;

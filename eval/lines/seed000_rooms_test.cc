@@ -308,6 +308,41 @@ TEST(Seed000RoomsTest, RoundObjectsFromScansAutoUsesTheSpotWhereItCan) {
   }
 }
 
+// s65 review: `!!str true` (the text "true") was read as the boolean once the key also took
+// auto; as a true/false key it was refused, as every such key refuses the tag. Nothing, a list
+// and a mapping are named.
+TEST(Seed000RoomsTest, RoundObjectsFromScansTaggedAsTextOrNotAValueIsRefused) {
+  const std::string key = "seed000_rooms.round_objects_from_scans";
+  const auto error = [&](const std::string& value) -> std::string {
+    try {
+      ReadSeed000RoomsOptions(Config({key + "=" + value}));
+    } catch (const sim::ConfigError& e) {
+      return e.what();
+    }
+    return "(read)";
+  };
+  for (const char* tagged : {"!!str true", "!!str false"}) {
+    EXPECT_NE(error(tagged).find(key +
+                                 ": the YAML tag '!!str' says a string, but true and false "
+                                 "are the key's booleans (written '" +
+                                 std::string(tagged).substr(6) + "'): drop the tag"),
+              std::string::npos)
+        << tagged << ": " << error(tagged);
+  }
+  EXPECT_NE(error("~").find(key + ": expected true, false or auto, got nothing"), std::string::npos)
+      << error("~");
+  EXPECT_NE(error("[auto]").find(key + ": expected true, false or auto, got a list"),
+            std::string::npos)
+      << error("[auto]");
+  EXPECT_NE(error("{a: 1}").find(key + ": expected true, false or auto, got a mapping"),
+            std::string::npos)
+      << error("{a: 1}");
+  // The text auto may carry the tag; quoted values carry none and are read.
+  EXPECT_TRUE(ReadSeed000RoomsOptions(Config({key + "=!!str auto"})).round_objects_from_scans);
+  EXPECT_TRUE(ReadSeed000RoomsOptions(Config({key + "='true'"})).round_objects_from_scans);
+  EXPECT_FALSE(ReadSeed000RoomsOptions(Config({key + "=\"false\""})).round_objects_from_scans);
+}
+
 // A thin column (r 5 cm, 1.6 m from the rig: 6-7 returns a scan, too few for one scan's
 // round-object test) is found in the median of the spot's 10 scans at its true centre and
 // radius, and no extractor keeps a chord of it.

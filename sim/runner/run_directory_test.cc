@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "sim/config/config_error.h"
 #include "sim/runner/build_id.h"
@@ -262,6 +265,51 @@ TEST(RunDirectoryTest, PartialOutputOfAKilledRunIsNamedAndThenCleanedUp) {
       << why;
   { StagedRunDirectory staged(dir / "run", false); }
   EXPECT_FALSE(fs::exists(dir / ("run.partial-" + std::to_string(gone))));
+}
+
+// The fixed file names of docs/run_outputs.md's table of files (the first cell of each row).
+std::vector<std::string> DocumentedRunFileNames() {
+  std::ifstream doc(testing::SourceRoot() / "docs" / "run_outputs.md");
+  std::vector<std::string> names;
+  bool in_table = false;
+  for (std::string line; std::getline(doc, line);) {
+    if (line.starts_with("| file | content |")) in_table = true;
+    if (line.starts_with("## ")) in_table = false;
+    if (!in_table || !line.starts_with("| `")) continue;
+    const std::string cell = line.substr(0, line.find(" |", 2));
+    for (std::size_t open = cell.find('`'); open != std::string::npos;) {
+      const std::size_t close = cell.find('`', open + 1);
+      if (close == std::string::npos) break;
+      const std::string name = cell.substr(open + 1, close - open - 1);
+      if (name.find('<') == std::string::npos) names.push_back(name);  // not trajectory.<name>.tum
+      open = cell.find('`', close + 1);
+    }
+  }
+  return names;
+}
+
+// s65 review: seed000_rooms' spot_round_objects.csv (stop 65) was missing from the names a run
+// writes, so a run folder without its complete.json was refused by --force ("which no run
+// writes") and a killed run's staging folder holding it was never cleaned up. Every file
+// docs/run_outputs.md lists is a run's own.
+TEST(RunDirectoryTest, EveryDocumentedOutputFileIsARunsOwn) {
+  const std::vector<std::string> names = DocumentedRunFileNames();
+  ASSERT_GE(names.size(), 20u) << "docs/run_outputs.md's table of files was not found";
+  EXPECT_NE(std::find(names.begin(), names.end(), "spot_round_objects.csv"), names.end());
+  const long gone = 999999999;  // above any pid_max
+  for (const std::string& name : names) {
+    // The two that make a folder a run, and the record, are tested above.
+    if (name == "config.yaml" || name == "metrics.json" || name == "complete.json") continue;
+    const fs::path dir = MakeTempDir("run_directory_documented_" + name);
+    WriteSmallRun(dir / "run", "small");
+    WriteFile(dir / "run" / name, "x\n");
+    EXPECT_NO_THROW(StagedRunDirectory(dir / "run", true)) << name;
+    const fs::path killed = dir / ("other.partial-" + std::to_string(gone));
+    WriteSmallRun(killed, "small");
+    WriteFile(killed / name, "x\n");
+    { StagedRunDirectory staged(dir / "other", false); }
+    EXPECT_FALSE(fs::exists(killed)) << name << ": a killed run's staging folder was kept";
+  }
 }
 
 // s63 (forty-seventh pass): a symbolic link named like a killed run's staging folder
