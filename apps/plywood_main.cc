@@ -14,7 +14,10 @@
 #include <vector>
 
 #include "apps/command.h"
+#include "apps/owner_umask.h"
+#include "apps/stack_limit.h"
 #include "apps/standard_streams.h"
+#include "render/mesa_driver.h"
 #include "sim/config/config_error.h"
 #include "sim/runner/out_of_memory.h"
 
@@ -132,6 +135,9 @@ int Main(int argc, char** argv) {
   for (const Command& command : commands) {
     if (!command.cli->parsed()) continue;
     RejectExtras(app, command);
+    render::RequireTheReproducibleMesaDriver();
+    RequireAStackLimitPlywoodRunsIn();
+    RequireAUmaskThatLeavesTheOwnerItsFiles();
     return command.run();
   }
   throw UsageError("no command given" + SeeHelp(""));
