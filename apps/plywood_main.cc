@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "apps/command.h"
+#include "apps/mesa_threads.h"
 #include "apps/owner_umask.h"
 #include "apps/stack_limit.h"
 #include "apps/standard_streams.h"
@@ -221,5 +222,6 @@ int main(int argc, char** argv) {
   // ffmpeg) inherit it.
   std::signal(SIGXFSZ, SIG_IGN);
   plywood::apps::PrepareStandardStreams();
+  plywood::apps::KeepMesaFromWaitingOnThreadsItCannotStart();
   return plywood::apps::FinishStandardStreams(RunCommand(argc, argv));
 }

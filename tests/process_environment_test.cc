@@ -355,5 +355,55 @@ TEST(ProcessEnvironmentTest, AUmaskThatDeniesTheOwnerIsRefusedAndLeavesNothing) 
   }
 }
 
+// Under `ulimit -u 3` Mesa's llvmpipe could not start its rasteriser threads and waited for them
+// forever: the run hung in its snapshot. The limit counts every process and thread of the user, so
+// the test runs as nobody (through setpriv, as root) and only while nobody runs nothing else.
+TEST(ProcessEnvironmentTest, AProcessLimitNeverHangsTheSnapshot) {
+  if (geteuid() != 0 || std::system("setpriv --version >/dev/null 2>&1") != 0) {
+    GTEST_SKIP() << "needs root and setpriv, to run as a user with no other processes";
+  }
+  if (std::system("pgrep -u nobody >/dev/null 2>&1") == 0) {
+    GTEST_SKIP() << "nobody runs other processes, which count against the limit";
+  }
+  const fs::path dir = MakeTempDir("process_environment_nproc");
+  fs::permissions(dir, fs::perms::all);
+  StillExperiment(dir, true);
+  const int status = RunScript(
+      dir,
+      "timeout 20 setpriv --reuid=65534 --regid=65534 --clear-groups bash -c 'ulimit -u 3; exec "
+      "\"$PLYWOOD\" run still.yaml --out out --quiet 2>err'\n");
+  const std::string err = Slurp(dir / "err");
+  EXPECT_NE(status, 124) << "timed out: the run hung";
+  if (status != 0) {  // else the snapshot was drawn
+    EXPECT_EQ(Lines(err).size(), 1u) << err;
+    EXPECT_NE(err.find("(the process limit, ulimit -u, is 3)"), std::string::npos) << err;
+  }
+}
+
+// `sweep --jobs 4` under a process limit that lets two runs start: the third fork failed and the
+// sweep ended, "plywood: error: cannot start a run: fork failed", exit 1, its two runs killed with
+// it. Now a cell waits for a run to end, so the sweep runs as many at once as the limit allows.
+TEST(ProcessEnvironmentTest, ASweepUnderAProcessLimitRunsAsManyAtOnceAsItAllows) {
+  if (geteuid() != 0 || std::system("setpriv --version >/dev/null 2>&1") != 0) {
+    GTEST_SKIP() << "needs root and setpriv, to run as a user with no other processes";
+  }
+  if (std::system("pgrep -u nobody >/dev/null 2>&1") == 0) {
+    GTEST_SKIP() << "nobody runs other processes, which count against the limit";
+  }
+  const fs::path dir = MakeTempDir("process_environment_nproc_sweep");
+  fs::permissions(dir, fs::perms::all);
+  ThreeRunSweep(dir);
+  const int status = RunScript(
+      dir,
+      "timeout 60 setpriv --reuid=65534 --regid=65534 --clear-groups bash -c 'ulimit -u 3; exec "
+      "\"$PLYWOOD\" sweep three.yaml --jobs 4 --out out --no-collect --quiet 2>err'\n");
+  EXPECT_EQ(status, 0) << Slurp(dir / "err");
+  int finished = 0;
+  for (const auto& run : fs::directory_iterator(dir / "out/runs")) {
+    finished += fs::is_regular_file(run.path() / "complete.json") ? 1 : 0;
+  }
+  EXPECT_EQ(finished, 3);
+}
+
 }  // namespace
 }  // namespace plywood

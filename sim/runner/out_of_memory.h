@@ -18,6 +18,10 @@ class OutOfMemory : public std::runtime_error {
 // " (the memory limit, ulimit -v, is N kB)" when the process's address space is limited, else "".
 std::string MemoryLimitNote();
 
+// MemoryLimitNote(), and " (the process limit, ulimit -u, is N)" when a user other than root is
+// held to one: what a thread or process that could not start ran into.
+std::string ProcessLimitsNote();
+
 // True when MuJoCo's message says an allocation failed ("Could not allocate mjData buffer").
 bool IsMujocoOutOfMemory(const std::string& message);
 
