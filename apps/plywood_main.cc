@@ -7,13 +7,20 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <new>
 #include <stdexcept>
 #include <string>
 #include <system_error>
 #include <vector>
 
 #include "apps/command.h"
+#include "apps/mesa_threads.h"
+#include "apps/owner_umask.h"
+#include "apps/stack_limit.h"
+#include "apps/standard_streams.h"
+#include "render/mesa_driver.h"
 #include "sim/config/config_error.h"
+#include "sim/runner/out_of_memory.h"
 
 namespace plywood::apps {
 namespace {
@@ -129,6 +136,9 @@ int Main(int argc, char** argv) {
   for (const Command& command : commands) {
     if (!command.cli->parsed()) continue;
     RejectExtras(app, command);
+    render::RequireTheReproducibleMesaDriver();
+    RequireAStackLimitPlywoodRunsIn();
+    RequireAUmaskThatLeavesTheOwnerItsFiles();
     return command.run();
   }
   throw UsageError("no command given" + SeeHelp(""));
@@ -165,13 +175,8 @@ std::string WithTheCurrentFolder(const std::string& message) {
          "to a folder that exists)";
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  // A file-size limit (ulimit -f) would kill plywood with SIGXFSZ, without a word, mid-write;
-  // ignored, the write fails with EFBIG and the writer names the file. Children (sweep runs,
-  // ffmpeg) inherit it.
-  std::signal(SIGXFSZ, SIG_IGN);
+// The command's exit code, its error (if any) said on one line.
+int RunCommand(int argc, char** argv) {
   try {
     return plywood::apps::Main(argc, argv);
   } catch (const plywood::sim::ConfigError& e) {
@@ -192,6 +197,11 @@ int main(int argc, char** argv) {
         code == std::errc::filename_too_long || code == std::errc::too_many_symbolic_link_levels ||
         code == std::errc::not_a_directory || code == std::errc::no_such_file_or_directory;
     return bad_name ? 2 : 1;
+  } catch (const std::bad_alloc&) {
+    // Read "plywood: error: std::bad_alloc": the limit that caused it is named when one is set.
+    std::fprintf(stderr, "plywood: error: out of memory (std::bad_alloc)%s\n",
+                 plywood::sim::MemoryLimitNote().c_str());
+    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "plywood: error: %s\n", WithTheCurrentFolder(OneLine(e.what())).c_str());
     return 1;
@@ -202,4 +212,16 @@ int main(int argc, char** argv) {
         stderr);
     return 1;
   }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // A file-size limit (ulimit -f) would kill plywood with SIGXFSZ, without a word, mid-write;
+  // ignored, the write fails with EFBIG and the writer names the file. Children (sweep runs,
+  // ffmpeg) inherit it.
+  std::signal(SIGXFSZ, SIG_IGN);
+  plywood::apps::PrepareStandardStreams();
+  plywood::apps::KeepMesaFromWaitingOnThreadsItCannotStart();
+  return plywood::apps::FinishStandardStreams(RunCommand(argc, argv));
 }

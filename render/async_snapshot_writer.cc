@@ -7,6 +7,7 @@
 
 #include "render/png_image.h"
 #include "render/top_down_renderer.h"
+#include "sim/runner/start_thread.h"
 
 namespace plywood::render {
 
@@ -15,7 +16,7 @@ AsyncSnapshotWriter::AsyncSnapshotWriter(const mjModel* m, const SnapshotOptions
   options_.Validate();
   model_.reset(mj_copyModel(nullptr, m));
   if (!model_) throw std::runtime_error("snapshot: mj_copyModel failed");
-  thread_ = std::thread([this] { Work(); });
+  thread_ = sim::StartThread("draw the snapshot", [this] { Work(); });
 }
 
 AsyncSnapshotWriter::~AsyncSnapshotWriter() {

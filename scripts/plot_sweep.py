@@ -10,15 +10,34 @@ import math
 import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-
-
 # Exit status of a plot that could not be written, after its one line: `plywood sweep` then adds
 # no note of its own and exits 1.
 CANNOT_WRITE = 3
+
+import matplotlib  # noqa: E402
+
+matplotlib.use("Agg")
+try:
+    import matplotlib.pyplot as plt  # noqa: E402
+except OSError as e:
+    # matplotlib writes its font cache into MPLCONFIGDIR (or ~/.config/matplotlib) on first use;
+    # a folder it may not write in (MPLCONFIGDIR=/sys) was a 30-line traceback (s65 fifty-fourth
+    # pass).
+    where = os.environ.get("MPLCONFIGDIR")
+    hint = f"MPLCONFIGDIR={where}" if where else "HOME"
+    print(f"plywood sweep: no plots: matplotlib cannot write its cache: {e.filename}: "
+          f"{e.strerror} (point {hint} at a writable folder)", file=sys.stderr)
+    sys.exit(CANNOT_WRITE)
+
+
+def say(text):
+    """A line on stdout. A reader that went away (`plywood sweep ... | head -1`) ended the script
+    with a BrokenPipeError traceback and the plots after the first unmade (s65 fifty-fourth pass);
+    the rest of what it prints is dropped instead."""
+    try:
+        print(text, flush=True)
+    except BrokenPipeError:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
 
 
 def save(fig, path):
@@ -49,11 +68,11 @@ def main(out_dir):
         results = list(csv.DictReader(f))
     metrics = meta.get("metrics") or []
     if not metrics:
-        print("plot_sweep: no metrics chosen in the sweep; no plots")
+        say("plot_sweep: no metrics chosen in the sweep; no plots")
         return
     if not results:
         # Every cell failed (fuzz30: this was a ValueError traceback from max() of nothing).
-        print("plot_sweep: no finished run in results.csv; no plots")
+        say("plot_sweep: no finished run in results.csv; no plots")
         return
     plots = os.path.join(out_dir, "plots")
     os.makedirs(plots, exist_ok=True)
@@ -80,7 +99,7 @@ def main(out_dir):
         if not any(values.values()):
             # Every run's value is null (undefined there: drift_percent of a robot that stood):
             # an empty box plot would draw axes round a figure of nothing.
-            print(f"plot_sweep: {metric}: no run has a value (every run's is null); no plot")
+            say(f"plot_sweep: {metric}: no run has a value (every run's is null); no plot")
             continue
         stats = {label(r): r for r in summary if r["metric"] == metric}
         width = max(4.0, 0.09 * max(len(line) for g in groups for line in g.split("\n")) * len(groups) + 1.5)
@@ -112,7 +131,7 @@ def main(out_dir):
         path = os.path.join(plots, metric.replace("/", "_") + ".png")
         save(fig, path)
         plt.close(fig)
-        print(f"plot_sweep: {path}")
+        say(f"plot_sweep: {path}")
 
 
 if __name__ == "__main__":

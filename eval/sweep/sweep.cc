@@ -1,10 +1,13 @@
 #include "eval/sweep/sweep.h"
 
+#include <fcntl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
-#include <cstdlib>
+#include <string>
+#include <vector>
 
 #include "eval/sweep/sweep_cells.h"
 #include "eval/sweep/sweep_results.h"
@@ -22,26 +25,52 @@ namespace fs = std::filesystem;
 // scripts/plot_sweep.py's exit status for a plot it could not write (CANNOT_WRITE there).
 constexpr int kPlotCannotBeWritten = 3;
 
+enum class ChildOutput { kAll, kErrorsOnly, kNone };
+
+// Runs `args` (a program's path, then its arguments) and returns its wait status (-1 if it could
+// not be started), `output` deciding which of its stdout and stderr reach ours. Not std::system:
+// sh's redirections need file descriptors above 10, so under `ulimit -n 10` or less its
+// "2>&1" failed ("sh: 1: 1: Invalid argument") and the sweep said "no plots (python3-matplotlib
+// not installed)" of an installed one (s65 fifty-fourth pass).
+int RunWithoutAShell(const std::vector<std::string>& args, ChildOutput output) {
+  std::vector<char*> argv;
+  for (const std::string& arg : args) argv.push_back(const_cast<char*>(arg.c_str()));
+  argv.push_back(nullptr);
+  std::fflush(stdout);  // what plywood printed comes before what the child prints
+  const pid_t pid = fork();
+  if (pid < 0) return -1;
+  if (pid == 0) {
+    if (output != ChildOutput::kAll) {
+      const int null = open("/dev/null", O_WRONLY);
+      if (null >= 0) {
+        dup2(null, STDOUT_FILENO);
+        if (output == ChildOutput::kNone) dup2(null, STDERR_FILENO);
+        if (null > STDERR_FILENO) close(null);
+      }
+    }
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) return -1;
+  }
+  return status;
+}
+
 // One PNG per chosen metric (scripts/plot_sweep.py, matplotlib); skipped with a note when
 // python3-matplotlib is missing, since plots are a convenience, not a result. False when a plot
 // could not be written (a full disk).
 bool Plot(const fs::path& out_dir, bool quiet) {
   const fs::path script = sim::DataRoot() / "scripts" / "plot_sweep.py";
   if (!fs::is_regular_file(script)) return true;
-  const std::string check = "/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1";
-  if (std::system(check.c_str()) != 0) {
+  if (RunWithoutAShell({"/usr/bin/python3", "-c", "import matplotlib"}, ChildOutput::kNone) != 0) {
     if (!quiet)
       std::fprintf(stderr, "plywood sweep: no plots (python3-matplotlib not installed)\n");
     return true;
   }
-  const auto quote = [](const std::string& text) {  // single quotes for the shell
-    std::string quoted = "'";
-    for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return quoted + "'";
-  };
-  const std::string command = "/usr/bin/python3 " + quote(script.string()) + " " +
-                              quote(out_dir.string()) + (quiet ? " >/dev/null" : "");
-  const int status = std::system(command.c_str());
+  const int status = RunWithoutAShell({"/usr/bin/python3", script.string(), out_dir.string()},
+                                      quiet ? ChildOutput::kErrorsOnly : ChildOutput::kAll);
   // A plot the disk would not take was named on one line by the script, which left no cut file:
   // a failed write, not a missing convenience, so the sweep exits 1 (s63 fiftieth pass).
   if (status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == kPlotCannotBeWritten) {

@@ -24,6 +24,7 @@
 #include "sim/config/yaml_text_value.h"
 #include "sim/runner/checked_scene.h"
 #include "sim/runner/controller_targets.h"
+#include "sim/runner/out_of_memory.h"
 #include "sim/runner/sensors_the_config_needs.h"
 #include "sim/runner/spawn_refused.h"
 #include "sim/runner/text_file.h"
@@ -106,6 +107,8 @@ std::vector<std::string> SpawnOverrides(const std::filesystem::path& world) {
   sim::MjModelPtr model;
   try {
     model = sim::LoadModelFromFile(world.string());
+  } catch (const sim::OutOfMemory&) {
+    throw;  // not the file's fault: said as such
   } catch (const std::exception&) {
     return {};  // the run reports the compile error with its full context
   }

@@ -9,9 +9,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -29,6 +31,7 @@
 #include "sim/runner/build_id.h"
 #include "sim/runner/folder_lock.h"
 #include "sim/runner/link_to_nowhere.h"
+#include "sim/runner/out_of_memory.h"
 #include "sim/runner/run_directory.h"
 #include "sim/runner/text_file.h"
 #include "sim/world/generator/world_families.h"
@@ -54,6 +57,7 @@ std::string ErrorLine(const fs::path& log) {
 }
 
 // Starts `plywood run` for one cell with its output in `partial` and its stdout/stderr in `log`.
+// Returns its pid, or -1 (errno set) when no process could be made.
 pid_t StartRun(const SweepCell& cell, const fs::path& plywood, const fs::path& partial,
                const fs::path& log, const fs::path& sweep_folder) {
   std::vector<std::string> args{plywood.string(), "run",    cell.experiment, "--out",
@@ -70,8 +74,7 @@ pid_t StartRun(const SweepCell& cell, const fs::path& plywood, const fs::path& p
   }
   const pid_t parent = getpid();
   const pid_t pid = fork();
-  if (pid < 0) throw std::runtime_error("cannot start a run: fork failed");
-  if (pid > 0) return pid;
+  if (pid != 0) return pid;  // -1 with errno when no process could be made
   // The child: dies with the sweep, so a killed sweep leaves no run writing behind its back.
   prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (getppid() != parent) _exit(127);
@@ -469,6 +472,18 @@ SweepRunOutcome RunSweepCells(const std::vector<SweepCell>& cells, const SweepLa
                                                std::to_string(getpid()));
       const pid_t pid =
           StartRun(cell, options.plywood, partial, layout.LogFile(cell.id), layout.out);
+      if (pid < 0) {
+        // A process limit (`ulimit -u`) reached with runs under way: this cell starts when one
+        // of them ends, so the sweep runs as many at once as the limit allows. With none under
+        // way it never could: said, with the limit (was "cannot start a run: fork failed").
+        const int error = errno;
+        if (error == EAGAIN && !running.empty()) {
+          --next;
+          break;
+        }
+        throw std::runtime_error("cannot start a run: fork failed: " +
+                                 std::string(std::strerror(error)) + sim::ProcessLimitsNote());
+      }
       running[pid] = {&cell, partial};
     }
     int status = 0;

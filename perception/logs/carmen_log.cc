@@ -2,7 +2,6 @@
 
 #include <zlib.h>
 
-#include <array>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -16,6 +15,7 @@
 #include <string_view>
 #include <unordered_map>
 #include <utility>
+#include <vector>
 
 #include "msgs/shortest_number.h"
 #include "perception/logs/byte_order_mark.h"
@@ -247,7 +247,9 @@ class LineReader {
  private:
   std::filesystem::path path_;
   gzFile file_;
-  std::array<char, 65536> buffer_{};
+  // On the heap, as SkipMember's buffers: the reader lives on the stack of ReadCarmenLog, and
+  // `ulimit -s 128` crashed a replay (s65 fifty-fourth pass).
+  std::vector<char> buffer_ = std::vector<char>(65536);
   std::size_t have_ = 0;  // bytes in buffer_
   std::size_t next_ = 0;  // the first not yet returned
   bool end_checked_ = false;

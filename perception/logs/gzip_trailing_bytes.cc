@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <fstream>
+#include <vector>
 
 namespace plywood::perception {
 namespace {
@@ -20,8 +21,10 @@ std::optional<std::uintmax_t> SkipMember(std::ifstream& in, std::uintmax_t offse
   in.seekg(static_cast<std::streamoff>(offset));
   z_stream stream{};
   if (inflateInit2(&stream, 15 + 16) != Z_OK) return std::nullopt;  // 16: gzip wrapper only
-  std::array<unsigned char, 1 << 16> input{};
-  std::array<unsigned char, 1 << 16> output{};
+  // 128 kB of buffers, on the heap: on the stack they crashed a replay under `ulimit -s 128`
+  // (SIGSEGV, no line; s65 fifty-fourth pass).
+  std::vector<unsigned char> input(1 << 16);
+  std::vector<unsigned char> output(1 << 16);
   std::uintmax_t read = 0;
   int status = Z_OK;
   while (status != Z_STREAM_END) {

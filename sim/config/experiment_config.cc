@@ -33,6 +33,7 @@
 #include "sim/config/yaml_fields.h"
 #include "sim/config/yaml_nul_characters.h"
 #include "sim/config/yaml_tags.h"
+#include "sim/runner/out_of_memory.h"
 #include "sim/world/mujoco_handles.h"
 #include "sim/world/world_spawns.h"
 
@@ -72,6 +73,8 @@ SpawnPose WorldDefaultSpawn(const std::filesystem::path& world) {
   MjModelPtr model;
   try {
     model = LoadModelFromFile(world.string());
+  } catch (const OutOfMemory&) {
+    throw;  // not the file's fault: said as such
   } catch (const std::exception&) {
     return {};  // the scene reports the compile error with its full context
   }

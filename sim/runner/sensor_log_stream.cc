@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "sim/runner/sensor_log_lines.h"
+#include "sim/runner/start_thread.h"
 
 namespace plywood::sim {
 
@@ -16,7 +17,7 @@ SensorLogStream::SensorLogStream(const ExperimentConfig& config)
   logs_.laser_hits_given = laser && (config.output.sensor_logs || config.lines.given);
   logs_.sonar_given = config.sensors.sonar.has_value() && config.output.sensor_logs;
   if (logs_.laser_log_given || logs_.laser_hits_given || logs_.sonar_given) {
-    thread_ = std::thread([this] { Work(); });
+    thread_ = StartThread("write the sensor logs", [this] { Work(); });
   }
 }
 

@@ -25,10 +25,12 @@ std::string LastMujocoWarning();
 
 // Compiles MJCF text held in memory. `virtual_path` names the file MuJoCo believes it is reading:
 // relative includes and assets resolve against its directory.
-// @throws std::runtime_error with MuJoCo's compiler message.
+// @throws std::runtime_error with MuJoCo's compiler message; sim::OutOfMemory when MuJoCo could
+// not allocate.
 MjModelPtr LoadModelFromString(const std::string& mjcf, const std::string& virtual_path);
 
-// @throws std::runtime_error with MuJoCo's compiler message.
+// @throws std::runtime_error with MuJoCo's compiler message; sim::OutOfMemory when MuJoCo could
+// not allocate.
 MjModelPtr LoadModelFromFile(const std::string& path);
 
 }  // namespace plywood::sim

@@ -9,6 +9,7 @@
 #include "msgs/shortest_number.h"
 #include "perception/logs/regular_file.h"
 #include "sim/config/config_error.h"
+#include "sim/runner/out_of_memory.h"
 #include "sim/world/contact_filter.h"
 #include "sim/world/draw_only_geoms.h"
 #include "sim/world/finite_geometry.h"
@@ -27,6 +28,8 @@ namespace {
 MjModelPtr LoadModelOrNothing(const std::filesystem::path& path) {
   try {
     return LoadModelFromFile(path.string());
+  } catch (const OutOfMemory&) {
+    throw;  // not the file's fault: said as such
   } catch (const std::exception&) {
     return nullptr;
   }
@@ -267,6 +270,9 @@ Scene::Scene(const SceneOptions& options) : options_(options) {
   try {
     model_ = LoadModelFromString(ComposeSceneMjcf(world, robot, NearContactPairs::kCapacity),
                                  virtual_path);
+  } catch (const OutOfMemory&) {
+    // Not the world's fault, as the second compile's line would say.
+    throw OutOfMemory("compiling " + world.string() + " with robot " + robot.string());
   } catch (const std::exception&) {
     // Most likely a robot without the tires the placeholder pairs name: compiled without them, the
     // checks below say what is missing.
@@ -274,6 +280,8 @@ Scene::Scene(const SceneOptions& options) : options_(options) {
   if (!model_) {
     try {
       model_ = LoadModelFromString(ComposeSceneMjcf(world, robot), virtual_path);
+    } catch (const OutOfMemory&) {
+      throw OutOfMemory("compiling " + world.string() + " with robot " + robot.string());
     } catch (const std::exception& e) {
       throw ConfigError(options.world_mjcf.string(), "",
                         std::string("does not compile with robot ") + options.robot_mjcf.string() +

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "sim/runner/out_of_memory.h"
 #include "sim/world/ground_truth_walls.h"
 #include "sim/world/mujoco_handles.h"
 #include "sim/world/scene.h"
@@ -42,6 +43,8 @@ std::vector<std::string> CheckWrittenWorld(const std::filesystem::path& mjcf,
   const std::string warning_before = LastMujocoWarning();
   try {
     model = LoadModelFromFile(mjcf.string());
+  } catch (const OutOfMemory&) {
+    throw;  // not the file's fault: said as such
   } catch (const std::exception& e) {
     return {name + ": does not compile: " + e.what()};
   }
