@@ -129,8 +129,10 @@ int Seed000Protocol(const ProtocolContext& context) {
     RefuseARoomWithNoWallInView(config, options, results.back());
   }
   if (!context.quiet) {
-    std::printf("\nseed 000 rooms: two back-to-back LMS 200 at the origin, %d scan pairs each%s\n",
-                options.scans,
+    // rig_at: spawn stands the rig at robot.spawn, not at the world's origin.
+    const bool at_spawn = !rooms.empty() && rooms.front().rig_at_spawn;
+    std::printf("\nseed 000 rooms: two back-to-back LMS 200 at the %s, %d scan pairs each%s\n",
+                at_spawn ? "spawn" : "origin", options.scans,
                 options.round_objects_from_scans
                     ? "; chords of the round objects in the spot's median scan left out"
                     : "");
