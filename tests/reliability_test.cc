@@ -1025,6 +1025,18 @@ TEST_F(ReliabilityTest, ASeed000RigThatDoesNotFitAtTheOriginNamesRigAt) {
   ExpectOneLine(bad_spawn, {"seed000_rooms.yaml: robot.spawn: the robot at (0, 0) overlaps geom "
                             "'crate'"});
   EXPECT_EQ(rig("--set seed000_rooms.rig_at=spawn --set robot.spawn.x_m=1").exit_code, 0);
+  // The console says where the rig stood (s65: it said "at the origin" at the spawn too).
+  const fs::path loud_dir = Dir();
+  const CliResult loud =
+      RunPlywood("run " + seed000 + " --no-snapshot --set world=" + crate.string() +
+                     " --set seed000_rooms.scans=1 --set seed000_rooms.rig_at=spawn --set "
+                     "robot.spawn.x_m=1 --out " +
+                     (loud_dir / "out").string(),
+                 loud_dir);
+  EXPECT_EQ(loud.exit_code, 0) << loud.err;
+  EXPECT_NE(loud.out.find("two back-to-back LMS 200 at the spawn, 1 scan pairs each"),
+            std::string::npos)
+      << loud.out;
 }
 
 // audit s43: rooms.csv wrote the world's stem unquoted, so a user world 'a,b.xml' run by the
