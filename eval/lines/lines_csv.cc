@@ -60,10 +60,15 @@ std::string CirclesCsvHeader(bool with_room) {
   return std::string(with_room ? "room," : "") + "scan,extractor,x_m,y_m,radius_m,rms_m,points\n";
 }
 
+std::string CircleCsvColumns(const perception::CircleFeature& c) {
+  const auto n = [](double value) { return sim::FormatNumber(value); };
+  return n(c.centre.x()) + "," + n(c.centre.y()) + "," + n(c.radius_m) + "," + n(c.rms_m) + "," +
+         std::to_string(c.num_points());
+}
+
 std::string CirclesCsvRows(std::span<const ExtractorScore> scores, const std::string& room,
                            long first_scan) {
   std::string out;
-  const auto n = [](double value) { return sim::FormatNumber(value); };
   std::size_t scans = 0;
   for (const ExtractorScore& score : scores) scans = std::max(scans, score.scans.size());
   for (std::size_t s = 0; s < scans; ++s) {
@@ -72,8 +77,7 @@ std::string CirclesCsvRows(std::span<const ExtractorScore> scores, const std::st
       for (const perception::CircleFeature& c : score.scans[s].circles) {
         if (!room.empty()) out += CsvField(room) + ",";
         out += std::to_string(first_scan + static_cast<long>(s)) + "," + CsvField(score.name) +
-               "," + n(c.centre.x()) + "," + n(c.centre.y()) + "," + n(c.radius_m) + "," +
-               n(c.rms_m) + "," + std::to_string(c.num_points()) + "\n";
+               "," + CircleCsvColumns(c) + "\n";
       }
     }
   }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "eval/lines/line_scan_scorer.h"
+#include "perception/lines/circle_feature.h"
 #include "perception/lines/line_segment.h"
 
 namespace plywood::eval {
@@ -44,6 +45,8 @@ void WriteCirclesCsv(const std::filesystem::path& path, std::span<const Extracto
 std::string CirclesCsvRows(std::span<const ExtractorScore> scores, const std::string& room = "",
                            long first_scan = 0);
 std::string CirclesCsvHeader(bool with_room);
+// One circle's columns of circles.csv and spot_round_objects.csv: `x_m,y_m,radius_m,rms_m,points`.
+std::string CircleCsvColumns(const perception::CircleFeature& circle);
 
 // A segments file as `plywood score lines` takes it: a header row naming the columns, in any
 // order. Required: scan, x1_m, y1_m, x2_m, y2_m. Optional: extractor (else every row is

@@ -146,9 +146,7 @@ int Seed000Protocol(const ProtocolContext& context) {
     for (const LinesCsvRow& row : LinesCsvRows(result.scores, stem)) line_rows.push_back(row);
     circles_csv += CirclesCsvRows(result.scores, stem);
     for (const perception::CircleFeature& c : result.spot_round_objects) {
-      spot_csv += CsvField(stem) + "," + sim::FormatNumber(c.centre.x()) + "," +
-                  sim::FormatNumber(c.centre.y()) + "," + sim::FormatNumber(c.radius_m) + "," +
-                  sim::FormatNumber(c.rms_m) + "," + std::to_string(c.num_points()) + "\n";
+      spot_csv += CsvField(stem) + "," + CircleCsvColumns(c) + "\n";
     }
     for (std::size_t i = 0; i < result.rig.walls.segments.size(); ++i) {
       const sim::WallSegment& w = result.rig.walls.segments[i];
