@@ -14,13 +14,14 @@ calls of this script or of sweep_compare.py.) Exit 0 when every criterion holds,
 
 usage: scripts/keeping_rule.py BASE NEW [BASE NEW ...] [--metric M] [--contacts M]
 """
-import argparse
-import math
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sweep_compare import number, paired_runs, percentile  # noqa: E402
+from sweep_folder import OneLineParser, fail  # noqa: E402
+
+SCRIPT = "keeping_rule"
 
 MEAN_BAR, P90_BAR, RUN_BAR = 0.03, 0.05, 0.10
 
@@ -41,27 +42,32 @@ def text(f):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser = OneLineParser(prog=SCRIPT, description=__doc__.split("\n")[0])
     parser.add_argument("folders", nargs="+", help="BASE NEW [BASE NEW ...]")
     parser.add_argument("--metric", default="occupancy.error")
     parser.add_argument("--contacts", default="sensors.bumpers.contact_samples")
     args = parser.parse_args()
     if len(args.folders) % 2:
-        sys.exit("keeping_rule: folders come in pairs, BASE then NEW")
+        fail(SCRIPT, "folders come in pairs, BASE then NEW")
 
+    # Every pair read and checked before the table starts: a refusal (exit 2, not the 1 of "not
+    # kept") leaves no half table, and a sweep missing runs or a run without a partner is refused,
+    # not judged on the runs that happened to finish or pair (s66).
+    checked = []
+    for base, new in zip(args.folders[0::2], args.folders[1::2]):
+        pairs, _, extra_axes, fields, new_rows = paired_runs(base, new, args.metric, args.contacts,
+                                                             SCRIPT, whole=True)
+        if any(len({r[a] for r in new_rows}) > 1 for a in extra_axes):
+            fail(SCRIPT, f"{new} sweeps an option over several values; compare one")
+        checked.append((new, pairs, fields))
     pooled_b, pooled_n, pooled_bc, pooled_nc = [], [], [], []
     lost, gained_bar = [], []
     print(f"| sweep | runs | base mean / p90 / worst / >{RUN_BAR:g} / contacts | new | "
           "bar base / new |")
     print("|---|---|---|---|---|")
-    for base, new in zip(args.folders[0::2], args.folders[1::2]):
-        pairs, _, extra_axes, fields, new_rows = paired_runs(base, new, args.metric)
-        if any(len({r[a] for r in new_rows}) > 1 for a in extra_axes):
-            sys.exit(f"keeping_rule: {new} sweeps an option over several values; compare one")
+    for new, pairs, fields in checked:
         be = [number(b[args.metric]) for b, _ in pairs]
         ne = [number(n[args.metric]) for _, n in pairs]
-        if any(math.isnan(x) for x in be + ne):
-            sys.exit(f"keeping_rule: a run of {new} or its base has no number for {args.metric}")
         has_contacts = args.contacts in fields
         bc = [number(b[args.contacts]) if has_contacts else 0.0 for b, _ in pairs]
         nc = [number(n[args.contacts]) if has_contacts else 0.0 for _, n in pairs]

@@ -4,7 +4,6 @@ groups (set-axis values, plus group_by columns), as a box plot with each run as 
 with its 95 % confidence interval. Called by `plywood sweep` after collecting; usage:
     scripts/plot_sweep.py SWEEP_DIR
 """
-import csv
 import json
 import math
 import os
@@ -14,7 +13,17 @@ import sys
 # no note of its own and exits 1.
 CANNOT_WRITE = 3
 
-import matplotlib  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sweep_folder import BAD_INPUT, fail, read_csv, sweep_dir, value  # noqa: E402
+
+try:
+    import matplotlib  # noqa: E402
+except ImportError:
+    # plywood sweep checks for matplotlib before it calls this; run by hand without it, this was
+    # a ModuleNotFoundError traceback (s66).
+    print("plot_sweep: no plots: python3-matplotlib is not installed (Debian: apt-get install "
+          "python3-matplotlib)", file=sys.stderr)
+    sys.exit(BAD_INPUT)
 
 matplotlib.use("Agg")
 try:
@@ -57,16 +66,31 @@ def save(fig, path):
 
 
 def main(out_dir):
-    with open(os.path.join(out_dir, "sweep.json")) as f:
-        meta = json.load(f)
-    with open(os.path.join(out_dir, "summary.csv"), newline="") as f:
-        reader = csv.DictReader(f)
-        # The summary's group columns are those before "metric".
-        group_columns = reader.fieldnames[: reader.fieldnames.index("metric")]
-        summary = list(reader)
-    with open(os.path.join(out_dir, "results.csv"), newline="") as f:
-        results = list(csv.DictReader(f))
+    # A folder that is not a finished sweep's, an empty or cut CSV file or a value that is no
+    # number was a Python traceback; a NaN or inf value was left out of the plot without a word
+    # (s66). Plots of a sweep with failed runs are of its finished runs, as summary.csv is: the
+    # sweep itself says how many finished, and exits 1.
+    sweep_dir("plot_sweep", out_dir)
+    meta_path = os.path.join(out_dir, "sweep.json")
+    try:
+        with open(meta_path, encoding="utf-8") as f:
+            meta = json.load(f)
+    except FileNotFoundError:
+        fail("plot_sweep", f"{meta_path}: no such file: {out_dir} is not a sweep's folder")
+    except (OSError, ValueError) as error:
+        fail("plot_sweep", f"{meta_path}: cannot read ({getattr(error, 'strerror', None) or error})")
+    if not isinstance(meta, dict):
+        fail("plot_sweep", f"{meta_path}: expected a JSON object")
+    summary_path = os.path.join(out_dir, "summary.csv")
+    header, summary, summary_lines = read_csv("plot_sweep", summary_path,
+                                              ("metric", "n", "mean", "ci95_low", "ci95_high"))
+    # The summary's group columns are those before "metric".
+    group_columns = header[: header.index("metric")]
+    results_path = os.path.join(out_dir, "results.csv")
+    _, results, result_lines = read_csv("plot_sweep", results_path, group_columns)
     metrics = meta.get("metrics") or []
+    if not isinstance(metrics, list) or not all(isinstance(m, str) for m in metrics):
+        fail("plot_sweep", f"{meta_path}: metrics: expected a list of names")
     if not metrics:
         say("plot_sweep: no metrics chosen in the sweep; no plots")
         return
@@ -75,7 +99,13 @@ def main(out_dir):
         say("plot_sweep: no finished run in results.csv; no plots")
         return
     plots = os.path.join(out_dir, "plots")
-    os.makedirs(plots, exist_ok=True)
+    try:
+        os.makedirs(plots, exist_ok=True)
+    except OSError as e:
+        # A plots/ that is a file, or a folder it may not write in, was a traceback (s66).
+        why = "a file, not a folder" if os.path.isfile(plots) else e.strerror
+        print(f"plywood sweep: {plots}: cannot write: {why}", file=sys.stderr)
+        sys.exit(CANNOT_WRITE)
 
     def label(row):
         if not group_columns:
@@ -90,12 +120,9 @@ def main(out_dir):
             groups.append(key)
     for metric in metrics:
         values = {g: [] for g in groups}
-        for row in results:
-            text = row.get(metric, "")
-            if text not in ("", None):
-                v = float(text)
-                if math.isfinite(v):
-                    values[label(row)].append(v)
+        for line, row in zip(result_lines, results):
+            if row.get(metric, "") != "":
+                values[label(row)].append(value("plot_sweep", results_path, line, row, metric))
         if not any(values.values()):
             # Every run's value is null (undefined there: drift_percent of a robot that stood):
             # an empty box plot would draw axes round a figure of nothing.
@@ -115,7 +142,9 @@ def main(out_dir):
             s = stats.get(groups[i - 1])
             # One run has no interval (summary.csv leaves it empty): its dot is the whole story.
             if s and s["n"] not in ("", "0") and s["ci95_low"] != "":
-                mean, lo, hi = float(s["mean"]), float(s["ci95_low"]), float(s["ci95_high"])
+                line = summary_lines[summary.index(s)]
+                mean, lo, hi = (value("plot_sweep", summary_path, line, s, c)
+                                for c in ("mean", "ci95_low", "ci95_high"))
                 ax.errorbar([i + 0.3], [mean], yerr=[[mean - lo], [hi - mean]], fmt="D",
                             color="tab:red", ms=5, capsize=4,
                             label=None if labelled else "mean, 95 % CI")
@@ -135,6 +164,6 @@ def main(out_dir):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2:
-        sys.exit("usage: plot_sweep.py SWEEP_DIR")
+    if len(sys.argv) != 2 or sys.argv[1].startswith("-"):
+        fail("plot_sweep", "usage: plot_sweep.py SWEEP_DIR")
     main(sys.argv[1])

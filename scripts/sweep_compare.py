@@ -14,25 +14,50 @@ usage: scripts/sweep_compare.py BASE NEW [--metric M] [--threshold T] [--rise R]
                                  [--contacts M] [--rooms] [-v]
 BASE and NEW are finished sweep folders (or the results.csv inside one).
 """
-import argparse
-import csv
 import json
 import math
 import os
 import sys
 
-def read_sweep(path):
-    """The rows of a sweep's results.csv and its set axes (from sweep.json beside it)."""
-    folder = path if os.path.isdir(path) else os.path.dirname(path) or "."
-    csv_path = os.path.join(folder, "results.csv") if os.path.isdir(path) else path
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sweep_folder import OneLineParser, fail, finished_results, finite, value  # noqa: E402
+
+CELL_COLUMNS = ("experiment", "world", "profile", "seed")
+
+
+def read_sweep(path, metric, contacts, script="sweep_compare"):
+    """The header and rows of a finished sweep's results.csv (every run of its manifest, each with
+    a number for the metric and, where the column is, for the contacts) and its set axes (from
+    sweep.json beside it). A folder that does not exist, a sweep with failed or unfinished runs,
+    an absent column or a value that is no finite number is refused in one line (s66: tracebacks,
+    a verdict over the runs that happened to finish, inf taken as a value, a null contact count
+    read as no contact)."""
+    if os.path.isdir(path):
+        folder = path
+    elif os.path.basename(path) == "results.csv" and os.path.isfile(path):
+        folder = os.path.dirname(path) or "."
+    elif os.path.exists(path):
+        fail(script, f"{path}: not a sweep folder nor its results.csv")
+    else:
+        fail(script, f"{path}: no such folder")
+    meta_path = os.path.join(folder, "sweep.json")
     try:
-        with open(os.path.join(folder, "sweep.json")) as f:
+        with open(meta_path, encoding="utf-8") as f:
             axes = json.load(f)["axes"]
-        with open(csv_path, newline="") as f:
-            reader = csv.DictReader(f)
-            return reader.fieldnames, list(reader), axes
-    except (OSError, KeyError, ValueError) as error:
-        sys.exit(f"sweep_compare: {path}: not a finished sweep folder ({error})")
+    except FileNotFoundError:
+        fail(script, f"{meta_path}: no such file: {folder} is not a finished sweep's folder")
+    except (OSError, KeyError, TypeError, ValueError) as error:
+        fail(script, f"{meta_path}: axes: cannot read ({getattr(error, 'strerror', None) or error})")
+    if not isinstance(axes, list) or not all(isinstance(a, str) for a in axes):
+        fail(script, f"{meta_path}: axes: expected a list of names")
+    fields, rows, lines = finished_results(script, folder,
+                                           CELL_COLUMNS + tuple(axes) + (metric,))
+    csv_path = os.path.join(folder, "results.csv")
+    for line, row in zip(lines, rows):
+        value(script, csv_path, line, row, metric)
+        if contacts in fields:
+            value(script, csv_path, line, row, contacts)
+    return fields, rows, axes
 
 
 def percentile(sorted_values, q):
@@ -66,20 +91,18 @@ def number(text):
         return math.nan
 
 
-def paired_runs(base_path, new_path, metric):
+def paired_runs(base_path, new_path, metric, contacts, script="sweep_compare", whole=False):
     """The runs of two sweeps paired run by run: (pairs, shared axes, axes only NEW has, fields
     both have, NEW's rows). A run is the same run in both sweeps when its experiment file's name
     (the two may sit in different trees), world, profile, seed and the set axes both sweeps have
     agree. Axes only the new sweep has (the option under test) label its groups."""
-    base_fields, base_rows, base_axes = read_sweep(base_path)
-    new_fields, new_rows, new_axes = read_sweep(new_path)
-    if metric not in base_fields or metric not in new_fields:
-        sys.exit(f"sweep_compare: metric '{metric}' is not a column of both results.csv files")
+    base_fields, base_rows, base_axes = read_sweep(base_path, metric, contacts, script)
+    new_fields, new_rows, new_axes = read_sweep(new_path, metric, contacts, script)
     shared_axes = [a for a in base_axes if a in new_axes]
     extra_axes = [a for a in new_axes if a not in base_axes]
     for a in base_axes:
         if a not in new_axes and len({r[a] for r in base_rows}) > 1:
-            sys.exit(f"sweep_compare: BASE sweeps '{a}' over several values and NEW does not")
+            fail(script, f"BASE sweeps '{a}' over several values and NEW does not")
 
     def key(row):
         return ((os.path.basename(row["experiment"]), row["world"], row["profile"], row["seed"]) +
@@ -88,8 +111,14 @@ def paired_runs(base_path, new_path, metric):
     base_by_key = {key(r): r for r in base_rows}
     pairs = [(base_by_key[key(r)], r) for r in new_rows if key(r) in base_by_key]
     if not pairs:
-        sys.exit(f"sweep_compare: no run of {new_path} is in {base_path} (different sweeps?)")
+        fail(script, f"no run of {new_path} is in {base_path} (different sweeps?)")
     paired_base = {key(n) for _, n in pairs}
+    if whole and (len(paired_base) != len(base_rows) or len(pairs) != len(new_rows)):
+        # keeping_rule.py reads the bar on whole sweeps: a verdict on the runs that happened to
+        # pair is not the sweep's (s66).
+        fail(script, f"{len(base_rows) - len(paired_base)} runs of {base_path} and "
+             f"{len(new_rows) - len(pairs)} of {new_path} have no partner in the other sweep: "
+             "the bar and the rule are read on whole sweeps of the same runs")
     if len(paired_base) != len(base_rows) or len(pairs) != len(new_rows):
         print(f"note: {len(base_rows) - len(paired_base)} base runs and "
               f"{len(new_rows) - len(pairs)} new runs have no partner; only pairs are compared")
@@ -98,20 +127,23 @@ def paired_runs(base_path, new_path, metric):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser = OneLineParser(prog="sweep_compare", description=__doc__.split("\n")[0])
     parser.add_argument("base")
     parser.add_argument("new")
     parser.add_argument("--metric", default="occupancy.error")
-    parser.add_argument("--threshold", type=float, default=0.10)
-    parser.add_argument("--rise", type=float, default=0.02)
+    parser.add_argument("--threshold", default="0.10")
+    parser.add_argument("--rise", default="0.02")
     parser.add_argument("--contacts", default="sensors.bumpers.contact_samples")
     parser.add_argument("--rooms", action="store_true",
                         help="also print each group read per room (mean over its runs)")
     parser.add_argument("-v", "--verbose", action="store_true")
     args = parser.parse_args()
+    # float() took nan and inf: with nan no run was above the threshold (s66).
+    args.threshold = finite("sweep_compare", "--threshold", args.threshold)
+    args.rise = finite("sweep_compare", "--rise", args.rise)
 
     pairs, shared_axes, extra_axes, fields, new_rows = paired_runs(args.base, args.new,
-                                                                   args.metric)
+                                                                   args.metric, args.contacts)
 
     has_contacts = args.contacts in fields
     groups = {}
@@ -127,8 +159,6 @@ def main():
     for group, members in sorted(groups.items()):
         be = [number(b[args.metric]) for b, _ in members]
         ne = [number(n[args.metric]) for _, n in members]
-        if any(math.isnan(x) for x in be + ne):
-            sys.exit(f"sweep_compare: a run of group {group} has no number for {args.metric}")
         bc = [number(b[args.contacts]) if has_contacts else 0.0 for b, _ in members]
         nc = [number(n[args.contacts]) if has_contacts else 0.0 for _, n in members]
         label = ", ".join(group) if group else "all"
