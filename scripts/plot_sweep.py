@@ -16,27 +16,31 @@ CANNOT_WRITE = 3
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sweep_folder import BAD_INPUT, fail, read_csv, sweep_dir, value  # noqa: E402
 
-try:
-    import matplotlib  # noqa: E402
-except ImportError:
-    # plywood sweep checks for matplotlib before it calls this; run by hand without it, this was
-    # a ModuleNotFoundError traceback (s66).
-    print("plot_sweep: no plots: python3-matplotlib is not installed (Debian: apt-get install "
-          "python3-matplotlib)", file=sys.stderr)
-    sys.exit(BAD_INPUT)
 
-matplotlib.use("Agg")
-try:
-    import matplotlib.pyplot as plt  # noqa: E402
-except OSError as e:
-    # matplotlib writes its font cache into MPLCONFIGDIR (or ~/.config/matplotlib) on first use;
-    # a folder it may not write in (MPLCONFIGDIR=/sys) was a 30-line traceback (s65 fifty-fourth
-    # pass).
-    where = os.environ.get("MPLCONFIGDIR")
-    hint = f"MPLCONFIGDIR={where}" if where else "HOME"
-    print(f"plywood sweep: no plots: matplotlib cannot write its cache: {e.filename}: "
-          f"{e.strerror} (point {hint} at a writable folder)", file=sys.stderr)
-    sys.exit(CANNOT_WRITE)
+def pyplot():
+    """matplotlib.pyplot, imported once the sweep's files have been read and checked (a refusal
+    of bad input does not wait the second matplotlib takes to load)."""
+    try:
+        import matplotlib
+    except ImportError:
+        # plywood sweep checks for matplotlib before it calls this; run by hand without it, this
+        # was a ModuleNotFoundError traceback (s66).
+        print("plot_sweep: no plots: python3-matplotlib is not installed (Debian: apt-get install "
+              "python3-matplotlib)", file=sys.stderr)
+        sys.exit(BAD_INPUT)
+    matplotlib.use("Agg")
+    try:
+        import matplotlib.pyplot as plt
+    except OSError as e:
+        # matplotlib writes its font cache into MPLCONFIGDIR (or ~/.config/matplotlib) on first
+        # use; a folder it may not write in (MPLCONFIGDIR=/sys) was a 30-line traceback (s65
+        # fifty-fourth pass).
+        where = os.environ.get("MPLCONFIGDIR")
+        hint = f"MPLCONFIGDIR={where}" if where else "HOME"
+        print(f"plywood sweep: no plots: matplotlib cannot write its cache: {e.filename}: "
+              f"{e.strerror} (point {hint} at a writable folder)", file=sys.stderr)
+        sys.exit(CANNOT_WRITE)
+    return plt
 
 
 def say(text):
@@ -98,14 +102,6 @@ def main(out_dir):
         # Every cell failed (fuzz30: this was a ValueError traceback from max() of nothing).
         say("plot_sweep: no finished run in results.csv; no plots")
         return
-    plots = os.path.join(out_dir, "plots")
-    try:
-        os.makedirs(plots, exist_ok=True)
-    except OSError as e:
-        # A plots/ that is a file, or a folder it may not write in, was a traceback (s66).
-        why = "a file, not a folder" if os.path.isfile(plots) else e.strerror
-        print(f"plywood sweep: {plots}: cannot write: {why}", file=sys.stderr)
-        sys.exit(CANNOT_WRITE)
 
     def label(row):
         if not group_columns:
@@ -118,17 +114,38 @@ def main(out_dir):
         key = label(row)
         if key not in groups:
             groups.append(key)
+    # Every value read before the first plot: a refusal leaves no plots of part of the sweep.
+    values_of = {}
     for metric in metrics:
-        values = {g: [] for g in groups}
+        values = values_of[metric] = {g: [] for g in groups}
         for line, row in zip(result_lines, results):
             if row.get(metric, "") != "":
                 values[label(row)].append(value("plot_sweep", results_path, line, row, metric))
+    intervals = {}
+    for line, s in zip(summary_lines, summary):
+        if s["n"] not in ("", "0") and s["ci95_low"] != "":
+            intervals[line] = tuple(value("plot_sweep", summary_path, line, s, c)
+                                    for c in ("mean", "ci95_low", "ci95_high"))
+    # matplotlib only when there is something to plot, before plots/ is made (without it, no
+    # empty plots/ is left behind).
+    plt = pyplot() if any(any(v.values()) for v in values_of.values()) else None
+    plots = os.path.join(out_dir, "plots")
+    try:
+        os.makedirs(plots, exist_ok=True)
+    except OSError as e:
+        # A plots/ that is a file, or a folder it may not write in, was a traceback (s66).
+        why = "a file, not a folder" if os.path.isfile(plots) else e.strerror
+        print(f"plywood sweep: {plots}: cannot write: {why}", file=sys.stderr)
+        sys.exit(CANNOT_WRITE)
+    for metric in metrics:
+        values = values_of[metric]
         if not any(values.values()):
             # Every run's value is null (undefined there: drift_percent of a robot that stood):
             # an empty box plot would draw axes round a figure of nothing.
             say(f"plot_sweep: {metric}: no run has a value (every run's is null); no plot")
             continue
-        stats = {label(r): r for r in summary if r["metric"] == metric}
+        stats = {label(r): (line, r) for line, r in zip(summary_lines, summary)
+                 if r["metric"] == metric}
         width = max(4.0, 0.09 * max(len(line) for g in groups for line in g.split("\n")) * len(groups) + 1.5)
         fig, ax = plt.subplots(figsize=(min(width, 30.0), 4.6))
         data = [values[g] for g in groups]
@@ -141,10 +158,8 @@ def main(out_dir):
             ax.plot(xs, d, "o", ms=3, alpha=0.6, color="tab:blue")
             s = stats.get(groups[i - 1])
             # One run has no interval (summary.csv leaves it empty): its dot is the whole story.
-            if s and s["n"] not in ("", "0") and s["ci95_low"] != "":
-                line = summary_lines[summary.index(s)]
-                mean, lo, hi = (value("plot_sweep", summary_path, line, s, c)
-                                for c in ("mean", "ci95_low", "ci95_high"))
+            if s and s[0] in intervals:
+                mean, lo, hi = intervals[s[0]]
                 ax.errorbar([i + 0.3], [mean], yerr=[[mean - lo], [hi - mean]], fmt="D",
                             color="tab:red", ms=5, capsize=4,
                             label=None if labelled else "mean, 95 % CI")

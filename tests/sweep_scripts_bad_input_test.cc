@@ -225,10 +225,12 @@ TEST_F(SweepScriptsTest, PlotSweepNamesTheFileAndFieldItCannotPlot) {
   WriteSweep(dir / "whole");
   ExpectRefusal(RunScript(dir, "plot_sweep.py", "whole", "-S"),
                 "plot_sweep: no plots: python3-matplotlib is not installed");
-  WriteFile(dir / "whole" / "plots", "a file\n");
-  const CliResult r = RunScript(dir, "plot_sweep.py", "whole");
+  EXPECT_FALSE(fs::exists(dir / "whole" / "plots"));
+  WriteSweep(dir / "file");
+  WriteFile(dir / "file" / "plots", "a file\n");
+  const CliResult r = RunScript(dir, "plot_sweep.py", "file");
   EXPECT_EQ(r.exit_code, 3) << r.err;  // CANNOT_WRITE: plywood sweep then exits 1
-  EXPECT_EQ(r.err, "plywood sweep: whole/plots: cannot write: a file, not a folder\n");
+  EXPECT_EQ(r.err, "plywood sweep: file/plots: cannot write: a file, not a folder\n");
 }
 
 // false_lines.py gave "0 lines, 0 false (pooled precision 1.000)" of an extractor no run has (a

@@ -1,0 +1,135 @@
+// The shipped scripts that read one run's folder or run plywood themselves
+// (scripts/encoder_transient_calibration, stop_displacement_calibration, line_worlds_table,
+// sonar_map_worlds_table, odometry_table, check_generated_worlds) given bad input (s66 fifty-sixth
+// pass): one line naming the file and the field (or the argument), exit 2, never a traceback,
+// never a figure of half a run or a pass of no test. Every refusal here comes before any run.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "plywood_paths.h"
+#include "tests/support/cli_test_support.h"
+#include "tests/support/mujoco_test_support.h"
+
+namespace plywood {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::CliResult;
+using testing::MakeTempDir;
+using testing::Slurp;
+using testing::SourceRoot;
+using testing::WriteFile;
+
+bool Python3Installed() { return std::system("/usr/bin/python3 -c '' >/dev/null 2>&1") == 0; }
+
+bool YamlInstalled() {
+  return std::system("/usr/bin/python3 -c 'import yaml' >/dev/null 2>&1") == 0;
+}
+
+// Runs `[prefix] scripts/SCRIPT args` in `dir`, stdout and stderr into files there.
+CliResult RunScript(const fs::path& dir, const std::string& script, const std::string& args,
+                    const std::string& prefix = "") {
+  const std::string command = "cd '" + dir.string() + "' && " + prefix + " '" +
+                              (SourceRoot() / "scripts" / script).string() + "' " + args +
+                              " >stdout 2>stderr";
+  const int status = std::system(command.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, Slurp(dir / "stdout"),
+          Slurp(dir / "stderr")};
+}
+
+void ExpectRefusal(const CliResult& r, const std::string& text) {
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err.find("Traceback"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(text), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+  EXPECT_EQ(r.out.find("odometry.ekf."), std::string::npos) << r.out;  // no calibrated value
+}
+
+// A calibration run's folder as plywood run writes it: a hard braking at 0.2 s (both wheels from
+// 0.4 m/s to rest in one tenth of a second), so both scripts find what they measure.
+void WriteRun(const fs::path& run, bool finished, const std::string& encoder_ticks = "63") {
+  WriteFile(run / "config.yaml",
+            "robot:\n  nominal:\n    wheel_radius_m: 0.0975\n    track_m: 0.33\n"
+            "    encoder_ticks_per_rev: 39000\n");
+  WriteFile(run / "trajectory.csv",
+            "time_s,truth_x_m,truth_y_m,truth_theta_rad\n0,0,0,0\n0.1,0.04,0,0\n0.2,0.08,0,0\n"
+            "0.3,0.08,0,0.01\n");
+  WriteFile(run / "encoders.csv", "time_s,left_ticks,right_ticks\n0,0,0\n0.1," + encoder_ticks +
+                                      ",63\n0.2,126,126\n0.3,126,136\n");
+  if (finished) WriteFile(run / "complete.json", "{\"files\": {}}\n");
+}
+
+// Both calibrations measured a run killed half way (no complete.json) as if whole, and a missing
+// folder, a tick count that is no number or a python3 without yaml was a traceback.
+void CheckCalibrationRefusals(const std::string& script) {
+  if (!Python3Installed()) GTEST_SKIP() << "python3 is not installed";
+  const fs::path dir = MakeTempDir(script);
+  WriteRun(dir / "killed", false);
+  WriteRun(dir / "text", true, "sixty");
+  ExpectRefusal(RunScript(dir, script, "nowhere"), script + ": nowhere: no such folder");
+  ExpectRefusal(RunScript(dir, script, "killed"),
+                script + ": killed: not a finished run: no complete.json");
+  // python3 -S leaves out the packages Debian installs, python3-yaml among them.
+  ExpectRefusal(RunScript(dir, script, "killed", "/usr/bin/python3 -S"),
+                script + ": needs python3-yaml");
+  if (!YamlInstalled()) GTEST_SKIP() << "python3-yaml is not installed";
+  ExpectRefusal(RunScript(dir, script, "text"),
+                script +
+                    ": text/encoders.csv: line 3: left_ticks: expected a whole number, got "
+                    "'sixty'");
+}
+
+TEST(RunScriptsTest, EncoderTransientCalibrationRefusesRunsNotFinishedAndTextTicks) {
+  CheckCalibrationRefusals("encoder_transient_calibration");
+}
+
+TEST(RunScriptsTest, StopDisplacementCalibrationRefusesRunsNotFinishedAndTextTicks) {
+  CheckCalibrationRefusals("stop_displacement_calibration");
+}
+
+// The world tables took a FIRST or LAST that is no number to sh's "Illegal number", made no world
+// and ended in a traceback from a table of nothing (line_worlds_table) or two lines of sh
+// (sonar_map_worlds_table); odometry_table's missing plywood was sh's "not found", exit 127.
+TEST(RunScriptsTest, WorldTablesAndTheOdometryTableRefuseArgumentsBeforeAnyRun) {
+  if (!Python3Installed()) GTEST_SKIP() << "python3 is not installed";
+  const fs::path dir = MakeTempDir("WorldTablesBadInput");
+  const std::string build = PLYWOOD_BINARY_DIR;
+  ExpectRefusal(RunScript(dir, "line_worlds_table", "abc 1 split_and_merge " + build + " 1 room"),
+                "line_worlds_table: FIRST: expected a whole number >= 0 of at most 9 digits, got "
+                "'abc'");
+  ExpectRefusal(RunScript(dir, "sonar_map_worlds_table", "0 x " + build),
+                "sonar_map_worlds_table: LAST: expected a whole number >= 0 of at most 9 digits, "
+                "got 'x'");
+  ExpectRefusal(RunScript(dir, "sonar_map_worlds_table", "0 1 " + build + " -3"),
+                "sonar_map_worlds_table: SEED: expected a whole number >= 0");
+  ExpectRefusal(
+      RunScript(dir, "line_worlds_table", "0 1 split_and_merge " + (dir / "nobuild").string()),
+      "line_worlds_table: BUILD_DIR: " + (dir / "nobuild" / "apps" / "plywood").string() +
+          ": no such program");
+  ExpectRefusal(RunScript(dir, "odometry_table", (dir / "nobuild").string()),
+                "odometry_table: BUILD_DIR: " + (dir / "nobuild" / "apps" / "plywood").string() +
+                    ": no such program");
+}
+
+// check_generated_worlds with a family no test has ran no test and passed (exit 0); a SEED that is
+// no number was a test failure amid gtest's output, the worlds then checked with seed 1.
+TEST(RunScriptsTest, CheckGeneratedWorldsRefusesAFamilyNoTestHasAndSeedsThatAreNoNumbers) {
+  const fs::path dir = MakeTempDir("CheckWorldsBadInput");
+  const std::string build = PLYWOOD_BINARY_DIR;
+  if (!fs::exists(fs::path(build) / "sim" / "sim.generated_worlds_test"))
+    GTEST_SKIP() << "sim.generated_worlds_test is not built";
+  ExpectRefusal(RunScript(dir, "check_generated_worlds", "1 2 " + build + " rooms"),
+                "check_generated_worlds: FAMILY: no family 'rooms'");
+  ExpectRefusal(RunScript(dir, "check_generated_worlds", "abc 2 " + build + " room"),
+                "check_generated_worlds: SEED: expected a whole number in [0, 1000000], got 'abc'");
+  ExpectRefusal(RunScript(dir, "check_generated_worlds", "1 0 " + build + " room"),
+                "check_generated_worlds: COUNT: expected a whole number in [1, 1000000], got '0'");
+}
+
+}  // namespace
+}  // namespace plywood
