@@ -10,13 +10,17 @@ counted apart.
     scripts/sonar_map_contacts.py SWEEP_DIR [SWEEP_DIR ...]
 """
 import csv
-import glob
 import json
 import math
 import os
 import statistics
 import sys
 from collections import Counter
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sweep_folder import fail, finished_results  # noqa: E402
+
+SCRIPT = 'sonar_map_contacts'
 
 
 def episodes(run):
@@ -54,12 +58,15 @@ def episodes(run):
 
 def main(dirs):
     per_run = {}
+    # Every folder a finished sweep's, each run of it counted: a missing folder was a traceback, and
+    # a sweep killed half way or with failed runs was counted on the runs that finished (s66).
+    whole = {d: finished_results(SCRIPT, d)[1] for d in dirs}
     for d in dirs:
         cells = {r['id']: r for r in csv.DictReader(open(os.path.join(d, 'cells.csv')))}
-        for run in sorted(glob.glob(os.path.join(d, 'runs', '*'))):
+        for run in sorted(os.path.join(d, 'runs', r['id']) for r in whole[d]):
             path = os.path.join(run, 'metrics.json')
             if not os.path.exists(path):
-                continue
+                fail(SCRIPT, f'{path}: no such file (a run the sweep lists as finished)')
             metrics = json.load(open(path))
             if metrics.get('sensors', {}).get('bumpers', {}).get('contact_samples', 0) == 0:
                 continue
@@ -80,6 +87,6 @@ def main(dirs):
 
 
 if __name__ == '__main__':
-    if len(sys.argv) < 2:
-        sys.exit('usage: sonar_map_contacts.py SWEEP_DIR [SWEEP_DIR ...]')
+    if len(sys.argv) < 2 or any(a.startswith('-') for a in sys.argv[1:]):
+        fail(SCRIPT, 'usage: sonar_map_contacts.py SWEEP_DIR [SWEEP_DIR ...]')
     main(sys.argv[1:])

@@ -15,14 +15,19 @@ the TOP worst runs with their classes. Needs numpy (Debian: python3-numpy).
     scripts/sonar_map_error_causes.py SWEEP_DIR [TOP]
 """
 import csv
-import glob
 import json
 import os
 import re
 import sys
 from collections import deque
 
-import numpy as np
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sweep_folder import fail, finished_results  # noqa: E402
+
+try:
+    import numpy as np
+except ImportError:
+    fail(os.path.basename(sys.argv[0]), 'needs numpy (Debian: python3-numpy)')
 
 R = 0.01
 def load(run):
@@ -116,15 +121,24 @@ def analyse(run):
     e = {k: v * R * R / tot for k, v in cats.items()}
     return met['occupancy']['error'], e, met, len(boxes)
 if __name__ == '__main__':
+    SCRIPT = 'sonar_map_error_causes'
+    # No folder, a TOP that is no number or a folder that is no seed 001 sweep was a traceback; a
+    # sweep with runs missing gave figures over the runs that finished (s66).
+    if len(sys.argv) not in (2, 3) or sys.argv[1].startswith('-'):
+        fail(SCRIPT, 'usage: sonar_map_error_causes.py SWEEP_DIR [TOP]')
+    if len(sys.argv) > 2 and not sys.argv[2].isdigit():
+        fail(SCRIPT, f"TOP: expected a whole number >= 0, got '{sys.argv[2]}'")
     d = sys.argv[1]
+    whole = finished_results(SCRIPT, d, ('occupancy.error',))[1]
     rows = []
-    for run in sorted(glob.glob(os.path.join(d, 'runs', '*'))):
-        if not os.path.exists(os.path.join(run, 'metrics.json')): continue
+    for run in sorted(os.path.join(d, 'runs', r['id']) for r in whole):
         try:
             e, cats, met, nb = analyse(run)
         except Exception as ex:
             print('ERR', run, ex); continue
         rows.append((e, cats, met['run']['world'], met['run']['seed'], met['sensors']['bumpers']['contact_samples'], met['occupancy']['grid_error'], run, nb, met['exploration']['end_reason']))
+    if not rows:
+        fail(SCRIPT, f'{d}: no run could be analysed (each is an ERR line above)')
     rows.sort(key=lambda r: -r[0])
     es = np.array([r[0] for r in rows])
     srt = np.sort(es); p90 = srt[int(np.ceil(0.9 * len(srt))) - 1]

@@ -14,12 +14,16 @@ occupancy.error above 0.10 (--worlds: every world's c and its runs' errors).
 Only axis-aligned boxes are read (the seed001 family's walls and obstacles); any other geom named
 wall_* or obstacle_* is refused.
 """
-import argparse
 import csv
 import math
 import os
 import sys
 import xml.etree.ElementTree as ET
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sweep_folder import OneLineParser, fail, finished_results, finite  # noqa: E402
+
+SCRIPT = "sonar_map_narrow_gaps.py"
 
 try:
     import numpy as np
@@ -82,11 +86,19 @@ def reachable_clearance(world, share):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = OneLineParser(prog=SCRIPT, description=__doc__.splitlines()[0])
     parser.add_argument("results", nargs="+")
-    parser.add_argument("--share", type=float, default=0.9)
+    parser.add_argument("--share", default="0.9")
     parser.add_argument("--worlds", action="store_true")
     args = parser.parse_args()
+    args.share = finite(SCRIPT, "--share", args.share)
+    # A results.csv that is not there was a traceback after the tables of those before it, and a
+    # sweep missing runs was binned on the runs that finished (s66).
+    for results in args.results:
+        if os.path.basename(results) != "results.csv" or not os.path.isfile(results):
+            what = "no such file" if not os.path.exists(results) else "not a sweep's results.csv"
+            fail(SCRIPT, f"{results}: {what}")
+        finished_results(SCRIPT, os.path.dirname(os.path.abspath(results)))
     if not 0.0 < args.share <= 1.0:
         sys.exit(f"sonar_map_narrow_gaps.py: --share must be in (0, 1], got {args.share}")
     clearance = {}

@@ -14,15 +14,20 @@ Also the end reason and time, contact samples and the encoder's heading / end po
 Needs numpy and scipy (Debian: python3-numpy, python3-scipy).
 """
 import csv
-import glob
 import heapq
 import importlib.util
 import json
 import os
 import sys
 
-import numpy as np
-from scipy import ndimage
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sweep_folder import fail, finished_results, finite  # noqa: E402
+
+try:
+    import numpy as np
+    from scipy import ndimage
+except ImportError:
+    fail('sonar_map_unvisited_space', 'needs numpy and scipy (Debian: python3-numpy, python3-scipy)')
 
 _spec = importlib.util.spec_from_file_location(
     'causes', os.path.join(os.path.dirname(os.path.abspath(__file__)), 'sonar_map_error_causes.py'))
@@ -96,11 +101,18 @@ def unvisited(run):
 
 
 if __name__ == '__main__':
-    lo, hi = float(sys.argv[1]), float(sys.argv[2])
+    SCRIPT = 'sonar_map_unvisited_space'
+    # A bound that is no number was a traceback, NaN bounds or a missing folder printed no run
+    # (exit 0), a folder that is no seed 001 sweep was a KeyError, and a sweep missing runs was read
+    # on the runs that finished (s66).
+    if len(sys.argv) < 4 or any(a.startswith('-') and a.lstrip('-')[:1].isalpha() for a in sys.argv[1:]):
+        fail(SCRIPT, f'usage: {SCRIPT}.py LO HI SWEEP_DIR [SWEEP_DIR ...]')
+    lo, hi = finite(SCRIPT, 'LO', sys.argv[1]), finite(SCRIPT, 'HI', sys.argv[2])
+    if not lo < hi:
+        fail(SCRIPT, f'LO {sys.argv[1]} is not below HI {sys.argv[2]}: the range (LO, HI] holds no e')
+    whole = {d: finished_results(SCRIPT, d, ('occupancy.error',))[1] for d in sys.argv[3:]}
     for d in sys.argv[3:]:
-        for run in sorted(glob.glob(os.path.join(d, 'runs', '*'))):
-            if not os.path.exists(os.path.join(run, 'metrics.json')):
-                continue
+        for run in sorted(os.path.join(d, 'runs', r['id']) for r in whole[d]):
             e = json.load(open(os.path.join(run, 'metrics.json')))['occupancy']['error']
             if not lo < e <= hi:
                 continue

@@ -1,7 +1,8 @@
 // The shipped scripts that read a sweep's folder (scripts/sweep_table.py, sweep_compare.py,
-// keeping_rule.py, plot_sweep.py, false_lines.py) given bad input (s66 fifty-sixth pass): one line
-// naming the file and the field (or the flag), exit 2, never a traceback, never a table over fewer
-// runs than the sweep has. The folders are written by hand, as `plywood sweep` writes them.
+// keeping_rule.py, plot_sweep.py, false_lines.py and seed 001's sonar_map_*.py analyses) given bad
+// input (s66 fifty-sixth pass): one line naming the file and the field (or the flag), exit 2, never
+// a traceback, never a table over fewer runs than the sweep has. The folders are written by hand,
+// as `plywood sweep` writes them.
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -24,6 +25,10 @@ using testing::SourceRoot;
 using testing::WriteFile;
 
 bool Python3Installed() { return std::system("/usr/bin/python3 -c '' >/dev/null 2>&1") == 0; }
+
+bool Imports(const std::string& modules) {
+  return std::system(("/usr/bin/python3 -c 'import " + modules + "' >/dev/null 2>&1").c_str()) == 0;
+}
 
 bool MatplotlibInstalled() {
   return std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") == 0;
@@ -263,6 +268,57 @@ TEST_F(SweepScriptsTest, FalseLinesRefusesAnExtractorNoRunHasAndSweepsMissingRun
   WriteFile(dir / "lines" / "results.csv", kResultsHeader + WithoutRow(0));
   ExpectRefusal(RunScript(dir, "false_lines.py", "lines"),
                 "lines/results.csv: holds 3 of the sweep's 4 runs");
+}
+
+// Seed 001's analysis scripts (docs/sonar_map/history.md) over sweep folders: a missing folder was
+// a traceback or, for the two that take LO HI, no run and exit 0; a sweep missing runs was read on
+// the runs that finished; LO and HI that are no numbers a traceback, NaN bounds no run, exit 0.
+TEST_F(SweepScriptsTest, SonarMapContactsRefusesSweepsMissingRunsAndMissingFolders) {
+  const fs::path dir = MakeTempDir("SonarMapContactsBadInput");
+  WriteSweep(dir / "killed", WithoutRow(1));
+  ExpectRefusal(RunScript(dir, "sonar_map_contacts.py", "killed"),
+                "sonar_map_contacts: killed/results.csv: holds 3 of the sweep's 4 runs");
+  ExpectRefusal(RunScript(dir, "sonar_map_contacts.py", "nowhere"),
+                "sonar_map_contacts: nowhere: no such folder");
+}
+
+TEST_F(SweepScriptsTest, SonarMapErrorCausesRefusesSweepsMissingRunsAndATopThatIsNoNumber) {
+  if (!Imports("numpy")) GTEST_SKIP() << "python3-numpy is not installed";
+  const fs::path dir = MakeTempDir("SonarMapCausesBadInput");
+  WriteSweep(dir / "killed", WithoutRow(1));
+  ExpectRefusal(RunScript(dir, "sonar_map_error_causes.py", "killed"),
+                "sonar_map_error_causes: killed/results.csv: holds 3 of the sweep's 4 runs");
+  ExpectRefusal(RunScript(dir, "sonar_map_error_causes.py", "killed 3x"),
+                "sonar_map_error_causes: TOP: expected a whole number >= 0, got '3x'");
+}
+
+TEST_F(SweepScriptsTest, SonarMapErrorMechanismsRefusesBoundsThatAreNoNumbersAndMissingFolders) {
+  if (!Imports("numpy")) GTEST_SKIP() << "python3-numpy is not installed";
+  const fs::path dir = MakeTempDir("SonarMapMechanismsBadInput");
+  ExpectRefusal(RunScript(dir, "sonar_map_error_mechanisms.py", "0 1 nowhere"),
+                "sonar_map_error_mechanisms: nowhere: no such folder");
+  ExpectRefusal(RunScript(dir, "sonar_map_error_mechanisms.py", "nan 0.1 nowhere"),
+                "sonar_map_error_mechanisms: LO: expected a finite number, got 'nan'");
+}
+
+TEST_F(SweepScriptsTest, SonarMapUnvisitedSpaceRefusesEmptyRangesAndSweepsMissingRuns) {
+  if (!Imports("numpy, scipy")) GTEST_SKIP() << "python3-numpy or python3-scipy is not installed";
+  const fs::path dir = MakeTempDir("SonarMapUnvisitedBadInput");
+  WriteSweep(dir / "killed", WithoutRow(1));
+  ExpectRefusal(RunScript(dir, "sonar_map_unvisited_space.py", "0 1 killed"),
+                "sonar_map_unvisited_space: killed/results.csv: holds 3 of the sweep's 4 runs");
+  ExpectRefusal(RunScript(dir, "sonar_map_unvisited_space.py", "0.1 0 killed"),
+                "sonar_map_unvisited_space: LO 0.1 is not below HI 0");
+}
+
+TEST_F(SweepScriptsTest, SonarMapNarrowGapsRefusesMissingFilesAndSweepsMissingRuns) {
+  if (!Imports("numpy, scipy")) GTEST_SKIP() << "python3-numpy or python3-scipy is not installed";
+  const fs::path dir = MakeTempDir("SonarMapNarrowGapsBadInput");
+  WriteSweep(dir / "killed", WithoutRow(1));
+  ExpectRefusal(RunScript(dir, "sonar_map_narrow_gaps.py", "nowhere/results.csv"),
+                "sonar_map_narrow_gaps.py: nowhere/results.csv: no such file");
+  ExpectRefusal(RunScript(dir, "sonar_map_narrow_gaps.py", "killed/results.csv"),
+                "killed/results.csv: holds 3 of the sweep's 4 runs");
 }
 
 }  // namespace
