@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <tuple>
 
 #include "plywood_paths.h"
 #include "tests/support/cli_test_support.h"
@@ -129,6 +130,35 @@ TEST(RunScriptsTest, CheckGeneratedWorldsRefusesAFamilyNoTestHasAndSeedsThatAreN
                 "check_generated_worlds: SEED: expected a whole number in [0, 1000000], got 'abc'");
   ExpectRefusal(RunScript(dir, "check_generated_worlds", "1 0 " + build + " room"),
                 "check_generated_worlds: COUNT: expected a whole number in [1, 1000000], got '0'");
+}
+
+// scripts/demo and scripts/test ignored any argument (`scripts/test -R sweep`, `scripts/demo
+// --help`): they installed packages, built and ran everything. Each is run from a copy of scripts/
+// whose setup only leaves a mark, so the test never installs or builds.
+TEST(RunScriptsTest, DemoAndTestRefuseArgumentsBeforeTheyInstallOrBuild) {
+  const fs::path dir = MakeTempDir("DemoAndTestArguments");
+  const fs::path mark = dir / "setup_ran";
+  WriteFile(dir / "tree" / "scripts" / "setup",
+            "#!/bin/sh\ntouch '" + mark.string() + "'\nexit 1\n");
+  for (const std::string script : {"demo", "test"}) {
+    fs::copy_file(SourceRoot() / "scripts" / script, dir / "tree" / "scripts" / script,
+                  fs::copy_options::overwrite_existing);
+  }
+  fs::permissions(dir / "tree" / "scripts", fs::perms::owner_all, fs::perm_options::add);
+  for (const auto& e : fs::directory_iterator(dir / "tree" / "scripts"))
+    fs::permissions(e.path(), fs::perms::owner_exec, fs::perm_options::add);
+  for (const auto& [script, arg, first] :
+       {std::tuple{"demo", "--help", "--help"}, std::tuple{"test", "-R sweep", "-R"}}) {
+    SCOPED_TRACE(script);
+    const std::string command = "'" + (dir / "tree" / "scripts" / script).string() + "' " + arg +
+                                " >'" + (dir / "stdout").string() + "' 2>'" +
+                                (dir / "stderr").string() + "'";
+    const int status = std::system(command.c_str());
+    const CliResult r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, Slurp(dir / "stdout"),
+                      Slurp(dir / "stderr")};
+    ExpectRefusal(r, std::string(script) + ": '" + first + "': takes no arguments");
+    EXPECT_FALSE(fs::exists(mark)) << "setup ran";
+  }
 }
 
 }  // namespace

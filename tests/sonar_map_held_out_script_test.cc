@@ -159,5 +159,17 @@ TEST(SonarMapHeldOutScriptTest, AMissingProgramAnUnwritableOutOrNegativeJobsIsNa
   EXPECT_FALSE(fs::exists(dir / "o"));
 }
 
+// s66 (fifty-sixth pass): an unknown flag, a --model of no model or a --jobs of no number was
+// argparse's usage and its error, four lines.
+TEST(SonarMapHeldOutScriptTest, AnUnknownFlagOrAValueOfNoChoiceIsNamedInOneLine) {
+  const fs::path dir = MakeTempDir("SonarMapHeldOutUsage");
+  ExpectOneLineNaming(RunScript(dir, "--table-only --sedes 60"),
+                      "sonar_map_held_out: unrecognized arguments: --sedes 60");
+  ExpectOneLineNaming(RunScript(dir, "--table-only --model cnn"),
+                      "sonar_map_held_out: argument --model: invalid choice: 'cnn'");
+  ExpectOneLineNaming(RunScript(dir, "--table-only --jobs x"),
+                      "sonar_map_held_out: argument --jobs: invalid int value: 'x'");
+}
+
 }  // namespace
 }  // namespace plywood
