@@ -19,7 +19,8 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sweep_folder import fail, finished_results, read_csv, value  # noqa: E402
+from sweep_folder import (end_quietly_when_the_reader_goes, fail, finished_results,  # noqa: E402
+                          read_csv, value)
 
 SCRIPT = "false_lines"
 LINE_COLUMNS = ("extractor", "scan", "points", "truth_segment", "x1_m", "y1_m", "x2_m", "y2_m")
@@ -72,7 +73,7 @@ def main(sweep_dir, extractor, listing):
     rows = []
     # Every run of the sweep, each with its lines.csv: runs that failed or never finished were
     # skipped without a word, a precision over part of the sweep (s66).
-    _, results, _ = finished_results(SCRIPT, sweep_dir)
+    _, results, _ = finished_results(SCRIPT, sweep_dir, run_files=("config.yaml", "lines.csv"))
     runs_dir = os.path.join(sweep_dir, "runs")
     extractors = set()
     for run in sorted(r["id"] for r in results):
@@ -135,6 +136,7 @@ def main(sweep_dir, extractor, listing):
 
 
 if __name__ == "__main__":
+    end_quietly_when_the_reader_goes()
     args = [a for a in sys.argv[1:] if a != "--list"]
     if not args or len(args) > 2:
         fail(SCRIPT, "usage: false_lines.py SWEEP_DIR [EXTRACTOR] [--list]")

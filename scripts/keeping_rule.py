@@ -19,7 +19,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sweep_compare import number, paired_runs, percentile  # noqa: E402
-from sweep_folder import OneLineParser, fail  # noqa: E402
+from sweep_folder import OneLineParser, end_quietly_when_the_reader_goes, fail  # noqa: E402
 
 SCRIPT = "keeping_rule"
 
@@ -106,4 +106,5 @@ def main():
 
 
 if __name__ == "__main__":
+    end_quietly_when_the_reader_goes()
     sys.exit(main())

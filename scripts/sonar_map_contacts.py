@@ -60,7 +60,7 @@ def main(dirs):
     per_run = {}
     # Every folder a finished sweep's, each run of it counted: a missing folder was a traceback, and
     # a sweep killed half way or with failed runs was counted on the runs that finished (s66).
-    whole = {d: finished_results(SCRIPT, d)[1] for d in dirs}
+    whole = {d: finished_results(SCRIPT, d, run_files=('metrics.json',))[1] for d in dirs}
     for d in dirs:
         cells = {r['id']: r for r in csv.DictReader(open(os.path.join(d, 'cells.csv')))}
         for run in sorted(os.path.join(d, 'runs', r['id']) for r in whole[d]):

@@ -129,7 +129,8 @@ if __name__ == '__main__':
     if len(sys.argv) > 2 and not sys.argv[2].isdigit():
         fail(SCRIPT, f"TOP: expected a whole number >= 0, got '{sys.argv[2]}'")
     d = sys.argv[1]
-    whole = finished_results(SCRIPT, d, ('occupancy.error',))[1]
+    whole = finished_results(SCRIPT, d, ('occupancy.error',),
+                             ('metrics.json', 'cognitive_map.json', 'walls.csv', 'config.yaml'))[1]
     rows = []
     for run in sorted(os.path.join(d, 'runs', r['id']) for r in whole):
         try:

@@ -110,7 +110,9 @@ if __name__ == '__main__':
     lo, hi = finite(SCRIPT, 'LO', sys.argv[1]), finite(SCRIPT, 'HI', sys.argv[2])
     if not lo < hi:
         fail(SCRIPT, f'LO {sys.argv[1]} is not below HI {sys.argv[2]}: the range (LO, HI] holds no e')
-    whole = {d: finished_results(SCRIPT, d, ('occupancy.error',))[1] for d in sys.argv[3:]}
+    whole = {d: finished_results(SCRIPT, d, ('occupancy.error',),
+                                 ('metrics.json', 'cognitive_map.json', 'walls.csv', 'trajectory.csv'))[1]
+             for d in sys.argv[3:]}
     for d in sys.argv[3:]:
         for run in sorted(os.path.join(d, 'runs', r['id']) for r in whole[d]):
             e = json.load(open(os.path.join(run, 'metrics.json')))['occupancy']['error']

@@ -20,7 +20,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sweep_folder import OneLineParser, fail, finished_results, finite, value  # noqa: E402
+from sweep_folder import (OneLineParser, end_quietly_when_the_reader_goes, fail,  # noqa: E402
+                          finished_results, finite, value)
 
 CELL_COLUMNS = ("experiment", "world", "profile", "seed")
 
@@ -191,4 +192,5 @@ def main():
 
 
 if __name__ == "__main__":
+    end_quietly_when_the_reader_goes()
     main()

@@ -8,6 +8,7 @@ import argparse
 import csv
 import math
 import os
+import signal
 import sys
 
 BAD_INPUT = 2
@@ -16,6 +17,13 @@ BAD_INPUT = 2
 def fail(script, text):
     print(f"{script}: {text}", file=sys.stderr)
     sys.exit(BAD_INPUT)
+
+
+def end_quietly_when_the_reader_goes():
+    """A table piped into a reader that stops early (`sweep_table.py DIR | head -3`) ended in a
+    BrokenPipeError traceback (s66): the script ends as `cat` would, without a word. Not for
+    plot_sweep.py, whose plots must still be written (s65)."""
+    signal.signal(signal.SIGPIPE, signal.SIG_DFL)
 
 
 class OneLineParser(argparse.ArgumentParser):
@@ -49,7 +57,7 @@ def read_csv(script, path, required=()):
     """(header, rows as dicts, first line number of each row) of a CSV file with a header line,
     every row as wide as the header and the required columns present."""
     try:
-        with open(path, newline="", encoding="utf-8") as f:
+        with open(path, newline="", encoding="utf-8-sig") as f:
             reader = csv.reader(f)
             lines = [(reader.line_num, row) for row in reader]
     except FileNotFoundError:
@@ -99,10 +107,11 @@ def count_rows(path):
         return 0
 
 
-def finished_results(script, folder, required=()):
+def finished_results(script, folder, required=(), run_files=()):
     """(header, rows, line numbers) of a sweep's results.csv, refused unless it holds every run of
     the sweep's manifest (cells.csv): a sweep still running, killed half way or with failed runs
-    has fewer rows, and a mean, p90 or bar over them is not the sweep's."""
+    has fewer rows, and a mean, p90 or bar over them is not the sweep's. Each run's folder must
+    hold run_files (runs/ID/NAME)."""
     sweep_dir(script, folder)
     cells_path = os.path.join(folder, "cells.csv")
     if not os.path.isfile(cells_path):
@@ -126,4 +135,10 @@ def finished_results(script, folder, required=()):
         fail(script, f"{path}: holds {len(rows)} of the sweep's {len(cells)} runs ({failed} "
              f"failed, in failures.csv; {max(0, len(cells) - len(rows) - failed)} unfinished): "
              "a figure over them is not the sweep's; finish the sweep (plywood sweep again)")
+    for run in ids:
+        for name in run_files:
+            path = os.path.join(folder, "runs", run, name)
+            if not os.path.isfile(path):
+                # A run folder without its metrics.json was skipped, or a traceback (s66).
+                fail(script, f"{path}: no such file (results.csv lists run {run} as finished)")
     return header, rows, lines

@@ -9,7 +9,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sweep_folder import fail, finished_results, read_csv, sweep_dir, value  # noqa: E402
+from sweep_folder import (end_quietly_when_the_reader_goes, fail, finished_results,  # noqa: E402
+                          read_csv, sweep_dir, value)
 
 SCRIPT = "sweep_table"
 
@@ -73,6 +74,7 @@ def main(out_dir, metrics):
 
 
 if __name__ == "__main__":
+    end_quietly_when_the_reader_goes()
     if len(sys.argv) < 2 or sys.argv[1] in ("-h", "--help"):
         print(__doc__.strip(), file=sys.stderr if len(sys.argv) < 2 else sys.stdout)
         sys.exit(2 if len(sys.argv) < 2 else 0)

@@ -270,6 +270,25 @@ TEST_F(SweepScriptsTest, FalseLinesRefusesAnExtractorNoRunHasAndSweepsMissingRun
                 "lines/results.csv: holds 3 of the sweep's 4 runs");
 }
 
+// A table piped into a reader that stops early (`sweep_table.py DIR | head -3`) ended in a
+// BrokenPipeError traceback; each script now ends as `cat` would, without a word. Its stdout here
+// is a pipe whose reader is already gone, so the first write fails every time.
+TEST_F(SweepScriptsTest, TablesEndWithoutATracebackWhenTheirReaderHasGone) {
+  const fs::path dir = MakeTempDir("SweepScriptsClosedPipe");
+  WriteSweep(dir / "whole");
+  for (const std::string args :
+       {"sweep_table.py whole", "sweep_compare.py whole whole", "keeping_rule.py whole whole"}) {
+    SCOPED_TRACE(args);
+    const std::string command =
+        "cd '" + dir.string() +
+        "' && /usr/bin/python3 -c 'import os, subprocess, sys; r, w = os.pipe(); os.close(r); "
+        "subprocess.call(sys.argv[1:], stdout=w)' /usr/bin/python3 '" +
+        (SourceRoot() / "scripts").string() + "'/" + args + " 2>stderr";
+    ASSERT_EQ(std::system(command.c_str()), 0);
+    EXPECT_EQ(Slurp(dir / "stderr"), "");
+  }
+}
+
 // Seed 001's analysis scripts (docs/sonar_map/history.md) over sweep folders: a missing folder was
 // a traceback or, for the two that take LO HI, no run and exit 0; a sweep missing runs was read on
 // the runs that finished; LO and HI that are no numbers a traceback, NaN bounds no run, exit 0.
@@ -280,6 +299,12 @@ TEST_F(SweepScriptsTest, SonarMapContactsRefusesSweepsMissingRunsAndMissingFolde
                 "sonar_map_contacts: killed/results.csv: holds 3 of the sweep's 4 runs");
   ExpectRefusal(RunScript(dir, "sonar_map_contacts.py", "nowhere"),
                 "sonar_map_contacts: nowhere: no such folder");
+  // A run folder without its metrics.json was skipped: "runs with a contact: 0" of runs unread.
+  WriteSweep(dir / "unread");
+  fs::create_directories(dir / "unread" / "runs" / "a");
+  ExpectRefusal(RunScript(dir, "sonar_map_contacts.py", "unread"),
+                "sonar_map_contacts: unread/runs/a/metrics.json: no such file (results.csv lists "
+                "run a as finished)");
 }
 
 TEST_F(SweepScriptsTest, SonarMapErrorCausesRefusesSweepsMissingRunsAndATopThatIsNoNumber) {
