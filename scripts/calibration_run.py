@@ -97,6 +97,7 @@ def read_run(script, run_dir):
             # Two samples of one time divided a tick count by zero (s66).
             fail(script, f"{path}: line {line}: time_s: {row['time_s']} is not after the line "
                  "before's")
-        encoder.append((t, number(script, path, f"line {line}: left_ticks", row["left_ticks"], True),
-                        number(script, path, f"line {line}: right_ticks", row["right_ticks"], True)))
+        ticks = (number(script, path, f"line {line}: {c}", row[c], True)
+                 for c in ("left_ticks", "right_ticks"))
+        encoder.append((t, *ticks))
     return (*geometry, *priors, truth, encoder)

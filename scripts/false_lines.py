@@ -95,7 +95,8 @@ def main(sweep_dir, extractor, listing):
             if row["truth_segment"] != "":
                 continue
             false += 1
-            a, b = ((value(SCRIPT, lines_path, line, row, x), value(SCRIPT, lines_path, line, row, y))
+            a, b = ((value(SCRIPT, lines_path, line, row, x),
+                     value(SCRIPT, lines_path, line, row, y))
                     for x, y in (("x1_m", "y1_m"), ("x2_m", "y2_m")))
             length = math.dist(a, b)
             mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
@@ -142,5 +143,6 @@ if __name__ == "__main__":
         fail(SCRIPT, "usage: false_lines.py SWEEP_DIR [EXTRACTOR] [--list]")
     for a in args:
         if a.startswith("-"):
-            fail(SCRIPT, f"{a}: unknown flag (usage: false_lines.py SWEEP_DIR [EXTRACTOR] [--list])")
+            fail(SCRIPT,
+                 f"{a}: unknown flag (usage: false_lines.py SWEEP_DIR [EXTRACTOR] [--list])")
     main(args[0], args[1] if len(args) > 1 else "split_and_merge", "--list" in sys.argv)

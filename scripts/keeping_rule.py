@@ -49,6 +49,12 @@ def main():
     args = parser.parse_args()
     if len(args.folders) % 2:
         fail(SCRIPT, "folders come in pairs, BASE then NEW")
+    for role, folders in (("BASE", args.folders[0::2]), ("NEW", args.folders[1::2])):
+        real = [os.path.realpath(f) for f in folders]
+        for f, r in zip(folders, real):
+            if real.count(r) > 1:
+                # Its runs counted twice in every pooled figure and criterion (s66).
+                fail(SCRIPT, f"{f}: given twice as a {role} sweep; give each pair once")
 
     # Every pair read and checked before the table starts: a refusal (exit 2, not the 1 of "not
     # kept") leaves no half table, and a sweep missing runs or a run without a partner is refused,

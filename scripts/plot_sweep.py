@@ -82,7 +82,8 @@ def main(out_dir):
     except FileNotFoundError:
         fail("plot_sweep", f"{meta_path}: no such file: {out_dir} is not a sweep's folder")
     except (OSError, ValueError) as error:
-        fail("plot_sweep", f"{meta_path}: cannot read ({getattr(error, 'strerror', None) or error})")
+        why = getattr(error, "strerror", None) or error
+        fail("plot_sweep", f"{meta_path}: cannot read ({why})")
     if not isinstance(meta, dict):
         fail("plot_sweep", f"{meta_path}: expected a JSON object")
     summary_path = os.path.join(out_dir, "summary.csv")
@@ -179,6 +180,7 @@ def main(out_dir):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2 or sys.argv[1].startswith("-"):
+    # A folder named -x (plywood sweep --out=-x) is a folder; an absent one a flag.
+    if len(sys.argv) != 2 or (sys.argv[1].startswith("-") and not os.path.isdir(sys.argv[1])):
         fail("plot_sweep", "usage: plot_sweep.py SWEEP_DIR")
     main(sys.argv[1])

@@ -105,7 +105,8 @@ if __name__ == '__main__':
     # A bound that is no number was a traceback, NaN bounds or a missing folder printed no run
     # (exit 0), a folder that is no seed 001 sweep was a KeyError, and a sweep missing runs was read
     # on the runs that finished (s66).
-    if len(sys.argv) < 4 or any(a.startswith('-') and a.lstrip('-')[:1].isalpha() for a in sys.argv[1:]):
+    flags = [a for a in sys.argv[1:] if a.startswith('-') and a.lstrip('-')[:1].isalpha()]
+    if len(sys.argv) < 4 or flags:
         fail(SCRIPT, f'usage: {SCRIPT}.py LO HI SWEEP_DIR [SWEEP_DIR ...]')
     lo, hi = finite(SCRIPT, 'LO', sys.argv[1]), finite(SCRIPT, 'HI', sys.argv[2])
     if not lo < hi:

@@ -206,6 +206,10 @@ TEST_F(SweepScriptsTest, KeepingRuleJudgesOnlyWholeSweepsOfTheSameRunsAndRefuses
   WriteSweep(dir / "other", RowsWith(2, 5, "7"));
   r = RunScript(dir, "keeping_rule.py", "base other");
   ExpectRefusal(r, "have no partner in the other sweep");
+  // A pair given twice: its runs counted twice in every pooled figure.
+  WriteSweep(dir / "new");
+  ExpectRefusal(RunScript(dir, "keeping_rule.py", "base new base ./new"),
+                "keeping_rule: base: given twice as a BASE sweep; give each pair once");
   ExpectRefusal(RunScript(dir, "keeping_rule.py", "base nowhere"),
                 "keeping_rule: nowhere: no such folder");
   ExpectRefusal(RunScript(dir, "keeping_rule.py", "base base --metrc x"),
