@@ -109,6 +109,16 @@ def paired_runs(base_path, new_path, metric, contacts, script="sweep_compare", w
         return ((os.path.basename(row["experiment"]), row["world"], row["profile"], row["seed"]) +
                 tuple(row[a] for a in shared_axes))
 
+    # Two runs of one sweep alike in all of these (experiment files of one name in two folders)
+    # were paired with one run of the other sweep, the second silently dropped (s66).
+    for path, rows, extra in ((base_path, base_rows, []), (new_path, new_rows, extra_axes)):
+        seen = set()
+        for r in rows:
+            k = key(r) + tuple(r[a] for a in extra)
+            if k in seen:
+                fail(script, f"{path}: runs {r['id']} and another are alike in experiment file "
+                     "name, world, profile, seed and axes: they cannot be paired run by run")
+            seen.add(k)
     base_by_key = {key(r): r for r in base_rows}
     pairs = [(base_by_key[key(r)], r) for r in new_rows if key(r) in base_by_key]
     if not pairs:

@@ -186,6 +186,13 @@ TEST_F(SweepScriptsTest, SweepCompareRefusesValuesAndSweepsItCannotCompare) {
   ExpectRefusal(RunScript(dir, "sweep_compare.py", "base base --treshold 0.1"),
                 "sweep_compare: unrecognized arguments: --treshold");
   ExpectRefusal(RunScript(dir, "sweep_compare.py", "base nowhere"), "nowhere: no such folder");
+  // Experiment files of one name in two folders: runs a and c alike but for the folder.
+  std::string twins = RowsWith(2, 6, "3");
+  twins.replace(twins.find("e.yaml", twins.find("\nc,")), 6, "x/e.yaml");
+  WriteSweep(dir / "twins", twins);
+  ExpectRefusal(RunScript(dir, "sweep_compare.py", "twins base"),
+                "sweep_compare: twins: runs c and another are alike in experiment file name, "
+                "world, profile, seed and axes");
 }
 
 // keeping_rule.py read the bar and the rule on the runs that happened to finish ("kept", exit 0,
