@@ -24,6 +24,10 @@ fi
 
 work=$(mktemp -d /tmp/plywood-slurm.XXXXXX)
 stop() {
+  if [ -n "${watchdog:-}" ]; then
+    kill "$watchdog" 2>/dev/null || true
+    [ -f "$work/watchdog_sleep.pid" ] && kill "$(cat "$work/watchdog_sleep.pid")" 2>/dev/null || true
+  fi
   for daemon in slurmd slurmctld munged; do
     if [ -f "$work/$daemon.pid" ]; then
       start-stop-daemon --stop --quiet --retry TERM/10/KILL/5 --pidfile "$work/$daemon.pid" \
@@ -33,15 +37,30 @@ stop() {
   rm -rf "$work"
 }
 trap stop EXIT
+trap 'exit 1' INT TERM
+# ctest kills the script with SIGKILL at its TIMEOUT (300 s), which no trap sees, and the daemons
+# (detached by start-stop-daemon) would outlive it. So the script ends itself first: after
+# $deadline_s seconds the watchdog sends it TERM, and the EXIT trap stops the daemons.
+deadline_s=${PLYWOOD_SLURM_TEST_DEADLINE_S:-270}
+# Its sleep holds no stream of the script's (ctest waits for those to close) and is stopped with
+# it.
+(
+  sleep "$deadline_s" </dev/null >/dev/null 2>&1 &
+  echo $! >"$work/watchdog_sleep.pid"
+  wait $! && echo "FAIL: still running after $deadline_s s; stopping the cluster" && kill -TERM $$
+) &
+watchdog=$!
 
 mkdir -p "$work/state" "$work/spool" /run/munge
 chown munge:munge /run/munge
 chmod 0755 /run/munge
 cpus=$(nproc)
 export SLURM_CONF=$work/slurm.conf
+# Addresses as numbers: a machine whose /etc/hosts lacks localhost (a bare debootstrap root) left
+# slurmd retrying "Unable to resolve localhost" until the wait ran out.
 cat >"$SLURM_CONF" <<CONF
 ClusterName=plywoodtest
-SlurmctldHost=localhost
+SlurmctldHost=localhost(127.0.0.1)
 SlurmUser=root
 SlurmdUser=root
 AuthType=auth/munge
@@ -64,7 +83,7 @@ SlurmctldLogFile=$work/slurmctld.log
 SlurmdLogFile=$work/slurmd.log
 SlurmctldPort=26817
 SlurmdPort=26818
-NodeName=localhost CPUs=$cpus RealMemory=1000 State=UNKNOWN
+NodeName=localhost NodeAddr=127.0.0.1 CPUs=$cpus RealMemory=1000 State=UNKNOWN
 PartitionName=debug Nodes=ALL Default=YES MaxTime=INFINITE State=UP
 CONF
 
@@ -75,15 +94,23 @@ start-stop-daemon --start --background --make-pidfile --pidfile "$work/slurmctld
   --exec "$(command -v slurmctld || echo /usr/sbin/slurmctld)" -- -D -i -f "$SLURM_CONF"
 start-stop-daemon --start --background --make-pidfile --pidfile "$work/slurmd.pid" \
   --exec "$(command -v slurmd || echo /usr/sbin/slurmd)" -- -D -f "$SLURM_CONF"
+# Up to 30 s for the node to be idle. A daemon that exits on start (slurmd without a cgroup file
+# system, say) is seen at once, and every sinfo has its own time limit: before, a slurmd that died
+# at start left sinfo waiting, and the script ran into ctest's timeout with no line printed.
+alive() { [ -f "$work/$1.pid" ] && kill -0 "$(cat "$work/$1.pid")" 2>/dev/null; }
 state=""
-for _ in $(seq 150); do
-  state=$(sinfo -h -o %T 2>/dev/null || true)
+come_up_end=$((SECONDS + 30))
+while ((SECONDS < come_up_end)); do
+  state=$(timeout 5 sinfo -h -o %T 2>/dev/null || true)
   [ "$state" = idle ] && break
+  for daemon in munged slurmctld slurmd; do
+    alive "$daemon" || { state="$daemon exited at start"; break 2; }
+  done
   sleep 0.2
 done
 if [ "$state" != idle ]; then
   echo "SKIPPED: the local Slurm cluster did not come up (sinfo: '$state')"
-  tail -5 "$work/slurmctld.log" "$work/slurmd.log" 2>/dev/null || true
+  tail -n 5 "$work/slurmctld.log" "$work/slurmd.log" 2>/dev/null || true
   exit 77
 fi
 echo "slurm: cluster up ($cpus CPUs)"
