@@ -61,11 +61,11 @@ int RunScript(const fs::path& dir, const std::string& script) {
 // other user, and the tests that run plywood as nobody then skip, saying so, instead of failing
 // with exit 126 (cannot execute).
 bool NobodyCanRunPlywoodIn(const fs::path& dir) {
-  const std::string command =
-      "setpriv --reuid=65534 --regid=65534 --clear-groups sh -c 'cd \"" + dir.string() +
-      "\" && test -x \"" + PLYWOOD_BINARY_DIR + "/apps/plywood\" && test -r \"" +
-      (SourceRoot() / "worlds/hall.xml").string() + "\" && test -r \"" +
-      (SourceRoot() / "models/p3dx.xml").string() + "\"' >/dev/null 2>&1";
+  const std::string command = "setpriv --reuid=65534 --regid=65534 --clear-groups sh -c 'cd \"" +
+                              dir.string() + "\" && test -x \"" + PLYWOOD_BINARY_DIR +
+                              "/apps/plywood\" && test -r \"" +
+                              (SourceRoot() / "worlds/hall.xml").string() + "\" && test -r \"" +
+                              (SourceRoot() / "models/p3dx.xml").string() + "\"' >/dev/null 2>&1";
   return std::system(command.c_str()) == 0;
 }
 
