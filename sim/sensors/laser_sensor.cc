@@ -137,12 +137,21 @@ void LaserSensor::Measure(const Scene& scene, const RayCaster& caster, ScanMeasu
 
   NormalDraws noise;  // a new pair state per scan, as before
   const double unit_m = options_.RangeResolutionM();
+  // Every returned beam draws once for its dropout. With no dropout (the default) the draw cannot
+  // succeed (a uniform is >= 0), so the engine only skips it: discard(1) leaves the engine as one
+  // draw does (the standard's definition), without tempering and scaling a number nobody reads.
+  const bool dropouts = options_.dropout_probability > 0.0;
+  const auto dropped = [&] {
+    if (dropouts) return UnitUniform(rng_) < options_.dropout_probability;
+    rng_.discard(1);
+    return false;
+  };
   for (int i = 0; i < n; ++i) {
     double& r = scan.ranges_m[i];
     if (r >= range_max_m) continue;
     if (options_.range_noise_sigma_m > 0.0) r += noise(rng_, 0.0, options_.range_noise_sigma_m);
     r = std::max(0.0, std::round(r / unit_m) * unit_m);
-    if (r >= range_max_m || UnitUniform(rng_) < options_.dropout_probability) {
+    if (r >= range_max_m || dropped()) {
       r = range_max_m;
       out->hit_geom_ids[i] = -1;
     }

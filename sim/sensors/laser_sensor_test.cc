@@ -248,6 +248,24 @@ TEST(LaserSensorTest, SameSeedSameScanOtherSeedOtherScan) {
   EXPECT_NE(ra, c.Measure(scene, caster).scan.ranges_m);
 }
 
+// Without dropouts a returned beam still takes its dropout draw (the engine skips it): the noise
+// that follows is what a sensor whose dropout can never happen (it needs a draw of exactly 0)
+// gets, scan after scan. A beam that skipped the draw would shift every later beam's noise.
+TEST_F(LaserWallTest, NoDropoutsTakeTheSameDrawsAsAnImpossibleDropout) {
+  LaserOptions none;  // sigma 10 mm, dropout 0
+  LaserOptions impossible = none;
+  impossible.dropout_probability = 1e-300;  // below 2^-64, the smallest uniform but 0
+  LaserSensor a(scene_, "laser", none, 11), b(scene_, "laser", impossible, 11);
+  int returns = 0;
+  for (int scan = 0; scan < 20; ++scan) {
+    const ScanMeasurement ma = a.Measure(scene_, caster_), mb = b.Measure(scene_, caster_);
+    ASSERT_EQ(ma.scan.ranges_m, mb.scan.ranges_m) << "scan " << scan;
+    ASSERT_EQ(ma.hit_geom_ids, mb.hit_geom_ids) << "scan " << scan;
+    for (std::size_t i = 0; i < ma.scan.ranges_m.size(); ++i) returns += ma.scan.IsReturn(i);
+  }
+  EXPECT_EQ(returns, 20 * (2 * 126 + 1));
+}
+
 // The room's interior before it is rotated about the world origin.
 constexpr Rectangle kRoom{-2.0, 3.0, -1.5, 2.5};
 

@@ -21,6 +21,9 @@ constexpr double kSurfaceOffsetM = 1e-6;
 // A ray cast at an edge that stops this much short of it met something in front of the edge; one
 // that reaches it (rounding within this) met the edge's own faces.
 constexpr double kEdgeOcclusionToleranceM = 1e-3;
+// A bounce ray is cast this far beyond the nearest echo so far: far above the rounding (~1e-15
+// relative to the coordinates) of the path it would make.
+constexpr double kBounceSlackM = 1e-6;
 
 }  // namespace
 
@@ -168,7 +171,15 @@ double SonarSensor::EchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& ca
     const Eigen::Vector3d r1_W = dir_W - 2.0 * dir_W.dot(n_W) * n_W;
     // Start the bounce a little way along its own line, so d2 stays exact.
     const double skip_m = std::min(1e-3, kSurfaceOffsetM / std::max(cos_incidence, 1e-6));
-    if (!caster.Cast(p1_W + skip_m * r1_W, r1_W, 2.0 * range_max_m - hit.distance_m, &hit2)) {
+    // A corner echo counts only below best_m and range_max_m, and its path (d1 + d2 + back) / 2
+    // is at least d2 (back >= d2 - d1): a second hit beyond them changes nothing, so the ray stops
+    // there (kBounceSlackM covers the path's rounding). Only the central ray's multipath bounce
+    // counts up to 2 range_max_m - d1.
+    double bounce_range_m = 2.0 * range_max_m - hit.distance_m;
+    if (!(is_central && options_.multipath)) {
+      bounce_range_m = std::min(bounce_range_m, std::min(best_m, range_max_m) + kBounceSlackM);
+    }
+    if (!caster.Cast(p1_W + skip_m * r1_W, r1_W, bounce_range_m, &hit2)) {
       continue;
     }
     const double d2_m = skip_m + hit2.distance_m;
@@ -186,8 +197,9 @@ double SonarSensor::EchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& ca
   if (foot_m < best_m) {
     const Eigen::Vector3d dir_W = R_WS * foot_dir_S;
     RayHit foot;
-    if (caster.Cast(p_WS, dir_W, range_max_m, &foot) && foot.distance_m < range_max_m &&
-        -dir_W.dot(foot.normal_W) >= cos_incidence_limit_) {
+    // The foot only lowers best_m: a hit beyond it changes nothing.
+    if (caster.Cast(p_WS, dir_W, std::min(range_max_m, best_m), &foot) &&
+        foot.distance_m < range_max_m && -dir_W.dot(foot.normal_W) >= cos_incidence_limit_) {
       best_m = std::min(best_m, foot.distance_m);
     }
   }

@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -334,6 +335,77 @@ TEST(SonarOptionsTest, ValidateNamesTheField) {
   ExpectInvalidField(SonarOptions{.rate_hz = 0.0}, "rate_hz");
   ExpectInvalidField(SonarOptions{.edge_echo_range_m = 0.0}, "edge_echo_range_m");
   ExpectInvalidField(SonarOptions{.edge_echo_range_m = std::nan("")}, "edge_echo_range_m");
+}
+
+// Casts each single ray (the bounce and foot rays) as far as `far_m`, whatever range it is asked
+// for; batches as asked. Beyond the ranges the sensor used to ask for (range_max_m for the foot
+// ray, 2 range_max_m - d1 for a bounce) a hit changes no reading: a foot beyond range_max_m is
+// ignored, a bounce of length d2 makes a path of at least d2 > range_max_m.
+class FarCaster : public RayCaster {
+ public:
+  FarCaster(const RayCaster& inner, double far_m) : inner_(inner), far_m_(far_m) {}
+  bool Cast(const Eigen::Vector3d& origin_W, const Eigen::Vector3d& dir_W, double,
+            RayHit* hit) const override {
+    return inner_.Cast(origin_W, dir_W, far_m_, hit);
+  }
+  void CastBatch(const Eigen::Vector3d* origins_W, const Eigen::Vector3d* dirs_W, int count,
+                 double max_range_m, bool with_normal, RayHit* hits, bool* found) const override {
+    inner_.CastBatch(origins_W, dirs_W, count, max_range_m, with_normal, hits, found);
+  }
+
+ private:
+  const RayCaster& inner_;
+  double far_m_;
+};
+
+// The sensor bounds its bounce and foot rays by the nearest echo so far (and range_max_m): a hit
+// beyond cannot change the reading. Random walls about the whole ring, corner echoes and multipath
+// on and off: every reading equals the one cast without the bounds (bit for bit).
+TEST(SonarSensorTest, BoundedBounceAndFootRaysGiveTheReadingsOfUnboundedOnes) {
+  const Scene scene(RobotIn("p3dx", FloorWorld("sonar_bounded_rays"), {0.2, -0.1, 10.0 * kDeg}));
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int echoes = 0, readings = 0, differing_from_direct = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    std::vector<Segment> walls;
+    const int count = 1 + static_cast<int>(unit(rng) * 6);
+    for (int k = 0; k < count; ++k) {
+      const double bearing = 2.0 * std::numbers::pi * unit(rng), dist = 0.4 + 5.0 * unit(rng);
+      const double cx = 0.2 + dist * std::cos(bearing), cy = -0.1 + dist * std::sin(bearing);
+      const double along = std::numbers::pi * unit(rng), half = 0.2 + 3.0 * unit(rng);
+      walls.push_back({Eigen::Vector2d(cx - half * std::cos(along), cy - half * std::sin(along)),
+                       Eigen::Vector2d(cx + half * std::cos(along), cy + half * std::sin(along)),
+                       k + 1});
+    }
+    const SegmentCaster caster(walls);
+    SonarOptions options;
+    options.noise_free = true;
+    options.multipath = trial % 3 == 0;
+    options.corner_echoes = trial % 5 != 0;
+    options.incidence_limit_deg = trial % 2 == 0 ? 20.0 : 8.0;
+    SonarSensor bounded(scene, SonarSensor::DefaultSiteNames(), options, 1);
+    SonarSensor unbounded(scene, SonarSensor::DefaultSiteNames(), options, 1);
+    const msgs::RangeRing a = bounded.Measure(scene, caster);
+    const msgs::RangeRing b =
+        unbounded.Measure(scene, FarCaster(caster, 2.0 * options.range_max_m));
+    SonarOptions direct_only = options;
+    direct_only.corner_echoes = false;
+    direct_only.multipath = false;
+    SonarSensor direct(scene, SonarSensor::DefaultSiteNames(), direct_only, 1);
+    const msgs::RangeRing c = direct.Measure(scene, caster);
+    for (std::size_t k = 0; k < a.readings.size(); ++k) {
+      ++readings;
+      ASSERT_EQ(a.readings[k].echo, b.readings[k].echo) << "trial " << trial << " sonar " << k;
+      ASSERT_EQ(a.readings[k].range_m, b.readings[k].range_m)
+          << "trial " << trial << " sonar " << k;
+      echoes += a.readings[k].echo;
+      differing_from_direct += a.readings[k].echo != c.readings[k].echo ||
+                               a.readings[k].range_m != c.readings[k].range_m;
+    }
+  }
+  // The cases are not all direct echoes: bounces set (or fail to set) a good share of them.
+  EXPECT_GT(echoes, readings / 4);
+  EXPECT_GT(differing_from_direct, readings / 40);
 }
 
 // The P3-DX in a real MuJoCo room: interior [-2, 3] x [-1.5, 2.5], optionally rotated.
