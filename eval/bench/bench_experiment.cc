@@ -160,6 +160,7 @@ BenchFigures RunBench(const BenchOptions& options) {
       sim::LoadExperimentConfig(sim::DataRoot() / "experiments" / "default.yaml", {});
   // A folder of this process's own: two benches at once shared "plywood-bench-default-run", and
   // the later to finish its run exited 2 ("cannot move the finished run into place").
+  sim::RemoveScratchOfEndedProcesses(scratch, "plywood-bench-default-run-");  // killed benches'
   const ScratchRun out_dir(scratch / ("plywood-bench-default-run-" + std::to_string(::getpid())));
   figures.default_run_wall_s = std::numeric_limits<double>::infinity();
   figures.default_run_simulation_wall_s = std::numeric_limits<double>::infinity();

@@ -154,8 +154,8 @@ void Generate(const RandomRoom& room, int poses, const sim::SonarOptions& sonar_
 // The working folder of the generated room files, removed however training ends.
 class TemporaryFolder {
  public:
-  TemporaryFolder()
-      : path_(sim::ScratchFolderRoot() / ("plywood-train-" + std::to_string(::getpid()))) {
+  TemporaryFolder() : path_(sim::ScratchFolderRoot() / (kPrefix + std::to_string(::getpid()))) {
+    sim::RemoveScratchOfEndedProcesses(path_.parent_path(), kPrefix);  // left by killed trainings
     std::filesystem::create_directories(path_);
   }
   ~TemporaryFolder() {
@@ -167,6 +167,7 @@ class TemporaryFolder {
   const std::filesystem::path& path() const { return path_; }
 
  private:
+  static constexpr const char* kPrefix = "plywood-train-";
   std::filesystem::path path_;
 };
 

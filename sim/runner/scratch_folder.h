@@ -1,6 +1,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string_view>
 
 namespace plywood::sim {
 
@@ -10,5 +11,12 @@ namespace plywood::sim {
 // variable nor the folder; one plywood may not write in (/sys) failed as exit 1.
 // @throws std::invalid_argument naming TMPDIR when it is not a folder a file can be made in.
 std::filesystem::path ScratchFolderRoot();
+
+// Removes the folders root/PREFIX<pid> whose process has ended (kill(pid, 0) fails with ESRCH) and
+// that this user owns. A command killed by SIGKILL cannot remove its own scratch folder (`bench`'s
+// default run, `train`'s rooms), so each such kill left one behind for good. A live PID (this
+// process, another command at work, or a reused PID) and other users' folders are left alone;
+// errors are ignored (the folder stays, nothing else changes).
+void RemoveScratchOfEndedProcesses(const std::filesystem::path& root, std::string_view prefix);
 
 }  // namespace plywood::sim
