@@ -217,6 +217,9 @@ TEST_F(SweepScriptsTest, KeepingRuleJudgesOnlyWholeSweepsOfTheSameRunsAndRefuses
   WriteSweep(dir / "new");
   ExpectRefusal(RunScript(dir, "keeping_rule.py", "base new base ./new"),
                 "keeping_rule: base: given twice as a BASE sweep; give each pair once");
+  // The same sweep given once as its folder, once as the results.csv in it (s66 review).
+  ExpectRefusal(RunScript(dir, "keeping_rule.py", "base/results.csv new base new/results.csv"),
+                "keeping_rule: base/results.csv: given twice as a BASE sweep; give each pair once");
   ExpectRefusal(RunScript(dir, "keeping_rule.py", "base nowhere"),
                 "keeping_rule: nowhere: no such folder");
   ExpectRefusal(RunScript(dir, "keeping_rule.py", "base base --metrc x"),
