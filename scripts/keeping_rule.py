@@ -50,7 +50,10 @@ def main():
     if len(args.folders) % 2:
         fail(SCRIPT, "folders come in pairs, BASE then NEW")
     for role, folders in (("BASE", args.folders[0::2]), ("NEW", args.folders[1::2])):
-        real = [os.path.realpath(f) for f in folders]
+        # A sweep is its folder or the results.csv in it (as sweep_compare.py reads either):
+        # `X/results.csv` and `X` given as two pairs' BASE were not seen as one (s66 review).
+        real = [os.path.realpath(os.path.dirname(f) if os.path.basename(os.path.normpath(f)) ==
+                                 "results.csv" and os.path.isfile(f) else f) for f in folders]
         for f, r in zip(folders, real):
             if real.count(r) > 1:
                 # Its runs counted twice in every pooled figure and criterion (s66).

@@ -37,7 +37,15 @@ BINS = [(0.0, 0.26), (0.26, 0.29), (0.29, 0.32), (0.32, 0.35), (0.35, 0.40), (0.
 
 def boxes_of(world):
     boxes = []
-    for geom in ET.parse(world).getroot().iter("geom"):
+    # A world that is not there (a sweep folder copied without worlds/) or no XML was a
+    # traceback (s66 review).
+    try:
+        root = ET.parse(world).getroot()
+    except FileNotFoundError:
+        fail(SCRIPT, f"{world}: no such file (a world the sweep's results.csv names)")
+    except (OSError, ET.ParseError) as error:
+        fail(SCRIPT, f"{world}: cannot read: {getattr(error, 'strerror', None) or error}")
+    for geom in root.iter("geom"):
         name = geom.get("name", "")
         if not name.startswith(("wall_", "obstacle_")):
             continue
@@ -112,6 +120,13 @@ def main():
                     world, error = row["world"], float(row["occupancy.error"])
                 except (KeyError, TypeError, ValueError):
                     sys.exit(f"{results}:{line}: needs the columns world and occupancy.error")
+                if world == "":
+                    # The experiment's own world (a sweep without worlds:, as the shipped
+                    # sonar_map_layouts.yaml): the folder itself was opened as the world, a
+                    # traceback (s66 review).
+                    fail(SCRIPT, f"{results}: line {line}: world: empty (the run's world is its "
+                         "experiment's own): this reads the generated worlds a sweep names in "
+                         "its worlds: list")
                 per_world.setdefault(os.path.join(folder, world), []).append(error)
         for world, errors in sorted(per_world.items()):
             if world not in clearance:

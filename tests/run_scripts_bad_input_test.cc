@@ -161,5 +161,30 @@ TEST(RunScriptsTest, DemoAndTestRefuseArgumentsBeforeTheyInstallOrBuild) {
   }
 }
 
+// scripts/fresh_debian_check removes its --dir whole at the end (rm -rf): an existing folder's
+// files went with it, and a relative --dir was taken inside the tree (the script cds there first)
+// rather than where the caller stands (s66 review). Each --dir is refused before anything is
+// installed, mounted or fetched; the mirror is one nothing answers, so a check that went ahead
+// would fail at once (and remove the folder).
+TEST(RunScriptsTest, FreshDebianCheckRefusesAFolderItWouldRemoveThatIsNotItsOwn) {
+  const fs::path dir = MakeTempDir("FreshDebianCheckDir");
+  WriteFile(dir / "victim" / "keep.txt", "precious\n");
+  const std::string mirror = " --mirror http://127.0.0.1:1/debian";
+  ExpectRefusal(
+      RunScript(dir, "fresh_debian_check", "--dir '" + (dir / "victim").string() + "'" + mirror),
+      "fresh_debian_check: --dir " + (dir / "victim").string() +
+          ": exists and is not an empty folder");
+  ASSERT_TRUE(fs::exists(dir / "victim" / "keep.txt")) << "the folder's files were removed";
+  // Relative to where it is called from, not to the tree.
+  ExpectRefusal(RunScript(dir, "fresh_debian_check", "--dir victim" + mirror),
+                "--dir " + (dir / "victim").string() + ": exists and is not an empty folder");
+  ExpectRefusal(
+      RunScript(dir, "fresh_debian_check",
+                "--dir '" + (SourceRoot() / "debian-root").string() + "'" + mirror),
+      "--dir " + fs::weakly_canonical(SourceRoot() / "debian-root").string() + ": inside the tree");
+  EXPECT_FALSE(fs::exists(SourceRoot() / "debian-root"));
+  EXPECT_TRUE(fs::exists(dir / "victim" / "keep.txt"));
+}
+
 }  // namespace
 }  // namespace plywood

@@ -217,6 +217,9 @@ TEST_F(SweepScriptsTest, KeepingRuleJudgesOnlyWholeSweepsOfTheSameRunsAndRefuses
   WriteSweep(dir / "new");
   ExpectRefusal(RunScript(dir, "keeping_rule.py", "base new base ./new"),
                 "keeping_rule: base: given twice as a BASE sweep; give each pair once");
+  // The same sweep given once as its folder, once as the results.csv in it (s66 review).
+  ExpectRefusal(RunScript(dir, "keeping_rule.py", "base/results.csv new base new/results.csv"),
+                "keeping_rule: base/results.csv: given twice as a BASE sweep; give each pair once");
   ExpectRefusal(RunScript(dir, "keeping_rule.py", "base nowhere"),
                 "keeping_rule: nowhere: no such folder");
   ExpectRefusal(RunScript(dir, "keeping_rule.py", "base base --metrc x"),
@@ -355,6 +358,17 @@ TEST_F(SweepScriptsTest, SonarMapNarrowGapsRefusesMissingFilesAndSweepsMissingRu
                 "sonar_map_narrow_gaps.py: nowhere/results.csv: no such file");
   ExpectRefusal(RunScript(dir, "sonar_map_narrow_gaps.py", "killed/results.csv"),
                 "killed/results.csv: holds 3 of the sweep's 4 runs");
+  // A world results.csv names that is not there, and runs in their experiment's own world (no
+  // world in results.csv: the shipped sonar_map_layouts.yaml) were tracebacks (s66 review).
+  WriteSweep(dir / "whole");
+  ExpectRefusal(RunScript(dir, "sonar_map_narrow_gaps.py", "whole/results.csv"),
+                "whole/w.xml: no such file (a world the sweep's results.csv names)");
+  std::string own = FourRuns();
+  for (std::size_t at = own.find("w.xml"); at != std::string::npos; at = own.find("w.xml"))
+    own.erase(at, 5);
+  WriteSweep(dir / "own", own);
+  ExpectRefusal(RunScript(dir, "sonar_map_narrow_gaps.py", "own/results.csv"),
+                "own/results.csv: line 2: world: empty (the run's world is its experiment's own)");
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "sim/config/config_error.h"
+#include "sim/raycast/grid_ray_caster_2d.h"
 #include "sim/raycast/mujoco_ray_caster.h"
 #include "sim/world/scene.h"
 #include "tests/support/mujoco_test_support.h"
@@ -31,6 +32,7 @@ using plywood::testing::RoomWorld;
 using plywood::testing::SampleStats;
 using plywood::testing::Segment;
 using plywood::testing::SegmentCaster;
+using plywood::testing::SourceRoot;
 using plywood::testing::ToWorld;
 using plywood::testing::WriteFile;
 
@@ -406,6 +408,46 @@ TEST(SonarSensorTest, BoundedBounceAndFootRaysGiveTheReadingsOfUnboundedOnes) {
   // The cases are not all direct echoes: bounces set (or fail to set) a good share of them.
   EXPECT_GT(echoes, readings / 4);
   EXPECT_GT(differing_from_direct, readings / 40);
+}
+
+// The same in the shipped office (tables' legs and tops, boxes, walls) through both real casters,
+// the robot at random poses, with edge echoes, multipath and corner echoes on and off: the
+// bounded bounce and foot rays give the readings of unbounded ones, bit for bit (s66 review).
+TEST(SonarSensorSceneTest, BoundedRaysGiveTheReadingsOfUnboundedOnesThroughTheRealCasters) {
+  std::mt19937_64 rng(66);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int echoes = 0, readings = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    const msgs::Pose2D spawn{-4.0 + 8.0 * unit(rng), -3.0 + 6.0 * unit(rng),
+                             2.0 * std::numbers::pi * unit(rng)};
+    const Scene scene(RobotIn("p3dx", SourceRoot() / "worlds" / "office.xml", spawn));
+    const MujocoRayCaster mujoco(scene.model(), scene.data());
+    const GridRayCaster2D grid(scene.model(), scene.data());
+    for (int config = 0; config < 8; ++config) {
+      SonarOptions options;
+      options.noise_free = true;
+      options.multipath = config & 1;
+      options.corner_echoes = config & 2;
+      options.edge_echoes = config & 4;
+      options.incidence_limit_deg = trial % 2 == 0 ? 20.0 : 8.0;
+      for (const RayCaster* caster :
+           {static_cast<const RayCaster*>(&mujoco), static_cast<const RayCaster*>(&grid)}) {
+        SonarSensor bounded(scene, SonarSensor::DefaultSiteNames(), options, 1);
+        SonarSensor unbounded(scene, SonarSensor::DefaultSiteNames(), options, 1);
+        const msgs::RangeRing a = bounded.Measure(scene, *caster);
+        const msgs::RangeRing b =
+            unbounded.Measure(scene, FarCaster(*caster, 2.0 * options.range_max_m));
+        for (std::size_t k = 0; k < a.readings.size(); ++k) {
+          ++readings;
+          ASSERT_EQ(a.readings[k].echo, b.readings[k].echo) << trial << " " << config << " " << k;
+          ASSERT_EQ(a.readings[k].range_m, b.readings[k].range_m)
+              << trial << " " << config << " " << k;
+          echoes += a.readings[k].echo;
+        }
+      }
+    }
+  }
+  EXPECT_GT(echoes, readings / 4);
 }
 
 // The P3-DX in a real MuJoCo room: interior [-2, 3] x [-1.5, 2.5], optionally rotated.
