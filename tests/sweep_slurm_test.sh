@@ -40,8 +40,9 @@ trap stop EXIT
 trap 'exit 1' INT TERM
 # ctest kills the script with SIGKILL at its TIMEOUT (300 s), which no trap sees, and the daemons
 # (detached by start-stop-daemon) would outlive it. So the script ends itself first: after
-# $deadline_s seconds the watchdog sends it TERM, and the EXIT trap stops the daemons.
-deadline_s=${PLYWOOD_SLURM_TEST_DEADLINE_S:-270}
+# $deadline_s seconds the watchdog sends it TERM, and the EXIT trap stops the daemons (up to 15 s
+# each, 45 s for the three, and the command under way finishes first: 240 + 45 + a few < 300).
+deadline_s=${PLYWOOD_SLURM_TEST_DEADLINE_S:-240}
 # Its sleep holds no stream of the script's (ctest waits for those to close) and is stopped with
 # it.
 (
