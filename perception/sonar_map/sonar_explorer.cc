@@ -639,6 +639,7 @@ SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here
       const double p = grid_.Probability(ix, iy);
       CellState state =
           p < eps ? CellState::kFree : (p > 1.0 - eps ? CellState::kOccupied : CellState::kUnknown);
+      if (state == CellState::kOccupied && !HeardForPlanning(ix, iy)) state = CellState::kFree;
       // The robot's body stands on the cells under it: they are free whatever the sonar made of
       // them (it never hears inside its blanking range, so a cell the robot came to stand on may
       // still be unknown). Left unknown, they can cut the robot's own cell off from the free space
@@ -929,13 +930,20 @@ bool SonarExplorer::MapBlocksFront(const msgs::Pose2D& X_WR) const {
   for (int dy = -r; dy <= r; ++dy)
     for (int dx = -r; dx <= r; ++dx) {
       const int ix = c.x() + dx, iy = c.y() + dy;
-      if (!grid_.Contains(ix, iy) || grid_.Probability(ix, iy) <= 1.0 - options_.map.eps) continue;
+      if (!grid_.Contains(ix, iy) || !HeardForPlanning(ix, iy)) continue;
       const Eigen::Vector2d d = grid_.CellCentre(ix, iy) - here;
       const double along = d.dot(ahead);
       const double side = ahead.x() * d.y() - ahead.y() * d.x();
       if (along > 0.0 && along < reach && std::abs(side) < half_width) return true;
     }
   return false;
+}
+
+bool SonarExplorer::HeardForPlanning(int ix, int iy) const {
+  if (grid_.Probability(ix, iy) <= 1.0 - options_.map.eps) return false;
+  const int min_passes = options_.map.beam_free_min_passes;
+  return !(options_.plan_through_axis_free && start_ && min_passes > 0 &&
+           beam_free_.Passes(ix, iy) >= min_passes);
 }
 
 std::optional<double> SonarExplorer::ContactAhead(const msgs::Pose2D& X_WR) const {

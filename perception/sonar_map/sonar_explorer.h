@@ -148,6 +148,13 @@ struct SonarExplorerOptions {
   // unknown share is measured, and the circuit corners skipped after blocked moves count as given
   // up, so the retry drives to them again. Off: round 42a's test on the reported room as fitted.
   bool complete_room_check = false;
+  // Whether the planner (Planning's cells and MapBlocksFront) takes an occupied cell that the
+  // grid-aligned sonar axes passed through at least map.beam_free_min_passes times for free, as
+  // the reported map already does for its obstacles (issue 14 round 65b): the network keeps cells
+  // an oblique transducer heard, whose echo may have come from anywhere in its cone, and a later
+  // axis that saw floor through them outvotes them for the body's way. Off: planning on the
+  // network's cells alone.
+  bool plan_through_axis_free = false;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
 };
@@ -264,6 +271,9 @@ class SonarExplorer final : public robot::Controller {
   std::optional<msgs::WheelSpeedCommand> ReactToBump(const robot::ControllerInput& input);
   // Whether an occupied grid cell lies in the corridor the body sweeps within stop_range_m.
   bool MapBlocksFront(const msgs::Pose2D& X_WR) const;
+  // Whether the planner takes cell (ix, iy) for heard: P > 1 - eps, unless plan_through_axis_free
+  // and the grid-aligned axes saw floor through it.
+  bool HeardForPlanning(int ix, int iy) const;
   // The sideways offset (left positive) of the nearest contact point in that corridor, if any.
   std::optional<double> ContactAhead(const msgs::Pose2D& X_WR) const;
 

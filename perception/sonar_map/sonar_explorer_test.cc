@@ -521,6 +521,42 @@ TEST(SonarExplorerTest, RobotOnCellsTheSonarNeverSawDoesNotDeclareTheMapComplete
   EXPECT_TRUE(moved);  // it sets off round the box (turning first)
 }
 
+// A cell model that calls two cells straight ahead of the robot occupied whatever the ring says,
+// as the network kept the spike an oblique transducer heard (issue 14 round 65b), and says nothing
+// elsewhere.
+class SpikeAheadModel final : public SonarCellModel {
+ public:
+  double Probability(const msgs::RangeRing&, const Eigen::Vector2d& p_R) const override {
+    return p_R.x() > 0.41 && p_R.x() < 0.5 && std::abs(p_R.y()) < 0.02 ? 0.95 : 0.5;
+  }
+};
+
+// The follower's speed over the ticks from 1 s to 2 s, the robot standing at the origin of the
+// 3 x 3 m room facing +x, its forward transducer's axis passing through the spike to the wall.
+double SlowestForwardWithSpikeAhead(bool plan_through_axis_free) {
+  SonarExplorerOptions options = ClassicalOptions();
+  options.plan_through_axis_free = plan_through_axis_free;
+  // Cell edges 0.01 m off the axis (the grid starts at the pose less this): the axis runs inside
+  // one row of cells, the spike's.
+  options.grid_half_extent_m = 3.99;
+  SonarExplorer explorer(robot::MagellanProSpec(), options, std::make_shared<SpikeAheadModel>());
+  Driver driver(explorer);
+  double slowest = std::numeric_limits<double>::infinity();
+  while (driver.time_s() < 2.0) {
+    const double v = Speed(driver.Tick());
+    if (driver.time_s() > 1.0) slowest = std::min(slowest, v);
+  }
+  return slowest;
+}
+
+TEST(SonarExplorerTest, OccupiedCellsTheAxesSawFloorThroughBlockTheWayUnlessPlannedThrough) {
+  // Off: the map check sees the spike in the body's corridor and turns the robot on the spot.
+  EXPECT_NEAR(SlowestForwardWithSpikeAhead(false), 0.0, 1e-9);
+  // On: every ring's forward axis passed through it to the wall 1.3 m off, so it is no obstacle
+  // to the body's way, and the follower drives on.
+  EXPECT_GT(SlowestForwardWithSpikeAhead(true), 0.05);
+}
+
 void ExpectThrowsNaming(const SonarExplorerOptions& options, const std::string& field) {
   try {
     MakeExplorer(options);
