@@ -522,23 +522,42 @@ TEST(SonarExplorerTest, RobotOnCellsTheSonarNeverSawDoesNotDeclareTheMapComplete
 }
 
 // A cell model that calls two cells straight ahead of the robot occupied whatever the ring says,
-// as the network kept the spike an oblique transducer heard (issue 14 round 65b), and says nothing
-// elsewhere.
+// as the network kept the spike an oblique transducer heard (issue 14 rounds 65b, 66a), and says
+// nothing elsewhere.
 class SpikeAheadModel final : public SonarCellModel {
  public:
   double Probability(const msgs::RangeRing&, const Eigen::Vector2d& p_R) const override {
-    return p_R.x() > 0.41 && p_R.x() < 0.5 && std::abs(p_R.y()) < 0.02 ? 0.95 : 0.5;
+    return SpikeAhead(p_R) ? 0.95 : 0.5;
+  }
+  static bool SpikeAhead(const Eigen::Vector2d& p_R) {
+    return p_R.x() > 0.41 && p_R.x() < 0.5 && std::abs(p_R.y()) < 0.02;
   }
 };
 
-// The follower's speed over the ticks from 1 s to 2 s, the robot standing at the origin of the
-// 3 x 3 m room facing +x, its forward transducer's axis passing through the spike to the wall.
-double SlowestForwardWithSpikeAhead(bool plan_through_axis_free) {
+// The same spike across a corridor 0.7 m wide (walls north and south, closed 0.35 m behind the
+// robot) whose only unknown end lies 0.7 m ahead, past it: on the heard cells, the spike keeps
+// every way to that frontier closer than squeeze_clearance_m to it.
+class SpikeInCorridorModel final : public SonarCellModel {
+ public:
+  double Probability(const msgs::RangeRing&, const Eigen::Vector2d& p) const override {
+    const bool side_wall = std::abs(p.y()) >= 0.35 && std::abs(p.y()) <= 0.45 && p.x() >= -0.45;
+    const bool end_wall = p.x() >= -0.45 && p.x() <= -0.35 && std::abs(p.y()) <= 0.45;
+    if (side_wall || end_wall || SpikeAheadModel::SpikeAhead(p)) return 0.95;
+    return p.x() > -0.35 && std::abs(p.y()) < 0.35 ? 0.05 : 0.5;
+  }
+};
+
+// Cell edges 0.01 m off the forward axis (the grid starts at the pose less this): the axis runs
+// inside one row of cells, the spike's, and every ring's forward axis passes through it to the
+// wall 1.3 m off.
+constexpr double kHalfExtentAxisInOneRow = 3.99;
+
+// The follower's speed over the ticks from 1 s to 2 s (the perimeter phase), the robot standing at
+// the origin of the 3 x 3 m room facing +x with the spike ahead.
+double SlowestForwardWithSpikeAhead(bool last_frontier_through_axis_free) {
   SonarExplorerOptions options = ClassicalOptions();
-  options.plan_through_axis_free = plan_through_axis_free;
-  // Cell edges 0.01 m off the axis (the grid starts at the pose less this): the axis runs inside
-  // one row of cells, the spike's.
-  options.grid_half_extent_m = 3.99;
+  options.last_frontier_through_axis_free = last_frontier_through_axis_free;
+  options.grid_half_extent_m = kHalfExtentAxisInOneRow;
   SonarExplorer explorer(robot::MagellanProSpec(), options, std::make_shared<SpikeAheadModel>());
   Driver driver(explorer);
   double slowest = std::numeric_limits<double>::infinity();
@@ -549,12 +568,45 @@ double SlowestForwardWithSpikeAhead(bool plan_through_axis_free) {
   return slowest;
 }
 
-TEST(SonarExplorerTest, OccupiedCellsTheAxesSawFloorThroughBlockTheWayUnlessPlannedThrough) {
-  // Off: the map check sees the spike in the body's corridor and turns the robot on the spot.
+struct CorridorRun {
+  bool finished = false;
+  std::string end_reason;
+  std::vector<std::string> goals;  // the details of the goal events, in order
+};
+
+// 10 s in the corridor, the perimeter cut short so that the planner's tiers run.
+CorridorRun RunInCorridorWithSpike(bool last_frontier_through_axis_free) {
+  SonarExplorerOptions options = ClassicalOptions();
+  options.last_frontier_through_axis_free = last_frontier_through_axis_free;
+  options.grid_half_extent_m = kHalfExtentAxisInOneRow;
+  options.perimeter_max_s = 1.0;
+  SonarExplorer explorer(robot::MagellanProSpec(), options,
+                         std::make_shared<SpikeInCorridorModel>());
+  Driver driver(explorer);
+  while (driver.time_s() < 10.0 && !explorer.Finished()) driver.Tick();
+  CorridorRun run{explorer.Finished(), explorer.end_reason(), {}};
+  for (const ExplorationEvent& e : explorer.events())
+    if (e.kind == "goal") run.goals.push_back(e.detail);
+  return run;
+}
+
+TEST(SonarExplorerTest, AxisFreeCellsAreFreeOnlyWhenNoFrontierIsLeftOtherwise) {
+  // While the perimeter runs the map rules as ever, the option on or off: the map check sees the
+  // spike in the body's corridor and turns the robot on the spot (round 65b's rule, on always,
+  // drove on through it).
   EXPECT_NEAR(SlowestForwardWithSpikeAhead(false), 0.0, 1e-9);
-  // On: every ring's forward axis passed through it to the wall 1.3 m off, so it is no obstacle
-  // to the body's way, and the follower drives on.
-  EXPECT_GT(SlowestForwardWithSpikeAhead(true), 0.05);
+  EXPECT_NEAR(SlowestForwardWithSpikeAhead(true), 0.0, 1e-9);
+  // Off: no frontier can be reached past the spike, and the map is declared complete.
+  const CorridorRun off = RunInCorridorWithSpike(false);
+  EXPECT_TRUE(off.finished);
+  EXPECT_EQ(off.end_reason, "map_complete");
+  EXPECT_EQ(std::count(off.goals.begin(), off.goals.end(), "frontier"), 0);
+  // On: there, and only there, the last tier takes the spike the forward axis saw floor through
+  // for free, and the robot sets off for the frontier past it; no tier before it found one.
+  const CorridorRun on = RunInCorridorWithSpike(true);
+  EXPECT_FALSE(on.finished) << on.end_reason;
+  EXPECT_EQ(std::count(on.goals.begin(), on.goals.end(), "frontier"), 0);
+  EXPECT_GE(std::count(on.goals.begin(), on.goals.end(), "frontier_through_axis_free"), 1);
 }
 
 void ExpectThrowsNaming(const SonarExplorerOptions& options, const std::string& field) {
