@@ -10,7 +10,8 @@ namespace plywood::perception {
 //   perimeter_end: the boundary phase is over; detail "closed" (turned once round, far enough),
 //                  "time_limit" (perimeter_max_s) or "stuck" (turned on the spot); at: the robot.
 //   goal:          a new goal; detail "circuit_corner", "place", "frontier" or
-//                  "frontier_through_axis_free" (the last tier, last_frontier_through_axis_free);
+//                  "frontier_through_axis_free" (the last tier, last_frontier_through_axis_free),
+//                  "frontier_at_body_clearance" (the last tier, last_frontier_at_body_clearance);
 //                  at: the goal.
 //   given_up:      a move given up; detail "front_echo", "map" (heard cells ahead) or "bump";
 //                  at: where the robot was.

@@ -253,8 +253,12 @@ msgs::WheelSpeedCommand SonarExplorer::DriveTo(const msgs::Pose2D& X_WR,
       std::clamp(2.0 * heading_error, -options_.turn_rate_rad_s, options_.turn_rate_rad_s);
   twist.angular_rad_s = w;
   // Trajectories parallel to x or y: turn on the spot first, drive once aligned.
-  if (std::abs(heading_error) < kAlignedRad)
-    twist.linear_m_s = std::min(options_.speed_m_s, 0.1 + d.norm());
+  // A move through a gap at the body's own clearance goes at the back-off speed: a face the sonar
+  // placed a few centimetres off is met at the speed a touch is left at.
+  const double speed = at_body_clearance_
+                           ? std::min(options_.speed_m_s, options_.bump_back_off_speed_m_s)
+                           : options_.speed_m_s;
+  if (std::abs(heading_error) < kAlignedRad) twist.linear_m_s = std::min(speed, 0.1 + d.norm());
   return robot::TwistToWheelSpeeds(spec_, twist);
 }
 
@@ -322,6 +326,18 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
       return;
     }
     through_axis_free_ = false;
+  }
+  if (at_body_clearance_) {
+    // The same for a frontier the body-clearance tier found.
+    heading_to_circuit_ = false;
+    target_partition_ = -1;
+    if (std::optional<std::vector<Eigen::Vector2d>> frontier =
+            PlanToFrontierAtBodyClearance(map, here)) {
+      path_ = std::move(*frontier);
+      heading_to_frontier_ = true;
+      return;
+    }
+    at_body_clearance_ = false;
   }
   const PlanningCells planning = Planning(here, map.obstacles, false);
   heading_to_circuit_ = false;
@@ -428,6 +444,16 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
         path_ = std::move(*last);
         heading_to_frontier_ = true;
         through_axis_free_ = true;
+        target_partition_ = -1;
+        return;
+      }
+    }
+    if (options_.last_frontier_at_body_clearance) {
+      if (std::optional<std::vector<Eigen::Vector2d>> last =
+              PlanToFrontierAtBodyClearance(map, here)) {
+        path_ = std::move(*last);
+        heading_to_frontier_ = true;
+        at_body_clearance_ = true;
         target_partition_ = -1;
         return;
       }
@@ -600,6 +626,7 @@ void SonarExplorer::Note(const char* kind, const std::string& detail, const Eige
 void SonarExplorer::GiveUpMove(const Eigen::Vector2d& here, const char* why) {
   Note("given_up", why, here);
   through_axis_free_ = false;
+  at_body_clearance_ = false;
   if (heading_to_circuit_) {
     // The way to this circuit corner is blocked: the circuit goes on from the next one.
     if (circuit_ && !circuit_->corners.empty()) {
@@ -641,7 +668,8 @@ bool SonarExplorer::Abandoned(const Eigen::Vector2d& target) const {
 
 SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here,
                                                      const std::vector<Rect>& obstacles,
-                                                     bool through_axis_free) const {
+                                                     bool through_axis_free,
+                                                     bool at_body_clearance) const {
   const int W = grid_.width(), H = grid_.height();
   const double res = grid_.resolution_m(), eps = options_.map.eps;
   PlanningCells out;
@@ -693,6 +721,9 @@ SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here
   const std::vector<char> squeeze_heard = options_.squeeze_clearance_m > 0.0
                                               ? blocked(heard, options_.squeeze_clearance_m)
                                               : std::vector<char>{};
+  const double body_clearance_m = options_.robot_radius_m + options_.front_margin_m;
+  const std::vector<char> body_heard =
+      at_body_clearance ? blocked(heard, body_clearance_m) : std::vector<char>{};
   // A robot backing off a contact leaves getting no nearer to it either.
   for (std::size_t i = 0; i < touched.size(); ++i) {
     heard[i] = heard[i] || touched[i];
@@ -722,6 +753,7 @@ SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here
   usable(out.narrow_safe_from_heard, narrow_heard, heard, options_.narrow_clearance_m);
   if (options_.squeeze_clearance_m > 0.0)
     usable(out.squeeze_safe_from_heard, squeeze_heard, heard, options_.squeeze_clearance_m);
+  if (at_body_clearance) usable(out.body_safe_from_heard, body_heard, heard, body_clearance_m);
   return out;
 }
 
@@ -841,6 +873,7 @@ void SonarExplorer::KeepContactAndDropMove(const msgs::Pose2D& X_WR,
   contacts_.push_back(contact);
   Note("contact", "", contact);
   through_axis_free_ = false;
+  at_body_clearance_ = false;
   if (perimeter_done_ && !path_.empty()) GiveUpMove(Position(X_WR), "bump");
   path_.clear();
   heading_to_frontier_ = false;
@@ -989,6 +1022,23 @@ std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToFrontierThrough
   return frontier;
 }
 
+std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToFrontierAtBodyClearance(
+    const CognitiveMap& map, const Eigen::Vector2d& here) {
+  const PlanningCells planning = Planning(here, map.obstacles, false, true);
+  std::optional<std::vector<Eigen::Vector2d>> frontier =
+      PlanToFrontier(planning, planning.body_safe_from_heard, here);
+  if (frontier && frontier->empty()) {
+    // Standing on such a goal already: look from here, as the normal tiers do.
+    MarkLooked(here);
+    const Eigen::Vector2i cell = grid_.CellAt(here);
+    if (cell.x() >= 0) MarkLooked(grid_.CellCentre(cell.x(), cell.y()));
+    frontier = PlanToFrontier(planning, planning.body_safe_from_heard, here);
+  }
+  if (!frontier || frontier->empty()) return std::nullopt;
+  Note("goal", "frontier_at_body_clearance", frontier->back());
+  return frontier;
+}
+
 std::optional<double> SonarExplorer::ContactAhead(const msgs::Pose2D& X_WR) const {
   // The corridor of MapBlocksFront: a contact point is exact to the body's radius.
   const double reach = options_.stop_range_m + options_.robot_radius_m;
@@ -1028,6 +1078,7 @@ msgs::WheelSpeedCommand SonarExplorer::Explore(const robot::ControllerInput& inp
     if (heading_to_frontier_) MarkLooked(Position(X_WR));
     heading_to_frontier_ = false;
     through_axis_free_ = false;
+    at_body_clearance_ = false;
     return {};
   }
   msgs::WheelSpeedCommand command = DriveTo(X_WR, path_.front());

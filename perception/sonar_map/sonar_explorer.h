@@ -159,6 +159,18 @@ struct SonarExplorerOptions {
   // does not flip between the two rules. A run that never reaches that point is the same as
   // without the option. Off: the run ends there.
   bool last_frontier_through_axis_free = false;
+  // Whether the frontier search gets a last tier at the body's own clearance (issue 14 round
+  // 66c): when nothing is left that the robot can reach at path_clearance_m, narrow_clearance_m
+  // or squeeze_clearance_m (nor through last_frontier_through_axis_free's tier, when that is on
+  // too), and the run would end "map_complete", the frontiers are sought once more over free cells
+  // robot_radius_m + front_margin_m from the cells heard (the front check's corridor: the closest
+  // a move may come to what it drives past without stopping), i.e. through a gap between heard
+  // faces the body's width plus two margins wide. A frontier found so is driven to at
+  // bump_back_off_speed_m_s, the speed the robot backs off a touch at, and its replans seek only
+  // such frontiers until that move ends (arrived, given up or bumped). The heard cells are the
+  // network's as for every other tier (the axis-free cells are not taken for free here). A run
+  // that never reaches that point is the same as without the option. Off: the run ends there.
+  bool last_frontier_at_body_clearance = false;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
 };
@@ -245,11 +257,16 @@ class SonarExplorer final : public robot::Controller {
     std::vector<char> narrow_safe_from_heard;
     // safe_from_heard with squeeze_clearance_m (empty when it is 0).
     std::vector<char> squeeze_safe_from_heard;
+    // safe_from_heard with robot_radius_m + front_margin_m (filled only for the last tier of
+    // last_frontier_at_body_clearance, empty otherwise).
+    std::vector<char> body_safe_from_heard;
   };
   // through_axis_free: the occupied cells the grid-aligned axes saw floor through count as free
   // (last_frontier_through_axis_free's last tier).
+  // at_body_clearance: body_safe_from_heard is filled too (last_frontier_at_body_clearance's
+  // tier).
   PlanningCells Planning(const Eigen::Vector2d& here, const std::vector<Rect>& obstacles,
-                         bool through_axis_free) const;
+                         bool through_axis_free, bool at_body_clearance = false) const;
   // Waypoints after the robot along the shortest traversable cell path to a goal cell: empty when
   // the robot's cell is a goal, nullopt when no goal can be reached.
   std::optional<std::vector<Eigen::Vector2d>> CellPath(const std::vector<char>& traversable,
@@ -284,6 +301,11 @@ class SonarExplorer final : public robot::Controller {
   // The last tier (last_frontier_through_axis_free): a path to a frontier over the cells with the
   // axis-free ones taken for free, nullopt when there is none.
   std::optional<std::vector<Eigen::Vector2d>> PlanToFrontierThroughAxisFree(
+      const CognitiveMap& map, const Eigen::Vector2d& here);
+  // The last tier at the body's own clearance (last_frontier_at_body_clearance): a path to a
+  // frontier over free cells robot_radius_m + front_margin_m from the cells heard, nullopt when
+  // there is none.
+  std::optional<std::vector<Eigen::Vector2d>> PlanToFrontierAtBodyClearance(
       const CognitiveMap& map, const Eigen::Vector2d& here);
   // The sideways offset (left positive) of the nearest contact point in that corridor, if any.
   std::optional<double> ContactAhead(const msgs::Pose2D& X_WR) const;
@@ -361,6 +383,10 @@ class SonarExplorer final : public robot::Controller {
   // The move under way is to a frontier the last tier found (last_frontier_through_axis_free):
   // the axis-free cells are free for the planner and the map check until it ends.
   bool through_axis_free_ = false;
+  // The move under way is to a frontier the body-clearance tier found
+  // (last_frontier_at_body_clearance): only such frontiers are sought, at the back-off speed,
+  // until it ends.
+  bool at_body_clearance_ = false;
   // World points of echoes that blocked a move: occupied for the planner.
   std::vector<Eigen::Vector2d> blocking_echoes_;
   // Points bump panels touched: kept contact_clearance_m from by the planner.
