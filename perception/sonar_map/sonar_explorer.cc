@@ -253,8 +253,12 @@ msgs::WheelSpeedCommand SonarExplorer::DriveTo(const msgs::Pose2D& X_WR,
       std::clamp(2.0 * heading_error, -options_.turn_rate_rad_s, options_.turn_rate_rad_s);
   twist.angular_rad_s = w;
   // Trajectories parallel to x or y: turn on the spot first, drive once aligned.
-  if (std::abs(heading_error) < kAlignedRad)
-    twist.linear_m_s = std::min(options_.speed_m_s, 0.1 + d.norm());
+  // A move through a gap at the body's own clearance goes at the back-off speed: a face the sonar
+  // placed a few centimetres off is met at the speed a touch is left at.
+  const double speed = at_body_clearance_
+                           ? std::min(options_.speed_m_s, options_.bump_back_off_speed_m_s)
+                           : options_.speed_m_s;
+  if (std::abs(heading_error) < kAlignedRad) twist.linear_m_s = std::min(speed, 0.1 + d.norm());
   return robot::TwistToWheelSpeeds(spec_, twist);
 }
 
@@ -310,7 +314,32 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
   }
   const Eigen::Vector2i cell = grid_.CellAt(here);
   if (cell.x() >= 0) visits_[cell.y() * grid_.width() + cell.x()] += 1.0;
-  const PlanningCells planning = Planning(here, map.obstacles);
+  if (through_axis_free_) {
+    // On the way to a frontier the last tier found: only such frontiers are sought until the
+    // move ends, so that the goal does not flip between the two rules.
+    heading_to_circuit_ = false;
+    target_partition_ = -1;
+    if (std::optional<std::vector<Eigen::Vector2d>> frontier =
+            PlanToFrontierThroughAxisFree(map, here)) {
+      path_ = std::move(*frontier);
+      heading_to_frontier_ = true;
+      return;
+    }
+    through_axis_free_ = false;
+  }
+  if (at_body_clearance_) {
+    // The same for a frontier the body-clearance tier found.
+    heading_to_circuit_ = false;
+    target_partition_ = -1;
+    if (std::optional<std::vector<Eigen::Vector2d>> frontier =
+            PlanToFrontierAtBodyClearance(map, here)) {
+      path_ = std::move(*frontier);
+      heading_to_frontier_ = true;
+      return;
+    }
+    at_body_clearance_ = false;
+  }
+  const PlanningCells planning = Planning(here, map.obstacles, false);
   heading_to_circuit_ = false;
   if (options_.circle_obstacles && PlanCircuit(map, planning, here, time_s)) {
     heading_to_frontier_ = false;
@@ -408,6 +437,26 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
       target_partition_ = -1;
       Note("goal", "frontier", path_.back());
       return;
+    }
+    if (options_.last_frontier_through_axis_free) {
+      if (std::optional<std::vector<Eigen::Vector2d>> last =
+              PlanToFrontierThroughAxisFree(map, here)) {
+        path_ = std::move(*last);
+        heading_to_frontier_ = true;
+        through_axis_free_ = true;
+        target_partition_ = -1;
+        return;
+      }
+    }
+    if (options_.last_frontier_at_body_clearance) {
+      if (std::optional<std::vector<Eigen::Vector2d>> last =
+              PlanToFrontierAtBodyClearance(map, here)) {
+        path_ = std::move(*last);
+        heading_to_frontier_ = true;
+        at_body_clearance_ = true;
+        target_partition_ = -1;
+        return;
+      }
     }
     Finish("map_complete", time_s);
     return;
@@ -576,6 +625,8 @@ void SonarExplorer::Note(const char* kind, const std::string& detail, const Eige
 
 void SonarExplorer::GiveUpMove(const Eigen::Vector2d& here, const char* why) {
   Note("given_up", why, here);
+  through_axis_free_ = false;
+  at_body_clearance_ = false;
   if (heading_to_circuit_) {
     // The way to this circuit corner is blocked: the circuit goes on from the next one.
     if (circuit_ && !circuit_->corners.empty()) {
@@ -616,7 +667,9 @@ bool SonarExplorer::Abandoned(const Eigen::Vector2d& target) const {
 }
 
 SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here,
-                                                     const std::vector<Rect>& obstacles) const {
+                                                     const std::vector<Rect>& obstacles,
+                                                     bool through_axis_free,
+                                                     bool at_body_clearance) const {
   const int W = grid_.width(), H = grid_.height();
   const double res = grid_.resolution_m(), eps = options_.map.eps;
   PlanningCells out;
@@ -639,6 +692,8 @@ SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here
       const double p = grid_.Probability(ix, iy);
       CellState state =
           p < eps ? CellState::kFree : (p > 1.0 - eps ? CellState::kOccupied : CellState::kUnknown);
+      if (state == CellState::kOccupied && !HeardForPlanning(ix, iy, through_axis_free))
+        state = CellState::kFree;
       // The robot's body stands on the cells under it: they are free whatever the sonar made of
       // them (it never hears inside its blanking range, so a cell the robot came to stand on may
       // still be unknown). Left unknown, they can cut the robot's own cell off from the free space
@@ -666,6 +721,9 @@ SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here
   const std::vector<char> squeeze_heard = options_.squeeze_clearance_m > 0.0
                                               ? blocked(heard, options_.squeeze_clearance_m)
                                               : std::vector<char>{};
+  const double body_clearance_m = options_.robot_radius_m + options_.front_margin_m;
+  const std::vector<char> body_heard =
+      at_body_clearance ? blocked(heard, body_clearance_m) : std::vector<char>{};
   // A robot backing off a contact leaves getting no nearer to it either.
   for (std::size_t i = 0; i < touched.size(); ++i) {
     heard[i] = heard[i] || touched[i];
@@ -695,6 +753,7 @@ SonarExplorer::PlanningCells SonarExplorer::Planning(const Eigen::Vector2d& here
   usable(out.narrow_safe_from_heard, narrow_heard, heard, options_.narrow_clearance_m);
   if (options_.squeeze_clearance_m > 0.0)
     usable(out.squeeze_safe_from_heard, squeeze_heard, heard, options_.squeeze_clearance_m);
+  if (at_body_clearance) usable(out.body_safe_from_heard, body_heard, heard, body_clearance_m);
   return out;
 }
 
@@ -813,6 +872,8 @@ void SonarExplorer::KeepContactAndDropMove(const msgs::Pose2D& X_WR,
                                            const Eigen::Vector2d& contact) {
   contacts_.push_back(contact);
   Note("contact", "", contact);
+  through_axis_free_ = false;
+  at_body_clearance_ = false;
   if (perimeter_done_ && !path_.empty()) GiveUpMove(Position(X_WR), "bump");
   path_.clear();
   heading_to_frontier_ = false;
@@ -929,13 +990,53 @@ bool SonarExplorer::MapBlocksFront(const msgs::Pose2D& X_WR) const {
   for (int dy = -r; dy <= r; ++dy)
     for (int dx = -r; dx <= r; ++dx) {
       const int ix = c.x() + dx, iy = c.y() + dy;
-      if (!grid_.Contains(ix, iy) || grid_.Probability(ix, iy) <= 1.0 - options_.map.eps) continue;
+      if (!grid_.Contains(ix, iy) || !HeardForPlanning(ix, iy, through_axis_free_)) continue;
       const Eigen::Vector2d d = grid_.CellCentre(ix, iy) - here;
       const double along = d.dot(ahead);
       const double side = ahead.x() * d.y() - ahead.y() * d.x();
       if (along > 0.0 && along < reach && std::abs(side) < half_width) return true;
     }
   return false;
+}
+
+bool SonarExplorer::HeardForPlanning(int ix, int iy, bool through_axis_free) const {
+  if (grid_.Probability(ix, iy) <= 1.0 - options_.map.eps) return false;
+  const int min_passes = options_.map.beam_free_min_passes;
+  return !(through_axis_free && start_ && min_passes > 0 &&
+           beam_free_.Passes(ix, iy) >= min_passes);
+}
+
+std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToFrontierThroughAxisFree(
+    const CognitiveMap& map, const Eigen::Vector2d& here) {
+  const PlanningCells planning = Planning(here, map.obstacles, true);
+  std::optional<std::vector<Eigen::Vector2d>> frontier = PlanToAnyFrontier(planning, here);
+  if (frontier && frontier->empty()) {
+    // Standing on such a goal already: look from here, as the normal tiers do.
+    MarkLooked(here);
+    const Eigen::Vector2i cell = grid_.CellAt(here);
+    if (cell.x() >= 0) MarkLooked(grid_.CellCentre(cell.x(), cell.y()));
+    frontier = PlanToAnyFrontier(planning, here);
+  }
+  if (!frontier || frontier->empty()) return std::nullopt;
+  Note("goal", "frontier_through_axis_free", frontier->back());
+  return frontier;
+}
+
+std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToFrontierAtBodyClearance(
+    const CognitiveMap& map, const Eigen::Vector2d& here) {
+  const PlanningCells planning = Planning(here, map.obstacles, false, true);
+  std::optional<std::vector<Eigen::Vector2d>> frontier =
+      PlanToFrontier(planning, planning.body_safe_from_heard, here);
+  if (frontier && frontier->empty()) {
+    // Standing on such a goal already: look from here, as the normal tiers do.
+    MarkLooked(here);
+    const Eigen::Vector2i cell = grid_.CellAt(here);
+    if (cell.x() >= 0) MarkLooked(grid_.CellCentre(cell.x(), cell.y()));
+    frontier = PlanToFrontier(planning, planning.body_safe_from_heard, here);
+  }
+  if (!frontier || frontier->empty()) return std::nullopt;
+  Note("goal", "frontier_at_body_clearance", frontier->back());
+  return frontier;
 }
 
 std::optional<double> SonarExplorer::ContactAhead(const msgs::Pose2D& X_WR) const {
@@ -976,6 +1077,8 @@ msgs::WheelSpeedCommand SonarExplorer::Explore(const robot::ControllerInput& inp
     // count, since the ring may have heard nothing of it on the way.
     if (heading_to_frontier_) MarkLooked(Position(X_WR));
     heading_to_frontier_ = false;
+    through_axis_free_ = false;
+    at_body_clearance_ = false;
     return {};
   }
   msgs::WheelSpeedCommand command = DriveTo(X_WR, path_.front());

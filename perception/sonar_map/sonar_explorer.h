@@ -148,6 +148,29 @@ struct SonarExplorerOptions {
   // unknown share is measured, and the circuit corners skipped after blocked moves count as given
   // up, so the retry drives to them again. Off: round 42a's test on the reported room as fitted.
   bool complete_room_check = false;
+  // Whether the frontier search gets a last tier (issue 14 round 66a): when no circuit corner, no
+  // place and no frontier is left that the robot can reach, and the run would end
+  // "map_complete", the frontiers are sought once more on the cells with every occupied cell that
+  // the grid-aligned sonar axes passed through at least map.beam_free_min_passes times taken for
+  // free (the reported map drops those from its obstacles already: the network keeps cells an
+  // oblique transducer heard, whose echo may have come from anywhere in its cone). A frontier
+  // found so is followed with those cells free for the planner and the map check too, until that
+  // move ends (arrived, given up or bumped); its replans seek only such frontiers, so the goal
+  // does not flip between the two rules. A run that never reaches that point is the same as
+  // without the option. Off: the run ends there.
+  bool last_frontier_through_axis_free = false;
+  // Whether the frontier search gets a last tier at the body's own clearance (issue 14 round
+  // 66c): when nothing is left that the robot can reach at path_clearance_m, narrow_clearance_m
+  // or squeeze_clearance_m (nor through last_frontier_through_axis_free's tier, when that is on
+  // too), and the run would end "map_complete", the frontiers are sought once more over free cells
+  // robot_radius_m + front_margin_m from the cells heard (the front check's corridor: the closest
+  // a move may come to what it drives past without stopping), i.e. through a gap between heard
+  // faces the body's width plus two margins wide. A frontier found so is driven to at
+  // bump_back_off_speed_m_s, the speed the robot backs off a touch at, and its replans seek only
+  // such frontiers until that move ends (arrived, given up or bumped). The heard cells are the
+  // network's as for every other tier (the axis-free cells are not taken for free here). A run
+  // that never reaches that point is the same as without the option. Off: the run ends there.
+  bool last_frontier_at_body_clearance = false;
   // @throws std::invalid_argument naming the field.
   void Validate() const;
 };
@@ -234,8 +257,16 @@ class SonarExplorer final : public robot::Controller {
     std::vector<char> narrow_safe_from_heard;
     // safe_from_heard with squeeze_clearance_m (empty when it is 0).
     std::vector<char> squeeze_safe_from_heard;
+    // safe_from_heard with robot_radius_m + front_margin_m (filled only for the last tier of
+    // last_frontier_at_body_clearance, empty otherwise).
+    std::vector<char> body_safe_from_heard;
   };
-  PlanningCells Planning(const Eigen::Vector2d& here, const std::vector<Rect>& obstacles) const;
+  // through_axis_free: the occupied cells the grid-aligned axes saw floor through count as free
+  // (last_frontier_through_axis_free's last tier).
+  // at_body_clearance: body_safe_from_heard is filled too (last_frontier_at_body_clearance's
+  // tier).
+  PlanningCells Planning(const Eigen::Vector2d& here, const std::vector<Rect>& obstacles,
+                         bool through_axis_free, bool at_body_clearance = false) const;
   // Waypoints after the robot along the shortest traversable cell path to a goal cell: empty when
   // the robot's cell is a goal, nullopt when no goal can be reached.
   std::optional<std::vector<Eigen::Vector2d>> CellPath(const std::vector<char>& traversable,
@@ -264,6 +295,18 @@ class SonarExplorer final : public robot::Controller {
   std::optional<msgs::WheelSpeedCommand> ReactToBump(const robot::ControllerInput& input);
   // Whether an occupied grid cell lies in the corridor the body sweeps within stop_range_m.
   bool MapBlocksFront(const msgs::Pose2D& X_WR) const;
+  // Whether the planner takes cell (ix, iy) for heard: P > 1 - eps, unless through_axis_free and
+  // the grid-aligned axes saw floor through it at least map.beam_free_min_passes times.
+  bool HeardForPlanning(int ix, int iy, bool through_axis_free) const;
+  // The last tier (last_frontier_through_axis_free): a path to a frontier over the cells with the
+  // axis-free ones taken for free, nullopt when there is none.
+  std::optional<std::vector<Eigen::Vector2d>> PlanToFrontierThroughAxisFree(
+      const CognitiveMap& map, const Eigen::Vector2d& here);
+  // The last tier at the body's own clearance (last_frontier_at_body_clearance): a path to a
+  // frontier over free cells robot_radius_m + front_margin_m from the cells heard, nullopt when
+  // there is none.
+  std::optional<std::vector<Eigen::Vector2d>> PlanToFrontierAtBodyClearance(
+      const CognitiveMap& map, const Eigen::Vector2d& here);
   // The sideways offset (left positive) of the nearest contact point in that corridor, if any.
   std::optional<double> ContactAhead(const msgs::Pose2D& X_WR) const;
 
@@ -337,6 +380,13 @@ class SonarExplorer final : public robot::Controller {
   void MarkLooked(const Eigen::Vector2d& at);
   std::vector<char> looked_;  // cells within frontier_view_m of a frontier goal the robot reached
   bool heading_to_frontier_ = false;
+  // The move under way is to a frontier the last tier found (last_frontier_through_axis_free):
+  // the axis-free cells are free for the planner and the map check until it ends.
+  bool through_axis_free_ = false;
+  // The move under way is to a frontier the body-clearance tier found
+  // (last_frontier_at_body_clearance): only such frontiers are sought, at the back-off speed,
+  // until it ends.
+  bool at_body_clearance_ = false;
   // World points of echoes that blocked a move: occupied for the planner.
   std::vector<Eigen::Vector2d> blocking_echoes_;
   // Points bump panels touched: kept contact_clearance_m from by the planner.

@@ -521,6 +521,236 @@ TEST(SonarExplorerTest, RobotOnCellsTheSonarNeverSawDoesNotDeclareTheMapComplete
   EXPECT_TRUE(moved);  // it sets off round the box (turning first)
 }
 
+// A cell model that calls two cells straight ahead of the robot occupied whatever the ring says,
+// as the network kept the spike an oblique transducer heard (issue 14 rounds 65b, 66a), and says
+// nothing elsewhere.
+class SpikeAheadModel final : public SonarCellModel {
+ public:
+  double Probability(const msgs::RangeRing&, const Eigen::Vector2d& p_R) const override {
+    return SpikeAhead(p_R) ? 0.95 : 0.5;
+  }
+  static bool SpikeAhead(const Eigen::Vector2d& p_R) {
+    return p_R.x() > 0.41 && p_R.x() < 0.5 && std::abs(p_R.y()) < 0.02;
+  }
+};
+
+// The same spike across a corridor 0.7 m wide (walls north and south, closed 0.35 m behind the
+// robot) whose only unknown end lies 0.7 m ahead, past it: on the heard cells, the spike keeps
+// every way to that frontier closer than squeeze_clearance_m to it.
+class SpikeInCorridorModel final : public SonarCellModel {
+ public:
+  double Probability(const msgs::RangeRing&, const Eigen::Vector2d& p) const override {
+    const bool side_wall = std::abs(p.y()) >= 0.35 && std::abs(p.y()) <= 0.45 && p.x() >= -0.45;
+    const bool end_wall = p.x() >= -0.45 && p.x() <= -0.35 && std::abs(p.y()) <= 0.45;
+    if (side_wall || end_wall || SpikeAheadModel::SpikeAhead(p)) return 0.95;
+    return p.x() > -0.35 && std::abs(p.y()) < 0.35 ? 0.05 : 0.5;
+  }
+};
+
+// Cell edges 0.01 m off the forward axis (the grid starts at the pose less this): the axis runs
+// inside one row of cells, the spike's, and every ring's forward axis passes through it to the
+// wall 1.3 m off.
+constexpr double kHalfExtentAxisInOneRow = 3.99;
+
+// The follower's speed over the ticks from 1 s to 2 s (the perimeter phase), the robot standing at
+// the origin of the 3 x 3 m room facing +x with the spike ahead.
+double SlowestForwardWithSpikeAhead(bool last_frontier_through_axis_free) {
+  SonarExplorerOptions options = ClassicalOptions();
+  options.last_frontier_through_axis_free = last_frontier_through_axis_free;
+  options.grid_half_extent_m = kHalfExtentAxisInOneRow;
+  SonarExplorer explorer(robot::MagellanProSpec(), options, std::make_shared<SpikeAheadModel>());
+  Driver driver(explorer);
+  double slowest = std::numeric_limits<double>::infinity();
+  while (driver.time_s() < 2.0) {
+    const double v = Speed(driver.Tick());
+    if (driver.time_s() > 1.0) slowest = std::min(slowest, v);
+  }
+  return slowest;
+}
+
+struct CorridorRun {
+  bool finished = false;
+  std::string end_reason;
+  std::vector<std::string> goals;  // the details of the goal events, in order
+};
+
+// 10 s in the corridor, the perimeter cut short so that the planner's tiers run.
+CorridorRun RunInCorridorWithSpike(bool last_frontier_through_axis_free) {
+  SonarExplorerOptions options = ClassicalOptions();
+  options.last_frontier_through_axis_free = last_frontier_through_axis_free;
+  options.grid_half_extent_m = kHalfExtentAxisInOneRow;
+  options.perimeter_max_s = 1.0;
+  SonarExplorer explorer(robot::MagellanProSpec(), options,
+                         std::make_shared<SpikeInCorridorModel>());
+  Driver driver(explorer);
+  while (driver.time_s() < 10.0 && !explorer.Finished()) driver.Tick();
+  CorridorRun run{explorer.Finished(), explorer.end_reason(), {}};
+  for (const ExplorationEvent& e : explorer.events())
+    if (e.kind == "goal") run.goals.push_back(e.detail);
+  return run;
+}
+
+TEST(SonarExplorerTest, AxisFreeCellsAreFreeOnlyWhenNoFrontierIsLeftOtherwise) {
+  // While the perimeter runs the map rules as ever, the option on or off: the map check sees the
+  // spike in the body's corridor and turns the robot on the spot (round 65b's rule, on always,
+  // drove on through it).
+  EXPECT_NEAR(SlowestForwardWithSpikeAhead(false), 0.0, 1e-9);
+  EXPECT_NEAR(SlowestForwardWithSpikeAhead(true), 0.0, 1e-9);
+  // Off: no frontier can be reached past the spike, and the map is declared complete.
+  const CorridorRun off = RunInCorridorWithSpike(false);
+  EXPECT_TRUE(off.finished);
+  EXPECT_EQ(off.end_reason, "map_complete");
+  EXPECT_EQ(std::count(off.goals.begin(), off.goals.end(), "frontier"), 0);
+  // On: there, and only there, the last tier takes the spike the forward axis saw floor through
+  // for free, and the robot sets off for the frontier past it; no tier before it found one.
+  const CorridorRun on = RunInCorridorWithSpike(true);
+  EXPECT_FALSE(on.finished) << on.end_reason;
+  EXPECT_EQ(std::count(on.goals.begin(), on.goals.end(), "frontier"), 0);
+  EXPECT_GE(std::count(on.goals.begin(), on.goals.end(), "frontier_through_axis_free"), 1);
+}
+
+// Issue 14 round 66c: a pocket 1.15 x 1.15 m whose only way out is the diagonal gap between two
+// box corners at its south-east corner, as in generated world 10 of seed 193: the north-east corner
+// of the box south of it (its face y 0.1, x up to 1.0) and the south-west corner of the box east of
+// it (its face x 1.4, y from 0.5), 0.4 m apart along each axis, 0.566 m apart (1.41 times the
+// body's width, 0.4 m); behind the gap a second room (1.0 to 2.0, -0.7 to 0.5). Corners and faces
+// lie on cell edges: the corner cells' centres are 9 cells apart along each axis, and the cells
+// more than 5 cells (robot_radius_m + front_margin_m, 0.25 m, the body's clearance) from both make
+// a way through that a path can take (no corner is cut), the cells 6 cells (squeeze_clearance_m)
+// from both none. The robot starts at (0.7, 0.8), on the gap's bisector; the coordinates below are
+// shifted to put it at the origin.
+struct Box {
+  double x0, y0, x1, y1;
+  bool Contains(const Eigen::Vector2d& p) const {
+    return p.x() >= x0 && p.x() <= x1 && p.y() >= y0 && p.y() <= y1;
+  }
+};
+constexpr double kShiftX = -0.7, kShiftY = -0.8;
+const std::array<Box, 6> kPocketWalls = {{
+    {0.15 + kShiftX, 1.25 + kShiftY, 2.1 + kShiftX, 1.35 + kShiftY},  // north
+    {0.15 + kShiftX, -0.8 + kShiftY, 2.1 + kShiftX, -0.7 + kShiftY},  // south
+    {0.15 + kShiftX, 0.1 + kShiftY, 0.25 + kShiftX, 1.25 + kShiftY},  // west
+    {2.0 + kShiftX, -0.7 + kShiftY, 2.1 + kShiftX, 1.25 + kShiftY},   // east
+    {0.15 + kShiftX, -0.7 + kShiftY, 1.0 + kShiftX, 0.1 + kShiftY},   // the box south of the pocket
+    {1.4 + kShiftX, 0.5 + kShiftY, 2.0 + kShiftX, 1.25 + kShiftY},    // the box east of it
+}};
+
+// The distance along the ray from `from` in direction `u` (unit) to the first wall, or infinity.
+double RayToWalls(const Eigen::Vector2d& from, const Eigen::Vector2d& u) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const Box& b : kPocketWalls) {
+    double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();
+    const double lo[2] = {b.x0, b.y0}, hi[2] = {b.x1, b.y1};
+    bool miss = false;
+    for (int k = 0; k < 2 && !miss; ++k) {
+      if (std::abs(u[k]) < 1e-12) {
+        miss = from[k] < lo[k] || from[k] > hi[k];
+        continue;
+      }
+      double a = (lo[k] - from[k]) / u[k], c = (hi[k] - from[k]) / u[k];
+      if (a > c) std::swap(a, c);
+      t0 = std::max(t0, a);
+      t1 = std::min(t1, c);
+      miss = t0 > t1;
+    }
+    if (!miss) nearest = std::min(nearest, t0);
+  }
+  return nearest;
+}
+
+// A cell model that knows the walls: a cell of the grid's window round the robot that the robot
+// can see (the line to the cell meets no wall short of its last 0.1 m, a wall's depth) is occupied
+// in a wall and free elsewhere; every other cell gets no update. The pose is the driver's.
+class PocketModel final : public SonarCellModel {
+ public:
+  explicit PocketModel(const msgs::Pose2D* pose) : pose_(pose) {}
+  double Probability(const msgs::RangeRing&, const Eigen::Vector2d& p_R) const override {
+    const double c = std::cos(pose_->theta_rad), s = std::sin(pose_->theta_rad);
+    const Eigen::Vector2d robot(pose_->x_m, pose_->y_m);
+    const Eigen::Vector2d p =
+        robot + Eigen::Vector2d(c * p_R.x() - s * p_R.y(), s * p_R.x() + c * p_R.y());
+    const double d = p_R.norm();
+    if (d > 0.1 && RayToWalls(robot, (p - robot) / d) < d - 0.1) return 0.5;
+    for (const Box& b : kPocketWalls)
+      if (b.Contains(p)) return 0.95;
+    return 0.05;
+  }
+
+ private:
+  const msgs::Pose2D* pose_;
+};
+
+struct PocketRun {
+  std::string end_reason;
+  bool entered_second_room = false;  // the robot's centre east of 1.2 m and south of 0 (unshifted)
+  double closest_to_wall_m = 1e9;    // the robot's centre to the nearest wall
+  std::vector<std::string> goals;
+};
+
+// Up to 150 s in the pocket, the pose moved by the commanded wheel speeds, a ring cast against the
+// walls every 0.1 s, the perimeter cut short so that the planner's tiers run.
+PocketRun RunInPocket(bool last_frontier_at_body_clearance) {
+  SonarExplorerOptions options = ClassicalOptions();
+  options.last_frontier_at_body_clearance = last_frontier_at_body_clearance;
+  options.grid_half_extent_m = 2.5;  // cell edges on multiples of 0.05 m, the pose at (0, 0)
+  options.perimeter_max_s = 1.0;
+  msgs::Pose2D pose;
+  SonarExplorer explorer(robot::MagellanProSpec(), options, std::make_shared<PocketModel>(&pose));
+  PocketRun run;
+  msgs::RangeRing ring;
+  for (int k = 0; k < 15000 && !explorer.Finished(); ++k) {
+    const double t = k * kDt;
+    if (k % 10 == 0) {
+      ring = RoomRing(t);
+      for (msgs::RangeReading& r : ring.readings) {
+        const double c = std::cos(pose.theta_rad), s = std::sin(pose.theta_rad);
+        const Eigen::Vector2d at(pose.x_m + c * r.X_RS.x_m - s * r.X_RS.y_m,
+                                 pose.y_m + s * r.X_RS.x_m + c * r.X_RS.y_m);
+        const double a = pose.theta_rad + r.X_RS.theta_rad;
+        r.range_m = RayToWalls(at, {std::cos(a), std::sin(a)});
+        r.echo = r.range_m < ring.range_max_m;
+        if (!r.echo) r.range_m = ring.range_max_m;
+      }
+    }
+    robot::ControllerInput input;
+    input.time_s = t;
+    input.sonar = &ring;
+    input.X_WR_estimate = pose;
+    const robot::BodyTwist twist =
+        robot::WheelSpeedsToTwist(robot::MagellanProSpec(), explorer.Update(input));
+    pose.theta_rad += twist.angular_rad_s * kDt;
+    pose.x_m += twist.linear_m_s * std::cos(pose.theta_rad) * kDt;
+    pose.y_m += twist.linear_m_s * std::sin(pose.theta_rad) * kDt;
+    run.entered_second_room =
+        run.entered_second_room || (pose.x_m > 1.2 + kShiftX && pose.y_m < kShiftY);
+    for (const Box& b : kPocketWalls) {
+      const double dx = std::max({b.x0 - pose.x_m, 0.0, pose.x_m - b.x1});
+      const double dy = std::max({b.y0 - pose.y_m, 0.0, pose.y_m - b.y1});
+      run.closest_to_wall_m = std::min(run.closest_to_wall_m, std::hypot(dx, dy));
+    }
+  }
+  run.end_reason = explorer.end_reason();
+  for (const ExplorationEvent& e : explorer.events())
+    if (e.kind == "goal") run.goals.push_back(e.detail);
+  return run;
+}
+
+TEST(SonarExplorerTest, AGapTheBodyFitsButNoClearanceTierPassesIsDrivenAtTheBodysClearance) {
+  // Off: no tier reaches past the gap, and the map is declared complete with the second room
+  // never entered.
+  const PocketRun off = RunInPocket(false);
+  EXPECT_EQ(off.end_reason, "map_complete");
+  EXPECT_FALSE(off.entered_second_room);
+  EXPECT_EQ(std::count(off.goals.begin(), off.goals.end(), "frontier_at_body_clearance"), 0);
+  // On: there, the last tier finds the frontier past the gap at the body's clearance, and the
+  // robot drives through into the second room without touching a side (the body's radius is
+  // 0.2 m).
+  const PocketRun on = RunInPocket(true);
+  EXPECT_GE(std::count(on.goals.begin(), on.goals.end(), "frontier_at_body_clearance"), 1);
+  EXPECT_TRUE(on.entered_second_room);
+  EXPECT_GT(on.closest_to_wall_m, 0.2);
+}
+
 void ExpectThrowsNaming(const SonarExplorerOptions& options, const std::string& field) {
   try {
     MakeExplorer(options);

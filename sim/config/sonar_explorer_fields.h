@@ -81,6 +81,8 @@ void VisitFields(A& a, perception::SonarExplorerOptions& o) {
   a("circuit_same_m", o.circuit_same_m);
   a("complete_unknown_share_max", o.complete_unknown_share_max);
   a("complete_room_check", o.complete_room_check);
+  a("last_frontier_through_axis_free", o.last_frontier_through_axis_free);
+  a("last_frontier_at_body_clearance", o.last_frontier_at_body_clearance);
 }
 
 }  // namespace plywood::sim
