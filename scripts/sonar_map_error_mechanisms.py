@@ -26,7 +26,7 @@ import sys
 from collections import deque
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sweep_folder import fail, finished_results, finite  # noqa: E402
+from sweep_folder import error_range_and_sweeps, fail  # noqa: E402
 
 try:
     import numpy as np
@@ -107,18 +107,8 @@ def mechanisms(run):
 
 if __name__ == '__main__':
     SCRIPT = 'sonar_map_error_mechanisms'
-    # A bound that is no number was a traceback, NaN bounds or a missing folder printed no run
-    # (exit 0), a folder that is no seed 001 sweep was a KeyError, and a sweep missing runs was read
-    # on the runs that finished (s66).
-    flags = [a for a in sys.argv[1:] if a.startswith('-') and a.lstrip('-')[:1].isalpha()]
-    if len(sys.argv) < 4 or flags:
-        fail(SCRIPT, f'usage: {SCRIPT}.py LO HI SWEEP_DIR [SWEEP_DIR ...]')
-    lo, hi = finite(SCRIPT, 'LO', sys.argv[1]), finite(SCRIPT, 'HI', sys.argv[2])
-    if not lo < hi:
-        fail(SCRIPT, f'LO {sys.argv[1]} is not below HI {sys.argv[2]}: the range (LO, HI] holds no e')
-    whole = {d: finished_results(SCRIPT, d, ('occupancy.error',),
-                                 ('metrics.json', 'cognitive_map.json', 'walls.csv', 'config.yaml'))[1]
-             for d in sys.argv[3:]}
+    lo, hi, whole = error_range_and_sweeps(
+        SCRIPT, sys.argv[1:], ('metrics.json', 'cognitive_map.json', 'walls.csv', 'config.yaml'))
     total, n, summed = collections.Counter(), 0, 0.0
     for d in sys.argv[3:]:
         for run in sorted(os.path.join(d, 'runs', r['id']) for r in whole[d]):

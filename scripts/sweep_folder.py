@@ -145,3 +145,20 @@ def finished_results(script, folder, required=(), run_files=()):
                 # A run folder without its metrics.json was skipped, or a traceback (s66).
                 fail(script, f"{path}: no such file (results.csv lists run {run} as finished)")
     return header, rows, lines
+
+
+def error_range_and_sweeps(script, argv, run_files):
+    """The arguments LO HI SWEEP_DIR [SWEEP_DIR ...] of the seed 001 analyses that look at the runs
+    whose occupancy.error lies in (LO, HI]: (lo, hi, {sweep folder: its results rows}). A bound
+    that is no number was a traceback, NaN bounds or a missing folder printed no run (exit 0), a
+    folder that is no seed 001 sweep was a KeyError, and a sweep missing runs was read on the runs
+    that finished (s66); each is now one line, exit 2."""
+    flags = [a for a in argv if a.startswith('-') and a.lstrip('-')[:1].isalpha()]
+    if len(argv) < 3 or flags:
+        fail(script, f'usage: {script}.py LO HI SWEEP_DIR [SWEEP_DIR ...]')
+    lo, hi = finite(script, 'LO', argv[0]), finite(script, 'HI', argv[1])
+    if not lo < hi:
+        fail(script, f'LO {argv[0]} is not below HI {argv[1]}: the range (LO, HI] holds no e')
+    sweeps = {d: finished_results(script, d, ('occupancy.error',), run_files)[1] for d in argv[2:]}
+    return lo, hi, sweeps
+

@@ -26,6 +26,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::MakeTempDir;
+using testing::PythonImports;
 using testing::Slurp;
 using testing::SourceRoot;
 using testing::WriteFile;
@@ -105,10 +106,6 @@ int RunIntoAPipeNobodyReads(const fs::path& dir, const std::vector<std::string>&
 
 bool CanSetInAShell(const std::string& limit) {
   return std::system(("bash -c '" + limit + "' 2>/dev/null").c_str()) == 0;
-}
-
-bool MatplotlibInstalled() {
-  return std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") == 0;
 }
 
 std::vector<std::string> Lines(const std::string& text) {
@@ -248,7 +245,7 @@ TEST(ProcessEnvironmentTest, ASweepWhoseReaderLeavesFinishesAndRecordsEveryRun) 
 // The plot script printed each plot's name into the closed pipe (`plywood sweep ... | true`): a
 // BrokenPipeError traceback, the plots after the first unmade, and "plotting failed (see above)".
 TEST(ProcessEnvironmentTest, APlotScriptWhoseReaderLeftPrintsNoTraceback) {
-  if (!MatplotlibInstalled()) GTEST_SKIP() << "python3-matplotlib is not installed";
+  if (!PythonImports("matplotlib")) GTEST_SKIP() << "python3-matplotlib is not installed";
   const fs::path dir = MakeTempDir("process_environment_plot_pipe");
   ThreeRunSweep(dir);
   EXPECT_EQ(RunIntoAPipeNobodyReads(dir, {"sweep", "three.yaml", "--out", "out"}, false),
@@ -285,7 +282,7 @@ TEST(ProcessEnvironmentTest, AStdoutThatCannotBeWrittenIsAnError) {
 // The plots went through sh, whose redirections need descriptors above 10: under `ulimit -n 10`
 // the sweep said "no plots (python3-matplotlib not installed)" of an installed one.
 TEST(ProcessEnvironmentTest, FewFileDescriptorsStillPlot) {
-  if (!MatplotlibInstalled()) GTEST_SKIP() << "python3-matplotlib is not installed";
+  if (!PythonImports("matplotlib")) GTEST_SKIP() << "python3-matplotlib is not installed";
   if (!CanSetInAShell("ulimit -n 10")) GTEST_SKIP() << "this machine refuses ulimit -n 10";
   const fs::path dir = MakeTempDir("process_environment_files");
   ThreeRunSweep(dir);
@@ -300,7 +297,7 @@ TEST(ProcessEnvironmentTest, FewFileDescriptorsStillPlot) {
 // MPLCONFIGDIR a folder matplotlib may not write in (root's os.access says yes to /sys, so it does
 // not fall back to a scratch folder): a 30-line traceback and "plotting failed (see above)".
 TEST(ProcessEnvironmentTest, AMatplotlibThatCannotWriteItsCacheIsOneLine) {
-  if (!MatplotlibInstalled()) GTEST_SKIP() << "python3-matplotlib is not installed";
+  if (!PythonImports("matplotlib")) GTEST_SKIP() << "python3-matplotlib is not installed";
   if (geteuid() != 0) {
     GTEST_SKIP() << "needs root: another user's matplotlib falls back to a scratch folder";
   }

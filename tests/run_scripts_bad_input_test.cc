@@ -22,15 +22,10 @@ namespace {
 namespace fs = std::filesystem;
 using testing::CliResult;
 using testing::MakeTempDir;
+using testing::PythonImports;
 using testing::Slurp;
 using testing::SourceRoot;
 using testing::WriteFile;
-
-bool Python3Installed() { return std::system("/usr/bin/python3 -c '' >/dev/null 2>&1") == 0; }
-
-bool YamlInstalled() {
-  return std::system("/usr/bin/python3 -c 'import yaml' >/dev/null 2>&1") == 0;
-}
 
 // Runs `[prefix] scripts/SCRIPT args` in `dir`, stdout and stderr into files there.
 CliResult RunScript(const fs::path& dir, const std::string& script, const std::string& args,
@@ -68,7 +63,7 @@ void WriteRun(const fs::path& run, bool finished, const std::string& encoder_tic
 // Both calibrations measured a run killed half way (no complete.json) as if whole, and a missing
 // folder, a tick count that is no number or a python3 without yaml was a traceback.
 void CheckCalibrationRefusals(const std::string& script) {
-  if (!Python3Installed()) GTEST_SKIP() << "python3 is not installed";
+  if (!PythonImports()) GTEST_SKIP() << "python3 is not installed";
   const fs::path dir = MakeTempDir(script);
   WriteRun(dir / "killed", false);
   WriteRun(dir / "text", true, "sixty");
@@ -78,7 +73,7 @@ void CheckCalibrationRefusals(const std::string& script) {
   // python3 -S leaves out the packages Debian installs, python3-yaml among them.
   ExpectRefusal(RunScript(dir, script, "killed", "/usr/bin/python3 -S"),
                 script + ": needs python3-yaml");
-  if (!YamlInstalled()) GTEST_SKIP() << "python3-yaml is not installed";
+  if (!PythonImports("yaml")) GTEST_SKIP() << "python3-yaml is not installed";
   ExpectRefusal(RunScript(dir, script, "text"),
                 script +
                     ": text/encoders.csv: line 3: left_ticks: expected a whole number, got "
@@ -97,7 +92,7 @@ TEST(RunScriptsTest, StopDisplacementCalibrationRefusesRunsNotFinishedAndTextTic
 // and ended in a traceback from a table of nothing (line_worlds_table) or two lines of sh
 // (sonar_map_worlds_table); odometry_table's missing plywood was sh's "not found", exit 127.
 TEST(RunScriptsTest, WorldTablesAndTheOdometryTableRefuseArgumentsBeforeAnyRun) {
-  if (!Python3Installed()) GTEST_SKIP() << "python3 is not installed";
+  if (!PythonImports()) GTEST_SKIP() << "python3 is not installed";
   const fs::path dir = MakeTempDir("WorldTablesBadInput");
   const std::string build = PLYWOOD_BINARY_DIR;
   ExpectRefusal(RunScript(dir, "line_worlds_table", "abc 1 split_and_merge " + build + " 1 room"),

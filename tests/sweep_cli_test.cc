@@ -27,6 +27,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::MakeTempDir;
+using testing::PythonImports;
 using testing::RunPlywood;
 using testing::Slurp;
 using testing::SourceRoot;
@@ -1749,9 +1750,7 @@ TEST(SweepCliTest, AWorldSpawnTheSweepCannotUseIsRefusedAtLoad) {
 // limit, with matplotlib's traceback and "plotting failed", exit 0. Now the plot is staged: one
 // line naming it and why, no cut file, exit 1, and the next collect writes it (s63 fiftieth pass).
 TEST(SweepCliTest, APlotThatCannotBeWrittenIsOneLineAndNoCutFile) {
-  if (std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") != 0) {
-    GTEST_SKIP() << "python3-matplotlib not installed: no plots";
-  }
+  if (!PythonImports("matplotlib")) GTEST_SKIP() << "python3-matplotlib not installed: no plots";
   const fs::path dir = MakeTempDir("SweepPlotLimit");
   const fs::path out = dir / "out";
   const fs::path sweep =

@@ -20,19 +20,10 @@ namespace {
 namespace fs = std::filesystem;
 using testing::CliResult;
 using testing::MakeTempDir;
+using testing::PythonImports;
 using testing::Slurp;
 using testing::SourceRoot;
 using testing::WriteFile;
-
-bool Python3Installed() { return std::system("/usr/bin/python3 -c '' >/dev/null 2>&1") == 0; }
-
-bool Imports(const std::string& modules) {
-  return std::system(("/usr/bin/python3 -c 'import " + modules + "' >/dev/null 2>&1").c_str()) == 0;
-}
-
-bool MatplotlibInstalled() {
-  return std::system("/usr/bin/python3 -c 'import matplotlib' >/dev/null 2>&1") == 0;
-}
 
 // Runs `python3 [python_flags] scripts/SCRIPT args` in `dir`, stdout and stderr into files there.
 CliResult RunScript(const fs::path& dir, const std::string& script, const std::string& args,
@@ -109,7 +100,7 @@ std::string WithoutRow(int row) {
 class SweepScriptsTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    if (!Python3Installed()) GTEST_SKIP() << "python3 is not installed";
+    if (!PythonImports()) GTEST_SKIP() << "python3 is not installed";
   }
 };
 
@@ -230,7 +221,7 @@ TEST_F(SweepScriptsTest, KeepingRuleJudgesOnlyWholeSweepsOfTheSameRunsAndRefuses
 // file was a traceback, a NaN left out of the plot without a word, and without matplotlib a
 // ModuleNotFoundError.
 TEST_F(SweepScriptsTest, PlotSweepNamesTheFileAndFieldItCannotPlot) {
-  if (!MatplotlibInstalled()) GTEST_SKIP() << "python3-matplotlib is not installed";
+  if (!PythonImports("matplotlib")) GTEST_SKIP() << "python3-matplotlib is not installed";
   const fs::path dir = MakeTempDir("PlotSweepBadInput");
   ExpectRefusal(RunScript(dir, "plot_sweep.py", "nowhere"), "plot_sweep: nowhere: no such folder");
   WriteSweep(dir / "nan", RowsWith(1, 7, "nan"));
@@ -322,7 +313,7 @@ TEST_F(SweepScriptsTest, SonarMapContactsRefusesSweepsMissingRunsAndMissingFolde
 }
 
 TEST_F(SweepScriptsTest, SonarMapErrorCausesRefusesSweepsMissingRunsAndATopThatIsNoNumber) {
-  if (!Imports("numpy")) GTEST_SKIP() << "python3-numpy is not installed";
+  if (!PythonImports("numpy")) GTEST_SKIP() << "python3-numpy is not installed";
   const fs::path dir = MakeTempDir("SonarMapCausesBadInput");
   WriteSweep(dir / "killed", WithoutRow(1));
   ExpectRefusal(RunScript(dir, "sonar_map_error_causes.py", "killed"),
@@ -332,7 +323,7 @@ TEST_F(SweepScriptsTest, SonarMapErrorCausesRefusesSweepsMissingRunsAndATopThatI
 }
 
 TEST_F(SweepScriptsTest, SonarMapErrorMechanismsRefusesBoundsThatAreNoNumbersAndMissingFolders) {
-  if (!Imports("numpy")) GTEST_SKIP() << "python3-numpy is not installed";
+  if (!PythonImports("numpy")) GTEST_SKIP() << "python3-numpy is not installed";
   const fs::path dir = MakeTempDir("SonarMapMechanismsBadInput");
   ExpectRefusal(RunScript(dir, "sonar_map_error_mechanisms.py", "0 1 nowhere"),
                 "sonar_map_error_mechanisms: nowhere: no such folder");
@@ -341,7 +332,8 @@ TEST_F(SweepScriptsTest, SonarMapErrorMechanismsRefusesBoundsThatAreNoNumbersAnd
 }
 
 TEST_F(SweepScriptsTest, SonarMapUnvisitedSpaceRefusesEmptyRangesAndSweepsMissingRuns) {
-  if (!Imports("numpy, scipy")) GTEST_SKIP() << "python3-numpy or python3-scipy is not installed";
+  if (!PythonImports("numpy, scipy"))
+    GTEST_SKIP() << "python3-numpy or python3-scipy is not installed";
   const fs::path dir = MakeTempDir("SonarMapUnvisitedBadInput");
   WriteSweep(dir / "killed", WithoutRow(1));
   ExpectRefusal(RunScript(dir, "sonar_map_unvisited_space.py", "0 1 killed"),
@@ -351,7 +343,8 @@ TEST_F(SweepScriptsTest, SonarMapUnvisitedSpaceRefusesEmptyRangesAndSweepsMissin
 }
 
 TEST_F(SweepScriptsTest, SonarMapNarrowGapsRefusesMissingFilesAndSweepsMissingRuns) {
-  if (!Imports("numpy, scipy")) GTEST_SKIP() << "python3-numpy or python3-scipy is not installed";
+  if (!PythonImports("numpy, scipy"))
+    GTEST_SKIP() << "python3-numpy or python3-scipy is not installed";
   const fs::path dir = MakeTempDir("SonarMapNarrowGapsBadInput");
   WriteSweep(dir / "killed", WithoutRow(1));
   ExpectRefusal(RunScript(dir, "sonar_map_narrow_gaps.py", "nowhere/results.csv"),

@@ -18,6 +18,11 @@ std::string Slurp(const std::filesystem::path& path) {
   return text.str();
 }
 
+bool PythonImports(const std::string& modules) {
+  const std::string code = modules.empty() ? "" : "import " + modules;
+  return std::system(("/usr/bin/python3 -c '" + code + "' >/dev/null 2>&1").c_str()) == 0;
+}
+
 CliResult RunPlywood(const std::string& args, const std::filesystem::path& dir,
                      const std::filesystem::path& working_dir) {
   const std::filesystem::path binary =

@@ -14,6 +14,10 @@ struct CliResult {
   std::string err;
 };
 
+// Whether Debian's /usr/bin/python3 is there and imports `modules` (comma-separated, "" for none):
+// the scripts' tests skip, saying so, where it does not.
+bool PythonImports(const std::string& modules = "");
+
 // Runs the built `plywood` binary with `args` (a shell-quoted string), capturing stdout and
 // stderr in files under `dir`; in `working_dir` when given, else in the test's own.
 CliResult RunPlywood(const std::string& args, const std::filesystem::path& dir,
