@@ -255,7 +255,7 @@ msgs::WheelSpeedCommand SonarExplorer::DriveTo(const msgs::Pose2D& X_WR,
   // Trajectories parallel to x or y: turn on the spot first, drive once aligned.
   // A move through a gap at the body's own clearance goes at the back-off speed: a face the sonar
   // placed a few centimetres off is met at the speed a touch is left at.
-  const double speed = at_body_clearance_
+  const double speed = last_tier_ == LastTier::kAtBodyClearance
                            ? std::min(options_.speed_m_s, options_.bump_back_off_speed_m_s)
                            : options_.speed_m_s;
   if (std::abs(heading_error) < kAlignedRad) twist.linear_m_s = std::min(speed, 0.1 + d.norm());
@@ -314,30 +314,18 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
   }
   const Eigen::Vector2i cell = grid_.CellAt(here);
   if (cell.x() >= 0) visits_[cell.y() * grid_.width() + cell.x()] += 1.0;
-  if (through_axis_free_) {
-    // On the way to a frontier the last tier found: only such frontiers are sought until the
-    // move ends, so that the goal does not flip between the two rules.
+  if (last_tier_ != LastTier::kNone) {
+    // On the way to a frontier a last tier found: only such frontiers are sought until the move
+    // ends, so that the goal does not flip between the two rules.
     heading_to_circuit_ = false;
     target_partition_ = -1;
     if (std::optional<std::vector<Eigen::Vector2d>> frontier =
-            PlanToFrontierThroughAxisFree(map, here)) {
+            PlanToLastTierFrontier(last_tier_, map, here)) {
       path_ = std::move(*frontier);
       heading_to_frontier_ = true;
       return;
     }
-    through_axis_free_ = false;
-  }
-  if (at_body_clearance_) {
-    // The same for a frontier the body-clearance tier found.
-    heading_to_circuit_ = false;
-    target_partition_ = -1;
-    if (std::optional<std::vector<Eigen::Vector2d>> frontier =
-            PlanToFrontierAtBodyClearance(map, here)) {
-      path_ = std::move(*frontier);
-      heading_to_frontier_ = true;
-      return;
-    }
-    at_body_clearance_ = false;
+    last_tier_ = LastTier::kNone;
   }
   const PlanningCells planning = Planning(here, map.obstacles, false);
   heading_to_circuit_ = false;
@@ -438,22 +426,15 @@ void SonarExplorer::Replan(const msgs::Pose2D& X_WR, double time_s) {
       Note("goal", "frontier", path_.back());
       return;
     }
-    if (options_.last_frontier_through_axis_free) {
+    for (const auto& [on, tier] :
+         {std::pair{options_.last_frontier_through_axis_free, LastTier::kThroughAxisFree},
+          std::pair{options_.last_frontier_at_body_clearance, LastTier::kAtBodyClearance}}) {
+      if (!on) continue;
       if (std::optional<std::vector<Eigen::Vector2d>> last =
-              PlanToFrontierThroughAxisFree(map, here)) {
+              PlanToLastTierFrontier(tier, map, here)) {
         path_ = std::move(*last);
         heading_to_frontier_ = true;
-        through_axis_free_ = true;
-        target_partition_ = -1;
-        return;
-      }
-    }
-    if (options_.last_frontier_at_body_clearance) {
-      if (std::optional<std::vector<Eigen::Vector2d>> last =
-              PlanToFrontierAtBodyClearance(map, here)) {
-        path_ = std::move(*last);
-        heading_to_frontier_ = true;
-        at_body_clearance_ = true;
+        last_tier_ = tier;
         target_partition_ = -1;
         return;
       }
@@ -625,8 +606,7 @@ void SonarExplorer::Note(const char* kind, const std::string& detail, const Eige
 
 void SonarExplorer::GiveUpMove(const Eigen::Vector2d& here, const char* why) {
   Note("given_up", why, here);
-  through_axis_free_ = false;
-  at_body_clearance_ = false;
+  last_tier_ = LastTier::kNone;
   if (heading_to_circuit_) {
     // The way to this circuit corner is blocked: the circuit goes on from the next one.
     if (circuit_ && !circuit_->corners.empty()) {
@@ -872,8 +852,7 @@ void SonarExplorer::KeepContactAndDropMove(const msgs::Pose2D& X_WR,
                                            const Eigen::Vector2d& contact) {
   contacts_.push_back(contact);
   Note("contact", "", contact);
-  through_axis_free_ = false;
-  at_body_clearance_ = false;
+  last_tier_ = LastTier::kNone;
   if (perimeter_done_ && !path_.empty()) GiveUpMove(Position(X_WR), "bump");
   path_.clear();
   heading_to_frontier_ = false;
@@ -990,7 +969,9 @@ bool SonarExplorer::MapBlocksFront(const msgs::Pose2D& X_WR) const {
   for (int dy = -r; dy <= r; ++dy)
     for (int dx = -r; dx <= r; ++dx) {
       const int ix = c.x() + dx, iy = c.y() + dy;
-      if (!grid_.Contains(ix, iy) || !HeardForPlanning(ix, iy, through_axis_free_)) continue;
+      if (!grid_.Contains(ix, iy) ||
+          !HeardForPlanning(ix, iy, last_tier_ == LastTier::kThroughAxisFree))
+        continue;
       const Eigen::Vector2d d = grid_.CellCentre(ix, iy) - here;
       const double along = d.dot(ahead);
       const double side = ahead.x() * d.y() - ahead.y() * d.x();
@@ -1006,36 +987,28 @@ bool SonarExplorer::HeardForPlanning(int ix, int iy, bool through_axis_free) con
            beam_free_.Passes(ix, iy) >= min_passes);
 }
 
-std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToFrontierThroughAxisFree(
-    const CognitiveMap& map, const Eigen::Vector2d& here) {
-  const PlanningCells planning = Planning(here, map.obstacles, true);
-  std::optional<std::vector<Eigen::Vector2d>> frontier = PlanToAnyFrontier(planning, here);
+std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToLastTierFrontier(
+    LastTier tier, const CognitiveMap& map, const Eigen::Vector2d& here) {
+  const bool through_axis_free = tier == LastTier::kThroughAxisFree;
+  const PlanningCells planning =
+      Planning(here, map.obstacles, through_axis_free, !through_axis_free);
+  // Through the axis-free cells: every clearance tier of the frontier search; at the body's
+  // clearance: the cells that far from what was heard.
+  const auto plan = [&]() {
+    return through_axis_free ? PlanToAnyFrontier(planning, here)
+                             : PlanToFrontier(planning, planning.body_safe_from_heard, here);
+  };
+  std::optional<std::vector<Eigen::Vector2d>> frontier = plan();
   if (frontier && frontier->empty()) {
     // Standing on such a goal already: look from here, as the normal tiers do.
     MarkLooked(here);
     const Eigen::Vector2i cell = grid_.CellAt(here);
     if (cell.x() >= 0) MarkLooked(grid_.CellCentre(cell.x(), cell.y()));
-    frontier = PlanToAnyFrontier(planning, here);
+    frontier = plan();
   }
   if (!frontier || frontier->empty()) return std::nullopt;
-  Note("goal", "frontier_through_axis_free", frontier->back());
-  return frontier;
-}
-
-std::optional<std::vector<Eigen::Vector2d>> SonarExplorer::PlanToFrontierAtBodyClearance(
-    const CognitiveMap& map, const Eigen::Vector2d& here) {
-  const PlanningCells planning = Planning(here, map.obstacles, false, true);
-  std::optional<std::vector<Eigen::Vector2d>> frontier =
-      PlanToFrontier(planning, planning.body_safe_from_heard, here);
-  if (frontier && frontier->empty()) {
-    // Standing on such a goal already: look from here, as the normal tiers do.
-    MarkLooked(here);
-    const Eigen::Vector2i cell = grid_.CellAt(here);
-    if (cell.x() >= 0) MarkLooked(grid_.CellCentre(cell.x(), cell.y()));
-    frontier = PlanToFrontier(planning, planning.body_safe_from_heard, here);
-  }
-  if (!frontier || frontier->empty()) return std::nullopt;
-  Note("goal", "frontier_at_body_clearance", frontier->back());
+  Note("goal", through_axis_free ? "frontier_through_axis_free" : "frontier_at_body_clearance",
+       frontier->back());
   return frontier;
 }
 
@@ -1077,8 +1050,7 @@ msgs::WheelSpeedCommand SonarExplorer::Explore(const robot::ControllerInput& inp
     // count, since the ring may have heard nothing of it on the way.
     if (heading_to_frontier_) MarkLooked(Position(X_WR));
     heading_to_frontier_ = false;
-    through_axis_free_ = false;
-    at_body_clearance_ = false;
+    last_tier_ = LastTier::kNone;
     return {};
   }
   msgs::WheelSpeedCommand command = DriveTo(X_WR, path_.front());

@@ -298,15 +298,18 @@ class SonarExplorer final : public robot::Controller {
   // Whether the planner takes cell (ix, iy) for heard: P > 1 - eps, unless through_axis_free and
   // the grid-aligned axes saw floor through it at least map.beam_free_min_passes times.
   bool HeardForPlanning(int ix, int iy, bool through_axis_free) const;
-  // The last tier (last_frontier_through_axis_free): a path to a frontier over the cells with the
-  // axis-free ones taken for free, nullopt when there is none.
-  std::optional<std::vector<Eigen::Vector2d>> PlanToFrontierThroughAxisFree(
-      const CognitiveMap& map, const Eigen::Vector2d& here);
-  // The last tier at the body's own clearance (last_frontier_at_body_clearance): a path to a
-  // frontier over free cells robot_radius_m + front_margin_m from the cells heard, nullopt when
-  // there is none.
-  std::optional<std::vector<Eigen::Vector2d>> PlanToFrontierAtBodyClearance(
-      const CognitiveMap& map, const Eigen::Vector2d& here);
+  // The last tiers of the frontier search, tried in this order when the run would otherwise end
+  // map_complete, each behind its option.
+  enum class LastTier {
+    kNone,
+    kThroughAxisFree,  // last_frontier_through_axis_free: the axis-free cells taken for free
+    kAtBodyClearance,  // last_frontier_at_body_clearance: free cells robot_radius_m +
+                       // front_margin_m from the cells heard
+  };
+  // A path to a frontier by `tier`'s rule (not kNone), nullopt when there is none; notes the goal.
+  std::optional<std::vector<Eigen::Vector2d>> PlanToLastTierFrontier(LastTier tier,
+                                                                     const CognitiveMap& map,
+                                                                     const Eigen::Vector2d& here);
   // The sideways offset (left positive) of the nearest contact point in that corridor, if any.
   std::optional<double> ContactAhead(const msgs::Pose2D& X_WR) const;
 
@@ -380,13 +383,10 @@ class SonarExplorer final : public robot::Controller {
   void MarkLooked(const Eigen::Vector2d& at);
   std::vector<char> looked_;  // cells within frontier_view_m of a frontier goal the robot reached
   bool heading_to_frontier_ = false;
-  // The move under way is to a frontier the last tier found (last_frontier_through_axis_free):
-  // the axis-free cells are free for the planner and the map check until it ends.
-  bool through_axis_free_ = false;
-  // The move under way is to a frontier the body-clearance tier found
-  // (last_frontier_at_body_clearance): only such frontiers are sought, at the back-off speed,
-  // until it ends.
-  bool at_body_clearance_ = false;
+  // The last tier whose frontier the move under way goes to: until the move ends only such
+  // frontiers are sought; kThroughAxisFree also frees the axis-free cells for the map check,
+  // kAtBodyClearance drives at the back-off speed.
+  LastTier last_tier_ = LastTier::kNone;
   // World points of echoes that blocked a move: occupied for the planner.
   std::vector<Eigen::Vector2d> blocking_echoes_;
   // Points bump panels touched: kept contact_clearance_m from by the planner.
