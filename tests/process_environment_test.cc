@@ -75,6 +75,19 @@ constexpr const char* kNobodyCannotReach =
     "other users, as /root is on a fresh Debian): clone the tree where others may enter to test "
     "this";
 
+// Why plywood cannot be run here as user nobody with no other process of nobody's counting
+// against a process limit ("" when it can): the process-limit tests need root and setpriv to
+// become nobody, nobody idle, and `dir`, the binary and the tree within nobody's reach.
+std::string WhyNotAloneAsNobody(const fs::path& dir) {
+  if (geteuid() != 0 || std::system("setpriv --version >/dev/null 2>&1") != 0) {
+    return "needs root and setpriv, to run as a user with no other processes";
+  }
+  if (std::system("pgrep -u nobody >/dev/null 2>&1") == 0) {
+    return "nobody runs other processes, which count against the limit";
+  }
+  return NobodyCanRunPlywoodIn(dir) ? "" : kNobodyCannotReach;
+}
+
 // Runs plywood with `args` in `dir`, its stdout (and its stderr when `stderr_too`, else into
 // dir/err) a pipe whose reader has already gone; its status as a shell gives it.
 int RunIntoAPipeNobodyReads(const fs::path& dir, const std::vector<std::string>& args,
@@ -375,15 +388,9 @@ TEST(ProcessEnvironmentTest, AUmaskThatDeniesTheOwnerIsRefusedAndLeavesNothing) 
 // forever: the run hung in its snapshot. The limit counts every process and thread of the user, so
 // the test runs as nobody (through setpriv, as root) and only while nobody runs nothing else.
 TEST(ProcessEnvironmentTest, AProcessLimitNeverHangsTheSnapshot) {
-  if (geteuid() != 0 || std::system("setpriv --version >/dev/null 2>&1") != 0) {
-    GTEST_SKIP() << "needs root and setpriv, to run as a user with no other processes";
-  }
-  if (std::system("pgrep -u nobody >/dev/null 2>&1") == 0) {
-    GTEST_SKIP() << "nobody runs other processes, which count against the limit";
-  }
   const fs::path dir = MakeTempDir("process_environment_nproc");
   fs::permissions(dir, fs::perms::all);
-  if (!NobodyCanRunPlywoodIn(dir)) GTEST_SKIP() << kNobodyCannotReach;
+  if (const std::string why = WhyNotAloneAsNobody(dir); !why.empty()) GTEST_SKIP() << why;
   StillExperiment(dir, true);
   const int status = RunScript(
       dir,
@@ -401,15 +408,9 @@ TEST(ProcessEnvironmentTest, AProcessLimitNeverHangsTheSnapshot) {
 // sweep ended, "plywood: error: cannot start a run: fork failed", exit 1, its two runs killed with
 // it. Now a cell waits for a run to end, so the sweep runs as many at once as the limit allows.
 TEST(ProcessEnvironmentTest, ASweepUnderAProcessLimitRunsAsManyAtOnceAsItAllows) {
-  if (geteuid() != 0 || std::system("setpriv --version >/dev/null 2>&1") != 0) {
-    GTEST_SKIP() << "needs root and setpriv, to run as a user with no other processes";
-  }
-  if (std::system("pgrep -u nobody >/dev/null 2>&1") == 0) {
-    GTEST_SKIP() << "nobody runs other processes, which count against the limit";
-  }
   const fs::path dir = MakeTempDir("process_environment_nproc_sweep");
   fs::permissions(dir, fs::perms::all);
-  if (!NobodyCanRunPlywoodIn(dir)) GTEST_SKIP() << kNobodyCannotReach;
+  if (const std::string why = WhyNotAloneAsNobody(dir); !why.empty()) GTEST_SKIP() << why;
   ThreeRunSweep(dir);
   const int status = RunScript(
       dir,
