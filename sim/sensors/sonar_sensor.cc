@@ -173,12 +173,11 @@ double SonarSensor::EchoRange(const Eigen::Isometry3d& X_WS, const RayCaster& ca
     const double skip_m = std::min(1e-3, kSurfaceOffsetM / std::max(cos_incidence, 1e-6));
     // A corner echo counts only below best_m and range_max_m, and its path (d1 + d2 + back) / 2
     // is at least d2 (back >= d2 - d1): a second hit beyond them changes nothing, so the ray stops
-    // there (kBounceSlackM covers the path's rounding). Only the central ray's multipath bounce
-    // counts up to 2 range_max_m - d1.
-    double bounce_range_m = 2.0 * range_max_m - hit.distance_m;
-    if (!(is_central && options_.multipath)) {
-      bounce_range_m = std::min(bounce_range_m, std::min(best_m, range_max_m) + kBounceSlackM);
-    }
+    // there (kBounceSlackM covers the path's rounding). So does the central ray's multipath
+    // bounce: its path is returned only when no echo came below range_max_m, so best_m is then
+    // still at least range_max_m here, and only a path below range_max_m is returned.
+    const double bounce_range_m =
+        std::min(2.0 * range_max_m - hit.distance_m, std::min(best_m, range_max_m) + kBounceSlackM);
     if (!caster.Cast(p1_W + skip_m * r1_W, r1_W, bounce_range_m, &hit2)) {
       continue;
     }
