@@ -12,6 +12,8 @@ import sys
 # Exit status of a plot that could not be written, after its one line: `plywood sweep` then adds
 # no note of its own and exits 1.
 CANNOT_WRITE = 3
+# The group columns whose values are files (results.csv: paths; summary.csv: stems).
+FILE_COLUMNS = ("experiment", "world")
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sweep_folder import BAD_INPUT, fail, read_csv, sweep_dir, value  # noqa: E402
@@ -41,6 +43,15 @@ def pyplot():
               f"{e.strerror} (point {hint} at a writable folder)", file=sys.stderr)
         sys.exit(CANNOT_WRITE)
     return plt
+
+
+def stem(path):
+    """A file's name without its folder and last extension, as std::filesystem::path::stem."""
+    name = os.path.basename(path)
+    if name in (".", ".."):
+        return name
+    base, ext = os.path.splitext(name)
+    return base if ext else name
 
 
 def say(text):
@@ -104,11 +115,27 @@ def main(out_dir):
         say("plot_sweep: no finished run in results.csv; no plots")
         return
 
-    def label(row):
+    # results.csv keeps the world and experiment paths where summary.csv labels them by stem,
+    # unless two paths share one (eval/sweep/sweep_results.cc); the results' groups take the same
+    # rule, or a sweep grouped by world got plots without a mean (s67).
+    paths_of_stem = {}
+    for row in results:
+        for c in FILE_COLUMNS:
+            if c in group_columns:
+                paths_of_stem.setdefault((c, stem(row[c])), set()).add(row[c])
+
+    def as_in_summary(column, text):
+        if column in FILE_COLUMNS and len(paths_of_stem.get((column, stem(text)), ())) == 1:
+            return stem(text)
+        return text
+
+    def label(row, from_results=True):
         if not group_columns:
             return "all runs"
         # The last part of each key path keeps labels short ("sigma_m=0.01").
-        return "\n".join(f"{c.split('.')[-1]}={row[c]}" for c in group_columns)
+        return "\n".join(
+            f"{c.split('.')[-1]}={as_in_summary(c, row[c]) if from_results else row[c]}"
+            for c in group_columns)
 
     groups = []
     for row in results:
@@ -145,7 +172,7 @@ def main(out_dir):
             # an empty box plot would draw axes round a figure of nothing.
             say(f"plot_sweep: {metric}: no run has a value (every run's is null); no plot")
             continue
-        stats = {label(r): (line, r) for line, r in zip(summary_lines, summary)
+        stats = {label(r, from_results=False): (line, r) for line, r in zip(summary_lines, summary)
                  if r["metric"] == metric}
         width = max(4.0, 0.09 * max(len(line) for g in groups for line in g.split("\n")) * len(groups) + 1.5)
         fig, ax = plt.subplots(figsize=(min(width, 30.0), 4.6))

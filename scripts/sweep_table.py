@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """A sweep's summary.csv as a Markdown table: one row per group, one column per metric, each cell
-"mean (95 % CI low-high)". For the tables in docs/; usage:
+"mean (95 % CI low-high)", or "low to high" where a bound is negative ("-5-6" read as a range
+from -5 to -6). For the tables in docs/; usage:
     scripts/sweep_table.py SWEEP_DIR [METRIC ...]     (default: every metric in summary.csv)
 n is the most runs any of the row's metrics has a value in; a cell over fewer (a metric null in
 some runs) says its own n, "[n 2]". A sweep missing runs (failed, unfinished) is refused.
@@ -55,7 +56,9 @@ def main(out_dir, metrics):
         else:
             low = value(SCRIPT, path, line, r, "ci95_low")
             high = value(SCRIPT, path, line, r, "ci95_high")
-            interval = f"{fmt(low)}-{fmt(high)}"
+            # A hyphen between two bounds one of which is negative reads as "(-5-6)" (s67).
+            sep = " to " if min(low, high) < 0 else "-"
+            interval = f"{fmt(low)}{sep}{fmt(high)}"
         table[key][r["metric"]] = (f"{fmt(mean)} ({interval})", n)
     head = [g.split(".")[-1] for g in groups] + ["n"] + metrics
     print("| " + " | ".join(head) + " |")

@@ -113,6 +113,8 @@ TEST_F(SweepScriptsTest, SweepTableRefusesWhatIsNotAWholeSweepAndSaysEachCellsRu
   CliResult r = RunScript(dir, "sweep_table.py", "whole");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("| 3 | 2 | 0.015 (0.001-0.03) | 0 (0-0) |"), std::string::npos) << r.out;
+  // A negative bound was printed "(-5-6)": a range from -5 to -6 at a glance.
+  EXPECT_NE(r.out.find("| 4 | 2 | 0.04 (0.01-0.07) | 0.5 (-5 to 6) |"), std::string::npos) << r.out;
 
   ExpectRefusal(RunScript(dir, "sweep_table.py", "nowhere"),
                 "sweep_table: nowhere: no such folder");
@@ -241,6 +243,35 @@ TEST_F(SweepScriptsTest, PlotSweepNamesTheFileAndFieldItCannotPlot) {
   const CliResult r = RunScript(dir, "plot_sweep.py", "file");
   EXPECT_EQ(r.exit_code, 3) << r.err;  // CANNOT_WRITE: plywood sweep then exits 1
   EXPECT_EQ(r.err, "plywood sweep: file/plots: cannot write: a file, not a folder\n");
+}
+
+// A sweep grouped by world: results.csv holds the worlds' paths, summary.csv their stems, and
+// plot_sweep.py matched the two by text, so no group got its mean and CI marker (s67).
+TEST_F(SweepScriptsTest, PlotSweepGroupedByWorldDrawsEachGroupsMean) {
+  if (!PythonImports("matplotlib")) GTEST_SKIP() << "python3-matplotlib is not installed";
+  const fs::path dir = MakeTempDir("PlotSweepByWorld");
+  const fs::path folder =
+      WriteSweep(dir / "worlds",
+                 "a,e.yaml,/w/room_a.xml,,,1,3,0.01,0\n"
+                 "b,e.yaml,/w/room_a.xml,,,2,3,0.02,0\n"
+                 "c,e.yaml,/w/room_b.xml,,,1,3,0.03,0\n"
+                 "d,e.yaml,/w/room_b.xml,,,2,3,0.05,1\n",
+                 "room_a,occupancy.error,2,0.015,0.007,0.001,0.03,0.01,0.02,0.02\n"
+                 "room_b,occupancy.error,2,0.04,0.014,0.01,0.07,0.03,0.05,0.05\n");
+  // WriteSweep's summary is grouped by duration_s; this one by world.
+  std::string summary = Slurp(folder / "summary.csv");
+  summary.replace(0, summary.find(','), "world");
+  WriteFile(folder / "summary.csv", summary);
+  const CliResult r = RunScript(dir, "plot_sweep.py", "worlds");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // The mean's diamond is drawn in matplotlib's tab:red (#d62728); nothing else in the plot is.
+  const std::string count_red =
+      "/usr/bin/python3 -c \"import sys, matplotlib.image as m; a = m.imread(sys.argv[1]); "
+      "print(int(((abs(a[..., 0] - 0.839) < 0.01) & (abs(a[..., 1] - 0.153) < 0.01) & "
+      "(abs(a[..., 2] - 0.157) < 0.01)).sum()))\" '" +
+      (folder / "plots" / "occupancy.error.png").string() + "' > '" + (dir / "red").string() + "'";
+  ASSERT_EQ(std::system(count_red.c_str()), 0);
+  EXPECT_GT(std::stoi(Slurp(dir / "red")), 40) << "no mean marker drawn";
 }
 
 // false_lines.py gave "0 lines, 0 false (pooled precision 1.000)" of an extractor no run has (a
