@@ -22,8 +22,14 @@ mark="r67-$$-$RANDOM"
 stop() {
   # Whatever the check left behind: the daemon this test started, found by its own mark.
   local pids
-  pids=$(pgrep -f -- "^daemon-$mark" || true)
+  pids=$(pgrep -f -- "^(daemon|sleeper)-$mark" || true)
   [ -z "$pids" ] || kill -KILL $pids 2>/dev/null || true
+  # And the mounts of a check that failed (killed) before its own clean-up: deepest first. The
+  # binds are slaves, so this leaves the host's /sys and /dev mounted.
+  local m
+  for m in $(awk -v w="$work/" 'index($2, w) == 1 {print $2}' /proc/mounts | sort -r); do
+    umount "$m" 2>/dev/null || umount -l "$m" 2>/dev/null || true
+  done
   rm -rf --one-file-system "$work"
 }
 trap stop EXIT
@@ -78,4 +84,55 @@ if [ -e "$work/root" ] || grep -q "$work/root" /proc/mounts; then
   echo "FAIL: the root or a mount of it is left"
   exit 1
 fi
-echo "1 passed, 0 failed"
+
+# A TERM to the check while the demo runs (here: for an hour) ends the check at once, the demo and
+# its root with it; it waited for the demo's end (s67).
+mkdir -p "$work/slow/scripts"
+cp "$source_root/scripts/fresh_debian_check" "$work/slow/scripts/"
+printf '#!/bin/bash\necho "demo: sleeping"\nexec -a sleeper-%s sleep 3600\n' "$mark" \
+  >"$work/slow/scripts/demo"
+chmod +x "$work/slow/scripts/demo"
+git -C "$work/slow" init -q
+git -C "$work/slow" add -A
+git -C "$work/slow" -c user.name=t -c user.email=t@t commit -qm slow
+PATH="$work/bin:$PATH" "$work/slow/scripts/fresh_debian_check" --dir "$work/root2" --demo-only \
+  >"$work/check2.log" 2>&1 &
+check=$!
+for _ in $(seq 300); do
+  grep -qs "demo: sleeping" "$work/root2.demo.log" && break
+  sleep 0.1
+done
+if ! grep -qs "demo: sleeping" "$work/root2.demo.log"; then
+  kill -KILL "$check" 2>/dev/null || true
+  cat "$work/check2.log"
+  echo "FAIL: the slow demo did not start in its root"
+  exit 1
+fi
+kill -TERM "$check"
+for _ in $(seq 300); do
+  kill -0 "$check" 2>/dev/null || break
+  sleep 0.1
+done
+if kill -0 "$check" 2>/dev/null; then
+  kill -KILL "$check" 2>/dev/null || true
+  echo "FAIL: the check did not stop on TERM while its demo ran (30 s)"
+  exit 1
+fi
+set +e
+wait "$check"
+rc=$?
+set -e
+cat "$work/check2.log"
+if [ "$rc" -ne 130 ]; then
+  echo "FAIL: the check stopped by TERM exited $rc, not 130"
+  exit 1
+fi
+if pgrep -f -- "^sleeper-$mark" >/dev/null; then
+  echo "FAIL: the demo still runs after the check stopped"
+  exit 1
+fi
+if [ -e "$work/root2" ] || grep -q "$work/root2" /proc/mounts; then
+  echo "FAIL: the stopped check left its root or a mount of it"
+  exit 1
+fi
+echo "2 passed, 0 failed"
