@@ -93,7 +93,9 @@ void AsyncSnapshotWriter::Work() {
         mj_kinematics(model_.get(), initial.get());
         mj_comPos(model_.get(), initial.get());
         mj_camlight(model_.get(), initial.get());
-        renderer->WarmUp(initial.get());
+        // Everything that does not move, drawn while the run goes on: after it only the box
+        // round the robot is drawn anew (docs/performance.md, "Stop 67").
+        renderer->KeepStaticFrame(initial.get());
       } catch (const std::runtime_error& e) {
         renderer.reset();
         // Without any context the probe's reason, as WriteSnapshot gives it.
@@ -118,7 +120,7 @@ void AsyncSnapshotWriter::Work() {
           renderer.reset();
           renderer = std::make_unique<TopDownRenderer>(model_.get(), bounds, options_.view);
         }
-        snapshot = {renderer->Render(request.data.get()), SnapshotBackend::kOpenGl};
+        snapshot = {renderer->RenderOverStaticFrame(request.data.get()), SnapshotBackend::kOpenGl};
         drawn = true;
       } catch (const std::runtime_error& e) {
         why_software = e.what();

@@ -17,10 +17,13 @@
 namespace plywood::render {
 
 // WriteSnapshot on a thread of its own, started before the run it pictures: loading OSMesa and
-// libLLVM, making the GL contexts and llvmpipe's shader compilation (a warm-up frame of the
-// model's initial state) overlap the simulation instead of following it, and the final frame and
-// its PNG overlap the writing of the other outputs. The PNG is byte-identical to WriteSnapshot's
-// (the same drawing code; the warm-up frame only compiles shaders). Errors surface in Finish.
+// libLLVM, making the GL contexts, llvmpipe's shader compilation and the picture of everything
+// that does not move (the model's static geoms) overlap the simulation instead of following it;
+// after the run only the box round what moved is drawn (TopDownRenderer::RenderOverStaticFrame),
+// and the PNG overlaps the writing of the other outputs. The PNG is WriteSnapshot's, up to a few
+// pixels in the robot's box where the cut frustum rounds an edge's samples differently
+// (byte-identical when the final framing is not the static one: a whole frame is drawn then).
+// Errors surface in Finish.
 class AsyncSnapshotWriter {
  public:
   // Copies `m` on the calling thread, so call it while nothing changes the model (not during a

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -207,13 +209,131 @@ void TopDownRenderer::Aim() {
 
 TopDownRenderer::~TopDownRenderer() = default;
 
-void TopDownRenderer::Draw(mjData* d, const mjrRect& viewport) {
+void TopDownRenderer::UpdateScene(mjData* d) {
   gl_->context.MakeCurrent();
-  mjr_setBuffer(mjFB_OFFSCREEN, &gl_->con);
   mjv_updateScene(gl_->model.get(), d, &gl_->option, nullptr, &gl_->camera, mjCAT_ALL, &gl_->scene);
-  gl_->scene.camera[0] = gl_->gl_camera;
-  gl_->scene.camera[1] = gl_->gl_camera;
+}
+
+void TopDownRenderer::DrawScene(const mjrRect& viewport, const mjvGLCamera& camera) {
+  mjr_setBuffer(mjFB_OFFSCREEN, &gl_->con);
+  gl_->scene.camera[0] = camera;
+  gl_->scene.camera[1] = camera;
   mjr_render(viewport, &gl_->scene, &gl_->con);
+}
+
+void TopDownRenderer::Draw(mjData* d, const mjrRect& viewport) {
+  UpdateScene(d);
+  DrawScene(viewport, gl_->gl_camera);
+}
+
+std::vector<std::uint8_t> TopDownRenderer::ReadPixels(const mjrRect& viewport) {
+  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(viewport.width) * viewport.height * 3);
+  mjr_readPixels(rgb.data(), nullptr, viewport, &gl_->con);
+  if (const int error = mjr_getError(); error != 0) {
+    throw std::runtime_error("offscreen rendering: OpenGL error " + std::to_string(error));
+  }
+  return rgb;
+}
+
+void TopDownRenderer::KeepStaticFrame(mjData* d) {
+  UpdateScene(d);
+  const mjModel* m = gl_->model.get();
+  mjvScene& scene = gl_->scene;
+  int kept = 0;
+  for (int i = 0; i < scene.ngeom; ++i) {
+    const mjvGeom& geom = scene.geoms[i];
+    if (geom.objtype == mjOBJ_GEOM && IsStaticGeom(m, geom.objid)) scene.geoms[kept++] = geom;
+  }
+  scene.ngeom = kept;
+  const mjrRect viewport{0, 0, frame_.width_px, frame_.height_px};
+  DrawScene(viewport, gl_->gl_camera);
+  static_rgb_ = ReadPixels(viewport);
+  static_frame_ = frame_;
+}
+
+std::optional<PixelBox> TopDownRenderer::MovingBox() const {
+  const mjModel* m = gl_->model.get();
+  // A light on a moving body lights static pixels differently wherever it goes.
+  for (int l = 0; l < m->nlight; ++l) {
+    if (m->body_weldid[m->light_bodyid[l]] != 0) return std::nullopt;
+  }
+  const WorldToPixel& map = frame_.world_to_pixel;
+  double u_min = std::numeric_limits<double>::infinity(), v_min = u_min;
+  double u_max = -u_min, v_max = -u_min;
+  for (int i = 0; i < gl_->scene.ngeom; ++i) {
+    const mjvGeom& geom = gl_->scene.geoms[i];
+    if (geom.objtype != mjOBJ_GEOM) return std::nullopt;  // a site, a tendon, a label: no bound
+    if (IsStaticGeom(m, geom.objid)) continue;
+    const double radius_m = m->geom_rbound[geom.objid];
+    if (!(radius_m > 0.0) || !std::isfinite(radius_m)) return std::nullopt;  // a moving plane
+    const Eigen::Vector2d centre = map.ToPixel({geom.pos[0], geom.pos[1]});
+    const double radius_px = radius_m * map.pixels_per_m;
+    u_min = std::min(u_min, centre.x() - radius_px);
+    u_max = std::max(u_max, centre.x() + radius_px);
+    v_min = std::min(v_min, centre.y() - radius_px);
+    v_max = std::max(v_max, centre.y() + radius_px);
+  }
+  if (!(u_max >= u_min)) return PixelBox{};  // nothing moves: the static frame is the picture
+  if (!std::isfinite(u_min + u_max + v_min + v_max)) return std::nullopt;
+  // The projection's parallax (< 0.18 px: TopDownCameraHeightM) and an edge's multisamples
+  // (< 1 px) reach beyond the footprint's circle.
+  constexpr double kMarginPx = 2.0;
+  const auto clamp = [](double v, int hi) {
+    return static_cast<int>(std::clamp(v, 0.0, static_cast<double>(hi)));
+  };
+  PixelBox box;
+  box.x = clamp(std::floor(u_min - kMarginPx), frame_.width_px);
+  box.y = clamp(std::floor(v_min - kMarginPx), frame_.height_px);
+  box.width = clamp(std::ceil(u_max + kMarginPx), frame_.width_px) - box.x;
+  box.height = clamp(std::ceil(v_max + kMarginPx), frame_.height_px) - box.y;
+  return box;
+}
+
+mjvGLCamera CutTopDownGlCamera(const mjvGLCamera& whole, int width_px, int height_px, int x,
+                               int y_from_bottom, int width, int height) {
+  // The whole near-plane window is width_px x height_px pixels of (top - bottom) / height_px each
+  // (mjr_render sets the half-width from the viewport's aspect); the cut is the box's part of it.
+  const double per_px = (static_cast<double>(whole.frustum_top) - whole.frustum_bottom) / height_px;
+  const double left = whole.frustum_center - 0.5 * per_px * width_px;
+  mjvGLCamera cut = whole;
+  cut.frustum_center = static_cast<float>(left + (x + 0.5 * width) * per_px);
+  cut.frustum_bottom = static_cast<float>(whole.frustum_bottom + y_from_bottom * per_px);
+  cut.frustum_top = static_cast<float>(whole.frustum_bottom + (y_from_bottom + height) * per_px);
+  return cut;
+}
+
+TopDownImage TopDownRenderer::RenderOverStaticFrame(mjData* d) {
+  const bool same_framing =
+      static_frame_ && static_frame_->width_px == frame_.width_px &&
+      static_frame_->height_px == frame_.height_px &&
+      static_frame_->world_to_pixel.pixels_per_m == frame_.world_to_pixel.pixels_per_m &&
+      static_frame_->world_to_pixel.x_left_m == frame_.world_to_pixel.x_left_m &&
+      static_frame_->world_to_pixel.y_top_m == frame_.world_to_pixel.y_top_m;
+  if (!same_framing) return Render(d);
+  UpdateScene(d);
+  const std::optional<PixelBox> box = MovingBox();
+  const std::size_t whole = static_cast<std::size_t>(frame_.width_px) * frame_.height_px;
+  if (!box || 4 * static_cast<std::size_t>(box->width) * box->height > whole) {
+    const mjrRect viewport{0, 0, frame_.width_px, frame_.height_px};
+    DrawScene(viewport, gl_->gl_camera);
+    return {FromBottomUpRows(ReadPixels(viewport), frame_.width_px, frame_.height_px),
+            frame_.world_to_pixel};
+  }
+  RgbImage image = FromBottomUpRows(static_rgb_, frame_.width_px, frame_.height_px);
+  if (box->width > 0 && box->height > 0) {
+    const int y_from_bottom = frame_.height_px - box->y - box->height;
+    const mjrRect viewport{0, 0, box->width, box->height};
+    DrawScene(viewport, CutTopDownGlCamera(gl_->gl_camera, frame_.width_px, frame_.height_px,
+                                           box->x, y_from_bottom, box->width, box->height));
+    const std::vector<std::uint8_t> rgb = ReadPixels(viewport);
+    const std::size_t row_bytes = static_cast<std::size_t>(box->width) * 3;
+    for (int row = 0; row < box->height; ++row) {
+      // GL rows count from the bottom.
+      std::memcpy(image.At(box->x, box->y + box->height - 1 - row), rgb.data() + row * row_bytes,
+                  row_bytes);
+    }
+  }
+  return {std::move(image), frame_.world_to_pixel};
 }
 
 void TopDownRenderer::WarmUp(mjData* d) {

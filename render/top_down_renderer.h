@@ -2,7 +2,10 @@
 
 #include <mujoco/mujoco.h>
 
+#include <cstdint>
 #include <memory>
+#include <optional>
+#include <vector>
 
 #include "render/png_image.h"
 #include "render/world_to_pixel.h"
@@ -33,10 +36,24 @@ struct TopDownImage {
 mjvGLCamera MakeTopDownGlCamera(const TopDownFrame& frame, double height_m, double z_top_m);
 double TopDownCameraHeightM(int longer_side_px, double z_top_m);
 
+// The part of `whole` (a camera for a width_px x height_px viewport) that a viewport of `width` x
+// `height` pixels shows when it is the box of the whole picture whose lower-left pixel is (x,
+// y_from_bottom), GL's rows counted from the bottom.
+mjvGLCamera CutTopDownGlCamera(const mjvGLCamera& whole, int width_px, int height_px, int x,
+                               int y_from_bottom, int width, int height);
+
 // The floor-plane map a downward-looking GL camera produces on a `width_px` x `height_px` viewport,
 // following mjr_render's projection (glFrustum with the horizontal half-width set by the aspect).
 // @pre camera looks along -z with up = +y.
 WorldToPixel FloorMappingOf(const mjvGLCamera& camera, int width_px, int height_px);
+
+// A rectangle of pixels: columns [x, x + width), image rows [y, y + height) counted from the top.
+struct PixelBox {
+  int x = 0;
+  int y = 0;
+  int width = 0;
+  int height = 0;
+};
 
 // Renders top-down views of one model through MuJoCo's OpenGL renderer in an offscreen context.
 // Construction copies the model (to size the offscreen buffer and light the scene from above) and
@@ -62,6 +79,21 @@ class TopDownRenderer {
   // @throws std::runtime_error when GL reports an error.
   void WarmUp(mjData* d);
 
+  // Draws the scene in `d` without what moves (the geoms of bodies welded to the world only) over
+  // the whole picture and keeps it for RenderOverStaticFrame. Compiles what WarmUp compiles; meant
+  // for a thread that has time while the run goes on.
+  // @throws std::runtime_error when GL reports an error.
+  void KeepStaticFrame(mjData* d);
+  // Render(d)'s picture, drawn as the kept static frame with only the box round the moving geoms
+  // drawn anew from `d` (the whole scene through a frustum cut to the box): a final frame
+  // after a run then rasterises a few thousand pixels instead of the whole picture. A whole Render
+  // when no static frame was kept for this framing, when something drawn is not a geom of the
+  // model or a light moves, or when the box is over a quarter of the picture. Pixels beyond the
+  // box are the static frame's, which are Render's: nothing that moves covers them. Inside it the
+  // cut frustum can round a vertex differently from the whole one, so a pixel on an edge there
+  // may differ (docs/performance.md, "Stop 67").
+  // @throws std::runtime_error when GL reports an error.
+  TopDownImage RenderOverStaticFrame(mjData* d);
   // Frames `bounds` instead (same options), keeping the GL context and its compiled shaders.
   // Returns false, changing nothing, when that picture is larger than the buffers made for the
   // first framing (make a new renderer then). @throws std::invalid_argument on bad bounds.
@@ -72,11 +104,20 @@ class TopDownRenderer {
  private:
   void Aim();  // points the cameras at frame_ and sets its floor map
   void Draw(mjData* d, const mjrRect& viewport);
+  void UpdateScene(mjData* d);
+  void DrawScene(const mjrRect& viewport, const mjvGLCamera& camera);
+  std::vector<std::uint8_t> ReadPixels(const mjrRect& viewport);
+  // The pixel box (image rows, top down) round every moving geom of the scene last updated, or
+  // nothing when something moving is not a geom of the model.
+  std::optional<PixelBox> MovingBox() const;
 
   struct Gl;
   TopDownOptions options_;
   TopDownFrame frame_;
   std::unique_ptr<Gl> gl_;
+  // KeepStaticFrame's picture (GL rows, bottom up) and the framing it was drawn for.
+  std::vector<std::uint8_t> static_rgb_;
+  std::optional<TopDownFrame> static_frame_;
 };
 
 // The same view drawn without GL: the floor colour, then every visible geom's footprint from above

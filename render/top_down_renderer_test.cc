@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+
 #include "render/geom_footprint.h"
 #include "render/image_ops.h"
 #include "render/offscreen_context.h"
@@ -118,6 +121,109 @@ TEST(TopDownRendererTest, SoftwareFallbackUsesTheSameMapping) {
   EXPECT_NEAR(blob.count, 0.4 * s * 0.2 * s, 0.6 * s * 0.02 * s);
   // Floor takes the plane's colour.
   EXPECT_EQ(PixelAt(out.image, out.image.width / 2, out.image.height / 4), (Rgb{128, 128, 128}));
+}
+
+TEST(TopDownCameraTest, ACutCameraShowsItsBoxOfTheWholePicture) {
+  const TopDownFrame frame = FrameBounds({-2.0, 3.0, -1.0, 1.5}, 800);
+  const mjvGLCamera whole = MakeTopDownGlCamera(frame, TopDownCameraHeightM(800, 0.5), 0.5);
+  const WorldToPixel whole_map = FloorMappingOf(whole, frame.width_px, frame.height_px);
+  // The whole box is the whole camera.
+  const mjvGLCamera same = CutTopDownGlCamera(whole, frame.width_px, frame.height_px, 0, 0,
+                                              frame.width_px, frame.height_px);
+  EXPECT_FLOAT_EQ(same.frustum_center, whole.frustum_center);
+  EXPECT_FLOAT_EQ(same.frustum_bottom, whole.frustum_bottom);
+  EXPECT_FLOAT_EQ(same.frustum_top, whole.frustum_top);
+  // A 40 x 30 box whose lower-left pixel is (500, 100), GL rows from the bottom: its picture's
+  // pixel (u, v) is the whole picture's (u + 500, v + top row), top row = height - 100 - 30.
+  const int x = 500, y_from_bottom = 100, w = 40, h = 30;
+  const WorldToPixel cut_map = FloorMappingOf(
+      CutTopDownGlCamera(whole, frame.width_px, frame.height_px, x, y_from_bottom, w, h), w, h);
+  const Eigen::Vector2d offset(x, frame.height_px - y_from_bottom - h);
+  for (const Eigen::Vector2d& p_W :
+       {Eigen::Vector2d(0.9, -0.2), Eigen::Vector2d(1.0, -0.1), Eigen::Vector2d(0.95, -0.3)}) {
+    EXPECT_LT((cut_map.ToPixel(p_W) + offset - whole_map.ToPixel(p_W)).norm(), 0.01)
+        << p_W.transpose();
+  }
+}
+
+// The room with a free red box and ball (a robot stand-in) and, optionally, a spotlight riding on
+// it.
+std::string RoomWithAMovingBox(bool light_on_it) {
+  std::string xml = kRoom;
+  const std::string body =
+      std::string(R"(<body name="mover" pos="0 0 0.1"><freejoint/>)") +
+      (light_on_it ? R"(<light pos="0 0 1" dir="0 0 -1" diffuse="0.9 0.9 0.9" cutoff="30"/>)"
+                   : "") +
+      R"(<geom type="box" size="0.15 0.1 0.1" rgba="1 0 0 1"/>)"
+      // A sphere's footprint is its bounding circle: nothing but the box's margin covers its rim.
+      R"(<geom type="sphere" pos="0.3 0 0" size="0.1" rgba="1 0 0 1"/></body>)";
+  // The kRoom's own red box becomes blue, so the red pixels are the moving box's alone.
+  const std::string fixed_red = R"(rgba="1 0 0 1"/>
+  </worldbody>)";
+  xml.replace(xml.find(fixed_red), fixed_red.size(), R"(rgba="0 0 1 1"/>
+    )" + body + "\n  </worldbody>");
+  return xml;
+}
+
+void PlaceMover(const mjModel* m, mjData* d, double x_m, double y_m, double yaw_rad) {
+  d->qpos[0] = x_m;
+  d->qpos[1] = y_m;
+  d->qpos[2] = 0.1;
+  d->qpos[3] = std::cos(0.5 * yaw_rad);
+  d->qpos[4] = d->qpos[5] = 0.0;
+  d->qpos[6] = std::sin(0.5 * yaw_rad);
+  mj_forward(m, d);
+}
+
+TEST(TopDownRendererTest, OverTheStaticFrameIsRenderBeyondTheMovingBoxAndAlmostWithinIt) {
+  if (!OffscreenRenderingAvailable()) GTEST_SKIP() << "no offscreen OpenGL context here";
+  const sim::MjModelPtr m = sim::LoadModelFromString(RoomWithAMovingBox(false), "room.xml");
+  const sim::MjDataPtr d(mj_makeData(m.get()));
+  PlaceMover(m.get(), d.get(), -1.5, 1.2, 0.0);
+  TopDownRenderer renderer(m.get(), StaticGeometryExtent(m.get()).bounds);
+  renderer.KeepStaticFrame(d.get());
+  const double radius_m = 0.4;  // from the body's origin: the sphere's far rim (0.3 + 0.1)
+  // Away from where it was when the static frame was drawn, turned, and across a wall's edge.
+  for (const Eigen::Vector3d& pose :
+       {Eigen::Vector3d(0.3, -0.4, 0.0), Eigen::Vector3d(-0.7, 0.5, 0.6),
+        Eigen::Vector3d(1.85, 1.0, 1.2)}) {
+    PlaceMover(m.get(), d.get(), pose.x(), pose.y(), pose.z());
+    const TopDownImage over = renderer.RenderOverStaticFrame(d.get());
+    const TopDownImage whole = renderer.Render(d.get());
+    ASSERT_EQ(over.image.width, whole.image.width);
+    ASSERT_EQ(over.image.height, whole.image.height);
+    const Eigen::Vector2d centre_px = whole.world_to_pixel.ToPixel(pose.head<2>());
+    const double reach_px = radius_m * whole.world_to_pixel.pixels_per_m + 3.0;
+    int differ = 0, differ_beyond = 0;
+    for (int y = 0; y < whole.image.height; ++y) {
+      for (int x = 0; x < whole.image.width; ++x) {
+        if (PixelAt(over.image, x, y) == PixelAt(whole.image, x, y)) continue;
+        ++differ;
+        if ((Eigen::Vector2d(x + 0.5, y + 0.5) - centre_px).norm() > reach_px) ++differ_beyond;
+      }
+    }
+    EXPECT_EQ(differ_beyond, 0) << pose.transpose();
+    // The box is there (not the static frame's empty floor), up to a few edge pixels.
+    const RedBlob over_blob = FindRed(over.image), whole_blob = FindRed(whole.image);
+    EXPECT_GT(whole_blob.count, 100) << pose.transpose();
+    EXPECT_NEAR(over_blob.count, whole_blob.count, 4) << pose.transpose();
+    EXPECT_LE(differ, 8) << pose.transpose();
+  }
+}
+
+TEST(TopDownRendererTest, OverTheStaticFrameIsRenderWhenThereIsNoStaticFrameOrALightMoves) {
+  if (!OffscreenRenderingAvailable()) GTEST_SKIP() << "no offscreen OpenGL context here";
+  for (const bool light_on_it : {false, true}) {
+    const sim::MjModelPtr m = sim::LoadModelFromString(RoomWithAMovingBox(light_on_it), "room.xml");
+    const sim::MjDataPtr d(mj_makeData(m.get()));
+    PlaceMover(m.get(), d.get(), -1.5, 1.2, 0.0);
+    TopDownRenderer renderer(m.get(), StaticGeometryExtent(m.get()).bounds);
+    // With a light riding on the box the static frame lights the floor where the box was.
+    if (light_on_it) renderer.KeepStaticFrame(d.get());
+    PlaceMover(m.get(), d.get(), 0.8, -0.5, 0.3);
+    const TopDownImage over = renderer.RenderOverStaticFrame(d.get());
+    EXPECT_EQ(over.image.pixels, renderer.Render(d.get()).image.pixels) << light_on_it;
+  }
 }
 
 TEST(TopDownOptionsTest, ValidateNamesTheField) {
