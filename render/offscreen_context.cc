@@ -98,6 +98,8 @@ bool OffscreenRenderingAvailable() {
   return available;
 }
 
+void PreloadOffscreenLibrary() { LoadOsMesa(); }
+
 void* GlProcAddress(const char* name) {
   const OsMesa& osmesa = LoadOsMesa();
   return osmesa.proc_address ? reinterpret_cast<void*>(osmesa.proc_address(name)) : nullptr;
@@ -119,6 +121,8 @@ void OffscreenContext::MakeCurrent() {
 }
 
 bool OffscreenRenderingAvailable() { return false; }
+
+void PreloadOffscreenLibrary() {}
 
 void* GlProcAddress(const char*) { return nullptr; }
 

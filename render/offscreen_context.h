@@ -11,6 +11,11 @@ inline constexpr bool kHasOffscreenRendering = PLYWOOD_HAS_OSMESA != 0;
 // backend and the driver must hand out a context. Probed once per process.
 bool OffscreenRenderingAvailable();
 
+// Loads the offscreen backend's library (OSMesa, and with it libLLVM: ~60 ms in a fresh process)
+// without making a context, so that a thread can do it while the caller builds what it will draw;
+// the first context then finds it loaded. Does nothing when there is no backend or it is loaded.
+void PreloadOffscreenLibrary();
+
 // The address of the OpenGL function `name` from the offscreen backend (OSMesaGetProcAddress),
 // for the few GL calls MuJoCo's mjr_* functions do not make; nullptr when there is none.
 void* GlProcAddress(const char* name);
