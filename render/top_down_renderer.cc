@@ -253,6 +253,8 @@ void TopDownRenderer::KeepStaticFrame(mjData* d) {
 
 std::optional<PixelBox> TopDownRenderer::MovingBox() const {
   const mjModel* m = gl_->model.get();
+  // Skins are drawn beside the geoms and move with their bodies: no box bounds them here.
+  if (m->nskin > 0) return std::nullopt;
   // A light on a moving body lights static pixels differently wherever it goes.
   for (int l = 0; l < m->nlight; ++l) {
     if (m->body_weldid[m->light_bodyid[l]] != 0) return std::nullopt;

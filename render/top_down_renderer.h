@@ -88,10 +88,10 @@ class TopDownRenderer {
   // drawn anew from `d` (the whole scene through a frustum cut to the box): a final frame
   // after a run then rasterises a few thousand pixels instead of the whole picture. A whole Render
   // when no static frame was kept for this framing, when something drawn is not a geom of the
-  // model or a light moves, or when the box is over a quarter of the picture. Pixels beyond the
-  // box are the static frame's, which are Render's: nothing that moves covers them. Inside it the
-  // cut frustum can round a vertex differently from the whole one, so a pixel on an edge there
-  // may differ (docs/performance.md, "Stop 67").
+  // model (a skin, a decoration) or a light moves, or when the box is over a quarter of the
+  // picture. Pixels beyond the box are the static frame's, which are Render's: nothing that moves
+  // covers them. Inside it the cut frustum can round a vertex differently from the whole one, so a
+  // pixel on an edge there may differ (docs/performance.md, "Stop 67").
   // @throws std::runtime_error when GL reports an error.
   TopDownImage RenderOverStaticFrame(mjData* d);
   // Frames `bounds` instead (same options), keeping the GL context and its compiled shaders.
