@@ -55,12 +55,16 @@ void VideoRecorder::AddFrame(const sim::ExperimentRunner& runner) {
     if (OffscreenRenderingAvailable()) {
       try {
         renderer_ = std::make_unique<TopDownRenderer>(m, bounds, view);
+        // What does not move, drawn once: each frame then draws only the box round the robot
+        // (TopDownRenderer::RenderOverStaticFrame; the frames' bytes are the encoder's anyway).
+        renderer_->KeepStaticFrame(d);
       } catch (const std::runtime_error& e) {
         std::fprintf(stderr, "plywood: video frames drawn in software (%s)\n", e.what());
       }
     }
   }
-  TopDownImage frame = renderer_ ? renderer_->Render(d) : RenderTopDownSoftware(m, d, bounds, view);
+  TopDownImage frame =
+      renderer_ ? renderer_->RenderOverStaticFrame(d) : RenderTopDownSoftware(m, d, bounds, view);
   const WorldToPixel& map = frame.world_to_pixel;
   const sim::RunRecord& record = runner.record();
   if (!record.laser.empty()) {
