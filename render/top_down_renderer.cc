@@ -291,6 +291,29 @@ std::optional<PixelBox> TopDownRenderer::MovingBox() const {
   return box;
 }
 
+void TopDownRenderer::KeepOnlyGeomsReaching(const PixelBox& box) {
+  // A geom whose bounding circle misses the box draws no pixel of it: leaving it out saves its
+  // draw (llvmpipe validates and sets up every draw and shades every vertex on the CPU). Planes
+  // (no bound) stay.
+  const mjModel* m = gl_->model.get();
+  const WorldToPixel& map = frame_.world_to_pixel;
+  mjvScene& scene = gl_->scene;
+  int kept = 0;
+  for (int i = 0; i < scene.ngeom; ++i) {
+    const mjvGeom& geom = scene.geoms[i];
+    const double radius_m = m->geom_rbound[geom.objid];
+    bool reaches = !(radius_m > 0.0);
+    if (!reaches) {
+      const Eigen::Vector2d centre = map.ToPixel({geom.pos[0], geom.pos[1]});
+      const double radius_px = radius_m * map.pixels_per_m + 2.0;
+      reaches = centre.x() + radius_px >= box.x && centre.x() - radius_px <= box.x + box.width &&
+                centre.y() + radius_px >= box.y && centre.y() - radius_px <= box.y + box.height;
+    }
+    if (reaches) scene.geoms[kept++] = geom;
+  }
+  scene.ngeom = kept;
+}
+
 mjvGLCamera CutTopDownGlCamera(const mjvGLCamera& whole, int width_px, int height_px, int x,
                                int y_from_bottom, int width, int height) {
   // The whole near-plane window is width_px x height_px pixels of (top - bottom) / height_px each
@@ -323,6 +346,7 @@ TopDownImage TopDownRenderer::RenderOverStaticFrame(mjData* d) {
   }
   RgbImage image = FromBottomUpRows(static_rgb_, frame_.width_px, frame_.height_px);
   if (box->width > 0 && box->height > 0) {
+    KeepOnlyGeomsReaching(*box);
     const int y_from_bottom = frame_.height_px - box->y - box->height;
     const mjrRect viewport{0, 0, box->width, box->height};
     DrawScene(viewport, CutTopDownGlCamera(gl_->gl_camera, frame_.width_px, frame_.height_px,

@@ -85,7 +85,7 @@ class TopDownRenderer {
   // @throws std::runtime_error when GL reports an error.
   void KeepStaticFrame(mjData* d);
   // Render(d)'s picture, drawn as the kept static frame with only the box round the moving geoms
-  // drawn anew from `d` (the whole scene through a frustum cut to the box): a final frame
+  // drawn anew from `d` (the geoms reaching the box, through a frustum cut to it): a final frame
   // after a run then rasterises a few thousand pixels instead of the whole picture. A whole Render
   // when no static frame was kept for this framing, when something drawn is not a geom of the
   // model (a skin, a decoration) or a light moves, or when the box is over a quarter of the
@@ -110,6 +110,8 @@ class TopDownRenderer {
   // The pixel box (image rows, top down) round every moving geom of the scene last updated, or
   // nothing when something moving is not a geom of the model.
   std::optional<PixelBox> MovingBox() const;
+  // Leaves out of the scene last updated the geoms whose bounding circle misses `box`.
+  void KeepOnlyGeomsReaching(const PixelBox& box);
 
   struct Gl;
   TopDownOptions options_;
