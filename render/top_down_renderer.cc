@@ -269,6 +269,7 @@ std::optional<PixelBox> TopDownRenderer::MovingBox() const {
     const double radius_m = m->geom_rbound[geom.objid];
     if (!(radius_m > 0.0) || !std::isfinite(radius_m)) return std::nullopt;  // a moving plane
     const Eigen::Vector2d centre = map.ToPixel({geom.pos[0], geom.pos[1]});
+    if (!centre.allFinite()) return std::nullopt;  // a state gone non-finite: draw it whole
     const double radius_px = radius_m * map.pixels_per_m;
     u_min = std::min(u_min, centre.x() - radius_px);
     u_max = std::max(u_max, centre.x() + radius_px);
@@ -360,19 +361,6 @@ TopDownImage TopDownRenderer::RenderOverStaticFrame(mjData* d) {
     }
   }
   return {std::move(image), frame_.world_to_pixel};
-}
-
-void TopDownRenderer::WarmUp(mjData* d) {
-  // One llvmpipe tile (64 x 64): rasterising the whole picture would cost about as much as the
-  // compilation this is for, and the shaders do not depend on the viewport.
-  const mjrRect viewport{0, 0, std::min(64, frame_.width_px), std::min(64, frame_.height_px)};
-  Draw(d, viewport);
-  // Reading back compiles the multisample resolve and the pixel conversion.
-  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(viewport.width) * viewport.height * 3);
-  mjr_readPixels(rgb.data(), nullptr, viewport, &gl_->con);
-  if (const int error = mjr_getError(); error != 0) {
-    throw std::runtime_error("offscreen rendering: OpenGL error " + std::to_string(error));
-  }
 }
 
 TopDownImage TopDownRenderer::Render(mjData* d) {

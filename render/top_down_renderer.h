@@ -74,14 +74,10 @@ class TopDownRenderer {
   // @throws std::runtime_error when GL reports an error.
   TopDownImage Render(mjData* d);
 
-  // Draws the scene in `d` into a small corner of the buffer and drops the pixels: llvmpipe
-  // compiles its shaders on a scene's first draw, so a later Render is quicker.
-  // @throws std::runtime_error when GL reports an error.
-  void WarmUp(mjData* d);
-
   // Draws the scene in `d` without what moves (the geoms of bodies welded to the world only) over
-  // the whole picture and keeps it for RenderOverStaticFrame. Compiles what WarmUp compiles; meant
-  // for a thread that has time while the run goes on.
+  // the whole picture and keeps it for RenderOverStaticFrame. Compiles llvmpipe's shaders (a
+  // scene's first draw does), so a later Render is quicker; meant for a thread that has time while
+  // the run goes on.
   // @throws std::runtime_error when GL reports an error.
   void KeepStaticFrame(mjData* d);
   // Render(d)'s picture, drawn as the kept static frame with only the box round the moving geoms
