@@ -227,7 +227,10 @@ CognitiveMap SonarExplorer::BuildMap(const BeamFreeGrid* beam_free) const {
 
 std::optional<Eigen::Vector2d> SonarExplorer::FrontBlocked(const msgs::RangeRing& ring) const {
   // The echo points in the corridor the robot body sweeps ahead. The sonars up to 60 deg off the
-  // axis count, since an obstacle corner met at an angle is heard only by the oblique ones.
+  // axis are looked at, since an obstacle corner met at an angle is heard only by the oblique
+  // ones; but on the Magellan Pro's ring (0.1435 m) a 45 deg echo lies >= 0.25 m to the side even
+  // at the 0.15 m minimum range, beyond the body's sweep: there only the 0 and 22.5 deg sonars can
+  // block (docs/sonar_map/history.md, round 67b).
   const double kRadius = options_.robot_radius_m;
   const double kSideMargin = options_.front_margin_m;  // corridor half-width = radius + this
   for (const auto& r : ring.readings) {
