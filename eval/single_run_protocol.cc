@@ -18,6 +18,7 @@
 #include "render/offscreen_context.h"
 #include "render/overlay.h"
 #include "sim/runner/experiment_runner.h"
+#include "sim/runner/out_of_memory.h"
 #include "sim/runner/run_writer.h"
 #include "sim/runner/sensor_log_stream.h"
 #include "sim/runner/text_file.h"
@@ -100,9 +101,12 @@ int SingleRunProtocol(const ProtocolContext& context) {
   const bool snapshots = context.snapshots;
   // The snapshot's library loads beside the scene's compile: the snapshot thread's static frame
   // (docs/performance.md, "Stop 67") then starts that much earlier and is more often done by the
-  // run's last pose. Joined when the protocol returns or throws.
+  // run's last pose. Joined when the protocol returns or throws. Not under `ulimit -v`: with it,
+  // runs under 400-700 MB ended in std::bad_alloc or an abort in llvmpipe's JIT ("LLVM
+  // ERROR: Unable to allocate section memory") or hung, where without it every one ran (review68).
   std::optional<std::jthread> preload;
-  if (snapshots && context.observer == nullptr && render::kHasOffscreenRendering) {
+  if (snapshots && context.observer == nullptr && render::kHasOffscreenRendering &&
+      sim::MemoryLimitNote().empty()) {
     try {
       preload.emplace([] { render::PreloadOffscreenLibrary(); });
     } catch (const std::system_error&) {

@@ -67,7 +67,12 @@ void AddHorizontalCircle(const Eigen::Vector3d& centre, double radius,
 
 }  // namespace
 
-bool IsStaticGeom(const mjModel* m, int g) { return m->body_weldid[m->geom_bodyid[g]] == 0; }
+bool IsStaticGeom(const mjModel* m, int g) {
+  const int body = m->geom_bodyid[g];
+  // A mocap body (a child of the world, no joint) is welded to the world for body_weldid, and so
+  // is a body on it, yet mjData::mocap_pos moves both.
+  return m->body_weldid[body] == 0 && m->body_mocapid[m->body_rootid[body]] < 0;
+}
 
 Eigen::Isometry3d StaticGeomPose(const mjModel* m, int g) {
   Eigen::Isometry3d X_WG = Pose(m->geom_pos + 3 * g, m->geom_quat + 4 * g);

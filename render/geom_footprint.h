@@ -20,7 +20,8 @@ struct GeomFootprint {
   Rgb colour;
 };
 
-// True when geom `g` can never move: its body is welded to the world body.
+// True when geom `g` can never move: its body is welded to the world body, not by way of a mocap
+// body.
 bool IsStaticGeom(const mjModel* m, int g);
 
 // Pose of static geom `g` in the world from the model alone (composing body_pos/body_quat up to the

@@ -38,6 +38,27 @@ TEST(GeomFootprintTest, StaticPosesComposeBodiesAndMovingGeomsAreExcluded) {
   EXPECT_NEAR(p.z(), 0.3, 1e-9);
 }
 
+// A mocap body and a body on it have body_weldid 0, as a static body has, yet mocap_pos moves
+// them: the software picture drew them where the model put them, wherever they were.
+TEST(GeomFootprintTest, AMocapBodyAndWhatHangsOnItAreNotStatic) {
+  const sim::MjModelPtr m = sim::LoadModelFromString(R"(
+<mujoco>
+  <worldbody>
+    <geom name="wall" type="box" pos="1 2 0.25" size="0.5 0.05 0.25"/>
+    <body name="marker" mocap="true" pos="0 0 0.1">
+      <geom name="mark" type="box" size="0.1 0.1 0.1"/>
+      <body name="flag" pos="0.3 0 0"><geom name="pole" type="sphere" size="0.05"/></body>
+    </body>
+  </worldbody>
+</mujoco>)",
+                                                     "world.xml");
+  EXPECT_TRUE(IsStaticGeom(m.get(), mj_name2id(m.get(), mjOBJ_GEOM, "wall")));
+  EXPECT_FALSE(IsStaticGeom(m.get(), mj_name2id(m.get(), mjOBJ_GEOM, "mark")));
+  EXPECT_FALSE(IsStaticGeom(m.get(), mj_name2id(m.get(), mjOBJ_GEOM, "pole")));
+  // So the static extent is the wall's alone.
+  EXPECT_NEAR(StaticGeometryExtent(m.get()).bounds.x_min_m, 0.5, 1e-9);
+}
+
 TEST(GeomFootprintTest, ExtentCoversRotatedBoxAndCylinderButNotFloorOrBall) {
   const sim::MjModelPtr m = sim::LoadModelFromString(kWorld, "world.xml");
   const StaticExtent extent = StaticGeometryExtent(m.get());

@@ -245,6 +245,7 @@ void TopDownRenderer::KeepStaticFrame(mjData* d) {
     if (geom.objtype == mjOBJ_GEOM && IsStaticGeom(m, geom.objid)) scene.geoms[kept++] = geom;
   }
   scene.ngeom = kept;
+  static_lights_.assign(scene.lights, scene.lights + scene.nlight);
   const mjrRect viewport{0, 0, frame_.width_px, frame_.height_px};
   DrawScene(viewport, gl_->gl_camera);
   static_rgb_ = ReadPixels(viewport);
@@ -253,11 +254,20 @@ void TopDownRenderer::KeepStaticFrame(mjData* d) {
 
 std::optional<PixelBox> TopDownRenderer::MovingBox() const {
   const mjModel* m = gl_->model.get();
-  // Skins are drawn beside the geoms and move with their bodies: no box bounds them here.
+  // Skins move with their bones and no box bounds them (the scene holds each as a geom of object
+  // type mjOBJ_SKIN, which the loop below refuses as well).
   if (m->nskin > 0) return std::nullopt;
-  // A light on a moving body lights static pixels differently wherever it goes.
-  for (int l = 0; l < m->nlight; ++l) {
-    if (m->body_weldid[m->light_bodyid[l]] != 0) return std::nullopt;
+  // A light not where the static frame had it lights static pixels differently: one on a moving
+  // body, but also one of the world that tracks a moving body's centre of mass or turns to it.
+  const mjvScene& scene = gl_->scene;
+  if (scene.nlight != static_cast<int>(static_lights_.size())) return std::nullopt;
+  for (int l = 0; l < scene.nlight; ++l) {
+    const mjvLight& now = scene.lights[l];
+    const mjvLight& kept = static_lights_[l];
+    if (!std::equal(now.pos, now.pos + 3, kept.pos) ||
+        !std::equal(now.dir, now.dir + 3, kept.dir)) {
+      return std::nullopt;
+    }
   }
   const WorldToPixel& map = frame_.world_to_pixel;
   double u_min = std::numeric_limits<double>::infinity(), v_min = u_min;

@@ -74,20 +74,21 @@ class TopDownRenderer {
   // @throws std::runtime_error when GL reports an error.
   TopDownImage Render(mjData* d);
 
-  // Draws the scene in `d` without what moves (the geoms of bodies welded to the world only) over
-  // the whole picture and keeps it for RenderOverStaticFrame. Compiles llvmpipe's shaders (a
-  // scene's first draw does), so a later Render is quicker; meant for a thread that has time while
-  // the run goes on.
+  // Draws the scene in `d` without what moves (the geoms IsStaticGeom takes only: welded to the
+  // world, not by way of a mocap body) over the whole picture and keeps it, with the scene's
+  // lights, for RenderOverStaticFrame. Compiles llvmpipe's shaders (a scene's first draw does), so
+  // a later Render is quicker; meant for a thread that has time while the run goes on.
   // @throws std::runtime_error when GL reports an error.
   void KeepStaticFrame(mjData* d);
   // Render(d)'s picture, drawn as the kept static frame with only the box round the moving geoms
   // drawn anew from `d` (the geoms reaching the box, through a frustum cut to it): a final frame
   // after a run then rasterises a few thousand pixels instead of the whole picture. A whole Render
   // when no static frame was kept for this framing, when something drawn is not a geom of the
-  // model (a skin, a decoration) or a light moves, or when the box is over a quarter of the
-  // picture. Pixels beyond the box are the static frame's, which are Render's: nothing that moves
-  // covers them. Inside it the cut frustum can round a vertex differently from the whole one, so a
-  // pixel on an edge there may differ (docs/performance.md, "Stop 67").
+  // model (a skin, a decoration), when a light is not where it was for the static frame, or when
+  // the box is over a quarter of the picture. Pixels beyond the box are the static frame's, which
+  // are Render's: nothing that moves covers them. Inside it the cut frustum can round a vertex
+  // differently from the whole one, so a pixel on an edge there may differ (docs/performance.md,
+  // "Stop 67").
   // @throws std::runtime_error when GL reports an error.
   TopDownImage RenderOverStaticFrame(mjData* d);
   // Frames `bounds` instead (same options), keeping the GL context and its compiled shaders.
@@ -116,6 +117,7 @@ class TopDownRenderer {
   // KeepStaticFrame's picture (GL rows, bottom up) and the framing it was drawn for.
   std::vector<std::uint8_t> static_rgb_;
   std::optional<TopDownFrame> static_frame_;
+  std::vector<mjvLight> static_lights_;  // the lights as they were then
 };
 
 // The same view drawn without GL: the floor colour, then every visible geom's footprint from above

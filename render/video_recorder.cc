@@ -59,6 +59,8 @@ void VideoRecorder::AddFrame(const sim::ExperimentRunner& runner) {
         // (TopDownRenderer::RenderOverStaticFrame; the frames' bytes are the encoder's anyway).
         renderer_->KeepStaticFrame(d);
       } catch (const std::runtime_error& e) {
+        // As the line says: a renderer whose static frame failed is dropped, not drawn with.
+        renderer_.reset();
         std::fprintf(stderr, "plywood: video frames drawn in software (%s)\n", e.what());
       }
     }

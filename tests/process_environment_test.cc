@@ -225,6 +225,24 @@ TEST(ProcessEnvironmentTest, AMemoryLimitIsNamedAndNeverBlamesTheWorld) {
   EXPECT_GT(refused, 0) << "no limit from 20 to 80 MB stopped the run: the test checked nothing";
 }
 
+// Under a limit of some hundred MB, where the run's own memory is plenty: the GL library's preload
+// thread beside the scene's compile (stop 67) made this run end in std::bad_alloc (exit 1, each of
+// three at 500 MB), and others abort in llvmpipe's JIT or hang (review68).
+TEST(ProcessEnvironmentTest, ARunUnderAMemoryLimitOfHundredsOfMegabytesRuns) {
+  if (!CanSetInAShell("ulimit -v 500000")) GTEST_SKIP() << "this machine refuses ulimit -v";
+  const fs::path dir = MakeTempDir("process_environment_roomy_memory");
+  StillExperiment(dir, true);
+  for (int run = 0; run < 2; ++run) {
+    fs::remove_all(dir / "out");
+    // Killed after a minute: a hung run is a failure, not a stuck test.
+    const int status = RunScript(dir,
+                                 "ulimit -v 500000\nexec timeout -s KILL 60 \"$PLYWOOD\" run "
+                                 "still.yaml --out out --quiet 2>err\n");
+    EXPECT_EQ(status, 0) << Slurp(dir / "err");
+    EXPECT_TRUE(fs::exists(dir / "out" / "snapshot.png")) << Slurp(dir / "err");
+  }
+}
+
 // A training set larger than the memory limit allows: std::bad_alloc was "plywood: error:
 // std::bad_alloc", naming neither memory nor the limit.
 TEST(ProcessEnvironmentTest, AnAllocationPastTheMemoryLimitSaysOutOfMemory) {
