@@ -17,6 +17,7 @@ SCRIPT = "sweep_table"
 
 
 def fmt(v):
+    v += 0.0  # -0.0 (a rounded bound) would print "-0" and read as a negative bound (s67)
     return f"{v:.3g}" if abs(v) < 1000 else f"{v:.0f}"
 
 

@@ -113,6 +113,12 @@ TEST_F(SweepScriptsTest, SweepTableRefusesWhatIsNotAWholeSweepAndSaysEachCellsRu
   CliResult r = RunScript(dir, "sweep_table.py", "whole");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("| 3 | 2 | 0.015 (0.001-0.03) | 0 (0-0) |"), std::string::npos) << r.out;
+  // A bound of -0 printed "(-0-0.5)".
+  WriteSweep(dir / "minus_zero", FourRuns(),
+             "3,occupancy.error,2,0.015,0.007,-0,0.5,0.01,0.02,0.02\n");
+  const CliResult minus_zero = RunScript(dir, "sweep_table.py", "minus_zero");
+  ASSERT_EQ(minus_zero.exit_code, 0) << minus_zero.err;
+  EXPECT_NE(minus_zero.out.find("| 3 | 2 | 0.015 (0-0.5) |"), std::string::npos) << minus_zero.out;
   // A negative bound was printed "(-5-6)": a range from -5 to -6 at a glance.
   EXPECT_NE(r.out.find("| 4 | 2 | 0.04 (0.01-0.07) | 0.5 (-5 to 6) |"), std::string::npos) << r.out;
 
