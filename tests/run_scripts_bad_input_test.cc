@@ -112,6 +112,40 @@ TEST(RunScriptsTest, WorldTablesAndTheOdometryTableRefuseArgumentsBeforeAnyRun) 
                     ": no such program");
 }
 
+// scripts/alternate_runs (s67): whole `plywood run` processes of binaries taking turns, min /
+// median / max wall ms each. Its refusals come before any run; a run that fails ends it, naming
+// the binary and the run's own line.
+TEST(RunScriptsTest, AlternateRunsTimesEachBinaryAndRefusesBadArgumentsBeforeAnyRun) {
+  if (!PythonImports()) GTEST_SKIP() << "python3 is not installed";
+  const fs::path dir = MakeTempDir("AlternateRuns");
+  const std::string plywood = std::string(PLYWOOD_BINARY_DIR) + "/apps/plywood";
+  const std::string experiment = (SourceRoot() / "experiments" / "default.yaml").string();
+  ExpectRefusal(RunScript(dir, "alternate_runs", "nope.yaml " + plywood),
+                "alternate_runs: EXPERIMENT: nope.yaml: no such file");
+  ExpectRefusal(RunScript(dir, "alternate_runs", experiment + " " + (dir / "none").string()),
+                "alternate_runs: BINARY: " + (dir / "none").string() + ": no such file");
+  ExpectRefusal(RunScript(dir, "alternate_runs", "--runs 0 " + experiment + " " + plywood),
+                "alternate_runs: --runs: expected a whole number in [1, 1000], got '0'");
+  ExpectRefusal(RunScript(dir, "alternate_runs", "--set x " + experiment + " " + plywood),
+                "alternate_runs: --set: expected KEY=VALUE, got 'x'");
+  ExpectRefusal(RunScript(dir, "alternate_runs", experiment + " " + plywood + " " + plywood),
+                "alternate_runs: BINARY: a binary given twice");
+  ExpectRefusal(RunScript(dir, "alternate_runs", experiment), "expected EXPERIMENT and at least");
+
+  // One short round: the table names the binary with three wall times.
+  const CliResult ran =
+      RunScript(dir, "alternate_runs", "--runs 1 --set duration_s=2 " + experiment + " " + plywood);
+  ASSERT_EQ(ran.exit_code, 0) << ran.err;
+  EXPECT_NE(ran.out.find("| " + plywood + " | "), std::string::npos) << ran.out;
+  EXPECT_NE(ran.out.find("(1 runs each)"), std::string::npos) << ran.out;
+  // A run that fails ends the script with its own line.
+  const CliResult failed =
+      RunScript(dir, "alternate_runs", "--runs 1 --set robot.nope=1 " + experiment + " " + plywood);
+  EXPECT_EQ(failed.exit_code, 1);
+  EXPECT_NE(failed.err.find("round 1 exited 2: plywood: "), std::string::npos) << failed.err;
+  EXPECT_NE(failed.err.find("robot.nope: unknown key"), std::string::npos) << failed.err;
+}
+
 // check_generated_worlds with a family no test has ran no test and passed (exit 0); a SEED that is
 // no number was a test failure amid gtest's output, the worlds then checked with seed 1.
 TEST(RunScriptsTest, CheckGeneratedWorldsRefusesAFamilyNoTestHasAndSeedsThatAreNoNumbers) {
