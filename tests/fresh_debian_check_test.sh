@@ -24,10 +24,13 @@ stop() {
   local pids
   pids=$(pgrep -f -- "^(daemon|sleeper)-$mark" || true)
   [ -z "$pids" ] || kill -KILL $pids 2>/dev/null || true
-  # And the mounts of a check that failed (killed) before its own clean-up: deepest first. The
-  # binds are slaves, so this leaves the host's /sys and /dev mounted.
-  local m
-  for m in $(awk -v w="$work/" 'index($2, w) == 1 {print $2}' /proc/mounts | sort -r); do
+  # And the mounts of a check that failed (killed) before its own clean-up: each made a slave
+  # first (a check killed between its --rbind and its --make-rslave leaves a shared bind, whose
+  # unmounts would reach the host's /sys or /dev: review68), then unmounted deepest first.
+  local m mounts
+  mounts=$(awk -v w="$work/" 'index($2, w) == 1 {print $2}' /proc/mounts | sort)
+  for m in $mounts; do mount --make-rslave "$m" 2>/dev/null || true; done
+  for m in $(echo "$mounts" | sort -r); do
     umount "$m" 2>/dev/null || umount -l "$m" 2>/dev/null || true
   done
   rm -rf --one-file-system "$work"
