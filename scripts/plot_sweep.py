@@ -48,10 +48,10 @@ def pyplot():
 def stem(path):
     """A file's name without its folder and last extension, as std::filesystem::path::stem."""
     name = os.path.basename(path)
-    if name in (".", ".."):
-        return name
-    base, ext = os.path.splitext(name)
-    return base if ext else name
+    dot = name.rfind(".")
+    # As C++17: "." and ".." and a name whose only period leads it have no extension ("..foo"'s
+    # stem is ".", where os.path.splitext keeps "..foo").
+    return name if name in (".", "..") or dot <= 0 else name[:dot]
 
 
 def say(text):
