@@ -23,7 +23,21 @@ namespace {
 // A plane's rendering grid spacing so large that MuJoCo draws the floor as 2 x 2 quads.
 constexpr double kFloorGridSpacingM = 1000.0;
 
-constexpr int kRobotGeomGroup = 3;  // sim::Scene::kRobotGeomGroup, without pulling in scene.h
+constexpr int kRobotGeomGroup = 3;
+
+// Beyond a geom's bounding circle on the floor map: the projection's parallax (< 0.18 px:
+// TopDownCameraHeightM) and an edge's multisamples (< 1 px).
+constexpr double kFootprintMarginPx = 2.0;
+
+// Keeps, in order, the scene's geoms `keep` accepts.
+template <typename Keep>
+void KeepSceneGeoms(mjvScene& scene, Keep keep) {
+  int kept = 0;
+  for (int i = 0; i < scene.ngeom; ++i) {
+    if (keep(scene.geoms[i])) scene.geoms[kept++] = scene.geoms[i];
+  }
+  scene.ngeom = kept;
+}  // sim::Scene::kRobotGeomGroup, without pulling in scene.h
 
 bool GroupShown(const mjModel* m, int g, bool show_robot) {
   const int group = m->geom_group[g];
@@ -239,12 +253,9 @@ void TopDownRenderer::KeepStaticFrame(mjData* d) {
   UpdateScene(d);
   const mjModel* m = gl_->model.get();
   mjvScene& scene = gl_->scene;
-  int kept = 0;
-  for (int i = 0; i < scene.ngeom; ++i) {
-    const mjvGeom& geom = scene.geoms[i];
-    if (geom.objtype == mjOBJ_GEOM && IsStaticGeom(m, geom.objid)) scene.geoms[kept++] = geom;
-  }
-  scene.ngeom = kept;
+  KeepSceneGeoms(scene, [m](const mjvGeom& geom) {
+    return geom.objtype == mjOBJ_GEOM && IsStaticGeom(m, geom.objid);
+  });
   static_lights_.assign(scene.lights, scene.lights + scene.nlight);
   const mjrRect viewport{0, 0, frame_.width_px, frame_.height_px};
   DrawScene(viewport, gl_->gl_camera);
@@ -254,9 +265,6 @@ void TopDownRenderer::KeepStaticFrame(mjData* d) {
 
 std::optional<PixelBox> TopDownRenderer::MovingBox() const {
   const mjModel* m = gl_->model.get();
-  // Skins move with their bones and no box bounds them (the scene holds each as a geom of object
-  // type mjOBJ_SKIN, which the loop below refuses as well).
-  if (m->nskin > 0) return std::nullopt;
   // A light not where the static frame had it lights static pixels differently: one on a moving
   // body, but also one of the world that tracks a moving body's centre of mass or turns to it.
   const mjvScene& scene = gl_->scene;
@@ -274,7 +282,8 @@ std::optional<PixelBox> TopDownRenderer::MovingBox() const {
   double u_max = -u_min, v_max = -u_min;
   for (int i = 0; i < gl_->scene.ngeom; ++i) {
     const mjvGeom& geom = gl_->scene.geoms[i];
-    if (geom.objtype != mjOBJ_GEOM) return std::nullopt;  // a site, a tendon, a label: no bound
+    // A site, a tendon, a skin (mjOBJ_SKIN, moving with its bones), a label: no bound.
+    if (geom.objtype != mjOBJ_GEOM) return std::nullopt;
     if (IsStaticGeom(m, geom.objid)) continue;
     const double radius_m = m->geom_rbound[geom.objid];
     if (!(radius_m > 0.0) || !std::isfinite(radius_m)) return std::nullopt;  // a moving plane
@@ -288,17 +297,14 @@ std::optional<PixelBox> TopDownRenderer::MovingBox() const {
   }
   if (!(u_max >= u_min)) return PixelBox{};  // nothing moves: the static frame is the picture
   if (!std::isfinite(u_min + u_max + v_min + v_max)) return std::nullopt;
-  // The projection's parallax (< 0.18 px: TopDownCameraHeightM) and an edge's multisamples
-  // (< 1 px) reach beyond the footprint's circle.
-  constexpr double kMarginPx = 2.0;
   const auto clamp = [](double v, int hi) {
     return static_cast<int>(std::clamp(v, 0.0, static_cast<double>(hi)));
   };
   PixelBox box;
-  box.x = clamp(std::floor(u_min - kMarginPx), frame_.width_px);
-  box.y = clamp(std::floor(v_min - kMarginPx), frame_.height_px);
-  box.width = clamp(std::ceil(u_max + kMarginPx), frame_.width_px) - box.x;
-  box.height = clamp(std::ceil(v_max + kMarginPx), frame_.height_px) - box.y;
+  box.x = clamp(std::floor(u_min - kFootprintMarginPx), frame_.width_px);
+  box.y = clamp(std::floor(v_min - kFootprintMarginPx), frame_.height_px);
+  box.width = clamp(std::ceil(u_max + kFootprintMarginPx), frame_.width_px) - box.x;
+  box.height = clamp(std::ceil(v_max + kFootprintMarginPx), frame_.height_px) - box.y;
   return box;
 }
 
@@ -308,21 +314,14 @@ void TopDownRenderer::KeepOnlyGeomsReaching(const PixelBox& box) {
   // (no bound) stay.
   const mjModel* m = gl_->model.get();
   const WorldToPixel& map = frame_.world_to_pixel;
-  mjvScene& scene = gl_->scene;
-  int kept = 0;
-  for (int i = 0; i < scene.ngeom; ++i) {
-    const mjvGeom& geom = scene.geoms[i];
+  KeepSceneGeoms(gl_->scene, [&](const mjvGeom& geom) {
     const double radius_m = m->geom_rbound[geom.objid];
-    bool reaches = !(radius_m > 0.0);
-    if (!reaches) {
-      const Eigen::Vector2d centre = map.ToPixel({geom.pos[0], geom.pos[1]});
-      const double radius_px = radius_m * map.pixels_per_m + 2.0;
-      reaches = centre.x() + radius_px >= box.x && centre.x() - radius_px <= box.x + box.width &&
-                centre.y() + radius_px >= box.y && centre.y() - radius_px <= box.y + box.height;
-    }
-    if (reaches) scene.geoms[kept++] = geom;
-  }
-  scene.ngeom = kept;
+    if (!(radius_m > 0.0)) return true;
+    const Eigen::Vector2d centre = map.ToPixel({geom.pos[0], geom.pos[1]});
+    const double radius_px = radius_m * map.pixels_per_m + kFootprintMarginPx;
+    return centre.x() + radius_px >= box.x && centre.x() - radius_px <= box.x + box.width &&
+           centre.y() + radius_px >= box.y && centre.y() - radius_px <= box.y + box.height;
+  });
 }
 
 mjvGLCamera CutTopDownGlCamera(const mjvGLCamera& whole, int width_px, int height_px, int x,

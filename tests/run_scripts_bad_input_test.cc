@@ -23,20 +23,10 @@ namespace fs = std::filesystem;
 using testing::CliResult;
 using testing::MakeTempDir;
 using testing::PythonImports;
+using testing::RunScript;
 using testing::Slurp;
 using testing::SourceRoot;
 using testing::WriteFile;
-
-// Runs `[prefix] scripts/SCRIPT args` in `dir`, stdout and stderr into files there.
-CliResult RunScript(const fs::path& dir, const std::string& script, const std::string& args,
-                    const std::string& prefix = "") {
-  const std::string command = "cd '" + dir.string() + "' && " + prefix + " '" +
-                              (SourceRoot() / "scripts" / script).string() + "' " + args +
-                              " >stdout 2>stderr";
-  const int status = std::system(command.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, Slurp(dir / "stdout"),
-          Slurp(dir / "stderr")};
-}
 
 void ExpectRefusal(const CliResult& r, const std::string& text) {
   EXPECT_EQ(r.exit_code, 2) << r.err;

@@ -3,10 +3,8 @@
 // refusal of a folder that holds no finished sweep.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -19,29 +17,18 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::MakeTempDir;
-using testing::Slurp;
-using testing::SourceRoot;
 using testing::WriteFile;
 
 // The script's exit code, stdout and stderr, as the CLI tests read plywood's.
 using ScriptResult = testing::CliResult;
 
 ScriptResult RunTable(const fs::path& out, const std::string& seeds) {
-  const std::string command = (SourceRoot() / "scripts" / "sonar_map_held_out").string() +
-                              " --table-only --out " + out.string() + " --seeds " + seeds + " >" +
-                              (out / "stdout").string() + " 2>" + (out / "stderr").string();
-  const int status = std::system(command.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, Slurp(out / "stdout"),
-          Slurp(out / "stderr")};
+  return testing::RunScript(out, "sonar_map_held_out",
+                            "--table-only --out " + out.string() + " --seeds " + seeds);
 }
 
 ScriptResult RunScript(const fs::path& out, const std::string& args) {
-  const std::string command = (SourceRoot() / "scripts" / "sonar_map_held_out").string() + " " +
-                              args + " >" + (out / "stdout").string() + " 2>" +
-                              (out / "stderr").string();
-  const int status = std::system(command.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, Slurp(out / "stdout"),
-          Slurp(out / "stderr")};
+  return testing::RunScript(out, "sonar_map_held_out", args);
 }
 
 // A finished sweep's results.csv with the columns the table reads (and one it does not), and its

@@ -5,7 +5,6 @@
 // as `plywood sweep` writes them.
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -28,12 +27,7 @@ using testing::WriteFile;
 // Runs `python3 [python_flags] scripts/SCRIPT args` in `dir`, stdout and stderr into files there.
 CliResult RunScript(const fs::path& dir, const std::string& script, const std::string& args,
                     const std::string& python_flags = "") {
-  const std::string command = "cd '" + dir.string() + "' && /usr/bin/python3 " + python_flags +
-                              " '" + (SourceRoot() / "scripts" / script).string() + "' " + args +
-                              " >stdout 2>stderr";
-  const int status = std::system(command.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, Slurp(dir / "stdout"),
-          Slurp(dir / "stderr")};
+  return testing::RunScript(dir, script, args, "/usr/bin/python3 " + python_flags);
 }
 
 void ExpectRefusal(const CliResult& r, const std::string& text) {

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "plywood_paths.h"
+#include "tests/support/mujoco_test_support.h"
 
 namespace plywood::testing {
 
@@ -21,6 +22,16 @@ std::string Slurp(const std::filesystem::path& path) {
 bool PythonImports(const std::string& modules) {
   const std::string code = modules.empty() ? "" : "import " + modules;
   return std::system(("/usr/bin/python3 -c '" + code + "' >/dev/null 2>&1").c_str()) == 0;
+}
+
+CliResult RunScript(const std::filesystem::path& dir, const std::string& script,
+                    const std::string& args, const std::string& prefix) {
+  const std::string command = "cd '" + dir.string() + "' && " + prefix + " '" +
+                              (SourceRoot() / "scripts" / script).string() + "' " + args +
+                              " >stdout 2>stderr";
+  const int status = std::system(command.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, Slurp(dir / "stdout"),
+          Slurp(dir / "stderr")};
 }
 
 CliResult RunPlywood(const std::string& args, const std::filesystem::path& dir,

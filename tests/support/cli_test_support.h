@@ -18,6 +18,11 @@ struct CliResult {
 // the scripts' tests skip, saying so, where it does not.
 bool PythonImports(const std::string& modules = "");
 
+// Runs `[prefix] scripts/SCRIPT args` of the source tree in `dir` (prefix: an interpreter and its
+// flags, "/usr/bin/python3 -S"; args shell-quoted), stdout and stderr into files there.
+CliResult RunScript(const std::filesystem::path& dir, const std::string& script,
+                    const std::string& args, const std::string& prefix = "");
+
 // Runs the built `plywood` binary with `args` (a shell-quoted string), capturing stdout and
 // stderr in files under `dir`; in `working_dir` when given, else in the test's own.
 CliResult RunPlywood(const std::string& args, const std::filesystem::path& dir,
